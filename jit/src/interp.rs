@@ -1,0 +1,231 @@
+//! The reference interpreter: runs the stages of a [`FragmentKey`] over spans.
+//!
+//! Written to be read, not to be fast: each stage is a loop over the live
+//! fragments of a span, in GL order. Every back end must leave the buffers
+//! exactly as this one does.
+
+use crate::key::{BlendEquation, BlendFactor, BlendKey, FragmentKey, KeyError, Stage, StencilKey, StencilOp};
+use crate::pixel;
+use crate::span::{FragmentSpan, SPAN_MAX};
+use crate::target::Target;
+use crate::uniforms::FragmentUniforms;
+
+/// Why a batch could not run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum FragmentError {
+    #[error("invalid fragment key: {0}")]
+    Key(#[from] KeyError),
+    #[error("the key's buffers do not match the target's")]
+    TargetMismatch,
+}
+
+/// Checks that `key` is valid and names exactly the buffers `target` has.
+pub fn check_key(key: &FragmentKey, target: &Target<'_>) -> Result<(), FragmentError> {
+    key.validate()?;
+    if key.color_format != target.color_format()
+        || key.depth_format != target.depth_format()
+        || key.stencil_buffer != target.has_stencil()
+    {
+        return Err(FragmentError::TargetMismatch);
+    }
+    Ok(())
+}
+
+/// Runs `key`'s stages over `spans` into `target`. Fragments outside the target
+/// fail GL's pixel ownership test and are dropped.
+pub fn run(
+    key: &FragmentKey,
+    uniforms: &FragmentUniforms,
+    spans: &[FragmentSpan],
+    target: &mut Target<'_>,
+) -> Result<(), FragmentError> {
+    check_key(key, target)?;
+    let stages = key.stages();
+    for span in spans {
+        run_span(key, stages.as_slice(), uniforms, span, target);
+    }
+    Ok(())
+}
+
+/// The mask of `span`'s fragments that lie inside the target.
+pub fn owned_mask(span: &FragmentSpan, width: u32, height: u32) -> u64 {
+    if span.y >= height || span.x >= width {
+        return 0;
+    }
+    let inside = (width - span.x).min(SPAN_MAX as u32);
+    let mut live = span.live_mask();
+    if inside < 64 {
+        live &= (1u64 << inside) - 1;
+    }
+    live
+}
+
+fn run_span(key: &FragmentKey, stages: &[Stage], u: &FragmentUniforms, span: &FragmentSpan, t: &mut Target<'_>) {
+    let mut live = owned_mask(span, t.width(), t.height());
+    if live == 0 {
+        return;
+    }
+    let format = key.color_format;
+    let bpp = format.bytes_per_pixel();
+    let (y, x0) = (span.y, span.x);
+    let mut rgba = [[0u8; 4]; SPAN_MAX];
+    for (i, c) in rgba.iter_mut().enumerate() {
+        *c = [span.r[i], span.g[i], span.b[i], span.a[i]];
+    }
+    let mut packed = [0u32; SPAN_MAX];
+    let lanes = |live: u64| (0..SPAN_MAX).filter(move |i| live & (1 << i) != 0);
+
+    for stage in stages {
+        match *stage {
+            Stage::Scissor => {
+                let [sx0, sy0, sx1, sy1] = u.scissor;
+                let yi = i64::from(y);
+                for i in lanes(live) {
+                    let xi = i64::from(x0) + i as i64;
+                    let inside =
+                        xi >= i64::from(sx0) && xi < i64::from(sx1) && yi >= i64::from(sy0) && yi < i64::from(sy1);
+                    if !inside {
+                        live &= !(1 << i);
+                    }
+                }
+            }
+            Stage::AlphaTest(func) => {
+                for i in lanes(live) {
+                    if !func.test(rgba[i][3], u.alpha_ref) {
+                        live &= !(1 << i);
+                    }
+                }
+            }
+            Stage::StencilTest { stencil, depth_on } => {
+                let idx0 = t.index(x0, y);
+                let Some(buf) = t.stencil_mut() else { continue };
+                for i in lanes(live) {
+                    let s = &mut buf[idx0 + i];
+                    let pass = stencil
+                        .func
+                        .test(u.stencil_ref & u.stencil_value_mask, *s & u.stencil_value_mask);
+                    if !pass {
+                        *s = stencil_write(stencil.fail, *s, u);
+                        live &= !(1 << i);
+                    } else if !depth_on {
+                        *s = stencil_write(stencil.zpass, *s, u);
+                    }
+                }
+            }
+            Stage::DepthTest { depth, stencil } => {
+                let idx0 = t.index(x0, y);
+                let (_, depth_buf, stencil_buf) = t.parts_mut();
+                let Some(dbuf) = depth_buf else { continue };
+                let max = dbuf.format().max_value();
+                let mut stencil_buf = stencil_buf;
+                for i in lanes(live) {
+                    let z = span.z[i].min(max);
+                    let pass = depth.func.test(z, dbuf.get(idx0 + i));
+                    if pass && depth.write {
+                        dbuf.set(idx0 + i, z);
+                    }
+                    if let (Some(StencilKey { zfail, zpass, .. }), Some(sbuf)) = (stencil, stencil_buf.as_deref_mut()) {
+                        let s = &mut sbuf[idx0 + i];
+                        *s = stencil_write(if pass { zpass } else { zfail }, *s, u);
+                    }
+                    if !pass {
+                        live &= !(1 << i);
+                    }
+                }
+            }
+            Stage::Blend(blend) => {
+                let off0 = t.color_offset(x0, y);
+                let color = t.color();
+                for i in lanes(live) {
+                    let off = off0 + i * bpp;
+                    let dst = pixel::unpack(format, pixel::load(format, &color[off..]));
+                    rgba[i] = blend_rgba(&blend, rgba[i], dst, u.blend_color);
+                }
+            }
+            Stage::Pack { dither } => {
+                for i in lanes(live) {
+                    let bias = pixel::reduce_bias(dither, x0 + i as u32, y);
+                    packed[i] = pixel::pack(format, rgba[i], bias);
+                }
+            }
+            Stage::LogicOp(op) => {
+                let off0 = t.color_offset(x0, y);
+                let color = t.color();
+                for i in lanes(live) {
+                    let dst = pixel::load(format, &color[off0 + i * bpp..]);
+                    packed[i] = op.apply(packed[i], dst);
+                }
+            }
+            Stage::ColorWrite(mask) => {
+                let bits = pixel::mask_bits(format, mask);
+                let off0 = t.color_offset(x0, y);
+                let color = t.color_mut();
+                for i in lanes(live) {
+                    let px = &mut color[off0 + i * bpp..];
+                    let dst = pixel::load(format, px);
+                    pixel::store(format, px, (packed[i] & bits) | (dst & !bits));
+                }
+            }
+        }
+    }
+}
+
+/// The stencil value after `op`, through the write mask.
+pub fn stencil_write(op: StencilOp, stored: u8, u: &FragmentUniforms) -> u8 {
+    let new = op.apply(stored, u.stencil_ref);
+    (new & u.stencil_write_mask) | (stored & !u.stencil_write_mask)
+}
+
+/// GL's blend of `src` over `dst` (unorm bytes RGBA) with constant color `k`.
+pub fn blend_rgba(key: &BlendKey, src: [u8; 4], dst: [u8; 4], k: [u8; 4]) -> [u8; 4] {
+    let mut out = [0u8; 4];
+    for c in 0..4 {
+        let (sf, df, eq) = if c < 3 {
+            (key.src_rgb, key.dst_rgb, key.eq_rgb)
+        } else {
+            (key.src_alpha, key.dst_alpha, key.eq_alpha)
+        };
+        let s = pixel::mul_unorm8(src[c], factor(sf, c, src, dst, k));
+        let d = pixel::mul_unorm8(dst[c], factor(df, c, src, dst, k));
+        out[c] = equation(eq, src[c], dst[c], s, d);
+    }
+    out
+}
+
+/// The value of factor `f` for channel `c` (3 is alpha).
+pub fn factor(f: BlendFactor, c: usize, src: [u8; 4], dst: [u8; 4], k: [u8; 4]) -> u8 {
+    match f {
+        BlendFactor::Zero => 0,
+        BlendFactor::One => 255,
+        BlendFactor::SrcColor => src[c],
+        BlendFactor::OneMinusSrcColor => 255 - src[c],
+        BlendFactor::DstColor => dst[c],
+        BlendFactor::OneMinusDstColor => 255 - dst[c],
+        BlendFactor::SrcAlpha => src[3],
+        BlendFactor::OneMinusSrcAlpha => 255 - src[3],
+        BlendFactor::DstAlpha => dst[3],
+        BlendFactor::OneMinusDstAlpha => 255 - dst[3],
+        BlendFactor::ConstantColor => k[c],
+        BlendFactor::OneMinusConstantColor => 255 - k[c],
+        BlendFactor::ConstantAlpha => k[3],
+        BlendFactor::OneMinusConstantAlpha => 255 - k[3],
+        BlendFactor::SrcAlphaSaturate => {
+            if c == 3 {
+                255
+            } else {
+                src[3].min(255 - dst[3])
+            }
+        }
+    }
+}
+
+/// Equation `eq` on weighted terms `s`, `d` (MIN and MAX use the unweighted colors).
+pub fn equation(eq: BlendEquation, src: u8, dst: u8, s: u8, d: u8) -> u8 {
+    match eq {
+        BlendEquation::Add => s.saturating_add(d),
+        BlendEquation::Subtract => s.saturating_sub(d),
+        BlendEquation::ReverseSubtract => d.saturating_sub(s),
+        BlendEquation::Min => src.min(dst),
+        BlendEquation::Max => src.max(dst),
+    }
+}

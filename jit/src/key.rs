@@ -1,0 +1,554 @@
+//! `FragmentKey`: everything about per-fragment state that changes the *code* of a
+//! specialist. Plain `Copy + Eq + Hash` data; values that change often live in
+//! [`FragmentUniforms`](crate::FragmentUniforms) instead.
+
+/// Layout of the color buffer, as stored in memory.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ColorFormat {
+    /// Bytes R, G, B, A.
+    Rgba8,
+    /// Bytes B, G, R, A.
+    Bgra8,
+    /// Bytes R, G, B (no alpha: destination alpha reads as 1).
+    Rgb8,
+    /// One little-endian `u16`: R in bits 11..16, G in 5..11, B in 0..5 (no alpha).
+    Rgb565,
+}
+
+impl ColorFormat {
+    /// Bytes one pixel takes.
+    pub const fn bytes_per_pixel(self) -> usize {
+        match self {
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 => 4,
+            ColorFormat::Rgb8 => 3,
+            ColorFormat::Rgb565 => 2,
+        }
+    }
+
+    /// Whether the buffer stores alpha.
+    pub const fn has_alpha(self) -> bool {
+        match self {
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 => true,
+            ColorFormat::Rgb8 | ColorFormat::Rgb565 => false,
+        }
+    }
+
+    /// Whether converting 8-bit color to this format loses bits (so dithering matters).
+    pub const fn is_reduced(self) -> bool {
+        match self {
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8 => false,
+            ColorFormat::Rgb565 => true,
+        }
+    }
+}
+
+/// Layout of the depth buffer: one value per pixel, unsigned normalized.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DepthFormat {
+    /// `u16` per pixel.
+    D16,
+    /// `u32` per pixel holding a 24-bit value (bits 24..32 are zero).
+    D24,
+    /// `u32` per pixel, all 32 bits.
+    D32,
+}
+
+impl DepthFormat {
+    /// Number of depth bits.
+    pub const fn bits(self) -> u32 {
+        match self {
+            DepthFormat::D16 => 16,
+            DepthFormat::D24 => 24,
+            DepthFormat::D32 => 32,
+        }
+    }
+
+    /// Largest storable value: window depth 1.0.
+    pub const fn max_value(self) -> u32 {
+        match self {
+            DepthFormat::D16 => 0xffff,
+            DepthFormat::D24 => 0x00ff_ffff,
+            DepthFormat::D32 => 0xffff_ffff,
+        }
+    }
+}
+
+/// The eight GL comparison functions (alpha, stencil and depth tests).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CompareFunc {
+    Never,
+    Less,
+    Equal,
+    Lequal,
+    Greater,
+    Notequal,
+    Gequal,
+    Always,
+}
+
+impl CompareFunc {
+    /// All eight functions, in GL enum order.
+    pub const ALL: [CompareFunc; 8] = [
+        CompareFunc::Never,
+        CompareFunc::Less,
+        CompareFunc::Equal,
+        CompareFunc::Lequal,
+        CompareFunc::Greater,
+        CompareFunc::Notequal,
+        CompareFunc::Gequal,
+        CompareFunc::Always,
+    ];
+
+    /// `incoming <func> stored`, the way every GL test reads.
+    pub fn test<T: Ord>(self, incoming: T, stored: T) -> bool {
+        match self {
+            CompareFunc::Never => false,
+            CompareFunc::Less => incoming < stored,
+            CompareFunc::Equal => incoming == stored,
+            CompareFunc::Lequal => incoming <= stored,
+            CompareFunc::Greater => incoming > stored,
+            CompareFunc::Notequal => incoming != stored,
+            CompareFunc::Gequal => incoming >= stored,
+            CompareFunc::Always => true,
+        }
+    }
+}
+
+/// What a stencil test outcome does to the stored stencil value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum StencilOp {
+    Keep,
+    Zero,
+    Replace,
+    /// Increment, clamped to 255.
+    Incr,
+    /// Decrement, clamped to 0.
+    Decr,
+    Invert,
+    /// Increment, 255 wraps to 0.
+    IncrWrap,
+    /// Decrement, 0 wraps to 255.
+    DecrWrap,
+}
+
+impl StencilOp {
+    /// All eight operations.
+    pub const ALL: [StencilOp; 8] = [
+        StencilOp::Keep,
+        StencilOp::Zero,
+        StencilOp::Replace,
+        StencilOp::Incr,
+        StencilOp::Decr,
+        StencilOp::Invert,
+        StencilOp::IncrWrap,
+        StencilOp::DecrWrap,
+    ];
+
+    /// The new stencil value before the write mask is applied.
+    pub fn apply(self, stored: u8, reference: u8) -> u8 {
+        match self {
+            StencilOp::Keep => stored,
+            StencilOp::Zero => 0,
+            StencilOp::Replace => reference,
+            StencilOp::Incr => stored.saturating_add(1),
+            StencilOp::Decr => stored.saturating_sub(1),
+            StencilOp::Invert => !stored,
+            StencilOp::IncrWrap => stored.wrapping_add(1),
+            StencilOp::DecrWrap => stored.wrapping_sub(1),
+        }
+    }
+}
+
+/// Blend factors of GL 1.4 (with `GL_ARB_imaging`'s constant color).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BlendFactor {
+    Zero,
+    One,
+    SrcColor,
+    OneMinusSrcColor,
+    DstColor,
+    OneMinusDstColor,
+    SrcAlpha,
+    OneMinusSrcAlpha,
+    DstAlpha,
+    OneMinusDstAlpha,
+    ConstantColor,
+    OneMinusConstantColor,
+    ConstantAlpha,
+    OneMinusConstantAlpha,
+    SrcAlphaSaturate,
+}
+
+impl BlendFactor {
+    /// All fifteen factors.
+    pub const ALL: [BlendFactor; 15] = [
+        BlendFactor::Zero,
+        BlendFactor::One,
+        BlendFactor::SrcColor,
+        BlendFactor::OneMinusSrcColor,
+        BlendFactor::DstColor,
+        BlendFactor::OneMinusDstColor,
+        BlendFactor::SrcAlpha,
+        BlendFactor::OneMinusSrcAlpha,
+        BlendFactor::DstAlpha,
+        BlendFactor::OneMinusDstAlpha,
+        BlendFactor::ConstantColor,
+        BlendFactor::OneMinusConstantColor,
+        BlendFactor::ConstantAlpha,
+        BlendFactor::OneMinusConstantAlpha,
+        BlendFactor::SrcAlphaSaturate,
+    ];
+}
+
+/// Blend equations (GL 1.4 / `GL_EXT_blend_minmax`, `GL_EXT_blend_subtract`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BlendEquation {
+    Add,
+    Subtract,
+    ReverseSubtract,
+    Min,
+    Max,
+}
+
+impl BlendEquation {
+    /// All five equations.
+    pub const ALL: [BlendEquation; 5] = [
+        BlendEquation::Add,
+        BlendEquation::Subtract,
+        BlendEquation::ReverseSubtract,
+        BlendEquation::Min,
+        BlendEquation::Max,
+    ];
+}
+
+/// The sixteen logic operations, `s` the incoming and `d` the stored value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LogicOp {
+    Clear,
+    And,
+    AndReverse,
+    Copy,
+    AndInverted,
+    Noop,
+    Xor,
+    Or,
+    Nor,
+    Equiv,
+    Invert,
+    OrReverse,
+    CopyInverted,
+    OrInverted,
+    Nand,
+    Set,
+}
+
+impl LogicOp {
+    /// All sixteen operations, in GL enum order.
+    pub const ALL: [LogicOp; 16] = [
+        LogicOp::Clear,
+        LogicOp::And,
+        LogicOp::AndReverse,
+        LogicOp::Copy,
+        LogicOp::AndInverted,
+        LogicOp::Noop,
+        LogicOp::Xor,
+        LogicOp::Or,
+        LogicOp::Nor,
+        LogicOp::Equiv,
+        LogicOp::Invert,
+        LogicOp::OrReverse,
+        LogicOp::CopyInverted,
+        LogicOp::OrInverted,
+        LogicOp::Nand,
+        LogicOp::Set,
+    ];
+
+    /// The operation on bit patterns.
+    pub fn apply(self, s: u32, d: u32) -> u32 {
+        match self {
+            LogicOp::Clear => 0,
+            LogicOp::And => s & d,
+            LogicOp::AndReverse => s & !d,
+            LogicOp::Copy => s,
+            LogicOp::AndInverted => !s & d,
+            LogicOp::Noop => d,
+            LogicOp::Xor => s ^ d,
+            LogicOp::Or => s | d,
+            LogicOp::Nor => !(s | d),
+            LogicOp::Equiv => !(s ^ d),
+            LogicOp::Invert => !d,
+            LogicOp::OrReverse => s | !d,
+            LogicOp::CopyInverted => !s,
+            LogicOp::OrInverted => !s | d,
+            LogicOp::Nand => !(s & d),
+            LogicOp::Set => !0,
+        }
+    }
+}
+
+/// Which color channels are written (`glColorMask`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ColorMask {
+    pub r: bool,
+    pub g: bool,
+    pub b: bool,
+    pub a: bool,
+}
+
+impl ColorMask {
+    /// Every channel written: GL's default.
+    pub const ALL: ColorMask = ColorMask {
+        r: true,
+        g: true,
+        b: true,
+        a: true,
+    };
+    /// No channel written.
+    pub const NONE: ColorMask = ColorMask {
+        r: false,
+        g: false,
+        b: false,
+        a: false,
+    };
+
+    /// The mask restricted to the channels `format` stores.
+    pub fn for_format(self, format: ColorFormat) -> ColorMask {
+        ColorMask {
+            a: self.a && format.has_alpha(),
+            ..self
+        }
+    }
+
+    /// Whether no stored channel is written.
+    pub fn writes_nothing(self, format: ColorFormat) -> bool {
+        let m = self.for_format(format);
+        !(m.r || m.g || m.b || m.a)
+    }
+}
+
+/// The stencil test and its three operations.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct StencilKey {
+    pub func: CompareFunc,
+    /// Applied when the stencil test fails.
+    pub fail: StencilOp,
+    /// Applied when the stencil test passes and the depth test fails.
+    pub zfail: StencilOp,
+    /// Applied when both pass (or the depth test is off).
+    pub zpass: StencilOp,
+}
+
+/// The depth test and whether it writes (`glDepthMask`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct DepthKey {
+    pub func: CompareFunc,
+    pub write: bool,
+}
+
+/// Separate RGB and alpha blend factors and equations.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct BlendKey {
+    pub src_rgb: BlendFactor,
+    pub dst_rgb: BlendFactor,
+    pub src_alpha: BlendFactor,
+    pub dst_alpha: BlendFactor,
+    pub eq_rgb: BlendEquation,
+    pub eq_alpha: BlendEquation,
+}
+
+impl BlendKey {
+    /// GL's default state: `ONE, ZERO, FUNC_ADD` for both.
+    pub const DEFAULT: BlendKey = BlendKey {
+        src_rgb: BlendFactor::One,
+        dst_rgb: BlendFactor::Zero,
+        src_alpha: BlendFactor::One,
+        dst_alpha: BlendFactor::Zero,
+        eq_rgb: BlendEquation::Add,
+        eq_alpha: BlendEquation::Add,
+    };
+}
+
+/// The code-shaping part of per-fragment state. Build it with
+/// [`FragmentKey::new`] and the `with_*` methods; [`FragmentKey::validate`] says
+/// whether a hand-built key is consistent with its buffers.
+///
+/// Texture, color sum and fog stages will take their place before `scissor` in
+/// [`FragmentKey::stages`] when those issues land.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct FragmentKey {
+    pub color_format: ColorFormat,
+    pub depth_format: Option<DepthFormat>,
+    pub stencil_buffer: bool,
+    pub scissor: bool,
+    pub alpha_test: Option<CompareFunc>,
+    pub stencil: Option<StencilKey>,
+    pub depth: Option<DepthKey>,
+    /// Ignored (and dropped by [`FragmentKey::normalized`]) while `logic_op` is on.
+    pub blend: Option<BlendKey>,
+    /// Only meaningful for formats with fewer than 8 bits a channel.
+    pub dither: bool,
+    pub logic_op: Option<LogicOp>,
+    pub color_mask: ColorMask,
+}
+
+/// A key that does not fit the buffers it names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum KeyError {
+    #[error("stencil test on but the key has no stencil buffer")]
+    StencilWithoutBuffer,
+    #[error("depth test on but the key has no depth buffer")]
+    DepthWithoutBuffer,
+    #[error("blending and logic op both on: GL skips blending while logic op is on")]
+    BlendWithLogicOp,
+}
+
+impl FragmentKey {
+    /// Every stage off, all channels written: plain color writes into `color_format`.
+    pub const fn new(
+        color_format: ColorFormat,
+        depth_format: Option<DepthFormat>,
+        stencil_buffer: bool,
+    ) -> FragmentKey {
+        FragmentKey {
+            color_format,
+            depth_format,
+            stencil_buffer,
+            scissor: false,
+            alpha_test: None,
+            stencil: None,
+            depth: None,
+            blend: None,
+            dither: false,
+            logic_op: None,
+            color_mask: ColorMask::ALL,
+        }
+    }
+
+    /// The same key with what cannot have an effect dropped, so that keys which
+    /// behave the same compare equal: tests without their buffer always pass
+    /// (GL 1.5 §4.1.5, §4.1.6), blending is skipped under a logic op (§4.1.10),
+    /// dithering 8-bit channels is the identity, and a color mask that writes
+    /// nothing makes blend and logic op moot.
+    pub fn normalized(mut self) -> FragmentKey {
+        if !self.stencil_buffer {
+            self.stencil = None;
+        }
+        if self.depth_format.is_none() {
+            self.depth = None;
+        }
+        if self.logic_op.is_some() {
+            self.blend = None;
+        }
+        if !self.color_format.is_reduced() {
+            self.dither = false;
+        }
+        self.color_mask = self.color_mask.for_format(self.color_format);
+        if self.color_mask.writes_nothing(self.color_format) {
+            self.blend = None;
+            self.logic_op = None;
+            self.dither = false;
+        }
+        self
+    }
+
+    /// Whether the key is consistent with the buffers it names.
+    pub fn validate(&self) -> Result<(), KeyError> {
+        if self.stencil.is_some() && !self.stencil_buffer {
+            return Err(KeyError::StencilWithoutBuffer);
+        }
+        if self.depth.is_some() && self.depth_format.is_none() {
+            return Err(KeyError::DepthWithoutBuffer);
+        }
+        if self.blend.is_some() && self.logic_op.is_some() {
+            return Err(KeyError::BlendWithLogicOp);
+        }
+        Ok(())
+    }
+
+    /// The stages this key runs, in GL order (GL 1.5 §4.1). A stage that is off
+    /// is not in the list.
+    pub fn stages(&self) -> Stages {
+        let mut s = Stages {
+            list: [Stage::Scissor; MAX_STAGES],
+            len: 0,
+        };
+        if self.scissor {
+            s.push(Stage::Scissor);
+        }
+        if let Some(func) = self.alpha_test {
+            s.push(Stage::AlphaTest(func));
+        }
+        if let Some(stencil) = self.stencil {
+            s.push(Stage::StencilTest {
+                stencil,
+                depth_on: self.depth.is_some(),
+            });
+        }
+        if let Some(depth) = self.depth {
+            s.push(Stage::DepthTest {
+                depth,
+                stencil: self.stencil,
+            });
+        }
+        let mask = self.color_mask.for_format(self.color_format);
+        if !mask.writes_nothing(self.color_format) {
+            if let (Some(blend), None) = (self.blend, self.logic_op) {
+                s.push(Stage::Blend(blend));
+            }
+            s.push(Stage::Pack {
+                dither: self.dither && self.color_format.is_reduced(),
+            });
+            if let Some(op) = self.logic_op {
+                s.push(Stage::LogicOp(op));
+            }
+            s.push(Stage::ColorWrite(mask));
+        }
+        s
+    }
+}
+
+/// Longest possible stage list.
+pub const MAX_STAGES: usize = 8;
+
+/// One per-fragment stage with the part of the key it needs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    /// Kill fragments outside the scissor box.
+    Scissor,
+    /// Kill fragments whose alpha fails `alpha <func> ref`.
+    AlphaTest(CompareFunc),
+    /// Test and apply the `fail` op; with the depth test off, also apply `zpass`.
+    StencilTest { stencil: StencilKey, depth_on: bool },
+    /// Test, write depth, and apply the stencil `zfail`/`zpass` ops when stencil is on.
+    DepthTest {
+        depth: DepthKey,
+        stencil: Option<StencilKey>,
+    },
+    /// Blend the fragment color with the stored color.
+    Blend(BlendKey),
+    /// Convert the 8-bit color to the buffer's format, dithering if asked.
+    Pack { dither: bool },
+    /// Combine the packed color with the stored one.
+    LogicOp(LogicOp),
+    /// Store the packed color through the color mask.
+    ColorWrite(ColorMask),
+}
+
+/// A fixed-capacity list of stages, in order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stages {
+    list: [Stage; MAX_STAGES],
+    len: usize,
+}
+
+impl Stages {
+    fn push(&mut self, stage: Stage) {
+        self.list[self.len] = stage;
+        self.len += 1;
+    }
+
+    /// The stages as a slice.
+    pub fn as_slice(&self) -> &[Stage] {
+        &self.list[..self.len]
+    }
+}

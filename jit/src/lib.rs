@@ -1,0 +1,24 @@
+//! softgl's per-fragment stages.
+//!
+//! A [`FragmentKey`] says which stages are on and how they are configured; the
+//! [`FragmentUniforms`] carry the values that change often. The interpreter in
+//! [`interp`] is the reference semantics: it runs the key's [`Stage`]s over
+//! [`FragmentSpan`]s into a [`Target`]. A compiled back end (Cranelift) must leave
+//! the buffers bit-identical to it.
+#![forbid(unsafe_code)]
+
+pub mod interp;
+pub mod key;
+pub mod pixel;
+pub mod span;
+pub mod target;
+pub mod uniforms;
+
+pub use interp::FragmentError;
+pub use key::{
+    BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, FragmentKey,
+    KeyError, LogicOp, Stage, StencilKey, StencilOp,
+};
+pub use span::{FragmentSpan, SPAN_MAX};
+pub use target::{DepthTarget, Target, TargetError};
+pub use uniforms::FragmentUniforms;

@@ -1,0 +1,95 @@
+//! Color arithmetic shared by every back end: GL's unsigned normalized (unorm)
+//! rules on 8-bit channels, and conversion to and from each color format.
+
+use crate::key::{ColorFormat, ColorMask};
+
+/// `round(a * b / 255)` for unorm bytes, exact for every input pair.
+#[inline]
+pub fn mul_unorm8(a: u8, b: u8) -> u8 {
+    let t = u32::from(a) * u32::from(b) + 128;
+    ((t + (t >> 8)) >> 8) as u8
+}
+
+/// The 4x4 ordered-dither (Bayer) matrix, indexed `[y & 3][x & 3]`.
+pub const BAYER4: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
+
+/// The rounding bias for reducing a byte to fewer bits at `(x, y)`: 127 rounds to
+/// nearest; dithering spreads it over `7..=247` (mean 127) with [`BAYER4`].
+#[inline]
+pub fn reduce_bias(dither: bool, x: u32, y: u32) -> u32 {
+    if dither {
+        u32::from(BAYER4[(y & 3) as usize][(x & 3) as usize]) * 16 + 7
+    } else {
+        127
+    }
+}
+
+/// `floor((c * max + bias) / 255)`: a byte reduced to a `max`-valued channel.
+#[inline]
+pub fn reduce(c: u8, max: u32, bias: u32) -> u32 {
+    (u32::from(c) * max + bias) / 255
+}
+
+/// Expands a 5-bit channel to 8 bits by bit replication (exact for 0 and 31).
+#[inline]
+pub fn expand5(v: u32) -> u8 {
+    ((v << 3) | (v >> 2)) as u8
+}
+
+/// Expands a 6-bit channel to 8 bits by bit replication (exact for 0 and 63).
+#[inline]
+pub fn expand6(v: u32) -> u8 {
+    ((v << 2) | (v >> 4)) as u8
+}
+
+/// Reads the pixel at the start of `bytes` as its packed little-endian value.
+#[inline]
+pub fn load(format: ColorFormat, bytes: &[u8]) -> u32 {
+    match format {
+        ColorFormat::Rgba8 | ColorFormat::Bgra8 => u32::from_le_bytes([bytes[0], bytes[1], bytes[2], bytes[3]]),
+        ColorFormat::Rgb8 => u32::from_le_bytes([bytes[0], bytes[1], bytes[2], 0]),
+        ColorFormat::Rgb565 => u32::from(u16::from_le_bytes([bytes[0], bytes[1]])),
+    }
+}
+
+/// Writes the packed value `v` to the start of `bytes`.
+#[inline]
+pub fn store(format: ColorFormat, bytes: &mut [u8], v: u32) {
+    let le = v.to_le_bytes();
+    let n = format.bytes_per_pixel();
+    bytes[..n].copy_from_slice(&le[..n]);
+}
+
+/// Packs unorm bytes RGBA into `format`, reducing with `bias` where bits are lost.
+#[inline]
+pub fn pack(format: ColorFormat, [r, g, b, a]: [u8; 4], bias: u32) -> u32 {
+    match format {
+        ColorFormat::Rgba8 => u32::from_le_bytes([r, g, b, a]),
+        ColorFormat::Bgra8 => u32::from_le_bytes([b, g, r, a]),
+        ColorFormat::Rgb8 => u32::from_le_bytes([r, g, b, 0]),
+        ColorFormat::Rgb565 => (reduce(r, 31, bias) << 11) | (reduce(g, 63, bias) << 5) | reduce(b, 31, bias),
+    }
+}
+
+/// Unpacks a packed value to unorm bytes RGBA; formats without alpha read alpha 255.
+#[inline]
+pub fn unpack(format: ColorFormat, v: u32) -> [u8; 4] {
+    let [c0, c1, c2, c3] = v.to_le_bytes();
+    match format {
+        ColorFormat::Rgba8 => [c0, c1, c2, c3],
+        ColorFormat::Bgra8 => [c2, c1, c0, c3],
+        ColorFormat::Rgb8 => [c0, c1, c2, 255],
+        ColorFormat::Rgb565 => [expand5((v >> 11) & 31), expand6((v >> 5) & 63), expand5(v & 31), 255],
+    }
+}
+
+/// The bits of a packed pixel that `mask` lets through.
+pub fn mask_bits(format: ColorFormat, mask: ColorMask) -> u32 {
+    let m = |on: bool, bits: u32| if on { bits } else { 0 };
+    match format {
+        ColorFormat::Rgba8 => m(mask.r, 0xff) | m(mask.g, 0xff00) | m(mask.b, 0xff_0000) | m(mask.a, 0xff00_0000),
+        ColorFormat::Bgra8 => m(mask.b, 0xff) | m(mask.g, 0xff00) | m(mask.r, 0xff_0000) | m(mask.a, 0xff00_0000),
+        ColorFormat::Rgb8 => m(mask.r, 0xff) | m(mask.g, 0xff00) | m(mask.b, 0xff_0000),
+        ColorFormat::Rgb565 => m(mask.r, 0xf800) | m(mask.g, 0x07e0) | m(mask.b, 0x001f),
+    }
+}

@@ -1,0 +1,35 @@
+//! `FragmentUniforms`: per-fragment values that change often and never change code.
+
+/// Values a specialist reads through a pointer, so that changing them never
+/// compiles anything. `#[repr(C)]` so compiled code can address its fields.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct FragmentUniforms {
+    /// Scissor box as `[x0, y0, x1, y1]`, `x1`/`y1` exclusive, in window pixels.
+    pub scissor: [i32; 4],
+    /// `glBlendColor`, as unsigned normalized bytes R, G, B, A.
+    pub blend_color: [u8; 4],
+    /// `glAlphaFunc` reference, as an unsigned normalized byte.
+    pub alpha_ref: u8,
+    /// `glStencilFunc` reference, clamped to the stencil range.
+    pub stencil_ref: u8,
+    /// `glStencilFunc` mask, applied to reference and stored value before comparing.
+    pub stencil_value_mask: u8,
+    /// `glStencilMask`: which stencil bits may be written.
+    pub stencil_write_mask: u8,
+}
+
+impl Default for FragmentUniforms {
+    /// GL's initial state: empty scissor box (set with the framebuffer size),
+    /// zero references, all-ones masks.
+    fn default() -> Self {
+        FragmentUniforms {
+            scissor: [0, 0, 0, 0],
+            blend_color: [0, 0, 0, 0],
+            alpha_ref: 0,
+            stencil_ref: 0,
+            stencil_value_mask: 0xff,
+            stencil_write_mask: 0xff,
+        }
+    }
+}
