@@ -1,1 +1,39 @@
+//! softgl: a software OpenGL 1.x fixed-function renderer for offscreen rendering.
+//!
+//! [`Context`] is a GL-shaped state machine drawing into its own
+//! [`Framebuffer`]: geometry (transform, clip, cull) in [`geometry`],
+//! rasterization following GL's rules in [`raster`], and the per-fragment
+//! stages from the `softgl-jit` crate. Errors are [`GlError`] values.
+//!
+//! ```
+//! use softgl::{Context, FramebufferDesc, PrimitiveMode, ClearMask};
+//! let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(8, 8)).unwrap();
+//! gl.clear(ClearMask::COLOR).unwrap();
+//! gl.begin(PrimitiveMode::Triangles).unwrap();
+//! gl.color3(1.0, 0.0, 0.0);
+//! gl.vertex2(-1.0, -1.0);
+//! gl.vertex2(3.0, -1.0);
+//! gl.vertex2(-1.0, 3.0);
+//! gl.end().unwrap();
+//! assert_eq!(gl.framebuffer().pixel(4, 4), Some([255, 0, 0, 255]));
+//! ```
+#![forbid(unsafe_code)]
 
+pub mod context;
+pub mod demo;
+pub mod error;
+pub mod fragment;
+pub mod framebuffer;
+pub mod geometry;
+pub mod matrix;
+pub mod raster;
+pub mod state;
+
+pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
+pub use error::{GlError, GlResult};
+pub use framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
+pub use matrix::MatrixMode;
+pub use softgl_jit::{
+    BlendEquation, BlendFactor, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp, StencilOp,
+};
+pub use state::{Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};

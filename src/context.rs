@@ -1,0 +1,631 @@
+//! `Context`: the GL-shaped state machine of the Rust API.
+//!
+//! Every call that GL can reject returns `Err(GlError)` and changes no state;
+//! the first error since the last [`Context::get_error`] is also kept, GL-style,
+//! for callers (such as the C ABI) that poll.
+
+use crate::error::{GlError, GlResult};
+use crate::fragment::FragmentStage;
+use crate::framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
+use crate::geometry::{Geometry, InVertex, MAX_VIEWPORT};
+use crate::matrix::{self, MatrixMode, MatrixStack};
+use crate::state::{
+    Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, RasterState, ShadeModel, WindowRect,
+};
+use glam::{Mat4, Vec3, Vec4};
+use softgl_jit::{BlendEquation, BlendFactor, BlendKey, ColorMask, CompareFunc, LogicOp, Stage, StencilOp};
+
+/// One vertex attribute array: `size` floats per element, elements `stride`
+/// floats apart (0 means tightly packed).
+#[derive(Clone, Copy, Debug)]
+pub struct AttribArray<'a> {
+    pub size: usize,
+    pub stride: usize,
+    pub data: &'a [f32],
+}
+
+impl<'a> AttribArray<'a> {
+    /// A tightly packed array of `size`-component elements.
+    pub fn new(size: usize, data: &'a [f32]) -> AttribArray<'a> {
+        AttribArray { size, stride: 0, data }
+    }
+
+    fn step(&self) -> usize {
+        if self.stride == 0 {
+            self.size
+        } else {
+            self.stride
+        }
+    }
+
+    /// Number of complete elements in `data`.
+    fn len(&self) -> usize {
+        if self.data.len() < self.size {
+            0
+        } else {
+            (self.data.len() - self.size) / self.step() + 1
+        }
+    }
+
+    /// Element `i`, missing components filled from `fill` (GL's `0, 0, 0, 1`).
+    fn get(&self, i: usize, fill: Vec4) -> Vec4 {
+        let s = &self.data[i * self.step()..][..self.size];
+        let mut v = fill.to_array();
+        v[..self.size].copy_from_slice(s);
+        Vec4::from_array(v)
+    }
+
+    fn check(&self, sizes: std::ops::RangeInclusive<usize>) -> GlResult {
+        if !sizes.contains(&self.size) || (self.stride != 0 && self.stride < self.size) {
+            return Err(GlError::InvalidValue);
+        }
+        Ok(())
+    }
+}
+
+/// The arrays a `draw_arrays`/`draw_elements` call reads (`glVertexPointer`,
+/// `glColorPointer`, …, with their client states enabled). Attributes without
+/// an array take the current value.
+#[derive(Clone, Copy, Debug)]
+pub struct VertexArrays<'a> {
+    /// 2, 3 or 4 components.
+    pub position: AttribArray<'a>,
+    /// 3 or 4 components.
+    pub color: Option<AttribArray<'a>>,
+}
+
+impl<'a> VertexArrays<'a> {
+    /// Positions only.
+    pub fn positions(size: usize, data: &'a [f32]) -> VertexArrays<'a> {
+        VertexArrays {
+            position: AttribArray::new(size, data),
+            color: None,
+        }
+    }
+
+    /// Positions with per-vertex colors.
+    pub fn with_colors(pos_size: usize, pos: &'a [f32], color_size: usize, color: &'a [f32]) -> VertexArrays<'a> {
+        VertexArrays {
+            position: AttribArray::new(pos_size, pos),
+            color: Some(AttribArray::new(color_size, color)),
+        }
+    }
+
+    fn check(&self) -> GlResult<usize> {
+        self.position.check(2..=4)?;
+        let mut len = self.position.len();
+        if let Some(c) = &self.color {
+            c.check(3..=4)?;
+            len = len.min(c.len());
+        }
+        Ok(len)
+    }
+}
+
+/// Index data for `draw_elements`.
+#[derive(Clone, Copy, Debug)]
+pub enum Indices<'a> {
+    U8(&'a [u8]),
+    U16(&'a [u16]),
+    U32(&'a [u32]),
+}
+
+impl Indices<'_> {
+    fn iter(&self) -> Box<dyn Iterator<Item = usize> + '_> {
+        match self {
+            Indices::U8(i) => Box::new(i.iter().map(|&v| usize::from(v))),
+            Indices::U16(i) => Box::new(i.iter().map(|&v| usize::from(v))),
+            Indices::U32(i) => Box::new(i.iter().map(|&v| v as usize)),
+        }
+    }
+}
+
+/// The current vertex attributes (`glColor`, `glNormal`, `glTexCoord`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CurrentAttribs {
+    pub color: Vec4,
+    pub normal: Vec3,
+    pub tex_coord: Vec4,
+}
+
+/// A software GL 1.x context with its own framebuffer. `Send`: it owns all its data.
+pub struct Context {
+    fb: Framebuffer,
+    state: RasterState,
+    modelview: MatrixStack,
+    projection: MatrixStack,
+    texture: MatrixStack,
+    matrix_mode: MatrixMode,
+    current: CurrentAttribs,
+    /// The primitive between `begin` and `end`, with its vertices.
+    begun: Option<(PrimitiveMode, Vec<InVertex>)>,
+    error: Option<GlError>,
+}
+
+impl Context {
+    /// A context drawing into a new framebuffer described by `desc`.
+    pub fn new(desc: FramebufferDesc) -> GlResult<Context> {
+        let fb = Framebuffer::new(desc)?;
+        Ok(Context {
+            state: RasterState::new(desc.width, desc.height),
+            fb,
+            modelview: MatrixStack::new(matrix::MAX_MODELVIEW_DEPTH),
+            projection: MatrixStack::new(matrix::MAX_PROJECTION_DEPTH),
+            texture: MatrixStack::new(matrix::MAX_TEXTURE_DEPTH),
+            matrix_mode: MatrixMode::Modelview,
+            current: CurrentAttribs {
+                color: Vec4::ONE,
+                normal: Vec3::Z,
+                tex_coord: Vec4::W,
+            },
+            begun: None,
+            error: None,
+        })
+    }
+
+    pub fn framebuffer(&self) -> &Framebuffer {
+        &self.fb
+    }
+
+    /// The rasterization and fragment state.
+    pub fn state(&self) -> &RasterState {
+        &self.state
+    }
+
+    pub fn current(&self) -> &CurrentAttribs {
+        &self.current
+    }
+
+    /// `glGetError`: the first error since the last call, then none.
+    pub fn get_error(&mut self) -> Option<GlError> {
+        self.error.take()
+    }
+
+    /// Records `r`'s error (if none is pending) and passes `r` on.
+    fn record<T>(&mut self, r: GlResult<T>) -> GlResult<T> {
+        if let Err(e) = &r {
+            self.error.get_or_insert(*e);
+        }
+        r
+    }
+
+    /// Most calls are errors between `begin` and `end`.
+    fn outside(&mut self) -> GlResult {
+        let r = if self.begun.is_some() {
+            Err(GlError::InvalidOperation)
+        } else {
+            Ok(())
+        };
+        self.record(r)
+    }
+
+    /// Applies `f` to the state unless inside `begin`/`end`.
+    fn set(&mut self, f: impl FnOnce(&mut RasterState)) -> GlResult {
+        self.outside()?;
+        f(&mut self.state);
+        Ok(())
+    }
+
+    /// Checks `ok`, recording `InvalidValue` when false.
+    fn require(&mut self, ok: bool) -> GlResult {
+        self.outside()?;
+        self.record(if ok { Ok(()) } else { Err(GlError::InvalidValue) })
+    }
+
+    // ----- capabilities -----
+
+    pub fn enable(&mut self, cap: Capability) -> GlResult {
+        self.set(|s| *s.flag_mut(cap) = true)
+    }
+
+    pub fn disable(&mut self, cap: Capability) -> GlResult {
+        self.set(|s| *s.flag_mut(cap) = false)
+    }
+
+    pub fn is_enabled(&self, cap: Capability) -> bool {
+        self.state.flag(cap)
+    }
+
+    // ----- clearing, viewport -----
+
+    pub fn clear_color(&mut self, r: f32, g: f32, b: f32, a: f32) -> GlResult {
+        self.set(|s| s.clear_color = [r, g, b, a].map(|c| if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) }))
+    }
+
+    pub fn clear_depth(&mut self, depth: f64) -> GlResult {
+        self.set(|s| s.clear_depth = if depth.is_nan() { 0.0 } else { depth.clamp(0.0, 1.0) })
+    }
+
+    pub fn clear_stencil(&mut self, value: i32) -> GlResult {
+        self.set(|s| s.clear_stencil = value)
+    }
+
+    /// `glClear`: honours the scissor test, the color mask, the depth mask and
+    /// the stencil write mask.
+    pub fn clear(&mut self, mask: ClearMask) -> GlResult {
+        self.outside()?;
+        let s = &self.state;
+        let rect = if s.scissor_test {
+            let b = s.scissor;
+            self.fb
+                .clip_rect(i64::from(b.x), i64::from(b.y), i64::from(b.width), i64::from(b.height))
+        } else {
+            self.fb.bounds()
+        };
+        if mask.color {
+            self.fb.clear_color(rect, s.clear_color, s.color_mask);
+        }
+        if mask.depth && s.depth_write {
+            self.fb.clear_depth(rect, s.clear_depth);
+        }
+        if mask.stencil {
+            let write_mask = s.stencil_write_mask as u8;
+            self.fb.clear_stencil(rect, s.clear_stencil as u8, write_mask);
+        }
+        Ok(())
+    }
+
+    /// `glViewport`; sizes above the maximum are clamped, negative ones rejected.
+    pub fn viewport(&mut self, x: i32, y: i32, width: i32, height: i32) -> GlResult {
+        self.require(width >= 0 && height >= 0)?;
+        let r = WindowRect {
+            x,
+            y,
+            width: width.min(MAX_VIEWPORT),
+            height: height.min(MAX_VIEWPORT),
+        };
+        self.set(|s| s.viewport = r)
+    }
+
+    /// `glDepthRange`, clamped to `[0, 1]`.
+    pub fn depth_range(&mut self, near: f64, far: f64) -> GlResult {
+        let c = |v: f64| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+        self.set(|s| s.depth_range = (c(near), c(far)))
+    }
+
+    pub fn scissor(&mut self, x: i32, y: i32, width: i32, height: i32) -> GlResult {
+        self.require(width >= 0 && height >= 0)?;
+        self.set(|s| s.scissor = WindowRect { x, y, width, height })
+    }
+
+    // ----- matrices -----
+
+    pub fn matrix_mode(&mut self, mode: MatrixMode) -> GlResult {
+        self.outside()?;
+        self.matrix_mode = mode;
+        Ok(())
+    }
+
+    fn stack(&mut self) -> &mut MatrixStack {
+        match self.matrix_mode {
+            MatrixMode::Modelview => &mut self.modelview,
+            MatrixMode::Projection => &mut self.projection,
+            MatrixMode::Texture => &mut self.texture,
+        }
+    }
+
+    /// The top of `mode`'s stack.
+    pub fn matrix(&self, mode: MatrixMode) -> Mat4 {
+        *match mode {
+            MatrixMode::Modelview => &self.modelview,
+            MatrixMode::Projection => &self.projection,
+            MatrixMode::Texture => &self.texture,
+        }
+        .top()
+    }
+
+    /// The depth of `mode`'s stack.
+    pub fn matrix_depth(&self, mode: MatrixMode) -> usize {
+        match mode {
+            MatrixMode::Modelview => self.modelview.depth(),
+            MatrixMode::Projection => self.projection.depth(),
+            MatrixMode::Texture => self.texture.depth(),
+        }
+    }
+
+    pub fn push_matrix(&mut self) -> GlResult {
+        self.outside()?;
+        let r = self.stack().push();
+        self.record(r)
+    }
+
+    pub fn pop_matrix(&mut self) -> GlResult {
+        self.outside()?;
+        let r = self.stack().pop();
+        self.record(r)
+    }
+
+    pub fn load_identity(&mut self) -> GlResult {
+        self.load_matrix(&Mat4::IDENTITY)
+    }
+
+    pub fn load_matrix(&mut self, m: &Mat4) -> GlResult {
+        self.outside()?;
+        *self.stack().top_mut() = *m;
+        Ok(())
+    }
+
+    pub fn mult_matrix(&mut self, m: &Mat4) -> GlResult {
+        self.outside()?;
+        self.stack().mult(m);
+        Ok(())
+    }
+
+    pub fn translate(&mut self, x: f32, y: f32, z: f32) -> GlResult {
+        self.mult_matrix(&Mat4::from_translation(Vec3::new(x, y, z)))
+    }
+
+    pub fn scale(&mut self, x: f32, y: f32, z: f32) -> GlResult {
+        self.mult_matrix(&Mat4::from_scale(Vec3::new(x, y, z)))
+    }
+
+    /// `glRotate`: `angle` in degrees about the axis `(x, y, z)`.
+    pub fn rotate(&mut self, angle: f32, x: f32, y: f32, z: f32) -> GlResult {
+        self.mult_matrix(&matrix::rotation(angle, x, y, z))
+    }
+
+    pub fn frustum(&mut self, l: f64, r: f64, b: f64, t: f64, n: f64, f: f64) -> GlResult {
+        self.outside()?;
+        let m = matrix::frustum(l, r, b, t, n, f);
+        let m = self.record(m)?;
+        self.stack().mult(&m);
+        Ok(())
+    }
+
+    pub fn ortho(&mut self, l: f64, r: f64, b: f64, t: f64, n: f64, f: f64) -> GlResult {
+        self.outside()?;
+        let m = matrix::ortho(l, r, b, t, n, f);
+        let m = self.record(m)?;
+        self.stack().mult(&m);
+        Ok(())
+    }
+
+    // ----- rasterization state -----
+
+    pub fn shade_model(&mut self, model: ShadeModel) -> GlResult {
+        self.set(|s| s.shade_model = model)
+    }
+
+    pub fn front_face(&mut self, dir: FrontFace) -> GlResult {
+        self.set(|s| s.front_face = dir)
+    }
+
+    pub fn cull_face(&mut self, face: Face) -> GlResult {
+        self.set(|s| s.cull_face = face)
+    }
+
+    pub fn polygon_mode(&mut self, face: Face, mode: PolygonMode) -> GlResult {
+        self.set(|s| {
+            if face != Face::Back {
+                s.polygon_mode_front = mode;
+            }
+            if face != Face::Front {
+                s.polygon_mode_back = mode;
+            }
+        })
+    }
+
+    pub fn polygon_offset(&mut self, factor: f32, units: f32) -> GlResult {
+        self.set(|s| (s.offset_factor, s.offset_units) = (factor, units))
+    }
+
+    /// `glPointSize`; `InvalidValue` unless positive.
+    pub fn point_size(&mut self, size: f32) -> GlResult {
+        self.require(size > 0.0)?;
+        self.set(|s| s.point_size = size)
+    }
+
+    /// `glLineWidth`; `InvalidValue` unless positive.
+    pub fn line_width(&mut self, width: f32) -> GlResult {
+        self.require(width > 0.0)?;
+        self.set(|s| s.line_width = width)
+    }
+
+    // ----- per-fragment state -----
+
+    /// `glAlphaFunc`; the reference is clamped to `[0, 1]`.
+    pub fn alpha_func(&mut self, func: CompareFunc, reference: f32) -> GlResult {
+        let r = if reference.is_nan() {
+            0.0
+        } else {
+            reference.clamp(0.0, 1.0)
+        };
+        self.set(|s| (s.alpha_func, s.alpha_ref) = (func, r))
+    }
+
+    pub fn stencil_func(&mut self, func: CompareFunc, reference: i32, mask: u32) -> GlResult {
+        self.set(|s| (s.stencil_func, s.stencil_ref, s.stencil_value_mask) = (func, reference, mask))
+    }
+
+    pub fn stencil_op(&mut self, fail: StencilOp, zfail: StencilOp, zpass: StencilOp) -> GlResult {
+        self.set(|s| (s.stencil_fail, s.stencil_zfail, s.stencil_zpass) = (fail, zfail, zpass))
+    }
+
+    pub fn stencil_mask(&mut self, mask: u32) -> GlResult {
+        self.set(|s| s.stencil_write_mask = mask)
+    }
+
+    pub fn depth_func(&mut self, func: CompareFunc) -> GlResult {
+        self.set(|s| s.depth_func = func)
+    }
+
+    pub fn depth_mask(&mut self, write: bool) -> GlResult {
+        self.set(|s| s.depth_write = write)
+    }
+
+    /// `glBlendFunc`; `SrcAlphaSaturate` is a source factor only (`InvalidEnum` as destination).
+    pub fn blend_func(&mut self, src: BlendFactor, dst: BlendFactor) -> GlResult {
+        self.blend_func_separate(src, dst, src, dst)
+    }
+
+    pub fn blend_func_separate(
+        &mut self,
+        src_rgb: BlendFactor,
+        dst_rgb: BlendFactor,
+        src_alpha: BlendFactor,
+        dst_alpha: BlendFactor,
+    ) -> GlResult {
+        self.outside()?;
+        if !crate::state::valid_dst_factor(dst_rgb) || !crate::state::valid_dst_factor(dst_alpha) {
+            return self.record(Err(GlError::InvalidEnum));
+        }
+        let b = &mut self.state.blend_func;
+        (b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha) = (src_rgb, dst_rgb, src_alpha, dst_alpha);
+        Ok(())
+    }
+
+    pub fn blend_equation(&mut self, eq: BlendEquation) -> GlResult {
+        self.blend_equation_separate(eq, eq)
+    }
+
+    pub fn blend_equation_separate(&mut self, rgb: BlendEquation, alpha: BlendEquation) -> GlResult {
+        self.set(|s| (s.blend_func.eq_rgb, s.blend_func.eq_alpha) = (rgb, alpha))
+    }
+
+    /// `glBlendColor`, clamped to `[0, 1]`.
+    pub fn blend_color(&mut self, r: f32, g: f32, b: f32, a: f32) -> GlResult {
+        self.set(|s| s.blend_color = [r, g, b, a].map(|c| if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) }))
+    }
+
+    /// The blend factors and equations in force.
+    pub fn blend_state(&self) -> BlendKey {
+        self.state.blend_func
+    }
+
+    pub fn logic_op(&mut self, op: LogicOp) -> GlResult {
+        self.set(|s| s.logic_op = op)
+    }
+
+    pub fn color_mask(&mut self, r: bool, g: bool, b: bool, a: bool) -> GlResult {
+        self.set(|s| s.color_mask = ColorMask { r, g, b, a })
+    }
+
+    // ----- immediate mode -----
+
+    /// `glBegin`; `InvalidOperation` when already inside `begin`.
+    pub fn begin(&mut self, mode: PrimitiveMode) -> GlResult {
+        self.outside()?;
+        self.begun = Some((mode, Vec::new()));
+        Ok(())
+    }
+
+    /// `glEnd`: draws the vertices given since `begin`.
+    pub fn end(&mut self) -> GlResult {
+        let Some((mode, verts)) = self.begun.take() else {
+            return self.record(Err(GlError::InvalidOperation));
+        };
+        self.draw(mode, &verts)
+    }
+
+    /// `glVertex4f`: outside `begin`/`end` it is ignored, as in GL.
+    pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) {
+        let color = self.current.color;
+        if let Some((_, verts)) = &mut self.begun {
+            verts.push(InVertex {
+                pos: Vec4::new(x, y, z, w),
+                color,
+            });
+        }
+    }
+
+    pub fn vertex3(&mut self, x: f32, y: f32, z: f32) {
+        self.vertex4(x, y, z, 1.0)
+    }
+
+    pub fn vertex2(&mut self, x: f32, y: f32) {
+        self.vertex4(x, y, 0.0, 1.0)
+    }
+
+    pub fn color4(&mut self, r: f32, g: f32, b: f32, a: f32) {
+        self.current.color = Vec4::new(r, g, b, a);
+    }
+
+    pub fn color3(&mut self, r: f32, g: f32, b: f32) {
+        self.color4(r, g, b, 1.0)
+    }
+
+    /// `glNormal3f`: kept as current state for lighting.
+    pub fn normal3(&mut self, x: f32, y: f32, z: f32) {
+        self.current.normal = Vec3::new(x, y, z);
+    }
+
+    /// `glTexCoord4f`: kept as current state for texturing.
+    pub fn tex_coord4(&mut self, s: f32, t: f32, r: f32, q: f32) {
+        self.current.tex_coord = Vec4::new(s, t, r, q);
+    }
+
+    pub fn tex_coord2(&mut self, s: f32, t: f32) {
+        self.tex_coord4(s, t, 0.0, 1.0)
+    }
+
+    // ----- vertex arrays -----
+
+    /// `glDrawArrays`: vertices `first..first + count` of `arrays`.
+    pub fn draw_arrays(
+        &mut self,
+        mode: PrimitiveMode,
+        first: usize,
+        count: usize,
+        arrays: &VertexArrays<'_>,
+    ) -> GlResult {
+        self.outside()?;
+        let len = self.record(arrays.check())?;
+        let end = first.checked_add(count).filter(|&e| e <= len);
+        self.require(end.is_some())?;
+        let verts: Vec<InVertex> = (first..first + count).map(|i| self.fetch(arrays, i)).collect();
+        self.draw(mode, &verts)
+    }
+
+    /// `glDrawElements`: the vertices of `arrays` that `indices` name, in order.
+    /// An index past the end of an array is `InvalidValue` (GL leaves it undefined).
+    pub fn draw_elements(&mut self, mode: PrimitiveMode, indices: Indices<'_>, arrays: &VertexArrays<'_>) -> GlResult {
+        self.outside()?;
+        let len = self.record(arrays.check())?;
+        self.require(indices.iter().all(|i| i < len))?;
+        let verts: Vec<InVertex> = indices.iter().map(|i| self.fetch(arrays, i)).collect();
+        self.draw(mode, &verts)
+    }
+
+    fn fetch(&self, arrays: &VertexArrays<'_>, i: usize) -> InVertex {
+        InVertex {
+            pos: arrays.position.get(i, Vec4::W),
+            color: arrays.color.map_or(self.current.color, |c| c.get(i, Vec4::W)),
+        }
+    }
+
+    // ----- drawing -----
+
+    fn draw(&mut self, mode: PrimitiveMode, verts: &[InVertex]) -> GlResult {
+        let key = self.state.fragment_key(&self.fb);
+        let uniforms = self.state.fragment_uniforms();
+        let stages = key.stages();
+        let reads_color = stages
+            .as_slice()
+            .iter()
+            .any(|s| matches!(s, Stage::Pack { .. } | Stage::AlphaTest(_)));
+        let reads_depth = key.depth.is_some();
+        let mvp = *self.projection.top() * *self.modelview.top();
+        let geometry = Geometry::new(&self.state, &self.fb, reads_depth, reads_color);
+        let r = FragmentStage::new(key, uniforms, self.fb.target()).and_then(|mut stage| {
+            geometry.draw(&mvp, mode, verts, &mut stage);
+            stage.finish()
+        });
+        self.record(r.map_err(|_| GlError::InvalidOperation))
+    }
+
+    // ----- reading -----
+
+    /// `glReadPixels` into bytes, rows bottom-up.
+    pub fn read_pixels(&mut self, x: i32, y: i32, w: i32, h: i32, format: ReadFormat) -> GlResult<Vec<u8>> {
+        self.outside()?;
+        let r = self.fb.read_pixels(x, y, w, h, format);
+        self.record(r)
+    }
+
+    /// `glReadPixels` with `GL_FLOAT`, rows bottom-up.
+    pub fn read_pixels_f32(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<Vec<[f32; 4]>> {
+        self.outside()?;
+        let r = self.fb.read_pixels_f32(x, y, w, h);
+        self.record(r)
+    }
+}

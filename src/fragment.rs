@@ -1,0 +1,59 @@
+//! The fragment stage as the rasterizer sees it: spans are batched and handed
+//! to the back end for the draw's key.
+
+use crate::raster::SpanSink;
+use softgl_jit::{interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Target};
+
+/// Spans handed to the back end at once.
+const BATCH: usize = 32;
+
+/// Collects spans and runs the fragment stages over them in batches.
+pub struct FragmentStage<'t> {
+    key: FragmentKey,
+    uniforms: FragmentUniforms,
+    target: Target<'t>,
+    batch: Vec<FragmentSpan>,
+    error: Option<FragmentError>,
+}
+
+impl<'t> FragmentStage<'t> {
+    /// A stage for `key`, checked against `target` once here.
+    pub fn new(key: FragmentKey, uniforms: FragmentUniforms, target: Target<'t>) -> Result<Self, FragmentError> {
+        interp::check_key(&key, &target)?;
+        Ok(FragmentStage {
+            key,
+            uniforms,
+            target,
+            batch: Vec::with_capacity(BATCH),
+            error: None,
+        })
+    }
+
+    fn flush(&mut self) {
+        if self.batch.is_empty() {
+            return;
+        }
+        if let Err(e) = interp::run(&self.key, &self.uniforms, &self.batch, &mut self.target) {
+            self.error.get_or_insert(e);
+        }
+        self.batch.clear();
+    }
+
+    /// Runs what is left and reports the first error, if any.
+    pub fn finish(mut self) -> Result<(), FragmentError> {
+        self.flush();
+        self.error.map_or(Ok(()), Err)
+    }
+}
+
+impl SpanSink for FragmentStage<'_> {
+    fn span(&mut self, span: &FragmentSpan) {
+        if span.live_mask() == 0 {
+            return;
+        }
+        self.batch.push(span.clone());
+        if self.batch.len() == BATCH {
+            self.flush();
+        }
+    }
+}

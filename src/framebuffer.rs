@@ -1,0 +1,373 @@
+//! The framebuffer: color, and only the depth and stencil buffers asked for.
+//! Rows are stored bottom-up (row 0 is window y 0), as GL addresses them.
+
+use crate::error::{GlError, GlResult};
+use softgl_jit::{pixel, ColorFormat, ColorMask, DepthFormat, DepthTarget, Target};
+
+/// Largest framebuffer side, in pixels (Mesa's `GL_MAX_VIEWPORT_DIMS`).
+pub const MAX_FRAMEBUFFER_SIZE: u32 = 16384;
+
+/// What a context's framebuffer holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct FramebufferDesc {
+    pub width: u32,
+    pub height: u32,
+    pub color: ColorFormat,
+    /// 0 (no depth buffer), 16, 24 or 32.
+    pub depth_bits: u32,
+    /// 0 (no stencil buffer) or 8.
+    pub stencil_bits: u32,
+}
+
+impl FramebufferDesc {
+    /// RGBA8 color with a 24-bit depth and an 8-bit stencil buffer.
+    pub fn rgba8_d24s8(width: u32, height: u32) -> FramebufferDesc {
+        FramebufferDesc {
+            width,
+            height,
+            color: ColorFormat::Rgba8,
+            depth_bits: 24,
+            stencil_bits: 8,
+        }
+    }
+
+    /// The depth format `depth_bits` asks for; `InvalidValue` for an unsupported size.
+    pub fn depth_format(&self) -> GlResult<Option<DepthFormat>> {
+        match self.depth_bits {
+            0 => Ok(None),
+            16 => Ok(Some(DepthFormat::D16)),
+            24 => Ok(Some(DepthFormat::D24)),
+            32 => Ok(Some(DepthFormat::D32)),
+            _ => Err(GlError::InvalidValue),
+        }
+    }
+
+    fn validate(&self) -> GlResult {
+        let side_ok = |s: u32| (1..=MAX_FRAMEBUFFER_SIZE).contains(&s);
+        if !side_ok(self.width) || !side_ok(self.height) || !matches!(self.stencil_bits, 0 | 8) {
+            return Err(GlError::InvalidValue);
+        }
+        self.depth_format().map(|_| ())
+    }
+}
+
+/// Depth storage, one value per pixel.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum DepthBuffer {
+    D16(Vec<u16>),
+    D24(Vec<u32>),
+    D32(Vec<u32>),
+}
+
+impl DepthBuffer {
+    pub fn format(&self) -> DepthFormat {
+        match self {
+            DepthBuffer::D16(_) => DepthFormat::D16,
+            DepthBuffer::D24(_) => DepthFormat::D24,
+            DepthBuffer::D32(_) => DepthFormat::D32,
+        }
+    }
+
+    fn get(&self, i: usize) -> u32 {
+        match self {
+            DepthBuffer::D16(d) => u32::from(d[i]),
+            DepthBuffer::D24(d) | DepthBuffer::D32(d) => d[i],
+        }
+    }
+
+    fn set(&mut self, i: usize, v: u32) {
+        match self {
+            DepthBuffer::D16(d) => d[i] = v as u16,
+            DepthBuffer::D24(d) | DepthBuffer::D32(d) => d[i] = v,
+        }
+    }
+}
+
+/// A pixel rectangle, clipped to the framebuffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Rect {
+    pub x0: u32,
+    pub y0: u32,
+    pub x1: u32,
+    pub y1: u32,
+}
+
+impl Rect {
+    pub fn is_empty(&self) -> bool {
+        self.x0 >= self.x1 || self.y0 >= self.y1
+    }
+}
+
+/// Formats `read_pixels` can return.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ReadFormat {
+    Rgba8,
+    Rgb8,
+    Bgra8,
+}
+
+impl ReadFormat {
+    fn bytes_per_pixel(self) -> usize {
+        match self {
+            ReadFormat::Rgba8 | ReadFormat::Bgra8 => 4,
+            ReadFormat::Rgb8 => 3,
+        }
+    }
+}
+
+/// Converts a float in `[0, 1]` (clamped; NaN reads as 0) to a unorm value of
+/// `max`, rounding half to even as llvmpipe does.
+pub fn float_to_unorm(v: f32, max: u32) -> u32 {
+    let v = if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+    (v * max as f32).round_ties_even() as u32
+}
+
+/// Converts a window depth in `[0, 1]` to depth-buffer units: computed in f32
+/// for 16 and 24 bits, as llvmpipe does (`rint(float(z * 0xffffff))`), in f64
+/// for 32 bits, where f32 cannot hold the range.
+pub fn depth_to_unorm(z: f64, format: DepthFormat) -> u32 {
+    let z = if z.is_nan() { 0.0 } else { z.clamp(0.0, 1.0) };
+    match format {
+        DepthFormat::D16 | DepthFormat::D24 => ((z as f32) * format.max_value() as f32).round_ties_even() as u32,
+        DepthFormat::D32 => (z * f64::from(u32::MAX)).round_ties_even() as u32,
+    }
+}
+
+/// Color, depth and stencil storage of a context.
+#[derive(Clone, Debug)]
+pub struct Framebuffer {
+    desc: FramebufferDesc,
+    color: Vec<u8>,
+    depth: Option<DepthBuffer>,
+    stencil: Option<Vec<u8>>,
+}
+
+impl Framebuffer {
+    /// Allocates the buffers `desc` asks for, cleared to zero color, depth 1.0 and stencil 0.
+    pub fn new(desc: FramebufferDesc) -> GlResult<Framebuffer> {
+        desc.validate()?;
+        let n = desc.width as usize * desc.height as usize;
+        let color = alloc(n * desc.color.bytes_per_pixel(), 0u8)?;
+        let depth = match desc.depth_format()? {
+            None => None,
+            Some(DepthFormat::D16) => Some(DepthBuffer::D16(alloc(n, u16::MAX)?)),
+            Some(f @ DepthFormat::D24) => Some(DepthBuffer::D24(alloc(n, f.max_value())?)),
+            Some(f @ DepthFormat::D32) => Some(DepthBuffer::D32(alloc(n, f.max_value())?)),
+        };
+        let stencil = if desc.stencil_bits == 8 {
+            Some(alloc(n, 0u8)?)
+        } else {
+            None
+        };
+        Ok(Framebuffer {
+            desc,
+            color,
+            depth,
+            stencil,
+        })
+    }
+
+    pub fn desc(&self) -> &FramebufferDesc {
+        &self.desc
+    }
+
+    pub fn width(&self) -> u32 {
+        self.desc.width
+    }
+
+    pub fn height(&self) -> u32 {
+        self.desc.height
+    }
+
+    pub fn color_format(&self) -> ColorFormat {
+        self.desc.color
+    }
+
+    pub fn depth_format(&self) -> Option<DepthFormat> {
+        self.depth.as_ref().map(DepthBuffer::format)
+    }
+
+    pub fn has_stencil(&self) -> bool {
+        self.stencil.is_some()
+    }
+
+    /// The color bytes, rows bottom-up, tightly packed.
+    pub fn color_bytes(&self) -> &[u8] {
+        &self.color
+    }
+
+    pub fn depth_buffer(&self) -> Option<&DepthBuffer> {
+        self.depth.as_ref()
+    }
+
+    pub fn stencil_buffer(&self) -> Option<&[u8]> {
+        self.stencil.as_deref()
+    }
+
+    /// A checked view for the fragment stages.
+    pub fn target(&mut self) -> Target<'_> {
+        let (w, h, format) = (self.desc.width, self.desc.height, self.desc.color);
+        let depth = self.depth.as_mut().map(|d| match d {
+            DepthBuffer::D16(v) => DepthTarget::D16(v),
+            DepthBuffer::D24(v) => DepthTarget::D24(v),
+            DepthBuffer::D32(v) => DepthTarget::D32(v),
+        });
+        let stride = w as usize * format.bytes_per_pixel();
+        Target::new(
+            w,
+            h,
+            format,
+            &mut self.color,
+            stride,
+            depth,
+            self.stencil.as_deref_mut(),
+        )
+        .expect("a framebuffer's buffers are allocated for its size")
+    }
+
+    /// The whole framebuffer as a rectangle.
+    pub fn bounds(&self) -> Rect {
+        Rect {
+            x0: 0,
+            y0: 0,
+            x1: self.desc.width,
+            y1: self.desc.height,
+        }
+    }
+
+    /// The intersection of the framebuffer with the window rectangle `x, y, w, h`.
+    pub fn clip_rect(&self, x: i64, y: i64, w: i64, h: i64) -> Rect {
+        let clamp_x = |v: i64| v.clamp(0, i64::from(self.desc.width)) as u32;
+        let clamp_y = |v: i64| v.clamp(0, i64::from(self.desc.height)) as u32;
+        Rect {
+            x0: clamp_x(x),
+            y0: clamp_y(y),
+            x1: clamp_x(x.saturating_add(w)),
+            y1: clamp_y(y.saturating_add(h)),
+        }
+    }
+
+    /// Clears `rect` of the color buffer to `rgba` through `mask`.
+    pub fn clear_color(&mut self, rect: Rect, rgba: [f32; 4], mask: ColorMask) {
+        let format = self.desc.color;
+        let bits = pixel::mask_bits(format, mask);
+        if bits == 0 || rect.is_empty() {
+            return;
+        }
+        let c = rgba.map(|v| float_to_unorm(v, 255) as u8);
+        let value = pixel::pack(format, c, pixel::reduce_bias(false, 0, 0));
+        let bpp = format.bytes_per_pixel();
+        let stride = self.desc.width as usize * bpp;
+        for y in rect.y0..rect.y1 {
+            let row = &mut self.color[y as usize * stride..][..stride];
+            for px in row[rect.x0 as usize * bpp..rect.x1 as usize * bpp].chunks_exact_mut(bpp) {
+                let old = pixel::load(format, px);
+                pixel::store(format, px, (value & bits) | (old & !bits));
+            }
+        }
+    }
+
+    /// Clears `rect` of the depth buffer (if any) to window depth `depth`.
+    pub fn clear_depth(&mut self, rect: Rect, depth: f64) {
+        let w = self.desc.width as usize;
+        let Some(buf) = self.depth.as_mut() else { return };
+        let v = depth_to_unorm(depth, buf.format());
+        for y in rect.y0..rect.y1 {
+            for x in rect.x0..rect.x1 {
+                buf.set(y as usize * w + x as usize, v);
+            }
+        }
+    }
+
+    /// Clears `rect` of the stencil buffer (if any) to `value` through `write_mask`.
+    pub fn clear_stencil(&mut self, rect: Rect, value: u8, write_mask: u8) {
+        let w = self.desc.width as usize;
+        let Some(buf) = self.stencil.as_mut() else { return };
+        for y in rect.y0..rect.y1 {
+            for s in &mut buf[y as usize * w..][rect.x0 as usize..rect.x1 as usize] {
+                *s = (value & write_mask) | (*s & !write_mask);
+            }
+        }
+    }
+
+    /// The color at `(x, y)` as unorm RGBA (alpha 255 for formats without alpha).
+    pub fn pixel(&self, x: u32, y: u32) -> Option<[u8; 4]> {
+        if x >= self.desc.width || y >= self.desc.height {
+            return None;
+        }
+        let format = self.desc.color;
+        let bpp = format.bytes_per_pixel();
+        let off = (y as usize * self.desc.width as usize + x as usize) * bpp;
+        Some(pixel::unpack(format, pixel::load(format, &self.color[off..])))
+    }
+
+    /// The stored depth at `(x, y)`, in buffer units.
+    pub fn depth_at(&self, x: u32, y: u32) -> Option<u32> {
+        if x >= self.desc.width || y >= self.desc.height {
+            return None;
+        }
+        let i = y as usize * self.desc.width as usize + x as usize;
+        self.depth.as_ref().map(|d| d.get(i))
+    }
+
+    /// The stored stencil value at `(x, y)`.
+    pub fn stencil_at(&self, x: u32, y: u32) -> Option<u8> {
+        if x >= self.desc.width || y >= self.desc.height {
+            return None;
+        }
+        let i = y as usize * self.desc.width as usize + x as usize;
+        self.stencil.as_ref().map(|s| s[i])
+    }
+
+    /// `glReadPixels` into bytes: rows bottom-up, tightly packed. Pixels of the
+    /// rectangle outside the framebuffer read as zero.
+    pub fn read_pixels(&self, x: i32, y: i32, w: i32, h: i32, format: ReadFormat) -> GlResult<Vec<u8>> {
+        if w < 0 || h < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        let bpp = format.bytes_per_pixel();
+        let mut out = alloc(w as usize * h as usize * bpp, 0u8)?;
+        for j in 0..h {
+            for i in 0..w {
+                let (px, py) = (i64::from(x) + i64::from(i), i64::from(y) + i64::from(j));
+                let (Ok(px), Ok(py)) = (u32::try_from(px), u32::try_from(py)) else {
+                    continue;
+                };
+                let Some([r, g, b, a]) = self.pixel(px, py) else {
+                    continue;
+                };
+                let o = (j as usize * w as usize + i as usize) * bpp;
+                let dst = &mut out[o..o + bpp];
+                match format {
+                    ReadFormat::Rgba8 => dst.copy_from_slice(&[r, g, b, a]),
+                    ReadFormat::Rgb8 => dst.copy_from_slice(&[r, g, b]),
+                    ReadFormat::Bgra8 => dst.copy_from_slice(&[b, g, r, a]),
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// `glReadPixels` with `GL_FLOAT`: RGBA in `[0, 1]`, rows bottom-up.
+    pub fn read_pixels_f32(&self, x: i32, y: i32, w: i32, h: i32) -> GlResult<Vec<[f32; 4]>> {
+        let bytes = self.read_pixels(x, y, w, h, ReadFormat::Rgba8)?;
+        Ok(bytes
+            .chunks_exact(4)
+            .map(|p| [0, 1, 2, 3].map(|c| f32::from(p[c]) / 255.0))
+            .collect())
+    }
+
+    /// The color buffer as an image, top row first.
+    pub fn to_rgba_image(&self) -> image::RgbaImage {
+        let (w, h) = (self.desc.width, self.desc.height);
+        image::RgbaImage::from_fn(w, h, |x, y| image::Rgba(self.pixel(x, h - 1 - y).unwrap_or([0; 4])))
+    }
+}
+
+/// A zero-initialised vector, or `OutOfMemory` instead of an abort.
+fn alloc<T: Clone>(n: usize, value: T) -> GlResult<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n).map_err(|_| GlError::OutOfMemory)?;
+    v.resize(n, value);
+    Ok(v)
+}

@@ -1,0 +1,259 @@
+//! The geometry pipeline of one draw: transform, primitive assembly, clip
+//! codes with trivial accept/reject, homogeneous clipping, perspective divide,
+//! viewport transform, facing and culling, polygon mode, then rasterization.
+
+pub mod assemble;
+pub mod clip;
+
+use crate::framebuffer::{Framebuffer, Rect};
+use crate::raster::{self, RasterParams, RasterVertex, SpanSink};
+use crate::state::{FrontFace, PolygonMode, RasterState, ShadeModel};
+use assemble::{assemble, Primitive};
+use clip::{clip_polygon, clip_segment, outcode, ClipVertex, PolyVertex};
+use glam::{Mat4, Vec4};
+
+pub use crate::state::PrimitiveMode;
+
+/// Window coordinates are kept within this many pixels of the origin, so that
+/// fixed-point edge products stay inside i64 (2^22 px × 2^8 sub-pixels, squared).
+const GUARD_BAND_PX: f64 = (1u64 << 21) as f64;
+
+/// The largest viewport side (`GL_MAX_VIEWPORT_DIMS`, as Mesa reports it).
+pub const MAX_VIEWPORT: i32 = 16384;
+
+/// A vertex as the API hands it over: object position and current color.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InVertex {
+    pub pos: Vec4,
+    pub color: Vec4,
+}
+
+/// The viewport transform, in f32 as llvmpipe computes it.
+#[derive(Clone, Copy, Debug)]
+struct Viewport {
+    scale: [f32; 3],
+    translate: [f32; 3],
+}
+
+/// Per-draw constants of the geometry pipeline.
+pub struct Geometry<'s> {
+    state: &'s RasterState,
+    viewport: Viewport,
+    guard: f64,
+    params: RasterParams,
+    depth_unit: f64,
+}
+
+impl<'s> Geometry<'s> {
+    /// Sets up a draw into `fb` with `state`; `depth`/`color` say whether any
+    /// fragment stage reads those interpolants.
+    pub fn new(state: &'s RasterState, fb: &Framebuffer, depth: bool, color: bool) -> Geometry<'s> {
+        let vp = state.viewport;
+        let (vw, vh) = (vp.width.min(MAX_VIEWPORT), vp.height.min(MAX_VIEWPORT));
+        let (n, f) = state.depth_range;
+        let viewport = Viewport {
+            scale: [vw as f32 / 2.0, vh as f32 / 2.0, ((f - n) / 2.0) as f32],
+            translate: [
+                vp.x as f32 + vw as f32 / 2.0,
+                vp.y as f32 + vh as f32 / 2.0,
+                ((f + n) / 2.0) as f32,
+            ],
+        };
+        let guard = (GUARD_BAND_PX / f64::from(vw.max(vh).max(1))).max(1.0);
+        let fb_rect = fb.bounds();
+        let vp_rect = fb.clip_rect(i64::from(vp.x), i64::from(vp.y), i64::from(vw), i64::from(vh));
+        let bounds = Rect {
+            x0: fb_rect.x0.max(vp_rect.x0),
+            y0: fb_rect.y0.max(vp_rect.y0),
+            x1: fb_rect.x1.min(vp_rect.x1),
+            y1: fb_rect.y1.min(vp_rect.y1),
+        };
+        let depth_format = fb.depth_format().filter(|_| depth);
+        let depth_unit = depth_format.map_or(0.0, |f| 1.0 / f64::from(f.max_value()));
+        let params = RasterParams {
+            bounds,
+            depth: depth_format,
+            color,
+            offset: None,
+        };
+        Geometry {
+            state,
+            viewport,
+            guard,
+            params,
+            depth_unit,
+        }
+    }
+
+    /// Transforms `verts` by `mvp` and draws them as `mode` into `sink`.
+    pub fn draw(&self, mvp: &Mat4, mode: PrimitiveMode, verts: &[InVertex], sink: &mut dyn SpanSink) {
+        if self.params.bounds.is_empty() {
+            return;
+        }
+        let clip: Vec<ClipVertex> = verts
+            .iter()
+            .map(|v| ClipVertex {
+                pos: *mvp * v.pos,
+                color: v.color.clamp(Vec4::ZERO, Vec4::ONE),
+            })
+            .collect();
+        assemble(mode, clip.len(), |prim| match prim {
+            Primitive::Point(i) => self.point(&clip[i], sink),
+            Primitive::Line { a, b, provoking } => {
+                let flat = self.flat_color(&clip[provoking]);
+                self.line(&clip[a], &clip[b], flat, sink)
+            }
+            Primitive::Triangle { v, provoking, edges } => {
+                let flat = self.flat_color(&clip[provoking]);
+                let poly = [0, 1, 2].map(|k| (clip[v[k]], edges[k]));
+                self.polygon(poly, flat, sink)
+            }
+        });
+    }
+
+    fn flat_color(&self, v: &ClipVertex) -> Option<[f32; 4]> {
+        (self.state.shade_model == ShadeModel::Flat).then(|| v.color.to_array())
+    }
+
+    /// Perspective divide and viewport transform; `None` when not finite.
+    fn project(&self, v: &ClipVertex) -> Option<RasterVertex> {
+        let inv_w = 1.0 / v.pos.w;
+        let (s, t) = (self.viewport.scale, self.viewport.translate);
+        let x = v.pos.x * inv_w * s[0] + t[0];
+        let y = v.pos.y * inv_w * s[1] + t[1];
+        let z = v.pos.z * inv_w * s[2] + t[2];
+        let ok = x.is_finite() && y.is_finite() && z.is_finite() && inv_w.is_finite();
+        ok.then(|| RasterVertex {
+            x,
+            y,
+            z: f64::from(z),
+            inv_w,
+            color: v.color.to_array(),
+        })
+    }
+
+    fn point(&self, v: &ClipVertex, sink: &mut dyn SpanSink) {
+        if !v.is_finite() || outcode(v.pos, 1.0) != 0 {
+            return;
+        }
+        if let Some(rv) = self.project(v) {
+            raster::point(&rv, self.state.point_size, &self.params, sink);
+        }
+    }
+
+    fn line(&self, a: &ClipVertex, b: &ClipVertex, flat: Option<[f32; 4]>, sink: &mut dyn SpanSink) {
+        if !(a.is_finite() && b.is_finite()) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
+            return;
+        }
+        let planes = outcode(a.pos, self.guard) | outcode(b.pos, self.guard);
+        let Some((a, b)) = (if planes == 0 {
+            Some((*a, *b))
+        } else {
+            clip_segment(a, b, planes, self.guard)
+        }) else {
+            return;
+        };
+        if let (Some(ra), Some(rb)) = (self.project(&a), self.project(&b)) {
+            raster::line(&ra, &rb, self.state.line_width, flat, &self.params, sink);
+        }
+    }
+
+    fn polygon(&self, poly: [PolyVertex; 3], flat: Option<[f32; 4]>, sink: &mut dyn SpanSink) {
+        if poly.iter().any(|(v, _)| !v.is_finite()) {
+            return;
+        }
+        let codes = poly.map(|(v, _)| outcode(v.pos, 1.0));
+        if codes[0] & codes[1] & codes[2] != 0 {
+            return;
+        }
+        let planes = poly.iter().fold(0, |acc, (v, _)| acc | outcode(v.pos, self.guard));
+        let mut clipped: Vec<PolyVertex> = poly.to_vec();
+        if planes != 0 {
+            clip_polygon(&mut clipped, planes, self.guard);
+        }
+        let mut win: Vec<(RasterVertex, bool)> = Vec::with_capacity(clipped.len());
+        for (v, edge) in &clipped {
+            match self.project(v) {
+                Some(rv) => win.push((rv, *edge)),
+                None => return,
+            }
+        }
+        if win.len() < 3 {
+            return;
+        }
+        // Facing from the signed area in window space (y up: positive is CCW).
+        let area: f64 = (0..win.len())
+            .map(|i| {
+                let (p, q) = (&win[i].0, &win[(i + 1) % win.len()].0);
+                f64::from(p.x) * f64::from(q.y) - f64::from(q.x) * f64::from(p.y)
+            })
+            .sum();
+        let front = (area > 0.0) == (self.state.front_face == FrontFace::Ccw);
+        if self.state.culls(front) {
+            return;
+        }
+        let mode = self.state.polygon_mode(front);
+        let offset_on = match mode {
+            PolygonMode::Fill => self.state.offset_fill,
+            PolygonMode::Line => self.state.offset_line,
+            PolygonMode::Point => self.state.offset_point,
+        };
+        let offset = offset_on.then_some((self.state.offset_factor, self.state.offset_units));
+        match mode {
+            PolygonMode::Fill => {
+                if area == 0.0 {
+                    return;
+                }
+                let params = RasterParams { offset, ..self.params };
+                for i in 1..win.len() - 1 {
+                    raster::triangle([&win[0].0, &win[i].0, &win[i + 1].0], flat, &params, sink);
+                }
+            }
+            PolygonMode::Line | PolygonMode::Point => {
+                let dz = offset.map_or(0.0, |(factor, units)| self.offset_of(&win, factor, units));
+                let shifted: Vec<(RasterVertex, bool)> = win
+                    .iter()
+                    .map(|(v, e)| (RasterVertex { z: v.z + dz, ..*v }, *e))
+                    .collect();
+                for i in 0..shifted.len() {
+                    let (v, edge) = &shifted[i];
+                    if !edge {
+                        continue;
+                    }
+                    if mode == PolygonMode::Line {
+                        let next = &shifted[(i + 1) % shifted.len()].0;
+                        raster::line(v, next, self.state.line_width, flat, &self.params, sink);
+                    } else {
+                        let v = RasterVertex {
+                            color: flat.unwrap_or(v.color),
+                            ..*v
+                        };
+                        raster::point(&v, self.state.point_size, &self.params, sink);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Polygon offset for a polygon drawn as lines or points: from the depth
+    /// slope of its plane in window space (GL 1.5 §3.5.5).
+    fn offset_of(&self, win: &[(RasterVertex, bool)], factor: f32, units: f32) -> f64 {
+        let (a, b, c) = (&win[0].0, &win[1].0, &win[2].0);
+        let (x1, y1, z1) = (f64::from(b.x - a.x), f64::from(b.y - a.y), b.z - a.z);
+        let (x2, y2, z2) = (f64::from(c.x - a.x), f64::from(c.y - a.y), c.z - a.z);
+        let det = x1 * y2 - x2 * y1;
+        let slope = if det == 0.0 {
+            0.0
+        } else {
+            let zx = (z1 * y2 - z2 * y1) / det;
+            let zy = (z2 * x1 - z1 * x2) / det;
+            zx.abs().max(zy.abs())
+        };
+        let o = f64::from(factor) * slope + f64::from(units) * self.depth_unit;
+        if o.is_finite() {
+            o
+        } else {
+            0.0
+        }
+    }
+}

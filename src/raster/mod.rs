@@ -1,0 +1,129 @@
+//! Rasterization following GL's rules as llvmpipe implements them: vertices
+//! snapped to 8 sub-pixel bits (round half to even), samples at pixel centers,
+//! edges on the left and at the bottom (y up) own the centers on them.
+//! Primitives become [`FragmentSpan`]s handed to a [`SpanSink`].
+//!
+//! Measured facts about llvmpipe that these rules follow: `docs/llvmpipe-facts.md`.
+
+mod line;
+mod point;
+mod triangle;
+
+pub use line::line;
+pub use point::point;
+pub use triangle::triangle;
+
+use crate::framebuffer::Rect;
+use softgl_jit::{DepthFormat, FragmentSpan};
+
+/// Sub-pixel bits of the fixed-point grid.
+pub const SUBPIXEL_BITS: u32 = 8;
+/// One pixel in fixed-point units.
+pub const ONE: i64 = 1 << SUBPIXEL_BITS;
+
+/// A vertex after the viewport transform.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RasterVertex {
+    /// Window x, y in pixels (y up); pixel `(i, j)` has its center at `(i + 0.5, j + 0.5)`.
+    pub x: f32,
+    pub y: f32,
+    /// Window depth in `[0, 1]`.
+    pub z: f64,
+    /// `1 / w_clip`, for perspective-correct interpolation.
+    pub inv_w: f32,
+    /// RGBA in `[0, 1]`.
+    pub color: [f32; 4],
+}
+
+/// Receives the spans a primitive covers.
+pub trait SpanSink {
+    fn span(&mut self, span: &FragmentSpan);
+}
+
+impl<F: FnMut(&FragmentSpan)> SpanSink for F {
+    fn span(&mut self, span: &FragmentSpan) {
+        self(span)
+    }
+}
+
+/// What the rasterizer needs to know about the target and the state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RasterParams {
+    /// Fragments are produced only inside this rectangle: the framebuffer
+    /// intersected with the viewport (geometry is clipped to a guard band only).
+    pub bounds: Rect,
+    /// Depth format to produce `z` for; `None` when no stage reads depth.
+    pub depth: Option<DepthFormat>,
+    /// Whether any stage reads the fragment color.
+    pub color: bool,
+    /// Polygon offset `(factor, units)` for this primitive, if enabled.
+    pub offset: Option<(f32, f32)>,
+}
+
+/// Snaps a window coordinate to the fixed-point grid whose integer multiples of
+/// [`ONE`] are pixel centers: `rint((x - 0.5) * 256)` in f32, as llvmpipe does.
+/// Non-finite input snaps to 0; callers drop such primitives before.
+#[inline]
+pub fn snap(v: f32) -> i64 {
+    let f = ((v - 0.5) * ONE as f32).round_ties_even();
+    if f.is_finite() {
+        // Clipping bounds window coordinates to the guard band; this keeps
+        // edge products inside i64 whatever arrives.
+        f.clamp(-((1u64 << 40) as f32), (1u64 << 40) as f32) as i64
+    } else {
+        0
+    }
+}
+
+/// Converts an interpolated color channel to a unorm byte: `rint(c * 255)`.
+#[inline]
+pub fn color_to_unorm8(c: f32) -> u8 {
+    let c = if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) };
+    (c * 255.0).round_ties_even() as u8
+}
+
+/// Converts window depth to buffer units (clamped to `[0, 1]`).
+#[inline]
+pub fn depth_value(z: f64, format: Option<DepthFormat>) -> u32 {
+    match format {
+        Some(f) => crate::framebuffer::depth_to_unorm(z, f),
+        None => 0,
+    }
+}
+
+/// `floor(a / b)` for `b > 0`.
+#[inline]
+pub(crate) fn floor_div(a: i64, b: i64) -> i64 {
+    a.div_euclid(b)
+}
+
+/// `ceil(a / b)` for `b > 0`.
+#[inline]
+pub(crate) fn ceil_div(a: i64, b: i64) -> i64 {
+    -((-a).div_euclid(b))
+}
+
+/// Emits a row `y` from `x0` to `x1` (inclusive) in spans of at most 64 fragments,
+/// with `shade(x, slot)` filling each slot.
+pub(crate) fn emit_row(
+    sink: &mut dyn SpanSink,
+    span: &mut FragmentSpan,
+    y: u32,
+    x0: u32,
+    x1: u32,
+    mut shade: impl FnMut(u32, &mut FragmentSpan, usize),
+) {
+    let mut x = x0;
+    while x <= x1 {
+        let n = (x1 - x + 1).min(softgl_jit::SPAN_MAX as u32);
+        span.x = x;
+        span.y = y;
+        span.len = n;
+        span.mask = if n == 64 { u64::MAX } else { (1u64 << n) - 1 };
+        for i in 0..n {
+            shade(x + i, span, i as usize);
+        }
+        sink.span(span);
+        x += n;
+    }
+}

@@ -1,0 +1,45 @@
+//! Points: squares of an integer size around the snapped position.
+
+use super::{color_to_unorm8, depth_value, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
+use softgl_jit::FragmentSpan;
+
+/// The integer size GL rasterizes for `size`: rounded half down, at least 1
+/// (llvmpipe: 2.5 → 2, 2.9 → 3).
+pub fn point_size_pixels(size: f32) -> u32 {
+    if size.is_nan() {
+        return 1;
+    }
+    (size - 0.5).ceil().clamp(1.0, 255.0) as u32
+}
+
+/// Rasterizes a point of `size` at `v`: pixels whose centers satisfy
+/// `p - s/2 < center <= p + s/2` on both axes (llvmpipe's convention).
+pub fn point(v: &RasterVertex, size: f32, params: &RasterParams, sink: &mut dyn SpanSink) {
+    if !(v.x.is_finite() && v.y.is_finite()) {
+        return;
+    }
+    let half = i64::from(point_size_pixels(size)) * ONE / 2;
+    let range = |p: i64, min: u32, end: u32| {
+        let lo = (floor_div(p - half, ONE) + 1).max(i64::from(min));
+        let hi = floor_div(p + half, ONE).min(i64::from(end) - 1);
+        (lo, hi)
+    };
+    let b = params.bounds;
+    let (x0, x1) = range(snap(v.x), b.x0, b.x1);
+    let (y0, y1) = range(snap(v.y), b.y0, b.y1);
+    if x0 > x1 || y0 > y1 {
+        return;
+    }
+    let rgba = v.color.map(color_to_unorm8);
+    let z = depth_value(v.z, params.depth);
+    let mut span = FragmentSpan::new(0, 0);
+    for y in y0..=y1 {
+        emit_row(sink, &mut span, y as u32, x0 as u32, x1 as u32, |_, s, i| {
+            s.r[i] = rgba[0];
+            s.g[i] = rgba[1];
+            s.b[i] = rgba[2];
+            s.a[i] = rgba[3];
+            s.z[i] = z;
+        });
+    }
+}

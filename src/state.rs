@@ -1,0 +1,346 @@
+//! GL state that shapes rasterization and the fragment stages, and how it
+//! becomes a [`FragmentKey`] and [`FragmentUniforms`] at draw time.
+
+use crate::framebuffer::{float_to_unorm, Framebuffer};
+use softgl_jit::{
+    BlendFactor, BlendKey, ColorMask, CompareFunc, DepthKey, FragmentKey, FragmentUniforms, LogicOp, StencilKey,
+    StencilOp,
+};
+
+/// Capabilities for `enable`/`disable`/`is_enabled`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Capability {
+    AlphaTest,
+    Blend,
+    ColorLogicOp,
+    CullFace,
+    DepthTest,
+    Dither,
+    PolygonOffsetFill,
+    PolygonOffsetLine,
+    PolygonOffsetPoint,
+    ScissorTest,
+    StencilTest,
+}
+
+/// The ten GL 1.x primitive modes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PrimitiveMode {
+    Points,
+    Lines,
+    LineStrip,
+    LineLoop,
+    Triangles,
+    TriangleStrip,
+    TriangleFan,
+    Quads,
+    QuadStrip,
+    Polygon,
+}
+
+impl PrimitiveMode {
+    pub const ALL: [PrimitiveMode; 10] = [
+        PrimitiveMode::Points,
+        PrimitiveMode::Lines,
+        PrimitiveMode::LineStrip,
+        PrimitiveMode::LineLoop,
+        PrimitiveMode::Triangles,
+        PrimitiveMode::TriangleStrip,
+        PrimitiveMode::TriangleFan,
+        PrimitiveMode::Quads,
+        PrimitiveMode::QuadStrip,
+        PrimitiveMode::Polygon,
+    ];
+}
+
+/// Polygon faces, for culling and polygon mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Face {
+    Front,
+    Back,
+    FrontAndBack,
+}
+
+/// Which winding is front-facing (`glFrontFace`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FrontFace {
+    Ccw,
+    Cw,
+}
+
+/// How polygons are rasterized (`glPolygonMode`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PolygonMode {
+    Point,
+    Line,
+    Fill,
+}
+
+/// `glShadeModel`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ShadeModel {
+    Flat,
+    Smooth,
+}
+
+/// Which buffers `clear` clears.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub struct ClearMask {
+    pub color: bool,
+    pub depth: bool,
+    pub stencil: bool,
+}
+
+impl ClearMask {
+    pub const COLOR: ClearMask = ClearMask {
+        color: true,
+        depth: false,
+        stencil: false,
+    };
+    pub const DEPTH: ClearMask = ClearMask {
+        color: false,
+        depth: true,
+        stencil: false,
+    };
+    pub const STENCIL: ClearMask = ClearMask {
+        color: false,
+        depth: false,
+        stencil: true,
+    };
+    pub const ALL: ClearMask = ClearMask {
+        color: true,
+        depth: true,
+        stencil: true,
+    };
+}
+
+impl std::ops::BitOr for ClearMask {
+    type Output = ClearMask;
+    fn bitor(self, o: ClearMask) -> ClearMask {
+        ClearMask {
+            color: self.color || o.color,
+            depth: self.depth || o.depth,
+            stencil: self.stencil || o.stencil,
+        }
+    }
+}
+
+/// A window rectangle `x, y, width, height` (viewport, scissor box).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct WindowRect {
+    pub x: i32,
+    pub y: i32,
+    pub width: i32,
+    pub height: i32,
+}
+
+/// Every piece of state the fragment stages and the rasterizer read.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RasterState {
+    pub alpha_test: bool,
+    pub blend: bool,
+    pub color_logic_op: bool,
+    pub cull: bool,
+    pub depth_test: bool,
+    pub dither: bool,
+    pub offset_fill: bool,
+    pub offset_line: bool,
+    pub offset_point: bool,
+    pub scissor_test: bool,
+    pub stencil_test: bool,
+
+    pub alpha_func: CompareFunc,
+    pub alpha_ref: f32,
+    pub stencil_func: CompareFunc,
+    pub stencil_ref: i32,
+    pub stencil_value_mask: u32,
+    pub stencil_write_mask: u32,
+    pub stencil_fail: StencilOp,
+    pub stencil_zfail: StencilOp,
+    pub stencil_zpass: StencilOp,
+    pub depth_func: CompareFunc,
+    pub depth_write: bool,
+    pub blend_func: BlendKey,
+    pub blend_color: [f32; 4],
+    pub logic_op: LogicOp,
+    pub color_mask: ColorMask,
+
+    pub scissor: WindowRect,
+    pub viewport: WindowRect,
+    pub depth_range: (f64, f64),
+    pub cull_face: Face,
+    pub front_face: FrontFace,
+    pub polygon_mode_front: PolygonMode,
+    pub polygon_mode_back: PolygonMode,
+    pub offset_factor: f32,
+    pub offset_units: f32,
+    pub shade_model: ShadeModel,
+    pub point_size: f32,
+    pub line_width: f32,
+
+    pub clear_color: [f32; 4],
+    pub clear_depth: f64,
+    pub clear_stencil: i32,
+}
+
+impl RasterState {
+    /// GL's initial state for a window of `width` × `height`.
+    pub fn new(width: u32, height: u32) -> RasterState {
+        let full = WindowRect {
+            x: 0,
+            y: 0,
+            width: width as i32,
+            height: height as i32,
+        };
+        RasterState {
+            alpha_test: false,
+            blend: false,
+            color_logic_op: false,
+            cull: false,
+            depth_test: false,
+            dither: true,
+            offset_fill: false,
+            offset_line: false,
+            offset_point: false,
+            scissor_test: false,
+            stencil_test: false,
+            alpha_func: CompareFunc::Always,
+            alpha_ref: 0.0,
+            stencil_func: CompareFunc::Always,
+            stencil_ref: 0,
+            stencil_value_mask: !0,
+            stencil_write_mask: !0,
+            stencil_fail: StencilOp::Keep,
+            stencil_zfail: StencilOp::Keep,
+            stencil_zpass: StencilOp::Keep,
+            depth_func: CompareFunc::Less,
+            depth_write: true,
+            blend_func: BlendKey::DEFAULT,
+            blend_color: [0.0; 4],
+            logic_op: LogicOp::Copy,
+            color_mask: ColorMask::ALL,
+            scissor: full,
+            viewport: full,
+            depth_range: (0.0, 1.0),
+            cull_face: Face::Back,
+            front_face: FrontFace::Ccw,
+            polygon_mode_front: PolygonMode::Fill,
+            polygon_mode_back: PolygonMode::Fill,
+            offset_factor: 0.0,
+            offset_units: 0.0,
+            shade_model: ShadeModel::Smooth,
+            point_size: 1.0,
+            line_width: 1.0,
+            clear_color: [0.0; 4],
+            clear_depth: 1.0,
+            clear_stencil: 0,
+        }
+    }
+
+    /// The enable flag behind `cap`.
+    pub fn flag_mut(&mut self, cap: Capability) -> &mut bool {
+        match cap {
+            Capability::AlphaTest => &mut self.alpha_test,
+            Capability::Blend => &mut self.blend,
+            Capability::ColorLogicOp => &mut self.color_logic_op,
+            Capability::CullFace => &mut self.cull,
+            Capability::DepthTest => &mut self.depth_test,
+            Capability::Dither => &mut self.dither,
+            Capability::PolygonOffsetFill => &mut self.offset_fill,
+            Capability::PolygonOffsetLine => &mut self.offset_line,
+            Capability::PolygonOffsetPoint => &mut self.offset_point,
+            Capability::ScissorTest => &mut self.scissor_test,
+            Capability::StencilTest => &mut self.stencil_test,
+        }
+    }
+
+    /// Whether `cap` is enabled.
+    pub fn flag(&self, cap: Capability) -> bool {
+        match cap {
+            Capability::AlphaTest => self.alpha_test,
+            Capability::Blend => self.blend,
+            Capability::ColorLogicOp => self.color_logic_op,
+            Capability::CullFace => self.cull,
+            Capability::DepthTest => self.depth_test,
+            Capability::Dither => self.dither,
+            Capability::PolygonOffsetFill => self.offset_fill,
+            Capability::PolygonOffsetLine => self.offset_line,
+            Capability::PolygonOffsetPoint => self.offset_point,
+            Capability::ScissorTest => self.scissor_test,
+            Capability::StencilTest => self.stencil_test,
+        }
+    }
+
+    /// The scissor box clipped against nothing, as `[x0, y0, x1, y1]`.
+    fn scissor_box(&self) -> [i32; 4] {
+        let s = self.scissor;
+        [s.x, s.y, s.x.saturating_add(s.width), s.y.saturating_add(s.height)]
+    }
+
+    /// The fragment key for drawing into `fb`: normalized, so stages that cannot
+    /// change a pixel (a scissor box covering the framebuffer, tests without
+    /// their buffer) are left out.
+    pub fn fragment_key(&self, fb: &Framebuffer) -> FragmentKey {
+        let [x0, y0, x1, y1] = self.scissor_box();
+        let scissor_covers = x0 <= 0 && y0 <= 0 && x1 >= fb.width() as i32 && y1 >= fb.height() as i32;
+        let key = FragmentKey {
+            color_format: fb.color_format(),
+            depth_format: fb.depth_format(),
+            stencil_buffer: fb.has_stencil(),
+            scissor: self.scissor_test && !scissor_covers,
+            alpha_test: (self.alpha_test && self.alpha_func != CompareFunc::Always).then_some(self.alpha_func),
+            stencil: self.stencil_test.then_some(StencilKey {
+                func: self.stencil_func,
+                fail: self.stencil_fail,
+                zfail: self.stencil_zfail,
+                zpass: self.stencil_zpass,
+            }),
+            depth: self.depth_test.then_some(DepthKey {
+                func: self.depth_func,
+                write: self.depth_write,
+            }),
+            blend: (self.blend && self.blend_func != BlendKey::DEFAULT).then_some(self.blend_func),
+            dither: self.dither,
+            logic_op: (self.color_logic_op && self.logic_op != LogicOp::Copy).then_some(self.logic_op),
+            color_mask: self.color_mask,
+        };
+        key.normalized()
+    }
+
+    /// The values the fragment stages read, in the units they compare in.
+    pub fn fragment_uniforms(&self) -> FragmentUniforms {
+        FragmentUniforms {
+            scissor: self.scissor_box(),
+            blend_color: self.blend_color.map(|c| float_to_unorm(c, 255) as u8),
+            alpha_ref: float_to_unorm(self.alpha_ref, 255) as u8,
+            stencil_ref: self.stencil_ref.clamp(0, 255) as u8,
+            stencil_value_mask: self.stencil_value_mask as u8,
+            stencil_write_mask: self.stencil_write_mask as u8,
+        }
+    }
+
+    /// The polygon mode for a face.
+    pub fn polygon_mode(&self, front: bool) -> PolygonMode {
+        if front {
+            self.polygon_mode_front
+        } else {
+            self.polygon_mode_back
+        }
+    }
+
+    /// Whether a polygon facing this way is culled.
+    pub fn culls(&self, front: bool) -> bool {
+        self.cull
+            && match self.cull_face {
+                Face::Front => front,
+                Face::Back => !front,
+                Face::FrontAndBack => true,
+            }
+    }
+}
+
+/// Blend factors are valid for both source and destination in GL 1.4, except
+/// `SRC_ALPHA_SATURATE`, which is a source factor only.
+pub fn valid_dst_factor(f: BlendFactor) -> bool {
+    f != BlendFactor::SrcAlphaSaturate
+}
