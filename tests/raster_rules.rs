@@ -1,0 +1,443 @@
+//! GL's rasterization rules, checked on exact pixels. Where llvmpipe's
+//! behaviour was measured (docs/llvmpipe-facts.md), the expected pixels are
+//! llvmpipe's.
+
+use softgl::{
+    BlendFactor, Capability, ClearMask, ColorFormat, CompareFunc, Context, FramebufferDesc, MatrixMode, PrimitiveMode,
+    ShadeModel, StencilOp, VertexArrays,
+};
+
+/// A context whose object coordinates are window coordinates (y up).
+fn window_ctx(w: u32, h: u32) -> Context {
+    let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(w, h)).unwrap();
+    gl.matrix_mode(MatrixMode::Projection).unwrap();
+    gl.ortho(0.0, f64::from(w), 0.0, f64::from(h), -1.0, 1.0).unwrap();
+    gl.matrix_mode(MatrixMode::Modelview).unwrap();
+    gl
+}
+
+/// Counts coverage in the stencil buffer: every fragment increments it.
+fn count_with_stencil(gl: &mut Context) {
+    gl.enable(Capability::StencilTest).unwrap();
+    gl.stencil_func(CompareFunc::Always, 0, 0xff).unwrap();
+    gl.stencil_op(StencilOp::Keep, StencilOp::Keep, StencilOp::Incr)
+        .unwrap();
+}
+
+fn stencil_grid(gl: &Context) -> Vec<Vec<u8>> {
+    let fb = gl.framebuffer();
+    (0..fb.height())
+        .map(|y| (0..fb.width()).map(|x| fb.stencil_at(x, y).unwrap()).collect())
+        .collect()
+}
+
+/// The lit pixels (stencil > 0) as `(x, y)`, row by row from y = 0.
+fn lit(gl: &Context) -> Vec<(u32, u32)> {
+    let fb = gl.framebuffer();
+    let mut v = Vec::new();
+    for y in 0..fb.height() {
+        for x in 0..fb.width() {
+            if fb.stencil_at(x, y).unwrap() > 0 {
+                v.push((x, y));
+            }
+        }
+    }
+    v
+}
+
+fn draw(gl: &mut Context, mode: PrimitiveMode, pts: &[(f32, f32)]) {
+    gl.begin(mode).unwrap();
+    for &(x, y) in pts {
+        gl.vertex2(x, y);
+    }
+    gl.end().unwrap();
+}
+
+fn rect(x0: u32, x1: u32, y0: u32, y1: u32) -> Vec<(u32, u32)> {
+    (y0..=y1).flat_map(|y| (x0..=x1).map(move |x| (x, y))).collect()
+}
+
+#[test]
+fn fan_of_64_covering_the_window_hits_every_pixel_exactly_once() {
+    let mut gl = window_ctx(64, 64);
+    count_with_stencil(&mut gl);
+    let (cx, cy) = (13.37f32, 41.71f32);
+    let mut pts = vec![(cx, cy)];
+    for i in 0..=64 {
+        let a = i as f32 / 64.0 * std::f32::consts::TAU;
+        pts.push((cx + 300.0 * a.cos(), cy + 300.0 * a.sin()));
+    }
+    draw(&mut gl, PrimitiveMode::TriangleFan, &pts);
+    let grid = stencil_grid(&gl);
+    let ones = grid.iter().flatten().filter(|&&s| s == 1).count();
+    assert_eq!(ones, 64 * 64, "every pixel hit exactly once: {grid:?}");
+}
+
+#[test]
+fn fan_of_64_inside_the_window_hits_no_pixel_twice() {
+    let mut gl = window_ctx(64, 64);
+    count_with_stencil(&mut gl);
+    let (cx, cy) = (29.13f32, 35.77f32);
+    let mut pts = vec![(cx, cy)];
+    for i in 0..=64 {
+        let a = i as f32 / 64.0 * std::f32::consts::TAU + 0.1;
+        pts.push((cx + 21.3 * a.cos(), cy + 17.9 * a.sin()));
+    }
+    draw(&mut gl, PrimitiveMode::TriangleFan, &pts);
+    let grid = stencil_grid(&gl);
+    assert_eq!(grid.iter().flatten().copied().max(), Some(1), "no pixel hit twice");
+    // The same outline as one polygon covers the same pixels: the shared edges
+    // inside the fan neither drop nor add pixels.
+    let fan = lit(&gl);
+    let mut gl2 = window_ctx(64, 64);
+    count_with_stencil(&mut gl2);
+    draw(&mut gl2, PrimitiveMode::Polygon, &pts[1..pts.len() - 1]);
+    let poly = lit(&gl2);
+    assert!(
+        fan.len() > 1000,
+        "the fan covers an ellipse of about 1200 pixels, got {}",
+        fan.len()
+    );
+    // A polygon is a fan from its first vertex: other interior edges, same union.
+    assert_eq!(fan, poly);
+}
+
+#[test]
+fn grid_of_quads_with_edges_through_pixel_centers_hits_every_pixel_once() {
+    let mut gl = window_ctx(40, 40);
+    count_with_stencil(&mut gl);
+    gl.begin(PrimitiveMode::Quads).unwrap();
+    for i in 0..10 {
+        for j in 0..10 {
+            let (x0, y0) = (2.5 + 3.0 * i as f32, 4.5 + 3.0 * j as f32);
+            gl.vertex2(x0, y0);
+            gl.vertex2(x0 + 3.0, y0);
+            gl.vertex2(x0 + 3.0, y0 + 3.0);
+            gl.vertex2(x0, y0 + 3.0);
+        }
+    }
+    gl.end().unwrap();
+    let grid = stencil_grid(&gl);
+    assert_eq!(grid.iter().flatten().copied().max(), Some(1));
+    // Left and bottom edges own the centers on them: x 2.5..32.5 covers 2..=31.
+    assert_eq!(lit(&gl), rect(2, 31, 4, 33));
+}
+
+#[test]
+fn additive_blending_counts_shared_edges_once() {
+    let mut gl = window_ctx(32, 32);
+    gl.enable(Capability::Blend).unwrap();
+    gl.blend_func(BlendFactor::One, BlendFactor::One).unwrap();
+    gl.color4(1.0 / 255.0, 0.0, 0.0, 0.0);
+    // A strip of 30 triangles with vertices on pixel centers and corners.
+    let mut pts = Vec::new();
+    for i in 0..16 {
+        pts.push((1.5 + 2.0 * i as f32, 3.0));
+        pts.push((0.5 + 2.0 * i as f32, 29.5));
+    }
+    draw(&mut gl, PrimitiveMode::TriangleStrip, &pts);
+    let fb = gl.framebuffer();
+    let mut covered = 0;
+    for y in 0..32 {
+        for x in 0..32 {
+            let r = fb.pixel(x, y).unwrap()[0];
+            assert!(r <= 1, "pixel ({x}, {y}) hit {r} times");
+            covered += u32::from(r);
+        }
+    }
+    assert!(covered > 700, "the strip covers about 30x26 pixels, got {covered}");
+}
+
+#[test]
+fn top_left_rule_matches_llvmpipe_on_axis_aligned_edges() {
+    // llvmpipe: quad (1.5,1.5)-(5.5,5.5) lights x = 1..=4, y = 1..=4, either winding.
+    for ccw in [true, false] {
+        let mut gl = window_ctx(10, 8);
+        count_with_stencil(&mut gl);
+        let mut q = vec![(1.5, 1.5), (5.5, 1.5), (5.5, 5.5), (1.5, 5.5)];
+        if !ccw {
+            q.reverse();
+        }
+        draw(&mut gl, PrimitiveMode::Triangles, &[q[0], q[1], q[2], q[0], q[2], q[3]]);
+        assert_eq!(lit(&gl), rect(1, 4, 1, 4), "ccw = {ccw}");
+    }
+}
+
+#[test]
+fn top_left_rule_matches_llvmpipe_on_sloped_edges() {
+    // Triangle A: the hypotenuse x + y = 9 has the inside at -x: centers on it are out.
+    let mut gl = window_ctx(10, 8);
+    count_with_stencil(&mut gl);
+    draw(&mut gl, PrimitiveMode::Triangles, &[(1.5, 1.5), (7.5, 1.5), (1.5, 7.5)]);
+    let expect: Vec<(u32, u32)> = (1..=6).flat_map(|y| (1..=(7 - y)).map(move |x| (x, y))).collect();
+    assert_eq!(lit(&gl), expect);
+    // Triangle B: the inside is at +x: centers on the hypotenuse are in.
+    let mut gl = window_ctx(10, 8);
+    count_with_stencil(&mut gl);
+    draw(&mut gl, PrimitiveMode::Triangles, &[(7.5, 7.5), (1.5, 7.5), (7.5, 1.5)]);
+    let expect: Vec<(u32, u32)> = (2..=6).flat_map(|y| ((8 - y)..=6).map(move |x| (x, y))).collect();
+    assert_eq!(lit(&gl), expect);
+}
+
+#[test]
+fn vertices_snap_to_nearest_subpixel_with_ties_to_even() {
+    // A left edge at 2.5 + d: pixel 2 is in while the snapped edge is <= 2.5.
+    for (d, in_) in [
+        (1.0 / 1024.0, true),
+        (1.0 / 512.0, true),
+        (3.0 / 1024.0, false),
+        (1.0 / 256.0, false),
+    ] {
+        let mut gl = window_ctx(8, 4);
+        count_with_stencil(&mut gl);
+        let x0 = 2.5 + d;
+        draw(
+            &mut gl,
+            PrimitiveMode::Triangles,
+            &[(x0, 0.0), (6.0, 0.0), (6.0, 4.0), (x0, 0.0), (6.0, 4.0), (x0, 4.0)],
+        );
+        assert_eq!(gl.framebuffer().stencil_at(2, 1) == Some(1), in_, "d = {d}");
+    }
+}
+
+#[test]
+fn quads_split_along_v0_v2_and_flat_shading_takes_the_last_vertex() {
+    // llvmpipe: red 255 at v0 and v2, 0 at v1 and v3: the diagonal x == y is all 255.
+    let mut gl = window_ctx(16, 16);
+    gl.begin(PrimitiveMode::Quads).unwrap();
+    for (i, (x, y)) in [(0.0, 0.0), (16.0, 0.0), (16.0, 16.0), (0.0, 16.0)]
+        .into_iter()
+        .enumerate()
+    {
+        let r = if i % 2 == 0 { 1.0 } else { 0.0 };
+        gl.color3(r, 0.0, 0.0);
+        gl.vertex2(x, y);
+    }
+    gl.end().unwrap();
+    for i in 0..16 {
+        assert_eq!(gl.framebuffer().pixel(i, i).unwrap()[0], 255, "diagonal pixel {i}");
+    }
+    assert!(gl.framebuffer().pixel(12, 3).unwrap()[0] < 255);
+
+    // Flat shading: quads take v3, polygons v0, triangles v2.
+    let cases = [
+        (PrimitiveMode::Quads, 3usize),
+        (PrimitiveMode::Polygon, 0),
+        (PrimitiveMode::TriangleFan, 3),
+    ];
+    for (mode, provoking) in cases {
+        let mut gl = window_ctx(16, 16);
+        gl.shade_model(ShadeModel::Flat).unwrap();
+        gl.begin(mode).unwrap();
+        for (i, (x, y)) in [(0.0, 0.0), (16.0, 0.0), (16.0, 16.0), (0.0, 16.0)]
+            .into_iter()
+            .enumerate()
+        {
+            gl.color3(i as f32 / 4.0, 0.0, 0.0);
+            gl.vertex2(x, y);
+        }
+        gl.end().unwrap();
+        let want = (provoking as f32 / 4.0 * 255.0).round_ties_even() as u8;
+        for (x, y) in [(12, 3), (3, 12)] {
+            let got = gl.framebuffer().pixel(x, y).unwrap()[0];
+            let want = if mode == PrimitiveMode::TriangleFan && y > x {
+                // The fan's first triangle (0, 1, 2) takes v2, its second (0, 2, 3) takes v3.
+                want
+            } else if mode == PrimitiveMode::TriangleFan {
+                (2.0f32 / 4.0 * 255.0).round_ties_even() as u8
+            } else {
+                want
+            };
+            assert_eq!(got, want, "{mode:?} at ({x}, {y})");
+        }
+    }
+}
+
+#[test]
+fn quad_strip_splits_along_v0_v3() {
+    // Red 255 at v0 and v3 of the strip's quad: the v0-v3 diagonal is all 255.
+    let mut gl = window_ctx(16, 16);
+    gl.begin(PrimitiveMode::QuadStrip).unwrap();
+    for (i, (x, y)) in [(0.0, 0.0), (16.0, 0.0), (0.0, 16.0), (16.0, 16.0)]
+        .into_iter()
+        .enumerate()
+    {
+        let r = if i == 0 || i == 3 { 1.0 } else { 0.0 };
+        gl.color3(r, 0.0, 0.0);
+        gl.vertex2(x, y);
+    }
+    gl.end().unwrap();
+    for i in 0..16 {
+        assert_eq!(gl.framebuffer().pixel(i, i).unwrap()[0], 255, "diagonal pixel {i}");
+    }
+}
+
+#[test]
+fn smooth_colors_are_sampled_at_centers_and_rounded_like_llvmpipe() {
+    let mut gl = window_ctx(16, 1);
+    let data = [0.0, 0.0, 16.0, 0.0, 16.0, 1.0, 0.0, 1.0];
+    let colors = [
+        0.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0,
+    ];
+    gl.draw_arrays(
+        PrimitiveMode::Quads,
+        0,
+        4,
+        &VertexArrays::with_colors(2, &data, 4, &colors),
+    )
+    .unwrap();
+    let reds: Vec<u8> = (0..16).map(|x| gl.framebuffer().pixel(x, 0).unwrap()[0]).collect();
+    assert_eq!(
+        reds,
+        [8, 24, 40, 56, 72, 88, 104, 120, 135, 151, 167, 183, 199, 215, 231, 247]
+    );
+}
+
+#[test]
+fn depth_values_match_llvmpipe_z24() {
+    for (z_ndc, want) in [
+        (0.0f32, 0x80_0000u32),
+        (-0.5, 0x40_0000),
+        (0.5, 0xBF_FFFF),
+        (1.0, 0xFF_FFFF),
+    ] {
+        let mut gl = window_ctx(4, 4);
+        gl.enable(Capability::DepthTest).unwrap();
+        gl.depth_func(CompareFunc::Always).unwrap();
+        gl.begin(PrimitiveMode::Quads).unwrap();
+        // ortho(-1, 1) near/far: window z = (-z_eye + 1) / 2.
+        for (x, y) in [(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0)] {
+            gl.vertex3(x, y, -z_ndc);
+        }
+        gl.end().unwrap();
+        assert_eq!(gl.framebuffer().depth_at(1, 1), Some(want), "z_ndc = {z_ndc}");
+    }
+}
+
+#[test]
+fn thin_lines_follow_diamond_exit_like_llvmpipe() {
+    let cases: [((f32, f32), (f32, f32), Vec<(u32, u32)>); 7] = [
+        ((0.5, 0.5), (8.5, 0.5), rect(0, 7, 0, 0)),
+        ((8.5, 0.5), (0.5, 0.5), rect(1, 8, 0, 0)),
+        ((1.5, 1.5), (1.5, 7.5), rect(1, 1, 1, 6)),
+        ((1.5, 7.5), (1.5, 1.5), rect(1, 1, 2, 7)),
+        ((0.5, 0.5), (7.5, 7.5), (0..=6).map(|i| (i, i)).collect()),
+        (
+            (0.0, 0.0),
+            (8.0, 3.0),
+            [rect(0, 2, 0, 0), rect(3, 4, 1, 1), rect(5, 7, 2, 2)].concat(),
+        ),
+        ((0.3, 0.5), (8.7, 0.5), rect(0, 7, 0, 0)),
+    ];
+    for (a, b, want) in cases {
+        let mut gl = window_ctx(10, 10);
+        count_with_stencil(&mut gl);
+        draw(&mut gl, PrimitiveMode::Lines, &[a, b]);
+        assert_eq!(lit(&gl), want, "line {a:?} -> {b:?}");
+    }
+    // A zero-length line and one that never leaves its start diamond draw nothing.
+    for (a, b) in [((3.5, 3.5), (3.5, 3.5)), ((0.2, 0.5), (0.8, 0.5))] {
+        let mut gl = window_ctx(10, 10);
+        count_with_stencil(&mut gl);
+        draw(&mut gl, PrimitiveMode::Lines, &[a, b]);
+        assert!(lit(&gl).is_empty(), "line {a:?} -> {b:?}");
+    }
+}
+
+#[test]
+fn wide_lines_are_parallelograms_like_llvmpipe() {
+    let cases = [
+        (3.0, (1.5, 4.5), (9.5, 4.5), rect(1, 8, 3, 5)),
+        (3.0, (1.0, 4.0), (9.0, 4.0), rect(1, 8, 2, 4)),
+        (2.0, (1.5, 4.5), (9.5, 4.5), rect(1, 8, 3, 4)),
+        (3.0, (4.5, 1.5), (4.5, 8.5), rect(3, 5, 1, 7)),
+    ];
+    for (width, a, b, want) in cases {
+        let mut gl = window_ctx(12, 12);
+        count_with_stencil(&mut gl);
+        gl.line_width(width).unwrap();
+        draw(&mut gl, PrimitiveMode::Lines, &[a, b]);
+        assert_eq!(lit(&gl), want, "width {width} {a:?} -> {b:?}");
+    }
+}
+
+#[test]
+fn points_cover_llvmpipe_squares() {
+    let cases = [
+        ((4.5, 4.5), 1.0, rect(4, 4, 4, 4)),
+        ((4.5, 4.5), 2.0, rect(4, 5, 4, 5)),
+        ((4.5, 4.5), 3.0, rect(3, 5, 3, 5)),
+        ((4.5, 4.5), 4.0, rect(3, 6, 3, 6)),
+        ((4.0, 4.0), 1.0, rect(4, 4, 4, 4)),
+        ((4.0, 4.0), 2.0, rect(3, 4, 3, 4)),
+        ((4.0, 4.0), 4.0, rect(2, 5, 2, 5)),
+        ((4.25, 4.75), 2.0, rect(3, 4, 4, 5)),
+        ((4.5, 4.5), 2.5, rect(4, 5, 4, 5)),
+    ];
+    for ((x, y), size, want) in cases {
+        let mut gl = window_ctx(10, 10);
+        count_with_stencil(&mut gl);
+        gl.point_size(size).unwrap();
+        draw(&mut gl, PrimitiveMode::Points, &[(x, y)]);
+        assert_eq!(lit(&gl), want, "point at ({x}, {y}) size {size}");
+    }
+}
+
+#[test]
+fn every_primitive_mode_draws_the_expected_fragment_count() {
+    let square = [(1.0, 1.0), (9.0, 1.0), (9.0, 9.0), (1.0, 9.0)];
+    let cases = [
+        (PrimitiveMode::Points, 4),
+        (PrimitiveMode::Lines, 8 + 8),
+        (PrimitiveMode::LineStrip, 8 * 3),
+        (PrimitiveMode::LineLoop, 8 * 4),
+        (PrimitiveMode::Triangles, 36),
+        (PrimitiveMode::TriangleStrip, 8 * 8),
+        (PrimitiveMode::TriangleFan, 8 * 8),
+        (PrimitiveMode::Quads, 64),
+        (PrimitiveMode::QuadStrip, 36),
+        (PrimitiveMode::Polygon, 64),
+    ];
+    for (mode, want) in cases {
+        let mut gl = window_ctx(12, 12);
+        count_with_stencil(&mut gl);
+        let pts: Vec<(f32, f32)> = match mode {
+            // A strip and a quad strip zig-zag: order the square's corners for them.
+            PrimitiveMode::TriangleStrip | PrimitiveMode::QuadStrip => vec![square[0], square[1], square[3], square[2]],
+            _ => square.to_vec(),
+        };
+        draw(&mut gl, mode, &pts);
+        let count: u32 = stencil_grid(&gl).iter().flatten().map(|&s| u32::from(s)).sum();
+        let want = match mode {
+            // The quad strip's one quad is the full square.
+            PrimitiveMode::QuadStrip => 64,
+            _ => want,
+        };
+        assert_eq!(count, want, "{mode:?}");
+    }
+}
+
+#[test]
+fn rgb565_and_bgra_framebuffers_render() {
+    for color in [ColorFormat::Rgb565, ColorFormat::Bgra8, ColorFormat::Rgb8] {
+        let desc = FramebufferDesc {
+            width: 8,
+            height: 8,
+            color,
+            depth_bits: 16,
+            stencil_bits: 0,
+        };
+        let mut gl = Context::new(desc).unwrap();
+        gl.clear_color(0.0, 0.0, 1.0, 1.0).unwrap();
+        gl.clear(ClearMask::ALL).unwrap();
+        gl.color3(1.0, 0.0, 0.0);
+        draw(
+            &mut gl,
+            PrimitiveMode::Triangles,
+            &[(-1.0, -1.0), (0.0, -1.0), (0.0, 1.0)],
+        );
+        let fb = gl.framebuffer();
+        assert_eq!(fb.pixel(0, 7), Some([0, 0, 255, 255]), "{color:?} clear");
+        assert_eq!(fb.pixel(3, 1), Some([255, 0, 0, 255]), "{color:?} drawn");
+    }
+}
