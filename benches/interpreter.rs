@@ -1,1 +1,218 @@
-fn main() {}
+//! Fragment throughput of the per-fragment back ends, in fragments per second.
+//!
+//! Every back end runs the same work: each [`Scene`] is a key over a 256x256
+//! RGBA8 target covered by full 64-wide spans of coherent data (smooth color
+//! gradients, depth increasing with x + y), starting from the same buffers each
+//! iteration. A second back end (the JIT) is added by implementing [`Backend`]
+//! and calling [`bench_backend`] for it, so it lands in the same groups.
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
+use softgl_jit::{
+    BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, DepthTarget, FragmentKey,
+    FragmentSpan, FragmentUniforms, StencilKey, StencilOp, Target, SPAN_MAX,
+};
+
+/// Width and height of the target.
+const SIZE: u32 = 256;
+
+/// A way to run a key's stages over spans into a target.
+trait Backend {
+    /// Its name in the report.
+    const NAME: &'static str;
+    /// What the back end makes of a key before running it (a compiled
+    /// specialist); made once per scene, outside the measurement.
+    type Prepared;
+
+    fn prepare(&self, key: &FragmentKey) -> Self::Prepared;
+
+    fn run(&self, prepared: &Self::Prepared, u: &FragmentUniforms, spans: &[FragmentSpan], target: &mut Target<'_>);
+}
+
+/// The reference interpreter.
+struct Interpreter;
+
+impl Backend for Interpreter {
+    const NAME: &'static str = "interpreter";
+    type Prepared = FragmentKey;
+
+    fn prepare(&self, key: &FragmentKey) -> FragmentKey {
+        *key
+    }
+
+    fn run(&self, key: &FragmentKey, u: &FragmentUniforms, spans: &[FragmentSpan], target: &mut Target<'_>) {
+        softgl_jit::interp::run(key, u, spans, target).expect("scene keys match their buffers");
+    }
+}
+
+/// The buffers a scene draws into, restored before every iteration.
+#[derive(Clone)]
+struct Buffers {
+    color: Vec<u8>,
+    depth: Option<Vec<u32>>,
+    stencil: Option<Vec<u8>>,
+}
+
+impl Buffers {
+    fn target(&mut self) -> Target<'_> {
+        Target::new(
+            SIZE,
+            SIZE,
+            ColorFormat::Rgba8,
+            &mut self.color,
+            SIZE as usize * 4,
+            self.depth.as_deref_mut().map(DepthTarget::D24),
+            self.stencil.as_deref_mut(),
+        )
+        .expect("buffers sized for the target")
+    }
+}
+
+/// One benchmark input: a key, its uniforms, and the starting buffers.
+struct Scene {
+    name: &'static str,
+    key: FragmentKey,
+    uniforms: FragmentUniforms,
+    buffers: Buffers,
+}
+
+/// Full 64-wide spans covering the target: red follows x, green y, blue and
+/// alpha the diagonal, z = (x + y) * 0x7fff grows to just under the D24 max.
+fn spans() -> Vec<FragmentSpan> {
+    let mut spans = Vec::new();
+    for y in 0..SIZE {
+        for x0 in (0..SIZE).step_by(SPAN_MAX) {
+            let mut s = FragmentSpan::new(x0, y);
+            for i in 0..SPAN_MAX {
+                let x = x0 + i as u32;
+                let diag = ((x + y) / 2) as u8;
+                s.set(i, [x as u8, y as u8, diag, 255 - diag], (x + y) * 0x7fff);
+            }
+            spans.push(s);
+        }
+    }
+    spans
+}
+
+fn scenes() -> Vec<Scene> {
+    let background: Vec<u8> = (0..SIZE * SIZE)
+        .flat_map(|i| [(i / SIZE) as u8, 64, (i % SIZE) as u8, 255])
+        .collect();
+    let color_only = Buffers {
+        color: background.clone(),
+        depth: None,
+        stencil: None,
+    };
+    let cleared_depth = vec![0x00ff_ffff; (SIZE * SIZE) as usize];
+    let less = DepthKey {
+        func: CompareFunc::Less,
+        write: true,
+    };
+    let over = BlendKey {
+        src_rgb: BlendFactor::SrcAlpha,
+        dst_rgb: BlendFactor::OneMinusSrcAlpha,
+        src_alpha: BlendFactor::SrcAlpha,
+        dst_alpha: BlendFactor::OneMinusSrcAlpha,
+        ..BlendKey::DEFAULT
+    };
+    let rgba8 = FragmentKey::new(ColorFormat::Rgba8, None, false);
+    vec![
+        Scene {
+            name: "minimal",
+            key: rgba8,
+            uniforms: FragmentUniforms::default(),
+            buffers: color_only.clone(),
+        },
+        Scene {
+            name: "depth_only",
+            key: FragmentKey {
+                depth: Some(less),
+                ..FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), false)
+            },
+            uniforms: FragmentUniforms::default(),
+            buffers: Buffers {
+                depth: Some(cleared_depth.clone()),
+                ..color_only.clone()
+            },
+        },
+        Scene {
+            name: "blend_only",
+            key: FragmentKey {
+                blend: Some(over),
+                ..rgba8
+            },
+            uniforms: FragmentUniforms::default(),
+            buffers: color_only.clone(),
+        },
+        Scene {
+            name: "all_ops",
+            key: FragmentKey {
+                scissor: true,
+                alpha_test: Some(CompareFunc::Greater),
+                stencil: Some(StencilKey {
+                    func: CompareFunc::Equal,
+                    fail: StencilOp::Keep,
+                    zfail: StencilOp::Keep,
+                    zpass: StencilOp::Incr,
+                }),
+                depth: Some(less),
+                blend: Some(over),
+                color_mask: ColorMask {
+                    a: false,
+                    ..ColorMask::ALL
+                },
+                ..FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), true)
+            },
+            uniforms: FragmentUniforms {
+                scissor: [8, 8, SIZE as i32 - 8, SIZE as i32 - 8],
+                alpha_ref: 8,
+                ..FragmentUniforms::default()
+            },
+            buffers: Buffers {
+                color: background,
+                depth: Some(cleared_depth),
+                stencil: Some(vec![0; (SIZE * SIZE) as usize]),
+            },
+        },
+    ]
+}
+
+/// Measures `backend` on every scene, one criterion group per scene so back
+/// ends sit side by side.
+fn bench_backend<B: Backend>(c: &mut Criterion, backend: &B) {
+    let spans = spans();
+    let fragments: u64 = spans.iter().map(|s| u64::from(s.live_mask().count_ones())).sum();
+    for scene in scenes() {
+        let prepared = backend.prepare(&scene.key);
+        let mut group = c.benchmark_group(scene.name);
+        group.throughput(Throughput::Elements(fragments));
+        group.bench_function(B::NAME, |b| {
+            b.iter_batched_ref(
+                || scene.buffers.clone(),
+                |buffers| {
+                    let mut target = buffers.target();
+                    backend.run(&prepared, &scene.uniforms, &spans, &mut target);
+                    black_box(target.color());
+                },
+                BatchSize::LargeInput,
+            );
+        });
+        group.finish();
+    }
+}
+
+fn interpreter(c: &mut Criterion) {
+    bench_backend(c, &Interpreter);
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default()
+        .sample_size(20)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2));
+    targets = interpreter
+}
+criterion_main!(benches);

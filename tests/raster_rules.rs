@@ -154,7 +154,7 @@ fn top_left_rule_matches_llvmpipe_on_axis_aligned_edges() {
     for ccw in [true, false] {
         let mut gl = window_ctx(10, 8);
         count_with_stencil(&mut gl);
-        let mut q = vec![(1.5, 1.5), (5.5, 1.5), (5.5, 5.5), (1.5, 5.5)];
+        let mut q = [(1.5, 1.5), (5.5, 1.5), (5.5, 5.5), (1.5, 5.5)];
         if !ccw {
             q.reverse();
         }
@@ -316,7 +316,8 @@ fn depth_values_match_llvmpipe_z24() {
 
 #[test]
 fn thin_lines_follow_diamond_exit_like_llvmpipe() {
-    let cases: [((f32, f32), (f32, f32), Vec<(u32, u32)>); 7] = [
+    type Case = ((f32, f32), (f32, f32), Vec<(u32, u32)>);
+    let cases: [Case; 7] = [
         ((0.5, 0.5), (8.5, 0.5), rect(0, 7, 0, 0)),
         ((8.5, 0.5), (0.5, 0.5), rect(1, 8, 0, 0)),
         ((1.5, 1.5), (1.5, 7.5), rect(1, 1, 1, 6)),
