@@ -73,7 +73,6 @@ fn run_span(key: &FragmentKey, stages: &[Stage], u: &FragmentUniforms, span: &Fr
         *c = [span.r[i], span.g[i], span.b[i], span.a[i]];
     }
     let mut packed = [0u32; SPAN_MAX];
-    let lanes = |live: u64| (0..SPAN_MAX).filter(move |i| live & (1 << i) != 0);
 
     for stage in stages {
         match *stage {
@@ -168,6 +167,19 @@ fn run_span(key: &FragmentKey, stages: &[Stage], u: &FragmentUniforms, span: &Fr
             }
         }
     }
+}
+
+/// The indices of the set bits of `mask`, lowest first.
+fn lanes(mask: u64) -> impl Iterator<Item = usize> {
+    let mut m = mask;
+    std::iter::from_fn(move || {
+        if m == 0 {
+            return None;
+        }
+        let i = m.trailing_zeros() as usize;
+        m &= m - 1;
+        Some(i)
+    })
 }
 
 /// The stencil value after `op`, through the write mask.
