@@ -115,20 +115,39 @@ impl ReadFormat {
     }
 }
 
+/// Rounds a non-negative finite f32 to the nearest integer, ties to even,
+/// without a libm call: adding 2^23 leaves no fraction bits, and the FPU's
+/// default rounding is to nearest even. Values from 2^23 up are integers already.
+#[inline]
+pub fn rint_nonnegative(v: f32) -> f32 {
+    const TWO_23: f32 = 8_388_608.0;
+    if v < TWO_23 {
+        (v + TWO_23) - TWO_23
+    } else {
+        v
+    }
+}
+
 /// Converts a float in `[0, 1]` (clamped; NaN reads as 0) to a unorm value of
 /// `max`, rounding half to even as llvmpipe does.
+#[inline]
 pub fn float_to_unorm(v: f32, max: u32) -> u32 {
     let v = if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
-    (v * max as f32).round_ties_even() as u32
+    if max < 1 << 24 {
+        rint_nonnegative(v * max as f32) as u32
+    } else {
+        (v * max as f32).round_ties_even() as u32
+    }
 }
 
 /// Converts a window depth in `[0, 1]` to depth-buffer units: computed in f32
 /// for 16 and 24 bits, as llvmpipe does (`rint(float(z * 0xffffff))`), in f64
 /// for 32 bits, where f32 cannot hold the range.
+#[inline]
 pub fn depth_to_unorm(z: f64, format: DepthFormat) -> u32 {
     let z = if z.is_nan() { 0.0 } else { z.clamp(0.0, 1.0) };
     match format {
-        DepthFormat::D16 | DepthFormat::D24 => ((z as f32) * format.max_value() as f32).round_ties_even() as u32,
+        DepthFormat::D16 | DepthFormat::D24 => rint_nonnegative((z as f32) * format.max_value() as f32) as u32,
         DepthFormat::D32 => (z * f64::from(u32::MAX)).round_ties_even() as u32,
     }
 }

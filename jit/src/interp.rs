@@ -4,7 +4,7 @@
 //! fragments of a span, in GL order. Every back end must leave the buffers
 //! exactly as this one does.
 
-use crate::key::{BlendEquation, BlendFactor, BlendKey, FragmentKey, KeyError, Stage, StencilKey, StencilOp};
+use crate::key::{BlendEquation, BlendFactor, BlendKey, ColorMask, FragmentKey, KeyError, Stage, StencilKey, StencilOp};
 use crate::pixel;
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::target::Target;
@@ -157,12 +157,17 @@ fn run_span(key: &FragmentKey, stages: &[Stage], u: &FragmentUniforms, span: &Fr
             }
             Stage::ColorWrite(mask) => {
                 let bits = pixel::mask_bits(format, mask);
+                let all = pixel::mask_bits(format, ColorMask::ALL);
                 let off0 = t.color_offset(x0, y);
                 let color = t.color_mut();
                 for i in lanes(live) {
                     let px = &mut color[off0 + i * bpp..];
-                    let dst = pixel::load(format, px);
-                    pixel::store(format, px, (packed[i] & bits) | (dst & !bits));
+                    let value = if bits == all {
+                        packed[i]
+                    } else {
+                        (packed[i] & bits) | (pixel::load(format, px) & !bits)
+                    };
+                    pixel::store(format, px, value);
                 }
             }
         }

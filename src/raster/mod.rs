@@ -78,8 +78,7 @@ pub fn snap(v: f32) -> i64 {
 /// Converts an interpolated color channel to a unorm byte: `rint(c * 255)`.
 #[inline]
 pub fn color_to_unorm8(c: f32) -> u8 {
-    let c = if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) };
-    (c * 255.0).round_ties_even() as u8
+    crate::framebuffer::float_to_unorm(c, 255) as u8
 }
 
 /// Converts window depth to buffer units (clamped to `[0, 1]`).
