@@ -111,13 +111,31 @@ pub enum Indices<'a> {
 }
 
 impl Indices<'_> {
-    fn iter(&self) -> Box<dyn Iterator<Item = usize> + '_> {
+    fn len(&self) -> usize {
         match self {
-            Indices::U8(i) => Box::new(i.iter().map(|&v| usize::from(v))),
-            Indices::U16(i) => Box::new(i.iter().map(|&v| usize::from(v))),
-            Indices::U32(i) => Box::new(i.iter().map(|&v| v as usize)),
+            Indices::U8(i) => i.len(),
+            Indices::U16(i) => i.len(),
+            Indices::U32(i) => i.len(),
         }
     }
+
+    /// Index `k` (which must be below `len`).
+    fn get(&self, k: usize) -> usize {
+        match self {
+            Indices::U8(i) => usize::from(i[k]),
+            Indices::U16(i) => usize::from(i[k]),
+            Indices::U32(i) => i[k] as usize,
+        }
+    }
+
+    fn iter(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.len()).map(|k| self.get(k))
+    }
+}
+
+/// Vertex `i` of `arrays`, attributes without an array taking `current`.
+fn fetch(arrays: &VertexArrays<'_>, i: usize, current: Vec4) -> InVertex {
+    InVertex { pos: arrays.position.get(i, Vec4::W), color: arrays.color.map_or(current, |c| c.get(i, Vec4::W)) }
 }
 
 /// The current vertex attributes (`glColor`, `glNormal`, `glTexCoord`).
@@ -514,7 +532,7 @@ impl Context {
         let Some((mode, verts)) = self.begun.take() else {
             return self.record(Err(GlError::InvalidOperation));
         };
-        self.draw(mode, &verts)
+        self.draw(mode, verts.len(), &|i| verts[i])
     }
 
     /// `glVertex4f`: outside `begin`/`end` it is ignored, as in GL.
@@ -572,8 +590,8 @@ impl Context {
         let len = self.record(arrays.check())?;
         let end = first.checked_add(count).filter(|&e| e <= len);
         self.require(end.is_some())?;
-        let verts: Vec<InVertex> = (first..first + count).map(|i| self.fetch(arrays, i)).collect();
-        self.draw(mode, &verts)
+        let current = self.current.color;
+        self.draw(mode, count, &|i| fetch(arrays, first + i, current))
     }
 
     /// `glDrawElements`: the vertices of `arrays` that `indices` name, in order.
@@ -582,20 +600,13 @@ impl Context {
         self.outside()?;
         let len = self.record(arrays.check())?;
         self.require(indices.iter().all(|i| i < len))?;
-        let verts: Vec<InVertex> = indices.iter().map(|i| self.fetch(arrays, i)).collect();
-        self.draw(mode, &verts)
-    }
-
-    fn fetch(&self, arrays: &VertexArrays<'_>, i: usize) -> InVertex {
-        InVertex {
-            pos: arrays.position.get(i, Vec4::W),
-            color: arrays.color.map_or(self.current.color, |c| c.get(i, Vec4::W)),
-        }
+        let current = self.current.color;
+        self.draw(mode, indices.len(), &|k| fetch(arrays, indices.get(k), current))
     }
 
     // ----- drawing -----
 
-    fn draw(&mut self, mode: PrimitiveMode, verts: &[InVertex]) -> GlResult {
+    fn draw(&mut self, mode: PrimitiveMode, count: usize, fetch: &dyn Fn(usize) -> InVertex) -> GlResult {
         let key = self.state.fragment_key(&self.fb);
         let uniforms = self.state.fragment_uniforms();
         let stages = key.stages();
@@ -607,7 +618,7 @@ impl Context {
         let mvp = *self.projection.top() * *self.modelview.top();
         let geometry = Geometry::new(&self.state, &self.fb, reads_depth, reads_color);
         let r = FragmentStage::new(key, uniforms, self.fb.target()).and_then(|mut stage| {
-            geometry.draw(&mvp, mode, verts, &mut stage);
+            geometry.draw(&mvp, mode, count, fetch, &mut stage);
             stage.finish()
         });
         self.record(r.map_err(|_| GlError::InvalidOperation))

@@ -442,3 +442,60 @@ fn rgb565_and_bgra_framebuffers_render() {
         assert_eq!(fb.pixel(3, 1), Some([255, 0, 0, 255]), "{color:?} drawn");
     }
 }
+
+#[test]
+fn long_strips_fans_and_loops_span_vertex_batches_without_gaps() {
+    // 1000 vertices: four batches of 256. A fan of 998 triangles covering the
+    // window still hits every pixel exactly once.
+    let mut gl = window_ctx(48, 48);
+    count_with_stencil(&mut gl);
+    let (cx, cy) = (20.3f32, 25.9f32);
+    let mut pts = vec![(cx, cy)];
+    for i in 0..=998 {
+        let a = i as f32 / 998.0 * std::f32::consts::TAU;
+        pts.push((cx + 200.0 * a.cos(), cy + 200.0 * a.sin()));
+    }
+    draw(&mut gl, PrimitiveMode::TriangleFan, &pts);
+    assert!(
+        stencil_grid(&gl).iter().flatten().all(|&s| s == 1),
+        "fan across batches"
+    );
+
+    // A strip of 999 triangles zig-zagging over the window, same rule.
+    let mut gl = window_ctx(48, 48);
+    count_with_stencil(&mut gl);
+    let strip: Vec<(f32, f32)> = (0..1001)
+        .map(|i| {
+            (
+                -1.0 + 50.0 * (i / 2) as f32 / 500.0,
+                if i % 2 == 0 { -1.0 } else { 49.0 },
+            )
+        })
+        .collect();
+    draw(&mut gl, PrimitiveMode::TriangleStrip, &strip);
+    assert!(
+        stencil_grid(&gl).iter().flatten().all(|&s| s == 1),
+        "strip across batches"
+    );
+
+    // A line loop of 600 vertices on a circle closes back to vertex 0: the
+    // closing segment from vertex 599 to vertex 0 is drawn like any other.
+    let mut gl = window_ctx(48, 48);
+    count_with_stencil(&mut gl);
+    let ring: Vec<(f32, f32)> = (0..600)
+        .map(|i| {
+            let a = i as f32 / 600.0 * std::f32::consts::TAU;
+            (24.0 + 20.0 * a.cos(), 24.0 + 20.0 * a.sin())
+        })
+        .collect();
+    draw(&mut gl, PrimitiveMode::LineLoop, &ring);
+    let loop_pixels = lit(&gl);
+    let mut gl = window_ctx(48, 48);
+    count_with_stencil(&mut gl);
+    let mut closed = ring.clone();
+    closed.push(ring[0]);
+    draw(&mut gl, PrimitiveMode::LineStrip, &closed);
+    assert_eq!(loop_pixels, lit(&gl));
+    // An 8-connected ring of radius r has about 4·√2·r = 113 pixels.
+    assert!((100..=125).contains(&loop_pixels.len()), "ring of radius 20: {} pixels", loop_pixels.len());
+}

@@ -3,12 +3,14 @@
 //! viewport transform, facing and culling, polygon mode, then rasterization.
 
 pub mod assemble;
+pub mod batch;
 pub mod clip;
 
 use crate::framebuffer::{Framebuffer, Rect};
 use crate::raster::{self, RasterParams, RasterVertex, SpanSink};
 use crate::state::{FrontFace, PolygonMode, RasterState, ShadeModel};
 use assemble::{assemble, Primitive};
+use batch::VertexBatch;
 use clip::{clip_polygon, clip_segment, outcode, ClipVertex, PolyVertex};
 use glam::{Mat4, Vec4};
 
@@ -85,27 +87,29 @@ impl<'s> Geometry<'s> {
         }
     }
 
-    /// Transforms `verts` by `mvp` and draws them as `mode` into `sink`.
-    pub fn draw(&self, mvp: &Mat4, mode: PrimitiveMode, verts: &[InVertex], sink: &mut dyn SpanSink) {
+    /// Draws `count` vertices, `fetch(i)` giving vertex `i`, as `mode` into
+    /// `sink`, transforming them by `mvp` in batches.
+    pub fn draw(
+        &self,
+        mvp: &Mat4,
+        mode: PrimitiveMode,
+        count: usize,
+        fetch: &dyn Fn(usize) -> InVertex,
+        sink: &mut dyn SpanSink,
+    ) {
         if self.params.bounds.is_empty() {
             return;
         }
-        let clip: Vec<ClipVertex> = verts
-            .iter()
-            .map(|v| ClipVertex {
-                pos: *mvp * v.pos,
-                color: v.color.clamp(Vec4::ZERO, Vec4::ONE),
-            })
-            .collect();
-        assemble(mode, clip.len(), |prim| match prim {
-            Primitive::Point(i) => self.point(&clip[i], sink),
+        let mut batch = VertexBatch::new(*mvp, count, fetch);
+        assemble(mode, count, |prim| match prim {
+            Primitive::Point(i) => self.point(&batch.get(i), sink),
             Primitive::Line { a, b, provoking } => {
-                let flat = self.flat_color(&clip[provoking]);
-                self.line(&clip[a], &clip[b], flat, sink)
+                let (va, vb, vp) = (batch.get(a), batch.get(b), batch.get(provoking));
+                self.line(&va, &vb, self.flat_color(&vp), sink)
             }
             Primitive::Triangle { v, provoking, edges } => {
-                let flat = self.flat_color(&clip[provoking]);
-                let poly = [0, 1, 2].map(|k| (clip[v[k]], edges[k]));
+                let poly = [0, 1, 2].map(|k| (batch.get(v[k]), edges[k]));
+                let flat = self.flat_color(&batch.get(provoking));
                 self.polygon(poly, flat, sink)
             }
         });
