@@ -383,16 +383,16 @@ impl Context {
     }
 
     pub fn frustum(&mut self, l: f64, r: f64, b: f64, t: f64, n: f64, f: f64) -> GlResult {
-        self.outside()?;
-        let m = matrix::frustum(l, r, b, t, n, f);
-        let m = self.record(m)?;
-        self.stack().mult(&m);
-        Ok(())
+        self.mult_checked(matrix::frustum(l, r, b, t, n, f))
     }
 
     pub fn ortho(&mut self, l: f64, r: f64, b: f64, t: f64, n: f64, f: f64) -> GlResult {
+        self.mult_checked(matrix::ortho(l, r, b, t, n, f))
+    }
+
+    /// Multiplies by a matrix a constructor built, or records its error.
+    fn mult_checked(&mut self, m: GlResult<Mat4>) -> GlResult {
         self.outside()?;
-        let m = matrix::ortho(l, r, b, t, n, f);
         let m = self.record(m)?;
         self.stack().mult(&m);
         Ok(())

@@ -74,13 +74,6 @@ impl DepthBuffer {
             DepthBuffer::D24(d) | DepthBuffer::D32(d) => d[i],
         }
     }
-
-    fn set(&mut self, i: usize, v: u32) {
-        match self {
-            DepthBuffer::D16(d) => d[i] = v as u16,
-            DepthBuffer::D24(d) | DepthBuffer::D32(d) => d[i] = v,
-        }
-    }
 }
 
 /// A pixel rectangle, clipped to the framebuffer.
@@ -288,12 +281,13 @@ impl Framebuffer {
 
     /// Clears `rect` of the depth buffer (if any) to window depth `depth`.
     pub fn clear_depth(&mut self, rect: Rect, depth: f64) {
-        let w = self.desc.width as usize;
-        let Some(buf) = self.depth.as_mut() else { return };
+        let mut target = self.target();
+        let row = target.width() as usize;
+        let Some(buf) = target.depth_mut() else { return };
         let v = depth_to_unorm(depth, buf.format());
         for y in rect.y0..rect.y1 {
             for x in rect.x0..rect.x1 {
-                buf.set(y as usize * w + x as usize, v);
+                buf.set(y as usize * row + x as usize, v);
             }
         }
     }
