@@ -135,7 +135,10 @@ impl Indices<'_> {
 
 /// Vertex `i` of `arrays`, attributes without an array taking `current`.
 fn fetch(arrays: &VertexArrays<'_>, i: usize, current: Vec4) -> InVertex {
-    InVertex { pos: arrays.position.get(i, Vec4::W), color: arrays.color.map_or(current, |c| c.get(i, Vec4::W)) }
+    InVertex {
+        pos: arrays.position.get(i, Vec4::W),
+        color: arrays.color.map_or(current, |c| c.get(i, Vec4::W)),
+    }
 }
 
 /// The current vertex attributes (`glColor`, `glNormal`, `glTexCoord`).

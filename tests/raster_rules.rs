@@ -497,5 +497,9 @@ fn long_strips_fans_and_loops_span_vertex_batches_without_gaps() {
     draw(&mut gl, PrimitiveMode::LineStrip, &closed);
     assert_eq!(loop_pixels, lit(&gl));
     // An 8-connected ring of radius r has about 4·√2·r = 113 pixels.
-    assert!((100..=125).contains(&loop_pixels.len()), "ring of radius 20: {} pixels", loop_pixels.len());
+    assert!(
+        (100..=125).contains(&loop_pixels.len()),
+        "ring of radius 20: {} pixels",
+        loop_pixels.len()
+    );
 }

@@ -23,11 +23,27 @@ pub struct VertexBatch<'a> {
 impl<'a> VertexBatch<'a> {
     /// A batch over `count` vertices, `fetch(i)` giving vertex `i`.
     pub fn new(mvp: Mat4, count: usize, fetch: &'a dyn Fn(usize) -> InVertex) -> VertexBatch<'a> {
-        VertexBatch { mvp, fetch, count, base: 0, clip: Vec::with_capacity(BATCH), first: None }
+        VertexBatch {
+            mvp,
+            fetch,
+            count,
+            base: 0,
+            clip: Vec::with_capacity(BATCH),
+            first: None,
+        }
     }
 
     fn transform(&self, v: InVertex) -> ClipVertex {
-        ClipVertex { pos: self.mvp * v.pos, color: v.color.clamp(Vec4::ZERO, Vec4::ONE) }
+        // GL clamps vertex colors to [0, 1]; NaN reads as 0 on every target.
+        let color = Vec4::from_array(
+            v.color
+                .to_array()
+                .map(|c| if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) }),
+        );
+        ClipVertex {
+            pos: (self.mvp * v.pos).as_dvec4(),
+            color,
+        }
     }
 
     /// Vertex `i` in clip space. Assembly asks for indices that never fall more

@@ -1,35 +1,49 @@
 //! Homogeneous clipping, before any division: against the near and far planes
 //! and against a guard band in x and y (the rasterizer then bounds fragments to
 //! the viewport, which is exact clipping without new vertices on the sides).
+//!
+//! Clip coordinates are f64 here. A vertex far outside (up to f32::MAX) is
+//! brought in through guard bands 10^8 apart, so each intersection is computed
+//! from endpoints at most 10^8 times larger than the plane it lands on (f64
+//! keeps ~16 digits, leaving 8).
 
-use glam::Vec4;
+use glam::{DVec4, Vec4};
 
 /// A vertex in clip space with the attributes clipping interpolates.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClipVertex {
-    pub pos: Vec4,
+    pub pos: DVec4,
     pub color: Vec4,
 }
+
+/// Scales of the nested guard bands, outermost first, relative to the final one.
+pub const GUARD_LEVELS: [f64; 5] = [1e32, 1e24, 1e16, 1e8, 1.0];
 
 impl ClipVertex {
     pub fn is_finite(&self) -> bool {
         self.pos.is_finite() && self.color.is_finite()
     }
 
-    fn lerp(&self, o: &ClipVertex, t: f64) -> ClipVertex {
-        let l = |a: Vec4, b: Vec4| (a.as_dvec4() + (b.as_dvec4() - a.as_dvec4()) * t).as_vec4();
-        ClipVertex {
-            pos: l(self.pos, o.pos),
-            color: l(self.color, o.color),
-        }
+    /// The point where the segment to `o` crosses a plane, given the signed
+    /// distances `d` of `self` and `do_` of `o` (opposite signs). Computed as
+    /// the weighted sum `(d·o − do·self) / (d − do)`, whose weights do not
+    /// cancel, rather than `self + (o − self)·t`, which loses a small `w` next to
+    /// a large one. Every component comes from the same two weights, so a
+    /// rounding error moves the point along the segment, never off it.
+    fn crossing(&self, o: &ClipVertex, d: f64, do_: f64) -> ClipVertex {
+        let sum = d - do_;
+        let pos = (o.pos * d - self.pos * do_) / sum;
+        let t = d / sum;
+        let color = (self.color.as_dvec4() + (o.color.as_dvec4() - self.color.as_dvec4()) * t).as_vec4();
+        ClipVertex { pos, color }
     }
 }
 
 /// Signed distance of `p` to clip plane `k` (inside when `>= 0`): near, far,
 /// then left, right, bottom, top scaled by `g` (1 for the view volume itself).
 #[inline]
-fn dist(p: Vec4, k: usize, g: f64) -> f64 {
-    let (x, y, z, w) = (f64::from(p.x), f64::from(p.y), f64::from(p.z), f64::from(p.w));
+fn dist(p: DVec4, k: usize, g: f64) -> f64 {
+    let (x, y, z, w) = (p.x, p.y, p.z, p.w);
     match k {
         0 => w + z,
         1 => w - z,
@@ -41,7 +55,7 @@ fn dist(p: Vec4, k: usize, g: f64) -> f64 {
 }
 
 /// Bit `k` set when `p` is outside plane `k` at guard scale `g`.
-pub fn outcode(p: Vec4, g: f64) -> u8 {
+pub fn outcode(p: DVec4, g: f64) -> u8 {
     (0..6).fold(0, |code, k| if dist(p, k, g) < 0.0 { code | (1 << k) } else { code })
 }
 
@@ -67,8 +81,7 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64) {
                 out.push((p, edge));
             }
             if p_in != q_in {
-                let t = dp / (dp - dq);
-                out.push((p.lerp(&q, t), !p_in && edge));
+                out.push((p.crossing(&q, dp, dq), !p_in && edge));
             }
         }
         std::mem::swap(poly, &mut out);
@@ -76,22 +89,20 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64) {
 }
 
 /// Clips segment `a → b` to the planes in `planes` at guard scale `g`
-/// (Liang–Barsky); `None` when nothing is left.
+/// one plane after another; `None` when nothing is left.
 pub fn clip_segment(a: &ClipVertex, b: &ClipVertex, planes: u8, g: f64) -> Option<(ClipVertex, ClipVertex)> {
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    let (mut a, mut b) = (*a, *b);
     for k in 0..6 {
         if planes & (1 << k) == 0 {
             continue;
         }
         let (da, db) = (dist(a.pos, k, g), dist(b.pos, k, g));
-        if da < 0.0 && db < 0.0 {
-            return None;
-        }
-        if da < 0.0 {
-            t0 = t0.max(da / (da - db));
-        } else if db < 0.0 {
-            t1 = t1.min(da / (da - db));
+        match (da >= 0.0, db >= 0.0) {
+            (false, false) => return None,
+            (true, true) => {}
+            (false, true) => a = a.crossing(&b, da, db),
+            (true, false) => b = a.crossing(&b, da, db),
         }
     }
-    (t0 <= t1).then(|| (a.lerp(b, t0), a.lerp(b, t1)))
+    Some((a, b))
 }

@@ -11,7 +11,7 @@ use crate::raster::{self, RasterParams, RasterVertex, SpanSink};
 use crate::state::{FrontFace, PolygonMode, RasterState, ShadeModel};
 use assemble::{assemble, Primitive};
 use batch::VertexBatch;
-use clip::{clip_polygon, clip_segment, outcode, ClipVertex, PolyVertex};
+use clip::{clip_polygon, clip_segment, outcode, ClipVertex, PolyVertex, GUARD_LEVELS};
 use glam::{Mat4, Vec4};
 
 pub use crate::state::PrimitiveMode;
@@ -121,11 +121,12 @@ impl<'s> Geometry<'s> {
 
     /// Perspective divide and viewport transform; `None` when not finite.
     fn project(&self, v: &ClipVertex) -> Option<RasterVertex> {
-        let inv_w = 1.0 / v.pos.w;
+        let p = v.pos.as_vec4();
+        let inv_w = 1.0 / p.w;
         let (s, t) = (self.viewport.scale, self.viewport.translate);
-        let x = v.pos.x * inv_w * s[0] + t[0];
-        let y = v.pos.y * inv_w * s[1] + t[1];
-        let z = v.pos.z * inv_w * s[2] + t[2];
+        let x = p.x * inv_w * s[0] + t[0];
+        let y = p.y * inv_w * s[1] + t[1];
+        let z = p.z * inv_w * s[2] + t[2];
         let ok = x.is_finite() && y.is_finite() && z.is_finite() && inv_w.is_finite();
         ok.then(|| RasterVertex {
             x,
@@ -149,14 +150,17 @@ impl<'s> Geometry<'s> {
         if !(a.is_finite() && b.is_finite()) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
             return;
         }
-        let planes = outcode(a.pos, self.guard) | outcode(b.pos, self.guard);
-        let Some((a, b)) = (if planes == 0 {
-            Some((*a, *b))
-        } else {
-            clip_segment(a, b, planes, self.guard)
-        }) else {
-            return;
-        };
+        let (mut a, mut b) = (*a, *b);
+        for level in GUARD_LEVELS {
+            let g = self.guard * level;
+            let planes = outcode(a.pos, g) | outcode(b.pos, g);
+            if planes != 0 {
+                let Some(clipped) = clip_segment(&a, &b, planes, g) else {
+                    return;
+                };
+                (a, b) = clipped;
+            }
+        }
         if let (Some(ra), Some(rb)) = (self.project(&a), self.project(&b)) {
             raster::line(&ra, &rb, self.state.line_width, flat, &self.params, sink);
         }
@@ -170,10 +174,13 @@ impl<'s> Geometry<'s> {
         if codes[0] & codes[1] & codes[2] != 0 {
             return;
         }
-        let planes = poly.iter().fold(0, |acc, (v, _)| acc | outcode(v.pos, self.guard));
         let mut clipped: Vec<PolyVertex> = poly.to_vec();
-        if planes != 0 {
-            clip_polygon(&mut clipped, planes, self.guard);
+        for level in GUARD_LEVELS {
+            let g = self.guard * level;
+            let planes = clipped.iter().fold(0, |acc, (v, _)| acc | outcode(v.pos, g));
+            if planes != 0 {
+                clip_polygon(&mut clipped, planes, g);
+            }
         }
         let mut win: Vec<(RasterVertex, bool)> = Vec::with_capacity(clipped.len());
         for (v, edge) in &clipped {
