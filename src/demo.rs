@@ -52,8 +52,15 @@ pub fn render(width: u32, height: u32) -> GlResult<Context> {
     gl.disable(Capability::StencilTest)?;
 
     // 3. The checkered floor, blended over the reflection.
+    // Color is blended; the stored alpha is kept (the sky wrote 1), so the
+    // picture stays opaque.
     gl.enable(Capability::Blend)?;
-    gl.blend_func(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha)?;
+    gl.blend_func_separate(
+        BlendFactor::SrcAlpha,
+        BlendFactor::OneMinusSrcAlpha,
+        BlendFactor::Zero,
+        BlendFactor::One,
+    )?;
     checker_floor(&mut gl)?;
     gl.disable(Capability::Blend)?;
 

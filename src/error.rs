@@ -3,8 +3,8 @@
 /// A GL error, named after the code `glGetError` would return.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, thiserror::Error)]
 pub enum GlError {
-    /// `GL_INVALID_ENUM`: an enumerant outside the accepted set (C ABI only:
-    /// the Rust API's enums cannot hold one).
+    /// `GL_INVALID_ENUM`: an enumerant outside the accepted set, or one not
+    /// accepted in that place (`SrcAlphaSaturate` as a destination factor).
     #[error("GL_INVALID_ENUM: enumerant out of range")]
     InvalidEnum,
     /// `GL_INVALID_VALUE`: a numeric argument out of range.

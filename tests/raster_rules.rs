@@ -503,3 +503,149 @@ fn long_strips_fans_and_loops_span_vertex_batches_without_gaps() {
         loop_pixels.len()
     );
 }
+
+#[test]
+fn point_sizes_round_like_llvmpipe() {
+    // llvmpipe: n = (rint(size * 256) + 127) >> 8, so 5.50098 is still 5 wide.
+    for (size, width) in [
+        (5.50098f32, 5u32),
+        (5.503, 6),
+        (2.5, 2),
+        (2.9, 3),
+        (0.2, 1),
+        (1000.0, 255),
+    ] {
+        let mut gl = window_ctx(300, 1);
+        count_with_stencil(&mut gl);
+        gl.point_size(size).unwrap();
+        draw(&mut gl, PrimitiveMode::Points, &[(150.0, 0.5)]);
+        assert_eq!(lit(&gl).len() as u32, width, "size {size}");
+    }
+}
+
+#[test]
+fn polygon_offset_units_are_two_depth_steps_like_llvmpipe() {
+    // A flat quad at window depth 0.45, then the same quad with offset (0, -1):
+    // llvmpipe stores base - 2 (units are twice the minimum resolvable step).
+    let mut gl = window_ctx(4, 4);
+    gl.enable(Capability::DepthTest).unwrap();
+    gl.depth_func(CompareFunc::Always).unwrap();
+    let quad = |gl: &mut Context| {
+        gl.begin(PrimitiveMode::Quads).unwrap();
+        for (x, y) in [(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0)] {
+            gl.vertex3(x, y, 0.1);
+        }
+        gl.end().unwrap();
+    };
+    quad(&mut gl);
+    let base = gl.framebuffer().depth_at(1, 1).unwrap();
+    assert_eq!(base, 0x73_3332, "window z 0.45, as llvmpipe stores it");
+    gl.enable(Capability::PolygonOffsetFill).unwrap();
+    gl.polygon_offset(0.0, -1.0).unwrap();
+    quad(&mut gl);
+    assert_eq!(gl.framebuffer().depth_at(1, 1), Some(base - 2));
+    // An infinite offset saturates like a huge finite one.
+    gl.polygon_offset(0.0, f32::INFINITY).unwrap();
+    quad(&mut gl);
+    assert_eq!(gl.framebuffer().depth_at(1, 1), Some(0xFF_FFFF));
+}
+
+#[test]
+fn wide_points_and_lines_may_reach_past_the_viewport() {
+    // llvmpipe bounds points and lines by the framebuffer, not the viewport:
+    // a 5-pixel point at the viewport's corner covers pixels outside it.
+    let mut gl = window_ctx(16, 16);
+    count_with_stencil(&mut gl);
+    gl.viewport(4, 4, 8, 8).unwrap();
+    gl.point_size(5.0).unwrap();
+    // Window (4.5, 4.5): NDC of the viewport's lower-left pixel center.
+    gl.matrix_mode(MatrixMode::Projection).unwrap();
+    gl.load_identity().unwrap();
+    gl.matrix_mode(MatrixMode::Modelview).unwrap();
+    draw(&mut gl, PrimitiveMode::Points, &[(-1.0 + 0.5 / 4.0, -1.0 + 0.5 / 4.0)]);
+    assert_eq!(lit(&gl), rect(2, 6, 2, 6));
+    // A point whose center is outside the view volume is dropped entirely.
+    let mut gl = window_ctx(16, 16);
+    count_with_stencil(&mut gl);
+    gl.viewport(4, 4, 8, 8).unwrap();
+    gl.point_size(5.0).unwrap();
+    gl.matrix_mode(MatrixMode::Projection).unwrap();
+    gl.load_identity().unwrap();
+    gl.matrix_mode(MatrixMode::Modelview).unwrap();
+    draw(&mut gl, PrimitiveMode::Points, &[(-1.05, 0.0)]);
+    assert!(lit(&gl).is_empty());
+}
+
+#[test]
+#[allow(
+    clippy::excessive_precision,
+    reason = "the coordinates as printed with %.9g for llvmpipe, bit-exact in f32"
+)]
+fn interpolated_depth_matches_llvmpipe_bits() {
+    // One triangle rendered by Mesa 22.3.6 llvmpipe (OSMesa, Z24, ortho
+    // 0..128, depth ALWAYS): every covered pixel's depth and red, to the bit.
+    let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(128, 128)).unwrap();
+    gl.matrix_mode(MatrixMode::Projection).unwrap();
+    gl.ortho(0.0, 128.0, 0.0, 128.0, -1.0, 1.0).unwrap();
+    gl.matrix_mode(MatrixMode::Modelview).unwrap();
+    gl.enable(Capability::DepthTest).unwrap();
+    gl.depth_func(CompareFunc::Always).unwrap();
+    let v = [
+        [13.9502296f32, 72.2624359, -0.545780659],
+        [24.9592934, 66.4730301, 0.770843029],
+        [13.7014933, 77.9293213, 0.29104507],
+    ];
+    gl.begin(PrimitiveMode::Triangles).unwrap();
+    for (i, p) in v.iter().enumerate() {
+        gl.color4(0.3 * i as f32, 0.5, 0.2, 1.0);
+        gl.vertex3(p[0], p[1], p[2]);
+    }
+    gl.end().unwrap();
+    let fb = gl.framebuffer();
+    let covered = (0..128u32)
+        .flat_map(|y| (0..128u32).map(move |x| (x, y)))
+        .filter(|&(x, y)| fb.pixel(x, y).unwrap()[3] > 0);
+    assert_eq!(covered.count(), LLVMPIPE_TRIANGLE.len());
+    for (x, y, depth, red) in LLVMPIPE_TRIANGLE {
+        assert_eq!(
+            (fb.depth_at(x, y), fb.pixel(x, y).map(|p| p[0])),
+            (Some(depth), Some(red)),
+            "({x}, {y})"
+        );
+    }
+}
+
+/// `(x, y, depth, red)` of every pixel llvmpipe covered, read back from its
+/// buffers, for `interpolated_depth_matches_llvmpipe_bits`.
+const LLVMPIPE_TRIANGLE: [(u32, u32, u32, u8); 30] = [
+    (23, 67, 0x2e7874, 74),
+    (21, 68, 0x4e1fa6, 58),
+    (22, 68, 0x34476f, 80),
+    (19, 69, 0x6dc6da, 43),
+    (20, 69, 0x53eea2, 65),
+    (21, 69, 0x3a166a, 86),
+    (17, 70, 0x8d6e0c, 28),
+    (18, 70, 0x7395d4, 49),
+    (19, 70, 0x59bd9c, 71),
+    (20, 70, 0x3fe565, 93),
+    (15, 71, 0xad153f, 12),
+    (16, 71, 0x933d07, 34),
+    (17, 71, 0x7964d0, 56),
+    (18, 71, 0x5f8c98, 77),
+    (19, 71, 0x45b460, 99),
+    (14, 72, 0xb2e43a, 19),
+    (15, 72, 0x990c02, 40),
+    (16, 72, 0x7f33ca, 62),
+    (17, 72, 0x655b92, 83),
+    (18, 72, 0x4b835a, 105),
+    (14, 73, 0x9edafd, 46),
+    (15, 73, 0x8502c5, 68),
+    (16, 73, 0x6b2a8e, 90),
+    (17, 73, 0x515256, 111),
+    (14, 74, 0x8ad1c0, 74),
+    (15, 74, 0x70f988, 96),
+    (16, 74, 0x572150, 118),
+    (14, 75, 0x76c884, 102),
+    (15, 75, 0x5cf04c, 124),
+    (14, 76, 0x62bf46, 130),
+];

@@ -35,6 +35,8 @@ pub struct InVertex {
 struct Viewport {
     scale: [f32; 3],
     translate: [f32; 3],
+    /// Scale and translate of y in llvmpipe's top-down frame.
+    flipped_y: (f32, f32),
 }
 
 /// Per-draw constants of the geometry pipeline.
@@ -42,8 +44,11 @@ pub struct Geometry<'s> {
     state: &'s RasterState,
     viewport: Viewport,
     guard: f64,
+    /// Triangles: bounded by the viewport (they are clipped to a guard band only).
     params: RasterParams,
-    depth_unit: f64,
+    /// Points and lines: clipped to the view volume, their width may reach
+    /// past the viewport up to the framebuffer's edges, as in llvmpipe.
+    wide_params: RasterParams,
 }
 
 impl<'s> Geometry<'s> {
@@ -60,6 +65,7 @@ impl<'s> Geometry<'s> {
                 vp.y as f32 + vh as f32 / 2.0,
                 ((f + n) / 2.0) as f32,
             ],
+            flipped_y: (-(vh as f32) / 2.0, (fb.height() as f32 - vp.y as f32) - vh as f32 / 2.0),
         };
         let guard = (GUARD_BAND_PX / f64::from(vw.max(vh).max(1))).max(1.0);
         let fb_rect = fb.bounds();
@@ -71,19 +77,23 @@ impl<'s> Geometry<'s> {
             y1: fb_rect.y1.min(vp_rect.y1),
         };
         let depth_format = fb.depth_format().filter(|_| depth);
-        let depth_unit = depth_format.map_or(0.0, |f| 1.0 / f64::from(f.max_value()));
         let params = RasterParams {
             bounds,
+            height: fb.height(),
             depth: depth_format,
             color,
             offset: None,
+        };
+        let wide_params = RasterParams {
+            bounds: fb_rect,
+            ..params
         };
         Geometry {
             state,
             viewport,
             guard,
             params,
-            depth_unit,
+            wide_params,
         }
     }
 
@@ -126,11 +136,13 @@ impl<'s> Geometry<'s> {
         let (s, t) = (self.viewport.scale, self.viewport.translate);
         let x = p.x * inv_w * s[0] + t[0];
         let y = p.y * inv_w * s[1] + t[1];
+        let y_down = p.y * inv_w * self.viewport.flipped_y.0 + self.viewport.flipped_y.1;
         let z = p.z * inv_w * s[2] + t[2];
         let ok = x.is_finite() && y.is_finite() && z.is_finite() && inv_w.is_finite();
         ok.then(|| RasterVertex {
             x,
             y,
+            y_down,
             z: f64::from(z),
             inv_w,
             color: v.color.to_array(),
@@ -142,7 +154,7 @@ impl<'s> Geometry<'s> {
             return;
         }
         if let Some(rv) = self.project(v) {
-            raster::point(&rv, self.state.point_size, &self.params, sink);
+            raster::point(&rv, self.state.point_size, &self.wide_params, sink);
         }
     }
 
@@ -151,8 +163,7 @@ impl<'s> Geometry<'s> {
             return;
         }
         let (mut a, mut b) = (*a, *b);
-        for level in GUARD_LEVELS {
-            let g = self.guard * level;
+        for g in GUARD_LEVELS {
             let planes = outcode(a.pos, g) | outcode(b.pos, g);
             if planes != 0 {
                 let Some(clipped) = clip_segment(&a, &b, planes, g) else {
@@ -162,7 +173,7 @@ impl<'s> Geometry<'s> {
             }
         }
         if let (Some(ra), Some(rb)) = (self.project(&a), self.project(&b)) {
-            raster::line(&ra, &rb, self.state.line_width, flat, &self.params, sink);
+            raster::line(&ra, &rb, self.state.line_width, flat, &self.wide_params, sink);
         }
     }
 
@@ -247,24 +258,18 @@ impl<'s> Geometry<'s> {
     }
 
     /// Polygon offset for a polygon drawn as lines or points: from the depth
-    /// slope of its plane in window space (GL 1.5 §3.5.5).
+    /// slope of its plane in window space, by the same formula as filled ones.
     fn offset_of(&self, win: &[(RasterVertex, bool)], factor: f32, units: f32) -> f64 {
+        let Some(format) = self.params.depth else { return 0.0 };
         let (a, b, c) = (&win[0].0, &win[1].0, &win[2].0);
         let (x1, y1, z1) = (f64::from(b.x - a.x), f64::from(b.y - a.y), b.z - a.z);
         let (x2, y2, z2) = (f64::from(c.x - a.x), f64::from(c.y - a.y), c.z - a.z);
         let det = x1 * y2 - x2 * y1;
-        let slope = if det == 0.0 {
-            0.0
+        let (zx, zy) = if det == 0.0 {
+            (0.0, 0.0)
         } else {
-            let zx = (z1 * y2 - z2 * y1) / det;
-            let zy = (z2 * x1 - z1 * x2) / det;
-            zx.abs().max(zy.abs())
+            ((z1 * y2 - z2 * y1) / det, (z2 * x1 - z1 * x2) / det)
         };
-        let o = f64::from(factor) * slope + f64::from(units) * self.depth_unit;
-        if o.is_finite() {
-            o
-        } else {
-            0.0
-        }
+        f64::from(raster::offset(factor, units, zx as f32, zy as f32, format))
     }
 }

@@ -11,7 +11,7 @@ mod triangle;
 
 pub use line::line;
 pub use point::point;
-pub use triangle::triangle;
+pub use triangle::{offset, triangle};
 
 use crate::framebuffer::Rect;
 use softgl_jit::{DepthFormat, FragmentSpan};
@@ -27,6 +27,9 @@ pub struct RasterVertex {
     /// Window x, y in pixels (y up); pixel `(i, j)` has its center at `(i + 0.5, j + 0.5)`.
     pub x: f32,
     pub y: f32,
+    /// The same y in llvmpipe's top-down frame (`height - y`, computed by a
+    /// flipped viewport transform), which attribute interpolation works in.
+    pub y_down: f32,
     /// Window depth in `[0, 1]`.
     pub z: f64,
     /// `1 / w_clip`, for perspective-correct interpolation.
@@ -54,6 +57,8 @@ pub struct RasterParams {
     pub bounds: Rect,
     /// Depth format to produce `z` for; `None` when no stage reads depth.
     pub depth: Option<DepthFormat>,
+    /// Framebuffer height in pixels.
+    pub height: u32,
     /// Whether any stage reads the fragment color.
     pub color: bool,
     /// Polygon offset `(factor, units)` for this primitive, if enabled.

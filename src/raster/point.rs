@@ -3,13 +3,15 @@
 use super::{color_to_unorm8, depth_value, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
 use softgl_jit::FragmentSpan;
 
-/// The integer size GL rasterizes for `size`: rounded half down, at least 1
-/// (llvmpipe: 2.5 → 2, 2.9 → 3).
+/// The integer size llvmpipe rasterizes for `size`: the size on the 1/256
+/// grid, rounded up from half a step past one half (`(rint(s·256) + 127) >> 8`:
+/// 2.5 → 2, 5.50098 → 5, 2.9 → 3), 1 to 255.
 pub fn point_size_pixels(size: f32) -> u32 {
     if size.is_nan() {
         return 1;
     }
-    (size - 0.5).ceil().clamp(1.0, 255.0) as u32
+    let fixed = (size.clamp(0.0, 255.0) * 256.0).round_ties_even() as u32;
+    ((fixed + 127) >> 8).clamp(1, 255)
 }
 
 /// Rasterizes a point of `size` at `v`: pixels whose centers satisfy

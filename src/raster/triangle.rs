@@ -1,49 +1,80 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 
 use super::{ceil_div, color_to_unorm8, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
-use softgl_jit::FragmentSpan;
+use softgl_jit::{DepthFormat, FragmentSpan};
 
-/// An attribute plane `a(x, y) = a0 + ax * (x - x0) + ay * (y - y0)`, in pixels.
+/// `a * b + c` rounded once, as an FMA instruction gives it: the f32 product
+/// is exact in f64, and the f64 sum rounds to f32 (a second rounding that can
+/// differ from a true FMA only on rare ties), without needing FMA hardware.
+#[inline]
+fn fma32(a: f32, b: f32, c: f32) -> f32 {
+    (f64::from(a) * f64::from(b) + f64::from(c)) as f32
+}
+
+/// An attribute plane in llvmpipe's frame: x right, y down from the top row,
+/// evaluated at integer pixel coordinates for the pixel centers.
 #[derive(Clone, Copy, Debug)]
 struct Plane {
-    a0: f64,
-    ax: f64,
-    ay: f64,
+    a0: f32,
+    dadx: f32,
+    dady: f32,
 }
 
 impl Plane {
-    fn new(p: [(f64, f64); 3], a: [f64; 3]) -> Plane {
-        let (x10, y10) = (p[1].0 - p[0].0, p[1].1 - p[0].1);
-        let (x20, y20) = (p[2].0 - p[0].0, p[2].1 - p[0].1);
-        let det = x10 * y20 - x20 * y10;
-        let (a10, a20) = (a[1] - a[0], a[2] - a[0]);
-        let ax = (a10 * y20 - a20 * y10) / det;
-        let ay = (a20 * x10 - a10 * x20) / det;
-        // Re-anchor at the origin so evaluation is one multiply-add per axis.
-        Plane {
-            a0: a[0] - ax * p[0].0 - ay * p[0].1,
-            ax,
-            ay,
+    #[inline]
+    fn at(&self, px: f32, row: f32) -> f32 {
+        fma32(self.dady, row, fma32(self.dadx, px, self.a0))
+    }
+}
+
+/// Triangle setup in f32 from the unsnapped window positions, step for step
+/// as llvmpipe computes it, so interpolated colors and depths match its bits
+/// (docs/llvmpipe-facts.md, "attribute interpolation").
+struct Setup {
+    x0c: f32,
+    y0c: f32,
+    dx20o: f32,
+    dy20o: f32,
+    dx01o: f32,
+    dy01o: f32,
+}
+
+impl Setup {
+    fn new(p: [(f32, f32); 3]) -> Setup {
+        let (dx01, dy01) = (p[0].0 - p[1].0, p[0].1 - p[1].1);
+        let (dx20, dy20) = (p[2].0 - p[0].0, p[2].1 - p[0].1);
+        let ooa = 1.0 / (dx01 * dy20 - dy01 * dx20);
+        Setup {
+            x0c: p[0].0 - 0.5,
+            y0c: p[0].1 - 0.5,
+            dx20o: dx20 * ooa,
+            dy20o: dy20 * ooa,
+            dx01o: dx01 * ooa,
+            dy01o: dy01 * ooa,
         }
     }
 
-    #[inline]
-    fn at(&self, x: f64, y: f64) -> f64 {
-        self.a0 + self.ax * x + self.ay * y
+    fn plane(&self, a: [f32; 3]) -> Plane {
+        let (da01, da20) = (a[0] - a[1], a[2] - a[0]);
+        let dadx = da01 * self.dy20o - da20 * self.dy01o;
+        let dady = da20 * self.dx01o - da01 * self.dx20o;
+        Plane {
+            a0: a[0] - (dadx * self.x0c + dady * self.y0c),
+            dadx,
+            dady,
+        }
     }
 }
 
 /// Rasterizes a triangle, either winding. `flat` replaces the interpolated color.
 pub fn triangle(v: [&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterParams, sink: &mut dyn SpanSink) {
     let mut p = v.map(|v| (snap(v.x), snap(v.y)));
-    let mut v = v;
     let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
     if area == 0 || params.bounds.is_empty() {
         return;
     }
     if area < 0 {
         p.swap(1, 2);
-        v.swap(1, 2);
     }
 
     // Edge i runs from p[i] to p[i+1]; with counter-clockwise order the inside
@@ -73,7 +104,7 @@ pub fn triangle(v: [&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterPa
         return;
     }
 
-    let shade = Shading::new(&p, &v, flat, params);
+    let shade = Shading::new(v, flat, params);
     let mut span = FragmentSpan::new(0, 0);
     for py in py0..=py1 {
         let sy = py * ONE;
@@ -104,72 +135,78 @@ pub fn triangle(v: [&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterPa
 
 /// Per-fragment attribute evaluation for one triangle.
 struct Shading {
-    /// Planes of r, g, b, a (divided by w when perspective-correct) and 1/w.
-    color: Option<([Plane; 4], Option<Plane>)>,
+    /// Planes of r/w, g/w, b/w, a/w and 1/w.
+    color: Option<([Plane; 4], Plane)>,
     flat: Option<[u8; 4]>,
-    depth: Option<(Plane, softgl_jit::DepthFormat)>,
+    depth: Option<(Plane, DepthFormat)>,
+    /// Framebuffer height, to turn window rows into llvmpipe's top-down rows.
+    height: u32,
 }
 
 impl Shading {
-    fn new(p: &[(i64, i64); 3], v: &[&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterParams) -> Shading {
-        // Snapped positions in pixels, in the grid where centers are integers.
-        let pos = p.map(|(x, y)| (x as f64 / ONE as f64, y as f64 / ONE as f64));
-        let color = match (params.color, flat) {
-            (false, _) | (true, Some(_)) => None,
-            (true, None) => {
-                let iw = v.map(|v| f64::from(v.inv_w));
-                let affine = iw[0] == iw[1] && iw[1] == iw[2];
-                let planes = [0, 1, 2, 3].map(|c| {
-                    let a = [0, 1, 2].map(|k| {
-                        let val = f64::from(v[k].color[c]);
-                        if affine {
-                            val
-                        } else {
-                            val * iw[k]
-                        }
-                    });
-                    Plane::new(pos, a)
-                });
-                Some((planes, (!affine).then(|| Plane::new(pos, iw))))
-            }
-        };
+    fn new(v: [&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterParams) -> Shading {
+        // llvmpipe orders the vertices by the sign of the snapped area in its
+        // y-down frame, and swaps the first two when it is negative.
+        let mut v = v;
+        let q = v.map(|v| (snap(v.x), snap(v.y_down)));
+        let area = (q[0].0 - q[1].0) * (q[2].1 - q[0].1) - (q[2].0 - q[0].0) * (q[0].1 - q[1].1);
+        if area < 0 {
+            v.swap(0, 1);
+        }
+        let setup = Setup::new(v.map(|v| (v.x, v.y_down)));
+        let color = (params.color && flat.is_none()).then(|| {
+            let planes = [0, 1, 2, 3].map(|c| setup.plane(v.map(|v| v.color[c] * v.inv_w)));
+            (planes, setup.plane(v.map(|v| v.inv_w)))
+        });
         let depth = params.depth.map(|f| {
-            let mut plane = Plane::new(pos, v.map(|v| v.z));
+            let mut z = v.map(|v| v.z as f32);
             if let Some((factor, units)) = params.offset {
-                let slope = plane.ax.abs().max(plane.ay.abs());
-                let r = 1.0 / f64::from(f.max_value());
-                let o = f64::from(factor) * slope + f64::from(units) * r;
-                if o.is_finite() {
-                    plane.a0 += o;
-                }
+                let slope = setup.plane(z);
+                let o = offset(factor, units, slope.dadx, slope.dady, f);
+                z = z.map(|z| (z + o).clamp(0.0, 1.0));
             }
-            (plane, f)
+            (setup.plane(z), f)
         });
         Shading {
             color,
             flat: flat.filter(|_| params.color).map(|c| c.map(color_to_unorm8)),
             depth,
+            height: params.height,
         }
     }
 
     #[inline]
     fn shade(&self, x: u32, y: u32, span: &mut FragmentSpan, i: usize) {
-        let (fx, fy) = (f64::from(x), f64::from(y));
+        let (px, row) = (x as f32, self.height.saturating_sub(y + 1) as f32);
         if let Some(c) = self.flat {
             span.r[i] = c[0];
             span.g[i] = c[1];
             span.b[i] = c[2];
             span.a[i] = c[3];
         } else if let Some((planes, iw)) = &self.color {
-            let scale = iw.as_ref().map_or(1.0, |p| 1.0 / p.at(fx, fy));
-            let ch = |k: usize| color_to_unorm8((planes[k].at(fx, fy) * scale) as f32);
+            let w = 1.0 / iw.at(px, row);
+            let ch = |k: usize| color_to_unorm8(planes[k].at(px, row) * w);
             span.r[i] = ch(0);
             span.g[i] = ch(1);
             span.b[i] = ch(2);
             span.a[i] = ch(3);
         }
         if let Some((plane, f)) = &self.depth {
-            span.z[i] = crate::framebuffer::depth_to_unorm(plane.at(fx, fy), *f);
+            span.z[i] = crate::framebuffer::depth_to_unorm(f64::from(plane.at(px, row)), *f);
         }
+    }
+}
+
+/// Polygon offset in window depth, as llvmpipe computes it in f32:
+/// `units · 2 / max + max(|dz/dx|, |dz/dy|) · factor`, where `max` is the
+/// largest depth value (llvmpipe's unit is twice the minimum resolvable
+/// difference: measured, docs/llvmpipe-facts.md). Not-a-number offsets are 0;
+/// infinite ones saturate like huge finite ones once depth is clamped.
+pub fn offset(factor: f32, units: f32, dzdx: f32, dzdy: f32, format: DepthFormat) -> f32 {
+    let o = units * (2.0 / format.max_value() as f32) + dzdx.abs().max(dzdy.abs()) * factor;
+    if o.is_nan() {
+        0.0
+    } else {
+        o.clamp(-2.0, 2.0)
     }
 }
