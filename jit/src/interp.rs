@@ -4,7 +4,9 @@
 //! fragments of a span, in GL order. Every back end must leave the buffers
 //! exactly as this one does.
 
-use crate::key::{BlendEquation, BlendFactor, BlendKey, ColorMask, FragmentKey, KeyError, Stage, StencilKey, StencilOp};
+use crate::key::{
+    BlendEquation, BlendFactor, BlendKey, ColorMask, FragmentKey, KeyError, Stage, StencilKey, StencilOp,
+};
 use crate::pixel;
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::target::Target;
