@@ -5,7 +5,12 @@
 //! Clip coordinates are f64 here. A vertex far outside (up to f32::MAX) is
 //! brought in through guard bands 10^8 apart, so each intersection is computed
 //! from endpoints at most 10^8 times larger than the plane it lands on (f64
-//! keeps ~16 digits, leaving 8).
+//! keeps ~16 digits, leaving 8). The last step, onto the view volume itself,
+//! computes in f32 exactly as llvmpipe's clipper does (planes right, left, top,
+//! bottom, near, far; `out + t·(in − out)` with `t = d_out / (d_out − d_in)`),
+//! so that clipped vertices, and the colors and depths interpolated from
+//! them, carry the same bits; its inputs are then within 10^4 of the volume,
+//! where f32 is accurate to 10^-3 of a viewport.
 
 use glam::{DVec4, Vec4};
 
@@ -17,7 +22,10 @@ pub struct ClipVertex {
 }
 
 /// Scales of the nested guard bands, outermost first, relative to the final one.
-pub const GUARD_LEVELS: [f64; 5] = [1e32, 1e24, 1e16, 1e8, 1.0];
+pub const GUARD_LEVELS: [f64; 6] = [1e32, 1e24, 1e16, 1e8, 1e4, 1.0];
+
+/// The order llvmpipe clips against the view volume's planes (indices as in `dist`).
+const FINAL_ORDER: [usize; 6] = [3, 2, 5, 4, 0, 1];
 
 impl ClipVertex {
     pub fn is_finite(&self) -> bool {
@@ -36,6 +44,31 @@ impl ClipVertex {
         let t = d / sum;
         let color = (self.color.as_dvec4() + (o.color.as_dvec4() - self.color.as_dvec4()) * t).as_vec4();
         ClipVertex { pos, color }
+    }
+
+    /// The crossing as llvmpipe computes it, in f32: `out + t·(in − out)`,
+    /// `t = d_out / (d_out − d_in)`, with `self` and `o` the inside and
+    /// outside vertices.
+    fn crossing_f32(&self, o: &ClipVertex, d_in: f32, d_out: f32) -> ClipVertex {
+        let t = d_out / (d_out - d_in);
+        let (pin, pout) = (self.pos.as_vec4(), o.pos.as_vec4());
+        let pos = (pout + (pin - pout) * t).as_dvec4();
+        let color = o.color + (self.color - o.color) * t;
+        ClipVertex { pos, color }
+    }
+}
+
+/// Signed distance to plane `k` of the view volume, in f32.
+#[inline]
+fn dist_f32(p: DVec4, k: usize) -> f32 {
+    let p = p.as_vec4();
+    match k {
+        0 => p.z + p.w,
+        1 => p.w - p.z,
+        2 => p.x + p.w,
+        3 => p.w - p.x,
+        4 => p.y + p.w,
+        _ => p.w - p.y,
     }
 }
 
@@ -67,7 +100,9 @@ pub type PolyVertex = (ClipVertex, bool);
 /// are not boundary edges.
 pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64) {
     let mut out: Vec<PolyVertex> = Vec::with_capacity(poly.len() + 6);
-    for k in 0..6 {
+    let last = g == 1.0;
+    let order = if last { FINAL_ORDER } else { [0, 1, 2, 3, 4, 5] };
+    for k in order {
         if planes & (1 << k) == 0 || poly.is_empty() {
             continue;
         }
@@ -75,13 +110,26 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64) {
         for i in 0..poly.len() {
             let (p, edge) = poly[i];
             let (q, _) = poly[(i + 1) % poly.len()];
-            let (dp, dq) = (dist(p.pos, k, g), dist(q.pos, k, g));
-            let (p_in, q_in) = (dp >= 0.0, dq >= 0.0);
-            if p_in {
-                out.push((p, edge));
-            }
-            if p_in != q_in {
-                out.push((p.crossing(&q, dp, dq), !p_in && edge));
+            if last {
+                let (dp, dq) = (dist_f32(p.pos, k), dist_f32(q.pos, k));
+                let (p_in, q_in) = (dp >= 0.0, dq >= 0.0);
+                if p_in {
+                    out.push((p, edge));
+                }
+                if p_in && !q_in {
+                    out.push((p.crossing_f32(&q, dp, dq), false));
+                } else if !p_in && q_in {
+                    out.push((q.crossing_f32(&p, dq, dp), edge));
+                }
+            } else {
+                let (dp, dq) = (dist(p.pos, k, g), dist(q.pos, k, g));
+                let (p_in, q_in) = (dp >= 0.0, dq >= 0.0);
+                if p_in {
+                    out.push((p, edge));
+                }
+                if p_in != q_in {
+                    out.push((p.crossing(&q, dp, dq), !p_in && edge));
+                }
             }
         }
         std::mem::swap(poly, &mut out);
@@ -92,16 +140,28 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64) {
 /// one plane after another; `None` when nothing is left.
 pub fn clip_segment(a: &ClipVertex, b: &ClipVertex, planes: u8, g: f64) -> Option<(ClipVertex, ClipVertex)> {
     let (mut a, mut b) = (*a, *b);
-    for k in 0..6 {
+    let last = g == 1.0;
+    let order = if last { FINAL_ORDER } else { [0, 1, 2, 3, 4, 5] };
+    for k in order {
         if planes & (1 << k) == 0 {
             continue;
         }
-        let (da, db) = (dist(a.pos, k, g), dist(b.pos, k, g));
-        match (da >= 0.0, db >= 0.0) {
-            (false, false) => return None,
-            (true, true) => {}
-            (false, true) => a = a.crossing(&b, da, db),
-            (true, false) => b = a.crossing(&b, da, db),
+        if last {
+            let (da, db) = (dist_f32(a.pos, k), dist_f32(b.pos, k));
+            match (da >= 0.0, db >= 0.0) {
+                (false, false) => return None,
+                (true, true) => {}
+                (false, true) => a = b.crossing_f32(&a, db, da),
+                (true, false) => b = a.crossing_f32(&b, da, db),
+            }
+        } else {
+            let (da, db) = (dist(a.pos, k, g), dist(b.pos, k, g));
+            match (da >= 0.0, db >= 0.0) {
+                (false, false) => return None,
+                (true, true) => {}
+                (false, true) => a = a.crossing(&b, da, db),
+                (true, false) => b = a.crossing(&b, da, db),
+            }
         }
     }
     Some((a, b))

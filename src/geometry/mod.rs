@@ -16,10 +16,6 @@ use glam::{Mat4, Vec4};
 
 pub use crate::state::PrimitiveMode;
 
-/// Window coordinates are kept within this many pixels of the origin, so that
-/// fixed-point edge products stay inside i64 (2^22 px × 2^8 sub-pixels, squared).
-const GUARD_BAND_PX: f64 = (1u64 << 21) as f64;
-
 /// The largest viewport side (`GL_MAX_VIEWPORT_DIMS`, as Mesa reports it).
 pub const MAX_VIEWPORT: i32 = 16384;
 
@@ -43,8 +39,7 @@ struct Viewport {
 pub struct Geometry<'s> {
     state: &'s RasterState,
     viewport: Viewport,
-    guard: f64,
-    /// Triangles: bounded by the viewport (they are clipped to a guard band only).
+    /// Triangles: clipped to the view volume, and bounded by the viewport.
     params: RasterParams,
     /// Points and lines: clipped to the view volume, their width may reach
     /// past the viewport up to the framebuffer's edges, as in llvmpipe.
@@ -67,7 +62,6 @@ impl<'s> Geometry<'s> {
             ],
             flipped_y: (-(vh as f32) / 2.0, (fb.height() as f32 - vp.y as f32) - vh as f32 / 2.0),
         };
-        let guard = (GUARD_BAND_PX / f64::from(vw.max(vh).max(1))).max(1.0);
         let fb_rect = fb.bounds();
         let vp_rect = fb.clip_rect(i64::from(vp.x), i64::from(vp.y), i64::from(vw), i64::from(vh));
         let bounds = Rect {
@@ -91,7 +85,6 @@ impl<'s> Geometry<'s> {
         Geometry {
             state,
             viewport,
-            guard,
             params,
             wide_params,
         }
@@ -186,11 +179,12 @@ impl<'s> Geometry<'s> {
             return;
         }
         let mut clipped: Vec<PolyVertex> = poly.to_vec();
-        for level in GUARD_LEVELS {
-            let g = self.guard * level;
+        let mut was_clipped = false;
+        for g in GUARD_LEVELS {
             let planes = clipped.iter().fold(0, |acc, (v, _)| acc | outcode(v.pos, g));
             if planes != 0 {
                 clip_polygon(&mut clipped, planes, g);
+                was_clipped = true;
             }
         }
         let mut win: Vec<(RasterVertex, bool)> = Vec::with_capacity(clipped.len());
@@ -227,8 +221,15 @@ impl<'s> Geometry<'s> {
                     return;
                 }
                 let params = RasterParams { offset, ..self.params };
-                for i in 1..win.len() - 1 {
-                    raster::triangle([&win[0].0, &win[i].0, &win[i + 1].0], flat, &params, sink);
+                if was_clipped {
+                    // llvmpipe fans a clipped polygon as (v[i-1], v[i], v[0]); the
+                    // order fixes which vertex anchors the f32 setup (measured: the
+                    // other fans and starting vertices give 6-8x more depth differences).
+                    for i in 2..win.len() {
+                        raster::triangle([&win[i - 1].0, &win[i].0, &win[0].0], flat, &params, sink);
+                    }
+                } else {
+                    raster::triangle([&win[0].0, &win[1].0, &win[2].0], flat, &params, sink);
                 }
             }
             PolygonMode::Line | PolygonMode::Point => {

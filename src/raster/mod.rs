@@ -53,7 +53,7 @@ impl<F: FnMut(&FragmentSpan)> SpanSink for F {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RasterParams {
     /// Fragments are produced only inside this rectangle: the framebuffer
-    /// intersected with the viewport (geometry is clipped to a guard band only).
+    /// intersected with the viewport for triangles.
     pub bounds: Rect,
     /// Depth format to produce `z` for; `None` when no stage reads depth.
     pub depth: Option<DepthFormat>,
@@ -72,7 +72,7 @@ pub struct RasterParams {
 pub fn snap(v: f32) -> i64 {
     let f = ((v - 0.5) * ONE as f32).round_ties_even();
     if f.is_finite() {
-        // Clipping bounds window coordinates to the guard band; this keeps
+        // Clipping bounds window coordinates to the view volume; this keeps
         // edge products inside i64 whatever arrives.
         f.clamp(-((1u64 << 40) as f32), (1u64 << 40) as f32) as i64
     } else {
