@@ -53,6 +53,17 @@ fn draw(gl: &mut Context, mode: PrimitiveMode, pts: &[(f32, f32)]) {
     gl.end().unwrap();
 }
 
+/// A fan around `(cx, cy)`: the center, then `n + 1` points on an ellipse
+/// of radii `rx`, `ry` starting at angle `phase` (the last repeats the first).
+fn fan(cx: f32, cy: f32, rx: f32, ry: f32, n: usize, phase: f32) -> Vec<(f32, f32)> {
+    let mut pts = vec![(cx, cy)];
+    for i in 0..=n {
+        let a = i as f32 / n as f32 * std::f32::consts::TAU + phase;
+        pts.push((cx + rx * a.cos(), cy + ry * a.sin()));
+    }
+    pts
+}
+
 fn rect(x0: u32, x1: u32, y0: u32, y1: u32) -> Vec<(u32, u32)> {
     (y0..=y1).flat_map(|y| (x0..=x1).map(move |x| (x, y))).collect()
 }
@@ -61,12 +72,7 @@ fn rect(x0: u32, x1: u32, y0: u32, y1: u32) -> Vec<(u32, u32)> {
 fn fan_of_64_covering_the_window_hits_every_pixel_exactly_once() {
     let mut gl = window_ctx(64, 64);
     count_with_stencil(&mut gl);
-    let (cx, cy) = (13.37f32, 41.71f32);
-    let mut pts = vec![(cx, cy)];
-    for i in 0..=64 {
-        let a = i as f32 / 64.0 * std::f32::consts::TAU;
-        pts.push((cx + 300.0 * a.cos(), cy + 300.0 * a.sin()));
-    }
+    let pts = fan(13.37, 41.71, 300.0, 300.0, 64, 0.0);
     draw(&mut gl, PrimitiveMode::TriangleFan, &pts);
     let grid = stencil_grid(&gl);
     let ones = grid.iter().flatten().filter(|&&s| s == 1).count();
@@ -77,12 +83,7 @@ fn fan_of_64_covering_the_window_hits_every_pixel_exactly_once() {
 fn fan_of_64_inside_the_window_hits_no_pixel_twice() {
     let mut gl = window_ctx(64, 64);
     count_with_stencil(&mut gl);
-    let (cx, cy) = (29.13f32, 35.77f32);
-    let mut pts = vec![(cx, cy)];
-    for i in 0..=64 {
-        let a = i as f32 / 64.0 * std::f32::consts::TAU + 0.1;
-        pts.push((cx + 21.3 * a.cos(), cy + 17.9 * a.sin()));
-    }
+    let pts = fan(29.13, 35.77, 21.3, 17.9, 64, 0.1);
     draw(&mut gl, PrimitiveMode::TriangleFan, &pts);
     let grid = stencil_grid(&gl);
     assert_eq!(grid.iter().flatten().copied().max(), Some(1), "no pixel hit twice");
@@ -449,12 +450,7 @@ fn long_strips_fans_and_loops_span_vertex_batches_without_gaps() {
     // window still hits every pixel exactly once.
     let mut gl = window_ctx(48, 48);
     count_with_stencil(&mut gl);
-    let (cx, cy) = (20.3f32, 25.9f32);
-    let mut pts = vec![(cx, cy)];
-    for i in 0..=998 {
-        let a = i as f32 / 998.0 * std::f32::consts::TAU;
-        pts.push((cx + 200.0 * a.cos(), cy + 200.0 * a.sin()));
-    }
+    let pts = fan(20.3, 25.9, 200.0, 200.0, 998, 0.0);
     draw(&mut gl, PrimitiveMode::TriangleFan, &pts);
     assert!(
         stencil_grid(&gl).iter().flatten().all(|&s| s == 1),
