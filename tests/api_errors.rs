@@ -3,6 +3,8 @@
 //! the call changes no state at all — raster state, matrices, stack depths,
 //! current attributes and every buffer are compared before and after.
 
+mod common;
+use common::count;
 use glam::Mat4;
 use softgl::{
     BlendFactor, Capability, ClearMask, ColorFormat, CompareFunc, Context, CurrentAttribs, DepthFormat,
@@ -224,15 +226,6 @@ fn plain() -> Context {
     gl.clear_color(0.0, 0.0, 1.0, 1.0).unwrap();
     gl.clear(ClearMask::ALL).unwrap();
     gl
-}
-
-/// Pixels equal to `rgba`.
-fn count(gl: &Context, rgba: [u8; 4]) -> usize {
-    gl.framebuffer()
-        .color_bytes()
-        .chunks_exact(4)
-        .filter(|p| *p == rgba)
-        .count()
 }
 
 const RED: [u8; 4] = [255, 0, 0, 255];

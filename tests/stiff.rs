@@ -11,6 +11,8 @@
 //! outside the viewport changes, which catches writes that land in the wrong
 //! place inside the buffer.
 
+mod common;
+use common::count;
 use glam::Mat4;
 use softgl::{
     Capability, ClearMask, CompareFunc, Context, Face, FramebufferDesc, Indices, MatrixMode, PolygonMode,
@@ -119,15 +121,6 @@ fn expect_image(gl: &Context, what: &str, expected: impl Fn(u32, u32) -> [u8; 4]
         bad.len(),
         &bad[..bad.len().min(8)]
     );
-}
-
-/// Number of pixels equal to `rgba`.
-fn count(gl: &Context, rgba: [u8; 4]) -> usize {
-    gl.framebuffer()
-        .color_bytes()
-        .chunks_exact(4)
-        .filter(|p| *p == rgba)
-        .count()
 }
 
 /// The image of "the good quad over `red(x, y)` over the clear color".
