@@ -5,7 +5,7 @@
 //! for callers (such as the C ABI) that poll.
 
 use crate::error::{GlError, GlResult};
-use crate::fragment::FragmentStage;
+use crate::fragment::{Backend, FragmentStage};
 use crate::framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
 use crate::geometry::{Geometry, InVertex, MAX_VIEWPORT};
 use crate::matrix::{self, MatrixMode, MatrixStack};
@@ -161,6 +161,7 @@ pub struct Context {
     /// The primitive between `begin` and `end`, with its vertices.
     begun: Option<(PrimitiveMode, Vec<InVertex>)>,
     error: Option<GlError>,
+    backend: Backend,
 }
 
 impl Context {
@@ -181,6 +182,7 @@ impl Context {
             },
             begun: None,
             error: None,
+            backend: Backend::from_env(),
         })
     }
 
@@ -195,6 +197,16 @@ impl Context {
 
     pub fn current(&self) -> &CurrentAttribs {
         &self.current
+    }
+
+    /// The back end running the per-fragment stages (`SOFTGL_BACKEND` at creation).
+    pub fn backend(&self) -> Backend {
+        self.backend
+    }
+
+    /// Chooses the back end for later draws.
+    pub fn set_backend(&mut self, backend: Backend) {
+        self.backend = backend;
     }
 
     /// `glGetError`: the first error since the last call, then none.

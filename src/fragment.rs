@@ -7,6 +7,26 @@ use softgl_jit::{interp, FragmentError, FragmentKey, FragmentSpan, FragmentUnifo
 /// Spans handed to the back end at once.
 const BATCH: usize = 32;
 
+/// Which back end runs the per-fragment stages.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Backend {
+    /// The reference interpreter.
+    Interpreter,
+    /// Specialists compiled with Cranelift (the default); a key that fails to
+    /// compile runs on the interpreter.
+    Jit,
+}
+
+impl Backend {
+    /// `SOFTGL_BACKEND=interp|jit`, else the JIT.
+    pub fn from_env() -> Backend {
+        match std::env::var("SOFTGL_BACKEND").as_deref() {
+            Ok("interp") | Ok("interpreter") => Backend::Interpreter,
+            _ => Backend::Jit,
+        }
+    }
+}
+
 /// Collects spans and runs the fragment stages over them in batches.
 pub struct FragmentStage<'t> {
     key: FragmentKey,

@@ -31,6 +31,7 @@ pub mod state;
 
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
 pub use error::{GlError, GlResult};
+pub use fragment::Backend;
 pub use framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
 pub use matrix::MatrixMode;
 pub use softgl_jit::{
