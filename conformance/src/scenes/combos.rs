@@ -98,7 +98,7 @@ fn scissored_clears(r: &mut Rec, s: Size) {
         let (x, y) = (rng.range(-10.0, s.wf()) as i32, rng.range(-10.0, s.hf()) as i32);
         let (w, h) = (rng.range(0.0, s.wf() / 2.0) as i32, rng.range(0.0, s.hf() / 2.0) as i32);
         r.scissor(x, y, w, h)
-            .clear_color(rng.next(), rng.next(), rng.next(), 1.0)
+            .clear_color(rng.unit(), rng.unit(), rng.unit(), 1.0)
             .clear(ClearMask::COLOR | ClearMask::DEPTH);
     }
     r.disable(Capability::ScissorTest);

@@ -218,14 +218,14 @@ impl Rng {
     pub fn new(seed: u32) -> Rng {
         Rng(seed.max(1))
     }
-    pub fn next(&mut self) -> f32 {
+    pub fn unit(&mut self) -> f32 {
         self.0 ^= self.0 << 13;
         self.0 ^= self.0 >> 17;
         self.0 ^= self.0 << 5;
         (self.0 >> 8) as f32 / (1u32 << 24) as f32
     }
     pub fn range(&mut self, a: f32, b: f32) -> f32 {
-        a + (b - a) * self.next()
+        a + (b - a) * self.unit()
     }
 }
 
@@ -250,7 +250,7 @@ pub fn random_triangles(r: &mut Rec, rng: &mut Rng, n: usize, s: Size, extent: f
         let (cx, cy) = (rng.range(-4.0, s.wf() + 4.0), rng.range(-4.0, s.hf() + 4.0));
         for _ in 0..3 {
             let a = rng.range(alpha.0, alpha.1);
-            r.color(rng.next(), rng.next(), rng.next(), a);
+            r.color(rng.unit(), rng.unit(), rng.unit(), a);
             r.vertex(
                 cx + rng.range(-extent, extent),
                 cy + rng.range(-extent, extent),

@@ -73,7 +73,7 @@ fn points(r: &mut Rec, s: Size) {
         r.call(Call::PointSize(size as f32 + if size % 2 == 0 { 0.4 } else { 0.0 }));
         r.begin(PrimitiveMode::Points);
         for _ in 0..s.count(80) {
-            r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex(
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
                 rng.range(0.0, s.wf()),
                 rng.range(0.0, s.hf()),
                 0.0,
@@ -87,7 +87,7 @@ fn random_lines(r: &mut Rec, rng: &mut Rng, n: usize, s: Size) {
     r.begin(PrimitiveMode::Lines);
     for _ in 0..n {
         for _ in 0..2 {
-            r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex(
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
                 rng.range(-4.0, s.wf() + 4.0),
                 rng.range(-4.0, s.hf() + 4.0),
                 0.0,
@@ -114,7 +114,7 @@ fn line_strip_loop(r: &mut Rec, s: Size) {
     for mode in [PrimitiveMode::LineStrip, PrimitiveMode::LineLoop] {
         r.begin(mode);
         for _ in 0..s.count(40) {
-            r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex(
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
                 rng.range(0.0, s.wf()),
                 rng.range(0.0, s.hf()),
                 0.0,
@@ -129,7 +129,7 @@ fn ring(r: &mut Rec, rng: &mut Rng, c: (f32, f32), radius: f32, n: usize, strip:
     for i in 0..n {
         let a = i as f32 / (n - 1) as f32 * std::f32::consts::PI * 1.7;
         let rad = if strip && i % 2 == 1 { radius * 0.45 } else { radius };
-        r.color(rng.next(), rng.next(), rng.next(), 1.0)
+        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0)
             .vertex(c.0 + rad * a.cos(), c.1 + rad * a.sin(), 0.0);
     }
 }
@@ -154,7 +154,7 @@ fn quads(r: &mut Rec, s: Size) {
         for k in 0..4 {
             let a = k as f32 * std::f32::consts::FRAC_PI_2 + rng.range(-0.4, 0.4);
             let d = rng.range(4.0, 16.0);
-            r.color(rng.next(), rng.next(), rng.next(), 1.0)
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0)
                 .vertex(cx + d * a.cos(), cy + d * a.sin(), 0.0);
         }
     }
@@ -168,9 +168,9 @@ fn quad_strip(r: &mut Rec, s: Size) {
         r.begin(PrimitiveMode::QuadStrip);
         for i in 0..9 {
             let x = s.wf() * (0.05 + 0.11 * i as f32);
-            r.color(rng.next(), rng.next(), rng.next(), 1.0)
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0)
                 .vertex(x, y - 8.0 + rng.range(-3.0, 3.0), 0.0)
-                .color(rng.next(), rng.next(), rng.next(), 1.0)
+                .color(rng.unit(), rng.unit(), rng.unit(), 1.0)
                 .vertex(x + rng.range(-3.0, 3.0), y + 8.0, 0.0);
         }
         r.end();
@@ -187,7 +187,7 @@ fn polygon(r: &mut Rec, s: Size) {
             let a = k as f32 / n as f32 * std::f32::consts::TAU;
             // The last panel's polygon is concave: the fan overlaps itself.
             let rad = (p[2] - p[0]) * if i == 3 && k % 2 == 1 { 0.15 } else { 0.45 };
-            r.color(rng.next(), rng.next(), rng.next(), 1.0)
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0)
                 .vertex(c.0 + rad * a.cos(), c.1 + rad * a.sin(), 0.0);
         }
         r.end();
@@ -203,7 +203,7 @@ fn all_modes(r: &mut Rec, s: Size) {
         r.begin(mode);
         for k in 0..8 {
             let (fx, fy) = ((k / 2) as f32 / 3.0, (k % 2) as f32);
-            r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex(
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
                 p[0] + 2.0 + fx * (w - 4.0),
                 p[1] + 2.0 + fy * (h - 4.0) + (k as f32 * 1.7) % 3.0,
                 0.0,
@@ -267,7 +267,7 @@ fn polygon_offset(r: &mut Rec, s: Size) {
     let tri = |r: &mut Rec, rng: &mut Rng, v: &[(f32, f32, f32); 3]| {
         r.begin(PrimitiveMode::Triangles);
         for &(x, y, z) in v {
-            r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex(x, y, z);
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(x, y, z);
         }
         r.end();
     };
@@ -309,7 +309,7 @@ fn vertex_arrays(r: &mut Rec, s: Size) {
             ]
         })
         .collect();
-    let colors = (0..n).map(|_| [rng.next(), rng.next(), rng.next(), 1.0]).collect();
+    let colors = (0..n).map(|_| [rng.unit(), rng.unit(), rng.unit(), 1.0]).collect();
     r.enable(Capability::DepthTest).call(Call::DepthFunc(CompareFunc::Less));
     r.call(Call::DrawArrays {
         mode: PrimitiveMode::Triangles,
@@ -333,7 +333,7 @@ fn perspective(r: &mut Rec, s: Size) {
         let sc = -cz;
         let (cx, cy) = (rng.range(-1.3, 1.3) * sc, rng.range(-1.3, 1.3) * sc);
         for _ in 0..3 {
-            r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex(
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
                 cx + rng.range(-0.25, 0.25) * sc,
                 cy + rng.range(-0.25, 0.25) * sc,
                 cz + rng.range(-1.5, 1.5),

@@ -270,7 +270,7 @@ fn blend_separate(r: &mut Rec, s: Size) {
         r.begin(PrimitiveMode::Triangles);
         for _ in 0..6 {
             for _ in 0..3 {
-                r.color(rng.next(), rng.next(), rng.next(), rng.next()).vertex(
+                r.color(rng.unit(), rng.unit(), rng.unit(), rng.unit()).vertex(
                     rng.range(p[0], p[2]),
                     rng.range(p[1], p[3]),
                     0.0,

@@ -75,7 +75,7 @@ fn w_near_zero(r: &mut Rec, s: Size) {
             } else {
                 rng.range(0.5, 1.5)
             };
-            r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex4(
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex4(
                 rng.range(-1.0, 1.0) * 0.5,
                 rng.range(-1.0, 1.0) * 0.5,
                 0.0,
@@ -98,7 +98,7 @@ fn negative_w(r: &mut Rec, s: Size) {
             } else {
                 rng.range(0.5, 2.0)
             };
-            r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex4(
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex4(
                 rng.range(-1.0, 1.0) * w.abs(),
                 rng.range(-1.0, 1.0) * w.abs(),
                 rng.range(-0.5, 0.5) * w.abs(),
@@ -115,17 +115,17 @@ fn huge_coordinates(r: &mut Rec, s: Size) {
     r.begin(PrimitiveMode::Triangles);
     for i in 0..s.count(40) {
         let big = [1e38f32, 1e20, 1e8, 3e3][i % 4];
-        r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex(
+        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
             rng.range(0.0, s.wf()),
             rng.range(0.0, s.hf()),
             rng.range(-1.0, 1.0),
         );
-        r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex(
+        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
             rng.range(-1.0, 1.0) * big,
             rng.range(-1.0, 1.0) * big,
             rng.range(-1.0, 1.0),
         );
-        r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex(
+        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
             rng.range(0.0, s.wf()),
             rng.range(0.0, s.hf()),
             rng.range(-1.0, 1.0),
@@ -199,7 +199,7 @@ fn slivers(r: &mut Rec, s: Size) {
         let (x1, y1) = (rng.range(0.0, s.wf()), rng.range(0.0, s.hf()));
         let t = rng.range(0.0, 1.0);
         let e = rng.range(0.01, 0.6);
-        r.color(rng.next(), rng.next(), rng.next(), 1.0)
+        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0)
             .vertex(x0, y0, 0.0)
             .vertex(x1, y1, 0.0)
             .vertex(x0 + (x1 - x0) * t + e, y0 + (y1 - y0) * t - e, 0.0);
@@ -212,7 +212,7 @@ fn subpixel(r: &mut Rec, s: Size) {
     r.begin(PrimitiveMode::Triangles);
     for _ in 0..s.count(2000) {
         let (x, y) = (rng.range(0.0, s.wf()), rng.range(0.0, s.hf()));
-        r.color(rng.next(), rng.next(), rng.next(), 1.0);
+        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0);
         for _ in 0..3 {
             r.vertex(x + rng.range(-0.7, 0.7), y + rng.range(-0.7, 0.7), 0.0);
         }
@@ -225,7 +225,7 @@ fn edges_through_centers(r: &mut Rec, s: Size) {
     let mut rng = Rng::new(57);
     r.begin(PrimitiveMode::Triangles);
     for _ in 0..s.count(200) {
-        r.color(rng.next(), rng.next(), rng.next(), 1.0);
+        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0);
         let (x, y) = (rng.range(0.0, s.wf()).floor(), rng.range(0.0, s.hf()).floor());
         for _ in 0..3 {
             r.vertex(
@@ -287,12 +287,12 @@ fn frustum_scene(r: &mut Rec, s: Size, near: f64, far: f64, seed: u32) {
     r.begin(PrimitiveMode::Triangles);
     for _ in 0..s.count(300) {
         // Depths spread logarithmically over the whole range.
-        let t = rng.next() as f64;
+        let t = rng.unit() as f64;
         let z = -(near * (far / near).powf(t)) as f32;
         let sc = -z;
         let (cx, cy) = (rng.range(-1.0, 1.0) * sc, rng.range(-1.0, 1.0) * sc);
         for _ in 0..3 {
-            r.color(rng.next(), rng.next(), rng.next(), 1.0).vertex(
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
                 cx + rng.range(-0.3, 0.3) * sc,
                 cy + rng.range(-0.3, 0.3) * sc,
                 z * rng.range(0.9, 1.1),
@@ -324,7 +324,7 @@ fn viewport_1x1(r: &mut Rec, s: Size) {
     for i in 0..8 {
         let (x, y) = ((s.w as i32 * i) / 8, (s.h as i32 * (7 - i)) / 8);
         r.viewport(x, y, 1, 1);
-        r.color(rng.next(), rng.next(), rng.next(), 1.0)
+        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0)
             .rect(0.0, 0.0, s.wf(), s.hf(), 0.0);
     }
 }
@@ -379,7 +379,7 @@ fn zero_length_lines(r: &mut Rec, s: Size) {
             if i % 3 == 0 {
                 (x, y) = (x.floor() + 0.5, y.floor() + 0.5);
             }
-            r.color(rng.next(), rng.next(), rng.next(), 1.0)
+            r.color(rng.unit(), rng.unit(), rng.unit(), 1.0)
                 .vertex(x, y, 0.0)
                 .vertex(x, y, 0.0);
         }
@@ -405,7 +405,7 @@ fn extreme_colors(r: &mut Rec, s: Size) {
     r.begin(PrimitiveMode::Triangles);
     for _ in 0..s.count(150) {
         for _ in 0..3 {
-            let v = |rng: &mut Rng| [-5.0, 7.0, 1e30, -1e30, 0.5, 1.0 + 1e-7][(rng.next() * 6.0) as usize % 6];
+            let v = |rng: &mut Rng| [-5.0, 7.0, 1e30, -1e30, 0.5, 1.0 + 1e-7][(rng.unit() * 6.0) as usize % 6];
             r.color(v(&mut rng), v(&mut rng), v(&mut rng), v(&mut rng)).vertex(
                 rng.range(0.0, s.wf()),
                 rng.range(0.0, s.hf()),

@@ -53,7 +53,7 @@ fn overdraw(r: &mut Rec, s: Size) {
         .call(Call::BlendFunc(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha));
     let mut rng = Rng::new(72);
     for _ in 0..16 {
-        r.color(rng.next(), rng.next(), rng.next(), rng.range(0.1, 0.9))
+        r.color(rng.unit(), rng.unit(), rng.unit(), rng.range(0.1, 0.9))
             .rect(0.0, 0.0, s.wf(), s.hf(), 0.0);
     }
 }
