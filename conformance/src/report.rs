@@ -398,7 +398,8 @@ fn markdown(
 const FONT: &str = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 /// One point per scene and back end: error (MAE against llvmpipe, log) over
-/// steady frame time (log). Identical images sit on the bottom line.
+/// steady frame time (log). Identical images sit on the bottom line, where
+/// llvmpipe's own times are drawn in black.
 fn plot(results: &[SceneResult], names: &[String], path: &Path) -> Result<(), String> {
     use plotters::prelude::*;
     let labels = match std::fs::read(FONT) {
@@ -415,7 +416,7 @@ fn plot(results: &[SceneResult], names: &[String], path: &Path) -> Result<(), St
         .iter()
         .flat_map(|s| {
             s.results.iter().filter_map(|r| match (&r.outcome, r.metrics) {
-                (Outcome::Rendered { timing, .. }, Some(m)) if r.backend != REFERENCE => {
+                (Outcome::Rendered { timing, .. }, Some(m)) => {
                     let i = names.iter().position(|n| *n == r.backend)?;
                     Some((i, ms(timing.steady).max(1e-3), m.mae.max(FLOOR)))
                 }
@@ -459,10 +460,8 @@ fn plot(results: &[SceneResult], names: &[String], path: &Path) -> Result<(), St
     }
     let colors = [RED, BLUE, GREEN, MAGENTA, CYAN, BLACK];
     for (i, name) in names.iter().enumerate() {
-        if name == REFERENCE {
-            continue;
-        }
-        let color = colors[i % colors.len()];
+        // The reference is identical to itself: its times sit on the bottom line, in black.
+        let color = if name == REFERENCE { BLACK } else { colors[i % colors.len()] };
         let series = chart
             .draw_series(
                 points
