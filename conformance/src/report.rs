@@ -461,7 +461,11 @@ fn plot(results: &[SceneResult], names: &[String], path: &Path) -> Result<(), St
     let colors = [RED, BLUE, GREEN, MAGENTA, CYAN, BLACK];
     for (i, name) in names.iter().enumerate() {
         // The reference is identical to itself: its times sit on the bottom line, in black.
-        let color = if name == REFERENCE { BLACK } else { colors[i % colors.len()] };
+        let color = if name == REFERENCE {
+            BLACK
+        } else {
+            colors[i % colors.len()]
+        };
         let series = chart
             .draw_series(
                 points
