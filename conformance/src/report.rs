@@ -281,6 +281,23 @@ fn markdown(
         },
         opts.runs
     );
+    let sh = |cmd: &str, args: &[&str]| {
+        std::process::Command::new(cmd)
+            .args(args)
+            .output()
+            .ok()
+            .filter(|o| o.status.success())
+            .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+            .unwrap_or_else(|| "unknown".into())
+    };
+    let _ = writeln!(
+        o,
+        "Generated {} at commit {} on {} ({} CPUs).\n",
+        sh("date", &["-u", "+%Y-%m-%d %H:%M UTC"]),
+        sh("git", &["rev-parse", "--short", "HEAD"]),
+        sh("uname", &["-sr"]),
+        std::thread::available_parallelism().map_or(0, |n| n.get())
+    );
     let _ = writeln!(o, "## Back ends\n\n| back end | status |\n|---|---|");
     for a in available {
         let status = match &a.status {
