@@ -49,6 +49,8 @@ pub fn probe(backends: &[Box<dyn Backend>], exe: &Path) -> Vec<Availability> {
 
 /// Runs everything and writes the report into `opts.out`.
 pub fn run(opts: &Options, exe: &Path) -> Result<(), String> {
+    // Diff images of an earlier report in the same place would mislead.
+    let _ = std::fs::remove_dir_all(opts.out.join("diff"));
     std::fs::create_dir_all(opts.out.join("diff")).map_err(|e| format!("{}: {e}", opts.out.display()))?;
     let mut backends = backend::all(exe);
     let available = probe(&backends, exe);

@@ -240,11 +240,17 @@ fn flush(st: &mut GlState, mode: PrimitiveMode, plan: &mut Plan) -> Result<(), S
             }
         })),
         PrimitiveMode::TriangleFan => tris.extend((0..n.saturating_sub(2)).map(|i| [0, i + 1, i + 2, i + 2])),
+        // llvmpipe splits a lone quad along v0-v2 but quads batched two or
+        // more to a glBegin along v1-v3 (measured with OSMesa 22.3.6).
+        PrimitiveMode::Quads if n / 4 == 1 => {
+            tris.push([0, 1, 2, 3]);
+            tris.push([0, 2, 3, 3]);
+        }
         PrimitiveMode::Quads => {
             for q in 0..n / 4 {
                 let b = 4 * q;
-                tris.push([b, b + 1, b + 2, b + 3]);
-                tris.push([b, b + 2, b + 3, b + 3]);
+                tris.push([b, b + 1, b + 3, b + 3]);
+                tris.push([b + 1, b + 2, b + 3, b + 3]);
             }
         }
         PrimitiveMode::QuadStrip => {
