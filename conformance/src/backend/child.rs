@@ -7,9 +7,12 @@ use super::{Backend, Outcome, Timing};
 use crate::scenes::{self, Scene};
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::time::Duration;
+use std::time::{Duration, Instant};
+
+/// A reference that takes longer than this on one scene has hung.
+const CHILD_TIMEOUT: Duration = Duration::from_secs(300);
 
 /// A Mesa renderer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -105,19 +108,39 @@ impl External {
             Reference::Softpipe => cmd.env("GALLIUM_DRIVER", "softpipe"),
             Reference::Lavapipe => cmd.env_remove("GALLIUM_DRIVER"),
         };
-        let output = cmd
-            .output()
+        let err_path = out.with_extension("stderr");
+        let err_file = std::fs::File::create(&err_path).map_err(|e| format!("{}: {e}", err_path.display()))?;
+        let mut child = cmd
+            .stdout(Stdio::null())
+            .stderr(err_file)
+            .spawn()
             .map_err(|e| format!("cannot run {}: {e}", self.exe.display()))?;
+        let start = Instant::now();
+        let status = loop {
+            match child.try_wait() {
+                Ok(Some(status)) => break Ok(status),
+                Ok(None) if start.elapsed() > CHILD_TIMEOUT => {
+                    // Our own child, by its handle.
+                    let _ = child.kill();
+                    let _ = child.wait();
+                    break Err(format!("timed out after {} s", CHILD_TIMEOUT.as_secs()));
+                }
+                Ok(None) => std::thread::sleep(Duration::from_millis(2)),
+                Err(e) => break Err(e.to_string()),
+            }
+        };
         let result = std::fs::read(&out);
+        let stderr = std::fs::read_to_string(&err_path).unwrap_or_default();
         let _ = std::fs::remove_file(&out);
+        let _ = std::fs::remove_file(&err_path);
+        let status = status?;
         match result {
-            Ok(bytes) if output.status.success() => {
+            Ok(bytes) if status.success() => {
                 ChildResult::decode(&bytes).ok_or_else(|| "unreadable child result".to_string())
             }
             _ => {
-                let stderr = String::from_utf8_lossy(&output.stderr);
                 let tail: String = stderr.lines().rev().take(3).collect::<Vec<_>>().join(" | ");
-                Err(format!("child {}: {tail}", output.status))
+                Err(format!("child {status}: {tail}"))
             }
         }
     }
