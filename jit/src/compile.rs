@@ -69,7 +69,11 @@ pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
     let mut flags = settings::builder();
     let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
     set(&mut flags, "opt_level", "speed")?;
-    set(&mut flags, "enable_verifier", if cfg!(debug_assertions) { "true" } else { "false" })?;
+    set(
+        &mut flags,
+        "enable_verifier",
+        if cfg!(debug_assertions) { "true" } else { "false" },
+    )?;
     set(&mut flags, "is_pic", "false")?;
     let isa = cranelift_native::builder().map_err(|e| CompileError::Isa(e.to_string()))?;
     isa.finish(settings::Flags::new(flags))
@@ -164,9 +168,18 @@ impl<'a> Gen<'a> {
         let color = load_ptr(self, offset_of!(SpanCall, color));
         let depth = load_ptr(self, offset_of!(SpanCall, depth));
         let stencil = load_ptr(self, offset_of!(SpanCall, stencil));
-        let live = self.b.ins().load(types::I64, mem(), call, offset_of!(SpanCall, live) as i32);
-        let groups = self.b.ins().load(types::I32, mem(), call, offset_of!(SpanCall, groups) as i32);
-        let x0 = self.b.ins().load(types::I32, mem(), span, offset_of!(FragmentSpan, x) as i32);
+        let live = self
+            .b
+            .ins()
+            .load(types::I64, mem(), call, offset_of!(SpanCall, live) as i32);
+        let groups = self
+            .b
+            .ins()
+            .load(types::I32, mem(), call, offset_of!(SpanCall, groups) as i32);
+        let x0 = self
+            .b
+            .ins()
+            .load(types::I32, mem(), span, offset_of!(FragmentSpan, x) as i32);
         let sv = SpanValues {
             span,
             color,
@@ -180,7 +193,10 @@ impl<'a> Gen<'a> {
 
         // The scissor's rows are tested once per span.
         if self.key.scissor {
-            let y = self.b.ins().load(types::I32, mem(), span, offset_of!(FragmentSpan, y) as i32);
+            let y = self
+                .b
+                .ins()
+                .load(types::I32, mem(), span, offset_of!(FragmentSpan, y) as i32);
             let sy0 = self.uniform_i32(u, offset_of!(FragmentUniforms, scissor) + 4);
             let sy1 = self.uniform_i32(u, offset_of!(FragmentUniforms, scissor) + 12);
             let lo = self.b.ins().icmp(IntCC::SignedGreaterThanOrEqual, y, sy0);
@@ -256,7 +272,8 @@ impl<'a> Gen<'a> {
         let bits_v = self.b.ins().splat(I32X4, bits);
         let lane_bits = self.vconst([1, 2, 4, 8]);
         let sel = self.b.ins().band(bits_v, lane_bits);
-        let live = self.b.ins().icmp_imm_u(IntCC::NotEqual, sel, 0);
+        let zero = self.splat(0);
+        let live = self.b.ins().icmp(IntCC::NotEqual, sel, zero);
         let lane0 = self.b.ins().ishl_imm_u(gi, 2);
         let lane0_p = self.b.ins().uextend(self.ptr, lane0);
         let bpp = self.key.color_format.bytes_per_pixel() as i64;
@@ -269,7 +286,6 @@ impl<'a> Gen<'a> {
         let off = self.b.ins().imul_imm_u(lane0_p, dbytes);
         let depth_p = self.b.ins().iadd(sv.depth, off);
         let stencil_p = self.b.ins().iadd(sv.stencil, lane0_p);
-        let zero = self.splat(0);
         Group {
             live,
             rgba: [zero; 4],
@@ -571,7 +587,11 @@ impl<'a> Gen<'a> {
 
     /// `(v >> shift) & mask`.
     fn field(&mut self, v: Value, shift: i64, mask: i64) -> Value {
-        let s = if shift == 0 { v } else { self.b.ins().ushr_imm_u(v, shift) };
+        let s = if shift == 0 {
+            v
+        } else {
+            self.b.ins().ushr_imm_u(v, shift)
+        };
         let m = self.splat(mask);
         self.b.ins().band(s, m)
     }

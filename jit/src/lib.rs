@@ -12,19 +12,19 @@ pub mod compile;
 pub mod interp;
 pub mod key;
 pub mod pixel;
+pub mod span;
 #[allow(unsafe_code)]
 pub mod specialist;
-pub mod span;
 pub mod target;
 pub mod uniforms;
 
 pub use cache::{CacheStats, SpecialistCache};
 pub use interp::FragmentError;
-pub use specialist::{Specialist, SpecialistError};
 pub use key::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, FragmentKey,
     KeyError, LogicOp, Stage, StencilKey, StencilOp,
 };
 pub use span::{FragmentSpan, SPAN_MAX};
+pub use specialist::{Specialist, SpecialistError};
 pub use target::{DepthTarget, Target, TargetError};
 pub use uniforms::FragmentUniforms;

@@ -47,7 +47,9 @@ unsafe impl Send for Specialist {}
 
 impl std::fmt::Debug for Specialist {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Specialist").field("key", &self.key).finish_non_exhaustive()
+        f.debug_struct("Specialist")
+            .field("key", &self.key)
+            .finish_non_exhaustive()
     }
 }
 
@@ -67,7 +69,10 @@ impl Specialist {
     }
 
     fn compile_with(key: &FragmentKey, isa: &OwnedTargetIsa) -> Result<Specialist, SpecialistError> {
-        let mut module = JITModule::new(JITBuilder::with_isa(isa.clone(), cranelift_module::default_libcall_names()));
+        let mut module = JITModule::new(JITBuilder::with_isa(
+            isa.clone(),
+            cranelift_module::default_libcall_names(),
+        ));
         let built = (|| {
             let mut ctx = module.make_context();
             ctx.func.signature = compile::signature(isa);
@@ -142,7 +147,9 @@ impl Specialist {
         // Whole groups inside the row are run in place; when the last group
         // crosses the right edge, on a copy of the row's end padded to whole groups.
         let len = n.min(inside);
-        let Some(color) = color.get_mut(color_at..color_at + len * bpp) else { return };
+        let Some(color) = color.get_mut(color_at..color_at + len * bpp) else {
+            return;
+        };
         let mut depth = match depth {
             Some(d) => match depth_row(d, index, len) {
                 Some(row) => Some(row),

@@ -142,10 +142,7 @@ impl Fb {
         r
     }
 
-    fn run_with(
-        &mut self,
-        f: impl FnOnce(&mut Target<'_>) -> Result<(), FragmentError>,
-    ) -> Result<(), FragmentError> {
+    fn run_with(&mut self, f: impl FnOnce(&mut Target<'_>) -> Result<(), FragmentError>) -> Result<(), FragmentError> {
         let stride = self.width as usize * bpp(self.format);
         let mut target = Target::new(
             self.width,
