@@ -9,7 +9,7 @@ use crate::target::{DepthTarget, Target};
 use crate::uniforms::FragmentUniforms;
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_jit::{JITBuilder, JITModule};
-use cranelift_module::Module;
+use cranelift_module::{Module, ModuleError};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::OnceLock;
 
@@ -73,7 +73,7 @@ impl Specialist {
             isa.clone(),
             cranelift_module::default_libcall_names(),
         ));
-        let built = (|| {
+        let built = (|| -> Result<*const u8, Box<ModuleError>> {
             let mut ctx = module.make_context();
             ctx.func.signature = compile::signature(isa);
             compile::build(key, isa, &mut ctx.func);
@@ -97,7 +97,7 @@ impl Specialist {
             Err(e) => {
                 // SAFETY: nothing from the module was ever called or handed out.
                 unsafe { module.free_memory() };
-                Err(SpecialistError::Compile(CompileError::Module(Box::new(e))))
+                Err(SpecialistError::Compile(CompileError::Module(e)))
             }
         }
     }
