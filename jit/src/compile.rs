@@ -63,12 +63,16 @@ pub enum CompileError {
     Module(#[from] Box<cranelift_module::ModuleError>),
 }
 
-/// The host ISA with the flags specialists are compiled with: optimized, and the
-/// IR verifier only in debug builds (it adds 30-60% to compile time).
+/// The host ISA with the flags specialists are compiled with. `opt_level=none`:
+/// the generator already emits each constant and factor once per group, so
+/// Cranelift's e-graph pass bought only 2% of run time for 50% more compile time
+/// (all-ops key on this 2-core machine: 204 µs and 430 Mfragments/s without it,
+/// 309 µs and 440 with it; the register allocator is most of what is left).
+/// The IR verifier runs only in debug builds (it adds 30-60%).
 pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
     let mut flags = settings::builder();
     let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
-    set(&mut flags, "opt_level", "speed")?;
+    set(&mut flags, "opt_level", "none")?;
     set(
         &mut flags,
         "enable_verifier",
@@ -148,11 +152,22 @@ struct Gen<'a> {
     key: FragmentKey,
     ptr: Type,
     b: FunctionBuilder<'a>,
+    /// Splatted constants of the current group, made once each: fewer values
+    /// for the register allocator, which is most of the compile time.
+    consts: Vec<(i64, Value)>,
+    /// `255 - v` of the current blend, by `v`.
+    inverses: Vec<(Value, Value)>,
 }
 
 impl<'a> Gen<'a> {
     fn new(key: &FragmentKey, ptr: Type, b: FunctionBuilder<'a>) -> Gen<'a> {
-        Gen { key: *key, ptr, b }
+        Gen {
+            key: *key,
+            ptr,
+            b,
+            consts: Vec::new(),
+            inverses: Vec::new(),
+        }
     }
 
     fn emit(&mut self) {
@@ -206,7 +221,6 @@ impl<'a> Gen<'a> {
             self.b.ins().brif(inside, go, &[], exit, &[]);
             self.b.switch_to_block(go);
         }
-        let uniforms = Uniforms::load(self, u, call);
 
         // for g in 0..groups
         let head = self.b.create_block();
@@ -229,6 +243,11 @@ impl<'a> Gen<'a> {
         self.b.ins().brif(bits, work, &[], next, &[]);
 
         self.b.switch_to_block(work);
+        // Uniforms are loaded in each group rather than once per span: keeping a
+        // dozen splats live across the loop costs more register-allocation time
+        // than the loads (which hit L1) cost at run time.
+        self.consts.clear();
+        let uniforms = Uniforms::load(self, u, call);
         let group = self.group(&sv, gi, bits);
         self.stages(group, &sv, &uniforms, next);
 
@@ -249,8 +268,13 @@ impl<'a> Gen<'a> {
     }
 
     fn splat(&mut self, v: i64) -> Value {
+        if let Some(&(_, c)) = self.consts.iter().find(|(k, _)| *k == v) {
+            return c;
+        }
         let s = self.b.ins().iconst(types::I32, v);
-        self.b.ins().splat(I32X4, s)
+        let c = self.b.ins().splat(I32X4, s);
+        self.consts.push((v, c));
+        c
     }
 
     fn vconst(&mut self, lanes: [u32; 4]) -> Value {
@@ -733,8 +757,13 @@ impl<'a> Gen<'a> {
     }
 
     fn inv(&mut self, v: Value) -> Factor {
+        if let Some(&(_, i)) = self.inverses.iter().find(|(k, _)| *k == v) {
+            return Factor::Value(i);
+        }
         let ff = self.splat(255);
-        Factor::Value(self.b.ins().isub(ff, v))
+        let i = self.b.ins().isub(ff, v);
+        self.inverses.push((v, i));
+        Factor::Value(i)
     }
 
     /// Factor `f` for channel `c`, as `interp::factor`.
@@ -768,6 +797,7 @@ impl<'a> Gen<'a> {
 
     fn blend(&mut self, key: &BlendKey, s: [Value; 4], d: [Value; 4], u: &Uniforms) -> [Value; 4] {
         let k = u.blend_color;
+        self.inverses.clear();
         let mut out = s;
         for c in 0..4 {
             let (sf, df, eq) = if c < 3 {
