@@ -1,7 +1,7 @@
 //! The specialist cache: the most recently used specialists, keyed by [`FragmentKey`].
 
 use crate::key::FragmentKey;
-use crate::specialist::Specialist;
+use crate::specialist::{Specialist, SpecialistError};
 use lru::LruCache;
 use std::num::NonZeroUsize;
 use std::time::{Duration, Instant};
@@ -38,11 +38,21 @@ pub struct SpecialistCache {
     lru: LruCache<FragmentKey, Option<Specialist>>,
     stats: CacheStats,
     compile_ns: Vec<u64>,
+    compiler: Compiler,
 }
+
+/// How a cache makes a specialist from a key.
+pub type Compiler = fn(&FragmentKey) -> Result<Specialist, SpecialistError>;
 
 impl SpecialistCache {
     /// A cache holding at most `capacity` specialists (at least one).
     pub fn new(capacity: usize) -> SpecialistCache {
+        SpecialistCache::with_compiler(capacity, Specialist::compile)
+    }
+
+    /// A cache that makes specialists with `compiler` (tests use it to make
+    /// compiles fail; the normal one is [`Specialist::compile`]).
+    pub fn with_compiler(capacity: usize, compiler: Compiler) -> SpecialistCache {
         let cap = NonZeroUsize::new(capacity).unwrap_or(NonZeroUsize::MIN);
         SpecialistCache {
             lru: LruCache::new(cap),
@@ -51,16 +61,13 @@ impl SpecialistCache {
                 ..CacheStats::default()
             },
             compile_ns: Vec::new(),
+            compiler,
         }
     }
 
     /// A cache of `SOFTGL_SPECIALISTS` specialists, else [`DEFAULT_CAPACITY`].
     pub fn from_env() -> SpecialistCache {
-        let cap = std::env::var("SOFTGL_SPECIALISTS")
-            .ok()
-            .and_then(|v| v.trim().parse().ok())
-            .unwrap_or(DEFAULT_CAPACITY);
-        SpecialistCache::new(cap)
+        SpecialistCache::new(capacity_from(std::env::var("SOFTGL_SPECIALISTS").ok().as_deref()))
     }
 
     /// Changes the capacity; specialists beyond it are evicted, least recent first.
@@ -80,7 +87,7 @@ impl SpecialistCache {
         } else {
             self.stats.misses += 1;
             let start = Instant::now();
-            let compiled = Specialist::compile(key).ok();
+            let compiled = (self.compiler)(key).ok();
             let took = start.elapsed();
             self.stats.total_compile += took;
             let ns = took.as_nanos() as u64;
@@ -109,6 +116,15 @@ impl SpecialistCache {
             ..self.stats.clone()
         }
     }
+}
+
+/// The capacity a `SOFTGL_SPECIALISTS` value asks for: a positive integer, else
+/// [`DEFAULT_CAPACITY`].
+pub fn capacity_from(value: Option<&str>) -> usize {
+    value
+        .and_then(|v| v.trim().parse().ok())
+        .filter(|&n: &usize| n > 0)
+        .unwrap_or(DEFAULT_CAPACITY)
 }
 
 impl std::fmt::Debug for SpecialistCache {
