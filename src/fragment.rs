@@ -20,8 +20,14 @@ pub enum Backend {
 impl Backend {
     /// `SOFTGL_BACKEND=interp|jit`, else the JIT.
     pub fn from_env() -> Backend {
-        match std::env::var("SOFTGL_BACKEND").as_deref() {
-            Ok("interp") | Ok("interpreter") => Backend::Interpreter,
+        Backend::parse(std::env::var("SOFTGL_BACKEND").ok().as_deref())
+    }
+
+    /// The back end a `SOFTGL_BACKEND` value names: `interp` (or `interpreter`),
+    /// else the JIT.
+    pub fn parse(value: Option<&str>) -> Backend {
+        match value.map(str::trim) {
+            Some("interp") | Some("interpreter") => Backend::Interpreter,
             _ => Backend::Jit,
         }
     }
