@@ -215,7 +215,7 @@ fn specialists_are_compiled_once_per_state_and_counted() {
     gl.set_backend(Backend::Jit);
     let tri = [-1.0f32, -1.0, 0.0, 3.0, -1.0, 0.0, -1.0, 3.0, 0.0];
     let arrays = VertexArrays::positions(3, &tri);
-    let mut draw = |gl: &mut Context| gl.draw_arrays(PrimitiveMode::Triangles, 0, 3, &arrays).unwrap();
+    let draw = |gl: &mut Context| gl.draw_arrays(PrimitiveMode::Triangles, 0, 3, &arrays).unwrap();
     draw(&mut gl);
     draw(&mut gl);
     gl.enable(Capability::DepthTest).unwrap();
