@@ -1,11 +1,13 @@
-//! Whole-frame cost through the Rust API (geometry + raster + interpreter):
-//! 20,000 seeded random triangles at 1024x1024, depth-tested, and the same with
-//! scissor + alpha + stencil + depth + blend + color mask — the work behind
-//! DESIGN.md's llvmpipe figures (~75 ms and ~91 ms a frame with 2 threads).
+//! Whole-frame cost through the Rust API (geometry + raster + fragment stages),
+//! on each back end: 20,000 seeded random triangles at 1024x1024, depth-tested,
+//! and the same with scissor + alpha + stencil + depth + blend + color mask —
+//! the work behind DESIGN.md's llvmpipe figures (~75 ms and ~91 ms a frame with
+//! 2 threads).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use softgl::{
-    BlendFactor, Capability, ClearMask, CompareFunc, Context, FramebufferDesc, PrimitiveMode, StencilOp, VertexArrays,
+    Backend, BlendFactor, Capability, ClearMask, CompareFunc, Context, FramebufferDesc, PrimitiveMode, StencilOp,
+    VertexArrays,
 };
 
 const SIZE: u32 = 1024;
@@ -43,12 +45,27 @@ fn bench(c: &mut Criterion) {
     let (pos, col) = scene();
     let mut group = c.benchmark_group("frame_1024_20k_triangles");
     group.sample_size(10);
+    for backend in [Backend::Interpreter, Backend::Jit] {
+        let mut gl = depth_context(backend);
+        group.bench_function(format!("depth/{backend:?}"), |b| b.iter(|| frame(&mut gl, &pos, &col)));
+        let mut gl = all_ops_context(backend);
+        group.bench_function(format!("all_ops/{backend:?}"), |b| {
+            b.iter(|| frame(&mut gl, &pos, &col))
+        });
+    }
+    group.finish();
+}
 
+fn depth_context(backend: Backend) -> Context {
     let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(SIZE, SIZE)).unwrap();
+    gl.set_backend(backend);
     gl.enable(Capability::DepthTest).unwrap();
-    group.bench_function("depth", |b| b.iter(|| frame(&mut gl, &pos, &col)));
+    gl
+}
 
+fn all_ops_context(backend: Backend) -> Context {
     let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(SIZE, SIZE)).unwrap();
+    gl.set_backend(backend);
     gl.enable(Capability::DepthTest).unwrap();
     gl.enable(Capability::ScissorTest).unwrap();
     gl.scissor(8, 8, SIZE as i32 - 16, SIZE as i32 - 16).unwrap();
@@ -62,8 +79,7 @@ fn bench(c: &mut Criterion) {
     gl.blend_func(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha)
         .unwrap();
     gl.color_mask(true, true, true, false).unwrap();
-    group.bench_function("all_ops", |b| b.iter(|| frame(&mut gl, &pos, &col)));
-    group.finish();
+    gl
 }
 
 criterion_group!(benches, bench);
