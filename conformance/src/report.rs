@@ -2,7 +2,7 @@
 //! image for every scene and back end over the scene's tolerance.
 
 use crate::backend::child::External;
-use crate::backend::{self, Backend, Outcome};
+use crate::backend::{self, Backend, Compiles, Outcome};
 use crate::metrics::{diff_image, Metrics};
 use crate::run::{run_scene, SceneResult, ANCHOR, REFERENCE};
 use crate::scenes::{self, Group};
@@ -105,6 +105,17 @@ fn write_diffs(results: &[SceneResult], dir: &Path) -> Result<Vec<String>, Strin
     Ok(written)
 }
 
+fn compiles_text(c: &Compiles) -> String {
+    let mut t = format!("{} in {:.2} ms", c.first, ms(c.first_time));
+    if c.later > 0 {
+        t += &format!(", {} later", c.later);
+    }
+    if c.failures > 0 {
+        t += &format!(", {} failed", c.failures);
+    }
+    t
+}
+
 fn fmt_psnr(p: f64) -> String {
     if p.is_infinite() {
         "inf".into()
@@ -115,7 +126,7 @@ fn fmt_psnr(p: f64) -> String {
 
 fn csv(results: &[SceneResult]) -> String {
     let mut o = String::from(
-        "scene,group,width,height,backend,status,max_diff,pixels_over,share_over,mae,psnr,coverage,first_ms,steady_ms,runs,within\n",
+        "scene,group,width,height,backend,status,max_diff,pixels_over,share_over,mae,psnr,coverage,first_ms,steady_ms,runs,within,jit_compiles_first,jit_compile_ms_first\n",
     );
     for s in results {
         for r in &s.results {
@@ -136,9 +147,13 @@ fn csv(results: &[SceneResult]) -> String {
                 )
             });
             let within = s.within(&r.backend).map_or(String::new(), |w| w.to_string());
+            let jit = match &r.outcome {
+                Outcome::Rendered { compiles: Some(c), .. } => format!("{},{:.3}", c.first, ms(c.first_time)),
+                _ => ",".into(),
+            };
             let _ = writeln!(
                 o,
-                "{},{:?},{},{},{},{status},{m},{first:.3},{steady:.3},{runs},{within}",
+                "{},{:?},{},{},{},{status},{m},{first:.3},{steady:.3},{runs},{within},{jit}",
                 s.scene, s.group, s.size.0, s.size.1, r.backend
             );
         }
@@ -309,6 +324,25 @@ fn markdown(
         let _ = writeln!(o, "| {} | {status} |", a.backend);
     }
     let _ = writeln!(o, "\n## Summary\n\n{}", summary(results, names));
+    let all: Vec<Compiles> = results
+        .iter()
+        .flat_map(|s| &s.results)
+        .filter_map(|r| match &r.outcome {
+            Outcome::Rendered { compiles, .. } => *compiles,
+            _ => None,
+        })
+        .collect();
+    if !all.is_empty() {
+        let _ = writeln!(
+            o,
+            "softgl-jit compiled {} specialists in the first frames, in {:.1} ms in all ({} failed and ran on the \
+             interpreter); later frames compiled {}.\n",
+            all.iter().map(|c| c.first).sum::<u64>(),
+            all.iter().map(|c| ms(c.first_time)).sum::<f64>(),
+            all.iter().map(|c| c.failures).sum::<u64>(),
+            all.iter().map(|c| c.later).sum::<u64>()
+        );
+    }
     let _ = writeln!(o, "![error against run time](error_vs_time.png)\n");
     let off: Vec<String> = results
         .iter()
@@ -362,9 +396,9 @@ fn markdown(
             );
             let _ = writeln!(
                 o,
-                "| back end | max diff | pixels over | MAE | PSNR dB | coverage | first ms | steady ms | verdict |"
+                "| back end | max diff | pixels over | MAE | PSNR dB | coverage | first ms | steady ms | JIT compiles | verdict |"
             );
-            let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|");
+            let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|");
             for r in &s.results {
                 let (first, steady) = match &r.outcome {
                     Outcome::Rendered { timing, .. } => {
@@ -391,9 +425,13 @@ fn markdown(
                         v
                     }
                 };
+                let compiles = match &r.outcome {
+                    Outcome::Rendered { compiles: Some(c), .. } => compiles_text(c),
+                    _ => "-".into(),
+                };
                 let _ = writeln!(
                     o,
-                    "| {} | {} | {} | {} | {} | {} | {first} | {steady} | {verdict} |",
+                    "| {} | {} | {} | {} | {} | {} | {first} | {steady} | {compiles} | {verdict} |",
                     r.backend,
                     m(&|m| m.max_diff.to_string()),
                     m(&|m| format!("{} ({:.3}%)", m.over, m.share_over * 100.0)),

@@ -173,6 +173,7 @@ impl Backend for External {
                     Some(image) => Outcome::Rendered {
                         image,
                         timing: r.timing,
+                        compiles: None,
                     },
                     None => Outcome::Failed("child image has the wrong size".into()),
                 },
@@ -204,7 +205,7 @@ struct ChildResult {
 impl ChildResult {
     fn from_outcome(o: Outcome, renderer: String) -> ChildResult {
         let (status, message, image, timing) = match o {
-            Outcome::Rendered { image, timing } => (Status::Ok, String::new(), Some(image), timing),
+            Outcome::Rendered { image, timing, .. } => (Status::Ok, String::new(), Some(image), timing),
             Outcome::Unsupported(m) => (Status::Unsupported, m, None, zero_timing()),
             Outcome::Failed(m) => (Status::Failed, m, None, zero_timing()),
         };

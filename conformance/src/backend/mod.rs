@@ -26,12 +26,27 @@ pub struct Timing {
     pub runs: usize,
 }
 
+/// What softgl's JIT compiled for a scene (its specialist cache counters).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Compiles {
+    /// Specialists compiled in the first frame.
+    pub first: u64,
+    /// Specialists compiled in all later frames (0 when the cache holds them all).
+    pub later: u64,
+    /// Keys that failed to compile and ran on the interpreter.
+    pub failures: u64,
+    /// Time spent compiling in the first frame.
+    pub first_time: Duration,
+}
+
 /// What a back end made of a scene.
 #[derive(Clone, Debug)]
 pub enum Outcome {
     Rendered {
         image: RgbaImage,
         timing: Timing,
+        /// softgl's JIT only.
+        compiles: Option<Compiles>,
     },
     /// The scene uses something this back end cannot express.
     Unsupported(String),

@@ -323,6 +323,7 @@ pub fn render(mesa: &OsMesa, rec: &Recording, runs: usize) -> (Outcome, String) 
         Outcome::Rendered {
             image,
             timing: Timing { first, steady, runs },
+            compiles: None,
         },
         renderer,
     )

@@ -1,6 +1,6 @@
 //! softgl itself, in process, through its public API.
 
-use super::{median, Backend, Outcome, Timing};
+use super::{median, Backend, Compiles, Outcome, Timing};
 use crate::call::Call;
 use crate::scenes::Scene;
 use softgl::{Context, FramebufferDesc, GlResult, VertexArrays};
@@ -48,11 +48,20 @@ impl Backend for Softgl {
             (image, t.elapsed())
         };
         let (image, first) = frame(&mut gl);
+        let after_first = gl.specialist_stats();
         let mut times: Vec<_> = (0..runs).map(|_| frame(&mut gl).1).collect();
         let steady = if runs == 0 { first } else { median(&mut times) };
+        let end = gl.specialist_stats();
+        let compiles = (self.backend == softgl::Backend::Jit).then_some(Compiles {
+            first: after_first.misses,
+            later: end.misses - after_first.misses,
+            failures: end.failures,
+            first_time: after_first.total_compile,
+        });
         Outcome::Rendered {
             image,
             timing: Timing { first, steady, runs },
+            compiles,
         }
     }
 }

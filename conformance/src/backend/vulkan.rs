@@ -1239,6 +1239,7 @@ pub fn render(rec: &Recording, runs: usize) -> (Outcome, String) {
         Outcome::Rendered {
             image,
             timing: Timing { first, steady, runs },
+            compiles: None,
         },
         name,
     )
