@@ -6,7 +6,7 @@ use softgl_conformance::{backend, report, scenes};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: softgl-conformance report -o DIR [--runs N] [--small] [--scenes a,b,...]
+const USAGE: &str = "usage: softgl-conformance report -o DIR [--runs N] [--small] [--no-warm] [--scenes a,b,...]
        softgl-conformance list";
 
 fn main() -> ExitCode {
@@ -37,6 +37,7 @@ fn report_main(args: &[String]) -> Result<(), String> {
         runs: 5,
         full: true,
         only: None,
+        warm: true,
     };
     let mut it = args.iter();
     while let Some(a) = it.next() {
@@ -44,6 +45,7 @@ fn report_main(args: &[String]) -> Result<(), String> {
             "-o" | "--out" => opts.out = it.next().ok_or(USAGE)?.into(),
             "--runs" => opts.runs = it.next().and_then(|r| r.parse().ok()).ok_or("--runs takes a number")?,
             "--small" => opts.full = false,
+            "--no-warm" => opts.warm = false,
             "--scenes" => opts.only = Some(it.next().ok_or(USAGE)?.split(',').map(String::from).collect()),
             _ => return Err(format!("unknown argument {a}\n{USAGE}")),
         }

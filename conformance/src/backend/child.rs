@@ -52,6 +52,10 @@ impl Reference {
 pub struct External {
     reference: Reference,
     exe: PathBuf,
+    name: String,
+    /// Mesa's on-disk shader cache directory: each scene runs twice, and the
+    /// second (warm) run is reported. `None`: the cache is disabled (cold).
+    warm_cache: Option<PathBuf>,
 }
 
 static TEMP: AtomicUsize = AtomicUsize::new(0);
@@ -61,6 +65,18 @@ impl External {
         External {
             reference,
             exe: exe.to_path_buf(),
+            name: reference.name().to_string(),
+            warm_cache: None,
+        }
+    }
+
+    /// The reference with Mesa's shader cache on, in `cache` (named
+    /// "<reference>-warm"): its first frames show what a warm cache hides.
+    pub fn warm(reference: Reference, exe: &Path, cache: &Path) -> External {
+        External {
+            name: format!("{}-warm", reference.name()),
+            warm_cache: Some(cache.to_path_buf()),
+            ..External::new(reference, exe)
         }
     }
 
@@ -100,9 +116,14 @@ impl External {
             .arg(self.reference.name())
             .arg("--out")
             .arg(&out)
-            .args(extra)
+            .args(extra);
+        match &self.warm_cache {
             // Cold first frames: no on-disk shader cache.
-            .env("MESA_SHADER_CACHE_DISABLE", "true");
+            None => cmd.env("MESA_SHADER_CACHE_DISABLE", "true"),
+            Some(dir) => cmd
+                .env_remove("MESA_SHADER_CACHE_DISABLE")
+                .env("MESA_SHADER_CACHE_DIR", dir),
+        };
         match self.reference {
             Reference::Llvmpipe => cmd.env("GALLIUM_DRIVER", "llvmpipe"),
             Reference::Softpipe => cmd.env("GALLIUM_DRIVER", "softpipe"),
@@ -148,7 +169,11 @@ impl External {
 
 impl Backend for External {
     fn name(&self) -> &str {
-        self.reference.name()
+        &self.name
+    }
+
+    fn probe(&self) -> Result<String, String> {
+        External::probe(self)
     }
 
     fn render(&mut self, scene: &Scene, full: bool, runs: usize) -> Outcome {
@@ -161,6 +186,10 @@ impl Backend for External {
             "--runs",
             &runs_s,
         ];
+        if self.warm_cache.is_some() {
+            // Fills the cache; the run below is the warm one.
+            let _ = self.run(&args);
+        }
         match self.run(&args) {
             Err(e) => Outcome::Failed(e),
             Ok(r) => match r.status {

@@ -61,6 +61,8 @@ pub trait Backend {
     /// Renders `scene` at its report (`full`) or test size: one first frame,
     /// then `runs` more for the steady-state median.
     fn render(&mut self, scene: &Scene, full: bool, runs: usize) -> Outcome;
+    /// Whether the back end is there: what it calls itself, or why it is missing.
+    fn probe(&self) -> Result<String, String>;
 }
 
 /// The median of `t` (empty: zero).

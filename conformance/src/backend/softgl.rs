@@ -30,6 +30,10 @@ impl Backend for Softgl {
         &self.name
     }
 
+    fn probe(&self) -> Result<String, String> {
+        Ok(format!("softgl {} (in process)", env!("CARGO_PKG_VERSION")))
+    }
+
     fn render(&mut self, scene: &Scene, full: bool, runs: usize) -> Outcome {
         let rec = scene.record(full);
         let mut gl = match Context::new(FramebufferDesc::rgba8_d24s8(rec.width, rec.height)) {
