@@ -356,3 +356,37 @@ fn run_reference(reference: Reference, scene: &Scene, full: bool, runs: usize) -
         Reference::Lavapipe => super::vulkan::render(&rec, runs),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn child_results_survive_the_file() {
+        let image = image::RgbaImage::from_fn(3, 2, |x, y| image::Rgba([x as u8, y as u8, 7, 255]));
+        let timing = Timing {
+            first: Duration::from_micros(1500),
+            steady: Duration::from_nanos(999),
+            runs: 5,
+        };
+        let sent = ChildResult::from_outcome(
+            Outcome::Rendered {
+                image: image.clone(),
+                timing,
+                compiles: None,
+            },
+            "llvmpipe (LLVM 15.0.6, 256 bits)".into(),
+        );
+        let got = ChildResult::decode(&sent.encode()).expect("decodes");
+        assert_eq!(got.status, Status::Ok);
+        assert_eq!(got.renderer, "llvmpipe (LLVM 15.0.6, 256 bits)");
+        assert_eq!((got.width, got.height), (3, 2));
+        assert_eq!(got.timing, timing);
+        assert_eq!(got.pixels, image.into_raw());
+
+        let sent = ChildResult::from_outcome(Outcome::Unsupported("lines".into()), String::new());
+        let got = ChildResult::decode(&sent.encode()).expect("decodes");
+        assert_eq!((got.status, got.message.as_str()), (Status::Unsupported, "lines"));
+        assert!(ChildResult::decode(&[0, 9, 0]).is_none(), "a truncated file is refused");
+    }
+}

@@ -1244,3 +1244,64 @@ pub fn render(rec: &Recording, runs: usize) -> (Outcome, String) {
         name,
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::call::Rec;
+
+    fn recording(build: impl Fn(&mut Rec)) -> Recording {
+        let mut r = Rec::default();
+        build(&mut r);
+        Recording {
+            width: 8,
+            height: 8,
+            calls: r.calls,
+        }
+    }
+
+    #[test]
+    fn lines_points_and_masked_clears_are_not_expressed() {
+        for mode in [PrimitiveMode::Points, PrimitiveMode::Lines, PrimitiveMode::LineLoop] {
+            let rec = recording(|r| {
+                r.begin(mode).vertex(1.0, 1.0, 0.0).vertex(5.0, 5.0, 0.0).end();
+            });
+            assert!(plan(&rec).is_err(), "{mode:?}");
+        }
+        let rec = recording(|r| {
+            r.call(Call::ColorMask([true, false, true, true]))
+                .clear(softgl::ClearMask::COLOR);
+        });
+        assert!(plan(&rec).is_err());
+    }
+
+    #[test]
+    fn quads_split_as_llvmpipe_splits_them() {
+        let quad = |r: &mut Rec, x: f32| {
+            for (dx, dy) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+                r.vertex(x + dx, dy, 0.0);
+            }
+        };
+        let xs = |n: usize| {
+            let rec = recording(|r| {
+                r.begin(PrimitiveMode::Quads);
+                for q in 0..n {
+                    quad(r, 10.0 * q as f32);
+                }
+                r.end();
+            });
+            let p = plan(&rec).expect("expressible");
+            p.vertices.iter().map(|v| (v.pos[0], v.pos[1])).collect::<Vec<_>>()
+        };
+        // A lone quad: (v0, v1, v2), (v0, v2, v3).
+        assert_eq!(
+            xs(1),
+            [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+        );
+        // Batched: (v0, v1, v3), (v1, v2, v3).
+        assert_eq!(
+            &xs(2)[..6],
+            [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+        );
+    }
+}
