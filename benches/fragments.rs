@@ -12,9 +12,11 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
 use softgl_jit::{
-    BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, DepthTarget, FragmentKey,
-    FragmentSpan, FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target, SPAN_MAX,
+    BlendFactor, BlendKey, ColorFormat, CompareFunc, DepthFormat, DepthKey, DepthTarget, FragmentKey, FragmentSpan,
+    FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target, SPAN_MAX,
 };
+
+mod common;
 
 /// Width and height of the target.
 const SIZE: u32 = 256;
@@ -217,23 +219,7 @@ fn scenes() -> Vec<Scene> {
         },
         Scene {
             name: "all_ops",
-            key: FragmentKey {
-                scissor: true,
-                alpha_test: Some(CompareFunc::Greater),
-                stencil: Some(StencilKey {
-                    func: CompareFunc::Equal,
-                    fail: StencilOp::Keep,
-                    zfail: StencilOp::Keep,
-                    zpass: StencilOp::Incr,
-                }),
-                depth: Some(less),
-                blend: Some(over),
-                color_mask: ColorMask {
-                    a: false,
-                    ..ColorMask::ALL
-                },
-                ..FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), true)
-            },
+            key: common::all_ops_key(),
             uniforms: FragmentUniforms {
                 scissor: [8, 8, SIZE as i32 - 8, SIZE as i32 - 8],
                 alpha_ref: 8,

@@ -10,28 +10,14 @@ use softgl::{
     VertexArrays,
 };
 
+mod common;
+
 const SIZE: u32 = 1024;
 const TRIANGLES: usize = 20_000;
 
-/// Positions (xyz) and colors (rgba) of seeded random triangles in NDC, each
-/// about 30 pixels across.
+/// Seeded random triangles in NDC, each about 30 pixels across.
 fn scene() -> (Vec<f32>, Vec<f32>) {
-    let mut seed = 0x9e37_79b9_u32;
-    let mut next = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 17;
-        seed ^= seed << 5;
-        seed as f32 / u32::MAX as f32
-    };
-    let (mut pos, mut col) = (Vec::new(), Vec::new());
-    for _ in 0..TRIANGLES {
-        let (cx, cy, z) = (next() * 2.0 - 1.0, next() * 2.0 - 1.0, next() * 2.0 - 1.0);
-        for _ in 0..3 {
-            pos.extend([cx + (next() - 0.5) * 0.06, cy + (next() - 0.5) * 0.06, z]);
-            col.extend([next(), next(), next(), 0.5 + next() * 0.5]);
-        }
-    }
-    (pos, col)
+    common::random_triangles(TRIANGLES, 0x9e37_79b9, 0.06, 0.5)
 }
 
 fn frame(gl: &mut Context, pos: &[f32], col: &[f32]) {

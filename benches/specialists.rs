@@ -6,54 +6,23 @@
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
 use softgl::{
-    Backend, BlendFactor, Capability, ClearMask, CompareFunc, Context, FramebufferDesc, LogicOp, PrimitiveMode,
-    VertexArrays,
+    Backend, Capability, ClearMask, CompareFunc, Context, FramebufferDesc, LogicOp, PrimitiveMode, VertexArrays,
 };
-use softgl_jit::{
-    BlendKey, ColorFormat, ColorMask, DepthFormat, DepthKey, FragmentKey, Specialist, SpecialistCache, StencilKey,
-    StencilOp,
-};
+use softgl_jit::{ColorFormat, FragmentKey, Specialist, SpecialistCache};
 use std::hint::black_box;
 use std::time::Duration;
+
+mod common;
 
 const SIZE: u32 = 1024;
 const STATES: usize = 256;
 const TRIANGLES_PER_STATE: usize = 50;
 
-fn all_ops_key() -> FragmentKey {
-    FragmentKey {
-        scissor: true,
-        alpha_test: Some(CompareFunc::Greater),
-        stencil: Some(StencilKey {
-            func: CompareFunc::Equal,
-            fail: StencilOp::Keep,
-            zfail: StencilOp::Keep,
-            zpass: StencilOp::Incr,
-        }),
-        depth: Some(DepthKey {
-            func: CompareFunc::Less,
-            write: true,
-        }),
-        blend: Some(BlendKey {
-            src_rgb: BlendFactor::SrcAlpha,
-            dst_rgb: BlendFactor::OneMinusSrcAlpha,
-            src_alpha: BlendFactor::SrcAlpha,
-            dst_alpha: BlendFactor::OneMinusSrcAlpha,
-            ..BlendKey::DEFAULT
-        }),
-        color_mask: ColorMask {
-            a: false,
-            ..ColorMask::ALL
-        },
-        ..FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), true)
-    }
-}
-
 fn compile(c: &mut Criterion) {
     let mut group = c.benchmark_group("compile");
     for (name, key) in [
         ("minimal", FragmentKey::new(ColorFormat::Rgba8, None, false)),
-        ("all_ops", all_ops_key()),
+        ("all_ops", common::all_ops_key()),
     ] {
         group.bench_function(name, |b| {
             b.iter(|| black_box(Specialist::compile(&key).expect("compiles")))
@@ -63,7 +32,7 @@ fn compile(c: &mut Criterion) {
 }
 
 fn cache_hit(c: &mut Criterion) {
-    let key = all_ops_key();
+    let key = common::all_ops_key();
     let mut cache = SpecialistCache::new(64);
     cache.get(&key).expect("compiles");
     c.bench_function("cache_hit/lookup", |b| {
@@ -85,22 +54,7 @@ fn cache_hit(c: &mut Criterion) {
 
 /// Seeded small triangles (about 12 pixels across) with colors.
 fn triangles() -> (Vec<f32>, Vec<f32>) {
-    let mut seed = 0x1234_5678_u32;
-    let mut next = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 17;
-        seed ^= seed << 5;
-        seed as f32 / u32::MAX as f32
-    };
-    let (mut pos, mut col) = (Vec::new(), Vec::new());
-    for _ in 0..STATES * TRIANGLES_PER_STATE {
-        let (cx, cy, z) = (next() * 2.0 - 1.0, next() * 2.0 - 1.0, next() * 2.0 - 1.0);
-        for _ in 0..3 {
-            pos.extend([cx + (next() - 0.5) * 0.025, cy + (next() - 0.5) * 0.025, z]);
-            col.extend([next(), next(), next(), next()]);
-        }
-    }
-    (pos, col)
+    common::random_triangles(STATES * TRIANGLES_PER_STATE, 0x1234_5678, 0.025, 0.0)
 }
 
 fn thrash_context(backend: Backend, capacity: usize) -> Context {
