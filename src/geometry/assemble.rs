@@ -1,7 +1,7 @@
 //! Primitive assembly: the ten GL modes as points, lines and triangles, with
 //! the provoking vertex and, for triangles, which edges are polygon boundary
 //! edges (for polygon mode `Line`/`Point`). Quads and polygons split the way
-//! llvmpipe splits them (`docs/llvmpipe-facts.md` §3).
+//! llvmpipe splits them (`docs/llvmpipe-facts.md` §3 and §12).
 
 use crate::state::PrimitiveMode;
 
@@ -23,9 +23,21 @@ pub enum Primitive {
     },
 }
 
+/// How llvmpipe splits `GL_QUADS`: it depends on the path the draw takes
+/// through Mesa's draw module (measured, `docs/llvmpipe-facts.md` §12).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum QuadSplit {
+    /// `(v0, v1, v2), (v0, v2, v3)`: draws with every vertex inside the view
+    /// volume and both polygon modes `Fill`.
+    Direct,
+    /// `(v0, v1, v3), (v1, v2, v3)`: draws that need clipping or draw a face
+    /// as lines or points.
+    Pipeline,
+}
+
 /// Calls `f` with each primitive `mode` makes of `n` vertices, in order.
 /// Incomplete trailing primitives are ignored, as GL requires.
-pub fn assemble(mode: PrimitiveMode, n: usize, mut f: impl FnMut(Primitive)) {
+pub fn assemble(mode: PrimitiveMode, n: usize, quads: QuadSplit, mut f: impl FnMut(Primitive)) {
     let tri = |v: [usize; 3], provoking: usize, edges: [bool; 3]| Primitive::Triangle { v, provoking, edges };
     match mode {
         PrimitiveMode::Points => (0..n).for_each(|i| f(Primitive::Point(i))),
@@ -77,8 +89,16 @@ pub fn assemble(mode: PrimitiveMode, n: usize, mut f: impl FnMut(Primitive)) {
         PrimitiveMode::Quads => {
             for q in (0..n.saturating_sub(3)).step_by(4) {
                 let [v0, v1, v2, v3] = [q, q + 1, q + 2, q + 3];
-                f(tri([v0, v1, v2], v3, [true, true, false]));
-                f(tri([v0, v2, v3], v3, [false, true, true]));
+                match quads {
+                    QuadSplit::Direct => {
+                        f(tri([v0, v1, v2], v3, [true, true, false]));
+                        f(tri([v0, v2, v3], v3, [false, true, true]));
+                    }
+                    QuadSplit::Pipeline => {
+                        f(tri([v0, v1, v3], v3, [true, false, true]));
+                        f(tri([v1, v2, v3], v3, [true, true, false]));
+                    }
+                }
             }
         }
         PrimitiveMode::QuadStrip => {

@@ -9,7 +9,7 @@ pub mod clip;
 use crate::framebuffer::{Framebuffer, Rect};
 use crate::raster::{self, RasterParams, RasterVertex, SpanSink};
 use crate::state::{FrontFace, PolygonMode, RasterState, ShadeModel};
-use assemble::{assemble, Primitive};
+use assemble::{assemble, Primitive, QuadSplit};
 use batch::VertexBatch;
 use clip::{clip_polygon, clip_segment, outcode, ClipVertex, PolyVertex, GUARD_LEVELS};
 use glam::{Mat4, Vec4};
@@ -103,8 +103,13 @@ impl<'s> Geometry<'s> {
         if self.params.bounds.is_empty() {
             return;
         }
+        let quads = if mode == PrimitiveMode::Quads && self.quads_take_the_pipeline(mvp, count, fetch) {
+            QuadSplit::Pipeline
+        } else {
+            QuadSplit::Direct
+        };
         let mut batch = VertexBatch::new(*mvp, count, fetch);
-        assemble(mode, count, |prim| match prim {
+        assemble(mode, count, quads, |prim| match prim {
             Primitive::Point(i) => self.point(&batch.get(i), sink),
             Primitive::Line { a, b, provoking } => {
                 let (va, vb, vp) = (batch.get(a), batch.get(b), batch.get(provoking));
@@ -116,6 +121,16 @@ impl<'s> Geometry<'s> {
                 self.polygon(poly, flat, sink)
             }
         });
+    }
+
+    /// Whether llvmpipe would send this draw through its draw pipeline (and
+    /// split quads the other way): a face drawn as lines or points, or a vertex
+    /// outside the view volume.
+    fn quads_take_the_pipeline(&self, mvp: &Mat4, count: usize, fetch: &dyn Fn(usize) -> InVertex) -> bool {
+        let unfilled = [true, false]
+            .iter()
+            .any(|&front| self.state.polygon_mode(front) != PolygonMode::Fill);
+        unfilled || (0..count).any(|i| outcode((*mvp * fetch(i).pos).as_dvec4(), 1.0) != 0)
     }
 
     fn flat_color(&self, v: &ClipVertex) -> Option<[f32; 4]> {
