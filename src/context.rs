@@ -190,6 +190,35 @@ impl Context {
         &self.fb
     }
 
+    /// The framebuffer, for callers that lend or hand out its memory (the C ABI).
+    pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
+        &mut self.fb
+    }
+
+    /// Draws into `fb` from now on and returns the previous framebuffer. The
+    /// state (viewport, scissor box, …) is kept, as when a GL context is made
+    /// current on another drawable.
+    pub fn replace_framebuffer(&mut self, fb: Framebuffer) -> Framebuffer {
+        std::mem::replace(&mut self.fb, fb)
+    }
+
+    /// Records `error` GL-style (kept unless one is already pending), for
+    /// calls made through a layer above this API (the C ABI's unimplemented
+    /// entry points, its argument checks).
+    pub fn record_error(&mut self, error: GlError) {
+        self.error.get_or_insert(error);
+    }
+
+    /// Whether a `begin` awaits its `end`.
+    pub fn inside_begin(&self) -> bool {
+        self.begun.is_some()
+    }
+
+    /// The matrix mode `glMatrixMode` set.
+    pub fn current_matrix_mode(&self) -> MatrixMode {
+        self.matrix_mode
+    }
+
     /// The rasterization and fragment state.
     pub fn state(&self) -> &RasterState {
         &self.state
