@@ -1,7 +1,9 @@
 //! Gives the library the SONAME of Mesa's (`libOSMesa.so.8`) and places
 //! `libOSMesa.so.8` and `libOSMesa.so` in `<target>/<profile>/osmesa/`, as links
-//! to the `libOSMesa.so` cargo writes into `<target>/<profile>/`. That directory
-//! is what `LD_LIBRARY_PATH` names for programs built against Mesa's OSMesa.
+//! to the `libOSMesa.so` cargo writes into `<target>/<profile>/deps/` (every
+//! build writes that one; `cargo test` does not copy it up to `<profile>/`).
+//! That directory is what `LD_LIBRARY_PATH` names for programs built against
+//! Mesa's OSMesa.
 
 use std::path::{Path, PathBuf};
 
@@ -31,7 +33,7 @@ fn link_dir(dir: &Path) -> std::io::Result<()> {
         if std::fs::symlink_metadata(&link).is_ok() {
             std::fs::remove_file(&link)?;
         }
-        std::os::unix::fs::symlink("../libOSMesa.so", &link)?;
+        std::os::unix::fs::symlink("../deps/libOSMesa.so", &link)?;
     }
     Ok(())
 }

@@ -3,6 +3,7 @@
 use crate::consts::*;
 use crate::convert::UserFormat;
 use crate::state::*;
+use softgl::framebuffer::DepthBuffer;
 use softgl::{Context, Framebuffer, GlError};
 use std::ffi::{c_char, c_void, CStr};
 
@@ -266,12 +267,13 @@ unsafe fn put<T>(p: *mut T, v: T) {
     }
 }
 
-/// `OSMesaGetDepthBuffer`: 4 bytes per value, Z24 in the low bits and, when
-/// the context has a stencil buffer, the stencil in the high byte (Mesa's
-/// Z24S8), rows bottom-up whatever `OSMESA_Y_UP` says. Without stencil the
+/// `OSMesaGetDepthBuffer`, laid out as Mesa 22's llvmpipe OSMesa does: for
+/// 1-16 bits without stencil, 2 bytes per value (Z16); otherwise 4 bytes,
+/// Z24 in the low bits and, when the context has a stencil buffer, the
+/// stencil in the high byte (Z24S8). Rows bottom-up whatever `OSMESA_Y_UP` says.
+/// Without a depth buffer: `GL_FALSE`, the outputs untouched (as Mesa 22). Without stencil the
 /// pointer is softgl's live depth buffer; with stencil it is a copy made at
-/// this call (and refreshed by `glFlush`/`glFinish`). `GL_FALSE` and zeros
-/// when there is no depth buffer.
+/// this call (and refreshed by `glFlush`/`glFinish`).
 ///
 /// # Safety
 /// Each output pointer is `NULL` or writable.
@@ -288,7 +290,9 @@ pub unsafe extern "C" fn OSMesaGetDepthBuffer(
         let mut os = lock(&shared);
         depth_pointer(&mut os)
     });
-    let (w, h, bpv, p) = r.unwrap_or((0, 0, 0, std::ptr::null_mut()));
+    let Some((w, h, bpv, p)) = r else {
+        return GL_FALSE;
+    };
     // SAFETY: the caller's output pointers are NULL or writable.
     unsafe {
         put(width, w);
@@ -296,11 +300,7 @@ pub unsafe extern "C" fn OSMesaGetDepthBuffer(
         put(bytes_per_value, bpv);
         put(buffer, p);
     }
-    if r.is_some() {
-        GL_TRUE
-    } else {
-        GL_FALSE
-    }
+    GL_TRUE
 }
 
 /// Width, height, bytes per value and pointer of `os`'s depth buffer.
@@ -310,15 +310,15 @@ pub(crate) fn depth_pointer(os: &mut OsContext) -> Option<(i32, i32, i32, *mut c
     let OsContext { gl, depth_view, .. } = os;
     let fb = gl.as_mut()?.framebuffer_mut();
     let (w, h) = (fb.width() as i32, fb.height() as i32);
-    let ptr = if has_stencil {
-        depth_view.as_mut_ptr()
+    let (bytes, ptr) = if has_stencil {
+        (4, depth_view.as_mut_ptr().cast::<c_void>())
     } else {
         match fb.depth_buffer_mut()? {
-            softgl::framebuffer::DepthBuffer::D24(v) | softgl::framebuffer::DepthBuffer::D32(v) => v.as_mut_ptr(),
-            softgl::framebuffer::DepthBuffer::D16(v) => v.as_mut_ptr().cast(),
+            DepthBuffer::D24(v) | DepthBuffer::D32(v) => (4, v.as_mut_ptr().cast()),
+            DepthBuffer::D16(v) => (2, v.as_mut_ptr().cast()),
         }
     };
-    Some((w, h, 4, ptr.cast()))
+    Some((w, h, bytes, ptr))
 }
 
 /// Rebuilds the Z24S8 copy of depth and stencil, for contexts with both.
@@ -331,7 +331,7 @@ pub(crate) fn refresh_depth_view(os: &mut OsContext) {
         depth_view.clear();
         return;
     };
-    let softgl::framebuffer::DepthBuffer::D24(d) = depth else {
+    let DepthBuffer::D24(d) = depth else {
         return;
     };
     depth_view.clear();

@@ -110,7 +110,7 @@ impl UserFormat {
 
 /// Writes `fb`'s colours into `dst` in `format`: rows `stride` bytes apart,
 /// the top row first when `top_down`. Bytes become `v * 257` in 16 bits and
-/// `v / 255` in floats.
+/// `v * (1/255)` in floats (Mesa's unorm8 to float, bit for bit).
 pub fn store(fb: &Framebuffer, format: UserFormat, dst: &mut [u8], stride: usize, top_down: bool) {
     let UserFormat::Channels(order, channel) = format else {
         return;
@@ -128,7 +128,7 @@ pub fn store(fb: &Framebuffer, format: UserFormat, dst: &mut [u8], stride: usize
                 match channel {
                     Channel::U8 => out[0] = v,
                     Channel::U16 => out.copy_from_slice(&(u16::from(v) * 257).to_ne_bytes()),
-                    Channel::F32 => out.copy_from_slice(&(f32::from(v) / 255.0).to_ne_bytes()),
+                    Channel::F32 => out.copy_from_slice(&(f32::from(v) * (1.0 / 255.0)).to_ne_bytes()),
                 }
             }
         }

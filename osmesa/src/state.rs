@@ -181,25 +181,25 @@ impl OsContext {
         }
     }
 
-    /// The framebuffer this context needs for `binding`: Z24 for any depth
-    /// request (Mesa's llvmpipe stores Z24 in 32 bits even for 16 or 32).
-    pub fn desc_for(&self, binding: &Binding) -> FramebufferDesc {
-        FramebufferDesc {
-            width: binding.width as u32,
-            height: binding.height as u32,
-            color: binding.format.render_format(),
-            depth_bits: if self.depth_bits > 0 { 24 } else { 0 },
-            stencil_bits: if self.stencil_bits > 0 { 8 } else { 0 },
-        }
-    }
-
-    /// `GL_DEPTH_BITS` as Mesa reports it: 16 when 16 (or fewer) were asked
-    /// for without stencil, else 24.
+    /// Depth bits of the buffer Mesa's llvmpipe OSMesa makes: Z16 (2 bytes a
+    /// value) for 1 to 16 bits without stencil, else Z24 in 32 bits (Z24S8
+    /// with stencil), also for 32 (measured: `GL_DEPTH_BITS` says 16 or 24).
     pub fn reported_depth_bits(&self) -> i32 {
         match (self.depth_bits, self.stencil_bits) {
             (0, _) => 0,
             (d, 0) if d <= 16 => 16,
             _ => 24,
+        }
+    }
+
+    /// The framebuffer this context needs for `binding`.
+    pub fn desc_for(&self, binding: &Binding) -> FramebufferDesc {
+        FramebufferDesc {
+            width: binding.width as u32,
+            height: binding.height as u32,
+            color: binding.format.render_format(),
+            depth_bits: self.reported_depth_bits() as u32,
+            stencil_bits: if self.stencil_bits > 0 { 8 } else { 0 },
         }
     }
 

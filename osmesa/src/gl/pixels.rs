@@ -83,7 +83,8 @@ fn read_pixel(gl: &Context, src: Source, x: i64, y: i64, out: &mut Vec<f64>) -> 
     out.clear();
     match src {
         Source::Color(channels) => {
-            let p = fb.pixel(x, y)?.map(|c| f64::from(c) / 255.0);
+            // `c * (1/255)` in f32: Mesa's unorm8-to-float, bit for bit.
+            let p = fb.pixel(x, y)?.map(|c| f64::from(f32::from(c) * (1.0 / 255.0)));
             out.extend(
                 channels
                     .iter()
@@ -93,10 +94,27 @@ fn read_pixel(gl: &Context, src: Source, x: i64, y: i64, out: &mut Vec<f64>) -> 
         Source::Depth => {
             let max = fb.depth_format()?.max_value();
             out.push(f64::from(fb.depth_at(x, y)?) / f64::from(max));
+            // The stored value too, for the integer types' bit replication.
+            out.push(f64::from(fb.depth_at(x, y)?));
         }
         Source::Stencil => out.push(f64::from(fb.stencil_at(x, y)?)),
     }
     Some(())
+}
+
+/// `v`, a `from`-bit unsigned value, widened or narrowed to `to` bits by bit
+/// replication (Mesa's Z24 to `GL_UNSIGNED_INT`: `z << 8 | z >> 16`).
+fn replicate(v: u32, from: u32, to: u32) -> u32 {
+    if from >= to {
+        return v >> (from - to);
+    }
+    let mut out = 0u64;
+    let mut filled = 0;
+    while filled < to {
+        out = (out << from) | u64::from(v);
+        filled += from;
+    }
+    (out >> (filled - to)) as u32
 }
 
 /// Stores component `v` as `ty` at `dst` (stencil values are stored as integers).
@@ -203,6 +221,7 @@ unsafe fn read_pixels(
     // which is exactly `len` bytes from `pixels`.
     let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
     let stencil = matches!(src, Source::Stencil);
+    let depth_bits = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
     let mut vals = Vec::with_capacity(4);
     for j in 0..h as usize {
         for i in 0..w as usize {
@@ -210,7 +229,12 @@ unsafe fn read_pixels(
                 continue;
             }
             let at = start + j * stride + i * comps * size;
-            for (k, &v) in vals.iter().enumerate() {
+            if let (Source::Depth, GL_UNSIGNED_INT | GL_UNSIGNED_SHORT) = (src, ty) {
+                let raw = replicate(vals[1] as u32, depth_bits, 8 * size as u32);
+                put(&mut dst[at..], ty, f64::from(raw), true, pack.swap_bytes);
+                continue;
+            }
+            for (k, &v) in vals.iter().take(comps).enumerate() {
                 put(&mut dst[at + k * size..], ty, v, stencil, pack.swap_bytes);
             }
         }

@@ -61,8 +61,16 @@ exports! {
             }
         })
     }
+    /// Between `glBegin` and `glEnd` it is itself `GL_INVALID_OPERATION` and
+    /// returns `GL_NO_ERROR`, leaving the pending error for later, as in Mesa.
     [] fn glGetError() -> GLenum {
-        with_gl(GL_NO_ERROR, |_, gl| gl.get_error().map_or(GL_NO_ERROR, GlError::code))
+        with_gl(GL_NO_ERROR, |_, gl| {
+            if gl.inside_begin() {
+                gl.record_error(GlError::InvalidOperation);
+                return GL_NO_ERROR;
+            }
+            gl.get_error().map_or(GL_NO_ERROR, GlError::code)
+        })
     }
     [] fn glFlush() {
         with_os((), flush)
