@@ -101,7 +101,7 @@ pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
 /// `OSMesaMakeCurrent`: binds `buffer` (`width` × `height` pixels of `format`
 /// and `type`) to `ctx` and makes it current on this thread. `GL_FALSE` for a
 /// null or unknown context, a null buffer, a size outside `1..=16384` or a
-/// format and type Mesa refuses.
+/// format and type Mesa refuses; the current context is then unchanged.
 ///
 /// # Safety
 /// `buffer` must hold `width` × `height` pixels (rows of `OSMESA_ROW_LENGTH`
@@ -133,17 +133,18 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
             height,
             format,
         };
+        if bind(&mut os, binding).is_err() {
+            return GL_FALSE;
+        }
+        drop(os);
         // Stop the previous context: its caller's buffer gets its last frame.
+        // (Its lock is taken after this one's is released: no lock-order cycle.)
         let previous = CURRENT.with(|cur| cur.borrow_mut().take());
         if let Some((h, prev)) = previous {
             if h != handle(ctx) {
                 lock(&prev).flush();
             }
         }
-        if bind(&mut os, binding).is_err() {
-            return GL_FALSE;
-        }
-        drop(os);
         CURRENT.with(|cur| *cur.borrow_mut() = Some((handle(ctx), shared)));
         GL_TRUE
     })
