@@ -316,3 +316,27 @@ pub fn with_os<R: Copy>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
         })
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn guard_turns_a_panic_into_the_default() {
+        assert_eq!(guard(7, || panic!("inside an export")), 7);
+        assert_eq!(guard(7, || 3), 3);
+    }
+
+    #[test]
+    fn with_gl_keeps_the_context_usable_after_a_panic() {
+        let h = register(OsContext::new(crate::consts::OSMESA_RGBA, 0, 0));
+        let shared = lookup(h).unwrap();
+        lock(&shared).gl = Some(Context::new(FramebufferDesc::rgba8_d24s8(2, 2)).unwrap());
+        CURRENT.with(|c| *c.borrow_mut() = Some((h, shared.clone())));
+        assert_eq!(with_gl(1, |_, _| panic!("in a GL call")), 1);
+        assert!(lock(&shared).gl.is_some(), "the GL context is put back");
+        assert_eq!(with_gl(0, |_, gl| gl.framebuffer().width()), 2);
+        CURRENT.with(|c| *c.borrow_mut() = None);
+        unregister(h);
+    }
+}

@@ -82,6 +82,18 @@ fn unknown_and_destroyed_handles_are_refused() {
         unsafe { OSMesaGetColorBuffer(ctx, &mut w, &mut h, &mut f, &mut p) },
         GL_FALSE
     );
+    // A refused OSMesaMakeCurrent leaves the current context as it was.
+    let mut px4 = vec![0u8; 16];
+    let live = current(&mut px4, 2, 2);
+    let other = OSMesaCreateContextExt(OSMESA_RGB_565, 0, 0, 0, null_mut());
+    // SAFETY: 2x2 pixels of 2 bytes fit; the type is refused before any use.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(other, px4.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 2, 2) },
+        GL_FALSE
+    );
+    assert_eq!(OSMesaGetCurrentContext(), live);
+    OSMesaDestroyContext(other);
+    OSMesaDestroyContext(live);
     // Unknown formats and negative sizes: no context.
     assert!(OSMesaCreateContextExt(OSMESA_COLOR_INDEX, 0, 0, 0, null_mut()).is_null());
     assert!(OSMesaCreateContextExt(OSMESA_RGBA, -1, 0, 0, null_mut()).is_null());
