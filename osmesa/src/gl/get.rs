@@ -269,7 +269,7 @@ const RENDERER_INTERP: &std::ffi::CStr = c"softgl (interpreter)";
 const RENDERER_JIT: &std::ffi::CStr = c"softgl (Cranelift JIT)";
 const VERSION: &std::ffi::CStr = c"1.1 softgl 0.1.0";
 const EXTENSIONS: &std::ffi::CStr =
-    c"GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_logic_op GL_EXT_blend_minmax GL_EXT_blend_subtract";
+    c"GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract";
 
 exports! {
     /// `GL_VENDOR`, `GL_RENDERER`, `GL_VERSION` ("1.1 softgl …") and
