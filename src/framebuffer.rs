@@ -174,6 +174,13 @@ impl ColorStore {
     }
 }
 
+/// A clone owns a copy of the colour bytes, lent or not (a snapshot).
+impl Clone for ColorStore {
+    fn clone(&self) -> ColorStore {
+        ColorStore::Owned(self.bytes().to_vec())
+    }
+}
+
 impl std::fmt::Debug for ColorStore {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
@@ -185,8 +192,8 @@ impl std::fmt::Debug for ColorStore {
 
 /// Color, depth and stencil storage of a context. Depth and stencil rows are
 /// always bottom-up and `width` values long; color rows are `color_stride`
-/// bytes apart, top-down when `color_top_down`.
-#[derive(Debug)]
+/// bytes apart, top-down when `color_top_down`. A clone owns its colour bytes.
+#[derive(Clone, Debug)]
 pub struct Framebuffer {
     desc: FramebufferDesc,
     color: ColorStore,

@@ -103,3 +103,17 @@ fn memory_too_small_is_refused() {
     );
     assert_eq!(fb.color_stride(), STRIDE);
 }
+
+#[test]
+fn a_clone_owns_a_snapshot_of_lent_memory() {
+    let shared = Shared(Arc::new(Mutex::new(Vec::new())));
+    let desc = FramebufferDesc::rgba8_d24s8(W as u32, H as u32);
+    let mem = Lent(vec![0; STRIDE * H], shared);
+    let mut fb = Framebuffer::with_color_memory(desc, Box::new(mem), STRIDE, true).unwrap();
+    let bounds = fb.bounds();
+    fb.clear_color(bounds, [1.0, 0.0, 0.0, 1.0], softgl::ColorMask::ALL);
+    let snapshot = fb.clone();
+    fb.clear_color(bounds, [0.0, 1.0, 0.0, 1.0], softgl::ColorMask::ALL);
+    assert_eq!(snapshot.pixel(1, 2), Some([255, 0, 0, 255]));
+    assert_eq!(fb.pixel(1, 2), Some([0, 255, 0, 255]));
+}
