@@ -155,11 +155,11 @@ fn bind(os: &mut OsContext, binding: Binding) -> Result<(), GlError> {
     let desc = os.desc_for(&binding);
     let len = binding.len(os.row_length);
     let stride = binding.stride(os.row_length);
+    let same = os.gl.as_ref().is_some_and(|gl| *gl.framebuffer().desc() == desc);
     let fb = if binding.format.is_direct() {
         // SAFETY: OSMesaMakeCurrent's contract: `buffer` holds the image
         // (`len` bytes for this size and row length) while bound.
         let mem = unsafe { UserMemory::new(binding.ptr, len) };
-        let same = os.gl.as_ref().is_some_and(|gl| *gl.framebuffer().desc() == desc);
         if same {
             let gl = os.gl.as_mut().expect("checked above");
             gl.framebuffer_mut().set_color_memory(Box::new(mem), stride, !os.y_up)?;
@@ -167,9 +167,11 @@ fn bind(os: &mut OsContext, binding: Binding) -> Result<(), GlError> {
         } else {
             Some(Framebuffer::with_color_memory(desc, Box::new(mem), stride, !os.y_up)?)
         }
-    } else if os.gl.as_ref().is_some_and(|gl| *gl.framebuffer().desc() == desc) {
+    } else if same && os.binding.is_some_and(|b| !b.format.is_direct()) {
+        // softgl's own buffer already: keep it (and depth, stencil).
         None
     } else {
+        // Not the previous caller's memory: a buffer of softgl's own.
         Some(Framebuffer::new(desc)?)
     };
     if let Some(fb) = fb {

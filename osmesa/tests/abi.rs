@@ -361,3 +361,34 @@ fn a_context_destroyed_while_current_elsewhere_stays_safe() {
         GL_FALSE
     );
 }
+
+#[test]
+fn a_new_type_for_the_same_context_leaves_the_old_buffer_alone() {
+    let mut bytes = vec![0u8; 2 * 2 * 4];
+    let ctx = current(&mut bytes, 2, 2);
+    glClearColor(1.0, 0.0, 0.0, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    assert_eq!(px(&bytes, 2, 1, 1), [255, 0, 0, 255]);
+    // The same context on a float buffer of the same size: softgl's own
+    // RGBA8 buffer, converted at glFinish; the byte buffer is not drawn on.
+    let mut floats = vec![0.0f32; 2 * 2 * 4];
+    // SAFETY: 2x2 pixels of 4 floats.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(ctx, floats.as_mut_ptr().cast(), GL_FLOAT, 2, 2) },
+        GL_TRUE
+    );
+    glClearColor(0.0, 1.0, 0.0, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glFinish();
+    assert_eq!(px(&bytes, 2, 1, 1), [255, 0, 0, 255]);
+    assert_eq!(&floats[..4], &[0.0, 1.0, 0.0, 1.0]);
+    // And back to bytes: drawn into directly again.
+    // SAFETY: 2x2 RGBA pixels.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(ctx, bytes.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 2, 2) },
+        GL_TRUE
+    );
+    glClear(GL_COLOR_BUFFER_BIT);
+    assert_eq!(px(&bytes, 2, 1, 1), [0, 255, 0, 255]);
+    OSMesaDestroyContext(ctx);
+}
