@@ -41,9 +41,12 @@ fn work_dir(name: &str) -> PathBuf {
     d
 }
 
-/// Builds `tests/c/<name>.c` against Mesa's OSMesa and GLU.
+/// Builds `tests/c/<name>.c` against Mesa's OSMesa and GLU (into a directory
+/// of its own: tests building the same program run in parallel).
 fn build(name: &str) -> PathBuf {
-    let dir = work_dir(&format!("bin-{name}"));
+    static BUILDS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = work_dir(&format!("bin-{name}-{n}"));
     let exe = dir.join(name);
     let out = Command::new("cc")
         .arg("-O1")
