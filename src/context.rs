@@ -167,8 +167,14 @@ pub struct Context {
 impl Context {
     /// A context drawing into a new framebuffer described by `desc`.
     pub fn new(desc: FramebufferDesc) -> GlResult<Context> {
-        let fb = Framebuffer::new(desc)?;
-        Ok(Context {
+        Ok(Context::with_framebuffer(Framebuffer::new(desc)?))
+    }
+
+    /// A context drawing into `fb` (e.g. one over lent colour memory), with
+    /// GL's initial state for its size.
+    pub fn with_framebuffer(fb: Framebuffer) -> Context {
+        let desc = *fb.desc();
+        Context {
             state: RasterState::new(desc.width, desc.height),
             fb,
             modelview: MatrixStack::new(matrix::MAX_MODELVIEW_DEPTH),
@@ -183,7 +189,7 @@ impl Context {
             begun: None,
             error: None,
             backend: Backend::from_env(),
-        })
+        }
     }
 
     pub fn framebuffer(&self) -> &Framebuffer {

@@ -179,11 +179,7 @@ fn bind(os: &mut OsContext, binding: Binding) -> Result<(), GlError> {
             Some(gl) => {
                 gl.replace_framebuffer(fb);
             }
-            None => {
-                let mut gl = Context::new(desc)?;
-                gl.replace_framebuffer(fb);
-                os.gl = Some(gl);
-            }
+            None => os.gl = Some(Context::with_framebuffer(fb)),
         }
     }
     os.binding = Some(binding);
