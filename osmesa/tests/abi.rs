@@ -198,6 +198,14 @@ fn client_arrays_of_every_type_draw_like_immediate_mode() {
     glFinish();
     assert_eq!(a, arrays, "glDrawArrays(GL_QUADS) differs from the indexed triangles");
     glClear(GL_COLOR_BUFFER_BIT);
+    // SAFETY: 6 u16 indices.
+    unsafe { glDrawRangeElements(GL_TRIANGLES, 0, 3, 6, GL_UNSIGNED_SHORT, idx.as_ptr().cast()) };
+    glFinish();
+    assert_eq!(a, arrays, "glDrawRangeElements differs");
+    // SAFETY: refused before reading.
+    unsafe { glDrawRangeElements(GL_TRIANGLES, 3, 0, 6, GL_UNSIGNED_SHORT, idx.as_ptr().cast()) };
+    assert_eq!(glGetError(), GL_INVALID_VALUE);
+    glClear(GL_COLOR_BUFFER_BIT);
     glBegin(GL_QUADS);
     for i in 0..4 {
         glArrayElement(i);

@@ -233,6 +233,18 @@ exports! {
             draw(os, gl, mode, &mut it)
         })
     }
+    /// GL 1.2's `glDrawElements` with an index range hint: indices outside
+    /// `start..=end` are drawn all the same (GL leaves them undefined).
+    ///
+    /// # Safety
+    /// `indices` points to `count` indices of `ty` (GL's contract).
+    [unsafe] fn glDrawRangeElements(mode: GLenum, start: u32, end: u32, count: i32, ty: GLenum, indices: *const c_void) {
+        if end < start {
+            return super::checked(|_| Err(GlError::InvalidValue));
+        }
+        // SAFETY: the same contract as glDrawElements, passed on.
+        unsafe { glDrawElements(mode, count, ty, indices) }
+    }
     [] fn glArrayElement(i: i32) {
         with_gl((), |os, gl| {
             if i < 0 {
