@@ -147,6 +147,8 @@ pub fn depth_to_unorm(z: f64, format: DepthFormat) -> u32 {
 
 /// Color memory lent to a framebuffer by its owner (the OSMesa C ABI hands
 /// softgl the caller's buffer this way, so that it renders into it directly).
+/// Both methods return the same bytes, of the same length, every time: the
+/// framebuffer checks the length once, when the memory is lent.
 pub trait ColorMemory: Send {
     fn bytes(&self) -> &[u8];
     fn bytes_mut(&mut self) -> &mut [u8];
