@@ -400,3 +400,54 @@ fn a_new_type_for_the_same_context_leaves_the_old_buffer_alone() {
     assert_eq!(px(&bytes, 2, 1, 1), [0, 255, 0, 255]);
     OSMesaDestroyContext(ctx);
 }
+
+#[test]
+fn interleaved_arrays_draw_like_separate_ones() {
+    #[repr(C)]
+    #[derive(Clone, Copy)]
+    struct C4ubV3f {
+        c: [u8; 4],
+        v: [f32; 3],
+    }
+    let verts = [
+        C4ubV3f {
+            c: [255, 0, 0, 255],
+            v: [1.0, 1.0, 0.0],
+        },
+        C4ubV3f {
+            c: [0, 255, 0, 255],
+            v: [15.0, 2.0, 0.0],
+        },
+        C4ubV3f {
+            c: [0, 0, 255, 255],
+            v: [8.0, 14.0, 0.0],
+        },
+    ];
+    let mut a = vec![0u8; 16 * 16 * 4];
+    let ctx = current(&mut a, 16, 16);
+    // SAFETY: `verts` outlives the draw; GL_C4UB_V3F is 16 bytes a vertex.
+    unsafe { glInterleavedArrays(0x2A23, 0, verts.as_ptr().cast()) };
+    assert_eq!(glIsEnabled(GL_COLOR_ARRAY), GL_TRUE);
+    assert_eq!(glIsEnabled(GL_NORMAL_ARRAY), GL_FALSE);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glFinish();
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    let interleaved = a.clone();
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_TRIANGLES);
+    for v in &verts {
+        glColor4ub(v.c[0], v.c[1], v.c[2], v.c[3]);
+        glVertex3f(v.v[0], v.v[1], v.v[2]);
+    }
+    glEnd();
+    glFinish();
+    assert_eq!(a, interleaved);
+    assert!(
+        a.chunks_exact(4).filter(|p| p[3] == 255).count() > 60,
+        "the triangle was drawn"
+    );
+    // SAFETY: refused before any use.
+    unsafe { glInterleavedArrays(0x1234, 0, verts.as_ptr().cast()) };
+    assert_eq!(glGetError(), GL_INVALID_ENUM);
+    OSMesaDestroyContext(ctx);
+}

@@ -3,7 +3,7 @@
 //! at each draw; normals and texture coordinates are accepted and, without
 //! lighting and texturing, have no effect on the image.
 
-use super::{enums, missing, os};
+use super::{enums, os};
 use crate::consts::*;
 use crate::state::{with_gl, ClientArray, OsContext};
 use softgl::{AttribArray, Context, GlError, GlResult, VertexArrays};
@@ -302,11 +302,72 @@ exports! {
             Ok(())
         })
     }
-    /// Not in softgl yet: `GL_INVALID_OPERATION`.
+    /// Sets and enables the arrays of one of GL's 14 interleaved layouts
+    /// (texture coordinates, colour, normal, position, in that order).
     ///
     /// # Safety
-    /// Reads nothing.
-    [unsafe] fn glInterleavedArrays(_format: GLenum, _stride: i32, _ptr: *const c_void) {
-        missing()
+    /// `ptr` stays valid while drawing reads it (GL's contract).
+    [unsafe] fn glInterleavedArrays(format: GLenum, stride: i32, ptr: *const c_void) {
+        os(|os, gl| {
+            if gl.inside_begin() {
+                return Err(GlError::InvalidOperation);
+            }
+            let layout = interleaved(format).ok_or(GlError::InvalidEnum)?;
+            if stride < 0 {
+                return Err(GlError::InvalidValue);
+            }
+            let (t, c, n, v) = layout;
+            let f = std::mem::size_of::<f32>();
+            // Byte sizes of each part: floats, except C4UB's 4 bytes.
+            let c_bytes = match c {
+                Some((_, GL_UNSIGNED_BYTE)) => 4,
+                Some((size, _)) => size as usize * f,
+                None => 0,
+            };
+            let total = t as usize * f + c_bytes + if n { 3 * f } else { 0 } + v as usize * f;
+            let stride = if stride == 0 { total as i32 } else { stride };
+            let base = ptr.cast::<u8>();
+            let mut at = 0usize;
+            let mut set = |a: &mut ClientArray, size: i32, ty: GLenum, on: bool, bytes: usize| {
+                a.enabled = on;
+                if on {
+                    (a.size, a.ty, a.stride, a.ptr) = (size, ty, stride, base.wrapping_add(at));
+                    at += bytes;
+                }
+            };
+            set(&mut os.tex_coord, t, GL_FLOAT, t > 0, t as usize * f);
+            let (cs, ct) = c.unwrap_or((4, GL_FLOAT));
+            set(&mut os.color, cs, ct, c.is_some(), c_bytes);
+            set(&mut os.normal, 3, GL_FLOAT, n, 3 * f);
+            set(&mut os.vertex, v, GL_FLOAT, true, v as usize * f);
+            Ok(())
+        })
     }
+}
+
+/// The parts of an interleaved layout: texture coordinate size (0 for none),
+/// colour size and type, whether there is a normal, position size.
+type Interleaved = (i32, Option<(i32, GLenum)>, bool, i32);
+
+fn interleaved(format: GLenum) -> Option<Interleaved> {
+    const C4UB: Option<(i32, GLenum)> = Some((4, GL_UNSIGNED_BYTE));
+    const C3F: Option<(i32, GLenum)> = Some((3, GL_FLOAT));
+    const C4F: Option<(i32, GLenum)> = Some((4, GL_FLOAT));
+    Some(match format {
+        0x2A20 => (0, None, false, 2), // GL_V2F
+        0x2A21 => (0, None, false, 3), // GL_V3F
+        0x2A22 => (0, C4UB, false, 2), // GL_C4UB_V2F
+        0x2A23 => (0, C4UB, false, 3), // GL_C4UB_V3F
+        0x2A24 => (0, C3F, false, 3),  // GL_C3F_V3F
+        0x2A25 => (0, None, true, 3),  // GL_N3F_V3F
+        0x2A26 => (0, C4F, true, 3),   // GL_C4F_N3F_V3F
+        0x2A27 => (2, None, false, 3), // GL_T2F_V3F
+        0x2A28 => (4, None, false, 4), // GL_T4F_V4F
+        0x2A29 => (2, C4UB, false, 3), // GL_T2F_C4UB_V3F
+        0x2A2A => (2, C3F, false, 3),  // GL_T2F_C3F_V3F
+        0x2A2B => (2, None, true, 3),  // GL_T2F_N3F_V3F
+        0x2A2C => (2, C4F, true, 3),   // GL_T2F_C4F_N3F_V3F
+        0x2A2D => (4, C4F, true, 4),   // GL_T4F_C4F_N3F_V4F
+        _ => return None,
+    })
 }
