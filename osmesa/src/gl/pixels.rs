@@ -208,15 +208,26 @@ unsafe fn read_pixels(
         Source::Depth | Source::Stencil => 1,
     };
     let row_pixels = if pack.row_length > 0 { pack.row_length } else { w } as usize;
-    let row_bytes = row_pixels * comps * size;
+    let pixel_bytes = comps * size;
     let align = pack.alignment as usize;
-    let stride = if size >= align {
-        row_bytes
-    } else {
-        row_bytes.div_ceil(align) * align
+    // Checked: a layout whose size overflows cannot fit any buffer.
+    let layout = || -> Option<(usize, usize, usize)> {
+        let row_bytes = row_pixels.checked_mul(pixel_bytes)?;
+        let stride = if size >= align {
+            row_bytes
+        } else {
+            row_bytes.div_ceil(align).checked_mul(align)?
+        };
+        let start = (pack.skip_rows as usize)
+            .checked_mul(stride)?
+            .checked_add((pack.skip_pixels as usize).checked_mul(pixel_bytes)?)?;
+        let len = stride
+            .checked_mul(h as usize - 1)?
+            .checked_add((w as usize).checked_mul(pixel_bytes)?)?
+            .checked_add(start)?;
+        (len <= isize::MAX as usize).then_some((stride, start, len))
     };
-    let start = pack.skip_rows as usize * stride + pack.skip_pixels as usize * comps * size;
-    let len = start + stride * (h as usize - 1) + w as usize * comps * size;
+    let (stride, start, len) = layout().ok_or(GlError::InvalidValue)?;
     // SAFETY: GL's contract: `pixels` holds the image as the pack state lays it out,
     // which is exactly `len` bytes from `pixels`.
     let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
@@ -228,7 +239,7 @@ unsafe fn read_pixels(
             if read_pixel(gl, src, i64::from(x) + i as i64, i64::from(y) + j as i64, &mut vals).is_none() {
                 continue;
             }
-            let at = start + j * stride + i * comps * size;
+            let at = start + j * stride + i * pixel_bytes;
             if let (Source::Depth, GL_UNSIGNED_INT | GL_UNSIGNED_SHORT) = (src, ty) {
                 let raw = replicate(vals[1] as u32, depth_bits, 8 * size as u32);
                 put(&mut dst[at..], ty, f64::from(raw), true, pack.swap_bytes);
