@@ -38,7 +38,7 @@ impl Rng {
             0.5,
             1e-7,
         ];
-        if self.next() % 3 == 0 {
+        if self.next().is_multiple_of(3) {
             self.pick(&special)
         } else {
             (self.next() % 2001) as f32 / 1000.0 - 1.0
@@ -186,7 +186,7 @@ fn random_calls_neither_panic_nor_write_outside_the_buffer() {
             12 => glPushMatrix(),
             13 => glPopMatrix(),
             14 => glBegin(r.e()),
-            15 | 16 | 17 => glVertex3f(r.f(), r.f(), r.f()),
+            15..=17 => glVertex3f(r.f(), r.f(), r.f()),
             18 => glColor4f(r.f(), r.f(), r.f(), r.f()),
             19 => glEnd(),
             20 => glBlendFunc(r.e(), r.e()),
@@ -234,6 +234,7 @@ fn random_calls_neither_panic_nor_write_outside_the_buffer() {
                     e == GL_NO_ERROR || (0x500..=0x505).contains(&e),
                     "step {step}: error {e:#x}"
                 );
+                seen[usize::from(e != GL_NO_ERROR)] += 1;
             }
         }
         assert_eq!(PANICS.load(Ordering::SeqCst), 0, "a panic at step {step}");
@@ -243,6 +244,12 @@ fn random_calls_neither_panic_nor_write_outside_the_buffer() {
     assert!(
         buf[image..].iter().all(|&b| b == 0x5C),
         "written past the caller's buffer"
+    );
+    // The run exercised both sides: calls that failed and calls that drew.
+    assert!(seen[0] > 20 && seen[1] > 20, "glGetError outcomes {seen:?}");
+    assert!(
+        buf[..image].iter().any(|&b| b != 0),
+        "nothing was ever drawn or cleared"
     );
     OSMesaDestroyContext(ctx);
     let _ = std::panic::take_hook();
