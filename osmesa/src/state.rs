@@ -148,6 +148,9 @@ pub struct OsContext {
     /// Depth and stencil interleaved as Mesa's Z24S8 buffer, handed out by
     /// `OSMesaGetDepthBuffer` when the context has a stencil buffer.
     pub depth_view: Vec<u32>,
+    /// `glPushAttrib` and `glPushClientAttrib` stacks.
+    pub attrib_stack: Vec<crate::gl::attrib::Saved>,
+    pub client_attrib_stack: Vec<crate::gl::attrib::SavedClient>,
 }
 
 pub const HINTS: [GLenum; 5] = [
@@ -178,6 +181,8 @@ impl OsContext {
             hints: [GL_DONT_CARE; 5],
             inert_caps: Vec::new(),
             depth_view: Vec::new(),
+            attrib_stack: Vec::new(),
+            client_attrib_stack: Vec::new(),
         }
     }
 

@@ -157,6 +157,9 @@ fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D38 => i(softgl::matrix::MAX_PROJECTION_DEPTH as i64),
         0x0D39 => i(softgl::matrix::MAX_TEXTURE_DEPTH as i64),
         0x0D3A => Val::I(vec![MAX_SIZE.into(), MAX_SIZE.into()]), // MAX_VIEWPORT_DIMS
+        0x0D35 | 0x0D3B => i(super::attrib::MAX_DEPTH as i64),    // MAX_(CLIENT_)ATTRIB_STACK_DEPTH
+        0x0BB0 => i(super::attrib::depths(os).0 as i64),          // ATTRIB_STACK_DEPTH
+        0x0BB1 => i(super::attrib::depths(os).1 as i64),          // CLIENT_ATTRIB_STACK_DEPTH
         // MAX_TEXTURE_SIZE: Mesa's llvmpipe limit; glTexImage is not in softgl yet.
         0x0D33 => i(16384),
         0x0D50 => i(8),             // SUBPIXEL_BITS
@@ -198,8 +201,8 @@ fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0BC2 => Val::N(vec![f64::from(s.alpha_ref)]),   // ALPHA_TEST_REF
         0x0B92 => e(enums::compare_enum(s.stencil_func)), // STENCIL_FUNC
         0x0B97 => i(s.stencil_ref),                       // STENCIL_REF
-        0x0B93 => i(s.stencil_value_mask as i32),         // STENCIL_VALUE_MASK
-        0x0B98 => i(s.stencil_write_mask as i32),         // STENCIL_WRITEMASK
+        0x0B93 => i(s.stencil_value_mask & 0xff),         // STENCIL_VALUE_MASK
+        0x0B98 => i(s.stencil_write_mask & 0xff),         // STENCIL_WRITEMASK
         0x0B94 => e(enums::stencil_op_enum(s.stencil_fail)),
         0x0B95 => e(enums::stencil_op_enum(s.stencil_zfail)),
         0x0B96 => e(enums::stencil_op_enum(s.stencil_zpass)),

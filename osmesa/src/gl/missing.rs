@@ -436,22 +436,6 @@ exports! {
     [] fn glListBase(_base: u32) {
         missing()
     }
-    /// Attribute stacks (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPushAttrib(_mask: u32) {
-        missing()
-    }
-    /// Attribute stacks (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPopAttrib() {
-        missing()
-    }
-    /// Attribute stacks (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPushClientAttrib(_mask: u32) {
-        missing()
-    }
-    /// Attribute stacks (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPopClientAttrib() {
-        missing()
-    }
     /// Clip planes (not in softgl yet): `GL_INVALID_OPERATION`.
     ///
     /// # Safety

@@ -21,6 +21,7 @@ macro_rules! exports {
 }
 
 mod arrays;
+pub(crate) mod attrib;
 mod enums;
 mod get;
 mod immediate;
@@ -29,6 +30,7 @@ mod pixels;
 mod state;
 
 pub use arrays::*;
+pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
 pub use get::*;
 pub use immediate::*;
 pub use missing::*;
@@ -39,6 +41,7 @@ pub use state::*;
 pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
     [
         arrays::table,
+        attrib::table,
         get::table,
         immediate::table,
         missing::table,
@@ -55,6 +58,7 @@ pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
 pub fn exported_names() -> Vec<&'static str> {
     [
         arrays::table,
+        attrib::table,
         get::table,
         immediate::table,
         missing::table,
