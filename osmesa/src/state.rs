@@ -151,6 +151,12 @@ pub struct OsContext {
     /// `glPushAttrib` and `glPushClientAttrib` stacks.
     pub attrib_stack: Vec<crate::gl::attrib::Saved>,
     pub client_attrib_stack: Vec<crate::gl::attrib::SavedClient>,
+    /// Display lists by name, the one being compiled, `glListBase`, and how
+    /// deep `glCallList` is nested.
+    pub lists: HashMap<u32, Arc<Vec<crate::gl::Cmd>>>,
+    pub compiling: Option<crate::gl::lists::Compiling>,
+    pub list_base: u32,
+    pub call_depth: u32,
 }
 
 pub const HINTS: [GLenum; 5] = [
@@ -183,6 +189,10 @@ impl OsContext {
             depth_view: Vec::new(),
             attrib_stack: Vec::new(),
             client_attrib_stack: Vec::new(),
+            lists: HashMap::new(),
+            compiling: None,
+            list_base: 0,
+            call_depth: 0,
         }
     }
 

@@ -144,7 +144,7 @@ fn unimplemented_functions_record_invalid_operation() {
     // SAFETY: one writable GLint.
     unsafe { glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &mut width) };
     assert_eq!((width, glGetError()), (0, GL_INVALID_OPERATION));
-    assert_eq!(glGenLists(1), 0);
+    glFogf(0x0B62, 0.5); // GL_FOG_DENSITY
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     // Inert until lighting lands: accepted and reported.
     glEnable(GL_NORMALIZE);

@@ -338,6 +338,20 @@ fn errors_from_bad_arguments_match_mesa() {
 }
 
 #[test]
+fn display_lists_match_mesa() {
+    let exe = build("lists");
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // Compile, compile-and-execute, nesting, glCallLists with a base, a GLU
+    // sphere in a list, client arrays read at compile time: the same image,
+    // byte for byte, and the same list state and errors.
+    let image = soft.file("lists.color");
+    assert_eq!(image, mesa.file("lists.color"));
+    let lit = image.chunks_exact(4).filter(|p| p[..3] != [0, 0, 0]).count();
+    assert!(lit > 1000, "only {lit} pixels drawn");
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+}
+
+#[test]
 fn contexts_on_threads_are_independent() {
     let exe = build("threads");
     for softgl in [false, true] {

@@ -3,10 +3,10 @@
 //! at each draw; normals and texture coordinates are accepted and, without
 //! lighting and texturing, have no effect on the image.
 
-use super::{enums, os};
+use super::{enums, now, run_or_record, Cmd};
 use crate::consts::*;
-use crate::state::{with_gl, ClientArray, OsContext};
-use softgl::{AttribArray, Context, GlError, GlResult, VertexArrays};
+use crate::state::{ClientArray, OsContext};
+use softgl::{AttribArray, Context, GlError, GlResult, PrimitiveMode, VertexArrays};
 use std::ffi::c_void;
 
 fn type_size(ty: GLenum) -> Option<usize> {
@@ -83,14 +83,21 @@ unsafe fn fetch(a: &ClientArray, i: usize, normalize: bool, out: &mut Vec<f32>) 
     }
 }
 
-/// Draws the vertices `indices` names from the enabled arrays.
-fn draw(os: &OsContext, gl: &mut Context, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult {
+/// The vertices a draw names, read from the enabled arrays when the draw is
+/// issued (GL reads them then too when it compiles a draw into a list).
+struct Fetched {
+    mode: PrimitiveMode,
+    count: usize,
+    pos_size: usize,
+    pos: Vec<f32>,
+    color: Option<(usize, Vec<f32>)>,
+}
+
+/// Reads the vertices `indices` names; `None` without a vertex array (GL then draws nothing).
+fn gather(os: &OsContext, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult<Option<Fetched>> {
     let mode = enums::primitive(mode)?;
-    if gl.inside_begin() {
-        return Err(GlError::InvalidOperation);
-    }
     if !os.vertex.enabled || os.vertex.ptr.is_null() {
-        return Ok(());
+        return Ok(None);
     }
     let color = (os.color.enabled && !os.color.ptr.is_null()).then_some(&os.color);
     let (mut pos, mut col) = (Vec::new(), Vec::new());
@@ -105,11 +112,30 @@ fn draw(os: &OsContext, gl: &mut Context, mode: GLenum, indices: &mut dyn Iterat
         }
         count += 1;
     }
-    let arrays = VertexArrays {
-        position: AttribArray::new(os.vertex.size as usize, &pos),
-        color: color.map(|c| AttribArray::new(c.size as usize, &col)),
+    Ok(Some(Fetched {
+        mode,
+        count,
+        pos_size: os.vertex.size as usize,
+        pos,
+        color: color.map(|c| (c.size as usize, col)),
+    }))
+}
+
+/// Draws (or records, in a display list) the vertices `indices` names.
+fn draw(os: &mut OsContext, gl: &mut Context, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult {
+    let Some(f) = gather(os, mode, indices)? else {
+        return Ok(());
     };
-    gl.draw_arrays(mode, 0, count, &arrays)
+    let cmd: Cmd = std::sync::Arc::new(move |_: &mut OsContext, gl: &mut Context| {
+        let arrays = VertexArrays {
+            position: AttribArray::new(f.pos_size, &f.pos),
+            color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
+        };
+        // The context records its own errors (inside begin/end, …).
+        let _ = gl.draw_arrays(f.mode, 0, f.count, &arrays);
+    });
+    run_or_record(os, gl, cmd);
+    Ok(())
 }
 
 /// Sets a client array pointer after checking its arguments.
@@ -122,7 +148,7 @@ fn pointer(
     stride: i32,
     ptr: *const c_void,
 ) {
-    os(|os, _| {
+    now(|os, _| {
         if !types.contains(&ty) {
             return Err(GlError::InvalidEnum);
         }
@@ -136,7 +162,7 @@ fn pointer(
 }
 
 fn client_state(array: GLenum, on: bool) {
-    os(|os, _| {
+    now(|os, _| {
         let a = match array {
             GL_VERTEX_ARRAY => &mut os.vertex,
             GL_COLOR_ARRAY => &mut os.color,
@@ -193,7 +219,7 @@ exports! {
         client_state(array, false)
     }
     [] fn glDrawArrays(mode: GLenum, first: i32, count: i32) {
-        os(|os, gl| {
+        now(|os, gl| {
             if first < 0 || count < 0 {
                 enums::primitive(mode)?;
                 return Err(GlError::InvalidValue);
@@ -204,7 +230,7 @@ exports! {
     /// # Safety
     /// `indices` points to `count` indices of `ty` (GL's contract).
     [unsafe] fn glDrawElements(mode: GLenum, count: i32, ty: GLenum, indices: *const c_void) {
-        os(|os, gl| {
+        now(|os, gl| {
             enums::primitive(mode)?;
             if count < 0 {
                 return Err(GlError::InvalidValue);
@@ -246,48 +272,51 @@ exports! {
         unsafe { glDrawElements(mode, count, ty, indices) }
     }
     [] fn glArrayElement(i: i32) {
-        with_gl((), |os, gl| {
+        now(|os, gl| {
             if i < 0 {
-                return gl.record_error(GlError::InvalidValue);
+                return Err(GlError::InvalidValue);
             }
             let i = i as usize;
-            let mut v = Vec::with_capacity(4);
-            // SAFETY: the enabled arrays hold element `i` (GL's contract).
-            unsafe {
-                if os.color.enabled && !os.color.ptr.is_null() {
-                    fetch(&os.color, i, true, &mut v);
-                    gl.color4(v[0], v[1], v[2], v.get(3).copied().unwrap_or(1.0));
-                    v.clear();
+            // Read now (GL's rule for lists too), applied by the command.
+            let read = |a: &ClientArray, normalize: bool| -> Option<Vec<f32>> {
+                let mut v = Vec::with_capacity(4);
+                // SAFETY: the enabled arrays hold element `i` (GL's contract).
+                (a.enabled && !a.ptr.is_null()).then(|| unsafe { fetch(a, i, normalize, &mut v) })?;
+                Some(v)
+            };
+            let pad = |mut v: Vec<f32>, size: i32| -> [f32; 4] {
+                v.resize(4, 0.0);
+                if size < 4 {
+                    v[3] = 1.0;
                 }
-                if os.normal.enabled && !os.normal.ptr.is_null() {
-                    fetch(&os.normal, i, true, &mut v);
-                    gl.normal3(v[0], v[1], v[2]);
-                    v.clear();
+                [v[0], v[1], v[2], v[3]]
+            };
+            let color = read(&os.color, true).map(|v| pad(v, os.color.size));
+            let normal = read(&os.normal, true);
+            let tex = read(&os.tex_coord, false).map(|v| pad(v, os.tex_coord.size));
+            let vertex = read(&os.vertex, false).map(|v| pad(v, os.vertex.size));
+            let cmd: Cmd = std::sync::Arc::new(move |_: &mut OsContext, gl: &mut Context| {
+                if let Some([r, g, b, a]) = color {
+                    gl.color4(r, g, b, a);
                 }
-                if os.tex_coord.enabled && !os.tex_coord.ptr.is_null() {
-                    fetch(&os.tex_coord, i, false, &mut v);
-                    v.resize(4, 0.0);
-                    if os.tex_coord.size < 4 {
-                        v[3] = 1.0;
-                    }
-                    gl.tex_coord4(v[0], v[1], v[2], v[3]);
-                    v.clear();
+                if let Some(n) = &normal {
+                    gl.normal3(n[0], n[1], n[2]);
                 }
-                if os.vertex.enabled && !os.vertex.ptr.is_null() {
-                    fetch(&os.vertex, i, false, &mut v);
-                    v.resize(4, 0.0);
-                    if os.vertex.size < 4 {
-                        v[3] = 1.0;
-                    }
-                    gl.vertex4(v[0], v[1], v[2], v[3]);
+                if let Some([s, t, r, q]) = tex {
+                    gl.tex_coord4(s, t, r, q);
                 }
-            }
+                if let Some([x, y, z, w]) = vertex {
+                    gl.vertex4(x, y, z, w);
+                }
+            });
+            run_or_record(os, gl, cmd);
+            Ok(())
         })
     }
     /// # Safety
     /// `params` is null or writable.
     [unsafe] fn glGetPointerv(pname: GLenum, params: *mut *mut c_void) {
-        os(|os, _| {
+        now(|os, _| {
             let p = match pname {
                 GL_VERTEX_ARRAY_POINTER => os.vertex.ptr,
                 GL_COLOR_ARRAY_POINTER => os.color.ptr,
@@ -308,7 +337,7 @@ exports! {
     /// # Safety
     /// `ptr` stays valid while drawing reads it (GL's contract).
     [unsafe] fn glInterleavedArrays(format: GLenum, stride: i32, ptr: *const c_void) {
-        os(|os, gl| {
+        now(|os, gl| {
             if gl.inside_begin() {
                 return Err(GlError::InvalidOperation);
             }

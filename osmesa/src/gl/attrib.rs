@@ -3,7 +3,7 @@
 //! through the context's own setters. Groups without state in softgl yet
 //! (fog, lighting values, textures, …) save nothing.
 
-use super::os;
+use super::{now, rec};
 use crate::consts::*;
 use crate::state::{ClientArray, OsContext, PixelStore};
 use softgl::state::RasterState;
@@ -170,7 +170,7 @@ fn restore(os: &mut OsContext, gl: &mut Context, s: &Saved) -> GlResult {
 
 exports! {
     [] fn glPushAttrib(mask: u32) {
-        os(|os, gl| {
+        rec(move |os, gl| {
             if gl.inside_begin() {
                 return Err(GlError::InvalidOperation);
             }
@@ -190,7 +190,7 @@ exports! {
         })
     }
     [] fn glPopAttrib() {
-        os(|os, gl| {
+        rec(move |os, gl| {
             if gl.inside_begin() {
                 return Err(GlError::InvalidOperation);
             }
@@ -199,7 +199,7 @@ exports! {
         })
     }
     [] fn glPushClientAttrib(mask: u32) {
-        os(|os, _| {
+        now(|os, _| {
             if os.client_attrib_stack.len() >= MAX_DEPTH {
                 return Err(GlError::StackOverflow);
             }
@@ -214,7 +214,7 @@ exports! {
         })
     }
     [] fn glPopClientAttrib() {
-        os(|os, _| {
+        now(|os, _| {
             let s = os.client_attrib_stack.pop().ok_or(GlError::StackUnderflow)?;
             if s.mask & CLIENT_PIXEL_STORE_BIT != 0 {
                 (os.pack, os.unpack) = (s.pack, s.unpack);

@@ -157,6 +157,10 @@ fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D38 => i(softgl::matrix::MAX_PROJECTION_DEPTH as i64),
         0x0D39 => i(softgl::matrix::MAX_TEXTURE_DEPTH as i64),
         0x0D3A => Val::I(vec![MAX_SIZE.into(), MAX_SIZE.into()]), // MAX_VIEWPORT_DIMS
+        0x0B31 => i(super::lists::MAX_NESTING),                   // MAX_LIST_NESTING
+        0x0B32 => i(os.list_base),                                // LIST_BASE
+        0x0B33 => i(super::lists::compiling_state(os).0),         // LIST_INDEX
+        0x0B30 => e(super::lists::compiling_state(os).1),         // LIST_MODE
         0x0D35 | 0x0D3B => i(super::attrib::MAX_DEPTH as i64),    // MAX_(CLIENT_)ATTRIB_STACK_DEPTH
         0x0BB0 => i(super::attrib::depths(os).0 as i64),          // ATTRIB_STACK_DEPTH
         0x0BB1 => i(super::attrib::depths(os).1 as i64),          // CLIENT_ATTRIB_STACK_DEPTH

@@ -1,8 +1,7 @@
 //! Immediate mode: `glBegin`/`glEnd` and every `glVertex`, `glColor`,
 //! `glNormal`, `glTexCoord` and `glRect` variant of GL 1.1.
 
-use super::{checked, enums, gl};
-use crate::state::with_gl;
+use super::{checked, enums, gl, rec};
 use softgl::Context;
 
 /// Integer colour components to floats, GL 1.x's rules: unsigned `c / max`,
@@ -64,23 +63,35 @@ unsafe fn read<T: Copy, const N: usize>(v: *const T) -> Option<[T; N]> {
 }
 
 fn vertex(x: f32, y: f32, z: f32, w: f32) {
-    with_gl((), |_, gl| gl.vertex4(x, y, z, w))
+    rec(move |_, gl| {
+        gl.vertex4(x, y, z, w);
+        Ok(())
+    })
 }
 
 fn color(r: f32, g: f32, b: f32, a: f32) {
-    with_gl((), |_, gl| gl.color4(r, g, b, a))
+    rec(move |_, gl| {
+        gl.color4(r, g, b, a);
+        Ok(())
+    })
 }
 
 fn normal(x: f32, y: f32, z: f32) {
-    with_gl((), |_, gl| gl.normal3(x, y, z))
+    rec(move |_, gl| {
+        gl.normal3(x, y, z);
+        Ok(())
+    })
 }
 
 fn tex_coord(s: f32, t: f32, r: f32, q: f32) {
-    with_gl((), |_, gl| gl.tex_coord4(s, t, r, q))
+    rec(move |_, gl| {
+        gl.tex_coord4(s, t, r, q);
+        Ok(())
+    })
 }
 
 fn rect(x1: f32, y1: f32, x2: f32, y2: f32) {
-    gl(|gl| {
+    gl(move |gl| {
         gl.begin(softgl::PrimitiveMode::Polygon)?;
         gl.vertex2(x1, y1);
         gl.vertex2(x2, y1);
@@ -92,7 +103,7 @@ fn rect(x1: f32, y1: f32, x2: f32, y2: f32) {
 
 exports! {
     [] fn glBegin(mode: u32) {
-        checked(|gl| gl.begin(enums::primitive(mode)?))
+        checked(move |gl| gl.begin(enums::primitive(mode)?))
     }
     [] fn glEnd() {
         gl(Context::end)

@@ -399,43 +399,6 @@ exports! {
     [unsafe] fn glGetPolygonStipple(_mask: *mut u8) {
         missing()
     }
-    /// Display lists (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glNewList(_list: u32, _mode: GLenum) {
-        missing()
-    }
-    /// Display lists (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEndList() {
-        missing()
-    }
-    /// Display lists (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glCallList(_list: u32) {
-        missing()
-    }
-    /// Display lists (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glCallLists(_n: i32, _ty: GLenum, _lists: *const c_void) {
-        missing()
-    }
-    /// Display lists (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGenLists(_range: i32) -> u32 {
-        missing();
-        0
-    }
-    /// Display lists (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glDeleteLists(_list: u32, _range: i32) {
-        missing()
-    }
-    /// Display lists (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIsList(_list: u32) -> u8 {
-        missing();
-        GL_FALSE
-    }
-    /// Display lists (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glListBase(_base: u32) {
-        missing()
-    }
     /// Clip planes (not in softgl yet): `GL_INVALID_OPERATION`.
     ///
     /// # Safety

@@ -25,6 +25,7 @@ pub(crate) mod attrib;
 mod enums;
 mod get;
 mod immediate;
+pub(crate) mod lists;
 mod missing;
 mod pixels;
 mod state;
@@ -33,6 +34,7 @@ pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
 pub use get::*;
 pub use immediate::*;
+pub use lists::*;
 pub use missing::*;
 pub use pixels::*;
 pub use state::*;
@@ -44,6 +46,7 @@ pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
         attrib::table,
         get::table,
         immediate::table,
+        lists::table,
         missing::table,
         pixels::table,
         state::table,
@@ -61,6 +64,7 @@ pub fn exported_names() -> Vec<&'static str> {
         attrib::table,
         get::table,
         immediate::table,
+        lists::table,
         missing::table,
         pixels::table,
         state::table,
@@ -71,15 +75,60 @@ pub fn exported_names() -> Vec<&'static str> {
     .collect()
 }
 
-/// Runs `f` on the current GL context; errors are recorded by the context.
-fn gl(f: impl FnOnce(&mut Context) -> GlResult) {
-    with_gl((), |_, gl| {
-        let _ = f(gl);
+/// A command of a display list: a GL call with its arguments.
+pub(crate) type Cmd = std::sync::Arc<dyn Fn(&mut OsContext, &mut Context) + Send + Sync>;
+
+/// Runs `cmd` now, or records it in the display list being compiled (and
+/// runs it too under `GL_COMPILE_AND_EXECUTE`).
+pub(crate) fn run_or_record(os: &mut OsContext, gl: &mut Context, cmd: Cmd) {
+    match os.compiling.as_mut() {
+        Some(list) => {
+            list.cmds.push(cmd.clone());
+            if list.execute {
+                cmd(os, gl);
+            }
+        }
+        None => cmd(os, gl),
+    }
+}
+
+/// A GL call that display lists record: runs `f` on the current context
+/// (recording the error it returns), or records it.
+fn rec(f: impl Fn(&mut OsContext, &mut Context) -> GlResult + Send + Sync + 'static) {
+    with_gl((), |os, gl| {
+        if os.compiling.is_none() {
+            // The common case: no list, no allocation.
+            if let Err(e) = f(os, gl) {
+                gl.record_error(e);
+            }
+            return;
+        }
+        let cmd: Cmd = std::sync::Arc::new(move |os: &mut OsContext, gl: &mut Context| {
+            if let Err(e) = f(os, gl) {
+                gl.record_error(e);
+            }
+        });
+        run_or_record(os, gl, cmd);
     })
 }
 
-/// Runs `f` with the OSMesa context too.
-fn os(f: impl FnOnce(&mut OsContext, &mut Context) -> GlResult) {
+/// A recorded call on the GL context alone; errors are recorded by the context.
+fn gl(f: impl Fn(&mut Context) -> GlResult + Send + Sync + 'static) {
+    rec(move |_, gl| {
+        let _ = f(gl);
+        Ok(())
+    })
+}
+
+/// A recorded call whose error is recorded here (checks made in this layer,
+/// which the context has not seen).
+fn checked(f: impl Fn(&mut Context) -> GlResult + Send + Sync + 'static) {
+    rec(move |_, gl| f(gl))
+}
+
+/// A call that runs at once, never recorded in a display list (queries,
+/// client state, pixel packing, list management), recording its error.
+fn now(f: impl FnOnce(&mut OsContext, &mut Context) -> GlResult) {
     with_gl((), |os, gl| {
         if let Err(e) = f(os, gl) {
             gl.record_error(e);
@@ -87,17 +136,8 @@ fn os(f: impl FnOnce(&mut OsContext, &mut Context) -> GlResult) {
     })
 }
 
-/// Runs `f` on the current GL context, recording the error it returns (for
-/// checks made in this layer, which the context has not seen).
-fn checked(f: impl FnOnce(&mut Context) -> GlResult) {
-    with_gl((), |_, gl| {
-        if let Err(e) = f(gl) {
-            gl.record_error(e);
-        }
-    })
-}
-
-/// A function softgl does not implement yet: `GL_INVALID_OPERATION`.
+/// A function softgl does not implement yet: `GL_INVALID_OPERATION`, at
+/// once (also while a display list is compiled).
 fn missing() {
-    checked(|_| Err(GlError::InvalidOperation))
+    now(|_, _| Err(GlError::InvalidOperation))
 }

@@ -1,13 +1,13 @@
 //! `glPixelStore` and `glReadPixels`.
 
-use super::os;
+use super::now;
 use crate::consts::*;
 use crate::state::PixelStore;
 use softgl::{Context, GlError, GlResult};
 use std::ffi::c_void;
 
 fn pixel_store(pname: GLenum, param: i32) {
-    os(|os, gl| {
+    now(|os, gl| {
         if gl.inside_begin() {
             return Err(GlError::InvalidOperation);
         }
@@ -263,7 +263,7 @@ exports! {
     /// # Safety
     /// `pixels` has room for the image as the pack state lays it out.
     [unsafe] fn glReadPixels(x: i32, y: i32, width: i32, height: i32, format: GLenum, ty: GLenum, pixels: *mut c_void) {
-        os(|os, gl| {
+        now(|os, gl| {
             let pack = os.pack;
             // SAFETY: GL's contract on `pixels`, passed on.
             unsafe { read_pixels(gl, &pack, (x, y, width, height), format, ty, pixels) }
