@@ -179,7 +179,7 @@ fn bind(os: &mut OsContext, binding: Binding) -> Result<(), GlError> {
             Some(gl) => {
                 gl.replace_framebuffer(fb);
             }
-            None => os.gl = Some(Context::with_framebuffer(fb)),
+            None => os.gl = Some(Box::new(Context::with_framebuffer(fb))),
         }
     }
     os.binding = Some(binding);
@@ -323,7 +323,7 @@ pub(crate) fn depth_pointer(os: &mut OsContext) -> Option<(i32, i32, i32, *mut c
 /// Rebuilds the Z24S8 copy of depth and stencil, for contexts with both.
 pub(crate) fn refresh_depth_view(os: &mut OsContext) {
     let OsContext { gl, depth_view, .. } = os;
-    let Some(fb) = gl.as_ref().map(Context::framebuffer) else {
+    let Some(fb) = gl.as_deref().map(Context::framebuffer) else {
         return;
     };
     let (Some(depth), Some(stencil)) = (fb.depth_buffer(), fb.stencil_buffer()) else {
