@@ -1,35 +1,23 @@
-//! Whole-frame cost through the Rust API (geometry + raster + interpreter):
-//! 20,000 seeded random triangles at 1024x1024, depth-tested, and the same with
-//! scissor + alpha + stencil + depth + blend + color mask — the work behind
-//! DESIGN.md's llvmpipe figures (~75 ms and ~91 ms a frame with 2 threads).
+//! Whole-frame cost through the Rust API (geometry + raster + fragment stages),
+//! on each back end: 20,000 seeded random triangles at 1024x1024, depth-tested,
+//! and the same with scissor + alpha + stencil + depth + blend + color mask —
+//! the work behind DESIGN.md's llvmpipe figures (~75 ms and ~91 ms a frame with
+//! 2 threads).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use softgl::{
-    BlendFactor, Capability, ClearMask, CompareFunc, Context, FramebufferDesc, PrimitiveMode, StencilOp, VertexArrays,
+    Backend, BlendFactor, Capability, ClearMask, CompareFunc, Context, FramebufferDesc, PrimitiveMode, StencilOp,
+    VertexArrays,
 };
+
+mod common;
 
 const SIZE: u32 = 1024;
 const TRIANGLES: usize = 20_000;
 
-/// Positions (xyz) and colors (rgba) of seeded random triangles in NDC, each
-/// about 30 pixels across.
+/// Seeded random triangles in NDC, each about 30 pixels across.
 fn scene() -> (Vec<f32>, Vec<f32>) {
-    let mut seed = 0x9e37_79b9_u32;
-    let mut next = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 17;
-        seed ^= seed << 5;
-        seed as f32 / u32::MAX as f32
-    };
-    let (mut pos, mut col) = (Vec::new(), Vec::new());
-    for _ in 0..TRIANGLES {
-        let (cx, cy, z) = (next() * 2.0 - 1.0, next() * 2.0 - 1.0, next() * 2.0 - 1.0);
-        for _ in 0..3 {
-            pos.extend([cx + (next() - 0.5) * 0.06, cy + (next() - 0.5) * 0.06, z]);
-            col.extend([next(), next(), next(), 0.5 + next() * 0.5]);
-        }
-    }
-    (pos, col)
+    common::random_triangles(TRIANGLES, 0x9e37_79b9, 0.06, 0.5)
 }
 
 fn frame(gl: &mut Context, pos: &[f32], col: &[f32]) {
@@ -43,12 +31,27 @@ fn bench(c: &mut Criterion) {
     let (pos, col) = scene();
     let mut group = c.benchmark_group("frame_1024_20k_triangles");
     group.sample_size(10);
+    for backend in [Backend::Interpreter, Backend::Jit] {
+        let mut gl = depth_context(backend);
+        group.bench_function(format!("depth/{backend:?}"), |b| b.iter(|| frame(&mut gl, &pos, &col)));
+        let mut gl = all_ops_context(backend);
+        group.bench_function(format!("all_ops/{backend:?}"), |b| {
+            b.iter(|| frame(&mut gl, &pos, &col))
+        });
+    }
+    group.finish();
+}
 
+fn depth_context(backend: Backend) -> Context {
     let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(SIZE, SIZE)).unwrap();
+    gl.set_backend(backend);
     gl.enable(Capability::DepthTest).unwrap();
-    group.bench_function("depth", |b| b.iter(|| frame(&mut gl, &pos, &col)));
+    gl
+}
 
+fn all_ops_context(backend: Backend) -> Context {
     let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(SIZE, SIZE)).unwrap();
+    gl.set_backend(backend);
     gl.enable(Capability::DepthTest).unwrap();
     gl.enable(Capability::ScissorTest).unwrap();
     gl.scissor(8, 8, SIZE as i32 - 16, SIZE as i32 - 16).unwrap();
@@ -62,8 +65,7 @@ fn bench(c: &mut Criterion) {
     gl.blend_func(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha)
         .unwrap();
     gl.color_mask(true, true, true, false).unwrap();
-    group.bench_function("all_ops", |b| b.iter(|| frame(&mut gl, &pos, &col)));
-    group.finish();
+    gl
 }
 
 criterion_group!(benches, bench);

@@ -13,7 +13,10 @@ use crate::state::{
     Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, RasterState, ShadeModel, WindowRect,
 };
 use glam::{Mat4, Vec3, Vec4};
-use softgl_jit::{BlendEquation, BlendFactor, BlendKey, ColorMask, CompareFunc, LogicOp, Stage, StencilOp};
+use softgl_jit::{
+    BlendEquation, BlendFactor, BlendKey, CacheStats, ColorMask, CompareFunc, LogicOp, SpecialistCache, Stage,
+    StencilOp,
+};
 
 /// One vertex attribute array: `size` floats per element, elements `stride`
 /// floats apart (0 means tightly packed).
@@ -162,6 +165,7 @@ pub struct Context {
     begun: Option<(PrimitiveMode, Vec<InVertex>)>,
     error: Option<GlError>,
     backend: Backend,
+    specialists: SpecialistCache,
 }
 
 impl Context {
@@ -189,6 +193,7 @@ impl Context {
             begun: None,
             error: None,
             backend: Backend::from_env(),
+            specialists: SpecialistCache::from_env(),
         }
     }
 
@@ -242,6 +247,18 @@ impl Context {
     /// Chooses the back end for later draws.
     pub fn set_backend(&mut self, backend: Backend) {
         self.backend = backend;
+    }
+
+    /// What the specialist cache has done: hits, misses, evictions, failed
+    /// compiles and compile times.
+    pub fn specialist_stats(&self) -> CacheStats {
+        self.specialists.stats()
+    }
+
+    /// How many specialists to keep (at least one; `SOFTGL_SPECIALISTS` at creation,
+    /// else 64). Shrinking evicts the least recently used and frees their code.
+    pub fn set_specialist_capacity(&mut self, capacity: usize) {
+        self.specialists.set_capacity(capacity);
     }
 
     /// `glGetError`: the first error since the last call, then none.
@@ -667,7 +684,11 @@ impl Context {
         let reads_depth = key.depth.is_some();
         let mvp = *self.projection.top() * *self.modelview.top();
         let geometry = Geometry::new(&self.state, &self.fb, reads_depth, reads_color);
-        let r = FragmentStage::new(key, uniforms, self.fb.target()).and_then(|mut stage| {
+        let specialist = match self.backend {
+            Backend::Jit => self.specialists.get(&key),
+            Backend::Interpreter => None,
+        };
+        let r = FragmentStage::new(key, uniforms, self.fb.target(), specialist).and_then(|mut stage| {
             geometry.draw(&mvp, mode, count, fetch, &mut stage);
             stage.finish()
         });

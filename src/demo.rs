@@ -6,14 +6,22 @@
 
 use crate::context::Context;
 use crate::error::GlResult;
+use crate::fragment::Backend;
 use crate::framebuffer::FramebufferDesc;
 use crate::matrix::MatrixMode;
 use crate::state::{Capability, ClearMask, Face, PolygonMode, PrimitiveMode, ShadeModel};
 use softgl_jit::{BlendFactor, CompareFunc, StencilOp};
 
-/// Renders the demo scene into a new RGBA8 + D24 + S8 context of `width` × `height`.
+/// Renders the demo scene into a new RGBA8 + D24 + S8 context of `width` × `height`,
+/// on the back end `SOFTGL_BACKEND` names.
 pub fn render(width: u32, height: u32) -> GlResult<Context> {
+    render_on(Backend::from_env(), width, height)
+}
+
+/// [`render`] on the given back end.
+pub fn render_on(backend: Backend, width: u32, height: u32) -> GlResult<Context> {
     let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(width, height))?;
+    gl.set_backend(backend);
     gl.clear_color(0.0, 0.0, 0.0, 1.0)?;
     gl.clear(ClearMask::ALL)?;
     sky(&mut gl)?;

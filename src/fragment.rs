@@ -2,7 +2,7 @@
 //! to the back end for the draw's key.
 
 use crate::raster::SpanSink;
-use softgl_jit::{interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Target};
+use softgl_jit::{interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Specialist, Target};
 
 /// Spans handed to the back end at once.
 const BATCH: usize = 32;
@@ -20,15 +20,23 @@ pub enum Backend {
 impl Backend {
     /// `SOFTGL_BACKEND=interp|jit`, else the JIT.
     pub fn from_env() -> Backend {
-        match std::env::var("SOFTGL_BACKEND").as_deref() {
-            Ok("interp") | Ok("interpreter") => Backend::Interpreter,
+        Backend::parse(std::env::var("SOFTGL_BACKEND").ok().as_deref())
+    }
+
+    /// The back end a `SOFTGL_BACKEND` value names: `interp` (or `interpreter`),
+    /// else the JIT.
+    pub fn parse(value: Option<&str>) -> Backend {
+        match value.map(str::trim) {
+            Some("interp") | Some("interpreter") => Backend::Interpreter,
             _ => Backend::Jit,
         }
     }
 }
 
-/// Collects spans and runs the fragment stages over them in batches.
+/// Collects spans and runs the fragment stages over them in batches, with the
+/// key's specialist when there is one, else with the interpreter.
 pub struct FragmentStage<'t> {
+    specialist: Option<&'t Specialist>,
     key: FragmentKey,
     uniforms: FragmentUniforms,
     target: Target<'t>,
@@ -37,10 +45,17 @@ pub struct FragmentStage<'t> {
 }
 
 impl<'t> FragmentStage<'t> {
-    /// A stage for `key`, checked against `target` once here.
-    pub fn new(key: FragmentKey, uniforms: FragmentUniforms, target: Target<'t>) -> Result<Self, FragmentError> {
+    /// A stage for `key`, checked against `target` once here. `specialist`, if
+    /// given, must have been compiled for `key`; without one the interpreter runs.
+    pub fn new(
+        key: FragmentKey,
+        uniforms: FragmentUniforms,
+        target: Target<'t>,
+        specialist: Option<&'t Specialist>,
+    ) -> Result<Self, FragmentError> {
         interp::check_key(&key, &target)?;
         Ok(FragmentStage {
+            specialist: specialist.filter(|s| *s.key() == key),
             key,
             uniforms,
             target,
@@ -53,7 +68,11 @@ impl<'t> FragmentStage<'t> {
         if self.batch.is_empty() {
             return;
         }
-        if let Err(e) = interp::run(&self.key, &self.uniforms, &self.batch, &mut self.target) {
+        let r = match self.specialist {
+            Some(s) => s.run(&self.uniforms, &self.batch, &mut self.target),
+            None => interp::run(&self.key, &self.uniforms, &self.batch, &mut self.target),
+        };
+        if let Err(e) = r {
             self.error.get_or_insert(e);
         }
         self.batch.clear();

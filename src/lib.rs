@@ -35,6 +35,7 @@ pub use fragment::Backend;
 pub use framebuffer::{ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
 pub use matrix::MatrixMode;
 pub use softgl_jit::{
-    BlendEquation, BlendFactor, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp, StencilOp,
+    BlendEquation, BlendFactor, CacheStats, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
+    StencilOp,
 };
 pub use state::{Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};

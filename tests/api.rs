@@ -3,8 +3,8 @@
 
 use glam::{Mat4, Vec4};
 use softgl::{
-    Capability, ClearMask, ColorFormat, Context, DepthFormat, FramebufferDesc, Indices, MatrixMode, PrimitiveMode,
-    ReadFormat, VertexArrays,
+    Backend, Capability, ClearMask, ColorFormat, Context, DepthFormat, FramebufferDesc, Indices, MatrixMode,
+    PrimitiveMode, ReadFormat, VertexArrays,
 };
 
 #[test]
@@ -207,4 +207,43 @@ fn viewport_and_depth_range_place_geometry() {
             assert_eq!(fb.depth_at(x, y), Some(if inside { 0x80_0000 } else { 0xFF_FFFF }));
         }
     }
+}
+
+#[test]
+fn specialists_are_compiled_once_per_state_and_counted() {
+    let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(16, 16)).unwrap();
+    gl.set_backend(Backend::Jit);
+    let tri = [-1.0f32, -1.0, 0.0, 3.0, -1.0, 0.0, -1.0, 3.0, 0.0];
+    let arrays = VertexArrays::positions(3, &tri);
+    let draw = |gl: &mut Context| gl.draw_arrays(PrimitiveMode::Triangles, 0, 3, &arrays).unwrap();
+    draw(&mut gl);
+    draw(&mut gl);
+    gl.enable(Capability::DepthTest).unwrap();
+    draw(&mut gl);
+    gl.disable(Capability::DepthTest).unwrap();
+    draw(&mut gl);
+    let s = gl.specialist_stats();
+    assert_eq!((s.misses, s.hits, s.evictions, s.failures, s.resident), (2, 2, 0, 0, 2));
+    gl.set_specialist_capacity(1);
+    assert_eq!(gl.specialist_stats().evictions, 1);
+
+    // The interpreter never touches the cache.
+    let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(16, 16)).unwrap();
+    gl.set_backend(Backend::Interpreter);
+    draw(&mut gl);
+    assert_eq!(gl.specialist_stats().misses, 0);
+    assert_eq!(gl.framebuffer().pixel(8, 8), Some([255, 255, 255, 255]));
+}
+
+#[test]
+fn softgl_backend_chooses_the_back_end() {
+    assert_eq!(Backend::parse(Some("interp")), Backend::Interpreter);
+    assert_eq!(Backend::parse(Some("interpreter")), Backend::Interpreter);
+    assert_eq!(Backend::parse(Some("jit")), Backend::Jit);
+    assert_eq!(Backend::parse(None), Backend::Jit, "the JIT is the default");
+    assert_eq!(
+        Backend::parse(Some("llvm")),
+        Backend::Jit,
+        "an unknown name keeps the default"
+    );
 }

@@ -8,14 +8,22 @@
 //! expected image) to `golden-diff/` in the cargo target directory, and fails
 //! with the number of differing pixels and the largest channel difference.
 //! `SOFTGL_BLESS=1` (re)writes the stored PNGs instead; without it a missing
-//! golden is a failure.
+//! golden is a failure. Every scene is rendered on both back ends (interpreter
+//! and JIT) and both must match the same golden exactly.
 
 use image::{Rgba, RgbaImage};
+use softgl::Backend;
 use softgl::{
     BlendFactor, Capability, ClearMask, CompareFunc, Context, Face, FramebufferDesc, LogicOp, MatrixMode, PolygonMode,
     PrimitiveMode, ShadeModel, StencilOp,
 };
+use std::cell::Cell;
 use std::path::{Path, PathBuf};
+
+thread_local! {
+    /// The back end the scene being rendered on this thread uses.
+    static BACKEND: Cell<Backend> = const { Cell::new(Backend::Jit) };
+}
 
 fn golden_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("golden")
@@ -120,6 +128,7 @@ fn check_golden(name: &str, actual: &RgbaImage) {
 
 fn context(w: u32, h: u32, clear: [f32; 3]) -> Context {
     let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(w, h)).unwrap();
+    gl.set_backend(BACKEND.get());
     gl.clear_color(clear[0], clear[1], clear[2], 1.0).unwrap();
     gl.clear(ClearMask::ALL).unwrap();
     gl
@@ -509,11 +518,23 @@ fn blend_logic() -> Context {
     gl
 }
 
-/// Renders through `scene` and checks the image.
+/// Renders through `scene` on each back end and checks the images.
 fn golden(name: &str, scene: fn() -> Context) {
-    let mut gl = scene();
-    assert_eq!(gl.get_error(), None, "{name}: a GL error while rendering");
-    check_golden(name, &gl.framebuffer().to_rgba_image());
+    for backend in [Backend::Interpreter, Backend::Jit] {
+        BACKEND.set(backend);
+        let mut gl = scene();
+        assert_eq!(gl.backend(), backend);
+        assert_eq!(
+            gl.get_error(),
+            None,
+            "{name} on {backend:?}: a GL error while rendering"
+        );
+        check_golden(name, &gl.framebuffer().to_rgba_image());
+        if backend == Backend::Jit {
+            let stats = gl.specialist_stats();
+            assert!(stats.misses > 0 && stats.failures == 0, "{name}: specialists {stats:?}");
+        }
+    }
 }
 
 #[test]
@@ -543,7 +564,7 @@ fn golden_blend_logic() {
 
 #[test]
 fn golden_demo() {
-    golden("demo", || softgl::demo::render(160, 120).unwrap());
+    golden("demo", || softgl::demo::render_on(BACKEND.get(), 160, 120).unwrap());
 }
 
 #[test]

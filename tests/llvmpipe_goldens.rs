@@ -8,8 +8,8 @@
 //! at the commit that set it: lowering it is progress, raising it needs a reason.
 
 use softgl::{
-    BlendFactor, Capability, ClearMask, CompareFunc, Context, Face, FramebufferDesc, GlResult, LogicOp, MatrixMode,
-    PolygonMode, PrimitiveMode, ShadeModel, StencilOp,
+    Backend, BlendFactor, Capability, ClearMask, CompareFunc, Context, Face, FramebufferDesc, GlResult, LogicOp,
+    MatrixMode, PolygonMode, PrimitiveMode, ShadeModel, StencilOp,
 };
 use std::path::{Path, PathBuf};
 
@@ -111,7 +111,7 @@ fn stencil_op(s: &str) -> StencilOp {
 }
 
 /// Replays the trace `name` into a new context.
-fn replay(name: &str) -> Context {
+fn replay(name: &str, backend: Backend) -> Context {
     let path = dir().join(format!("s{name}.trace"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let mut gl: Option<Context> = None;
@@ -121,7 +121,9 @@ fn replay(name: &str) -> Context {
         let d = |i: usize| t[i].parse::<f64>().unwrap();
         let n = |i: usize| t[i].parse::<i32>().unwrap();
         if t[0] == "INIT" {
-            gl = Some(Context::new(FramebufferDesc::rgba8_d24s8(n(1) as u32, n(2) as u32)).unwrap());
+            let mut ctx = Context::new(FramebufferDesc::rgba8_d24s8(n(1) as u32, n(2) as u32)).unwrap();
+            ctx.set_backend(backend);
+            gl = Some(ctx);
             continue;
         }
         let g = gl.as_mut().expect("INIT comes first");
@@ -245,8 +247,34 @@ fn reference(name: &str) -> Reference {
     }
 }
 
+/// Replays scene `name` on both back ends: each must stay within `budget`
+/// of llvmpipe, and the two must be identical.
 fn check(name: &str, budget: Budget) {
-    let gl = replay(name);
+    let interp = replay(name, Backend::Interpreter);
+    let jit = replay(name, Backend::Jit);
+    let (a, b) = (interp.framebuffer(), jit.framebuffer());
+    assert!(
+        a.color_bytes() == b.color_bytes(),
+        "scene {name}: JIT colors differ from the interpreter's"
+    );
+    for y in 0..a.height() {
+        for x in 0..a.width() {
+            assert_eq!(
+                a.depth_at(x, y),
+                b.depth_at(x, y),
+                "scene {name}: JIT depth at ({x}, {y})"
+            );
+            assert_eq!(
+                a.stencil_at(x, y),
+                b.stencil_at(x, y),
+                "scene {name}: JIT stencil at ({x}, {y})"
+            );
+        }
+    }
+    check_against_llvmpipe(name, &interp, budget);
+}
+
+fn check_against_llvmpipe(name: &str, gl: &Context, budget: Budget) {
     let want = reference(name);
     let fb = gl.framebuffer();
     let (w, h) = (fb.width(), fb.height());

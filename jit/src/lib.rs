@@ -5,20 +5,26 @@
 //! [`interp`] is the reference semantics: it runs the key's [`Stage`]s over
 //! [`FragmentSpan`]s into a [`Target`]. A compiled back end (Cranelift) must leave
 //! the buffers bit-identical to it.
-#![forbid(unsafe_code)]
+#![deny(unsafe_code)]
 
+pub mod cache;
+pub mod compile;
 pub mod interp;
 pub mod key;
 pub mod pixel;
 pub mod span;
+#[allow(unsafe_code)]
+pub mod specialist;
 pub mod target;
 pub mod uniforms;
 
+pub use cache::{CacheStats, SpecialistCache};
 pub use interp::FragmentError;
 pub use key::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, FragmentKey,
     KeyError, LogicOp, Stage, StencilKey, StencilOp,
 };
 pub use span::{FragmentSpan, SPAN_MAX};
+pub use specialist::{Specialist, SpecialistError};
 pub use target::{DepthTarget, Target, TargetError};
 pub use uniforms::FragmentUniforms;

@@ -4,15 +4,17 @@
 //! (§4.1 per-fragment operations, §2.14.9 unorm conversions) with `f64` arithmetic
 //! and this file's own memory-layout rules, never with the crate's pixel helpers,
 //! so a test and the interpreter agree only if both follow the specification.
-//! Each case runs through [`softgl_jit::interp::run`] on a tiny target.
+//! Each case runs through [`softgl_jit::interp::run`] on a tiny target, and
+//! through the key's compiled specialist on a copy of it: the two must leave
+//! the buffers identical, so every case here also pins the JIT.
 
 use softgl_jit::interp::run;
 use softgl_jit::key::Stages;
 use softgl_jit::pixel::{self, BAYER4};
 use softgl_jit::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, DepthTarget,
-    FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, KeyError, LogicOp, Stage, StencilKey, StencilOp,
-    Target, SPAN_MAX,
+    FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, KeyError, LogicOp, Specialist, Stage, StencilKey,
+    StencilOp, Target, SPAN_MAX,
 };
 
 // ---------------------------------------------------------------------------
@@ -20,6 +22,7 @@ use softgl_jit::{
 // ---------------------------------------------------------------------------
 
 /// An owned depth buffer of one of the three formats.
+#[derive(Clone, Debug, PartialEq)]
 enum DepthBuf {
     D16(Vec<u16>),
     D24(Vec<u32>),
@@ -67,6 +70,7 @@ impl DepthBuf {
 }
 
 /// A framebuffer owning its buffers, tightly packed (stride = one row).
+#[derive(Clone, Debug, PartialEq)]
 struct Fb {
     width: u32,
     height: u32,
@@ -123,7 +127,22 @@ impl Fb {
         )
     }
 
+    /// Runs the interpreter on this framebuffer and the specialist on a copy,
+    /// and checks that both leave the same buffers.
     fn run(&mut self, key: &FragmentKey, u: &FragmentUniforms, spans: &[FragmentSpan]) -> Result<(), FragmentError> {
+        let mut jit = self.clone();
+        let compiled = Specialist::compile(key);
+        let r = self.run_with(|t| run(key, u, spans, t));
+        if key.validate().is_ok() {
+            let specialist = compiled.expect("a valid key compiles");
+            let rj = jit.run_with(|t| specialist.run(u, spans, t));
+            assert_eq!(rj, r, "JIT and interpreter disagree on the result for {key:?}");
+            assert!(jit == *self, "JIT and interpreter buffers differ for {key:?}");
+        }
+        r
+    }
+
+    fn run_with(&mut self, f: impl FnOnce(&mut Target<'_>) -> Result<(), FragmentError>) -> Result<(), FragmentError> {
         let stride = self.width as usize * bpp(self.format);
         let mut target = Target::new(
             self.width,
@@ -136,7 +155,7 @@ impl Fb {
         )
         .expect("buffers sized for the target")
         .with_top_down(self.top_down);
-        run(key, u, spans, &mut target)
+        f(&mut target)
     }
 
     /// Byte offset of window pixel `(x, y)`: row 0 is the bottom row in memory

@@ -1,19 +1,22 @@
 //! Fragment throughput of the per-fragment back ends, in fragments per second.
 //!
 //! Every back end runs the same work: each [`Scene`] is a key over a 256x256
-//! RGBA8 target covered by full 64-wide spans of coherent data (smooth color
-//! gradients, depth increasing with x + y), starting from the same buffers each
-//! iteration. A second back end (the JIT) is added by implementing [`Backend`]
-//! and calling [`bench_backend`] for it, so it lands in the same groups.
+//! RGBA8 target covered by 64-wide spans, starting from the same buffers each
+//! iteration, with two kinds of data: *coherent* (full spans, smooth color
+//! gradients, depth increasing with x + y) and *random* (seeded random colors,
+//! depths and coverage masks). Groups are `<scene>/<data>` with one entry per
+//! back end, so the interpreter and the JIT sit side by side.
 
 use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
 use softgl_jit::{
-    BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, DepthTarget, FragmentKey,
-    FragmentSpan, FragmentUniforms, StencilKey, StencilOp, Target, SPAN_MAX,
+    BlendFactor, BlendKey, ColorFormat, CompareFunc, DepthFormat, DepthKey, DepthTarget, FragmentKey, FragmentSpan,
+    FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target, SPAN_MAX,
 };
+
+mod common;
 
 /// Width and height of the target.
 const SIZE: u32 = 256;
@@ -44,6 +47,22 @@ impl Backend for Interpreter {
 
     fn run(&self, key: &FragmentKey, u: &FragmentUniforms, spans: &[FragmentSpan], target: &mut Target<'_>) {
         softgl_jit::interp::run(key, u, spans, target).expect("scene keys match their buffers");
+    }
+}
+
+/// Cranelift specialists, compiled once per scene outside the measurement.
+struct Jit;
+
+impl Backend for Jit {
+    const NAME: &'static str = "jit";
+    type Prepared = Specialist;
+
+    fn prepare(&self, key: &FragmentKey) -> Specialist {
+        Specialist::compile(key).expect("bench keys compile")
+    }
+
+    fn run(&self, s: &Specialist, u: &FragmentUniforms, spans: &[FragmentSpan], target: &mut Target<'_>) {
+        s.run(u, spans, target).expect("scene keys match their buffers");
     }
 }
 
@@ -80,7 +99,7 @@ struct Scene {
 
 /// Full 64-wide spans covering the target: red follows x, green y, blue and
 /// alpha the diagonal, z = (x + y) * 0x7fff grows to just under the D24 max.
-fn spans() -> Vec<FragmentSpan> {
+fn coherent_spans() -> Vec<FragmentSpan> {
     let mut spans = Vec::new();
     for y in 0..SIZE {
         for x0 in (0..SIZE).step_by(SPAN_MAX) {
@@ -92,6 +111,28 @@ fn spans() -> Vec<FragmentSpan> {
             }
             spans.push(s);
         }
+    }
+    spans
+}
+
+/// Spans over the same pixels with seeded random colors, depths (D24 range)
+/// and coverage (each fragment covered with probability 3/4).
+fn random_spans() -> Vec<FragmentSpan> {
+    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+    let mut next = move || {
+        seed ^= seed >> 12;
+        seed ^= seed << 25;
+        seed ^= seed >> 27;
+        seed.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    };
+    let mut spans = coherent_spans();
+    for s in &mut spans {
+        for i in 0..SPAN_MAX {
+            let [r, g, b, a, ..] = next().to_le_bytes();
+            (s.r[i], s.g[i], s.b[i], s.a[i]) = (r, g, b, a);
+            s.z[i] = next() as u32 & 0x00ff_ffff;
+        }
+        s.mask = next() | next();
     }
     spans
 }
@@ -118,6 +159,10 @@ fn scenes() -> Vec<Scene> {
         ..BlendKey::DEFAULT
     };
     let rgba8 = FragmentKey::new(ColorFormat::Rgba8, None, false);
+    let stencil_buffers = Buffers {
+        stencil: Some((0..SIZE * SIZE).map(|i| (i % 3) as u8).collect()),
+        ..color_only.clone()
+    };
     vec![
         Scene {
             name: "minimal",
@@ -147,24 +192,34 @@ fn scenes() -> Vec<Scene> {
             buffers: color_only.clone(),
         },
         Scene {
-            name: "all_ops",
+            name: "logic_op",
             key: FragmentKey {
-                scissor: true,
-                alpha_test: Some(CompareFunc::Greater),
+                logic_op: Some(LogicOp::Xor),
+                ..rgba8
+            },
+            uniforms: FragmentUniforms::default(),
+            buffers: color_only.clone(),
+        },
+        Scene {
+            name: "stencil_only",
+            key: FragmentKey {
                 stencil: Some(StencilKey {
-                    func: CompareFunc::Equal,
+                    func: CompareFunc::Notequal,
                     fail: StencilOp::Keep,
                     zfail: StencilOp::Keep,
                     zpass: StencilOp::Incr,
                 }),
-                depth: Some(less),
-                blend: Some(over),
-                color_mask: ColorMask {
-                    a: false,
-                    ..ColorMask::ALL
-                },
-                ..FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), true)
+                ..FragmentKey::new(ColorFormat::Rgba8, None, true)
             },
+            uniforms: FragmentUniforms {
+                stencil_ref: 1,
+                ..FragmentUniforms::default()
+            },
+            buffers: stencil_buffers,
+        },
+        Scene {
+            name: "all_ops",
+            key: common::all_ops_key(),
             uniforms: FragmentUniforms {
                 scissor: [8, 8, SIZE as i32 - 8, SIZE as i32 - 8],
                 alpha_ref: 8,
@@ -182,29 +237,34 @@ fn scenes() -> Vec<Scene> {
 /// Measures `backend` on every scene, one criterion group per scene so back
 /// ends sit side by side.
 fn bench_backend<B: Backend>(c: &mut Criterion, backend: &B) {
-    let spans = spans();
-    let fragments: u64 = spans.iter().map(|s| u64::from(s.live_mask().count_ones())).sum();
-    for scene in scenes() {
-        let prepared = backend.prepare(&scene.key);
-        let mut group = c.benchmark_group(scene.name);
-        group.throughput(Throughput::Elements(fragments));
-        group.bench_function(B::NAME, |b| {
-            b.iter_batched_ref(
-                || scene.buffers.clone(),
-                |buffers| {
-                    let mut target = buffers.target();
-                    backend.run(&prepared, &scene.uniforms, &spans, &mut target);
-                    black_box(target.color());
-                },
-                BatchSize::LargeInput,
-            );
-        });
-        group.finish();
+    for (data, spans) in [("coherent", coherent_spans()), ("random", random_spans())] {
+        let fragments: u64 = spans.iter().map(|s| u64::from(s.live_mask().count_ones())).sum();
+        for scene in scenes() {
+            let prepared = backend.prepare(&scene.key);
+            let mut group = c.benchmark_group(format!("{}/{data}", scene.name));
+            group.throughput(Throughput::Elements(fragments));
+            group.bench_function(B::NAME, |b| {
+                b.iter_batched_ref(
+                    || scene.buffers.clone(),
+                    |buffers| {
+                        let mut target = buffers.target();
+                        backend.run(&prepared, &scene.uniforms, &spans, &mut target);
+                        black_box(target.color());
+                    },
+                    BatchSize::LargeInput,
+                );
+            });
+            group.finish();
+        }
     }
 }
 
 fn interpreter(c: &mut Criterion) {
     bench_backend(c, &Interpreter);
+}
+
+fn jit(c: &mut Criterion) {
+    bench_backend(c, &Jit);
 }
 
 criterion_group! {
@@ -213,6 +273,6 @@ criterion_group! {
         .sample_size(20)
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(2));
-    targets = interpreter
+    targets = interpreter, jit
 }
 criterion_main!(benches);

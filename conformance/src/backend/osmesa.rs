@@ -1,0 +1,330 @@
+//! Mesa's OSMesa (`libOSMesa.so.8` from Debian's `libosmesa6`), loaded at run
+//! time. Runs inside a child process: the Gallium driver (`GALLIUM_DRIVER`)
+//! is fixed when the library loads.
+
+use super::{median, Outcome, Timing};
+use crate::call::{gl_enum as e, Call};
+use crate::scenes::Recording;
+use std::ffi::{c_char, c_void, CStr, CString};
+use std::time::Instant;
+
+type Ctx = *mut c_void;
+const GL_RGBA: u32 = 0x1908;
+const GL_UNSIGNED_BYTE: u32 = 0x1401;
+const GL_FLOAT: u32 = 0x1406;
+const GL_VERTEX_ARRAY: u32 = 0x8074;
+const GL_COLOR_ARRAY: u32 = 0x8076;
+const GL_RENDERER: u32 = 0x1F01;
+
+/// The library name the loader looks for.
+pub const LIBRARY: &str = "libOSMesa.so.8";
+
+macro_rules! gl_fns {
+    ($($name:ident ( $($arg:ty),* ) $(-> $ret:ty)?;)*) => {
+        /// GL entry points, from `OSMesaGetProcAddress`.
+        #[allow(non_snake_case)]
+        struct Gl { $($name: unsafe extern "C" fn($($arg),*) $(-> $ret)?,)* }
+        impl Gl {
+            fn load(get: &dyn Fn(&CStr) -> *const c_void) -> Result<Gl, String> {
+                Ok(Gl { $($name: {
+                    let name = CString::new(stringify!($name)).expect("no NUL in a GL name");
+                    let p = get(&name);
+                    if p.is_null() {
+                        return Err(format!("OSMesaGetProcAddress({}) returned NULL", stringify!($name)));
+                    }
+                    // SAFETY: Mesa returned this address for this GL entry point, whose C
+                    // signature is the one declared here (from the GL 1.x specification).
+                    unsafe { std::mem::transmute::<*const c_void, unsafe extern "C" fn($($arg),*) $(-> $ret)?>(p) }
+                },)* })
+            }
+        }
+    };
+}
+
+gl_fns! {
+    glEnable(u32);
+    glDisable(u32);
+    glClearColor(f32, f32, f32, f32);
+    glClearDepth(f64);
+    glClearStencil(i32);
+    glClear(u32);
+    glViewport(i32, i32, i32, i32);
+    glDepthRange(f64, f64);
+    glScissor(i32, i32, i32, i32);
+    glMatrixMode(u32);
+    glLoadIdentity();
+    glLoadMatrixf(*const f32);
+    glPushMatrix();
+    glPopMatrix();
+    glTranslatef(f32, f32, f32);
+    glScalef(f32, f32, f32);
+    glRotatef(f32, f32, f32, f32);
+    glFrustum(f64, f64, f64, f64, f64, f64);
+    glOrtho(f64, f64, f64, f64, f64, f64);
+    glShadeModel(u32);
+    glFrontFace(u32);
+    glCullFace(u32);
+    glPolygonMode(u32, u32);
+    glPolygonOffset(f32, f32);
+    glPointSize(f32);
+    glLineWidth(f32);
+    glAlphaFunc(u32, f32);
+    glStencilFunc(u32, i32, u32);
+    glStencilOp(u32, u32, u32);
+    glStencilMask(u32);
+    glDepthFunc(u32);
+    glDepthMask(u8);
+    glBlendFuncSeparate(u32, u32, u32, u32);
+    glBlendEquation(u32);
+    glBlendColor(f32, f32, f32, f32);
+    glLogicOp(u32);
+    glColorMask(u8, u8, u8, u8);
+    glBegin(u32);
+    glEnd();
+    glColor4f(f32, f32, f32, f32);
+    glVertex4f(f32, f32, f32, f32);
+    glEnableClientState(u32);
+    glDisableClientState(u32);
+    glVertexPointer(i32, u32, i32, *const c_void);
+    glColorPointer(i32, u32, i32, *const c_void);
+    glDrawArrays(u32, i32, i32);
+    glFinish();
+    glGetString(u32) -> *const u8;
+}
+
+type CreateContextExt = unsafe extern "C" fn(u32, i32, i32, i32, Ctx) -> Ctx;
+type MakeCurrent = unsafe extern "C" fn(Ctx, *mut c_void, u32, i32, i32) -> u8;
+type DestroyContext = unsafe extern "C" fn(Ctx);
+type GetProcAddress = unsafe extern "C" fn(*const c_char) -> *const c_void;
+
+/// The loaded library and its OSMesa entry points.
+pub struct OsMesa {
+    create: CreateContextExt,
+    make_current: MakeCurrent,
+    destroy: DestroyContext,
+    get_proc: GetProcAddress,
+    _lib: libloading::Library,
+}
+
+impl OsMesa {
+    /// Loads `libOSMesa.so.8`, or says why not.
+    pub fn load() -> Result<OsMesa, String> {
+        // SAFETY: loading Mesa runs its initialisers, which are sound to run in
+        // any process; the library stays loaded for as long as `OsMesa` lives.
+        let lib = unsafe { libloading::Library::new(LIBRARY) }
+            .map_err(|e| format!("{LIBRARY} is not installed ({e}); install Debian's libosmesa6"))?;
+        // SAFETY: these symbols are OSMesa's, with the C signatures of <GL/osmesa.h>.
+        unsafe {
+            let create = *lib
+                .get::<CreateContextExt>(b"OSMesaCreateContextExt\0")
+                .map_err(|e| e.to_string())?;
+            let make_current = *lib
+                .get::<MakeCurrent>(b"OSMesaMakeCurrent\0")
+                .map_err(|e| e.to_string())?;
+            let destroy = *lib
+                .get::<DestroyContext>(b"OSMesaDestroyContext\0")
+                .map_err(|e| e.to_string())?;
+            let get_proc = *lib
+                .get::<GetProcAddress>(b"OSMesaGetProcAddress\0")
+                .map_err(|e| e.to_string())?;
+            Ok(OsMesa {
+                create,
+                make_current,
+                destroy,
+                get_proc,
+                _lib: lib,
+            })
+        }
+    }
+
+    /// A current RGBA8 context with 24-bit depth and 8-bit stencil drawing into
+    /// its own `width` x `height` buffer.
+    pub fn context(&self, width: u32, height: u32) -> Result<Context<'_>, String> {
+        // SAFETY: plain OSMesa call; a NULL share list is allowed.
+        let ctx = unsafe { (self.create)(GL_RGBA, 24, 8, 0, std::ptr::null_mut()) };
+        if ctx.is_null() {
+            return Err("OSMesaCreateContextExt failed".into());
+        }
+        let mut buffer = vec![0u8; width as usize * height as usize * 4].into_boxed_slice();
+        // SAFETY: `buffer` holds width*height RGBA8 pixels and outlives the
+        // context (both are dropped together by `Context`, the context first).
+        let ok = unsafe {
+            (self.make_current)(
+                ctx,
+                buffer.as_mut_ptr().cast(),
+                GL_UNSIGNED_BYTE,
+                width as i32,
+                height as i32,
+            )
+        };
+        if ok == 0 {
+            // SAFETY: `ctx` came from OSMesaCreateContextExt and is not current.
+            unsafe { (self.destroy)(ctx) };
+            return Err("OSMesaMakeCurrent failed".into());
+        }
+        let get = |name: &CStr| {
+            // SAFETY: `name` is NUL-terminated; a context is current.
+            unsafe { (self.get_proc)(name.as_ptr()) }
+        };
+        let gl = Gl::load(&get)?;
+        Ok(Context {
+            mesa: self,
+            ctx,
+            buffer,
+            width,
+            height,
+            gl,
+        })
+    }
+}
+
+/// A current OSMesa context and the buffer it draws into.
+pub struct Context<'m> {
+    mesa: &'m OsMesa,
+    ctx: Ctx,
+    buffer: Box<[u8]>,
+    width: u32,
+    height: u32,
+    gl: Gl,
+}
+
+impl Drop for Context<'_> {
+    fn drop(&mut self) {
+        // SAFETY: `ctx` came from OSMesaCreateContextExt; the buffer is freed after this.
+        unsafe { (self.mesa.destroy)(self.ctx) };
+    }
+}
+
+impl Context<'_> {
+    /// `GL_RENDERER`, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+    pub fn renderer(&self) -> String {
+        // SAFETY: the context is current; glGetString returns a static C string or NULL.
+        unsafe {
+            let p = (self.gl.glGetString)(GL_RENDERER);
+            if p.is_null() {
+                String::new()
+            } else {
+                CStr::from_ptr(p.cast()).to_string_lossy().into_owned()
+            }
+        }
+    }
+
+    /// Makes every call, waits for the driver, and returns the image top row first.
+    pub fn frame(&mut self, calls: &[Call]) -> image::RgbaImage {
+        for c in calls {
+            self.call(c);
+        }
+        // SAFETY: the context is current.
+        unsafe { (self.gl.glFinish)() };
+        // OSMesa renders y up: row 0 of the buffer is the bottom row.
+        let (w, h) = (self.width, self.height);
+        let row = w as usize * 4;
+        let mut out = Vec::with_capacity(self.buffer.len());
+        for y in (0..h as usize).rev() {
+            out.extend_from_slice(&self.buffer[y * row..(y + 1) * row]);
+        }
+        image::RgbaImage::from_raw(w, h, out).expect("buffer is w*h*4 bytes")
+    }
+
+    fn call(&mut self, c: &Call) {
+        let g = &self.gl;
+        let b = |v: bool| v as u8;
+        // SAFETY: the context is current, and every argument is a plain value
+        // of the type the GL entry point takes (pointers: see DrawArrays).
+        unsafe {
+            match c {
+                Call::Enable(cap) => (g.glEnable)(e::cap(*cap)),
+                Call::Disable(cap) => (g.glDisable)(e::cap(*cap)),
+                Call::ClearColor([r, gg, bb, a]) => (g.glClearColor)(*r, *gg, *bb, *a),
+                Call::ClearDepth(d) => (g.glClearDepth)(*d),
+                Call::ClearStencil(s) => (g.glClearStencil)(*s),
+                Call::Clear(m) => (g.glClear)(e::clear_mask(*m)),
+                Call::Viewport([x, y, w, h]) => (g.glViewport)(*x, *y, *w, *h),
+                Call::DepthRange(n, f) => (g.glDepthRange)(*n, *f),
+                Call::Scissor([x, y, w, h]) => (g.glScissor)(*x, *y, *w, *h),
+                Call::MatrixMode(m) => (g.glMatrixMode)(e::matrix_mode(*m)),
+                Call::LoadIdentity => (g.glLoadIdentity)(),
+                Call::LoadMatrix(m) => (g.glLoadMatrixf)(m.as_ptr()),
+                Call::PushMatrix => (g.glPushMatrix)(),
+                Call::PopMatrix => (g.glPopMatrix)(),
+                Call::Translate([x, y, z]) => (g.glTranslatef)(*x, *y, *z),
+                Call::Scale([x, y, z]) => (g.glScalef)(*x, *y, *z),
+                Call::Rotate(a, [x, y, z]) => (g.glRotatef)(*a, *x, *y, *z),
+                Call::Frustum([l, r, bo, t, n, f]) => (g.glFrustum)(*l, *r, *bo, *t, *n, *f),
+                Call::Ortho([l, r, bo, t, n, f]) => (g.glOrtho)(*l, *r, *bo, *t, *n, *f),
+                Call::ShadeModel(m) => (g.glShadeModel)(e::shade_model(*m)),
+                Call::FrontFace(f) => (g.glFrontFace)(e::front_face(*f)),
+                Call::CullFace(f) => (g.glCullFace)(e::face(*f)),
+                Call::PolygonMode(f, m) => (g.glPolygonMode)(e::face(*f), e::polygon_mode(*m)),
+                Call::PolygonOffset(f, u) => (g.glPolygonOffset)(*f, *u),
+                Call::PointSize(s) => (g.glPointSize)(*s),
+                Call::LineWidth(w) => (g.glLineWidth)(*w),
+                Call::AlphaFunc(f, r) => (g.glAlphaFunc)(e::func(*f), *r),
+                Call::StencilFunc(f, r, m) => (g.glStencilFunc)(e::func(*f), *r, *m),
+                Call::StencilOp(a, bb, cc) => {
+                    (g.glStencilOp)(e::stencil_op(*a), e::stencil_op(*bb), e::stencil_op(*cc))
+                }
+                Call::StencilMask(m) => (g.glStencilMask)(*m),
+                Call::DepthFunc(f) => (g.glDepthFunc)(e::func(*f)),
+                Call::DepthMask(m) => (g.glDepthMask)(b(*m)),
+                Call::BlendFunc(s, d) => {
+                    (g.glBlendFuncSeparate)(e::factor(*s), e::factor(*d), e::factor(*s), e::factor(*d))
+                }
+                Call::BlendFuncSeparate([s, d, sa, da]) => {
+                    (g.glBlendFuncSeparate)(e::factor(*s), e::factor(*d), e::factor(*sa), e::factor(*da))
+                }
+                Call::BlendEquation(q) => (g.glBlendEquation)(e::equation(*q)),
+                Call::BlendColor([r, gg, bb, a]) => (g.glBlendColor)(*r, *gg, *bb, *a),
+                Call::LogicOp(o) => (g.glLogicOp)(e::logic_op(*o)),
+                Call::ColorMask([r, gg, bb, a]) => (g.glColorMask)(b(*r), b(*gg), b(*bb), b(*a)),
+                Call::Begin(m) => (g.glBegin)(e::mode(*m)),
+                Call::End => (g.glEnd)(),
+                Call::Color([r, gg, bb, a]) => (g.glColor4f)(*r, *gg, *bb, *a),
+                Call::Vertex([x, y, z, w]) => (g.glVertex4f)(*x, *y, *z, *w),
+                Call::DrawArrays {
+                    mode,
+                    positions,
+                    colors,
+                } => {
+                    // The arrays are read during glDrawArrays only, while they are borrowed.
+                    let n = positions.len().min(colors.len()) as i32;
+                    (g.glEnableClientState)(GL_VERTEX_ARRAY);
+                    (g.glEnableClientState)(GL_COLOR_ARRAY);
+                    (g.glVertexPointer)(4, GL_FLOAT, 0, positions.as_ptr().cast());
+                    (g.glColorPointer)(4, GL_FLOAT, 0, colors.as_ptr().cast());
+                    (g.glDrawArrays)(e::mode(*mode), 0, n);
+                    (g.glDisableClientState)(GL_VERTEX_ARRAY);
+                    (g.glDisableClientState)(GL_COLOR_ARRAY);
+                }
+            }
+        }
+    }
+}
+
+/// Renders a recording in a fresh context: the first frame, then `runs` more.
+pub fn render(mesa: &OsMesa, rec: &Recording, runs: usize) -> (Outcome, String) {
+    let mut ctx = match mesa.context(rec.width, rec.height) {
+        Ok(c) => c,
+        Err(e) => return (Outcome::Failed(e), String::new()),
+    };
+    let renderer = ctx.renderer();
+    let t = Instant::now();
+    let image = ctx.frame(&rec.calls);
+    let first = t.elapsed();
+    let mut times: Vec<_> = (0..runs)
+        .map(|_| {
+            let t = Instant::now();
+            ctx.frame(&rec.calls);
+            t.elapsed()
+        })
+        .collect();
+    let steady = if runs == 0 { first } else { median(&mut times) };
+    (
+        Outcome::Rendered {
+            image,
+            timing: Timing { first, steady, runs },
+            compiles: None,
+        },
+        renderer,
+    )
+}

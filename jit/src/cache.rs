@@ -1,0 +1,134 @@
+//! The specialist cache: the most recently used specialists, keyed by [`FragmentKey`].
+
+use crate::key::FragmentKey;
+use crate::specialist::{Specialist, SpecialistError};
+use lru::LruCache;
+use std::num::NonZeroUsize;
+use std::time::{Duration, Instant};
+
+/// Specialists kept when neither the API nor `SOFTGL_SPECIALISTS` says otherwise.
+pub const DEFAULT_CAPACITY: usize = 64;
+
+/// Compile times kept for the median: the most recent ones.
+const MEDIAN_WINDOW: usize = 4096;
+
+/// What the cache has done so far.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct CacheStats {
+    /// Lookups that found the key (compiled or known to fail).
+    pub hits: u64,
+    /// Lookups that had to compile.
+    pub misses: u64,
+    /// Specialists dropped (and their code freed) to make room.
+    pub evictions: u64,
+    /// Keys that failed to compile: their draws ran on the interpreter.
+    pub failures: u64,
+    /// Specialists held now.
+    pub resident: usize,
+    pub capacity: usize,
+    /// Time spent compiling, in all.
+    pub total_compile: Duration,
+    /// Median time of one compile (over the last 4096), if any happened.
+    pub median_compile: Option<Duration>,
+}
+
+/// An LRU cache of specialists. A key that failed to compile is remembered as
+/// failed (so it is not compiled again on every draw) until it is evicted.
+pub struct SpecialistCache {
+    lru: LruCache<FragmentKey, Option<Specialist>>,
+    stats: CacheStats,
+    compile_ns: Vec<u64>,
+    compiler: Compiler,
+}
+
+/// How a cache makes a specialist from a key.
+pub type Compiler = fn(&FragmentKey) -> Result<Specialist, SpecialistError>;
+
+impl SpecialistCache {
+    /// A cache holding at most `capacity` specialists (at least one).
+    pub fn new(capacity: usize) -> SpecialistCache {
+        SpecialistCache::with_compiler(capacity, Specialist::compile)
+    }
+
+    /// A cache that makes specialists with `compiler` (tests use it to make
+    /// compiles fail; the normal one is [`Specialist::compile`]).
+    pub fn with_compiler(capacity: usize, compiler: Compiler) -> SpecialistCache {
+        let cap = NonZeroUsize::new(capacity).unwrap_or(NonZeroUsize::MIN);
+        SpecialistCache {
+            lru: LruCache::new(cap),
+            stats: CacheStats {
+                capacity: cap.get(),
+                ..CacheStats::default()
+            },
+            compile_ns: Vec::new(),
+            compiler,
+        }
+    }
+
+    /// A cache of `SOFTGL_SPECIALISTS` specialists, else [`DEFAULT_CAPACITY`].
+    pub fn from_env() -> SpecialistCache {
+        SpecialistCache::new(capacity_from(std::env::var("SOFTGL_SPECIALISTS").ok().as_deref()))
+    }
+
+    /// Changes the capacity; specialists beyond it are evicted, least recent first.
+    pub fn set_capacity(&mut self, capacity: usize) {
+        let cap = NonZeroUsize::new(capacity).unwrap_or(NonZeroUsize::MIN);
+        let before = self.lru.len();
+        self.lru.resize(cap);
+        self.stats.evictions += (before - self.lru.len()) as u64;
+        self.stats.capacity = cap.get();
+    }
+
+    /// The specialist for `key` (a normalized, valid key), compiling it on a miss;
+    /// `None` when it cannot be compiled.
+    pub fn get(&mut self, key: &FragmentKey) -> Option<&Specialist> {
+        if self.lru.contains(key) {
+            self.stats.hits += 1;
+        } else {
+            self.stats.misses += 1;
+            let start = Instant::now();
+            let compiled = (self.compiler)(key).ok();
+            let took = start.elapsed();
+            self.stats.total_compile += took;
+            let ns = took.as_nanos() as u64;
+            if self.compile_ns.len() < MEDIAN_WINDOW {
+                self.compile_ns.push(ns);
+            } else {
+                self.compile_ns[(self.stats.misses as usize) % MEDIAN_WINDOW] = ns;
+            }
+            if compiled.is_none() {
+                self.stats.failures += 1;
+            }
+            if self.lru.push(*key, compiled).is_some_and(|(k, _)| k != *key) {
+                self.stats.evictions += 1;
+            }
+        }
+        self.lru.get(key).and_then(Option::as_ref)
+    }
+
+    /// The counters, with the median compile time.
+    pub fn stats(&self) -> CacheStats {
+        let mut ns = self.compile_ns.clone();
+        ns.sort_unstable();
+        CacheStats {
+            resident: self.lru.len(),
+            median_compile: ns.get(ns.len() / 2).map(|&n| Duration::from_nanos(n)),
+            ..self.stats.clone()
+        }
+    }
+}
+
+/// The capacity a `SOFTGL_SPECIALISTS` value asks for: a positive integer, else
+/// [`DEFAULT_CAPACITY`].
+pub fn capacity_from(value: Option<&str>) -> usize {
+    value
+        .and_then(|v| v.trim().parse().ok())
+        .filter(|&n: &usize| n > 0)
+        .unwrap_or(DEFAULT_CAPACITY)
+}
+
+impl std::fmt::Debug for SpecialistCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SpecialistCache").field("stats", &self.stats()).finish()
+    }
+}

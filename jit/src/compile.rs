@@ -1,0 +1,900 @@
+//! The Cranelift compiler: a [`FragmentKey`] becomes one native function that
+//! runs the key's stages over one span, four fragments at a time.
+//!
+//! Every fragment value lives in an `i32x4` (one lane per fragment): colors as
+//! bytes `0..=255`, depth as the stored integer, stencil as a byte. Tests produce
+//! lane masks (all ones or all zeros) that narrow the live mask; writes select
+//! between the new and the stored value with the live mask, so no fragment takes
+//! a branch of its own. A group of four whose live lanes all die skips the rest
+//! of the stages. x86-64 Cranelift has 128-bit vectors only, so four 32-bit lanes
+//! is the widest group that keeps depth in one register.
+//!
+//! The function reads and writes whole groups of four pixels from the pointers
+//! in [`SpanCall`]: the caller (the `specialist` module) guarantees that
+//! `4 * groups` pixels are addressable from each of them.
+
+use crate::key::{
+    BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
+    Stage, StencilKey, StencilOp,
+};
+use crate::pixel;
+use crate::span::FragmentSpan;
+use crate::uniforms::FragmentUniforms;
+use cranelift_codegen::ir::condcodes::IntCC;
+use cranelift_codegen::ir::immediates::V128Imm;
+use cranelift_codegen::ir::{types, AbiParam, Block, InstBuilder, MemFlagsData, Signature, Type, Value};
+use cranelift_codegen::isa::OwnedTargetIsa;
+use cranelift_codegen::settings::{self, Configurable};
+use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
+use std::mem::offset_of;
+
+const I32X4: Type = types::I32X4;
+
+/// What the compiled function is given for one span. `#[repr(C)]`: the
+/// generated code reads its fields at their `offset_of!` offsets.
+#[repr(C)]
+#[derive(Debug)]
+pub struct SpanCall {
+    pub span: *const FragmentSpan,
+    /// The color of pixel `(span.x, span.y)`.
+    pub color: *mut u8,
+    /// The depth value of pixel `(span.x, span.y)` (`u16` or `u32`), or null.
+    pub depth: *mut u8,
+    /// The stencil value of pixel `(span.x, span.y)`, or null.
+    pub stencil: *mut u8,
+    /// Fragments to process: covered and inside the target.
+    pub live: u64,
+    /// Groups of four lanes to visit, from lane 0.
+    pub groups: u32,
+    pub _pad: u32,
+    /// The dither bias of lanes `0..4` (the pattern repeats every four pixels).
+    pub dither: [u32; 4],
+}
+
+/// The signature of a compiled specialist.
+pub type SpanFn = unsafe extern "C" fn(call: *const SpanCall, uniforms: *const FragmentUniforms);
+
+/// Why a key could not be compiled.
+#[derive(Debug, thiserror::Error)]
+pub enum CompileError {
+    #[error("no Cranelift back end for this CPU: {0}")]
+    Isa(String),
+    #[error("Cranelift rejected the specialist: {0}")]
+    Module(#[from] Box<cranelift_module::ModuleError>),
+}
+
+/// The host ISA with the flags specialists are compiled with. `opt_level=none`:
+/// the generator already emits each constant and factor once per group, so
+/// Cranelift's e-graph pass bought only 2% of run time for 50% more compile time
+/// (all-ops key on this 2-core machine: 204 µs and 430 Mfragments/s without it,
+/// 309 µs and 440 with it; the register allocator is most of what is left).
+/// The IR verifier runs only in debug builds (it adds 30-60%).
+pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
+    let mut flags = settings::builder();
+    let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
+    set(&mut flags, "opt_level", "none")?;
+    set(
+        &mut flags,
+        "enable_verifier",
+        if cfg!(debug_assertions) { "true" } else { "false" },
+    )?;
+    set(&mut flags, "is_pic", "false")?;
+    let isa = cranelift_native::builder().map_err(|e| CompileError::Isa(e.to_string()))?;
+    isa.finish(settings::Flags::new(flags))
+        .map_err(|e| CompileError::Isa(e.to_string()))
+}
+
+/// The signature of [`SpanFn`] for `isa`.
+pub fn signature(isa: &OwnedTargetIsa) -> Signature {
+    let ptr = isa.pointer_type();
+    let mut sig = Signature::new(isa.default_call_conv());
+    sig.params.push(AbiParam::new(ptr));
+    sig.params.push(AbiParam::new(ptr));
+    sig
+}
+
+/// Builds the body of `key`'s specialist into `func` (whose signature is [`signature`]).
+/// The key must be valid ([`FragmentKey::validate`]).
+pub fn build(key: &FragmentKey, isa: &OwnedTargetIsa, func: &mut cranelift_codegen::ir::Function) {
+    let mut fctx = FunctionBuilderContext::new();
+    let b = FunctionBuilder::new(func, &mut fctx);
+    let mut g = Gen::new(key, isa.pointer_type(), b);
+    g.emit();
+    g.b.seal_all_blocks();
+    g.b.finalize(isa.frontend_config());
+}
+
+/// Loads that may not trap (the caller guarantees the addresses) and need no alignment.
+fn mem() -> MemFlagsData {
+    MemFlagsData::new().with_notrap()
+}
+
+/// Little-endian lane reinterpretation.
+fn le() -> MemFlagsData {
+    MemFlagsData::new().with_endianness(cranelift_codegen::ir::Endianness::Little)
+}
+
+/// A blend factor, with the two constant ones kept symbolic so they cost nothing.
+#[derive(Clone, Copy)]
+enum Factor {
+    Zero,
+    One,
+    Value(Value),
+}
+
+/// Per-span values loaded once in the entry block.
+struct SpanValues {
+    span: Value,
+    color: Value,
+    depth: Value,
+    stencil: Value,
+    live: Value,
+    groups: Value,
+    x0: Value,
+}
+
+/// The fragment values of one group of four, as the stages update them.
+struct Group {
+    live: Value,
+    rgba: [Value; 4],
+    packed: Option<Value>,
+    /// The stored color, packed, once loaded.
+    dst: Option<Value>,
+    /// The stencil values of the group, once loaded, and whether they changed.
+    stencil: Option<(Value, bool)>,
+    color_p: Value,
+    depth_p: Value,
+    stencil_p: Value,
+    lane0: Value,
+}
+
+struct Gen<'a> {
+    key: FragmentKey,
+    ptr: Type,
+    b: FunctionBuilder<'a>,
+    /// Splatted constants of the current group, made once each: fewer values
+    /// for the register allocator, which is most of the compile time.
+    consts: Vec<(i64, Value)>,
+    /// `255 - v` of the current blend, by `v`.
+    inverses: Vec<(Value, Value)>,
+}
+
+impl<'a> Gen<'a> {
+    fn new(key: &FragmentKey, ptr: Type, b: FunctionBuilder<'a>) -> Gen<'a> {
+        Gen {
+            key: *key,
+            ptr,
+            b,
+            consts: Vec::new(),
+            inverses: Vec::new(),
+        }
+    }
+
+    fn emit(&mut self) {
+        let entry = self.b.create_block();
+        self.b.append_block_params_for_function_params(entry);
+        self.b.switch_to_block(entry);
+        let call = self.b.block_params(entry)[0];
+        let u = self.b.block_params(entry)[1];
+        let ptr = self.ptr;
+
+        let load_ptr = |g: &mut Self, off: usize| g.b.ins().load(ptr, mem(), call, off as i32);
+        let span = load_ptr(self, offset_of!(SpanCall, span));
+        let color = load_ptr(self, offset_of!(SpanCall, color));
+        let depth = load_ptr(self, offset_of!(SpanCall, depth));
+        let stencil = load_ptr(self, offset_of!(SpanCall, stencil));
+        let live = self
+            .b
+            .ins()
+            .load(types::I64, mem(), call, offset_of!(SpanCall, live) as i32);
+        let groups = self
+            .b
+            .ins()
+            .load(types::I32, mem(), call, offset_of!(SpanCall, groups) as i32);
+        let x0 = self
+            .b
+            .ins()
+            .load(types::I32, mem(), span, offset_of!(FragmentSpan, x) as i32);
+        let sv = SpanValues {
+            span,
+            color,
+            depth,
+            stencil,
+            live,
+            groups,
+            x0,
+        };
+        let exit = self.b.create_block();
+
+        // The scissor's rows are tested once per span.
+        if self.key.scissor {
+            let y = self
+                .b
+                .ins()
+                .load(types::I32, mem(), span, offset_of!(FragmentSpan, y) as i32);
+            let sy0 = self.uniform_i32(u, offset_of!(FragmentUniforms, scissor) + 4);
+            let sy1 = self.uniform_i32(u, offset_of!(FragmentUniforms, scissor) + 12);
+            let lo = self.b.ins().icmp(IntCC::SignedGreaterThanOrEqual, y, sy0);
+            let hi = self.b.ins().icmp(IntCC::SignedLessThan, y, sy1);
+            let inside = self.b.ins().band(lo, hi);
+            let go = self.b.create_block();
+            self.b.ins().brif(inside, go, &[], exit, &[]);
+            self.b.switch_to_block(go);
+        }
+
+        // for g in 0..groups
+        let head = self.b.create_block();
+        let gi = self.b.append_block_param(head, types::I32);
+        let zero = self.b.ins().iconst(types::I32, 0);
+        self.b.ins().jump(head, &[zero.into()]);
+        self.b.switch_to_block(head);
+        let more = self.b.ins().icmp(IntCC::UnsignedLessThan, gi, sv.groups);
+        let body = self.b.create_block();
+        self.b.ins().brif(more, body, &[], exit, &[]);
+
+        self.b.switch_to_block(body);
+        let next = self.b.create_block();
+        let shift = self.b.ins().ishl_imm_u(gi, 2);
+        let shift64 = self.b.ins().uextend(types::I64, shift);
+        let bits = self.b.ins().ushr(sv.live, shift64);
+        let bits = self.b.ins().ireduce(types::I32, bits);
+        let bits = self.b.ins().band_imm_u(bits, 15);
+        let work = self.b.create_block();
+        self.b.ins().brif(bits, work, &[], next, &[]);
+
+        self.b.switch_to_block(work);
+        // Uniforms are loaded in each group rather than once per span: keeping a
+        // dozen splats live across the loop costs more register-allocation time
+        // than the loads (which hit L1) cost at run time.
+        self.consts.clear();
+        let uniforms = Uniforms::load(self, u, call);
+        let group = self.group(&sv, gi, bits);
+        self.stages(group, &sv, &uniforms, next);
+
+        self.b.switch_to_block(next);
+        let g1 = self.b.ins().iadd_imm_u(gi, 1);
+        self.b.ins().jump(head, &[g1.into()]);
+
+        self.b.switch_to_block(exit);
+        self.b.ins().return_(&[]);
+    }
+
+    fn uniform_i32(&mut self, u: Value, off: usize) -> Value {
+        self.b.ins().load(types::I32, mem(), u, off as i32)
+    }
+
+    fn uniform_u8(&mut self, u: Value, off: usize) -> Value {
+        self.b.ins().uload8(types::I32, mem(), u, off as i32)
+    }
+
+    fn splat(&mut self, v: i64) -> Value {
+        if let Some(&(_, c)) = self.consts.iter().find(|(k, _)| *k == v) {
+            return c;
+        }
+        let s = self.b.ins().iconst(types::I32, v);
+        let c = self.b.ins().splat(I32X4, s);
+        self.consts.push((v, c));
+        c
+    }
+
+    fn vconst(&mut self, lanes: [u32; 4]) -> Value {
+        let mut bytes = [0u8; 16];
+        for (i, l) in lanes.iter().enumerate() {
+            bytes[i * 4..i * 4 + 4].copy_from_slice(&l.to_le_bytes());
+        }
+        let c = self.b.func.dfg.constants.insert(V128Imm(bytes).to_vec().into());
+        self.b.ins().vconst(I32X4, c)
+    }
+
+    fn vconst_bytes(&mut self, bytes: [u8; 16]) -> Value {
+        let c = self.b.func.dfg.constants.insert(bytes.to_vec().into());
+        self.b.ins().vconst(types::I8X16, c)
+    }
+
+    /// The lane mask of group `g` and its span data.
+    fn group(&mut self, sv: &SpanValues, gi: Value, bits: Value) -> Group {
+        let bits_v = self.b.ins().splat(I32X4, bits);
+        let lane_bits = self.vconst([1, 2, 4, 8]);
+        let sel = self.b.ins().band(bits_v, lane_bits);
+        let zero = self.splat(0);
+        let live = self.b.ins().icmp(IntCC::NotEqual, sel, zero);
+        let lane0 = self.b.ins().ishl_imm_u(gi, 2);
+        let lane0_p = self.b.ins().uextend(self.ptr, lane0);
+        let bpp = self.key.color_format.bytes_per_pixel() as i64;
+        let off = self.b.ins().imul_imm_u(lane0_p, bpp);
+        let color_p = self.b.ins().iadd(sv.color, off);
+        let dbytes = match self.key.depth_format {
+            Some(DepthFormat::D16) => 2,
+            _ => 4,
+        };
+        let off = self.b.ins().imul_imm_u(lane0_p, dbytes);
+        let depth_p = self.b.ins().iadd(sv.depth, off);
+        let stencil_p = self.b.ins().iadd(sv.stencil, lane0_p);
+        Group {
+            live,
+            rgba: [zero; 4],
+            packed: None,
+            dst: None,
+            stencil: None,
+            color_p,
+            depth_p,
+            stencil_p,
+            lane0,
+        }
+    }
+
+    /// Channel `c` (0 = red .. 3 = alpha) of the group's fragments.
+    fn span_channel(&mut self, sv: &SpanValues, lane0: Value, c: usize) -> Value {
+        let field = [
+            offset_of!(FragmentSpan, r),
+            offset_of!(FragmentSpan, g),
+            offset_of!(FragmentSpan, b),
+            offset_of!(FragmentSpan, a),
+        ][c];
+        let lane0_p = self.b.ins().uextend(self.ptr, lane0);
+        let p = self.b.ins().iadd(sv.span, lane0_p);
+        let x = self.b.ins().uload8x8(mem(), p, field as i32);
+        self.b.ins().uwiden_low(x)
+    }
+
+    fn stages(&mut self, mut g: Group, sv: &SpanValues, u: &Uniforms, next: Block) {
+        let stages = self.key.stages();
+        let needs_color = stages
+            .as_slice()
+            .iter()
+            .any(|s| matches!(s, Stage::Pack { .. } | Stage::Blend(_)));
+        let needs_alpha = needs_color || self.key.alpha_test.is_some();
+        if needs_color {
+            for c in 0..3 {
+                g.rgba[c] = self.span_channel(sv, g.lane0, c);
+            }
+        }
+        if needs_alpha {
+            g.rgba[3] = self.span_channel(sv, g.lane0, 3);
+        }
+        for stage in stages.as_slice() {
+            match *stage {
+                Stage::Scissor => {
+                    let x = self.b.ins().iadd(sv.x0, g.lane0);
+                    let x = self.b.ins().splat(I32X4, x);
+                    let idx = self.vconst([0, 1, 2, 3]);
+                    let x = self.b.ins().iadd(x, idx);
+                    let lo = self.b.ins().icmp(IntCC::SignedGreaterThanOrEqual, x, u.scissor_x0);
+                    let hi = self.b.ins().icmp(IntCC::SignedLessThan, x, u.scissor_x1);
+                    let inside = self.b.ins().band(lo, hi);
+                    g.live = self.b.ins().band(g.live, inside);
+                    self.skip_if_dead(&g, next);
+                }
+                Stage::AlphaTest(func) => {
+                    let pass = self.compare(func, g.rgba[3], u.alpha_ref);
+                    g.live = self.b.ins().band(g.live, pass);
+                    self.skip_if_dead(&g, next);
+                }
+                Stage::StencilTest { stencil, depth_on } => {
+                    if !self.key.stencil_buffer {
+                        continue;
+                    }
+                    let s = self.load_stencil(&mut g);
+                    let masked = self.b.ins().band(s, u.stencil_value_mask);
+                    let pass = self.compare(stencil.func, u.stencil_ref_masked, masked);
+                    let fail = self.b.ins().band_not(g.live, pass);
+                    let mut s_new = self.stencil_select(stencil.fail, fail, s, u);
+                    let passed = self.b.ins().band(g.live, pass);
+                    if !depth_on {
+                        s_new = self.stencil_select(stencil.zpass, passed, s_new, u);
+                    }
+                    let changed = stencil.fail != StencilOp::Keep || (!depth_on && stencil.zpass != StencilOp::Keep);
+                    g.stencil = Some((s_new, changed));
+                    self.store_stencil(&mut g);
+                    g.live = passed;
+                    self.skip_if_dead(&g, next);
+                }
+                Stage::DepthTest { depth, stencil } => {
+                    let Some(format) = self.key.depth_format else { continue };
+                    let max = self.splat(i64::from(format.max_value()));
+                    let lane0_p = self.b.ins().uextend(self.ptr, g.lane0);
+                    let zoff = self.b.ins().imul_imm_u(lane0_p, 4);
+                    let zp = self.b.ins().iadd(sv.span, zoff);
+                    let z = self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32);
+                    let z = self.b.ins().umin(z, max);
+                    let stored = self.load_depth(format, g.depth_p);
+                    let pass = self.compare(depth.func, z, stored);
+                    let pass = self.b.ins().band(pass, g.live);
+                    if depth.write {
+                        let out = self.b.ins().bitselect(pass, z, stored);
+                        self.store_depth(format, g.depth_p, out);
+                    }
+                    if let (Some(StencilKey { zfail, zpass, .. }), true) = (stencil, self.key.stencil_buffer) {
+                        let s = self.load_stencil(&mut g);
+                        let zfailed = self.b.ins().band_not(g.live, pass);
+                        let s1 = self.stencil_select(zfail, zfailed, s, u);
+                        let s2 = self.stencil_select(zpass, pass, s1, u);
+                        let changed = zfail != StencilOp::Keep || zpass != StencilOp::Keep;
+                        let was = g.stencil.is_some_and(|(_, c)| c);
+                        g.stencil = Some((s2, changed || was));
+                        self.store_stencil(&mut g);
+                    }
+                    g.live = pass;
+                    self.skip_if_dead(&g, next);
+                }
+                Stage::Blend(blend) => {
+                    let dst = self.load_dst(&mut g);
+                    let d = self.unpack(dst);
+                    g.rgba = self.blend(&blend, g.rgba, d, u);
+                }
+                Stage::Pack { dither } => {
+                    let bias = if dither { u.dither } else { self.splat(127) };
+                    g.packed = Some(self.pack(g.rgba, bias));
+                }
+                Stage::LogicOp(op) => {
+                    let dst = self.load_dst(&mut g);
+                    let s = g.packed.expect("Pack precedes LogicOp in every stage list");
+                    g.packed = Some(self.logic_op(op, s, dst));
+                }
+                Stage::ColorWrite(mask) => {
+                    let dst = self.load_dst(&mut g);
+                    let s = g.packed.expect("Pack precedes ColorWrite in every stage list");
+                    let format = self.key.color_format;
+                    let bits = pixel::mask_bits(format, mask);
+                    let value = if bits == pixel::mask_bits(format, ColorMask::ALL) {
+                        s
+                    } else {
+                        let m = self.splat(i64::from(bits));
+                        self.b.ins().bitselect(m, s, dst)
+                    };
+                    let out = self.b.ins().bitselect(g.live, value, dst);
+                    self.store_color(g.color_p, out);
+                }
+            }
+        }
+        self.b.ins().jump(next, &[]);
+    }
+
+    /// Ends the group when no lane is live any more.
+    fn skip_if_dead(&mut self, g: &Group, next: Block) {
+        let any = self.b.ins().vany_true(g.live);
+        let go = self.b.create_block();
+        self.b.ins().brif(any, go, &[], next, &[]);
+        self.b.switch_to_block(go);
+    }
+
+    /// Lanes where `incoming <func> stored` holds (unsigned), as a lane mask.
+    fn compare(&mut self, func: CompareFunc, incoming: Value, stored: Value) -> Value {
+        let cc = match func {
+            CompareFunc::Never => return self.splat(0),
+            CompareFunc::Always => return self.splat(-1),
+            CompareFunc::Less => IntCC::UnsignedLessThan,
+            CompareFunc::Equal => IntCC::Equal,
+            CompareFunc::Lequal => IntCC::UnsignedLessThanOrEqual,
+            CompareFunc::Greater => IntCC::UnsignedGreaterThan,
+            CompareFunc::Notequal => IntCC::NotEqual,
+            CompareFunc::Gequal => IntCC::UnsignedGreaterThanOrEqual,
+        };
+        self.b.ins().icmp(cc, incoming, stored)
+    }
+
+    fn load_stencil(&mut self, g: &mut Group) -> Value {
+        if let Some((s, _)) = g.stencil {
+            return s;
+        }
+        let word = self.b.ins().load(types::I32, mem(), g.stencil_p, 0);
+        let v = self.b.ins().scalar_to_vector(I32X4, word);
+        let bytes = self.b.ins().bitcast(types::I8X16, le(), v);
+        let halves = self.b.ins().uwiden_low(bytes);
+        let s = self.b.ins().uwiden_low(halves);
+        g.stencil = Some((s, false));
+        s
+    }
+
+    fn store_stencil(&mut self, g: &mut Group) {
+        let Some((s, true)) = g.stencil else { return };
+        let halves = self.b.ins().unarrow(s, s);
+        let bytes = self.b.ins().unarrow(halves, halves);
+        let words = self.b.ins().bitcast(I32X4, le(), bytes);
+        let word = self.b.ins().extractlane(words, 0);
+        self.b.ins().store(mem(), word, g.stencil_p, 0);
+    }
+
+    /// `op` applied (through the write mask) in the lanes of `mask`; `s` elsewhere.
+    fn stencil_select(&mut self, op: StencilOp, mask: Value, s: Value, u: &Uniforms) -> Value {
+        let new = match op {
+            StencilOp::Keep => return s,
+            StencilOp::Zero => self.splat(0),
+            StencilOp::Replace => u.stencil_ref,
+            StencilOp::Incr => {
+                let one = self.splat(1);
+                let max = self.splat(255);
+                let v = self.b.ins().iadd(s, one);
+                self.b.ins().umin(v, max)
+            }
+            StencilOp::Decr => {
+                let one = self.splat(1);
+                let zero = self.splat(0);
+                let v = self.b.ins().isub(s, one);
+                self.b.ins().smax(v, zero)
+            }
+            StencilOp::Invert => {
+                let ff = self.splat(255);
+                self.b.ins().bxor(s, ff)
+            }
+            StencilOp::IncrWrap => {
+                let one = self.splat(1);
+                let ff = self.splat(255);
+                let v = self.b.ins().iadd(s, one);
+                self.b.ins().band(v, ff)
+            }
+            StencilOp::DecrWrap => {
+                let one = self.splat(1);
+                let ff = self.splat(255);
+                let v = self.b.ins().isub(s, one);
+                self.b.ins().band(v, ff)
+            }
+        };
+        let written = self.b.ins().bitselect(u.stencil_write_mask, new, s);
+        self.b.ins().bitselect(mask, written, s)
+    }
+
+    fn load_depth(&mut self, format: DepthFormat, p: Value) -> Value {
+        match format {
+            DepthFormat::D16 => self.b.ins().uload16x4(mem(), p, 0),
+            DepthFormat::D24 | DepthFormat::D32 => self.b.ins().load(I32X4, mem(), p, 0),
+        }
+    }
+
+    fn store_depth(&mut self, format: DepthFormat, p: Value, v: Value) {
+        match format {
+            DepthFormat::D16 => self.store_low_halves(p, v),
+            DepthFormat::D24 | DepthFormat::D32 => {
+                self.b.ins().store(mem(), v, p, 0);
+            }
+        }
+    }
+
+    /// Stores the low 16 bits of each lane of `v` as four `u16` at `p`.
+    fn store_low_halves(&mut self, p: Value, v: Value) {
+        let m = self.splat(0xffff);
+        let v = self.b.ins().band(v, m);
+        let halves = self.b.ins().unarrow(v, v);
+        let quads = self.b.ins().bitcast(types::I64X2, le(), halves);
+        let q = self.b.ins().extractlane(quads, 0);
+        self.b.ins().store(mem(), q, p, 0);
+    }
+
+    /// The stored colors of the group, packed as [`pixel::load`] reads them.
+    fn load_dst(&mut self, g: &mut Group) -> Value {
+        if let Some(d) = g.dst {
+            return d;
+        }
+        let p = g.color_p;
+        let d = match self.key.color_format {
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 => self.b.ins().load(I32X4, mem(), p, 0),
+            ColorFormat::Rgb565 => self.b.ins().uload16x4(mem(), p, 0),
+            ColorFormat::Rgb8 => {
+                let lo = self.b.ins().load(types::I64, mem(), p, 0);
+                let hi = self.b.ins().uload32(mem(), p, 8);
+                let v = self.b.ins().scalar_to_vector(types::I64X2, lo);
+                let v = self.b.ins().insertlane(v, hi, 1);
+                let bytes = self.b.ins().bitcast(types::I8X16, le(), v);
+                let zero = self.vconst_bytes([0; 16]);
+                // Pixel i's three bytes into lane i, the fourth byte zero (index 16: from `zero`).
+                let mask = [0, 1, 2, 16, 3, 4, 5, 16, 6, 7, 8, 16, 9, 10, 11, 16];
+                let m = self.b.func.dfg.immediates.push(mask.to_vec().into());
+                let spread = self.b.ins().shuffle(bytes, zero, m);
+                self.b.ins().bitcast(I32X4, le(), spread)
+            }
+        };
+        g.dst = Some(d);
+        d
+    }
+
+    fn store_color(&mut self, p: Value, v: Value) {
+        match self.key.color_format {
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 => {
+                self.b.ins().store(mem(), v, p, 0);
+            }
+            ColorFormat::Rgb565 => self.store_low_halves(p, v),
+            ColorFormat::Rgb8 => {
+                let bytes = self.b.ins().bitcast(types::I8X16, le(), v);
+                let mask = [0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 16, 16, 16, 16];
+                let m = self.b.func.dfg.immediates.push(mask.to_vec().into());
+                let zero = self.vconst_bytes([0; 16]);
+                let packed = self.b.ins().shuffle(bytes, zero, m);
+                let quads = self.b.ins().bitcast(types::I64X2, le(), packed);
+                let lo = self.b.ins().extractlane(quads, 0);
+                self.b.ins().store(mem(), lo, p, 0);
+                let words = self.b.ins().bitcast(I32X4, le(), packed);
+                let hi = self.b.ins().extractlane(words, 2);
+                self.b.ins().store(mem(), hi, p, 8);
+            }
+        }
+    }
+
+    /// `(v >> shift) & mask`.
+    fn field(&mut self, v: Value, shift: i64, mask: i64) -> Value {
+        let s = if shift == 0 {
+            v
+        } else {
+            self.b.ins().ushr_imm_u(v, shift)
+        };
+        let m = self.splat(mask);
+        self.b.ins().band(s, m)
+    }
+
+    /// Packed stored colors to RGBA bytes, as [`pixel::unpack`].
+    fn unpack(&mut self, v: Value) -> [Value; 4] {
+        match self.key.color_format {
+            ColorFormat::Rgba8 => {
+                let r = self.field(v, 0, 255);
+                let g = self.field(v, 8, 255);
+                let b = self.field(v, 16, 255);
+                let a = self.b.ins().ushr_imm_u(v, 24);
+                [r, g, b, a]
+            }
+            ColorFormat::Bgra8 => {
+                let b = self.field(v, 0, 255);
+                let g = self.field(v, 8, 255);
+                let r = self.field(v, 16, 255);
+                let a = self.b.ins().ushr_imm_u(v, 24);
+                [r, g, b, a]
+            }
+            ColorFormat::Rgb8 => {
+                let r = self.field(v, 0, 255);
+                let g = self.field(v, 8, 255);
+                let b = self.field(v, 16, 255);
+                [r, g, b, self.splat(255)]
+            }
+            ColorFormat::Rgb565 => {
+                let r5 = self.field(v, 11, 31);
+                let g6 = self.field(v, 5, 63);
+                let b5 = self.field(v, 0, 31);
+                let r = self.replicate(r5, 3, 2);
+                let g = self.replicate(g6, 2, 4);
+                let b = self.replicate(b5, 3, 2);
+                [r, g, b, self.splat(255)]
+            }
+        }
+    }
+
+    /// `(v << up) | (v >> down)`: bit replication to 8 bits.
+    fn replicate(&mut self, v: Value, up: i64, down: i64) -> Value {
+        let hi = self.b.ins().ishl_imm_u(v, up);
+        let lo = self.b.ins().ushr_imm_u(v, down);
+        self.b.ins().bor(hi, lo)
+    }
+
+    /// RGBA bytes to the format's packed value, as [`pixel::pack`].
+    fn pack(&mut self, [r, g, b, a]: [Value; 4], bias: Value) -> Value {
+        let place = |s: &mut Self, v: Value, shift: i64| if shift == 0 { v } else { s.b.ins().ishl_imm_u(v, shift) };
+        match self.key.color_format {
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8 => {
+                let (c0, c2) = if self.key.color_format == ColorFormat::Bgra8 {
+                    (b, r)
+                } else {
+                    (r, b)
+                };
+                let g8 = place(self, g, 8);
+                let c2 = place(self, c2, 16);
+                let v = self.b.ins().bor(c0, g8);
+                let v = self.b.ins().bor(v, c2);
+                if self.key.color_format.has_alpha() {
+                    let a = place(self, a, 24);
+                    self.b.ins().bor(v, a)
+                } else {
+                    v
+                }
+            }
+            ColorFormat::Rgb565 => {
+                let r = self.reduce(r, 31, bias);
+                let g = self.reduce(g, 63, bias);
+                let b = self.reduce(b, 31, bias);
+                let r = place(self, r, 11);
+                let g = place(self, g, 5);
+                let v = self.b.ins().bor(r, g);
+                self.b.ins().bor(v, b)
+            }
+        }
+    }
+
+    /// `(c * max + bias) / 255`, as [`pixel::reduce`]: for `n <= 65534`,
+    /// `n / 255 == (n + 1 + (n >> 8)) >> 8` (checked over the range in tests).
+    fn reduce(&mut self, c: Value, max: i64, bias: Value) -> Value {
+        let m = self.splat(max);
+        let n = self.b.ins().imul(c, m);
+        let n = self.b.ins().iadd(n, bias);
+        let hi = self.b.ins().ushr_imm_u(n, 8);
+        let n1 = self.b.ins().iadd(n, hi);
+        let one = self.splat(1);
+        let n1 = self.b.ins().iadd(n1, one);
+        self.b.ins().ushr_imm_u(n1, 8)
+    }
+
+    fn logic_op(&mut self, op: LogicOp, s: Value, d: Value) -> Value {
+        let b = &mut self.b;
+        match op {
+            LogicOp::Clear => self.splat(0),
+            LogicOp::And => b.ins().band(s, d),
+            LogicOp::AndReverse => b.ins().band_not(s, d),
+            LogicOp::Copy => s,
+            LogicOp::AndInverted => b.ins().band_not(d, s),
+            LogicOp::Noop => d,
+            LogicOp::Xor => b.ins().bxor(s, d),
+            LogicOp::Or => b.ins().bor(s, d),
+            LogicOp::Nor => {
+                let v = b.ins().bor(s, d);
+                b.ins().bnot(v)
+            }
+            LogicOp::Equiv => {
+                let v = b.ins().bxor(s, d);
+                b.ins().bnot(v)
+            }
+            LogicOp::Invert => b.ins().bnot(d),
+            LogicOp::OrReverse => b.ins().bor_not(s, d),
+            LogicOp::CopyInverted => b.ins().bnot(s),
+            LogicOp::OrInverted => b.ins().bor_not(d, s),
+            LogicOp::Nand => {
+                let v = b.ins().band(s, d);
+                b.ins().bnot(v)
+            }
+            LogicOp::Set => self.splat(-1),
+        }
+    }
+
+    /// `x * f / 255` rounded as llvmpipe: `(t + (t >> 8) + 128) >> 8`, as [`pixel::mul_unorm8`].
+    fn mul_unorm(&mut self, x: Value, f: Factor) -> Value {
+        match f {
+            Factor::Zero => self.splat(0),
+            // mul_unorm8(x, 255) == x for every byte x.
+            Factor::One => x,
+            Factor::Value(f) => {
+                let t = self.b.ins().imul(x, f);
+                let hi = self.b.ins().ushr_imm_u(t, 8);
+                let t = self.b.ins().iadd(t, hi);
+                let half = self.splat(128);
+                let t = self.b.ins().iadd(t, half);
+                self.b.ins().ushr_imm_u(t, 8)
+            }
+        }
+    }
+
+    fn inv(&mut self, v: Value) -> Factor {
+        if let Some(&(_, i)) = self.inverses.iter().find(|(k, _)| *k == v) {
+            return Factor::Value(i);
+        }
+        let ff = self.splat(255);
+        let i = self.b.ins().isub(ff, v);
+        self.inverses.push((v, i));
+        Factor::Value(i)
+    }
+
+    /// Factor `f` for channel `c`, as `interp::factor`.
+    fn factor(&mut self, f: BlendFactor, c: usize, s: [Value; 4], d: [Value; 4], k: [Value; 4]) -> Factor {
+        match f {
+            BlendFactor::Zero => Factor::Zero,
+            BlendFactor::One => Factor::One,
+            BlendFactor::SrcColor => Factor::Value(s[c]),
+            BlendFactor::OneMinusSrcColor => self.inv(s[c]),
+            BlendFactor::DstColor => Factor::Value(d[c]),
+            BlendFactor::OneMinusDstColor => self.inv(d[c]),
+            BlendFactor::SrcAlpha => Factor::Value(s[3]),
+            BlendFactor::OneMinusSrcAlpha => self.inv(s[3]),
+            BlendFactor::DstAlpha => Factor::Value(d[3]),
+            BlendFactor::OneMinusDstAlpha => self.inv(d[3]),
+            BlendFactor::ConstantColor => Factor::Value(k[c]),
+            BlendFactor::OneMinusConstantColor => self.inv(k[c]),
+            BlendFactor::ConstantAlpha => Factor::Value(k[3]),
+            BlendFactor::OneMinusConstantAlpha => self.inv(k[3]),
+            BlendFactor::SrcAlphaSaturate => {
+                if c == 3 {
+                    Factor::One
+                } else {
+                    let ff = self.splat(255);
+                    let ida = self.b.ins().isub(ff, d[3]);
+                    Factor::Value(self.b.ins().umin(s[3], ida))
+                }
+            }
+        }
+    }
+
+    fn blend(&mut self, key: &BlendKey, s: [Value; 4], d: [Value; 4], u: &Uniforms) -> [Value; 4] {
+        let k = u.blend_color;
+        self.inverses.clear();
+        let mut out = s;
+        for c in 0..4 {
+            let (sf, df, eq) = if c < 3 {
+                (key.src_rgb, key.dst_rgb, key.eq_rgb)
+            } else {
+                (key.src_alpha, key.dst_alpha, key.eq_alpha)
+            };
+            out[c] = match eq {
+                BlendEquation::Min => self.b.ins().umin(s[c], d[c]),
+                BlendEquation::Max => self.b.ins().umax(s[c], d[c]),
+                BlendEquation::Add | BlendEquation::Subtract | BlendEquation::ReverseSubtract => {
+                    let fs = self.factor(sf, c, s, d, k);
+                    let fd = self.factor(df, c, s, d, k);
+                    let ws = self.mul_unorm(s[c], fs);
+                    let wd = self.mul_unorm(d[c], fd);
+                    match eq {
+                        BlendEquation::Add => {
+                            let v = self.b.ins().iadd(ws, wd);
+                            let ff = self.splat(255);
+                            self.b.ins().umin(v, ff)
+                        }
+                        BlendEquation::Subtract => {
+                            let v = self.b.ins().isub(ws, wd);
+                            let zero = self.splat(0);
+                            self.b.ins().smax(v, zero)
+                        }
+                        _ => {
+                            let v = self.b.ins().isub(wd, ws);
+                            let zero = self.splat(0);
+                            self.b.ins().smax(v, zero)
+                        }
+                    }
+                }
+            };
+        }
+        out
+    }
+}
+
+/// Uniform values splatted once per span, for the stages that read them.
+struct Uniforms {
+    scissor_x0: Value,
+    scissor_x1: Value,
+    alpha_ref: Value,
+    stencil_ref: Value,
+    stencil_ref_masked: Value,
+    stencil_value_mask: Value,
+    stencil_write_mask: Value,
+    blend_color: [Value; 4],
+    dither: Value,
+}
+
+impl Uniforms {
+    fn load(g: &mut Gen<'_>, u: Value, call: Value) -> Uniforms {
+        let key = g.key;
+        let zero = g.splat(0);
+        let mut out = Uniforms {
+            scissor_x0: zero,
+            scissor_x1: zero,
+            alpha_ref: zero,
+            stencil_ref: zero,
+            stencil_ref_masked: zero,
+            stencil_value_mask: zero,
+            stencil_write_mask: zero,
+            blend_color: [zero; 4],
+            dither: zero,
+        };
+        let splat = |g: &mut Gen<'_>, v: Value| g.b.ins().splat(I32X4, v);
+        if key.scissor {
+            let x0 = g.uniform_i32(u, offset_of!(FragmentUniforms, scissor));
+            let x1 = g.uniform_i32(u, offset_of!(FragmentUniforms, scissor) + 8);
+            out.scissor_x0 = splat(g, x0);
+            out.scissor_x1 = splat(g, x1);
+        }
+        if key.alpha_test.is_some() {
+            let a = g.uniform_u8(u, offset_of!(FragmentUniforms, alpha_ref));
+            out.alpha_ref = splat(g, a);
+        }
+        if key.stencil.is_some() && key.stencil_buffer {
+            let r = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_ref));
+            let vm = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_value_mask));
+            let wm = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_write_mask));
+            let rm = g.b.ins().band(r, vm);
+            out.stencil_ref = splat(g, r);
+            out.stencil_value_mask = splat(g, vm);
+            out.stencil_ref_masked = splat(g, rm);
+            out.stencil_write_mask = splat(g, wm);
+        }
+        if key.blend.is_some() {
+            for c in 0..4 {
+                let v = g.uniform_u8(u, offset_of!(FragmentUniforms, blend_color) + c);
+                out.blend_color[c] = splat(g, v);
+            }
+        }
+        if key.dither && key.color_format.is_reduced() {
+            out.dither = g.b.ins().load(I32X4, mem(), call, offset_of!(SpanCall, dither) as i32);
+        }
+        out
+    }
+}

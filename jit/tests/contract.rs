@@ -1,0 +1,264 @@
+//! The contract between the back ends: for random valid keys, uniforms, spans
+//! and framebuffer contents, in every format, the buffers after a specialist
+//! runs are bit-identical to the buffers after the interpreter runs.
+//!
+//! Keys and uniforms come from proptest strategies (so failures shrink to a
+//! small key); the framebuffer and the spans come from a seeded generator whose
+//! values are drawn from small pools half the time, so that equal depths, equal
+//! stencil values, references and wrap-around edges actually occur.
+
+use proptest::prelude::*;
+use proptest::sample::select;
+use softgl_jit::interp;
+use softgl_jit::{
+    BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, DepthTarget,
+    FragmentKey, FragmentSpan, FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target, SPAN_MAX,
+};
+
+const COLOR_FORMATS: [ColorFormat; 4] = [
+    ColorFormat::Rgba8,
+    ColorFormat::Bgra8,
+    ColorFormat::Rgb8,
+    ColorFormat::Rgb565,
+];
+
+fn compare() -> impl Strategy<Value = CompareFunc> {
+    select(&CompareFunc::ALL[..])
+}
+
+fn stencil_op() -> impl Strategy<Value = StencilOp> {
+    select(&StencilOp::ALL[..])
+}
+
+fn blend_key() -> impl Strategy<Value = BlendKey> {
+    let f = || select(&BlendFactor::ALL[..]);
+    let e = || select(&BlendEquation::ALL[..]);
+    (f(), f(), f(), f(), e(), e()).prop_map(|(src_rgb, dst_rgb, src_alpha, dst_alpha, eq_rgb, eq_alpha)| BlendKey {
+        src_rgb,
+        dst_rgb,
+        src_alpha,
+        dst_alpha,
+        eq_rgb,
+        eq_alpha,
+    })
+}
+
+/// Any key, normalized (so it is valid for the buffers it names).
+fn key() -> impl Strategy<Value = FragmentKey> {
+    let buffers = (
+        select(&COLOR_FORMATS[..]),
+        prop::option::of(select(&[DepthFormat::D16, DepthFormat::D24, DepthFormat::D32][..])),
+        any::<bool>(),
+    );
+    let stencil = prop::option::of((compare(), stencil_op(), stencil_op(), stencil_op()));
+    let depth = prop::option::of((compare(), any::<bool>()));
+    let color = (
+        prop::option::of(blend_key()),
+        prop::option::of(select(&LogicOp::ALL[..])),
+        any::<bool>(),
+        any::<[bool; 4]>(),
+    );
+    (
+        buffers,
+        any::<bool>(),
+        prop::option::of(compare()),
+        stencil,
+        depth,
+        color,
+    )
+        .prop_map(
+            |((format, depth_format, stencil_buffer), scissor, alpha, stencil, depth, color)| {
+                let (blend, logic_op, dither, [r, g, b, a]) = color;
+                FragmentKey {
+                    scissor,
+                    alpha_test: alpha,
+                    stencil: stencil.map(|(func, fail, zfail, zpass)| StencilKey {
+                        func,
+                        fail,
+                        zfail,
+                        zpass,
+                    }),
+                    depth: depth.map(|(func, write)| DepthKey { func, write }),
+                    // Half the keys blend, the other half use the logic op when both are drawn.
+                    blend: if logic_op.is_some() && dither { None } else { blend },
+                    logic_op: if blend.is_some() && !dither { None } else { logic_op },
+                    dither,
+                    color_mask: ColorMask { r, g, b, a },
+                    ..FragmentKey::new(format, depth_format, stencil_buffer)
+                }
+                .normalized()
+            },
+        )
+}
+
+fn uniforms() -> impl Strategy<Value = FragmentUniforms> {
+    (
+        (-4i32..40, -4i32..8, -4i32..90, -4i32..8),
+        any::<[u8; 4]>(),
+        select(&[0u8, 1, 127, 128, 254, 255][..]),
+        select(&[0u8, 1, 2, 127, 254, 255][..]),
+        select(&[0xffu8, 0x0f, 0xf0, 0x01, 0x00, 0xa5][..]),
+        select(&[0xffu8, 0x0f, 0xf0, 0x01, 0x00, 0x5a][..]),
+    )
+        .prop_map(
+            |((x0, y0, x1, y1), blend_color, alpha_ref, stencil_ref, vm, wm)| FragmentUniforms {
+                scissor: [x0, y0, x1, y1],
+                blend_color,
+                alpha_ref,
+                stencil_ref,
+                stencil_value_mask: vm,
+                stencil_write_mask: wm,
+            },
+        )
+}
+
+/// A small deterministic generator (xorshift64*), for bulk data.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+
+    fn below(&mut self, n: u64) -> u64 {
+        self.next() % n
+    }
+
+    /// A byte: half the time from the values where the stages have edges.
+    fn byte(&mut self) -> u8 {
+        const POOL: [u8; 8] = [0, 1, 2, 127, 128, 254, 255, 0x5a];
+        if self.next() & 1 == 0 {
+            POOL[self.below(8) as usize]
+        } else {
+            self.next() as u8
+        }
+    }
+
+    /// A depth value for `max`: half the time from a pool that collides with the buffer's.
+    fn depth(&mut self, max: u32) -> u32 {
+        let pool = [0, 1, max / 2, max - 1, max, 0x1234, u32::MAX];
+        if self.next() & 1 == 0 {
+            pool[self.below(pool.len() as u64) as usize]
+        } else {
+            self.next() as u32
+        }
+    }
+}
+
+/// Owned buffers for one target.
+#[derive(Clone, Debug, PartialEq)]
+struct Buffers {
+    width: u32,
+    height: u32,
+    stride: usize,
+    top_down: bool,
+    format: ColorFormat,
+    color: Vec<u8>,
+    depth16: Option<Vec<u16>>,
+    depth32: Option<(DepthFormat, Vec<u32>)>,
+    stencil: Option<Vec<u8>>,
+}
+
+impl Buffers {
+    fn random(key: &FragmentKey, rng: &mut Rng) -> Buffers {
+        let width = 1 + rng.below(90) as u32;
+        let height = 1 + rng.below(5) as u32;
+        let bpp = key.color_format.bytes_per_pixel();
+        let stride = width as usize * bpp + rng.below(8) as usize;
+        let n = (width * height) as usize;
+        let color_len = stride * (height as usize - 1) + width as usize * bpp;
+        let color = (0..color_len).map(|_| rng.byte()).collect();
+        let (mut depth16, mut depth32) = (None, None);
+        match key.depth_format {
+            Some(DepthFormat::D16) => depth16 = Some((0..n).map(|_| rng.depth(0xffff) as u16).collect()),
+            Some(f) => depth32 = Some((f, (0..n).map(|_| rng.depth(f.max_value()) & f.max_value()).collect())),
+            None => {}
+        }
+        let stencil = key.stencil_buffer.then(|| (0..n).map(|_| rng.byte()).collect());
+        Buffers {
+            width,
+            height,
+            stride,
+            top_down: rng.next() & 1 == 0,
+            format: key.color_format,
+            color,
+            depth16,
+            depth32,
+            stencil,
+        }
+    }
+
+    fn target(&mut self) -> Target<'_> {
+        let depth = match (&mut self.depth16, &mut self.depth32) {
+            (Some(d), _) => Some(DepthTarget::D16(d)),
+            (None, Some((DepthFormat::D24, d))) => Some(DepthTarget::D24(d)),
+            (None, Some((_, d))) => Some(DepthTarget::D32(d)),
+            (None, None) => None,
+        };
+        Target::new(
+            self.width,
+            self.height,
+            self.format,
+            &mut self.color,
+            self.stride,
+            depth,
+            self.stencil.as_deref_mut(),
+        )
+        .expect("buffers sized for the target")
+        .with_top_down(self.top_down)
+    }
+}
+
+/// Spans over (and a little beyond) the target, with random coverage.
+fn spans(b: &Buffers, key: &FragmentKey, rng: &mut Rng) -> Vec<FragmentSpan> {
+    let max = key.depth_format.map_or(u32::MAX, DepthFormat::max_value);
+    (0..1 + rng.below(6))
+        .map(|_| {
+            let mut s = FragmentSpan::new(
+                rng.below(u64::from(b.width) + 6) as u32,
+                rng.below(u64::from(b.height) + 1) as u32,
+            );
+            s.len = rng.below(SPAN_MAX as u64 + 1) as u32;
+            s.mask = match rng.below(3) {
+                0 => u64::MAX,
+                _ => rng.next(),
+            };
+            for i in 0..SPAN_MAX {
+                (s.r[i], s.g[i], s.b[i], s.a[i]) = (rng.byte(), rng.byte(), rng.byte(), rng.byte());
+                s.z[i] = rng.depth(max);
+            }
+            s
+        })
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 600, ..ProptestConfig::default() })]
+
+    #[test]
+    fn jit_equals_interpreter(key in key(), u in uniforms(), seed in any::<u64>()) {
+        let mut rng = Rng(seed | 1);
+        let mut interp_buf = Buffers::random(&key, &mut rng);
+        let spans = spans(&interp_buf, &key, &mut rng);
+        let mut jit_buf = interp_buf.clone();
+        let specialist = Specialist::compile(&key).expect("a valid key compiles");
+        interp::run(&key, &u, &spans, &mut interp_buf.target()).expect("the key names the buffers");
+        specialist.run(&u, &spans, &mut jit_buf.target()).expect("the key names the buffers");
+        prop_assert_eq!(&jit_buf.color, &interp_buf.color, "color differs");
+        prop_assert_eq!(&jit_buf.depth16, &interp_buf.depth16, "depth differs");
+        prop_assert_eq!(&jit_buf.depth32, &interp_buf.depth32, "depth differs");
+        prop_assert_eq!(&jit_buf.stencil, &interp_buf.stencil, "stencil differs");
+    }
+}
+
+/// The 565 packing in compiled code divides by 255 as `(n + 1 + (n >> 8)) >> 8`;
+/// that identity must hold over every value the packing can form (`c * 63 + 247`).
+#[test]
+fn division_by_255_identity_holds_over_the_packing_range() {
+    for n in 0u32..=255 * 63 + 247 {
+        assert_eq!((n + 1 + (n >> 8)) >> 8, n / 255, "n = {n}");
+    }
+}
