@@ -171,8 +171,14 @@ pub struct Context {
 impl Context {
     /// A context drawing into a new framebuffer described by `desc`.
     pub fn new(desc: FramebufferDesc) -> GlResult<Context> {
-        let fb = Framebuffer::new(desc)?;
-        Ok(Context {
+        Ok(Context::with_framebuffer(Framebuffer::new(desc)?))
+    }
+
+    /// A context drawing into `fb` (e.g. one over lent colour memory), with
+    /// GL's initial state for its size.
+    pub fn with_framebuffer(fb: Framebuffer) -> Context {
+        let desc = *fb.desc();
+        Context {
             state: RasterState::new(desc.width, desc.height),
             fb,
             modelview: MatrixStack::new(matrix::MAX_MODELVIEW_DEPTH),
@@ -188,11 +194,40 @@ impl Context {
             error: None,
             backend: Backend::from_env(),
             specialists: SpecialistCache::from_env(),
-        })
+        }
     }
 
     pub fn framebuffer(&self) -> &Framebuffer {
         &self.fb
+    }
+
+    /// The framebuffer, for callers that lend or hand out its memory (the C ABI).
+    pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
+        &mut self.fb
+    }
+
+    /// Draws into `fb` from now on and returns the previous framebuffer. The
+    /// state (viewport, scissor box, …) is kept, as when a GL context is made
+    /// current on another drawable.
+    pub fn replace_framebuffer(&mut self, fb: Framebuffer) -> Framebuffer {
+        std::mem::replace(&mut self.fb, fb)
+    }
+
+    /// Records `error` GL-style (kept unless one is already pending), for
+    /// calls made through a layer above this API (the C ABI's unimplemented
+    /// entry points, its argument checks).
+    pub fn record_error(&mut self, error: GlError) {
+        self.error.get_or_insert(error);
+    }
+
+    /// Whether a `begin` awaits its `end`.
+    pub fn inside_begin(&self) -> bool {
+        self.begun.is_some()
+    }
+
+    /// The matrix mode `glMatrixMode` set.
+    pub fn current_matrix_mode(&self) -> MatrixMode {
+        self.matrix_mode
     }
 
     /// The rasterization and fragment state.

@@ -145,11 +145,62 @@ pub fn depth_to_unorm(z: f64, format: DepthFormat) -> u32 {
     }
 }
 
-/// Color, depth and stencil storage of a context.
+/// Color memory lent to a framebuffer by its owner (the OSMesa C ABI hands
+/// softgl the caller's buffer this way, so that it renders into it directly).
+/// Both methods return the same bytes, of the same length, every time: the
+/// framebuffer checks the length once, when the memory is lent.
+pub trait ColorMemory: Send {
+    fn bytes(&self) -> &[u8];
+    fn bytes_mut(&mut self) -> &mut [u8];
+}
+
+/// Where the color buffer lives.
+enum ColorStore {
+    Owned(Vec<u8>),
+    Lent(Box<dyn ColorMemory>),
+}
+
+impl ColorStore {
+    fn bytes(&self) -> &[u8] {
+        match self {
+            ColorStore::Owned(v) => v,
+            ColorStore::Lent(m) => m.bytes(),
+        }
+    }
+
+    fn bytes_mut(&mut self) -> &mut [u8] {
+        match self {
+            ColorStore::Owned(v) => v,
+            ColorStore::Lent(m) => m.bytes_mut(),
+        }
+    }
+}
+
+/// A clone owns a copy of the colour bytes, lent or not (a snapshot).
+impl Clone for ColorStore {
+    fn clone(&self) -> ColorStore {
+        ColorStore::Owned(self.bytes().to_vec())
+    }
+}
+
+impl std::fmt::Debug for ColorStore {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ColorStore::Owned(v) => write!(f, "Owned({} bytes)", v.len()),
+            ColorStore::Lent(m) => write!(f, "Lent({} bytes)", m.bytes().len()),
+        }
+    }
+}
+
+/// Color, depth and stencil storage of a context. Depth and stencil rows are
+/// always bottom-up and `width` values long; color rows are `color_stride`
+/// bytes apart, top-down when `color_top_down`. A clone owns its colour bytes.
 #[derive(Clone, Debug)]
 pub struct Framebuffer {
     desc: FramebufferDesc,
-    color: Vec<u8>,
+    color: ColorStore,
+    color_stride: usize,
+    color_top_down: bool,
     depth: Option<DepthBuffer>,
     stencil: Option<Vec<u8>>,
 }
@@ -160,6 +211,28 @@ impl Framebuffer {
         desc.validate()?;
         let n = desc.width as usize * desc.height as usize;
         let color = alloc(n * desc.color.bytes_per_pixel(), 0u8)?;
+        let stride = desc.width as usize * desc.color.bytes_per_pixel();
+        Framebuffer::with_color(desc, ColorStore::Owned(color), stride, false)
+    }
+
+    /// A framebuffer whose color buffer is `memory`, laid out in rows of
+    /// `stride` bytes (top row first when `top_down`); depth and stencil are
+    /// allocated as [`Framebuffer::new`] does. The color memory is not cleared.
+    /// `InvalidValue` when `memory` is too small for `desc`.
+    pub fn with_color_memory(
+        desc: FramebufferDesc,
+        memory: Box<dyn ColorMemory>,
+        stride: usize,
+        top_down: bool,
+    ) -> GlResult<Framebuffer> {
+        desc.validate()?;
+        check_color_memory(&desc, memory.bytes().len(), stride)?;
+        Framebuffer::with_color(desc, ColorStore::Lent(memory), stride, top_down)
+    }
+
+    /// Allocates depth and stencil around a validated color store.
+    fn with_color(desc: FramebufferDesc, color: ColorStore, stride: usize, top_down: bool) -> GlResult<Framebuffer> {
+        let n = desc.width as usize * desc.height as usize;
         let depth = match desc.depth_format()? {
             None => None,
             Some(DepthFormat::D16) => Some(DepthBuffer::D16(alloc(n, u16::MAX)?)),
@@ -174,9 +247,42 @@ impl Framebuffer {
         Ok(Framebuffer {
             desc,
             color,
+            color_stride: stride,
+            color_top_down: top_down,
             depth,
             stencil,
         })
+    }
+
+    /// Replaces the color buffer with `memory` (same size and format), rows
+    /// `stride` bytes apart, top row first when `top_down`. Depth and stencil
+    /// are kept. `InvalidValue` (and no change) when `memory` is too small.
+    pub fn set_color_memory(&mut self, memory: Box<dyn ColorMemory>, stride: usize, top_down: bool) -> GlResult {
+        check_color_memory(&self.desc, memory.bytes().len(), stride)?;
+        self.color = ColorStore::Lent(memory);
+        self.color_stride = stride;
+        self.color_top_down = top_down;
+        Ok(())
+    }
+
+    /// Bytes from one color row to the next.
+    pub fn color_stride(&self) -> usize {
+        self.color_stride
+    }
+
+    /// Whether color row 0 is the top of the image.
+    pub fn color_top_down(&self) -> bool {
+        self.color_top_down
+    }
+
+    /// Byte offset of pixel `(x, y)` (window coordinates) in the color bytes.
+    fn color_offset(&self, x: u32, y: u32) -> usize {
+        let row = if self.color_top_down {
+            self.desc.height - 1 - y
+        } else {
+            y
+        };
+        row as usize * self.color_stride + x as usize * self.desc.color.bytes_per_pixel()
     }
 
     pub fn desc(&self) -> &FramebufferDesc {
@@ -203,13 +309,19 @@ impl Framebuffer {
         self.stencil.is_some()
     }
 
-    /// The color bytes, rows bottom-up, tightly packed.
+    /// The color bytes: rows bottom-up and tightly packed unless the memory
+    /// was lent with another layout ([`Framebuffer::color_stride`], [`Framebuffer::color_top_down`]).
     pub fn color_bytes(&self) -> &[u8] {
-        &self.color
+        self.color.bytes()
     }
 
     pub fn depth_buffer(&self) -> Option<&DepthBuffer> {
         self.depth.as_ref()
+    }
+
+    /// The depth storage, for callers that hand it out (`OSMesaGetDepthBuffer`).
+    pub fn depth_buffer_mut(&mut self) -> Option<&mut DepthBuffer> {
+        self.depth.as_mut()
     }
 
     pub fn stencil_buffer(&self) -> Option<&[u8]> {
@@ -224,17 +336,17 @@ impl Framebuffer {
             DepthBuffer::D24(v) => DepthTarget::D24(v),
             DepthBuffer::D32(v) => DepthTarget::D32(v),
         });
-        let stride = w as usize * format.bytes_per_pixel();
         Target::new(
             w,
             h,
             format,
-            &mut self.color,
-            stride,
+            self.color.bytes_mut(),
+            self.color_stride,
             depth,
             self.stencil.as_deref_mut(),
         )
         .expect("a framebuffer's buffers are allocated for its size")
+        .with_top_down(self.color_top_down)
     }
 
     /// The whole framebuffer as a rectangle.
@@ -269,10 +381,11 @@ impl Framebuffer {
         let c = rgba.map(|v| float_to_unorm(v, 255) as u8);
         let value = pixel::pack(format, c, pixel::reduce_bias(false, 0, 0));
         let bpp = format.bytes_per_pixel();
-        let stride = self.desc.width as usize * bpp;
         for y in rect.y0..rect.y1 {
-            let row = &mut self.color[y as usize * stride..][..stride];
-            for px in row[rect.x0 as usize * bpp..rect.x1 as usize * bpp].chunks_exact_mut(bpp) {
+            let start = self.color_offset(rect.x0, y);
+            let len = (rect.x1 - rect.x0) as usize * bpp;
+            let row = &mut self.color.bytes_mut()[start..][..len];
+            for px in row.chunks_exact_mut(bpp) {
                 let old = pixel::load(format, px);
                 pixel::store(format, px, (value & bits) | (old & !bits));
             }
@@ -309,9 +422,8 @@ impl Framebuffer {
             return None;
         }
         let format = self.desc.color;
-        let bpp = format.bytes_per_pixel();
-        let off = (y as usize * self.desc.width as usize + x as usize) * bpp;
-        Some(pixel::unpack(format, pixel::load(format, &self.color[off..])))
+        let off = self.color_offset(x, y);
+        Some(pixel::unpack(format, pixel::load(format, &self.color.bytes()[off..])))
     }
 
     /// The stored depth at `(x, y)`, in buffer units.
@@ -375,6 +487,17 @@ impl Framebuffer {
         let (w, h) = (self.desc.width, self.desc.height);
         image::RgbaImage::from_fn(w, h, |x, y| image::Rgba(self.pixel(x, h - 1 - y).unwrap_or([0; 4])))
     }
+}
+
+/// `InvalidValue` unless `len` bytes hold `desc`'s color rows `stride` bytes apart.
+fn check_color_memory(desc: &FramebufferDesc, len: usize, stride: usize) -> GlResult {
+    let row = desc.width as usize * desc.color.bytes_per_pixel();
+    let rows = (desc.height as usize).saturating_sub(1);
+    let needed = stride.checked_mul(rows).and_then(|v| v.checked_add(row));
+    if stride < row || needed.is_none_or(|n| len < n) {
+        return Err(GlError::InvalidValue);
+    }
+    Ok(())
 }
 
 /// A zero-initialised vector, or `OutOfMemory` instead of an abort.

@@ -32,7 +32,7 @@ pub mod state;
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fragment::Backend;
-pub use framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
+pub use framebuffer::{ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
 pub use matrix::MatrixMode;
 pub use softgl_jit::{
     BlendEquation, BlendFactor, CacheStats, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,

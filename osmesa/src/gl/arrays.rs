@@ -1,0 +1,402 @@
+//! Client vertex arrays: the pointers, `glDrawArrays`, `glDrawElements`,
+//! `glArrayElement`. The caller's arrays are read into f32 arrays for softgl
+//! at each draw; normals and texture coordinates are accepted and, without
+//! lighting and texturing, have no effect on the image.
+
+use super::{enums, now, run_or_record, Cmd};
+use crate::consts::*;
+use crate::state::{ClientArray, OsContext};
+use softgl::{AttribArray, Context, GlError, GlResult, PrimitiveMode, VertexArrays};
+use std::ffi::c_void;
+
+fn type_size(ty: GLenum) -> Option<usize> {
+    Some(match ty {
+        GL_BYTE | GL_UNSIGNED_BYTE => 1,
+        GL_SHORT | GL_UNSIGNED_SHORT => 2,
+        GL_INT | GL_UNSIGNED_INT | GL_FLOAT => 4,
+        GL_DOUBLE => 8,
+        _ => return None,
+    })
+}
+
+/// Element `i` of `a` as floats, integer colours normalised when `normalize`.
+///
+/// # Safety
+/// `a.ptr` holds element `i` (GL's contract for enabled client arrays).
+unsafe fn fetch(a: &ClientArray, i: usize, normalize: bool, out: &mut Vec<f32>) {
+    let size = type_size(a.ty).unwrap_or(4);
+    let n = a.size as usize;
+    let stride = if a.stride > 0 { a.stride as usize } else { n * size };
+    // SAFETY: element `i` lies at `i * stride` in the caller's array.
+    let base = unsafe { a.ptr.add(i * stride) };
+    for c in 0..n {
+        // SAFETY: component `c` of element `i`, read unaligned.
+        let p = unsafe { base.add(c * size) };
+        // SAFETY: `p` points at a value of the array's type.
+        let v = unsafe {
+            match a.ty {
+                GL_BYTE => {
+                    let v = f32::from(p.cast::<i8>().read_unaligned());
+                    if normalize {
+                        (2.0 * v + 1.0) / 255.0
+                    } else {
+                        v
+                    }
+                }
+                GL_UNSIGNED_BYTE => {
+                    let v = f32::from(p.read_unaligned());
+                    if normalize {
+                        v / 255.0
+                    } else {
+                        v
+                    }
+                }
+                GL_SHORT => {
+                    let v = f32::from(p.cast::<i16>().read_unaligned());
+                    if normalize {
+                        (2.0 * v + 1.0) / 65535.0
+                    } else {
+                        v
+                    }
+                }
+                GL_UNSIGNED_SHORT => {
+                    let v = f32::from(p.cast::<u16>().read_unaligned());
+                    if normalize {
+                        v / 65535.0
+                    } else {
+                        v
+                    }
+                }
+                GL_INT => {
+                    let v = f64::from(p.cast::<i32>().read_unaligned());
+                    (if normalize { (2.0 * v + 1.0) / 4294967295.0 } else { v }) as f32
+                }
+                GL_UNSIGNED_INT => {
+                    let v = f64::from(p.cast::<u32>().read_unaligned());
+                    (if normalize { v / 4294967295.0 } else { v }) as f32
+                }
+                GL_DOUBLE => p.cast::<f64>().read_unaligned() as f32,
+                _ => p.cast::<f32>().read_unaligned(),
+            }
+        };
+        out.push(v);
+    }
+}
+
+/// The vertices a draw names, read from the enabled arrays when the draw is
+/// issued (GL reads them then too when it compiles a draw into a list).
+struct Fetched {
+    mode: PrimitiveMode,
+    count: usize,
+    pos_size: usize,
+    pos: Vec<f32>,
+    color: Option<(usize, Vec<f32>)>,
+}
+
+/// Reads the vertices `indices` names; `None` without a vertex array (GL then draws nothing).
+fn gather(os: &OsContext, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult<Option<Fetched>> {
+    let mode = enums::primitive(mode)?;
+    if !os.vertex.enabled || os.vertex.ptr.is_null() {
+        return Ok(None);
+    }
+    let color = (os.color.enabled && !os.color.ptr.is_null()).then_some(&os.color);
+    let (mut pos, mut col) = (Vec::new(), Vec::new());
+    let mut count = 0;
+    for i in indices {
+        // SAFETY: the enabled arrays hold every element the draw names (GL's contract).
+        unsafe {
+            fetch(&os.vertex, i, false, &mut pos);
+            if let Some(c) = color {
+                fetch(c, i, true, &mut col);
+            }
+        }
+        count += 1;
+    }
+    Ok(Some(Fetched {
+        mode,
+        count,
+        pos_size: os.vertex.size as usize,
+        pos,
+        color: color.map(|c| (c.size as usize, col)),
+    }))
+}
+
+/// Draws (or records, in a display list) the vertices `indices` names.
+fn draw(os: &mut OsContext, gl: &mut Context, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult {
+    let Some(f) = gather(os, mode, indices)? else {
+        return Ok(());
+    };
+    let cmd: Cmd = std::sync::Arc::new(move |_: &mut OsContext, gl: &mut Context| {
+        let arrays = VertexArrays {
+            position: AttribArray::new(f.pos_size, &f.pos),
+            color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
+        };
+        // The context records its own errors (inside begin/end, …).
+        let _ = gl.draw_arrays(f.mode, 0, f.count, &arrays);
+    });
+    run_or_record(os, gl, cmd);
+    Ok(())
+}
+
+/// Sets a client array pointer after checking its arguments.
+fn pointer(
+    which: fn(&mut OsContext) -> &mut ClientArray,
+    sizes: &[i32],
+    size: i32,
+    ty: GLenum,
+    types: &[GLenum],
+    stride: i32,
+    ptr: *const c_void,
+) {
+    now(|os, _| {
+        if !types.contains(&ty) {
+            return Err(GlError::InvalidEnum);
+        }
+        if !sizes.contains(&size) || stride < 0 {
+            return Err(GlError::InvalidValue);
+        }
+        let a = which(os);
+        (a.size, a.ty, a.stride, a.ptr) = (size, ty, stride, ptr.cast());
+        Ok(())
+    })
+}
+
+fn client_state(array: GLenum, on: bool) {
+    now(|os, _| {
+        let a = match array {
+            GL_VERTEX_ARRAY => &mut os.vertex,
+            GL_COLOR_ARRAY => &mut os.color,
+            GL_NORMAL_ARRAY => &mut os.normal,
+            GL_TEXTURE_COORD_ARRAY => &mut os.tex_coord,
+            // Colour-index and edge-flag arrays do not exist in softgl yet.
+            GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY if on => return Err(GlError::InvalidOperation),
+            GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY => return Ok(()),
+            _ => return Err(GlError::InvalidEnum),
+        };
+        a.enabled = on;
+        Ok(())
+    })
+}
+
+const ALL_TYPES: [GLenum; 4] = [GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+const COLOR_TYPES: [GLenum; 8] = [
+    GL_BYTE,
+    GL_UNSIGNED_BYTE,
+    GL_SHORT,
+    GL_UNSIGNED_SHORT,
+    GL_INT,
+    GL_UNSIGNED_INT,
+    GL_FLOAT,
+    GL_DOUBLE,
+];
+const NORMAL_TYPES: [GLenum; 5] = [GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+
+exports! {
+    /// # Safety
+    /// `ptr` stays valid while drawing reads it (GL's contract).
+    [unsafe] fn glVertexPointer(size: i32, ty: GLenum, stride: i32, ptr: *const c_void) {
+        pointer(|o| &mut o.vertex, &[2, 3, 4], size, ty, &ALL_TYPES, stride, ptr)
+    }
+    /// # Safety
+    /// `ptr` stays valid while drawing reads it (GL's contract).
+    [unsafe] fn glColorPointer(size: i32, ty: GLenum, stride: i32, ptr: *const c_void) {
+        pointer(|o| &mut o.color, &[3, 4], size, ty, &COLOR_TYPES, stride, ptr)
+    }
+    /// # Safety
+    /// `ptr` stays valid while drawing reads it (GL's contract).
+    [unsafe] fn glNormalPointer(ty: GLenum, stride: i32, ptr: *const c_void) {
+        pointer(|o| &mut o.normal, &[3], 3, ty, &NORMAL_TYPES, stride, ptr)
+    }
+    /// # Safety
+    /// `ptr` stays valid while drawing reads it (GL's contract).
+    [unsafe] fn glTexCoordPointer(size: i32, ty: GLenum, stride: i32, ptr: *const c_void) {
+        pointer(|o| &mut o.tex_coord, &[1, 2, 3, 4], size, ty, &ALL_TYPES, stride, ptr)
+    }
+    [] fn glEnableClientState(array: GLenum) {
+        client_state(array, true)
+    }
+    [] fn glDisableClientState(array: GLenum) {
+        client_state(array, false)
+    }
+    [] fn glDrawArrays(mode: GLenum, first: i32, count: i32) {
+        now(|os, gl| {
+            if first < 0 || count < 0 {
+                enums::primitive(mode)?;
+                return Err(GlError::InvalidValue);
+            }
+            draw(os, gl, mode, &mut (first as usize..first as usize + count as usize))
+        })
+    }
+    /// # Safety
+    /// `indices` points to `count` indices of `ty` (GL's contract).
+    [unsafe] fn glDrawElements(mode: GLenum, count: i32, ty: GLenum, indices: *const c_void) {
+        now(|os, gl| {
+            enums::primitive(mode)?;
+            if count < 0 {
+                return Err(GlError::InvalidValue);
+            }
+            let size = match ty {
+                GL_UNSIGNED_BYTE => 1,
+                GL_UNSIGNED_SHORT => 2,
+                GL_UNSIGNED_INT => 4,
+                _ => return Err(GlError::InvalidEnum),
+            };
+            if indices.is_null() {
+                return if count == 0 { Ok(()) } else { Err(GlError::InvalidValue) };
+            }
+            let p = indices.cast::<u8>();
+            let mut it = (0..count as usize).map(|k| {
+                // SAFETY: `count` indices of `ty` at `indices`, by GL's contract.
+                unsafe {
+                    let q = p.add(k * size);
+                    match size {
+                        1 => usize::from(q.read()),
+                        2 => usize::from(q.cast::<u16>().read_unaligned()),
+                        _ => q.cast::<u32>().read_unaligned() as usize,
+                    }
+                }
+            });
+            draw(os, gl, mode, &mut it)
+        })
+    }
+    /// GL 1.2's `glDrawElements` with an index range hint: indices outside
+    /// `start..=end` are drawn all the same (GL leaves them undefined).
+    ///
+    /// # Safety
+    /// `indices` points to `count` indices of `ty` (GL's contract).
+    [unsafe] fn glDrawRangeElements(mode: GLenum, start: u32, end: u32, count: i32, ty: GLenum, indices: *const c_void) {
+        if end < start {
+            return super::checked(|_| Err(GlError::InvalidValue));
+        }
+        // SAFETY: the same contract as glDrawElements, passed on.
+        unsafe { glDrawElements(mode, count, ty, indices) }
+    }
+    [] fn glArrayElement(i: i32) {
+        now(|os, gl| {
+            if i < 0 {
+                return Err(GlError::InvalidValue);
+            }
+            let i = i as usize;
+            // Read now (GL's rule for lists too), applied by the command.
+            let read = |a: &ClientArray, normalize: bool| -> Option<Vec<f32>> {
+                let mut v = Vec::with_capacity(4);
+                // SAFETY: the enabled arrays hold element `i` (GL's contract).
+                (a.enabled && !a.ptr.is_null()).then(|| unsafe { fetch(a, i, normalize, &mut v) })?;
+                Some(v)
+            };
+            let pad = |mut v: Vec<f32>, size: i32| -> [f32; 4] {
+                v.resize(4, 0.0);
+                if size < 4 {
+                    v[3] = 1.0;
+                }
+                [v[0], v[1], v[2], v[3]]
+            };
+            let color = read(&os.color, true).map(|v| pad(v, os.color.size));
+            let normal = read(&os.normal, true);
+            let tex = read(&os.tex_coord, false).map(|v| pad(v, os.tex_coord.size));
+            let vertex = read(&os.vertex, false).map(|v| pad(v, os.vertex.size));
+            let cmd: Cmd = std::sync::Arc::new(move |_: &mut OsContext, gl: &mut Context| {
+                if let Some([r, g, b, a]) = color {
+                    gl.color4(r, g, b, a);
+                }
+                if let Some(n) = &normal {
+                    gl.normal3(n[0], n[1], n[2]);
+                }
+                if let Some([s, t, r, q]) = tex {
+                    gl.tex_coord4(s, t, r, q);
+                }
+                if let Some([x, y, z, w]) = vertex {
+                    gl.vertex4(x, y, z, w);
+                }
+            });
+            run_or_record(os, gl, cmd);
+            Ok(())
+        })
+    }
+    /// # Safety
+    /// `params` is null or writable.
+    [unsafe] fn glGetPointerv(pname: GLenum, params: *mut *mut c_void) {
+        now(|os, _| {
+            let p = match pname {
+                GL_VERTEX_ARRAY_POINTER => os.vertex.ptr,
+                GL_COLOR_ARRAY_POINTER => os.color.ptr,
+                GL_NORMAL_ARRAY_POINTER => os.normal.ptr,
+                GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord.ptr,
+                _ => return Err(GlError::InvalidEnum),
+            };
+            if !params.is_null() {
+                // SAFETY: non-null and writable by GL's contract.
+                unsafe { *params = p.cast_mut().cast() };
+            }
+            Ok(())
+        })
+    }
+    /// Sets and enables the arrays of one of GL's 14 interleaved layouts
+    /// (texture coordinates, colour, normal, position, in that order).
+    ///
+    /// # Safety
+    /// `ptr` stays valid while drawing reads it (GL's contract).
+    [unsafe] fn glInterleavedArrays(format: GLenum, stride: i32, ptr: *const c_void) {
+        now(|os, gl| {
+            if gl.inside_begin() {
+                return Err(GlError::InvalidOperation);
+            }
+            let layout = interleaved(format).ok_or(GlError::InvalidEnum)?;
+            if stride < 0 {
+                return Err(GlError::InvalidValue);
+            }
+            let (t, c, n, v) = layout;
+            let f = std::mem::size_of::<f32>();
+            // Byte sizes of each part: floats, except C4UB's 4 bytes.
+            let c_bytes = match c {
+                Some((_, GL_UNSIGNED_BYTE)) => 4,
+                Some((size, _)) => size as usize * f,
+                None => 0,
+            };
+            let total = t as usize * f + c_bytes + if n { 3 * f } else { 0 } + v as usize * f;
+            let stride = if stride == 0 { total as i32 } else { stride };
+            let base = ptr.cast::<u8>();
+            let mut at = 0usize;
+            let mut set = |a: &mut ClientArray, size: i32, ty: GLenum, on: bool, bytes: usize| {
+                a.enabled = on;
+                if on {
+                    (a.size, a.ty, a.stride, a.ptr) = (size, ty, stride, base.wrapping_add(at));
+                    at += bytes;
+                }
+            };
+            set(&mut os.tex_coord, t, GL_FLOAT, t > 0, t as usize * f);
+            let (cs, ct) = c.unwrap_or((4, GL_FLOAT));
+            set(&mut os.color, cs, ct, c.is_some(), c_bytes);
+            set(&mut os.normal, 3, GL_FLOAT, n, 3 * f);
+            set(&mut os.vertex, v, GL_FLOAT, true, v as usize * f);
+            Ok(())
+        })
+    }
+}
+
+/// The parts of an interleaved layout: texture coordinate size (0 for none),
+/// colour size and type, whether there is a normal, position size.
+type Interleaved = (i32, Option<(i32, GLenum)>, bool, i32);
+
+fn interleaved(format: GLenum) -> Option<Interleaved> {
+    const C4UB: Option<(i32, GLenum)> = Some((4, GL_UNSIGNED_BYTE));
+    const C3F: Option<(i32, GLenum)> = Some((3, GL_FLOAT));
+    const C4F: Option<(i32, GLenum)> = Some((4, GL_FLOAT));
+    Some(match format {
+        0x2A20 => (0, None, false, 2), // GL_V2F
+        0x2A21 => (0, None, false, 3), // GL_V3F
+        0x2A22 => (0, C4UB, false, 2), // GL_C4UB_V2F
+        0x2A23 => (0, C4UB, false, 3), // GL_C4UB_V3F
+        0x2A24 => (0, C3F, false, 3),  // GL_C3F_V3F
+        0x2A25 => (0, None, true, 3),  // GL_N3F_V3F
+        0x2A26 => (0, C4F, true, 3),   // GL_C4F_N3F_V3F
+        0x2A27 => (2, None, false, 3), // GL_T2F_V3F
+        0x2A28 => (4, None, false, 4), // GL_T4F_V4F
+        0x2A29 => (2, C4UB, false, 3), // GL_T2F_C4UB_V3F
+        0x2A2A => (2, C3F, false, 3),  // GL_T2F_C3F_V3F
+        0x2A2B => (2, None, true, 3),  // GL_T2F_N3F_V3F
+        0x2A2C => (2, C4F, true, 3),   // GL_T2F_C4F_N3F_V3F
+        0x2A2D => (4, C4F, true, 4),   // GL_T4F_C4F_N3F_V4F
+        _ => return None,
+    })
+}

@@ -1,0 +1,233 @@
+//! The attribute stacks: `glPushAttrib`/`glPopAttrib` and the client ones.
+//! A push saves the whole state; a pop restores the groups its mask named,
+//! through the context's own setters. Groups without state in softgl yet
+//! (fog, lighting values, textures, …) save nothing.
+
+use super::{now, rec};
+use crate::consts::*;
+use crate::state::{ClientArray, OsContext, PixelStore};
+use softgl::state::RasterState;
+use softgl::{Capability, Context, CurrentAttribs, Face, GlError, GlResult, MatrixMode};
+
+/// `GL_MAX_ATTRIB_STACK_DEPTH` and `GL_MAX_CLIENT_ATTRIB_STACK_DEPTH` (Mesa's 16).
+pub const MAX_DEPTH: usize = 16;
+
+const CURRENT_BIT: u32 = 0x1;
+const POINT_BIT: u32 = 0x2;
+const LINE_BIT: u32 = 0x4;
+const POLYGON_BIT: u32 = 0x8;
+const LIGHTING_BIT: u32 = 0x40;
+const DEPTH_BIT: u32 = 0x100;
+const STENCIL_BIT: u32 = 0x400;
+const VIEWPORT_BIT: u32 = 0x800;
+const TRANSFORM_BIT: u32 = 0x1000;
+const ENABLE_BIT: u32 = 0x2000;
+const COLOR_BIT: u32 = 0x4000;
+const HINT_BIT: u32 = 0x8000;
+const EVAL_BIT: u32 = 0x10000;
+const SCISSOR_BIT: u32 = 0x80000;
+const CLIENT_PIXEL_STORE_BIT: u32 = 0x1;
+const CLIENT_VERTEX_ARRAY_BIT: u32 = 0x2;
+
+/// The state one `glPushAttrib` saved.
+#[derive(Clone)]
+pub struct Saved {
+    mask: u32,
+    state: RasterState,
+    current: CurrentAttribs,
+    matrix_mode: MatrixMode,
+    hints: [GLenum; 5],
+    inert_caps: Vec<GLenum>,
+}
+
+/// The state one `glPushClientAttrib` saved.
+#[derive(Clone)]
+pub struct SavedClient {
+    mask: u32,
+    pack: PixelStore,
+    unpack: PixelStore,
+    arrays: [ClientArray; 4],
+}
+
+const NORMALIZE: GLenum = 0x0BA1;
+const RESCALE_NORMAL: GLenum = 0x803A;
+const COLOR_MATERIAL: GLenum = 0x0B57;
+const AUTO_NORMAL: GLenum = 0x0D80;
+
+fn set_cap(gl: &mut Context, cap: Capability, on: bool) -> GlResult {
+    if on {
+        gl.enable(cap)
+    } else {
+        gl.disable(cap)
+    }
+}
+
+/// Restores the inert capabilities among `which` from `saved`.
+fn restore_inert(os: &mut OsContext, saved: &[GLenum], which: &[GLenum]) {
+    os.inert_caps.retain(|c| !which.contains(c));
+    os.inert_caps.extend(saved.iter().filter(|c| which.contains(c)));
+}
+
+/// Restores the groups of `s.mask`.
+fn restore(os: &mut OsContext, gl: &mut Context, s: &Saved) -> GlResult {
+    let (m, st) = (s.mask, &s.state);
+    if m & CURRENT_BIT != 0 {
+        let c = s.current;
+        gl.color4(c.color.x, c.color.y, c.color.z, c.color.w);
+        gl.normal3(c.normal.x, c.normal.y, c.normal.z);
+        gl.tex_coord4(c.tex_coord.x, c.tex_coord.y, c.tex_coord.z, c.tex_coord.w);
+    }
+    if m & POINT_BIT != 0 {
+        gl.point_size(st.point_size)?;
+    }
+    if m & LINE_BIT != 0 {
+        gl.line_width(st.line_width)?;
+    }
+    if m & (POLYGON_BIT | ENABLE_BIT) != 0 {
+        set_cap(gl, Capability::CullFace, st.cull)?;
+        set_cap(gl, Capability::PolygonOffsetFill, st.offset_fill)?;
+        set_cap(gl, Capability::PolygonOffsetLine, st.offset_line)?;
+        set_cap(gl, Capability::PolygonOffsetPoint, st.offset_point)?;
+    }
+    if m & POLYGON_BIT != 0 {
+        gl.cull_face(st.cull_face)?;
+        gl.front_face(st.front_face)?;
+        gl.polygon_mode(Face::Front, st.polygon_mode_front)?;
+        gl.polygon_mode(Face::Back, st.polygon_mode_back)?;
+        gl.polygon_offset(st.offset_factor, st.offset_units)?;
+    }
+    if m & LIGHTING_BIT != 0 {
+        gl.shade_model(st.shade_model)?;
+        restore_inert(os, &s.inert_caps, &[COLOR_MATERIAL]);
+    }
+    if m & (DEPTH_BIT | ENABLE_BIT) != 0 {
+        set_cap(gl, Capability::DepthTest, st.depth_test)?;
+    }
+    if m & DEPTH_BIT != 0 {
+        gl.depth_func(st.depth_func)?;
+        gl.depth_mask(st.depth_write)?;
+        gl.clear_depth(st.clear_depth)?;
+    }
+    if m & (STENCIL_BIT | ENABLE_BIT) != 0 {
+        set_cap(gl, Capability::StencilTest, st.stencil_test)?;
+    }
+    if m & STENCIL_BIT != 0 {
+        gl.stencil_func(st.stencil_func, st.stencil_ref, st.stencil_value_mask)?;
+        gl.stencil_op(st.stencil_fail, st.stencil_zfail, st.stencil_zpass)?;
+        gl.stencil_mask(st.stencil_write_mask)?;
+        gl.clear_stencil(st.clear_stencil)?;
+    }
+    if m & VIEWPORT_BIT != 0 {
+        let v = st.viewport;
+        gl.viewport(v.x, v.y, v.width, v.height)?;
+        gl.depth_range(st.depth_range.0, st.depth_range.1)?;
+    }
+    if m & TRANSFORM_BIT != 0 {
+        gl.matrix_mode(s.matrix_mode)?;
+        restore_inert(os, &s.inert_caps, &[NORMALIZE, RESCALE_NORMAL]);
+    }
+    if m & (COLOR_BIT | ENABLE_BIT) != 0 {
+        set_cap(gl, Capability::AlphaTest, st.alpha_test)?;
+        set_cap(gl, Capability::Blend, st.blend)?;
+        set_cap(gl, Capability::Dither, st.dither)?;
+        set_cap(gl, Capability::ColorLogicOp, st.color_logic_op)?;
+    }
+    if m & COLOR_BIT != 0 {
+        gl.alpha_func(st.alpha_func, st.alpha_ref)?;
+        let b = st.blend_func;
+        gl.blend_func_separate(b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha)?;
+        gl.blend_equation_separate(b.eq_rgb, b.eq_alpha)?;
+        let [r, g, bl, a] = st.blend_color;
+        gl.blend_color(r, g, bl, a)?;
+        gl.logic_op(st.logic_op)?;
+        let cm = st.color_mask;
+        gl.color_mask(cm.r, cm.g, cm.b, cm.a)?;
+        let [r, g, bl, a] = st.clear_color;
+        gl.clear_color(r, g, bl, a)?;
+    }
+    if m & (SCISSOR_BIT | ENABLE_BIT) != 0 {
+        set_cap(gl, Capability::ScissorTest, st.scissor_test)?;
+    }
+    if m & SCISSOR_BIT != 0 {
+        let b = st.scissor;
+        gl.scissor(b.x, b.y, b.width, b.height)?;
+    }
+    if m & ENABLE_BIT != 0 {
+        restore_inert(
+            os,
+            &s.inert_caps,
+            &[NORMALIZE, RESCALE_NORMAL, COLOR_MATERIAL, AUTO_NORMAL],
+        );
+    }
+    if m & EVAL_BIT != 0 {
+        restore_inert(os, &s.inert_caps, &[AUTO_NORMAL]);
+    }
+    if m & HINT_BIT != 0 {
+        os.hints = s.hints;
+    }
+    Ok(())
+}
+
+exports! {
+    [] fn glPushAttrib(mask: u32) {
+        rec(move |os, gl| {
+            if gl.inside_begin() {
+                return Err(GlError::InvalidOperation);
+            }
+            if os.attrib_stack.len() >= MAX_DEPTH {
+                return Err(GlError::StackOverflow);
+            }
+            let saved = Saved {
+                mask,
+                state: gl.state().clone(),
+                current: *gl.current(),
+                matrix_mode: gl.current_matrix_mode(),
+                hints: os.hints,
+                inert_caps: os.inert_caps.clone(),
+            };
+            os.attrib_stack.push(saved);
+            Ok(())
+        })
+    }
+    [] fn glPopAttrib() {
+        rec(move |os, gl| {
+            if gl.inside_begin() {
+                return Err(GlError::InvalidOperation);
+            }
+            let saved = os.attrib_stack.pop().ok_or(GlError::StackUnderflow)?;
+            restore(os, gl, &saved)
+        })
+    }
+    [] fn glPushClientAttrib(mask: u32) {
+        now(|os, _| {
+            if os.client_attrib_stack.len() >= MAX_DEPTH {
+                return Err(GlError::StackOverflow);
+            }
+            let saved = SavedClient {
+                mask,
+                pack: os.pack,
+                unpack: os.unpack,
+                arrays: [os.vertex, os.color, os.normal, os.tex_coord],
+            };
+            os.client_attrib_stack.push(saved);
+            Ok(())
+        })
+    }
+    [] fn glPopClientAttrib() {
+        now(|os, _| {
+            let s = os.client_attrib_stack.pop().ok_or(GlError::StackUnderflow)?;
+            if s.mask & CLIENT_PIXEL_STORE_BIT != 0 {
+                (os.pack, os.unpack) = (s.pack, s.unpack);
+            }
+            if s.mask & CLIENT_VERTEX_ARRAY_BIT != 0 {
+                [os.vertex, os.color, os.normal, os.tex_coord] = s.arrays;
+            }
+            Ok(())
+        })
+    }
+}
+
+/// `GL_ATTRIB_STACK_DEPTH` and `GL_CLIENT_ATTRIB_STACK_DEPTH`.
+pub fn depths(os: &OsContext) -> (usize, usize) {
+    (os.attrib_stack.len(), os.client_attrib_stack.len())
+}

@@ -1,0 +1,324 @@
+//! `glGetString`, `glGet{Integer,Float,Double,Boolean}v`, `glIsEnabled`.
+
+use super::enums::{self, Cap, CORE_CAPS};
+use crate::consts::*;
+use crate::state::{with_gl, OsContext, HINTS, MAX_SIZE};
+use softgl::{Backend, ColorFormat, Context, GlError, GlResult, MatrixMode};
+use std::ffi::c_char;
+
+/// A queried value before conversion to the caller's type.
+enum Val {
+    /// Integers and enumerants.
+    I(Vec<i64>),
+    /// Floats that convert to integers by rounding.
+    F(Vec<f64>),
+    /// Colours and depths in [0, 1]: to integers they map onto the full range.
+    N(Vec<f64>),
+    B(Vec<bool>),
+}
+
+impl Val {
+    fn ints(&self) -> Vec<i32> {
+        match self {
+            Val::I(v) => v
+                .iter()
+                .map(|&x| x.clamp(i32::MIN.into(), i32::MAX.into()) as i32)
+                .collect(),
+            Val::F(v) => v
+                .iter()
+                .map(|&x| x.round().clamp(i32::MIN.into(), i32::MAX.into()) as i32)
+                .collect(),
+            Val::N(v) => v.iter().map(|&x| (x * f64::from(i32::MAX)).round() as i32).collect(),
+            Val::B(v) => v.iter().map(|&b| i32::from(b)).collect(),
+        }
+    }
+
+    fn doubles(&self) -> Vec<f64> {
+        match self {
+            Val::I(v) => v.iter().map(|&x| x as f64).collect(),
+            Val::F(v) | Val::N(v) => v.clone(),
+            Val::B(v) => v.iter().map(|&b| f64::from(u8::from(b))).collect(),
+        }
+    }
+
+    fn bools(&self) -> Vec<bool> {
+        match self {
+            Val::I(v) => v.iter().map(|&x| x != 0).collect(),
+            Val::F(v) | Val::N(v) => v.iter().map(|&x| x != 0.0).collect(),
+            Val::B(v) => v.clone(),
+        }
+    }
+}
+
+fn i(v: impl Into<i64>) -> Val {
+    Val::I(vec![v.into()])
+}
+
+fn e(v: GLenum) -> Val {
+    Val::I(vec![i64::from(v)])
+}
+
+fn f(v: f32) -> Val {
+    Val::F(vec![f64::from(v)])
+}
+
+fn matrix(gl: &Context, mode: MatrixMode) -> Val {
+    Val::F(gl.matrix(mode).to_cols_array().iter().map(|&x| f64::from(x)).collect())
+}
+
+/// `glIsEnabled`.
+pub(super) fn is_enabled(os: &OsContext, gl: &Context, cap: GLenum) -> GlResult<bool> {
+    if gl.inside_begin() {
+        return Err(GlError::InvalidOperation);
+    }
+    Ok(match cap {
+        GL_VERTEX_ARRAY => os.vertex.enabled,
+        GL_COLOR_ARRAY => os.color.enabled,
+        GL_NORMAL_ARRAY => os.normal.enabled,
+        GL_TEXTURE_COORD_ARRAY => os.tex_coord.enabled,
+        GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY => false,
+        _ => match enums::cap(cap)? {
+            Cap::Core(c) => gl.is_enabled(c),
+            Cap::Inert(c) => os.inert_caps.contains(&c),
+            Cap::Missing => false,
+        },
+    })
+}
+
+fn store_value(s: &crate::state::PixelStore, pname: GLenum, pack: bool) -> Option<Val> {
+    let base = if pack { GL_PACK_SWAP_BYTES } else { GL_UNPACK_SWAP_BYTES };
+    let (skip_images, image_height) = if pack {
+        (GL_PACK_SKIP_IMAGES, GL_PACK_IMAGE_HEIGHT)
+    } else {
+        (GL_UNPACK_SKIP_IMAGES, GL_UNPACK_IMAGE_HEIGHT)
+    };
+    Some(match pname {
+        p if p == base => Val::B(vec![s.swap_bytes]),
+        p if p == base + 1 => Val::B(vec![s.lsb_first]),
+        p if p == base + 2 => i(s.row_length),
+        p if p == base + 3 => i(s.skip_rows),
+        p if p == base + 4 => i(s.skip_pixels),
+        p if p == base + 5 => i(s.alignment),
+        p if p == skip_images => i(s.skip_images),
+        p if p == image_height => i(s.image_height),
+        _ => return None,
+    })
+}
+
+/// The value of `pname`, or `GL_INVALID_ENUM`.
+fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
+    if gl.inside_begin() {
+        return Err(GlError::InvalidOperation);
+    }
+    let s = gl.state();
+    let fb = gl.framebuffer();
+    let rect = |r: softgl::state::WindowRect| Val::I(vec![r.x.into(), r.y.into(), r.width.into(), r.height.into()]);
+    let color_bits = |c: usize| -> i64 {
+        match (fb.color_format(), c) {
+            (ColorFormat::Rgb565, 1) => 6,
+            (ColorFormat::Rgb565, 3) | (ColorFormat::Rgb8, 3) => 0,
+            (ColorFormat::Rgb565, _) => 5,
+            _ => 8,
+        }
+    };
+    if let Some(v) = store_value(&os.pack, pname, true).or_else(|| store_value(&os.unpack, pname, false)) {
+        return Ok(v);
+    }
+    if let Some(h) = HINTS.iter().position(|&t| t == pname) {
+        return Ok(e(os.hints[h]));
+    }
+    let b = s.blend_func;
+    let cm = s.color_mask;
+    Ok(match pname {
+        0x0BA2 => rect(s.viewport),                                              // VIEWPORT
+        0x0C10 => rect(s.scissor),                                               // SCISSOR_BOX
+        0x0B70 => Val::N(vec![s.depth_range.0, s.depth_range.1]),                // DEPTH_RANGE
+        0x0C22 => Val::N(s.clear_color.iter().map(|&c| f64::from(c)).collect()), // COLOR_CLEAR_VALUE
+        0x0B73 => Val::N(vec![s.clear_depth]),                                   // DEPTH_CLEAR_VALUE
+        0x0B91 => i(s.clear_stencil),                                            // STENCIL_CLEAR_VALUE
+        0x0B00 => Val::N(gl.current().color.to_array().iter().map(|&c| f64::from(c)).collect()), // CURRENT_COLOR
+        0x0B02 => Val::F(gl.current().normal.to_array().iter().map(|&c| f64::from(c)).collect()), // CURRENT_NORMAL
+        0x0B03 => Val::F(
+            gl.current()
+                .tex_coord
+                .to_array()
+                .iter()
+                .map(|&c| f64::from(c))
+                .collect(),
+        ), // CURRENT_TEXTURE_COORDS
+        0x0BA6 => matrix(gl, MatrixMode::Modelview),                             // MODELVIEW_MATRIX
+        0x0BA7 => matrix(gl, MatrixMode::Projection),                            // PROJECTION_MATRIX
+        0x0BA8 => matrix(gl, MatrixMode::Texture),                               // TEXTURE_MATRIX
+        0x0BA0 => e(enums::matrix_mode_enum(gl.current_matrix_mode())),          // MATRIX_MODE
+        0x0BA3 => i(gl.matrix_depth(MatrixMode::Modelview) as i64),              // MODELVIEW_STACK_DEPTH
+        0x0BA4 => i(gl.matrix_depth(MatrixMode::Projection) as i64),             // PROJECTION_STACK_DEPTH
+        0x0BA5 => i(gl.matrix_depth(MatrixMode::Texture) as i64),                // TEXTURE_STACK_DEPTH
+        0x0D36 => i(softgl::matrix::MAX_MODELVIEW_DEPTH as i64),
+        0x0D38 => i(softgl::matrix::MAX_PROJECTION_DEPTH as i64),
+        0x0D39 => i(softgl::matrix::MAX_TEXTURE_DEPTH as i64),
+        0x0D3A => Val::I(vec![MAX_SIZE.into(), MAX_SIZE.into()]), // MAX_VIEWPORT_DIMS
+        0x0B31 => i(super::lists::MAX_NESTING),                   // MAX_LIST_NESTING
+        0x0B32 => i(os.list_base),                                // LIST_BASE
+        0x0B33 => i(super::lists::compiling_state(os).0),         // LIST_INDEX
+        0x0B30 => e(super::lists::compiling_state(os).1),         // LIST_MODE
+        0x0D35 | 0x0D3B => i(super::attrib::MAX_DEPTH as i64),    // MAX_(CLIENT_)ATTRIB_STACK_DEPTH
+        0x0BB0 => i(super::attrib::depths(os).0 as i64),          // ATTRIB_STACK_DEPTH
+        0x0BB1 => i(super::attrib::depths(os).1 as i64),          // CLIENT_ATTRIB_STACK_DEPTH
+        // MAX_TEXTURE_SIZE: Mesa's llvmpipe limit; glTexImage is not in softgl yet.
+        0x0D33 => i(16384),
+        0x0D50 => i(8),             // SUBPIXEL_BITS
+        0x0D52 => i(color_bits(0)), // RED_BITS
+        0x0D53 => i(color_bits(1)),
+        0x0D54 => i(color_bits(2)),
+        0x0D55 => i(color_bits(3)),
+        0x0D56 => i(os.reported_depth_bits()),             // DEPTH_BITS
+        0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }), // STENCIL_BITS
+        0x0D58..=0x0D5B => i(0),                           // ACCUM_*_BITS: none yet
+        0x0C32 => Val::B(vec![false]),                     // DOUBLEBUFFER
+        0x0C33 => Val::B(vec![false]),                     // STEREO
+        0x0C31 => Val::B(vec![true]),                      // RGBA_MODE
+        0x0C01 => e(GL_FRONT),                             // DRAW_BUFFER
+        0x0C02 => e(GL_FRONT),                             // READ_BUFFER
+        0x0B54 => e(if s.shade_model == softgl::ShadeModel::Flat {
+            0x1D00
+        } else {
+            0x1D01
+        }), // SHADE_MODEL
+        0x0B46 => e(if s.front_face == softgl::FrontFace::Cw {
+            0x900
+        } else {
+            0x901
+        }), // FRONT_FACE
+        0x0B45 => e(enums::face_enum(s.cull_face)),        // CULL_FACE_MODE
+        0x0B40 => Val::I(vec![
+            enums::polygon_mode_enum(s.polygon_mode_front).into(),
+            enums::polygon_mode_enum(s.polygon_mode_back).into(),
+        ]),
+        0x8038 => f(s.offset_factor), // POLYGON_OFFSET_FACTOR
+        0x2A00 => f(s.offset_units),  // POLYGON_OFFSET_UNITS
+        0x0B11 => f(s.point_size),    // POINT_SIZE
+        0x0B21 => f(s.line_width),    // LINE_WIDTH
+        // ALIASED_POINT/LINE ranges and the GL 1.1 POINT_SIZE_RANGE/LINE_WIDTH_RANGE.
+        0x846D | 0x846E | 0x0B12 | 0x0B22 => Val::F(vec![1.0, 255.0]),
+        0x0B13 | 0x0B23 => f(0.1),                        // granularities
+        0x0BC1 => e(enums::compare_enum(s.alpha_func)),   // ALPHA_TEST_FUNC
+        0x0BC2 => Val::N(vec![f64::from(s.alpha_ref)]),   // ALPHA_TEST_REF
+        0x0B92 => e(enums::compare_enum(s.stencil_func)), // STENCIL_FUNC
+        0x0B97 => i(s.stencil_ref),                       // STENCIL_REF
+        0x0B93 => i(s.stencil_value_mask & 0xff),         // STENCIL_VALUE_MASK
+        0x0B98 => i(s.stencil_write_mask & 0xff),         // STENCIL_WRITEMASK
+        0x0B94 => e(enums::stencil_op_enum(s.stencil_fail)),
+        0x0B95 => e(enums::stencil_op_enum(s.stencil_zfail)),
+        0x0B96 => e(enums::stencil_op_enum(s.stencil_zpass)),
+        0x0B74 => e(enums::compare_enum(s.depth_func)), // DEPTH_FUNC
+        0x0B72 => Val::B(vec![s.depth_write]),          // DEPTH_WRITEMASK
+        0x0BE1 | 0x80C9 => e(enums::blend_factor_enum(b.src_rgb)), // BLEND_SRC, _SRC_RGB
+        0x0BE0 | 0x80C8 => e(enums::blend_factor_enum(b.dst_rgb)), // BLEND_DST, _DST_RGB
+        0x80CB => e(enums::blend_factor_enum(b.src_alpha)),
+        0x80CA => e(enums::blend_factor_enum(b.dst_alpha)),
+        0x8009 => e(enums::blend_equation_enum(b.eq_rgb)), // BLEND_EQUATION(_RGB)
+        0x883D => e(enums::blend_equation_enum(b.eq_alpha)),
+        0x8005 => Val::N(s.blend_color.iter().map(|&c| f64::from(c)).collect()), // BLEND_COLOR
+        0x0BF0 => e(enums::logic_op_enum(s.logic_op)),                           // LOGIC_OP_MODE
+        0x0C23 => Val::B(vec![cm.r, cm.g, cm.b, cm.a]),                          // COLOR_WRITEMASK
+        GL_VERTEX_ARRAY => Val::B(vec![os.vertex.enabled]),
+        GL_COLOR_ARRAY => Val::B(vec![os.color.enabled]),
+        GL_NORMAL_ARRAY => Val::B(vec![os.normal.enabled]),
+        GL_TEXTURE_COORD_ARRAY => Val::B(vec![os.tex_coord.enabled]),
+        0x807A => i(os.vertex.size), // VERTEX_ARRAY_SIZE
+        0x807B => e(os.vertex.ty),
+        0x807C => i(os.vertex.stride),
+        0x8081 => i(os.color.size), // COLOR_ARRAY_SIZE
+        0x8082 => e(os.color.ty),
+        0x8083 => i(os.color.stride),
+        0x807E => e(os.normal.ty), // NORMAL_ARRAY_TYPE
+        0x807F => i(os.normal.stride),
+        0x8088 => i(os.tex_coord.size), // TEXTURE_COORD_ARRAY_SIZE
+        0x8089 => e(os.tex_coord.ty),
+        0x808A => i(os.tex_coord.stride),
+        _ => {
+            if let Some(&(_, c)) = CORE_CAPS.iter().find(|(e, _)| *e == pname) {
+                Val::B(vec![gl.is_enabled(c)])
+            } else {
+                match enums::cap(pname)? {
+                    Cap::Core(c) => Val::B(vec![gl.is_enabled(c)]),
+                    Cap::Inert(c) => Val::B(vec![os.inert_caps.contains(&c)]),
+                    Cap::Missing => Val::B(vec![false]),
+                }
+            }
+        }
+    })
+}
+
+/// Writes `vals` through `out`, which GL says has room for them all.
+///
+/// # Safety
+/// `out` is null or has room for `vals.len()` values.
+unsafe fn write<T: Copy>(out: *mut T, vals: &[T]) {
+    if out.is_null() {
+        return;
+    }
+    // SAFETY: room for every value of `pname`, by GL's contract.
+    unsafe { std::ptr::copy_nonoverlapping(vals.as_ptr(), out, vals.len()) };
+}
+
+/// Runs a `glGet*v`: converts the value of `pname` with `conv` and writes it.
+fn get<T: Copy>(pname: GLenum, out: *mut T, conv: impl FnOnce(&Val) -> Vec<T>) {
+    with_gl((), |os, gl| match value(os, gl, pname) {
+        // SAFETY: `out` has room for the value of `pname` (GL's contract).
+        Ok(v) => unsafe { write(out, &conv(&v)) },
+        Err(err) => gl.record_error(err),
+    })
+}
+
+const VENDOR: &std::ffi::CStr = c"softgl";
+const RENDERER_INTERP: &std::ffi::CStr = c"softgl (interpreter)";
+const RENDERER_JIT: &std::ffi::CStr = c"softgl (Cranelift JIT)";
+const VERSION: &std::ffi::CStr = c"1.1 softgl 0.1.0";
+const EXTENSIONS: &std::ffi::CStr =
+    c"GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract";
+
+exports! {
+    /// `GL_VENDOR`, `GL_RENDERER`, `GL_VERSION` ("1.1 softgl …") and
+    /// `GL_EXTENSIONS`; `NULL` and `GL_INVALID_ENUM` for other names.
+    [] fn glGetString(name: GLenum) -> *const u8 {
+        with_gl(std::ptr::null(), |_, gl| {
+            let s = match name {
+                GL_VENDOR => VENDOR,
+                GL_RENDERER if gl.backend() == Backend::Jit => RENDERER_JIT,
+                GL_RENDERER => RENDERER_INTERP,
+                GL_VERSION => VERSION,
+                GL_EXTENSIONS => EXTENSIONS,
+                _ => {
+                    gl.record_error(GlError::InvalidEnum);
+                    return std::ptr::null();
+                }
+            };
+            if gl.inside_begin() {
+                gl.record_error(GlError::InvalidOperation);
+                return std::ptr::null();
+            }
+            s.as_ptr().cast::<c_char>().cast()
+        })
+    }
+    /// # Safety
+    /// `out` is null or has room for the value of `pname`.
+    [unsafe] fn glGetIntegerv(pname: GLenum, out: *mut i32) {
+        get(pname, out, Val::ints)
+    }
+    /// # Safety
+    /// `out` is null or has room for the value of `pname`.
+    [unsafe] fn glGetFloatv(pname: GLenum, out: *mut f32) {
+        get(pname, out, |v| v.doubles().iter().map(|&x| x as f32).collect())
+    }
+    /// # Safety
+    /// `out` is null or has room for the value of `pname`.
+    [unsafe] fn glGetDoublev(pname: GLenum, out: *mut f64) {
+        get(pname, out, Val::doubles)
+    }
+    /// # Safety
+    /// `out` is null or has room for the value of `pname`.
+    [unsafe] fn glGetBooleanv(pname: GLenum, out: *mut u8) {
+        get(pname, out, |v| v.bools().iter().map(|&b| u8::from(b)).collect())
+    }
+}

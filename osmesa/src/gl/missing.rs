@@ -1,0 +1,872 @@
+//! Entry points of GL 1.x that softgl does not implement yet. Each is
+//! exported (so that GLU and PyOpenGL resolve it here, not in another GL
+//! library) and records `GL_INVALID_OPERATION`; none touches its pointers.
+//! The README lists them by group.
+
+use super::missing;
+use crate::consts::*;
+use std::ffi::c_void;
+
+exports! {
+    /// Texturing (not in softgl yet): writes 0 (GLU's proxy-texture probes
+    /// read the value) and records `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// `params` is null or writable.
+    [unsafe] fn glGetTexLevelParameteriv(_target: GLenum, _level: i32, _pname: GLenum, params: *mut i32) {
+        if !params.is_null() {
+            // SAFETY: writable by GL's contract.
+            unsafe { *params = 0 };
+        }
+        missing()
+    }
+    /// As `glGetTexLevelParameteriv`.
+    ///
+    /// # Safety
+    /// `params` is null or writable.
+    [unsafe] fn glGetTexLevelParameterfv(_target: GLenum, _level: i32, _pname: GLenum, params: *mut f32) {
+        if !params.is_null() {
+            // SAFETY: writable by GL's contract.
+            unsafe { *params = 0.0 };
+        }
+        missing()
+    }
+    /// Texturing (not in softgl yet): writes no names, records `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGenTextures(_n: i32, _textures: *mut u32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glLightf(_light: GLenum, _pname: GLenum, _param: f32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glLightfv(_light: GLenum, _pname: GLenum, _params: *const f32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glLightModelf(_pname: GLenum, _param: f32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glLightModelfv(_pname: GLenum, _params: *const f32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glMaterialf(_face: GLenum, _pname: GLenum, _param: f32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glMaterialfv(_face: GLenum, _pname: GLenum, _params: *const f32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetLightfv(_light: GLenum, _pname: GLenum, _params: *mut f32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetMaterialfv(_face: GLenum, _pname: GLenum, _params: *mut f32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glTexParameterf(_target: GLenum, _pname: GLenum, _param: f32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexParameterfv(_target: GLenum, _pname: GLenum, _params: *const f32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetTexParameterfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glTexEnvf(_target: GLenum, _pname: GLenum, _param: f32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexEnvfv(_target: GLenum, _pname: GLenum, _params: *const f32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetTexEnvfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glTexGenf(_coord: GLenum, _pname: GLenum, _param: f32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexGenfv(_coord: GLenum, _pname: GLenum, _params: *const f32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetTexGenfv(_coord: GLenum, _pname: GLenum, _params: *mut f32) {
+        missing()
+    }
+    /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glFogf(_pname: GLenum, _param: f32) {
+        missing()
+    }
+    /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glFogfv(_pname: GLenum, _params: *const f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glPixelTransferf(_pname: GLenum, _param: f32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glLighti(_light: GLenum, _pname: GLenum, _param: i32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glLightiv(_light: GLenum, _pname: GLenum, _params: *const i32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glLightModeli(_pname: GLenum, _param: i32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glLightModeliv(_pname: GLenum, _params: *const i32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glMateriali(_face: GLenum, _pname: GLenum, _param: i32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glMaterialiv(_face: GLenum, _pname: GLenum, _params: *const i32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetLightiv(_light: GLenum, _pname: GLenum, _params: *mut i32) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetMaterialiv(_face: GLenum, _pname: GLenum, _params: *mut i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glTexParameteri(_target: GLenum, _pname: GLenum, _param: i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexParameteriv(_target: GLenum, _pname: GLenum, _params: *const i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetTexParameteriv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glTexEnvi(_target: GLenum, _pname: GLenum, _param: i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexEnviv(_target: GLenum, _pname: GLenum, _params: *const i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetTexEnviv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glTexGeni(_coord: GLenum, _pname: GLenum, _param: i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexGeniv(_coord: GLenum, _pname: GLenum, _params: *const i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetTexGeniv(_coord: GLenum, _pname: GLenum, _params: *mut i32) {
+        missing()
+    }
+    /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glFogi(_pname: GLenum, _param: i32) {
+        missing()
+    }
+    /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glFogiv(_pname: GLenum, _params: *const i32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glPixelTransferi(_pname: GLenum, _param: i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glTexGend(_coord: GLenum, _pname: GLenum, _param: f64) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexGendv(_coord: GLenum, _pname: GLenum, _params: *const f64) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetTexGendv(_coord: GLenum, _pname: GLenum, _params: *mut f64) {
+        missing()
+    }
+    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glColorMaterial(_face: GLenum, _mode: GLenum) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexImage1D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexImage2D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _height: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexImage3D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _height: i32, _depth: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexSubImage1D(_target: GLenum, _level: i32, _xoffset: i32, _width: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glTexSubImage2D(_target: GLenum, _level: i32, _xoffset: i32, _yoffset: i32, _width: i32, _height: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glCopyTexImage1D(_target: GLenum, _level: i32, _internal_format: GLenum, _x: i32, _y: i32, _width: i32, _border: i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glCopyTexImage2D(_target: GLenum, _level: i32, _internal_format: GLenum, _x: i32, _y: i32, _width: i32, _height: i32, _border: i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glCopyTexSubImage1D(_target: GLenum, _level: i32, _xoffset: i32, _x: i32, _y: i32, _width: i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glCopyTexSubImage2D(_target: GLenum, _level: i32, _xoffset: i32, _yoffset: i32, _x: i32, _y: i32, _width: i32, _height: i32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetTexImage(_target: GLenum, _level: i32, _format: GLenum, _ty: GLenum, _pixels: *mut c_void) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glBindTexture(_target: GLenum, _texture: u32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glDeleteTextures(_n: i32, _textures: *const u32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glIsTexture(_texture: u32) -> u8 {
+        missing();
+        GL_FALSE
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glPrioritizeTextures(_n: i32, _textures: *const u32, _priorities: *const f32) {
+        missing()
+    }
+    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glAreTexturesResident(_n: i32, _textures: *const u32, _residences: *mut u8) -> u8 {
+        missing();
+        GL_FALSE
+    }
+    /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glLineStipple(_factor: i32, _pattern: u16) {
+        missing()
+    }
+    /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glPolygonStipple(_mask: *const u8) {
+        missing()
+    }
+    /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetPolygonStipple(_mask: *mut u8) {
+        missing()
+    }
+    /// Clip planes (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glClipPlane(_plane: GLenum, _equation: *const f64) {
+        missing()
+    }
+    /// Clip planes (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetClipPlane(_plane: GLenum, _equation: *mut f64) {
+        missing()
+    }
+    /// Accumulation buffer (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glAccum(_op: GLenum, _value: f32) {
+        missing()
+    }
+    /// Accumulation buffer (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glClearAccum(_r: f32, _g: f32, _b: f32, _a: f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos2f(_x: f32, _y: f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos2fv(_v: *const f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos2d(_x: f64, _y: f64) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos2dv(_v: *const f64) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos2i(_x: i32, _y: i32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos2iv(_v: *const i32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos2s(_x: i16, _y: i16) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos2sv(_v: *const i16) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos3f(_x: f32, _y: f32, _z: f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos3fv(_v: *const f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos3d(_x: f64, _y: f64, _z: f64) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos3dv(_v: *const f64) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos3i(_x: i32, _y: i32, _z: i32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos3iv(_v: *const i32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos3s(_x: i16, _y: i16, _z: i16) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos3sv(_v: *const i16) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos4f(_x: f32, _y: f32, _z: f32, _w: f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos4fv(_v: *const f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos4d(_x: f64, _y: f64, _z: f64, _w: f64) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos4dv(_v: *const f64) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos4i(_x: i32, _y: i32, _z: i32, _w: i32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos4iv(_v: *const i32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRasterPos4s(_x: i16, _y: i16, _z: i16, _w: i16) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glRasterPos4sv(_v: *const i16) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glDrawPixels(_width: i32, _height: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glCopyPixels(_x: i32, _y: i32, _width: i32, _height: i32, _ty: GLenum) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glBitmap(_width: i32, _height: i32, _xorig: f32, _yorig: f32, _xmove: f32, _ymove: f32, _bitmap: *const u8) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glPixelZoom(_xfactor: f32, _yfactor: f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glPixelMapfv(_map: GLenum, _size: i32, _values: *const f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glPixelMapuiv(_map: GLenum, _size: i32, _values: *const u32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glPixelMapusv(_map: GLenum, _size: i32, _values: *const u16) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetPixelMapfv(_map: GLenum, _values: *mut f32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetPixelMapuiv(_map: GLenum, _values: *mut u32) {
+        missing()
+    }
+    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetPixelMapusv(_map: GLenum, _values: *mut u16) {
+        missing()
+    }
+    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glRenderMode(_mode: GLenum) -> i32 {
+        missing();
+        0
+    }
+    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glSelectBuffer(_size: i32, _buffer: *mut u32) {
+        missing()
+    }
+    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glFeedbackBuffer(_size: i32, _ty: GLenum, _buffer: *mut f32) {
+        missing()
+    }
+    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glInitNames() {
+        missing()
+    }
+    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glLoadName(_name: u32) {
+        missing()
+    }
+    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glPushName(_name: u32) {
+        missing()
+    }
+    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glPopName() {
+        missing()
+    }
+    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glPassThrough(_token: f32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glMap1f(_target: GLenum, _u1: f32, _u2: f32, _stride: i32, _order: i32, _points: *const f32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glMap2f(_target: GLenum, _u1: f32, _u2: f32, _ustride: i32, _uorder: i32, _v1: f32, _v2: f32, _vstride: i32, _vorder: i32, _points: *const f32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glMapGrid1f(_un: i32, _u1: f32, _u2: f32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glMapGrid2f(_un: i32, _u1: f32, _u2: f32, _vn: i32, _v1: f32, _v2: f32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glEvalCoord1f(_u: f32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glEvalCoord1fv(_u: *const f32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glEvalCoord2f(_u: f32, _v: f32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glEvalCoord2fv(_u: *const f32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetMapfv(_target: GLenum, _query: GLenum, _v: *mut f32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glMap1d(_target: GLenum, _u1: f64, _u2: f64, _stride: i32, _order: i32, _points: *const f64) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glMap2d(_target: GLenum, _u1: f64, _u2: f64, _ustride: i32, _uorder: i32, _v1: f64, _v2: f64, _vstride: i32, _vorder: i32, _points: *const f64) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glMapGrid1d(_un: i32, _u1: f64, _u2: f64) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glMapGrid2d(_un: i32, _u1: f64, _u2: f64, _vn: i32, _v1: f64, _v2: f64) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glEvalCoord1d(_u: f64) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glEvalCoord1dv(_u: *const f64) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glEvalCoord2d(_u: f64, _v: f64) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glEvalCoord2dv(_u: *const f64) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetMapdv(_target: GLenum, _query: GLenum, _v: *mut f64) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glGetMapiv(_target: GLenum, _query: GLenum, _v: *mut i32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glEvalMesh1(_mode: GLenum, _i1: i32, _i2: i32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glEvalMesh2(_mode: GLenum, _i1: i32, _i2: i32, _j1: i32, _j2: i32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glEvalPoint1(_i: i32) {
+        missing()
+    }
+    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glEvalPoint2(_i: i32, _j: i32) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glIndexf(_c: f32) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glIndexfv(_c: *const f32) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glIndexd(_c: f64) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glIndexdv(_c: *const f64) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glIndexi(_c: i32) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glIndexiv(_c: *const i32) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glIndexs(_c: i16) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glIndexsv(_c: *const i16) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glIndexub(_c: u8) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glIndexubv(_c: *const u8) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glIndexMask(_mask: u32) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glClearIndex(_c: f32) {
+        missing()
+    }
+    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glIndexPointer(_ty: GLenum, _stride: i32, _ptr: *const c_void) {
+        missing()
+    }
+    /// Edge flags (not in softgl yet): `GL_INVALID_OPERATION`.
+    [] fn glEdgeFlag(_flag: u8) {
+        missing()
+    }
+    /// Edge flags (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glEdgeFlagv(_flag: *const u8) {
+        missing()
+    }
+    /// Edge flags (not in softgl yet): `GL_INVALID_OPERATION`.
+    ///
+    /// # Safety
+    /// Reads and writes nothing.
+    [unsafe] fn glEdgeFlagPointer(_stride: i32, _ptr: *const c_void) {
+        missing()
+    }
+}

@@ -1,0 +1,143 @@
+//! The GL entry points. Each submodule declares its exports with
+//! [`exports!`], which also lists them for `OSMesaGetProcAddress`.
+
+use crate::state::{with_gl, OsContext};
+use softgl::{Context, GlError, GlResult};
+
+/// Declares `extern "C"` exports and a `table()` of their names and addresses.
+/// `[unsafe]` before `fn` marks the ones that read or write through pointers.
+macro_rules! exports {
+    ($( $(#[$m:meta])* [$($q:tt)*] fn $name:ident ( $($a:ident : $t:ty),* $(,)? ) $(-> $r:ty)? $body:block )*) => {
+        $(
+            $(#[$m])*
+            #[no_mangle]
+            pub $($q)* extern "C" fn $name($($a: $t),*) $(-> $r)? $body
+        )*
+        /// This module's exports, by name.
+        pub(crate) fn table() -> Vec<(&'static str, *const std::ffi::c_void)> {
+            vec![$((stringify!($name), $name as *const std::ffi::c_void)),*]
+        }
+    };
+}
+
+mod arrays;
+pub(crate) mod attrib;
+mod enums;
+mod get;
+mod immediate;
+pub(crate) mod lists;
+mod missing;
+mod pixels;
+mod state;
+
+pub use arrays::*;
+pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
+pub use get::*;
+pub use immediate::*;
+pub use lists::*;
+pub use missing::*;
+pub use pixels::*;
+pub use state::*;
+
+/// The address of the export called `name`.
+pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
+    [
+        arrays::table,
+        attrib::table,
+        get::table,
+        immediate::table,
+        lists::table,
+        missing::table,
+        pixels::table,
+        state::table,
+    ]
+    .iter()
+    .flat_map(|t| t())
+    .find(|(n, _)| *n == name)
+    .map(|(_, p)| p)
+}
+
+/// Every `gl*` name this library exports.
+pub fn exported_names() -> Vec<&'static str> {
+    [
+        arrays::table,
+        attrib::table,
+        get::table,
+        immediate::table,
+        lists::table,
+        missing::table,
+        pixels::table,
+        state::table,
+    ]
+    .iter()
+    .flat_map(|t| t())
+    .map(|(n, _)| n)
+    .collect()
+}
+
+/// A command of a display list: a GL call with its arguments.
+pub(crate) type Cmd = std::sync::Arc<dyn Fn(&mut OsContext, &mut Context) + Send + Sync>;
+
+/// Runs `cmd` now, or records it in the display list being compiled (and
+/// runs it too under `GL_COMPILE_AND_EXECUTE`).
+pub(crate) fn run_or_record(os: &mut OsContext, gl: &mut Context, cmd: Cmd) {
+    match os.compiling.as_mut() {
+        Some(list) => {
+            list.cmds.push(cmd.clone());
+            if list.execute {
+                cmd(os, gl);
+            }
+        }
+        None => cmd(os, gl),
+    }
+}
+
+/// A GL call that display lists record: runs `f` on the current context
+/// (recording the error it returns), or records it.
+fn rec(f: impl Fn(&mut OsContext, &mut Context) -> GlResult + Send + Sync + 'static) {
+    with_gl((), |os, gl| {
+        if os.compiling.is_none() {
+            // The common case: no list, no allocation.
+            if let Err(e) = f(os, gl) {
+                gl.record_error(e);
+            }
+            return;
+        }
+        let cmd: Cmd = std::sync::Arc::new(move |os: &mut OsContext, gl: &mut Context| {
+            if let Err(e) = f(os, gl) {
+                gl.record_error(e);
+            }
+        });
+        run_or_record(os, gl, cmd);
+    })
+}
+
+/// A recorded call on the GL context alone; errors are recorded by the context.
+fn gl(f: impl Fn(&mut Context) -> GlResult + Send + Sync + 'static) {
+    rec(move |_, gl| {
+        let _ = f(gl);
+        Ok(())
+    })
+}
+
+/// A recorded call whose error is recorded here (checks made in this layer,
+/// which the context has not seen).
+fn checked(f: impl Fn(&mut Context) -> GlResult + Send + Sync + 'static) {
+    rec(move |_, gl| f(gl))
+}
+
+/// A call that runs at once, never recorded in a display list (queries,
+/// client state, pixel packing, list management), recording its error.
+fn now(f: impl FnOnce(&mut OsContext, &mut Context) -> GlResult) {
+    with_gl((), |os, gl| {
+        if let Err(e) = f(os, gl) {
+            gl.record_error(e);
+        }
+    })
+}
+
+/// A function softgl does not implement yet: `GL_INVALID_OPERATION`, at
+/// once (also while a display list is compiled).
+fn missing() {
+    now(|_, _| Err(GlError::InvalidOperation))
+}

@@ -1,0 +1,272 @@
+//! `glPixelStore` and `glReadPixels`.
+
+use super::now;
+use crate::consts::*;
+use crate::state::PixelStore;
+use softgl::{Context, GlError, GlResult};
+use std::ffi::c_void;
+
+fn pixel_store(pname: GLenum, param: i32) {
+    now(|os, gl| {
+        if gl.inside_begin() {
+            return Err(GlError::InvalidOperation);
+        }
+        let pack = matches!(
+            pname,
+            GL_PACK_SWAP_BYTES..=GL_PACK_ALIGNMENT | GL_PACK_SKIP_IMAGES | GL_PACK_IMAGE_HEIGHT
+        );
+        let unpack = matches!(
+            pname,
+            GL_UNPACK_SWAP_BYTES..=GL_UNPACK_ALIGNMENT | GL_UNPACK_SKIP_IMAGES | GL_UNPACK_IMAGE_HEIGHT
+        );
+        let s: &mut PixelStore = match (pack, unpack) {
+            (true, _) => &mut os.pack,
+            (_, true) => &mut os.unpack,
+            _ => return Err(GlError::InvalidEnum),
+        };
+        let base = if pack { GL_PACK_SWAP_BYTES } else { GL_UNPACK_SWAP_BYTES };
+        let field = match pname {
+            GL_PACK_SKIP_IMAGES | GL_UNPACK_SKIP_IMAGES => 6,
+            GL_PACK_IMAGE_HEIGHT | GL_UNPACK_IMAGE_HEIGHT => 7,
+            p => p - base,
+        };
+        match field {
+            0 => s.swap_bytes = param != 0,
+            1 => s.lsb_first = param != 0,
+            5 if matches!(param, 1 | 2 | 4 | 8) => s.alignment = param,
+            5 => return Err(GlError::InvalidValue),
+            _ if param < 0 => return Err(GlError::InvalidValue),
+            2 => s.row_length = param,
+            3 => s.skip_rows = param,
+            4 => s.skip_pixels = param,
+            6 => s.skip_images = param,
+            _ => s.image_height = param,
+        }
+        Ok(())
+    })
+}
+
+/// What `glReadPixels` reads per pixel.
+#[derive(Clone, Copy)]
+enum Source {
+    /// Colour components, as indices into RGBA; `None` is luminance (R+G+B).
+    Color(&'static [Option<usize>]),
+    Depth,
+    Stencil,
+}
+
+fn source(format: GLenum) -> GlResult<Source> {
+    Ok(match format {
+        GL_RGBA => Source::Color(&[Some(0), Some(1), Some(2), Some(3)]),
+        GL_BGRA => Source::Color(&[Some(2), Some(1), Some(0), Some(3)]),
+        GL_RGB => Source::Color(&[Some(0), Some(1), Some(2)]),
+        GL_BGR => Source::Color(&[Some(2), Some(1), Some(0)]),
+        GL_RED => Source::Color(&[Some(0)]),
+        GL_GREEN => Source::Color(&[Some(1)]),
+        GL_BLUE => Source::Color(&[Some(2)]),
+        GL_ALPHA => Source::Color(&[Some(3)]),
+        GL_LUMINANCE => Source::Color(&[None]),
+        GL_LUMINANCE_ALPHA => Source::Color(&[None, Some(3)]),
+        GL_DEPTH_COMPONENT => Source::Depth,
+        GL_STENCIL_INDEX => Source::Stencil,
+        // Colour-index reads: no colour-index mode in an RGBA context.
+        GL_COLOR_INDEX => return Err(GlError::InvalidOperation),
+        _ => return Err(GlError::InvalidEnum),
+    })
+}
+
+/// Component values in [0, 1] (colour, depth) or raw (stencil) for pixel `(x, y)`;
+/// `None` outside the framebuffer, which leaves the caller's bytes untouched.
+fn read_pixel(gl: &Context, src: Source, x: i64, y: i64, out: &mut Vec<f64>) -> Option<()> {
+    let fb = gl.framebuffer();
+    let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
+    out.clear();
+    match src {
+        Source::Color(channels) => {
+            // `c * (1/255)` in f32: Mesa's unorm8-to-float, bit for bit.
+            let p = fb.pixel(x, y)?.map(|c| f64::from(f32::from(c) * (1.0 / 255.0)));
+            out.extend(
+                channels
+                    .iter()
+                    .map(|c| c.map_or((p[0] + p[1] + p[2]).min(1.0), |c| p[c])),
+            );
+        }
+        Source::Depth => {
+            let max = fb.depth_format()?.max_value();
+            out.push(f64::from(fb.depth_at(x, y)?) / f64::from(max));
+            // The stored value too, for the integer types' bit replication.
+            out.push(f64::from(fb.depth_at(x, y)?));
+        }
+        Source::Stencil => out.push(f64::from(fb.stencil_at(x, y)?)),
+    }
+    Some(())
+}
+
+/// `v`, a `from`-bit unsigned value, widened or narrowed to `to` bits by bit
+/// replication (Mesa's Z24 to `GL_UNSIGNED_INT`: `z << 8 | z >> 16`).
+fn replicate(v: u32, from: u32, to: u32) -> u32 {
+    if from >= to {
+        return v >> (from - to);
+    }
+    let mut out = 0u64;
+    let mut filled = 0;
+    while filled < to {
+        out = (out << from) | u64::from(v);
+        filled += from;
+    }
+    (out >> (filled - to)) as u32
+}
+
+/// Stores component `v` as `ty` at `dst` (stencil values are stored as integers).
+fn put(dst: &mut [u8], ty: GLenum, v: f64, stencil: bool, swap: bool) {
+    let mut bytes = [0u8; 4];
+    let n = match ty {
+        GL_UNSIGNED_BYTE | GL_BYTE => {
+            bytes[0] = if stencil {
+                v as u8
+            } else if ty == GL_BYTE {
+                (v * 127.0).round() as i8 as u8
+            } else {
+                (v * 255.0).round() as u8
+            };
+            1
+        }
+        GL_UNSIGNED_SHORT | GL_SHORT => {
+            let x = if stencil {
+                v as u16
+            } else if ty == GL_SHORT {
+                (v * 32767.0).round() as i16 as u16
+            } else {
+                (v * 65535.0).round() as u16
+            };
+            bytes[..2].copy_from_slice(&x.to_ne_bytes());
+            2
+        }
+        GL_UNSIGNED_INT | GL_INT => {
+            let x = if stencil {
+                v as u32
+            } else if ty == GL_INT {
+                (v * 2147483647.0).round() as i32 as u32
+            } else {
+                (v * 4294967295.0).round() as u32
+            };
+            bytes.copy_from_slice(&x.to_ne_bytes());
+            4
+        }
+        _ => {
+            bytes.copy_from_slice(&(v as f32).to_ne_bytes());
+            4
+        }
+    };
+    if swap {
+        bytes[..n].reverse();
+    }
+    dst[..n].copy_from_slice(&bytes[..n]);
+}
+
+/// `glReadPixels`, with the pack alignment, row length and skips honoured.
+///
+/// # Safety
+/// `pixels` has room for the image as the pack state lays it out.
+unsafe fn read_pixels(
+    gl: &mut Context,
+    pack: &PixelStore,
+    (x, y, w, h): (i32, i32, i32, i32),
+    format: GLenum,
+    ty: GLenum,
+    pixels: *mut c_void,
+) -> GlResult {
+    let src = source(format)?;
+    let size: usize = match ty {
+        GL_UNSIGNED_BYTE | GL_BYTE => 1,
+        GL_UNSIGNED_SHORT | GL_SHORT => 2,
+        GL_UNSIGNED_INT | GL_INT | GL_FLOAT => 4,
+        // Packed and bitmap types exist in GL 1.2 and 1.0 but not in softgl yet.
+        0x1A00 | 0x8032..=0x8036 | 0x8362..=0x8368 => return Err(GlError::InvalidOperation),
+        _ => return Err(GlError::InvalidEnum),
+    };
+    if w < 0 || h < 0 {
+        return Err(GlError::InvalidValue);
+    }
+    if gl.inside_begin() {
+        return Err(GlError::InvalidOperation);
+    }
+    let fb = gl.framebuffer();
+    match src {
+        Source::Depth if fb.depth_format().is_none() => return Err(GlError::InvalidOperation),
+        Source::Stencil if !fb.has_stencil() => return Err(GlError::InvalidOperation),
+        _ => {}
+    }
+    if w == 0 || h == 0 {
+        return Ok(());
+    }
+    if pixels.is_null() {
+        return Err(GlError::InvalidValue);
+    }
+    let comps = match src {
+        Source::Color(c) => c.len(),
+        Source::Depth | Source::Stencil => 1,
+    };
+    let row_pixels = if pack.row_length > 0 { pack.row_length } else { w } as usize;
+    let pixel_bytes = comps * size;
+    let align = pack.alignment as usize;
+    // Checked: a layout whose size overflows cannot fit any buffer.
+    let layout = || -> Option<(usize, usize, usize)> {
+        let row_bytes = row_pixels.checked_mul(pixel_bytes)?;
+        let stride = if size >= align {
+            row_bytes
+        } else {
+            row_bytes.div_ceil(align).checked_mul(align)?
+        };
+        let start = (pack.skip_rows as usize)
+            .checked_mul(stride)?
+            .checked_add((pack.skip_pixels as usize).checked_mul(pixel_bytes)?)?;
+        let len = stride
+            .checked_mul(h as usize - 1)?
+            .checked_add((w as usize).checked_mul(pixel_bytes)?)?
+            .checked_add(start)?;
+        (len <= isize::MAX as usize).then_some((stride, start, len))
+    };
+    let (stride, start, len) = layout().ok_or(GlError::InvalidValue)?;
+    // SAFETY: GL's contract: `pixels` holds the image as the pack state lays it out,
+    // which is exactly `len` bytes from `pixels`.
+    let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
+    let stencil = matches!(src, Source::Stencil);
+    let depth_bits = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
+    let mut vals = Vec::with_capacity(4);
+    for j in 0..h as usize {
+        for i in 0..w as usize {
+            if read_pixel(gl, src, i64::from(x) + i as i64, i64::from(y) + j as i64, &mut vals).is_none() {
+                continue;
+            }
+            let at = start + j * stride + i * pixel_bytes;
+            if let (Source::Depth, GL_UNSIGNED_INT | GL_UNSIGNED_SHORT) = (src, ty) {
+                let raw = replicate(vals[1] as u32, depth_bits, 8 * size as u32);
+                put(&mut dst[at..], ty, f64::from(raw), true, pack.swap_bytes);
+                continue;
+            }
+            for (k, &v) in vals.iter().take(comps).enumerate() {
+                put(&mut dst[at + k * size..], ty, v, stencil, pack.swap_bytes);
+            }
+        }
+    }
+    Ok(())
+}
+
+exports! {
+    [] fn glPixelStorei(pname: GLenum, param: i32) {
+        pixel_store(pname, param)
+    }
+    [] fn glPixelStoref(pname: GLenum, param: f32) {
+        pixel_store(pname, param.round() as i32)
+    }
+    /// # Safety
+    /// `pixels` has room for the image as the pack state lays it out.
+    [unsafe] fn glReadPixels(x: i32, y: i32, width: i32, height: i32, format: GLenum, ty: GLenum, pixels: *mut c_void) {
+        now(|os, gl| {
+            let pack = os.pack;
+            // SAFETY: GL's contract on `pixels`, passed on.
+            unsafe { read_pixels(gl, &pack, (x, y, width, height), format, ty, pixels) }
+        })
+    }
+}

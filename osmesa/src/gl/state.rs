@@ -1,0 +1,298 @@
+//! State, matrices, clears and synchronisation.
+
+use super::enums::{self, Cap};
+use super::{checked, gl, rec};
+use crate::consts::*;
+use crate::state::{with_gl, with_os, HINTS};
+use glam::{DMat4, Mat4};
+use softgl::{ClearMask, Context, GlError, GlResult};
+
+/// `glEnable`/`glDisable` of `cap`.
+fn set_cap(gl: &mut softgl::Context, inert: &mut Vec<GLenum>, cap: GLenum, on: bool) -> GlResult {
+    if gl.inside_begin() {
+        return Err(GlError::InvalidOperation);
+    }
+    match enums::cap(cap)? {
+        Cap::Core(c) if on => gl.enable(c),
+        Cap::Core(c) => gl.disable(c),
+        Cap::Inert(e) => {
+            inert.retain(|&x| x != e);
+            if on {
+                inert.push(e);
+            }
+            Ok(())
+        }
+        // Disabling what is never on is correct; enabling it is not done yet.
+        Cap::Missing if on => Err(GlError::InvalidOperation),
+        Cap::Missing => Ok(()),
+    }
+}
+
+/// Reads 16 values through `m` (column-major, as GL lays them out).
+///
+/// # Safety
+/// `m` is null or points to 16 readable values.
+unsafe fn matrix_from<T: Copy + Into<f64>>(m: *const T) -> GlResult<Mat4> {
+    if m.is_null() {
+        return Err(GlError::InvalidValue);
+    }
+    // SAFETY: 16 readable values, by the caller's contract.
+    let s = unsafe { std::slice::from_raw_parts(m, 16) };
+    let mut a = [0.0f64; 16];
+    for (d, v) in a.iter_mut().zip(s) {
+        *d = (*v).into();
+    }
+    Ok(DMat4::from_cols_array(&a).as_mat4())
+}
+
+exports! {
+    [] fn glEnable(cap: GLenum) {
+        rec(move |os, gl| set_cap(gl, &mut os.inert_caps, cap, true))
+    }
+    [] fn glDisable(cap: GLenum) {
+        rec(move |os, gl| set_cap(gl, &mut os.inert_caps, cap, false))
+    }
+    [] fn glIsEnabled(cap: GLenum) -> u8 {
+        with_gl(GL_FALSE, |os, gl| match super::get::is_enabled(os, gl, cap) {
+            Ok(b) => u8::from(b),
+            Err(e) => {
+                gl.record_error(e);
+                GL_FALSE
+            }
+        })
+    }
+    /// Between `glBegin` and `glEnd` it is itself `GL_INVALID_OPERATION` and
+    /// returns `GL_NO_ERROR`, leaving the pending error for later, as in Mesa.
+    [] fn glGetError() -> GLenum {
+        with_gl(GL_NO_ERROR, |_, gl| {
+            if gl.inside_begin() {
+                gl.record_error(GlError::InvalidOperation);
+                return GL_NO_ERROR;
+            }
+            gl.get_error().map_or(GL_NO_ERROR, GlError::code)
+        })
+    }
+    [] fn glFlush() {
+        with_os((), flush)
+    }
+    [] fn glFinish() {
+        with_os((), flush)
+    }
+    [] fn glHint(target: GLenum, mode: GLenum) {
+        rec(move |os, gl| {
+            if gl.inside_begin() {
+                return Err(GlError::InvalidOperation);
+            }
+            let i = HINTS.iter().position(|&t| t == target).ok_or(GlError::InvalidEnum)?;
+            if !matches!(mode, GL_DONT_CARE | GL_FASTEST | GL_NICEST) {
+                return Err(GlError::InvalidEnum);
+            }
+            os.hints[i] = mode;
+            Ok(())
+        })
+    }
+    /// `GL_FRONT` and its aliases: an OSMesa context is single-buffered.
+    [] fn glDrawBuffer(mode: GLenum) {
+        checked(move |_| match mode {
+            GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK => Ok(()),
+            GL_NONE | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT => {
+                Err(GlError::InvalidOperation)
+            }
+            0x0409..=0x040C => Err(GlError::InvalidOperation),
+            _ => Err(GlError::InvalidEnum),
+        })
+    }
+    [] fn glReadBuffer(mode: GLenum) {
+        checked(move |_| match mode {
+            GL_FRONT | GL_FRONT_LEFT | GL_LEFT => Ok(()),
+            GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT | GL_FRONT_AND_BACK => {
+                Err(GlError::InvalidOperation)
+            }
+            0x0409..=0x040C => Err(GlError::InvalidOperation),
+            _ => Err(GlError::InvalidEnum),
+        })
+    }
+
+    [] fn glClear(mask: u32) {
+        checked(move |gl| {
+            let known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+            if mask & !known != 0 {
+                return Err(GlError::InvalidValue);
+            }
+            // No accumulation buffer: clearing it has no effect, as for any absent buffer.
+            gl.clear(ClearMask {
+                color: mask & GL_COLOR_BUFFER_BIT != 0,
+                depth: mask & GL_DEPTH_BUFFER_BIT != 0,
+                stencil: mask & GL_STENCIL_BUFFER_BIT != 0,
+            })
+        })
+    }
+    [] fn glClearColor(r: f32, g: f32, b: f32, a: f32) {
+        gl(move |gl| gl.clear_color(r, g, b, a))
+    }
+    [] fn glClearDepth(depth: f64) {
+        gl(move |gl| gl.clear_depth(depth))
+    }
+    [] fn glClearStencil(s: i32) {
+        gl(move |gl| gl.clear_stencil(s))
+    }
+    [] fn glViewport(x: i32, y: i32, width: i32, height: i32) {
+        gl(move |gl| gl.viewport(x, y, width, height))
+    }
+    [] fn glDepthRange(near: f64, far: f64) {
+        gl(move |gl| gl.depth_range(near, far))
+    }
+    [] fn glScissor(x: i32, y: i32, width: i32, height: i32) {
+        gl(move |gl| gl.scissor(x, y, width, height))
+    }
+
+    [] fn glMatrixMode(mode: GLenum) {
+        checked(move |gl| gl.matrix_mode(enums::matrix_mode(mode)?))
+    }
+    [] fn glPushMatrix() {
+        gl(Context::push_matrix)
+    }
+    [] fn glPopMatrix() {
+        gl(Context::pop_matrix)
+    }
+    [] fn glLoadIdentity() {
+        gl(Context::load_identity)
+    }
+    /// # Safety
+    /// `m` is null or points to 16 floats.
+    [unsafe] fn glLoadMatrixf(m: *const f32) {
+        // SAFETY: 16 floats by GL's contract; null is refused.
+        let m = unsafe { matrix_from(m) };
+        checked(move |gl| gl.load_matrix(&m?))
+    }
+    /// # Safety
+    /// `m` is null or points to 16 doubles.
+    [unsafe] fn glLoadMatrixd(m: *const f64) {
+        // SAFETY: 16 doubles by GL's contract; null is refused.
+        let m = unsafe { matrix_from(m) };
+        checked(move |gl| gl.load_matrix(&m?))
+    }
+    /// # Safety
+    /// `m` is null or points to 16 floats.
+    [unsafe] fn glMultMatrixf(m: *const f32) {
+        // SAFETY: 16 floats by GL's contract; null is refused.
+        let m = unsafe { matrix_from(m) };
+        checked(move |gl| gl.mult_matrix(&m?))
+    }
+    /// # Safety
+    /// `m` is null or points to 16 doubles.
+    [unsafe] fn glMultMatrixd(m: *const f64) {
+        // SAFETY: 16 doubles by GL's contract; null is refused.
+        let m = unsafe { matrix_from(m) };
+        checked(move |gl| gl.mult_matrix(&m?))
+    }
+    [] fn glTranslatef(x: f32, y: f32, z: f32) {
+        gl(move |gl| gl.translate(x, y, z))
+    }
+    [] fn glTranslated(x: f64, y: f64, z: f64) {
+        gl(move |gl| gl.translate(x as f32, y as f32, z as f32))
+    }
+    [] fn glScalef(x: f32, y: f32, z: f32) {
+        gl(move |gl| gl.scale(x, y, z))
+    }
+    [] fn glScaled(x: f64, y: f64, z: f64) {
+        gl(move |gl| gl.scale(x as f32, y as f32, z as f32))
+    }
+    [] fn glRotatef(angle: f32, x: f32, y: f32, z: f32) {
+        gl(move |gl| gl.rotate(angle, x, y, z))
+    }
+    [] fn glRotated(angle: f64, x: f64, y: f64, z: f64) {
+        gl(move |gl| gl.rotate(angle as f32, x as f32, y as f32, z as f32))
+    }
+    [] fn glFrustum(l: f64, r: f64, b: f64, t: f64, n: f64, f: f64) {
+        gl(move |gl| gl.frustum(l, r, b, t, n, f))
+    }
+    [] fn glOrtho(l: f64, r: f64, b: f64, t: f64, n: f64, f: f64) {
+        gl(move |gl| gl.ortho(l, r, b, t, n, f))
+    }
+
+    [] fn glShadeModel(mode: GLenum) {
+        checked(move |gl| gl.shade_model(enums::shade_model(mode)?))
+    }
+    [] fn glFrontFace(mode: GLenum) {
+        checked(move |gl| gl.front_face(enums::front_face(mode)?))
+    }
+    [] fn glCullFace(mode: GLenum) {
+        checked(move |gl| gl.cull_face(enums::face(mode)?))
+    }
+    [] fn glPolygonMode(face: GLenum, mode: GLenum) {
+        checked(move |gl| gl.polygon_mode(enums::face(face)?, enums::polygon_mode(mode)?))
+    }
+    [] fn glPolygonOffset(factor: f32, units: f32) {
+        gl(move |gl| gl.polygon_offset(factor, units))
+    }
+    [] fn glPointSize(size: f32) {
+        gl(move |gl| gl.point_size(size))
+    }
+    [] fn glLineWidth(width: f32) {
+        gl(move |gl| gl.line_width(width))
+    }
+
+    [] fn glAlphaFunc(func: GLenum, reference: f32) {
+        checked(move |gl| gl.alpha_func(enums::compare(func)?, reference))
+    }
+    [] fn glStencilFunc(func: GLenum, reference: i32, mask: u32) {
+        checked(move |gl| gl.stencil_func(enums::compare(func)?, reference, mask))
+    }
+    [] fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum) {
+        checked(move |gl| gl.stencil_op(enums::stencil_op(fail)?, enums::stencil_op(zfail)?, enums::stencil_op(zpass)?))
+    }
+    [] fn glStencilMask(mask: u32) {
+        gl(move |gl| gl.stencil_mask(mask))
+    }
+    [] fn glDepthFunc(func: GLenum) {
+        checked(move |gl| gl.depth_func(enums::compare(func)?))
+    }
+    [] fn glDepthMask(flag: u8) {
+        gl(move |gl| gl.depth_mask(flag != 0))
+    }
+    [] fn glBlendFunc(src: GLenum, dst: GLenum) {
+        checked(move |gl| gl.blend_func(enums::blend_factor(src)?, enums::blend_factor(dst)?))
+    }
+    [] fn glBlendFuncSeparate(src_rgb: GLenum, dst_rgb: GLenum, src_alpha: GLenum, dst_alpha: GLenum) {
+        checked(move |gl| {
+            gl.blend_func_separate(
+                enums::blend_factor(src_rgb)?,
+                enums::blend_factor(dst_rgb)?,
+                enums::blend_factor(src_alpha)?,
+                enums::blend_factor(dst_alpha)?,
+            )
+        })
+    }
+    [] fn glBlendFuncSeparateEXT(src_rgb: GLenum, dst_rgb: GLenum, src_alpha: GLenum, dst_alpha: GLenum) {
+        glBlendFuncSeparate(src_rgb, dst_rgb, src_alpha, dst_alpha)
+    }
+    [] fn glBlendEquation(mode: GLenum) {
+        checked(move |gl| gl.blend_equation(enums::blend_equation(mode)?))
+    }
+    [] fn glBlendEquationEXT(mode: GLenum) {
+        glBlendEquation(mode)
+    }
+    [] fn glBlendEquationSeparate(rgb: GLenum, alpha: GLenum) {
+        checked(move |gl| gl.blend_equation_separate(enums::blend_equation(rgb)?, enums::blend_equation(alpha)?))
+    }
+    [] fn glBlendColor(r: f32, g: f32, b: f32, a: f32) {
+        gl(move |gl| gl.blend_color(r, g, b, a))
+    }
+    [] fn glBlendColorEXT(r: f32, g: f32, b: f32, a: f32) {
+        glBlendColor(r, g, b, a)
+    }
+    [] fn glLogicOp(op: GLenum) {
+        checked(move |gl| gl.logic_op(enums::logic_op(op)?))
+    }
+    [] fn glColorMask(r: u8, g: u8, b: u8, a: u8) {
+        gl(move |gl| gl.color_mask(r != 0, g != 0, b != 0, a != 0))
+    }
+}
+
+/// `glFlush`/`glFinish`: the converted formats reach the caller's buffer, and
+/// the Z24S8 copy `OSMesaGetDepthBuffer` handed out is brought up to date.
+fn flush(os: &mut crate::state::OsContext) {
+    os.flush();
+    crate::api::refresh_depth_view(os);
+}

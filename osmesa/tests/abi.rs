@@ -1,0 +1,453 @@
+//! The C ABI called from Rust, in-process: handles, current contexts, the
+//! unimplemented entry points, client arrays, pixel store and the converted
+//! formats. Each test runs on its own thread, so has its own current context.
+
+use std::ffi::c_void;
+use std::ptr::{null, null_mut};
+use OSMesa::consts::*;
+use OSMesa::*;
+
+const GL_TRIANGLES: u32 = 4;
+const GL_QUADS: u32 = 7;
+const GL_LIGHTING: u32 = 0x0B50;
+const GL_LIGHT0: u32 = 0x4000;
+const GL_NORMALIZE: u32 = 0x0BA1;
+const GL_TEXTURE_2D: u32 = 0x0DE1;
+const GL_DIFFUSE: u32 = 0x1201;
+const GL_TEXTURE_WIDTH: u32 = 0x1000;
+const GL_INVALID_ENUM: u32 = 0x500;
+const GL_INVALID_VALUE: u32 = 0x501;
+const GL_INVALID_OPERATION: u32 = 0x502;
+const GL_PROJECTION: u32 = 0x1701;
+const GL_MODELVIEW: u32 = 0x1700;
+
+/// A context current on this thread, drawing into `buf` (RGBA bytes) with an
+/// orthographic projection of the window in pixels.
+fn current(buf: &mut [u8], w: i32, h: i32) -> OSMesaContext {
+    let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
+    assert!(!ctx.is_null());
+    // SAFETY: `buf` holds w * h RGBA pixels and outlives the test's drawing.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, w, h) },
+        GL_TRUE
+    );
+    glMatrixMode(GL_PROJECTION);
+    glOrtho(0.0, f64::from(w), 0.0, f64::from(h), -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    ctx
+}
+
+fn px(buf: &[u8], w: usize, x: usize, y: usize) -> [u8; 4] {
+    let o = (y * w + x) * 4;
+    buf[o..o + 4].try_into().unwrap()
+}
+
+#[test]
+fn calls_without_a_current_context_do_nothing() {
+    assert!(OSMesaGetCurrentContext().is_null());
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(0.0, 0.0);
+    glEnd();
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    assert!(glGetString(GL_VENDOR).is_null());
+    let mut v = [7i32; 4];
+    // SAFETY: room for the 4 values of GL_VIEWPORT.
+    unsafe { glGetIntegerv(0x0BA2, v.as_mut_ptr()) };
+    assert_eq!(v, [7; 4]);
+}
+
+#[test]
+fn unknown_and_destroyed_handles_are_refused() {
+    let mut buf = vec![0u8; 16];
+    let bogus = 0xdead_bee0usize as OSMesaContext;
+    // SAFETY: the buffer holds 2x2 RGBA pixels; the handle is never dereferenced.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(bogus, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 2, 2) },
+        GL_FALSE
+    );
+    OSMesaDestroyContext(bogus);
+    OSMesaDestroyContext(null_mut());
+    let ctx = OSMesaCreateContext(OSMESA_RGBA, null_mut());
+    OSMesaDestroyContext(ctx);
+    OSMesaDestroyContext(ctx); // twice: ignored
+                               // SAFETY: as above.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 2, 2) },
+        GL_FALSE
+    );
+    let (mut w, mut h, mut f, mut p) = (5, 5, 5, null_mut::<c_void>());
+    // SAFETY: valid output pointers.
+    assert_eq!(
+        unsafe { OSMesaGetColorBuffer(ctx, &mut w, &mut h, &mut f, &mut p) },
+        GL_FALSE
+    );
+    // A refused OSMesaMakeCurrent leaves the current context as it was.
+    let mut px4 = vec![0u8; 16];
+    let live = current(&mut px4, 2, 2);
+    let other = OSMesaCreateContextExt(OSMESA_RGB_565, 0, 0, 0, null_mut());
+    // SAFETY: 2x2 pixels of 2 bytes fit; the type is refused before any use.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(other, px4.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 2, 2) },
+        GL_FALSE
+    );
+    assert_eq!(OSMesaGetCurrentContext(), live);
+    OSMesaDestroyContext(other);
+    OSMesaDestroyContext(live);
+    // Unknown formats and negative sizes: no context.
+    assert!(OSMesaCreateContextExt(OSMESA_COLOR_INDEX, 0, 0, 0, null_mut()).is_null());
+    assert!(OSMesaCreateContextExt(OSMESA_RGBA, -1, 0, 0, null_mut()).is_null());
+    let core = [OSMESA_PROFILE, OSMESA_CORE_PROFILE, 0];
+    // SAFETY: zero-terminated attribute lists.
+    unsafe {
+        assert!(OSMesaCreateContextAttribs(core.as_ptr(), null_mut()).is_null());
+        let gl3 = [OSMESA_CONTEXT_MAJOR_VERSION, 3, 0];
+        assert!(OSMesaCreateContextAttribs(gl3.as_ptr(), null_mut()).is_null());
+        let ok = [OSMESA_FORMAT, OSMESA_BGRA as i32, OSMESA_DEPTH_BITS, 16, 0];
+        let c = OSMesaCreateContextAttribs(ok.as_ptr(), null_mut());
+        assert!(!c.is_null());
+        OSMesaDestroyContext(c);
+    }
+}
+
+#[test]
+fn unimplemented_functions_record_invalid_operation() {
+    let mut buf = vec![0u8; 8 * 8 * 4];
+    let ctx = current(&mut buf, 8, 8);
+    glEnable(GL_LIGHTING);
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    assert_eq!(glIsEnabled(GL_LIGHTING), GL_FALSE);
+    glDisable(GL_LIGHTING); // disabling what is off is fine
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    let diffuse = [1.0f32, 0.0, 0.0, 1.0];
+    // SAFETY: 4 floats; the unimplemented entry points read nothing anyway.
+    unsafe { glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse.as_ptr()) };
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    glEnable(GL_TEXTURE_2D);
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    // SAFETY: a 1x1 RGB image.
+    unsafe {
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGB as i32,
+            1,
+            1,
+            0,
+            GL_RGB,
+            GL_UNSIGNED_BYTE,
+            [0u8; 3].as_ptr().cast(),
+        )
+    };
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    let mut width = 99;
+    // SAFETY: one writable GLint.
+    unsafe { glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &mut width) };
+    assert_eq!((width, glGetError()), (0, GL_INVALID_OPERATION));
+    glFogf(0x0B62, 0.5); // GL_FOG_DENSITY
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    // Inert until lighting lands: accepted and reported.
+    glEnable(GL_NORMALIZE);
+    assert_eq!((glGetError(), glIsEnabled(GL_NORMALIZE)), (GL_NO_ERROR, GL_TRUE));
+    // Drawing still works after all that.
+    glColor3f(0.0, 1.0, 0.0);
+    glRectf(0.0, 0.0, 8.0, 8.0);
+    glFinish();
+    assert_eq!(px(&buf, 8, 3, 3), [0, 255, 0, 255]);
+    OSMesaDestroyContext(ctx);
+    assert!(OSMesaGetCurrentContext().is_null());
+}
+
+#[test]
+fn proc_addresses_are_the_exports() {
+    // SAFETY: NUL-terminated names.
+    unsafe {
+        let clear = OSMesaGetProcAddress(c"glClear".as_ptr()).expect("glClear");
+        assert_eq!(clear as usize, glClear as *const () as usize);
+        let make = OSMesaGetProcAddress(c"OSMesaMakeCurrent".as_ptr()).expect("OSMesaMakeCurrent");
+        assert_eq!(make as usize, OSMesaMakeCurrent as *const () as usize);
+        assert!(OSMesaGetProcAddress(c"glBlendColorEXT".as_ptr()).is_some());
+        assert!(OSMesaGetProcAddress(c"glNoSuchThing".as_ptr()).is_none());
+        assert!(OSMesaGetProcAddress(null()).is_none());
+    }
+}
+
+#[test]
+fn client_arrays_of_every_type_draw_like_immediate_mode() {
+    let (w, h) = (16usize, 16usize);
+    let mut a = vec![0u8; w * h * 4];
+    let ctx = current(&mut a, 16, 16);
+    // Two triangles: short positions, unsigned byte colours, drawn by index.
+    let pos: [i16; 8] = [1, 1, 15, 1, 15, 15, 1, 15];
+    let col: [u8; 16] = [255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255];
+    let idx: [u16; 6] = [0, 1, 2, 0, 2, 3];
+    // SAFETY: the arrays outlive the draws; 6 u16 indices.
+    unsafe {
+        glVertexPointer(2, GL_SHORT, 0, pos.as_ptr().cast());
+        glColorPointer(4, GL_UNSIGNED_BYTE, 0, col.as_ptr().cast());
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT, idx.as_ptr().cast());
+    }
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    glFinish();
+    let arrays = a.clone();
+    // The same with glDrawArrays of a quad, and with glArrayElement.
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDrawArrays(GL_QUADS, 0, 4);
+    glFinish();
+    assert_eq!(a, arrays, "glDrawArrays(GL_QUADS) differs from the indexed triangles");
+    glClear(GL_COLOR_BUFFER_BIT);
+    // SAFETY: 6 u16 indices.
+    unsafe { glDrawRangeElements(GL_TRIANGLES, 0, 3, 6, GL_UNSIGNED_SHORT, idx.as_ptr().cast()) };
+    glFinish();
+    assert_eq!(a, arrays, "glDrawRangeElements differs");
+    // SAFETY: refused before reading.
+    unsafe { glDrawRangeElements(GL_TRIANGLES, 3, 0, 6, GL_UNSIGNED_SHORT, idx.as_ptr().cast()) };
+    assert_eq!(glGetError(), GL_INVALID_VALUE);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_QUADS);
+    for i in 0..4 {
+        glArrayElement(i);
+    }
+    glEnd();
+    glFinish();
+    assert_eq!(a, arrays, "glArrayElement differs");
+    // And immediate mode with the same values.
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_QUADS);
+    for i in 0..4 {
+        glColor4ub(col[i * 4], col[i * 4 + 1], col[i * 4 + 2], col[i * 4 + 3]);
+        glVertex2s(pos[i * 2], pos[i * 2 + 1]);
+    }
+    glEnd();
+    glFinish();
+    assert_eq!(a, arrays, "immediate mode differs");
+    // Smooth shading at the centre (1.5, 1.5), next to the red vertex at (1, 1).
+    assert_eq!(px(&a, w, 1, 1), [246, 0, 9, 255]);
+    assert_eq!(px(&a, w, 0, 0), [0, 0, 0, 0]);
+    OSMesaDestroyContext(ctx);
+}
+
+#[test]
+fn read_pixels_honours_the_pack_state() {
+    let (w, h) = (8usize, 4usize);
+    let mut buf = vec![0u8; w * h * 4];
+    let ctx = current(&mut buf, 8, 4);
+    glClearColor(0.0, 0.0, 0.0, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(0); // points, one per pixel of row 1, red = x * 30
+    for x in 0..8 {
+        glColor3ub(x as u8 * 30, 7, 9);
+        glVertex2f(x as f32 + 0.5, 1.5);
+    }
+    glEnd();
+    // 3 pixels from (2, 1) as RGB, alignment 8, row length 5, skip 1 pixel and 1 row.
+    let mut out = [0xEEu8; 64];
+    glPixelStorei(GL_PACK_ALIGNMENT, 8);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 5);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 1);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 1);
+    // SAFETY: 64 bytes hold 2 rows of stride 16 after a 16 + 3 byte skip.
+    unsafe { glReadPixels(2, 1, 3, 2, GL_RGB, GL_UNSIGNED_BYTE, out.as_mut_ptr().cast()) };
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    // Row stride: 5 pixels * 3 bytes = 15, aligned to 16. Start: 16 + 3.
+    assert_eq!(&out[19..28], &[60, 7, 9, 90, 7, 9, 120, 7, 9]);
+    assert!(out[..19].iter().all(|&b| b == 0xEE), "skipped bytes were written");
+    assert_eq!(&out[35..44], &[0, 0, 0, 0, 0, 0, 0, 0, 0], "row 2 is the cleared row");
+    assert!(out[44..].iter().all(|&b| b == 0xEE));
+    // A read from outside the framebuffer leaves those bytes alone.
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+    let mut one = [0xEEu8; 8];
+    // SAFETY: 2 RGBA pixels.
+    unsafe { glReadPixels(7, 1, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, one.as_mut_ptr().cast()) };
+    assert_eq!(one, [210, 7, 9, 255, 0xEE, 0xEE, 0xEE, 0xEE]);
+    // Errors: a null destination, a bad type.
+    // SAFETY: null is refused before any write.
+    unsafe { glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, null_mut()) };
+    assert_eq!(glGetError(), GL_INVALID_VALUE);
+    // SAFETY: the bad type is refused before any write.
+    unsafe { glReadPixels(0, 0, 1, 1, GL_RGBA, 0x1234, one.as_mut_ptr().cast()) };
+    assert_eq!(glGetError(), GL_INVALID_ENUM);
+    OSMesaDestroyContext(ctx);
+}
+
+#[test]
+fn y_up_and_row_length_change_the_layout_of_later_frames() {
+    let (w, h) = (4usize, 3usize);
+    let mut buf = vec![0xA5u8; 6 * h * 4];
+    let ctx = current(&mut buf, 4, 3);
+    let draw = || {
+        glClearColor(0.0, 0.0, 1.0, 1.0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glColor3f(1.0, 0.0, 0.0);
+        glRectf(0.0, 0.0, 4.0, 1.0); // the bottom row
+        glFinish();
+    };
+    draw();
+    assert_eq!(px(&buf, w, 0, 0), [255, 0, 0, 255], "Y_UP: row 0 is the bottom");
+    OSMesaPixelStore(OSMESA_Y_UP, 0);
+    draw();
+    assert_eq!(
+        px(&buf, w, 0, 2),
+        [255, 0, 0, 255],
+        "Y_UP 0: the last row is the bottom"
+    );
+    assert_eq!(px(&buf, w, 0, 0), [0, 0, 255, 255]);
+    OSMesaPixelStore(OSMESA_Y_UP, 1);
+    OSMesaPixelStore(OSMESA_ROW_LENGTH, 6);
+    draw();
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    assert_eq!(px(&buf, 6, 3, 0), [255, 0, 0, 255], "rows are 6 pixels apart");
+    assert_eq!(px(&buf, 6, 0, 1), [0, 0, 255, 255]);
+    // A row length shorter than the width is refused and changes nothing.
+    OSMesaPixelStore(OSMESA_ROW_LENGTH, 2);
+    assert_eq!(glGetError(), GL_INVALID_VALUE);
+    let mut v = 0;
+    // SAFETY: one writable GLint.
+    unsafe { OSMesaGetIntegerv(OSMESA_ROW_LENGTH, &mut v) };
+    assert_eq!(v, 6);
+    OSMesaDestroyContext(ctx);
+}
+
+#[test]
+fn converted_formats_reach_the_buffer_at_finish_and_when_switching() {
+    let mut floats = vec![-1.0f32; 2 * 2 * 4];
+    let ctx = OSMesaCreateContextExt(OSMESA_ARGB, 0, 0, 0, null_mut());
+    // SAFETY: 2x2 pixels of 4 floats.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(ctx, floats.as_mut_ptr().cast(), GL_FLOAT, 2, 2) },
+        GL_TRUE
+    );
+    glClearColor(0.2, 0.4, 0.6, 0.8);
+    glClear(GL_COLOR_BUFFER_BIT);
+    assert_eq!(
+        floats[0], -1.0,
+        "converted formats are written at flush time, as in Mesa"
+    );
+    glFlush();
+    let u = |v: f32| (v * 255.0).round() * (1.0 / 255.0);
+    assert_eq!(&floats[..4], &[u(0.8), u(0.2), u(0.4), u(0.6)], "ARGB order");
+    // Switching to another context flushes the previous one.
+    glClearColor(1.0, 0.0, 0.0, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    let mut other = vec![0u8; 4];
+    let ctx2 = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, null_mut());
+    // SAFETY: one RGBA pixel.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(ctx2, other.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 1, 1) },
+        GL_TRUE
+    );
+    assert_eq!(&floats[..4], &[1.0, 1.0, 0.0, 0.0]);
+    OSMesaDestroyContext(ctx2);
+    OSMesaDestroyContext(ctx);
+}
+
+#[test]
+fn a_context_destroyed_while_current_elsewhere_stays_safe() {
+    let mut buf = vec![0u8; 4 * 4 * 4];
+    let ctx = current(&mut buf, 4, 4);
+    let handle = ctx as usize;
+    // Another thread destroys it; this thread keeps drawing into it safely.
+    std::thread::spawn(move || OSMesaDestroyContext(handle as OSMesaContext))
+        .join()
+        .unwrap();
+    glClearColor(0.0, 1.0, 0.0, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glFinish();
+    assert_eq!(px(&buf, 4, 0, 0), [0, 255, 0, 255]);
+    assert_eq!(OSMesaGetCurrentContext(), ctx);
+    // The handle is gone for everyone else.
+    let mut b2 = vec![0u8; 4];
+    // SAFETY: one RGBA pixel.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(ctx, b2.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 1, 1) },
+        GL_FALSE
+    );
+}
+
+#[test]
+fn a_new_type_for_the_same_context_leaves_the_old_buffer_alone() {
+    let mut bytes = vec![0u8; 2 * 2 * 4];
+    let ctx = current(&mut bytes, 2, 2);
+    glClearColor(1.0, 0.0, 0.0, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    assert_eq!(px(&bytes, 2, 1, 1), [255, 0, 0, 255]);
+    // The same context on a float buffer of the same size: softgl's own
+    // RGBA8 buffer, converted at glFinish; the byte buffer is not drawn on.
+    let mut floats = vec![0.0f32; 2 * 2 * 4];
+    // SAFETY: 2x2 pixels of 4 floats.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(ctx, floats.as_mut_ptr().cast(), GL_FLOAT, 2, 2) },
+        GL_TRUE
+    );
+    glClearColor(0.0, 1.0, 0.0, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glFinish();
+    assert_eq!(px(&bytes, 2, 1, 1), [255, 0, 0, 255]);
+    assert_eq!(&floats[..4], &[0.0, 1.0, 0.0, 1.0]);
+    // And back to bytes: drawn into directly again.
+    // SAFETY: 2x2 RGBA pixels.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(ctx, bytes.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 2, 2) },
+        GL_TRUE
+    );
+    glClear(GL_COLOR_BUFFER_BIT);
+    assert_eq!(px(&bytes, 2, 1, 1), [0, 255, 0, 255]);
+    OSMesaDestroyContext(ctx);
+}
+
+#[test]
+fn interleaved_arrays_draw_like_separate_ones() {
+    #[repr(C)]
+    #[derive(Clone, Copy)]
+    struct C4ubV3f {
+        c: [u8; 4],
+        v: [f32; 3],
+    }
+    let verts = [
+        C4ubV3f {
+            c: [255, 0, 0, 255],
+            v: [1.0, 1.0, 0.0],
+        },
+        C4ubV3f {
+            c: [0, 255, 0, 255],
+            v: [15.0, 2.0, 0.0],
+        },
+        C4ubV3f {
+            c: [0, 0, 255, 255],
+            v: [8.0, 14.0, 0.0],
+        },
+    ];
+    let mut a = vec![0u8; 16 * 16 * 4];
+    let ctx = current(&mut a, 16, 16);
+    // SAFETY: `verts` outlives the draw; GL_C4UB_V3F is 16 bytes a vertex.
+    unsafe { glInterleavedArrays(0x2A23, 0, verts.as_ptr().cast()) };
+    assert_eq!(glIsEnabled(GL_COLOR_ARRAY), GL_TRUE);
+    assert_eq!(glIsEnabled(GL_NORMAL_ARRAY), GL_FALSE);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glFinish();
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    let interleaved = a.clone();
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_TRIANGLES);
+    for v in &verts {
+        glColor4ub(v.c[0], v.c[1], v.c[2], v.c[3]);
+        glVertex3f(v.v[0], v.v[1], v.v[2]);
+    }
+    glEnd();
+    glFinish();
+    assert_eq!(a, interleaved);
+    assert!(
+        a.chunks_exact(4).filter(|p| p[3] == 255).count() > 60,
+        "the triangle was drawn"
+    );
+    // SAFETY: refused before any use.
+    unsafe { glInterleavedArrays(0x1234, 0, verts.as_ptr().cast()) };
+    assert_eq!(glGetError(), GL_INVALID_ENUM);
+    OSMesaDestroyContext(ctx);
+}
