@@ -15,12 +15,12 @@ const LINE_TIES: Tolerance = Tolerance {
     reason: "Line end points exactly on k or k+0.5: llvmpipe's diamond-exit tests are asymmetric there and softgl's are not (measured at 256x256: 40 pixels, 26 of them coverage).",
 };
 
-/// OPEN: with two or more quads in one glBegin/glEnd, llvmpipe (like softpipe) splits them along v1-v3, softgl along v0-v2 (right only for a lone quad, see quad_single); colours differ over ~30% of the pixels (measured 0.296 at 256x256).
+/// Quads in a draw that needs clipping split along v1-v3 in llvmpipe (its draw pipeline), else along v0-v2; softgl follows the same rule (docs/llvmpipe-facts.md 12), so the scene matches exactly.
 const QUAD_DIAGONAL: Tolerance = Tolerance {
     channel: 0,
-    share_over: 0.3,
+    share_over: 0.0,
     coverage: 0,
-    reason: "OPEN: with two or more quads in one glBegin/glEnd, llvmpipe (like softpipe) splits them along v1-v3, softgl along v0-v2 (right only for a lone quad, see quad_single); colours differ over ~30% of the pixels (measured 0.296 at 256x256).",
+    reason: "Exact: softgl splits GL_QUADS as llvmpipe does per draw (v1-v3 when a vertex needs clipping or a face is unfilled, v0-v2 otherwise; docs/llvmpipe-facts.md 12).",
 };
 
 /// Colours may differ by 1 LSB on a few pixels: softgl's f32 attribute setup does not repeat llvmpipe's step for step (docs/llvmpipe-facts.md 11).
