@@ -138,33 +138,14 @@ pub fn blend_equation_enum(e: BlendEquation) -> GLenum {
     }
 }
 
-const LOGIC_OPS: [LogicOp; 16] = [
-    LogicOp::Clear,
-    LogicOp::And,
-    LogicOp::AndReverse,
-    LogicOp::Copy,
-    LogicOp::AndInverted,
-    LogicOp::Noop,
-    LogicOp::Xor,
-    LogicOp::Or,
-    LogicOp::Nor,
-    LogicOp::Equiv,
-    LogicOp::Invert,
-    LogicOp::OrReverse,
-    LogicOp::CopyInverted,
-    LogicOp::OrInverted,
-    LogicOp::Nand,
-    LogicOp::Set,
-];
-
 pub fn logic_op(v: GLenum) -> GlResult<LogicOp> {
     v.checked_sub(0x1500)
-        .and_then(|i| LOGIC_OPS.get(i as usize).copied())
+        .and_then(|i| LogicOp::ALL.get(i as usize).copied())
         .ok_or(GlError::InvalidEnum)
 }
 
 pub fn logic_op_enum(op: LogicOp) -> GLenum {
-    0x1500 + LOGIC_OPS.iter().position(|&o| o == op).unwrap_or(3) as GLenum
+    0x1500 + LogicOp::ALL.iter().position(|&o| o == op).unwrap_or(3) as GLenum
 }
 
 pub fn face(v: GLenum) -> GlResult<Face> {
