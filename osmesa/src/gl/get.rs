@@ -2,7 +2,8 @@
 
 use super::enums::{self, Cap, CORE_CAPS};
 use crate::consts::*;
-use crate::state::{with_gl, OsContext, HINTS, MAX_SIZE};
+use crate::gl_state::{GlState, PixelStore, HINTS};
+use crate::state::with_gl;
 use softgl::{Backend, ColorFormat, Context, GlError, GlResult, MatrixMode};
 use std::ffi::c_char;
 
@@ -67,7 +68,7 @@ fn matrix(gl: &Context, mode: MatrixMode) -> Val {
 }
 
 /// `glIsEnabled`.
-pub(super) fn is_enabled(os: &OsContext, gl: &Context, cap: GLenum) -> GlResult<bool> {
+pub(super) fn is_enabled(os: &GlState, gl: &Context, cap: GLenum) -> GlResult<bool> {
     if gl.inside_begin() {
         return Err(GlError::InvalidOperation);
     }
@@ -85,7 +86,7 @@ pub(super) fn is_enabled(os: &OsContext, gl: &Context, cap: GLenum) -> GlResult<
     })
 }
 
-fn store_value(s: &crate::state::PixelStore, pname: GLenum, pack: bool) -> Option<Val> {
+fn store_value(s: &PixelStore, pname: GLenum, pack: bool) -> Option<Val> {
     let base = if pack { GL_PACK_SWAP_BYTES } else { GL_UNPACK_SWAP_BYTES };
     let (skip_images, image_height) = if pack {
         (GL_PACK_SKIP_IMAGES, GL_PACK_IMAGE_HEIGHT)
@@ -106,7 +107,7 @@ fn store_value(s: &crate::state::PixelStore, pname: GLenum, pack: bool) -> Optio
 }
 
 /// The value of `pname`, or `GL_INVALID_ENUM`.
-fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
+fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     if gl.inside_begin() {
         return Err(GlError::InvalidOperation);
     }
@@ -171,14 +172,14 @@ fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D53 => i(color_bits(1)),
         0x0D54 => i(color_bits(2)),
         0x0D55 => i(color_bits(3)),
-        0x0D56 => i(os.reported_depth_bits()),             // DEPTH_BITS
-        0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }), // STENCIL_BITS
-        0x0D58..=0x0D5B => i(0),                           // ACCUM_*_BITS: none yet
-        0x0C32 => Val::B(vec![false]),                     // DOUBLEBUFFER
-        0x0C33 => Val::B(vec![false]),                     // STEREO
-        0x0C31 => Val::B(vec![true]),                      // RGBA_MODE
-        0x0C01 => e(GL_FRONT),                             // DRAW_BUFFER
-        0x0C02 => e(GL_FRONT),                             // READ_BUFFER
+        0x0D56 => i(fb.depth_format().map_or(0, |f| f.max_value().count_ones())), // DEPTH_BITS
+        0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }),                        // STENCIL_BITS
+        0x0D58..=0x0D5B => i(0),                                                  // ACCUM_*_BITS: none yet
+        0x0C32 => Val::B(vec![false]),                                            // DOUBLEBUFFER
+        0x0C33 => Val::B(vec![false]),                                            // STEREO
+        0x0C31 => Val::B(vec![true]),                                             // RGBA_MODE
+        0x0C01 => e(GL_FRONT),                                                    // DRAW_BUFFER
+        0x0C02 => e(GL_FRONT),                                                    // READ_BUFFER
         0x0B54 => e(if s.shade_model == softgl::ShadeModel::Flat {
             0x1D00
         } else {
@@ -189,7 +190,7 @@ fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
         } else {
             0x901
         }), // FRONT_FACE
-        0x0B45 => e(enums::face_enum(s.cull_face)),        // CULL_FACE_MODE
+        0x0B45 => e(enums::face_enum(s.cull_face)),                               // CULL_FACE_MODE
         0x0B40 => Val::I(vec![
             enums::polygon_mode_enum(s.polygon_mode_front).into(),
             enums::polygon_mode_enum(s.polygon_mode_back).into(),

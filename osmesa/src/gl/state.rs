@@ -3,7 +3,8 @@
 use super::enums::{self, Cap};
 use super::{checked, gl, rec};
 use crate::consts::*;
-use crate::state::{with_gl, with_os, HINTS};
+use crate::gl_state::HINTS;
+use crate::state::{with_current, with_gl};
 use glam::{DMat4, Mat4};
 use softgl::{ClearMask, Context, GlError, GlResult};
 
@@ -72,11 +73,14 @@ exports! {
             gl.get_error().map_or(GL_NO_ERROR, GlError::code)
         })
     }
+    /// The converted formats reach the caller's buffer, and the Z24S8 copy
+    /// `OSMesaGetDepthBuffer` handed out is brought up to date.
     [] fn glFlush() {
-        with_os((), flush)
+        with_current((), |os| os.flush())
     }
+    /// As `glFlush`: softgl draws at each call, so there is nothing to wait for.
     [] fn glFinish() {
-        with_os((), flush)
+        with_current((), |os| os.flush())
     }
     [] fn glHint(target: GLenum, mode: GLenum) {
         rec(move |os, gl| {
@@ -288,11 +292,4 @@ exports! {
     [] fn glColorMask(r: u8, g: u8, b: u8, a: u8) {
         gl(move |gl| gl.color_mask(r != 0, g != 0, b != 0, a != 0))
     }
-}
-
-/// `glFlush`/`glFinish`: the converted formats reach the caller's buffer, and
-/// the Z24S8 copy `OSMesaGetDepthBuffer` handed out is brought up to date.
-fn flush(os: &mut crate::state::OsContext) {
-    os.flush();
-    crate::api::refresh_depth_view(os);
 }
