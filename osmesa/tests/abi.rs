@@ -120,25 +120,22 @@ fn unimplemented_functions_record_invalid_operation() {
     glDisable(GL_LIGHTING); // disabling what is off is fine
     assert_eq!(glGetError(), GL_NO_ERROR);
     let diffuse = [1.0f32, 0.0, 0.0, 1.0];
-    // SAFETY: 4 floats; the unimplemented entry points read nothing anyway.
-    unsafe { glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse.as_ptr()) };
+    // Not `unsafe`: the unimplemented entry points read nothing.
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse.as_ptr());
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     glEnable(GL_TEXTURE_2D);
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
-    // SAFETY: a 1x1 RGB image.
-    unsafe {
-        glTexImage2D(
-            GL_TEXTURE_2D,
-            0,
-            GL_RGB as i32,
-            1,
-            1,
-            0,
-            GL_RGB,
-            GL_UNSIGNED_BYTE,
-            [0u8; 3].as_ptr().cast(),
-        )
-    };
+    glTexImage2D(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGB as i32,
+        1,
+        1,
+        0,
+        GL_RGB,
+        GL_UNSIGNED_BYTE,
+        [0u8; 3].as_ptr().cast(),
+    );
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     let mut width = 99;
     // SAFETY: one writable GLint.
@@ -456,7 +453,7 @@ fn interleaved_arrays_draw_like_separate_ones() {
 /// buffer: the return value, width, height, bytes per value and the values
 /// (read over the whole `w × h × bytes` it reports), outputs pre-set to junk.
 fn depth_buffer(ctx: OSMesaContext) -> (u8, i32, i32, i32, Option<Vec<u32>>) {
-    let (mut w, mut h, mut bpv, mut p) = (-1, -1, -1, 1usize as *mut c_void);
+    let (mut w, mut h, mut bpv, mut p) = (-1, -1, -1, std::ptr::dangling_mut::<c_void>());
     // SAFETY: valid output pointers.
     let r = unsafe { OSMesaGetDepthBuffer(ctx, &mut w, &mut h, &mut bpv, &mut p) };
     let values = (!p.is_null()).then(|| {

@@ -3,7 +3,8 @@
 //! at each draw; normals and texture coordinates are accepted and, without
 //! lighting and texturing, have no effect on the image.
 
-use super::{enums, now, run_or_record};
+use super::enums::decode;
+use super::{now, run_or_record};
 use crate::consts::*;
 use crate::gl_state::{ClientArray, Cmd, GlState};
 use softgl::{AttribArray, Context, GlError, GlResult, PrimitiveMode, VertexArrays};
@@ -95,7 +96,7 @@ struct Fetched {
 
 /// Reads the vertices `indices` names; `None` without a vertex array (GL then draws nothing).
 fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult<Option<Fetched>> {
-    let mode = enums::primitive(mode)?;
+    let mode = decode::<PrimitiveMode>(mode)?;
     if !os.vertex.enabled || os.vertex.ptr.is_null() {
         return Ok(None);
     }
@@ -218,7 +219,7 @@ exports! {
     [] fn glDrawArrays(mode: GLenum, first: i32, count: i32) {
         now(|os, gl| {
             if first < 0 || count < 0 {
-                enums::primitive(mode)?;
+                decode::<PrimitiveMode>(mode)?;
                 return Err(GlError::InvalidValue);
             }
             draw(os, gl, mode, &mut (first as usize..first as usize + count as usize))
@@ -228,7 +229,7 @@ exports! {
     /// `indices` points to `count` indices of `ty` (GL's contract).
     [unsafe] fn glDrawElements(mode: GLenum, count: i32, ty: GLenum, indices: *const c_void) {
         now(|os, gl| {
-            enums::primitive(mode)?;
+            decode::<PrimitiveMode>(mode)?;
             if count < 0 {
                 return Err(GlError::InvalidValue);
             }

@@ -40,8 +40,8 @@ pub use missing::*;
 pub use pixels::*;
 pub use state::*;
 
-/// The address of the export called `name`.
-pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
+/// Every `gl*` export of this library: each module's [`exports!`] table.
+fn exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)> {
     [
         arrays::table,
         attrib::table,
@@ -52,28 +52,18 @@ pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
         pixels::table,
         state::table,
     ]
-    .iter()
+    .into_iter()
     .flat_map(|t| t())
-    .find(|(n, _)| *n == name)
-    .map(|(_, p)| p)
+}
+
+/// The address of the export called `name`.
+pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
+    exports().find(|(n, _)| *n == name).map(|(_, p)| p)
 }
 
 /// Every `gl*` name this library exports.
 pub fn exported_names() -> Vec<&'static str> {
-    [
-        arrays::table,
-        attrib::table,
-        get::table,
-        immediate::table,
-        lists::table,
-        missing::table,
-        pixels::table,
-        state::table,
-    ]
-    .iter()
-    .flat_map(|t| t())
-    .map(|(n, _)| n)
-    .collect()
+    exports().map(|(n, _)| n).collect()
 }
 
 /// Runs `cmd` now, or records it in the display list being compiled (and
