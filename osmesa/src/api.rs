@@ -184,7 +184,9 @@ unsafe fn put<T>(p: *mut T, v: T) {
     }
 }
 
-/// `OSMesaGetDepthBuffer`: see [`OsContext::depth_buffer`] for the layout.
+/// `OSMesaGetDepthBuffer`: the layout of Mesa 22's llvmpipe OSMesa (Z16 for 1-16
+/// bits without stencil, else Z24 in 32 bits, Z24S8 with stencil; see
+/// `OsContext::depth_buffer`).
 /// Without a depth buffer (or before the first `OSMesaMakeCurrent`):
 /// `GL_FALSE`, and zeros and `NULL` written to the outputs, as Mesa 22.3.6
 /// answers (measured for every depth and stencil size; Mesa itself crashes

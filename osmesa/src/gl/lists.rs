@@ -1,4 +1,4 @@
-//! Display lists. A list is the sequence of recorded calls ([`Cmd`]s) made
+//! Display lists. A list is the sequence of recorded calls ([`Cmd`](crate::gl_state::Cmd)s) made
 //! between `glNewList` and `glEndList`; calls that GL never compiles
 //! (queries, client state, pixel packing, list management, `glFinish`) run at
 //! once. Draws from client arrays read the arrays when compiled, as in GL.

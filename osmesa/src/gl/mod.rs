@@ -1,5 +1,5 @@
 //! The GL entry points. Each submodule declares its exports with
-//! [`exports!`], which also lists them for `OSMesaGetProcAddress`.
+//! `exports!`, which also lists them for `OSMesaGetProcAddress`.
 
 use crate::gl_state::{Cmd, GlState};
 use crate::state::with_gl;
@@ -40,8 +40,8 @@ pub use missing::*;
 pub use pixels::*;
 pub use state::*;
 
-/// Every `gl*` export of this library: each module's [`exports!`] table.
-fn exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)> {
+/// Every `gl*` export of this library: each module's `exports!` table.
+fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)> {
     [
         arrays::table,
         attrib::table,
@@ -58,12 +58,12 @@ fn exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)> {
 
 /// The address of the export called `name`.
 pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
-    exports().find(|(n, _)| *n == name).map(|(_, p)| p)
+    all_exports().find(|(n, _)| *n == name).map(|(_, p)| p)
 }
 
 /// Every `gl*` name this library exports.
 pub fn exported_names() -> Vec<&'static str> {
-    exports().map(|(n, _)| n).collect()
+    all_exports().map(|(n, _)| n).collect()
 }
 
 /// Runs `cmd` now, or records it in the display list being compiled (and
