@@ -25,6 +25,7 @@ pub mod error;
 pub mod fragment;
 pub mod framebuffer;
 pub mod geometry;
+pub mod gl_enum;
 pub mod matrix;
 pub mod raster;
 pub mod state;
@@ -33,6 +34,7 @@ pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fragment::Backend;
 pub use framebuffer::{ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
+pub use gl_enum::GlEnum;
 pub use matrix::MatrixMode;
 pub use softgl_jit::{
     BlendEquation, BlendFactor, CacheStats, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,

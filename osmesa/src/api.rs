@@ -1,10 +1,8 @@
 //! The OSMesa entry points of `GL/osmesa.h`.
 
 use crate::consts::*;
-use crate::convert::UserFormat;
 use crate::state::*;
-use softgl::framebuffer::DepthBuffer;
-use softgl::{Context, Framebuffer, GlError};
+use softgl::GlError;
 use std::ffi::{c_char, c_void, CStr};
 
 /// `OSMesaContext`: an opaque handle (never dereferenced by either side).
@@ -43,7 +41,7 @@ pub extern "C" fn OSMesaCreateContextExt(
         if !known || depth_bits < 0 || stencil_bits < 0 || accum_bits < 0 {
             return std::ptr::null_mut();
         }
-        register(OsContext::new(format, depth_bits, stencil_bits)) as OSMesaContext
+        create_context(format, depth_bits, stencil_bits) as OSMesaContext
     })
 }
 
@@ -86,22 +84,17 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
 #[no_mangle]
 pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
     guard((), || {
-        let h = handle(ctx);
-        if unregister(h).is_some() {
-            CURRENT.with(|cur| {
-                let mut cur = cur.borrow_mut();
-                if cur.as_ref().is_some_and(|(c, _)| *c == h) {
-                    *cur = None;
-                }
-            });
-        }
+        destroy_context(handle(ctx));
     })
 }
 
 /// `OSMesaMakeCurrent`: binds `buffer` (`width` × `height` pixels of `format`
-/// and `type`) to `ctx` and makes it current on this thread. `GL_FALSE` for a
-/// null or unknown context, a null buffer, a size outside `1..=16384` or a
-/// format and type Mesa refuses; the current context is then unchanged.
+/// and `type`) to `ctx` and makes it current on this thread. `GL_FALSE` for an
+/// unknown context, a null buffer, a size outside `1..=16384` or a format and
+/// type Mesa refuses; the current context is then unchanged.
+/// `OSMesaMakeCurrent(NULL, NULL, …)` releases this thread's current context
+/// and returns `GL_TRUE`, as Mesa 22 does (whatever the type and size); a null
+/// context with a buffer is `GL_FALSE`.
 ///
 /// # Safety
 /// `buffer` must hold `width` × `height` pixels (rows of `OSMESA_ROW_LENGTH`
@@ -115,97 +108,23 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
     height: i32,
 ) -> u8 {
     guard(GL_FALSE, || {
-        let Some(shared) = lookup(handle(ctx)) else {
-            return GL_FALSE;
-        };
-        let size_ok = |s: i32| (1..=MAX_SIZE).contains(&s);
-        if buffer.is_null() || !size_ok(width) || !size_ok(height) {
-            return GL_FALSE;
+        if ctx.is_null() && buffer.is_null() {
+            release_current();
+            return GL_TRUE;
         }
-        let mut os = lock(&shared);
-        let Some(format) = UserFormat::new(os.format, ty) else {
-            return GL_FALSE;
-        };
-        let binding = Binding {
-            ptr: buffer.cast(),
-            ty,
-            width,
-            height,
-            format,
-        };
-        if bind(&mut os, binding).is_err() {
-            return GL_FALSE;
+        // SAFETY: OSMesaMakeCurrent's contract on `buffer`, passed on.
+        match unsafe { make_current(handle(ctx), buffer.cast(), ty, width, height) } {
+            Ok(()) => GL_TRUE,
+            Err(_) => GL_FALSE,
         }
-        drop(os);
-        // Stop the previous context: its caller's buffer gets its last frame.
-        // (Its lock is taken after this one's is released: no lock-order cycle.)
-        let previous = CURRENT.with(|cur| cur.borrow_mut().take());
-        if let Some((h, prev)) = previous {
-            if h != handle(ctx) {
-                lock(&prev).flush();
-            }
-        }
-        CURRENT.with(|cur| *cur.borrow_mut() = Some((handle(ctx), shared)));
-        GL_TRUE
     })
-}
-
-/// Points `os` at `binding`, making its GL context at the first call.
-fn bind(os: &mut OsContext, binding: Binding) -> Result<(), GlError> {
-    let desc = os.desc_for(&binding);
-    let len = binding.len(os.row_length);
-    let stride = binding.stride(os.row_length);
-    let same = os.gl.as_ref().is_some_and(|gl| *gl.framebuffer().desc() == desc);
-    let fb = if binding.format.is_direct() {
-        // SAFETY: OSMesaMakeCurrent's contract: `buffer` holds the image
-        // (`len` bytes for this size and row length) while bound.
-        let mem = unsafe { UserMemory::new(binding.ptr, len) };
-        if same {
-            let gl = os.gl.as_mut().expect("checked above");
-            gl.framebuffer_mut().set_color_memory(Box::new(mem), stride, !os.y_up)?;
-            None
-        } else {
-            Some(Framebuffer::with_color_memory(desc, Box::new(mem), stride, !os.y_up)?)
-        }
-    } else if same && os.binding.is_some_and(|b| !b.format.is_direct()) {
-        // softgl's own buffer already: keep it (and depth, stencil).
-        None
-    } else {
-        // Not the previous caller's memory: a buffer of softgl's own.
-        Some(Framebuffer::new(desc)?)
-    };
-    if let Some(fb) = fb {
-        match &mut os.gl {
-            Some(gl) => {
-                gl.replace_framebuffer(fb);
-            }
-            None => os.gl = Some(Box::new(Context::with_framebuffer(fb))),
-        }
-    }
-    os.binding = Some(binding);
-    Ok(())
 }
 
 /// `OSMesaGetCurrentContext`: this thread's current context, or `NULL`.
 #[no_mangle]
 pub extern "C" fn OSMesaGetCurrentContext() -> OSMesaContext {
     guard(std::ptr::null_mut(), || {
-        CURRENT.with(|cur| {
-            cur.borrow()
-                .as_ref()
-                .map_or(std::ptr::null_mut(), |(h, _)| *h as OSMesaContext)
-        })
-    })
-}
-
-/// Runs `f` on this thread's current OSMesa context, if any.
-fn with_current(f: impl FnOnce(&mut OsContext)) {
-    guard((), || {
-        CURRENT.with(|cur| {
-            if let Some((_, shared)) = cur.borrow().as_ref() {
-                f(&mut lock(shared));
-            }
-        })
+        current_handle().map_or(std::ptr::null_mut(), |h| h as OSMesaContext)
     })
 }
 
@@ -214,16 +133,14 @@ fn with_current(f: impl FnOnce(&mut OsContext)) {
 /// is `GL_INVALID_VALUE` and changes nothing; an unknown name is `GL_INVALID_ENUM`.
 #[no_mangle]
 pub extern "C" fn OSMesaPixelStore(pname: i32, value: i32) {
-    with_current(|os| {
-        let old = (os.row_length, os.y_up);
-        match pname {
-            OSMESA_ROW_LENGTH if value >= 0 => os.row_length = value,
-            OSMESA_ROW_LENGTH => return os.error(GlError::InvalidValue),
-            OSMESA_Y_UP => os.y_up = value != 0,
-            _ => return os.error(GlError::InvalidEnum),
-        }
-        if let Err(e) = os.relayout() {
-            (os.row_length, os.y_up) = old;
+    with_current((), |os| {
+        let (row_length, y_up) = os.layout();
+        let layout = match pname {
+            OSMESA_ROW_LENGTH => os.set_layout(value, y_up),
+            OSMESA_Y_UP => os.set_layout(row_length, value != 0),
+            _ => Err(GlError::InvalidEnum),
+        };
+        if let Err(e) = layout {
             os.error(e);
         }
     })
@@ -238,15 +155,16 @@ pub unsafe extern "C" fn OSMesaGetIntegerv(pname: i32, value: *mut i32) {
     if value.is_null() {
         return;
     }
-    with_current(|os| {
-        let b = os.binding;
+    with_current((), |os| {
+        let b = os.binding();
+        let (row_length, y_up) = os.layout();
         let v = match pname {
             OSMESA_WIDTH => b.map_or(0, |b| b.width),
             OSMESA_HEIGHT => b.map_or(0, |b| b.height),
-            OSMESA_FORMAT => os.format as i32,
+            OSMESA_FORMAT => os.format() as i32,
             OSMESA_TYPE => b.map_or(0, |b| b.ty as i32),
-            OSMESA_ROW_LENGTH => os.row_length,
-            OSMESA_Y_UP => i32::from(os.y_up),
+            OSMESA_ROW_LENGTH => row_length,
+            OSMESA_Y_UP => i32::from(y_up),
             OSMESA_MAX_WIDTH | OSMESA_MAX_HEIGHT => MAX_SIZE,
             _ => return,
         };
@@ -266,13 +184,13 @@ unsafe fn put<T>(p: *mut T, v: T) {
     }
 }
 
-/// `OSMesaGetDepthBuffer`, laid out as Mesa 22's llvmpipe OSMesa does: for
-/// 1-16 bits without stencil, 2 bytes per value (Z16); otherwise 4 bytes,
-/// Z24 in the low bits and, when the context has a stencil buffer, the
-/// stencil in the high byte (Z24S8). Rows bottom-up whatever `OSMESA_Y_UP` says.
-/// Without a depth buffer: `GL_FALSE`, the outputs untouched (as Mesa 22). Without stencil the
-/// pointer is softgl's live depth buffer; with stencil it is a copy made at
-/// this call (and refreshed by `glFlush`/`glFinish`).
+/// `OSMesaGetDepthBuffer`: the layout of Mesa 22's llvmpipe OSMesa (Z16 for 1-16
+/// bits without stencil, else Z24 in 32 bits, Z24S8 with stencil; see
+/// `OsContext::depth_buffer`).
+/// Without a depth buffer (or before the first `OSMesaMakeCurrent`):
+/// `GL_FALSE`, and zeros and `NULL` written to the outputs, as Mesa 22.3.6
+/// answers (measured for every depth and stencil size; Mesa itself crashes
+/// when asked before the first `OSMesaMakeCurrent`).
 ///
 /// # Safety
 /// Each output pointer is `NULL` or writable.
@@ -284,57 +202,21 @@ pub unsafe extern "C" fn OSMesaGetDepthBuffer(
     bytes_per_value: *mut i32,
     buffer: *mut *mut c_void,
 ) -> u8 {
-    let r = guard(None, || {
-        let shared = lookup(handle(ctx))?;
-        let mut os = lock(&shared);
-        depth_pointer(&mut os)
+    let r = guard(None, || lookup(handle(ctx)).and_then(|c| lock(&c).depth_buffer()));
+    let v = r.unwrap_or(DepthView {
+        width: 0,
+        height: 0,
+        bytes_per_value: 0,
+        ptr: std::ptr::null_mut(),
     });
-    let Some((w, h, bpv, p)) = r else {
-        return GL_FALSE;
-    };
     // SAFETY: the caller's output pointers are NULL or writable.
     unsafe {
-        put(width, w);
-        put(height, h);
-        put(bytes_per_value, bpv);
-        put(buffer, p);
+        put(width, v.width);
+        put(height, v.height);
+        put(bytes_per_value, v.bytes_per_value);
+        put(buffer, v.ptr.cast());
     }
-    GL_TRUE
-}
-
-/// Width, height, bytes per value and pointer of `os`'s depth buffer.
-pub(crate) fn depth_pointer(os: &mut OsContext) -> Option<(i32, i32, i32, *mut c_void)> {
-    refresh_depth_view(os);
-    let has_stencil = os.stencil_bits > 0;
-    let OsContext { gl, depth_view, .. } = os;
-    let fb = gl.as_mut()?.framebuffer_mut();
-    let (w, h) = (fb.width() as i32, fb.height() as i32);
-    let (bytes, ptr) = if has_stencil {
-        (4, depth_view.as_mut_ptr().cast::<c_void>())
-    } else {
-        match fb.depth_buffer_mut()? {
-            DepthBuffer::D24(v) | DepthBuffer::D32(v) => (4, v.as_mut_ptr().cast()),
-            DepthBuffer::D16(v) => (2, v.as_mut_ptr().cast()),
-        }
-    };
-    Some((w, h, bytes, ptr))
-}
-
-/// Rebuilds the Z24S8 copy of depth and stencil, for contexts with both.
-pub(crate) fn refresh_depth_view(os: &mut OsContext) {
-    let OsContext { gl, depth_view, .. } = os;
-    let Some(fb) = gl.as_deref().map(Context::framebuffer) else {
-        return;
-    };
-    let (Some(depth), Some(stencil)) = (fb.depth_buffer(), fb.stencil_buffer()) else {
-        depth_view.clear();
-        return;
-    };
-    let DepthBuffer::D24(d) = depth else {
-        return;
-    };
-    depth_view.clear();
-    depth_view.extend(d.iter().zip(stencil).map(|(&z, &s)| z | u32::from(s) << 24));
+    u8::from(r.is_some())
 }
 
 /// `OSMesaGetColorBuffer`: the caller's buffer bound to `ctx`, its size and
@@ -353,8 +235,8 @@ pub unsafe extern "C" fn OSMesaGetColorBuffer(
     let r = guard(None, || {
         let shared = lookup(handle(ctx))?;
         let os = lock(&shared);
-        os.binding
-            .map(|b| (b.width, b.height, os.format as i32, b.ptr.cast::<c_void>()))
+        os.binding()
+            .map(|b| (b.width, b.height, os.format() as i32, b.ptr.cast::<c_void>()))
     });
     let (w, h, f, p) = r.unwrap_or((0, 0, 0, std::ptr::null_mut()));
     // SAFETY: the caller's output pointers are NULL or writable.
@@ -416,7 +298,7 @@ fn osmesa_proc(name: &str) -> Option<*const c_void> {
 /// values, so colours are always clamped (Mesa leaves float buffers unclamped).
 #[no_mangle]
 pub extern "C" fn OSMesaColorClamp(enable: u8) {
-    with_current(|os| os.clamp = enable != 0)
+    with_current((), |os| os.set_clamp(enable != 0))
 }
 
 /// `OSMesaPostprocess`: Mesa's gallium post-processing filters do not exist

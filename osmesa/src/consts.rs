@@ -4,6 +4,9 @@
 
 pub type GLenum = u32;
 
+/// Largest buffer side `OSMesaMakeCurrent` takes (Mesa's `OSMESA_MAX_WIDTH`).
+pub const MAX_SIZE: i32 = 16384;
+
 pub const OSMESA_COLOR_INDEX: GLenum = 0x1900;
 pub const OSMESA_RGBA: GLenum = 0x1908;
 pub const OSMESA_BGRA: GLenum = 0x1;

@@ -20,6 +20,7 @@ mod api;
 pub mod consts;
 mod convert;
 mod gl;
+mod gl_state;
 mod state;
 
 pub use api::*;

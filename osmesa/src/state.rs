@@ -1,16 +1,29 @@
 //! The OSMesa context behind a handle, the registry of live handles, the
 //! current context of each thread, and the guard every export runs under.
+//!
+//! The API a face of this library (the OSMesa entry points in `api.rs`, or
+//! another one over the same contexts) builds on:
+//! - [`create_context`] registers a context and returns its handle;
+//!   [`destroy_context`] unregisters it (and releases it on this thread);
+//! - [`make_current`] binds a caller's colour buffer to a handle and makes it
+//!   current on this thread; [`release_current`] leaves none current;
+//!   [`current_handle`] names this thread's current context;
+//! - [`with_current`] runs a closure on this thread's current [`OsContext`],
+//!   [`with_gl`] on its GL state and [`softgl::Context`] (what `gl/*` uses).
+//!
+//! Every GL entry point reaches its context through [`with_gl`], which hands
+//! it the [`GlState`] and the [`Context`]: `gl/*` imports from here and from
+//! `gl_state`, never the other way.
 
 use crate::consts::*;
 use crate::convert::UserFormat;
-use softgl::{ColorMemory, Context, FramebufferDesc, GlError};
+use crate::gl_state::GlState;
+use softgl::framebuffer::DepthBuffer;
+use softgl::{ColorMemory, Context, Framebuffer, FramebufferDesc, GlError};
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
-
-/// Largest buffer side `OSMesaMakeCurrent` takes (Mesa's `OSMESA_MAX_WIDTH`).
-pub const MAX_SIZE: i32 = 16384;
 
 /// The caller's colour buffer, as `OSMesaMakeCurrent` gave it.
 #[derive(Clone, Copy, Debug)]
@@ -70,105 +83,37 @@ impl ColorMemory for UserMemory {
     }
 }
 
-/// A client vertex array (`glVertexPointer` and friends).
-#[derive(Clone, Copy, Debug)]
-pub struct ClientArray {
-    pub enabled: bool,
-    pub size: i32,
-    pub ty: GLenum,
-    pub stride: i32,
-    pub ptr: *const u8,
-}
-
-impl ClientArray {
-    pub const fn new(size: i32) -> ClientArray {
-        ClientArray {
-            enabled: false,
-            size,
-            ty: GL_FLOAT,
-            stride: 0,
-            ptr: std::ptr::null(),
-        }
-    }
-}
-
-// SAFETY: the pointer is the caller's, read only while drawing on the thread
-// where the context is current, under GL's contract for client arrays.
-unsafe impl Send for ClientArray {}
-
-/// `glPixelStore` state for one direction (pack or unpack).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PixelStore {
-    pub swap_bytes: bool,
-    pub lsb_first: bool,
-    pub row_length: i32,
-    pub skip_rows: i32,
-    pub skip_pixels: i32,
-    pub alignment: i32,
-    pub image_height: i32,
-    pub skip_images: i32,
-}
-
-impl PixelStore {
-    pub const DEFAULT: PixelStore = PixelStore {
-        swap_bytes: false,
-        lsb_first: false,
-        row_length: 0,
-        skip_rows: 0,
-        skip_pixels: 0,
-        alignment: 4,
-        image_height: 0,
-        skip_images: 0,
-    };
-}
-
 /// Everything an OSMesa handle stands for.
 pub struct OsContext {
     /// `OSMESA_RGBA`, …, as created.
-    pub format: GLenum,
-    pub depth_bits: i32,
-    pub stencil_bits: i32,
+    format: GLenum,
+    depth_bits: i32,
+    stencil_bits: i32,
     /// Made at the first `OSMesaMakeCurrent` (GL sets the viewport then).
-    /// Boxed: `with_gl` moves it out for each call, and a pointer moves in
-    /// one store where the 464-byte context took memcpy calls (measured:
-    /// 60% of a `glColor3f` call before, under callgrind).
-    pub gl: Option<Box<Context>>,
-    pub binding: Option<Binding>,
-    pub row_length: i32,
-    pub y_up: bool,
-    pub clamp: bool,
-    pub vertex: ClientArray,
-    pub color: ClientArray,
-    pub normal: ClientArray,
-    pub tex_coord: ClientArray,
-    pub pack: PixelStore,
-    pub unpack: PixelStore,
-    /// `glHint` targets, in the order of `HINTS`.
-    pub hints: [GLenum; 5],
-    /// Capabilities accepted but without effect until lighting lands
-    /// (`GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_COLOR_MATERIAL`, `GL_AUTO_NORMAL`).
-    pub inert_caps: Vec<GLenum>,
+    /// Boxed: a replaced framebuffer or a moved `OsContext` moves a pointer,
+    /// not the 464-byte context (moving it took memcpy calls: 60% of a
+    /// `glColor3f` call, under callgrind).
+    gl: Option<Box<Context>>,
+    /// The GL state softgl's context does not hold (client arrays, lists, …).
+    gl_state: GlState,
+    binding: Option<Binding>,
+    row_length: i32,
+    y_up: bool,
+    clamp: bool,
     /// Depth and stencil interleaved as Mesa's Z24S8 buffer, handed out by
-    /// `OSMesaGetDepthBuffer` when the context has a stencil buffer.
-    pub depth_view: Vec<u32>,
-    /// `glPushAttrib` and `glPushClientAttrib` stacks.
-    pub attrib_stack: Vec<crate::gl::attrib::Saved>,
-    pub client_attrib_stack: Vec<crate::gl::attrib::SavedClient>,
-    /// Display lists by name, the one being compiled, `glListBase`, and how
-    /// deep `glCallList` is nested.
-    pub lists: HashMap<u32, Arc<Vec<crate::gl::Cmd>>>,
-    pub compiling: Option<crate::gl::lists::Compiling>,
-    pub list_base: u32,
-    pub call_depth: u32,
+    /// `OSMesaGetDepthBuffer` when the context has both.
+    depth_view: Vec<u32>,
 }
 
-pub const HINTS: [GLenum; 5] = [
-    GL_PERSPECTIVE_CORRECTION_HINT,
-    GL_POINT_SMOOTH_HINT,
-    GL_LINE_SMOOTH_HINT,
-    GL_POLYGON_SMOOTH_HINT,
-    GL_FOG_HINT,
-];
+/// What [`OsContext::depth_buffer`] hands out: width, height, bytes per value
+/// and the first value, as `OSMesaGetDepthBuffer` returns them.
+#[derive(Clone, Copy, Debug)]
+pub struct DepthView {
+    pub width: i32,
+    pub height: i32,
+    pub bytes_per_value: i32,
+    pub ptr: *mut u8,
+}
 
 impl OsContext {
     pub fn new(format: GLenum, depth_bits: i32, stencil_bits: i32) -> OsContext {
@@ -177,26 +122,33 @@ impl OsContext {
             depth_bits,
             stencil_bits,
             gl: None,
+            gl_state: GlState::default(),
             binding: None,
             row_length: 0,
             y_up: true,
             clamp: true,
-            vertex: ClientArray::new(4),
-            color: ClientArray::new(4),
-            normal: ClientArray::new(3),
-            tex_coord: ClientArray::new(4),
-            pack: PixelStore::DEFAULT,
-            unpack: PixelStore::DEFAULT,
-            hints: [GL_DONT_CARE; 5],
-            inert_caps: Vec::new(),
             depth_view: Vec::new(),
-            attrib_stack: Vec::new(),
-            client_attrib_stack: Vec::new(),
-            lists: HashMap::new(),
-            compiling: None,
-            list_base: 0,
-            call_depth: 0,
         }
+    }
+
+    /// The OSMesa format it was created with.
+    pub fn format(&self) -> GLenum {
+        self.format
+    }
+
+    /// The caller's buffer last bound by [`make_current`], if any.
+    pub fn binding(&self) -> Option<Binding> {
+        self.binding
+    }
+
+    /// `OSMESA_ROW_LENGTH` (0: the buffer's width) and `OSMESA_Y_UP`.
+    pub fn layout(&self) -> (i32, bool) {
+        (self.row_length, self.y_up)
+    }
+
+    /// `OSMesaColorClamp`'s flag.
+    pub fn set_clamp(&mut self, clamp: bool) {
+        self.clamp = clamp;
     }
 
     /// Depth bits of the buffer Mesa's llvmpipe OSMesa makes: Z16 (2 bytes a
@@ -211,7 +163,7 @@ impl OsContext {
     }
 
     /// The framebuffer this context needs for `binding`.
-    pub fn desc_for(&self, binding: &Binding) -> FramebufferDesc {
+    fn desc_for(&self, binding: &Binding) -> FramebufferDesc {
         FramebufferDesc {
             width: binding.width as u32,
             height: binding.height as u32,
@@ -228,25 +180,70 @@ impl OsContext {
         }
     }
 
-    /// Points the framebuffer at the caller's buffer again after a change of
-    /// `OSMESA_ROW_LENGTH` or `OSMESA_Y_UP`. `InvalidValue` (and no change)
-    /// when the new layout does not fit.
-    pub fn relayout(&mut self) -> Result<(), GlError> {
+    /// Sets `OSMESA_ROW_LENGTH` and `OSMESA_Y_UP` and points the framebuffer
+    /// at the caller's buffer again. `InvalidValue` (and no change) when the
+    /// new layout does not fit: a row length shorter than the buffer's width.
+    pub fn set_layout(&mut self, row_length: i32, y_up: bool) -> Result<(), GlError> {
+        if row_length < 0 || self.binding.is_some_and(|b| row_length > 0 && row_length < b.width) {
+            return Err(GlError::InvalidValue);
+        }
         let (Some(b), Some(gl)) = (self.binding, self.gl.as_mut()) else {
+            (self.row_length, self.y_up) = (row_length, y_up);
             return Ok(());
         };
         if b.format.is_direct() {
             // SAFETY: the buffer was lent by OSMesaMakeCurrent for this size;
             // `len` covers the rows the layout addresses.
-            let mem = unsafe { UserMemory::new(b.ptr, b.len(self.row_length)) };
+            let mem = unsafe { UserMemory::new(b.ptr, b.len(row_length)) };
             gl.framebuffer_mut()
-                .set_color_memory(Box::new(mem), b.stride(self.row_length), !self.y_up)?;
+                .set_color_memory(Box::new(mem), b.stride(row_length), !y_up)?;
         }
+        (self.row_length, self.y_up) = (row_length, y_up);
         Ok(())
     }
 
-    /// Copies softgl's buffer into the caller's for the converted formats.
+    /// Points this context at `binding`, making its GL context at the first call.
+    fn bind(&mut self, binding: Binding) -> Result<(), GlError> {
+        let desc = self.desc_for(&binding);
+        let len = binding.len(self.row_length);
+        let stride = binding.stride(self.row_length);
+        let same = self.gl.as_ref().is_some_and(|gl| *gl.framebuffer().desc() == desc);
+        let fb = if binding.format.is_direct() {
+            // SAFETY: OSMesaMakeCurrent's contract: `buffer` holds the image
+            // (`len` bytes for this size and row length) while bound.
+            let mem = unsafe { UserMemory::new(binding.ptr, len) };
+            if same {
+                let gl = self.gl.as_mut().expect("checked above");
+                gl.framebuffer_mut()
+                    .set_color_memory(Box::new(mem), stride, !self.y_up)?;
+                None
+            } else {
+                Some(Framebuffer::with_color_memory(desc, Box::new(mem), stride, !self.y_up)?)
+            }
+        } else if same && self.binding.is_some_and(|b| !b.format.is_direct()) {
+            // softgl's own buffer already: keep it (and depth, stencil).
+            None
+        } else {
+            // Not the previous caller's memory: a buffer of softgl's own.
+            Some(Framebuffer::new(desc)?)
+        };
+        if let Some(fb) = fb {
+            match &mut self.gl {
+                Some(gl) => {
+                    gl.replace_framebuffer(fb);
+                }
+                None => self.gl = Some(Box::new(Context::with_framebuffer(fb))),
+            }
+        }
+        self.binding = Some(binding);
+        Ok(())
+    }
+
+    /// Copies softgl's buffer into the caller's for the converted formats,
+    /// and brings the Z24S8 copy of depth and stencil up to date (what
+    /// `glFlush`, `glFinish` and a change of current context do).
     pub fn flush(&mut self) {
+        self.refresh_depth_view();
         let (Some(b), Some(gl)) = (self.binding, self.gl.as_ref()) else {
             return;
         };
@@ -258,6 +255,50 @@ impl OsContext {
         // this size and row length (OSMesa's contract).
         let dst = unsafe { std::slice::from_raw_parts_mut(b.ptr, len) };
         crate::convert::store(gl.framebuffer(), b.format, dst, b.stride(self.row_length), !self.y_up);
+    }
+
+    /// Rebuilds the Z24S8 copy of depth and stencil, for contexts with both;
+    /// empties it otherwise.
+    fn refresh_depth_view(&mut self) {
+        let fb = self.gl.as_deref().map(Context::framebuffer);
+        match fb.and_then(|fb| Some((fb.depth_buffer()?, fb.stencil_buffer()?))) {
+            Some((DepthBuffer::D24(d), stencil)) => {
+                self.depth_view.clear();
+                self.depth_view
+                    .extend(d.iter().zip(stencil).map(|(&z, &s)| z | u32::from(s) << 24));
+            }
+            _ => self.depth_view.clear(),
+        }
+    }
+
+    /// The depth buffer as `OSMesaGetDepthBuffer` hands it out, laid out as
+    /// Mesa 22's llvmpipe OSMesa does: for 1-16 bits without stencil 2 bytes a
+    /// value (Z16); otherwise 4 bytes, Z24 in the low bits and, with a stencil
+    /// buffer, the stencil in the high byte (Z24S8). `None` without a depth
+    /// buffer (also with a stencil buffer alone, as Mesa) or before the first
+    /// [`make_current`]. The pointer always addresses
+    /// `width × height × bytes_per_value` bytes: softgl's live depth buffer
+    /// without stencil, the copy made at this call (refreshed by
+    /// [`OsContext::flush`]) with it; both stay put until the next
+    /// `make_current` with another size or the context's destruction.
+    pub fn depth_buffer(&mut self) -> Option<DepthView> {
+        self.refresh_depth_view();
+        let fb = self.gl.as_mut()?.framebuffer_mut();
+        let (width, height) = (fb.width() as i32, fb.height() as i32);
+        let n = width as usize * height as usize;
+        let has_stencil = fb.has_stencil();
+        let (bytes_per_value, ptr, len): (i32, *mut u8, usize) = match fb.depth_buffer_mut()? {
+            _ if has_stencil => (4, self.depth_view.as_mut_ptr().cast(), self.depth_view.len()),
+            DepthBuffer::D24(v) | DepthBuffer::D32(v) => (4, v.as_mut_ptr().cast(), v.len()),
+            DepthBuffer::D16(v) => (2, v.as_mut_ptr().cast(), v.len()),
+        };
+        // Never a pointer to fewer values than the size says.
+        (len == n).then_some(DepthView {
+            width,
+            height,
+            bytes_per_value,
+            ptr,
+        })
     }
 }
 
@@ -277,25 +318,108 @@ pub fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
     m.lock().unwrap_or_else(|e| e.into_inner())
 }
 
-/// Registers `ctx` and returns its handle.
-pub fn register(ctx: OsContext) -> usize {
+/// Registers a new context (`format` one of the OSMesa formats; `depth_bits`
+/// and `stencil_bits` as `OSMesaCreateContextExt` takes them) and returns its
+/// handle, never 0.
+pub fn create_context(format: GLenum, depth_bits: i32, stencil_bits: i32) -> usize {
     static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(1);
     let id = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed) << 4;
+    let ctx = OsContext::new(format, depth_bits, stencil_bits);
     lock(registry()).insert(id, Arc::new(Mutex::new(ctx)));
     id
 }
 
+/// The context of a live handle.
 pub fn lookup(handle: usize) -> Option<Shared> {
     lock(registry()).get(&handle).cloned()
 }
 
-pub fn unregister(handle: usize) -> Option<Shared> {
-    lock(registry()).remove(&handle)
+/// Unregisters `handle`; a context current on this thread stops being
+/// current, one current on another thread lives until that thread makes
+/// another current. `false` for an unknown handle.
+pub fn destroy_context(handle: usize) -> bool {
+    if lock(registry()).remove(&handle).is_none() {
+        return false;
+    }
+    CURRENT.with(|cur| {
+        let mut cur = cur.borrow_mut();
+        if cur.as_ref().is_some_and(|(c, _)| *c == handle) {
+            *cur = None;
+        }
+    });
+    true
+}
+
+/// Why [`make_current`] refused.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MakeCurrentError {
+    UnknownContext,
+    /// Null buffer, or a side outside `1..=MAX_SIZE`.
+    BadBuffer,
+    /// A type the context's format does not take (as Mesa refuses it).
+    BadType,
+    /// softgl could not make the framebuffer (too large, row length too short).
+    Framebuffer(GlError),
+}
+
+/// Binds `buffer` (`width` × `height` pixels of the context's format and
+/// `ty`) to `handle` and makes it current on this thread; the previous
+/// current context gets its last frame copied out (converted formats). On an
+/// error the current context is unchanged.
+///
+/// # Safety
+/// `buffer` holds `width` × `height` pixels (rows of `OSMESA_ROW_LENGTH`
+/// pixels when set) and stays valid while it is bound to the context.
+pub unsafe fn make_current(
+    handle: usize,
+    buffer: *mut u8,
+    ty: GLenum,
+    width: i32,
+    height: i32,
+) -> Result<(), MakeCurrentError> {
+    let shared = lookup(handle).ok_or(MakeCurrentError::UnknownContext)?;
+    let size_ok = |s: i32| (1..=MAX_SIZE).contains(&s);
+    if buffer.is_null() || !size_ok(width) || !size_ok(height) {
+        return Err(MakeCurrentError::BadBuffer);
+    }
+    let mut os = lock(&shared);
+    let format = UserFormat::new(os.format, ty).ok_or(MakeCurrentError::BadType)?;
+    let binding = Binding {
+        ptr: buffer,
+        ty,
+        width,
+        height,
+        format,
+    };
+    os.bind(binding).map_err(MakeCurrentError::Framebuffer)?;
+    drop(os);
+    // Stop the previous context: its caller's buffer gets its last frame.
+    // (Its lock is taken after this one's is released: no lock-order cycle.)
+    let previous = CURRENT.with(|cur| cur.borrow_mut().replace((handle, shared)));
+    if let Some((h, prev)) = previous {
+        if h != handle {
+            lock(&prev).flush();
+        }
+    }
+    Ok(())
+}
+
+/// Leaves no context current on this thread; the one that was gets its last
+/// frame copied out, as at a switch.
+pub fn release_current() {
+    if let Some((_, prev)) = CURRENT.with(|cur| cur.borrow_mut().take()) {
+        lock(&prev).flush();
+    }
+}
+
+/// This thread's current context.
+pub fn current_handle() -> Option<usize> {
+    CURRENT.with(|cur| cur.borrow().as_ref().map(|(h, _)| *h))
 }
 
 thread_local! {
     /// This thread's current context: its handle and the context.
-    pub static CURRENT: RefCell<Option<(usize, Shared)>> = const { RefCell::new(None) };
+    static CURRENT: RefCell<Option<(usize, Shared)>> = const { RefCell::new(None) };
 }
 
 /// Runs `f`, returning `default` if it panics: no panic crosses into C.
@@ -303,30 +427,19 @@ pub fn guard<R: Copy>(default: R, f: impl FnOnce() -> R) -> R {
     catch_unwind(AssertUnwindSafe(f)).unwrap_or(default)
 }
 
-/// Runs `f` on this thread's current context (with its GL context made),
-/// or returns `default` when there is none, as Mesa ignores such calls.
-pub fn with_gl<R: Copy>(default: R, f: impl FnOnce(&mut OsContext, &mut Context) -> R) -> R {
-    guard(default, || {
-        CURRENT.with(|cur| {
-            let cur = cur.borrow();
-            let Some((_, shared)) = cur.as_ref() else {
-                return default;
-            };
-            let mut os = lock(shared);
-            let Some(mut gl) = os.gl.take() else {
-                return default;
-            };
-            // The GL context is moved out for the call so that `f` can borrow both.
-            let r = catch_unwind(AssertUnwindSafe(|| f(&mut os, &mut gl)));
-            os.gl = Some(gl);
-            r.unwrap_or(default)
-        })
+/// Runs `f` on this thread's current context's GL state and GL context, or
+/// returns `default` when there is none (or it was never bound to a buffer),
+/// as Mesa ignores such calls. A panic in `f` returns `default` too.
+pub fn with_gl<R: Copy>(default: R, f: impl FnOnce(&mut GlState, &mut Context) -> R) -> R {
+    with_current(default, |os| match os.gl.as_deref_mut() {
+        Some(gl) => f(&mut os.gl_state, gl),
+        None => default,
     })
 }
 
-/// Runs `f` on this thread's current OSMesa context (GL context in place),
-/// or returns `default` when there is none.
-pub fn with_os<R: Copy>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
+/// Runs `f` on this thread's current OSMesa context, or returns `default`
+/// when there is none. A panic in `f` returns `default` too.
+pub fn with_current<R: Copy>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
     guard(default, || {
         CURRENT.with(|cur| match cur.borrow().as_ref() {
             Some((_, shared)) => f(&mut lock(shared)),
@@ -347,14 +460,15 @@ mod tests {
 
     #[test]
     fn with_gl_keeps_the_context_usable_after_a_panic() {
-        let h = register(OsContext::new(crate::consts::OSMESA_RGBA, 0, 0));
-        let shared = lookup(h).unwrap();
-        lock(&shared).gl = Some(Box::new(Context::new(FramebufferDesc::rgba8_d24s8(2, 2)).unwrap()));
-        CURRENT.with(|c| *c.borrow_mut() = Some((h, shared.clone())));
+        let h = create_context(OSMESA_RGBA, 0, 0);
+        let mut buf = vec![0u8; 2 * 2 * 4];
+        // SAFETY: `buf` holds 2×2 RGBA pixels and outlives the binding (released below).
+        unsafe { make_current(h, buf.as_mut_ptr(), GL_UNSIGNED_BYTE, 2, 2) }.unwrap();
         assert_eq!(with_gl(1, |_, _| panic!("in a GL call")), 1);
-        assert!(lock(&shared).gl.is_some(), "the GL context is put back");
         assert_eq!(with_gl(0, |_, gl| gl.framebuffer().width()), 2);
-        CURRENT.with(|c| *c.borrow_mut() = None);
-        unregister(h);
+        release_current();
+        assert_eq!(current_handle(), None);
+        assert!(destroy_context(h));
+        assert!(!destroy_context(h), "a handle dies once");
     }
 }

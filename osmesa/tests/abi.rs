@@ -120,25 +120,22 @@ fn unimplemented_functions_record_invalid_operation() {
     glDisable(GL_LIGHTING); // disabling what is off is fine
     assert_eq!(glGetError(), GL_NO_ERROR);
     let diffuse = [1.0f32, 0.0, 0.0, 1.0];
-    // SAFETY: 4 floats; the unimplemented entry points read nothing anyway.
-    unsafe { glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse.as_ptr()) };
+    // Not `unsafe`: the unimplemented entry points read nothing.
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse.as_ptr());
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     glEnable(GL_TEXTURE_2D);
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
-    // SAFETY: a 1x1 RGB image.
-    unsafe {
-        glTexImage2D(
-            GL_TEXTURE_2D,
-            0,
-            GL_RGB as i32,
-            1,
-            1,
-            0,
-            GL_RGB,
-            GL_UNSIGNED_BYTE,
-            [0u8; 3].as_ptr().cast(),
-        )
-    };
+    glTexImage2D(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGB as i32,
+        1,
+        1,
+        0,
+        GL_RGB,
+        GL_UNSIGNED_BYTE,
+        [0u8; 3].as_ptr().cast(),
+    );
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     let mut width = 99;
     // SAFETY: one writable GLint.
@@ -449,5 +446,195 @@ fn interleaved_arrays_draw_like_separate_ones() {
     // SAFETY: refused before any use.
     unsafe { glInterleavedArrays(0x1234, 0, verts.as_ptr().cast()) };
     assert_eq!(glGetError(), GL_INVALID_ENUM);
+    OSMesaDestroyContext(ctx);
+}
+
+/// `OSMesaGetDepthBuffer` on a context made current on a `w`×`h` RGBA
+/// buffer: the return value, width, height, bytes per value and the values
+/// (read over the whole `w × h × bytes` it reports), outputs pre-set to junk.
+fn depth_buffer(ctx: OSMesaContext) -> (u8, i32, i32, i32, Option<Vec<u32>>) {
+    let (mut w, mut h, mut bpv, mut p) = (-1, -1, -1, std::ptr::dangling_mut::<c_void>());
+    // SAFETY: valid output pointers.
+    let r = unsafe { OSMesaGetDepthBuffer(ctx, &mut w, &mut h, &mut bpv, &mut p) };
+    let values = (!p.is_null()).then(|| {
+        let n = (w * h) as usize;
+        // SAFETY: OSMesaGetDepthBuffer's promise: `w × h` values of `bpv` bytes at `p`.
+        unsafe {
+            match bpv {
+                2 => std::slice::from_raw_parts(p.cast::<u16>(), n)
+                    .iter()
+                    .map(|&v| u32::from(v))
+                    .collect(),
+                _ => std::slice::from_raw_parts(p.cast::<u32>(), n).to_vec(),
+            }
+        }
+    });
+    (r, w, h, bpv, values)
+}
+
+fn get_int(pname: u32) -> i32 {
+    let mut v = -1;
+    // SAFETY: room for one value.
+    unsafe { glGetIntegerv(pname, &mut v) };
+    v
+}
+
+/// Mesa 22.3.6 (llvmpipe) answers, measured with a C probe on every depth
+/// and stencil size (docs/osmesa-facts.md): `(depth bits asked, stencil bits
+/// asked, GL_TRUE?, bytes per value, GL_DEPTH_BITS, GL_STENCIL_BITS, the
+/// value after glClearDepth(0.5), glClearStencil(0x5a), glClear)`.
+const MESA_DEPTH_TABLE: [(i32, i32, u8, i32, i32, i32, u32); 8] = [
+    (0, 0, GL_FALSE, 0, 0, 0, 0),
+    (0, 8, GL_FALSE, 0, 0, 8, 0),
+    (16, 0, GL_TRUE, 2, 16, 0, 0x8000),
+    (16, 8, GL_TRUE, 4, 24, 8, 0x5a80_0000),
+    (24, 0, GL_TRUE, 4, 24, 0, 0x0080_0000),
+    (24, 8, GL_TRUE, 4, 24, 8, 0x5a80_0000),
+    (32, 0, GL_TRUE, 4, 24, 0, 0x0080_0000),
+    (32, 8, GL_TRUE, 4, 24, 8, 0x5a80_0000),
+];
+
+#[test]
+fn depth_buffer_answers_as_mesa_for_every_depth_and_stencil_size() {
+    const GL_DEPTH_BITS: u32 = 0x0D56;
+    const GL_STENCIL_BITS: u32 = 0x0D57;
+    let (w, h) = (7, 5);
+    for (depth, stencil, ret, bpv, depth_bits, stencil_bits, cleared) in MESA_DEPTH_TABLE {
+        let what = format!("depth {depth} stencil {stencil}");
+        let ctx = OSMesaCreateContextExt(OSMESA_RGBA, depth, stencil, 0, null_mut());
+        let mut buf = vec![0u8; (w * h * 4) as usize];
+        // SAFETY: `buf` holds w × h RGBA pixels and outlives the binding.
+        assert_eq!(
+            unsafe { OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, w, h) },
+            GL_TRUE
+        );
+        assert_eq!(
+            (get_int(GL_DEPTH_BITS), get_int(GL_STENCIL_BITS)),
+            (depth_bits, stencil_bits),
+            "{what}"
+        );
+        glClearDepth(0.5);
+        glClearStencil(0x5a);
+        glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        glFinish();
+        let (r, rw, rh, rbpv, values) = depth_buffer(ctx);
+        if ret == GL_FALSE {
+            assert_eq!(
+                (r, rw, rh, rbpv, values),
+                (GL_FALSE, 0, 0, 0, None),
+                "{what}: zeros and NULL, as Mesa"
+            );
+        } else {
+            assert_eq!((r, rw, rh, rbpv), (GL_TRUE, w, h, bpv), "{what}");
+            assert_eq!(values, Some(vec![cleared; (w * h) as usize]), "{what}");
+        }
+        OSMesaDestroyContext(ctx);
+    }
+}
+
+#[test]
+fn depth_buffer_follows_a_new_size_and_survives_a_viewport() {
+    for (depth, stencil) in [(16, 0), (24, 0), (24, 8)] {
+        let ctx = OSMesaCreateContextExt(OSMESA_RGBA, depth, stencil, 0, null_mut());
+        let mut small = vec![0u8; 3 * 2 * 4];
+        let mut large = vec![0u8; 9 * 6 * 4];
+        // SAFETY: each buffer holds the pixels its call names and outlives its binding.
+        unsafe {
+            assert_eq!(
+                OSMesaMakeCurrent(ctx, small.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 3, 2),
+                GL_TRUE
+            );
+            let (_, w, h, _, v) = depth_buffer(ctx);
+            assert_eq!((w, h, v.map(|v| v.len())), (3, 2, Some(6)));
+            // A larger buffer: the depth buffer grows with it, and so does what is handed out.
+            assert_eq!(
+                OSMesaMakeCurrent(ctx, large.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 9, 6),
+                GL_TRUE
+            );
+        }
+        glViewport(0, 0, 100, 100);
+        glClearDepth(1.0);
+        glClearStencil(0);
+        glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        glFinish();
+        let (r, w, h, _, v) = depth_buffer(ctx);
+        let full = if depth == 16 { 0xffff } else { 0x00ff_ffff };
+        assert_eq!(
+            (r, w, h, v),
+            (GL_TRUE, 9, 6, Some(vec![full; 54])),
+            "depth {depth} stencil {stencil}"
+        );
+        // Back to the small one: the view shrinks too.
+        // SAFETY: as above.
+        assert_eq!(
+            unsafe { OSMesaMakeCurrent(ctx, small.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 3, 2) },
+            GL_TRUE
+        );
+        let (_, w, h, _, v) = depth_buffer(ctx);
+        assert_eq!((w, h, v.map(|v| v.len())), (3, 2, Some(6)));
+        OSMesaDestroyContext(ctx);
+        // A destroyed handle: GL_FALSE and zeros, never a pointer.
+        assert_eq!(depth_buffer(ctx), (GL_FALSE, 0, 0, 0, None));
+    }
+}
+
+#[test]
+fn make_current_with_null_context_and_buffer_releases_as_mesa() {
+    // Mesa 22.3.6 (measured): (NULL, NULL, any type, 0, 0) → GL_TRUE and no
+    // current context; (NULL, buffer, …) → GL_FALSE; (ctx, NULL, …) → GL_FALSE,
+    // the current context unchanged in both.
+    let mut buf = vec![0u8; 4 * 4 * 4];
+    let ctx = current(&mut buf, 4, 4);
+    // SAFETY: null arguments are never dereferenced; `buf` holds 4x4 RGBA pixels.
+    unsafe {
+        assert_eq!(
+            OSMesaMakeCurrent(null_mut(), buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 4, 4),
+            GL_FALSE
+        );
+        assert_eq!(OSMesaGetCurrentContext(), ctx);
+        assert_eq!(OSMesaMakeCurrent(ctx, null_mut(), GL_UNSIGNED_BYTE, 4, 4), GL_FALSE);
+        assert_eq!(OSMesaGetCurrentContext(), ctx);
+        assert_eq!(
+            OSMesaMakeCurrent(null_mut(), null_mut(), GL_UNSIGNED_BYTE, 0, 0),
+            GL_TRUE
+        );
+    }
+    assert!(OSMesaGetCurrentContext().is_null());
+    // Nothing is current: GL calls do nothing, the buffer stays as it was.
+    glClearColor(1.0, 1.0, 1.0, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    assert_eq!(px(&buf, 4, 0, 0), [0, 0, 0, 0]);
+    // SAFETY: as above.
+    unsafe {
+        assert_eq!(
+            OSMesaMakeCurrent(null_mut(), null_mut(), 0, 0, 0),
+            GL_TRUE,
+            "twice, any type"
+        );
+        assert_eq!(
+            OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 4, 4),
+            GL_TRUE
+        );
+    }
+    assert_eq!(OSMesaGetCurrentContext(), ctx);
+    OSMesaDestroyContext(ctx);
+}
+
+#[test]
+fn releasing_a_converted_format_copies_its_last_frame() {
+    let mut floats = vec![-1.0f32; 4];
+    let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, null_mut());
+    // SAFETY: one pixel of 4 floats, alive past the release below.
+    unsafe {
+        assert_eq!(
+            OSMesaMakeCurrent(ctx, floats.as_mut_ptr().cast(), GL_FLOAT, 1, 1),
+            GL_TRUE
+        );
+    }
+    glClearColor(0.0, 0.0, 1.0, 1.0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    // SAFETY: null arguments are not dereferenced.
+    assert_eq!(unsafe { OSMesaMakeCurrent(null_mut(), null_mut(), 0, 0, 0) }, GL_TRUE);
+    assert_eq!(floats, [0.0, 0.0, 1.0, 1.0]);
     OSMesaDestroyContext(ctx);
 }

@@ -3,8 +3,9 @@
 //! is fixed when the library loads.
 
 use super::{median, Outcome, Timing};
-use crate::call::{gl_enum as e, Call};
+use crate::call::{clear_bits, Call};
 use crate::scenes::Recording;
+use softgl::GlEnum;
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::time::Instant;
 
@@ -233,16 +234,16 @@ impl Context<'_> {
         // of the type the GL entry point takes (pointers: see DrawArrays).
         unsafe {
             match c {
-                Call::Enable(cap) => (g.glEnable)(e::cap(*cap)),
-                Call::Disable(cap) => (g.glDisable)(e::cap(*cap)),
+                Call::Enable(cap) => (g.glEnable)(cap.to_gl()),
+                Call::Disable(cap) => (g.glDisable)(cap.to_gl()),
                 Call::ClearColor([r, gg, bb, a]) => (g.glClearColor)(*r, *gg, *bb, *a),
                 Call::ClearDepth(d) => (g.glClearDepth)(*d),
                 Call::ClearStencil(s) => (g.glClearStencil)(*s),
-                Call::Clear(m) => (g.glClear)(e::clear_mask(*m)),
+                Call::Clear(m) => (g.glClear)(clear_bits(*m)),
                 Call::Viewport([x, y, w, h]) => (g.glViewport)(*x, *y, *w, *h),
                 Call::DepthRange(n, f) => (g.glDepthRange)(*n, *f),
                 Call::Scissor([x, y, w, h]) => (g.glScissor)(*x, *y, *w, *h),
-                Call::MatrixMode(m) => (g.glMatrixMode)(e::matrix_mode(*m)),
+                Call::MatrixMode(m) => (g.glMatrixMode)(m.to_gl()),
                 Call::LoadIdentity => (g.glLoadIdentity)(),
                 Call::LoadMatrix(m) => (g.glLoadMatrixf)(m.as_ptr()),
                 Call::PushMatrix => (g.glPushMatrix)(),
@@ -252,32 +253,28 @@ impl Context<'_> {
                 Call::Rotate(a, [x, y, z]) => (g.glRotatef)(*a, *x, *y, *z),
                 Call::Frustum([l, r, bo, t, n, f]) => (g.glFrustum)(*l, *r, *bo, *t, *n, *f),
                 Call::Ortho([l, r, bo, t, n, f]) => (g.glOrtho)(*l, *r, *bo, *t, *n, *f),
-                Call::ShadeModel(m) => (g.glShadeModel)(e::shade_model(*m)),
-                Call::FrontFace(f) => (g.glFrontFace)(e::front_face(*f)),
-                Call::CullFace(f) => (g.glCullFace)(e::face(*f)),
-                Call::PolygonMode(f, m) => (g.glPolygonMode)(e::face(*f), e::polygon_mode(*m)),
+                Call::ShadeModel(m) => (g.glShadeModel)(m.to_gl()),
+                Call::FrontFace(f) => (g.glFrontFace)(f.to_gl()),
+                Call::CullFace(f) => (g.glCullFace)(f.to_gl()),
+                Call::PolygonMode(f, m) => (g.glPolygonMode)(f.to_gl(), m.to_gl()),
                 Call::PolygonOffset(f, u) => (g.glPolygonOffset)(*f, *u),
                 Call::PointSize(s) => (g.glPointSize)(*s),
                 Call::LineWidth(w) => (g.glLineWidth)(*w),
-                Call::AlphaFunc(f, r) => (g.glAlphaFunc)(e::func(*f), *r),
-                Call::StencilFunc(f, r, m) => (g.glStencilFunc)(e::func(*f), *r, *m),
-                Call::StencilOp(a, bb, cc) => {
-                    (g.glStencilOp)(e::stencil_op(*a), e::stencil_op(*bb), e::stencil_op(*cc))
-                }
+                Call::AlphaFunc(f, r) => (g.glAlphaFunc)(f.to_gl(), *r),
+                Call::StencilFunc(f, r, m) => (g.glStencilFunc)(f.to_gl(), *r, *m),
+                Call::StencilOp(a, bb, cc) => (g.glStencilOp)(a.to_gl(), bb.to_gl(), cc.to_gl()),
                 Call::StencilMask(m) => (g.glStencilMask)(*m),
-                Call::DepthFunc(f) => (g.glDepthFunc)(e::func(*f)),
+                Call::DepthFunc(f) => (g.glDepthFunc)(f.to_gl()),
                 Call::DepthMask(m) => (g.glDepthMask)(b(*m)),
-                Call::BlendFunc(s, d) => {
-                    (g.glBlendFuncSeparate)(e::factor(*s), e::factor(*d), e::factor(*s), e::factor(*d))
-                }
+                Call::BlendFunc(s, d) => (g.glBlendFuncSeparate)(s.to_gl(), d.to_gl(), s.to_gl(), d.to_gl()),
                 Call::BlendFuncSeparate([s, d, sa, da]) => {
-                    (g.glBlendFuncSeparate)(e::factor(*s), e::factor(*d), e::factor(*sa), e::factor(*da))
+                    (g.glBlendFuncSeparate)(s.to_gl(), d.to_gl(), sa.to_gl(), da.to_gl())
                 }
-                Call::BlendEquation(q) => (g.glBlendEquation)(e::equation(*q)),
+                Call::BlendEquation(q) => (g.glBlendEquation)(q.to_gl()),
                 Call::BlendColor([r, gg, bb, a]) => (g.glBlendColor)(*r, *gg, *bb, *a),
-                Call::LogicOp(o) => (g.glLogicOp)(e::logic_op(*o)),
+                Call::LogicOp(o) => (g.glLogicOp)(o.to_gl()),
                 Call::ColorMask([r, gg, bb, a]) => (g.glColorMask)(b(*r), b(*gg), b(*bb), b(*a)),
-                Call::Begin(m) => (g.glBegin)(e::mode(*m)),
+                Call::Begin(m) => (g.glBegin)(m.to_gl()),
                 Call::End => (g.glEnd)(),
                 Call::Color([r, gg, bb, a]) => (g.glColor4f)(*r, *gg, *bb, *a),
                 Call::Vertex([x, y, z, w]) => (g.glVertex4f)(*x, *y, *z, *w),
@@ -292,7 +289,7 @@ impl Context<'_> {
                     (g.glEnableClientState)(GL_COLOR_ARRAY);
                     (g.glVertexPointer)(4, GL_FLOAT, 0, positions.as_ptr().cast());
                     (g.glColorPointer)(4, GL_FLOAT, 0, colors.as_ptr().cast());
-                    (g.glDrawArrays)(e::mode(*mode), 0, n);
+                    (g.glDrawArrays)(mode.to_gl(), 0, n);
                     (g.glDisableClientState)(GL_VERTEX_ARRAY);
                     (g.glDisableClientState)(GL_COLOR_ARRAY);
                 }

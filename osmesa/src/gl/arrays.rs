@@ -3,9 +3,10 @@
 //! at each draw; normals and texture coordinates are accepted and, without
 //! lighting and texturing, have no effect on the image.
 
-use super::{enums, now, run_or_record, Cmd};
+use super::enums::decode;
+use super::{now, run_or_record};
 use crate::consts::*;
-use crate::state::{ClientArray, OsContext};
+use crate::gl_state::{ClientArray, Cmd, GlState};
 use softgl::{AttribArray, Context, GlError, GlResult, PrimitiveMode, VertexArrays};
 use std::ffi::c_void;
 
@@ -94,8 +95,8 @@ struct Fetched {
 }
 
 /// Reads the vertices `indices` names; `None` without a vertex array (GL then draws nothing).
-fn gather(os: &OsContext, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult<Option<Fetched>> {
-    let mode = enums::primitive(mode)?;
+fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult<Option<Fetched>> {
+    let mode = decode::<PrimitiveMode>(mode)?;
     if !os.vertex.enabled || os.vertex.ptr.is_null() {
         return Ok(None);
     }
@@ -122,11 +123,11 @@ fn gather(os: &OsContext, mode: GLenum, indices: &mut dyn Iterator<Item = usize>
 }
 
 /// Draws (or records, in a display list) the vertices `indices` names.
-fn draw(os: &mut OsContext, gl: &mut Context, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult {
+fn draw(os: &mut GlState, gl: &mut Context, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult {
     let Some(f) = gather(os, mode, indices)? else {
         return Ok(());
     };
-    let cmd: Cmd = std::sync::Arc::new(move |_: &mut OsContext, gl: &mut Context| {
+    let cmd: Cmd = std::sync::Arc::new(move |_: &mut GlState, gl: &mut Context| {
         let arrays = VertexArrays {
             position: AttribArray::new(f.pos_size, &f.pos),
             color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
@@ -140,7 +141,7 @@ fn draw(os: &mut OsContext, gl: &mut Context, mode: GLenum, indices: &mut dyn It
 
 /// Sets a client array pointer after checking its arguments.
 fn pointer(
-    which: fn(&mut OsContext) -> &mut ClientArray,
+    which: fn(&mut GlState) -> &mut ClientArray,
     sizes: &[i32],
     size: i32,
     ty: GLenum,
@@ -163,15 +164,12 @@ fn pointer(
 
 fn client_state(array: GLenum, on: bool) {
     now(|os, _| {
-        let a = match array {
-            GL_VERTEX_ARRAY => &mut os.vertex,
-            GL_COLOR_ARRAY => &mut os.color,
-            GL_NORMAL_ARRAY => &mut os.normal,
-            GL_TEXTURE_COORD_ARRAY => &mut os.tex_coord,
+        let a = match (os.array_mut(array), array) {
+            (Some(a), _) => a,
             // Colour-index and edge-flag arrays do not exist in softgl yet.
-            GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY if on => return Err(GlError::InvalidOperation),
-            GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY => return Ok(()),
-            _ => return Err(GlError::InvalidEnum),
+            (None, GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY) if on => return Err(GlError::InvalidOperation),
+            (None, GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY) => return Ok(()),
+            (None, _) => return Err(GlError::InvalidEnum),
         };
         a.enabled = on;
         Ok(())
@@ -221,7 +219,7 @@ exports! {
     [] fn glDrawArrays(mode: GLenum, first: i32, count: i32) {
         now(|os, gl| {
             if first < 0 || count < 0 {
-                enums::primitive(mode)?;
+                decode::<PrimitiveMode>(mode)?;
                 return Err(GlError::InvalidValue);
             }
             draw(os, gl, mode, &mut (first as usize..first as usize + count as usize))
@@ -231,7 +229,7 @@ exports! {
     /// `indices` points to `count` indices of `ty` (GL's contract).
     [unsafe] fn glDrawElements(mode: GLenum, count: i32, ty: GLenum, indices: *const c_void) {
         now(|os, gl| {
-            enums::primitive(mode)?;
+            decode::<PrimitiveMode>(mode)?;
             if count < 0 {
                 return Err(GlError::InvalidValue);
             }
@@ -295,7 +293,7 @@ exports! {
             let normal = read(&os.normal, true);
             let tex = read(&os.tex_coord, false).map(|v| pad(v, os.tex_coord.size));
             let vertex = read(&os.vertex, false).map(|v| pad(v, os.vertex.size));
-            let cmd: Cmd = std::sync::Arc::new(move |_: &mut OsContext, gl: &mut Context| {
+            let cmd: Cmd = std::sync::Arc::new(move |_: &mut GlState, gl: &mut Context| {
                 if let Some([r, g, b, a]) = color {
                     gl.color4(r, g, b, a);
                 }

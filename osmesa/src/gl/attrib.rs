@@ -5,9 +5,8 @@
 
 use super::{now, rec};
 use crate::consts::*;
-use crate::state::{ClientArray, OsContext, PixelStore};
-use softgl::state::RasterState;
-use softgl::{Capability, Context, CurrentAttribs, Face, GlError, GlResult, MatrixMode};
+use crate::gl_state::{GlState, SavedAttrib, SavedClient};
+use softgl::{Capability, Context, Face, GlError, GlResult};
 
 /// `GL_MAX_ATTRIB_STACK_DEPTH` and `GL_MAX_CLIENT_ATTRIB_STACK_DEPTH` (Mesa's 16).
 pub const MAX_DEPTH: usize = 16;
@@ -29,26 +28,6 @@ const SCISSOR_BIT: u32 = 0x80000;
 const CLIENT_PIXEL_STORE_BIT: u32 = 0x1;
 const CLIENT_VERTEX_ARRAY_BIT: u32 = 0x2;
 
-/// The state one `glPushAttrib` saved.
-#[derive(Clone)]
-pub struct Saved {
-    mask: u32,
-    state: RasterState,
-    current: CurrentAttribs,
-    matrix_mode: MatrixMode,
-    hints: [GLenum; 5],
-    inert_caps: Vec<GLenum>,
-}
-
-/// The state one `glPushClientAttrib` saved.
-#[derive(Clone)]
-pub struct SavedClient {
-    mask: u32,
-    pack: PixelStore,
-    unpack: PixelStore,
-    arrays: [ClientArray; 4],
-}
-
 const NORMALIZE: GLenum = 0x0BA1;
 const RESCALE_NORMAL: GLenum = 0x803A;
 const COLOR_MATERIAL: GLenum = 0x0B57;
@@ -63,13 +42,13 @@ fn set_cap(gl: &mut Context, cap: Capability, on: bool) -> GlResult {
 }
 
 /// Restores the inert capabilities among `which` from `saved`.
-fn restore_inert(os: &mut OsContext, saved: &[GLenum], which: &[GLenum]) {
+fn restore_inert(os: &mut GlState, saved: &[GLenum], which: &[GLenum]) {
     os.inert_caps.retain(|c| !which.contains(c));
     os.inert_caps.extend(saved.iter().filter(|c| which.contains(c)));
 }
 
 /// Restores the groups of `s.mask`.
-fn restore(os: &mut OsContext, gl: &mut Context, s: &Saved) -> GlResult {
+fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
     let (m, st) = (s.mask, &s.state);
     if m & CURRENT_BIT != 0 {
         let c = s.current;
@@ -177,7 +156,7 @@ exports! {
             if os.attrib_stack.len() >= MAX_DEPTH {
                 return Err(GlError::StackOverflow);
             }
-            let saved = Saved {
+            let saved = SavedAttrib {
                 mask,
                 state: gl.state().clone(),
                 current: *gl.current(),
@@ -207,7 +186,7 @@ exports! {
                 mask,
                 pack: os.pack,
                 unpack: os.unpack,
-                arrays: [os.vertex, os.color, os.normal, os.tex_coord],
+                arrays: os.arrays(),
             };
             os.client_attrib_stack.push(saved);
             Ok(())
@@ -228,6 +207,6 @@ exports! {
 }
 
 /// `GL_ATTRIB_STACK_DEPTH` and `GL_CLIENT_ATTRIB_STACK_DEPTH`.
-pub fn depths(os: &OsContext) -> (usize, usize) {
+pub fn depths(os: &GlState) -> (usize, usize) {
     (os.attrib_stack.len(), os.client_attrib_stack.len())
 }

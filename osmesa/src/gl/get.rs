@@ -1,9 +1,10 @@
 //! `glGetString`, `glGet{Integer,Float,Double,Boolean}v`, `glIsEnabled`.
 
-use super::enums::{self, Cap, CORE_CAPS};
+use super::enums::{self, Cap};
 use crate::consts::*;
-use crate::state::{with_gl, OsContext, HINTS, MAX_SIZE};
-use softgl::{Backend, ColorFormat, Context, GlError, GlResult, MatrixMode};
+use crate::gl_state::{GlState, PixelStore, HINTS};
+use crate::state::with_gl;
+use softgl::{Backend, ColorFormat, Context, GlEnum, GlError, GlResult, MatrixMode};
 use std::ffi::c_char;
 
 /// A queried value before conversion to the caller's type.
@@ -67,7 +68,7 @@ fn matrix(gl: &Context, mode: MatrixMode) -> Val {
 }
 
 /// `glIsEnabled`.
-pub(super) fn is_enabled(os: &OsContext, gl: &Context, cap: GLenum) -> GlResult<bool> {
+pub(super) fn is_enabled(os: &GlState, gl: &Context, cap: GLenum) -> GlResult<bool> {
     if gl.inside_begin() {
         return Err(GlError::InvalidOperation);
     }
@@ -85,7 +86,7 @@ pub(super) fn is_enabled(os: &OsContext, gl: &Context, cap: GLenum) -> GlResult<
     })
 }
 
-fn store_value(s: &crate::state::PixelStore, pname: GLenum, pack: bool) -> Option<Val> {
+fn store_value(s: &PixelStore, pname: GLenum, pack: bool) -> Option<Val> {
     let base = if pack { GL_PACK_SWAP_BYTES } else { GL_UNPACK_SWAP_BYTES };
     let (skip_images, image_height) = if pack {
         (GL_PACK_SKIP_IMAGES, GL_PACK_IMAGE_HEIGHT)
@@ -106,7 +107,7 @@ fn store_value(s: &crate::state::PixelStore, pname: GLenum, pack: bool) -> Optio
 }
 
 /// The value of `pname`, or `GL_INVALID_ENUM`.
-fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
+fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     if gl.inside_begin() {
         return Err(GlError::InvalidOperation);
     }
@@ -149,7 +150,7 @@ fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0BA6 => matrix(gl, MatrixMode::Modelview),                             // MODELVIEW_MATRIX
         0x0BA7 => matrix(gl, MatrixMode::Projection),                            // PROJECTION_MATRIX
         0x0BA8 => matrix(gl, MatrixMode::Texture),                               // TEXTURE_MATRIX
-        0x0BA0 => e(enums::matrix_mode_enum(gl.current_matrix_mode())),          // MATRIX_MODE
+        0x0BA0 => e(gl.current_matrix_mode().to_gl()),                           // MATRIX_MODE
         0x0BA3 => i(gl.matrix_depth(MatrixMode::Modelview) as i64),              // MODELVIEW_STACK_DEPTH
         0x0BA4 => i(gl.matrix_depth(MatrixMode::Projection) as i64),             // PROJECTION_STACK_DEPTH
         0x0BA5 => i(gl.matrix_depth(MatrixMode::Texture) as i64),                // TEXTURE_STACK_DEPTH
@@ -171,28 +172,20 @@ fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D53 => i(color_bits(1)),
         0x0D54 => i(color_bits(2)),
         0x0D55 => i(color_bits(3)),
-        0x0D56 => i(os.reported_depth_bits()),             // DEPTH_BITS
-        0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }), // STENCIL_BITS
-        0x0D58..=0x0D5B => i(0),                           // ACCUM_*_BITS: none yet
-        0x0C32 => Val::B(vec![false]),                     // DOUBLEBUFFER
-        0x0C33 => Val::B(vec![false]),                     // STEREO
-        0x0C31 => Val::B(vec![true]),                      // RGBA_MODE
-        0x0C01 => e(GL_FRONT),                             // DRAW_BUFFER
-        0x0C02 => e(GL_FRONT),                             // READ_BUFFER
-        0x0B54 => e(if s.shade_model == softgl::ShadeModel::Flat {
-            0x1D00
-        } else {
-            0x1D01
-        }), // SHADE_MODEL
-        0x0B46 => e(if s.front_face == softgl::FrontFace::Cw {
-            0x900
-        } else {
-            0x901
-        }), // FRONT_FACE
-        0x0B45 => e(enums::face_enum(s.cull_face)),        // CULL_FACE_MODE
+        0x0D56 => i(fb.depth_format().map_or(0, |f| f.max_value().count_ones())), // DEPTH_BITS
+        0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }),                        // STENCIL_BITS
+        0x0D58..=0x0D5B => i(0),                                                  // ACCUM_*_BITS: none yet
+        0x0C32 => Val::B(vec![false]),                                            // DOUBLEBUFFER
+        0x0C33 => Val::B(vec![false]),                                            // STEREO
+        0x0C31 => Val::B(vec![true]),                                             // RGBA_MODE
+        0x0C01 => e(GL_FRONT),                                                    // DRAW_BUFFER
+        0x0C02 => e(GL_FRONT),                                                    // READ_BUFFER
+        0x0B54 => e(s.shade_model.to_gl()),                                       // SHADE_MODEL
+        0x0B46 => e(s.front_face.to_gl()),                                        // FRONT_FACE
+        0x0B45 => e(s.cull_face.to_gl()),                                         // CULL_FACE_MODE
         0x0B40 => Val::I(vec![
-            enums::polygon_mode_enum(s.polygon_mode_front).into(),
-            enums::polygon_mode_enum(s.polygon_mode_back).into(),
+            s.polygon_mode_front.to_gl().into(),
+            s.polygon_mode_back.to_gl().into(),
         ]),
         0x8038 => f(s.offset_factor), // POLYGON_OFFSET_FACTOR
         0x2A00 => f(s.offset_units),  // POLYGON_OFFSET_UNITS
@@ -200,26 +193,26 @@ fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0B21 => f(s.line_width),    // LINE_WIDTH
         // ALIASED_POINT/LINE ranges and the GL 1.1 POINT_SIZE_RANGE/LINE_WIDTH_RANGE.
         0x846D | 0x846E | 0x0B12 | 0x0B22 => Val::F(vec![1.0, 255.0]),
-        0x0B13 | 0x0B23 => f(0.1),                        // granularities
-        0x0BC1 => e(enums::compare_enum(s.alpha_func)),   // ALPHA_TEST_FUNC
-        0x0BC2 => Val::N(vec![f64::from(s.alpha_ref)]),   // ALPHA_TEST_REF
-        0x0B92 => e(enums::compare_enum(s.stencil_func)), // STENCIL_FUNC
-        0x0B97 => i(s.stencil_ref),                       // STENCIL_REF
-        0x0B93 => i(s.stencil_value_mask & 0xff),         // STENCIL_VALUE_MASK
-        0x0B98 => i(s.stencil_write_mask & 0xff),         // STENCIL_WRITEMASK
-        0x0B94 => e(enums::stencil_op_enum(s.stencil_fail)),
-        0x0B95 => e(enums::stencil_op_enum(s.stencil_zfail)),
-        0x0B96 => e(enums::stencil_op_enum(s.stencil_zpass)),
-        0x0B74 => e(enums::compare_enum(s.depth_func)), // DEPTH_FUNC
-        0x0B72 => Val::B(vec![s.depth_write]),          // DEPTH_WRITEMASK
-        0x0BE1 | 0x80C9 => e(enums::blend_factor_enum(b.src_rgb)), // BLEND_SRC, _SRC_RGB
-        0x0BE0 | 0x80C8 => e(enums::blend_factor_enum(b.dst_rgb)), // BLEND_DST, _DST_RGB
-        0x80CB => e(enums::blend_factor_enum(b.src_alpha)),
-        0x80CA => e(enums::blend_factor_enum(b.dst_alpha)),
-        0x8009 => e(enums::blend_equation_enum(b.eq_rgb)), // BLEND_EQUATION(_RGB)
-        0x883D => e(enums::blend_equation_enum(b.eq_alpha)),
+        0x0B13 | 0x0B23 => f(0.1),                      // granularities
+        0x0BC1 => e(s.alpha_func.to_gl()),              // ALPHA_TEST_FUNC
+        0x0BC2 => Val::N(vec![f64::from(s.alpha_ref)]), // ALPHA_TEST_REF
+        0x0B92 => e(s.stencil_func.to_gl()),            // STENCIL_FUNC
+        0x0B97 => i(s.stencil_ref),                     // STENCIL_REF
+        0x0B93 => i(s.stencil_value_mask & 0xff),       // STENCIL_VALUE_MASK
+        0x0B98 => i(s.stencil_write_mask & 0xff),       // STENCIL_WRITEMASK
+        0x0B94 => e(s.stencil_fail.to_gl()),
+        0x0B95 => e(s.stencil_zfail.to_gl()),
+        0x0B96 => e(s.stencil_zpass.to_gl()),
+        0x0B74 => e(s.depth_func.to_gl()),       // DEPTH_FUNC
+        0x0B72 => Val::B(vec![s.depth_write]),   // DEPTH_WRITEMASK
+        0x0BE1 | 0x80C9 => e(b.src_rgb.to_gl()), // BLEND_SRC, _SRC_RGB
+        0x0BE0 | 0x80C8 => e(b.dst_rgb.to_gl()), // BLEND_DST, _DST_RGB
+        0x80CB => e(b.src_alpha.to_gl()),
+        0x80CA => e(b.dst_alpha.to_gl()),
+        0x8009 => e(b.eq_rgb.to_gl()), // BLEND_EQUATION(_RGB)
+        0x883D => e(b.eq_alpha.to_gl()),
         0x8005 => Val::N(s.blend_color.iter().map(|&c| f64::from(c)).collect()), // BLEND_COLOR
-        0x0BF0 => e(enums::logic_op_enum(s.logic_op)),                           // LOGIC_OP_MODE
+        0x0BF0 => e(s.logic_op.to_gl()),                                         // LOGIC_OP_MODE
         0x0C23 => Val::B(vec![cm.r, cm.g, cm.b, cm.a]),                          // COLOR_WRITEMASK
         GL_VERTEX_ARRAY => Val::B(vec![os.vertex.enabled]),
         GL_COLOR_ARRAY => Val::B(vec![os.color.enabled]),
@@ -236,17 +229,11 @@ fn value(os: &OsContext, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x8088 => i(os.tex_coord.size), // TEXTURE_COORD_ARRAY_SIZE
         0x8089 => e(os.tex_coord.ty),
         0x808A => i(os.tex_coord.stride),
-        _ => {
-            if let Some(&(_, c)) = CORE_CAPS.iter().find(|(e, _)| *e == pname) {
-                Val::B(vec![gl.is_enabled(c)])
-            } else {
-                match enums::cap(pname)? {
-                    Cap::Core(c) => Val::B(vec![gl.is_enabled(c)]),
-                    Cap::Inert(c) => Val::B(vec![os.inert_caps.contains(&c)]),
-                    Cap::Missing => Val::B(vec![false]),
-                }
-            }
-        }
+        _ => match enums::cap(pname)? {
+            Cap::Core(c) => Val::B(vec![gl.is_enabled(c)]),
+            Cap::Inert(c) => Val::B(vec![os.inert_caps.contains(&c)]),
+            Cap::Missing => Val::B(vec![false]),
+        },
     })
 }
 

@@ -1,7 +1,8 @@
 //! Immediate mode: `glBegin`/`glEnd` and every `glVertex`, `glColor`,
 //! `glNormal`, `glTexCoord` and `glRect` variant of GL 1.1.
 
-use super::{checked, enums, gl, rec};
+use super::enums::decode;
+use super::{checked, gl, rec};
 use softgl::Context;
 
 /// Integer colour components to floats, GL 1.x's rules: unsigned `c / max`,
@@ -103,7 +104,7 @@ fn rect(x1: f32, y1: f32, x2: f32, y2: f32) {
 
 exports! {
     [] fn glBegin(mode: u32) {
-        checked(move |gl| gl.begin(enums::primitive(mode)?))
+        checked(move |gl| gl.begin(decode(mode)?))
     }
     [] fn glEnd() {
         gl(Context::end)

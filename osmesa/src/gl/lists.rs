@@ -1,11 +1,12 @@
-//! Display lists. A list is the sequence of recorded calls ([`Cmd`]s) made
+//! Display lists. A list is the sequence of recorded calls ([`Cmd`](crate::gl_state::Cmd)s) made
 //! between `glNewList` and `glEndList`; calls that GL never compiles
 //! (queries, client state, pixel packing, list management, `glFinish`) run at
 //! once. Draws from client arrays read the arrays when compiled, as in GL.
 
-use super::{now, rec, Cmd};
+use super::{now, rec};
 use crate::consts::*;
-use crate::state::OsContext;
+use crate::gl_state::{Compiling, GlState};
+use crate::state::with_gl;
 use softgl::{Context, GlError};
 use std::ffi::c_void;
 use std::sync::Arc;
@@ -15,22 +16,15 @@ const GL_COMPILE_AND_EXECUTE: GLenum = 0x1301;
 /// `GL_MAX_LIST_NESTING` (Mesa's 64).
 pub const MAX_NESTING: u32 = 64;
 
-/// The list `glNewList` opened.
-pub struct Compiling {
-    pub name: u32,
-    pub execute: bool,
-    pub cmds: Vec<Cmd>,
-}
-
 /// `GL_LIST_INDEX` and `GL_LIST_MODE` (0 when not compiling).
-pub fn compiling_state(os: &OsContext) -> (u32, GLenum) {
+pub fn compiling_state(os: &GlState) -> (u32, GLenum) {
     os.compiling.as_ref().map_or((0, 0), |c| {
         (c.name, if c.execute { GL_COMPILE_AND_EXECUTE } else { GL_COMPILE })
     })
 }
 
 /// Runs list `name` (nothing if it does not exist), `GL_MAX_LIST_NESTING` deep at most.
-fn call(os: &mut OsContext, gl: &mut Context, name: u32) {
+fn call(os: &mut GlState, gl: &mut Context, name: u32) {
     if os.call_depth >= MAX_NESTING {
         return;
     }
@@ -140,7 +134,7 @@ exports! {
     }
     /// `range` unused names in a row, made lists (empty) at once; 0 for none.
     [] fn glGenLists(range: i32) -> u32 {
-        crate::state::with_gl(0, |os, gl| {
+        with_gl(0, |os, gl| {
             if range < 0 || gl.inside_begin() {
                 gl.record_error(if range < 0 { GlError::InvalidValue } else { GlError::InvalidOperation });
                 return 0;
@@ -178,7 +172,7 @@ exports! {
         })
     }
     [] fn glIsList(list: u32) -> u8 {
-        crate::state::with_gl(GL_FALSE, |os, gl| {
+        with_gl(GL_FALSE, |os, gl| {
             if gl.inside_begin() {
                 gl.record_error(GlError::InvalidOperation);
                 return GL_FALSE;

@@ -1,6 +1,7 @@
 //! Entry points of GL 1.x that softgl does not implement yet. Each is
 //! exported (so that GLU and PyOpenGL resolve it here, not in another GL
-//! library) and records `GL_INVALID_OPERATION`; none touches its pointers.
+//! library) and records `GL_INVALID_OPERATION`. None reads its pointers, so
+//! none is `unsafe` but the two texture queries that write a 0.
 //! The README lists them by group.
 
 use super::missing;
@@ -32,10 +33,7 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): writes no names, records `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGenTextures(_n: i32, _textures: *mut u32) {
+    [] fn glGenTextures(_n: i32, _textures: *mut u32) {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -43,10 +41,7 @@ exports! {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glLightfv(_light: GLenum, _pname: GLenum, _params: *const f32) {
+    [] fn glLightfv(_light: GLenum, _pname: GLenum, _params: *const f32) {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -54,10 +49,7 @@ exports! {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glLightModelfv(_pname: GLenum, _params: *const f32) {
+    [] fn glLightModelfv(_pname: GLenum, _params: *const f32) {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -65,24 +57,15 @@ exports! {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glMaterialfv(_face: GLenum, _pname: GLenum, _params: *const f32) {
+    [] fn glMaterialfv(_face: GLenum, _pname: GLenum, _params: *const f32) {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetLightfv(_light: GLenum, _pname: GLenum, _params: *mut f32) {
+    [] fn glGetLightfv(_light: GLenum, _pname: GLenum, _params: *mut f32) {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetMaterialfv(_face: GLenum, _pname: GLenum, _params: *mut f32) {
+    [] fn glGetMaterialfv(_face: GLenum, _pname: GLenum, _params: *mut f32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -90,17 +73,11 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexParameterfv(_target: GLenum, _pname: GLenum, _params: *const f32) {
+    [] fn glTexParameterfv(_target: GLenum, _pname: GLenum, _params: *const f32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetTexParameterfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
+    [] fn glGetTexParameterfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -108,17 +85,11 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexEnvfv(_target: GLenum, _pname: GLenum, _params: *const f32) {
+    [] fn glTexEnvfv(_target: GLenum, _pname: GLenum, _params: *const f32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetTexEnvfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
+    [] fn glGetTexEnvfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -126,17 +97,11 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexGenfv(_coord: GLenum, _pname: GLenum, _params: *const f32) {
+    [] fn glTexGenfv(_coord: GLenum, _pname: GLenum, _params: *const f32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetTexGenfv(_coord: GLenum, _pname: GLenum, _params: *mut f32) {
+    [] fn glGetTexGenfv(_coord: GLenum, _pname: GLenum, _params: *mut f32) {
         missing()
     }
     /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -144,10 +109,7 @@ exports! {
         missing()
     }
     /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glFogfv(_pname: GLenum, _params: *const f32) {
+    [] fn glFogfv(_pname: GLenum, _params: *const f32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -159,10 +121,7 @@ exports! {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glLightiv(_light: GLenum, _pname: GLenum, _params: *const i32) {
+    [] fn glLightiv(_light: GLenum, _pname: GLenum, _params: *const i32) {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -170,10 +129,7 @@ exports! {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glLightModeliv(_pname: GLenum, _params: *const i32) {
+    [] fn glLightModeliv(_pname: GLenum, _params: *const i32) {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -181,24 +137,15 @@ exports! {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glMaterialiv(_face: GLenum, _pname: GLenum, _params: *const i32) {
+    [] fn glMaterialiv(_face: GLenum, _pname: GLenum, _params: *const i32) {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetLightiv(_light: GLenum, _pname: GLenum, _params: *mut i32) {
+    [] fn glGetLightiv(_light: GLenum, _pname: GLenum, _params: *mut i32) {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetMaterialiv(_face: GLenum, _pname: GLenum, _params: *mut i32) {
+    [] fn glGetMaterialiv(_face: GLenum, _pname: GLenum, _params: *mut i32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -206,17 +153,11 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexParameteriv(_target: GLenum, _pname: GLenum, _params: *const i32) {
+    [] fn glTexParameteriv(_target: GLenum, _pname: GLenum, _params: *const i32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetTexParameteriv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
+    [] fn glGetTexParameteriv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -224,17 +165,11 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexEnviv(_target: GLenum, _pname: GLenum, _params: *const i32) {
+    [] fn glTexEnviv(_target: GLenum, _pname: GLenum, _params: *const i32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetTexEnviv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
+    [] fn glGetTexEnviv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -242,17 +177,11 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexGeniv(_coord: GLenum, _pname: GLenum, _params: *const i32) {
+    [] fn glTexGeniv(_coord: GLenum, _pname: GLenum, _params: *const i32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetTexGeniv(_coord: GLenum, _pname: GLenum, _params: *mut i32) {
+    [] fn glGetTexGeniv(_coord: GLenum, _pname: GLenum, _params: *mut i32) {
         missing()
     }
     /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -260,10 +189,7 @@ exports! {
         missing()
     }
     /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glFogiv(_pname: GLenum, _params: *const i32) {
+    [] fn glFogiv(_pname: GLenum, _params: *const i32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -275,17 +201,11 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexGendv(_coord: GLenum, _pname: GLenum, _params: *const f64) {
+    [] fn glTexGendv(_coord: GLenum, _pname: GLenum, _params: *const f64) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetTexGendv(_coord: GLenum, _pname: GLenum, _params: *mut f64) {
+    [] fn glGetTexGendv(_coord: GLenum, _pname: GLenum, _params: *mut f64) {
         missing()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -293,38 +213,23 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexImage1D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+    [] fn glTexImage1D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexImage2D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _height: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+    [] fn glTexImage2D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _height: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexImage3D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _height: i32, _depth: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+    [] fn glTexImage3D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _height: i32, _depth: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexSubImage1D(_target: GLenum, _level: i32, _xoffset: i32, _width: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+    [] fn glTexSubImage1D(_target: GLenum, _level: i32, _xoffset: i32, _width: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glTexSubImage2D(_target: GLenum, _level: i32, _xoffset: i32, _yoffset: i32, _width: i32, _height: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+    [] fn glTexSubImage2D(_target: GLenum, _level: i32, _xoffset: i32, _yoffset: i32, _width: i32, _height: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -344,10 +249,7 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetTexImage(_target: GLenum, _level: i32, _format: GLenum, _ty: GLenum, _pixels: *mut c_void) {
+    [] fn glGetTexImage(_target: GLenum, _level: i32, _format: GLenum, _ty: GLenum, _pixels: *mut c_void) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -355,10 +257,7 @@ exports! {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glDeleteTextures(_n: i32, _textures: *const u32) {
+    [] fn glDeleteTextures(_n: i32, _textures: *const u32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -367,17 +266,11 @@ exports! {
         GL_FALSE
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glPrioritizeTextures(_n: i32, _textures: *const u32, _priorities: *const f32) {
+    [] fn glPrioritizeTextures(_n: i32, _textures: *const u32, _priorities: *const f32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glAreTexturesResident(_n: i32, _textures: *const u32, _residences: *mut u8) -> u8 {
+    [] fn glAreTexturesResident(_n: i32, _textures: *const u32, _residences: *mut u8) -> u8 {
         missing();
         GL_FALSE
     }
@@ -386,31 +279,19 @@ exports! {
         missing()
     }
     /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glPolygonStipple(_mask: *const u8) {
+    [] fn glPolygonStipple(_mask: *const u8) {
         missing()
     }
     /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetPolygonStipple(_mask: *mut u8) {
+    [] fn glGetPolygonStipple(_mask: *mut u8) {
         missing()
     }
     /// Clip planes (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glClipPlane(_plane: GLenum, _equation: *const f64) {
+    [] fn glClipPlane(_plane: GLenum, _equation: *const f64) {
         missing()
     }
     /// Clip planes (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetClipPlane(_plane: GLenum, _equation: *mut f64) {
+    [] fn glGetClipPlane(_plane: GLenum, _equation: *mut f64) {
         missing()
     }
     /// Accumulation buffer (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -426,10 +307,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos2fv(_v: *const f32) {
+    [] fn glRasterPos2fv(_v: *const f32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -437,10 +315,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos2dv(_v: *const f64) {
+    [] fn glRasterPos2dv(_v: *const f64) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -448,10 +323,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos2iv(_v: *const i32) {
+    [] fn glRasterPos2iv(_v: *const i32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -459,10 +331,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos2sv(_v: *const i16) {
+    [] fn glRasterPos2sv(_v: *const i16) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -470,10 +339,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos3fv(_v: *const f32) {
+    [] fn glRasterPos3fv(_v: *const f32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -481,10 +347,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos3dv(_v: *const f64) {
+    [] fn glRasterPos3dv(_v: *const f64) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -492,10 +355,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos3iv(_v: *const i32) {
+    [] fn glRasterPos3iv(_v: *const i32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -503,10 +363,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos3sv(_v: *const i16) {
+    [] fn glRasterPos3sv(_v: *const i16) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -514,10 +371,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos4fv(_v: *const f32) {
+    [] fn glRasterPos4fv(_v: *const f32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -525,10 +379,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos4dv(_v: *const f64) {
+    [] fn glRasterPos4dv(_v: *const f64) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -536,10 +387,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos4iv(_v: *const i32) {
+    [] fn glRasterPos4iv(_v: *const i32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -547,17 +395,11 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glRasterPos4sv(_v: *const i16) {
+    [] fn glRasterPos4sv(_v: *const i16) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glDrawPixels(_width: i32, _height: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
+    [] fn glDrawPixels(_width: i32, _height: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -565,10 +407,7 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glBitmap(_width: i32, _height: i32, _xorig: f32, _yorig: f32, _xmove: f32, _ymove: f32, _bitmap: *const u8) {
+    [] fn glBitmap(_width: i32, _height: i32, _xorig: f32, _yorig: f32, _xmove: f32, _ymove: f32, _bitmap: *const u8) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -576,45 +415,27 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glPixelMapfv(_map: GLenum, _size: i32, _values: *const f32) {
+    [] fn glPixelMapfv(_map: GLenum, _size: i32, _values: *const f32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glPixelMapuiv(_map: GLenum, _size: i32, _values: *const u32) {
+    [] fn glPixelMapuiv(_map: GLenum, _size: i32, _values: *const u32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glPixelMapusv(_map: GLenum, _size: i32, _values: *const u16) {
+    [] fn glPixelMapusv(_map: GLenum, _size: i32, _values: *const u16) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetPixelMapfv(_map: GLenum, _values: *mut f32) {
+    [] fn glGetPixelMapfv(_map: GLenum, _values: *mut f32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetPixelMapuiv(_map: GLenum, _values: *mut u32) {
+    [] fn glGetPixelMapuiv(_map: GLenum, _values: *mut u32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetPixelMapusv(_map: GLenum, _values: *mut u16) {
+    [] fn glGetPixelMapusv(_map: GLenum, _values: *mut u16) {
         missing()
     }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -623,17 +444,11 @@ exports! {
         0
     }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glSelectBuffer(_size: i32, _buffer: *mut u32) {
+    [] fn glSelectBuffer(_size: i32, _buffer: *mut u32) {
         missing()
     }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glFeedbackBuffer(_size: i32, _ty: GLenum, _buffer: *mut f32) {
+    [] fn glFeedbackBuffer(_size: i32, _ty: GLenum, _buffer: *mut f32) {
         missing()
     }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -657,17 +472,11 @@ exports! {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glMap1f(_target: GLenum, _u1: f32, _u2: f32, _stride: i32, _order: i32, _points: *const f32) {
+    [] fn glMap1f(_target: GLenum, _u1: f32, _u2: f32, _stride: i32, _order: i32, _points: *const f32) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glMap2f(_target: GLenum, _u1: f32, _u2: f32, _ustride: i32, _uorder: i32, _v1: f32, _v2: f32, _vstride: i32, _vorder: i32, _points: *const f32) {
+    [] fn glMap2f(_target: GLenum, _u1: f32, _u2: f32, _ustride: i32, _uorder: i32, _v1: f32, _v2: f32, _vstride: i32, _vorder: i32, _points: *const f32) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -683,10 +492,7 @@ exports! {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glEvalCoord1fv(_u: *const f32) {
+    [] fn glEvalCoord1fv(_u: *const f32) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -694,31 +500,19 @@ exports! {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glEvalCoord2fv(_u: *const f32) {
+    [] fn glEvalCoord2fv(_u: *const f32) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetMapfv(_target: GLenum, _query: GLenum, _v: *mut f32) {
+    [] fn glGetMapfv(_target: GLenum, _query: GLenum, _v: *mut f32) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glMap1d(_target: GLenum, _u1: f64, _u2: f64, _stride: i32, _order: i32, _points: *const f64) {
+    [] fn glMap1d(_target: GLenum, _u1: f64, _u2: f64, _stride: i32, _order: i32, _points: *const f64) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glMap2d(_target: GLenum, _u1: f64, _u2: f64, _ustride: i32, _uorder: i32, _v1: f64, _v2: f64, _vstride: i32, _vorder: i32, _points: *const f64) {
+    [] fn glMap2d(_target: GLenum, _u1: f64, _u2: f64, _ustride: i32, _uorder: i32, _v1: f64, _v2: f64, _vstride: i32, _vorder: i32, _points: *const f64) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -734,10 +528,7 @@ exports! {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glEvalCoord1dv(_u: *const f64) {
+    [] fn glEvalCoord1dv(_u: *const f64) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -745,24 +536,15 @@ exports! {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glEvalCoord2dv(_u: *const f64) {
+    [] fn glEvalCoord2dv(_u: *const f64) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetMapdv(_target: GLenum, _query: GLenum, _v: *mut f64) {
+    [] fn glGetMapdv(_target: GLenum, _query: GLenum, _v: *mut f64) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glGetMapiv(_target: GLenum, _query: GLenum, _v: *mut i32) {
+    [] fn glGetMapiv(_target: GLenum, _query: GLenum, _v: *mut i32) {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -786,10 +568,7 @@ exports! {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glIndexfv(_c: *const f32) {
+    [] fn glIndexfv(_c: *const f32) {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -797,10 +576,7 @@ exports! {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glIndexdv(_c: *const f64) {
+    [] fn glIndexdv(_c: *const f64) {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -808,10 +584,7 @@ exports! {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glIndexiv(_c: *const i32) {
+    [] fn glIndexiv(_c: *const i32) {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -819,10 +592,7 @@ exports! {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glIndexsv(_c: *const i16) {
+    [] fn glIndexsv(_c: *const i16) {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -830,10 +600,7 @@ exports! {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glIndexubv(_c: *const u8) {
+    [] fn glIndexubv(_c: *const u8) {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -845,10 +612,7 @@ exports! {
         missing()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glIndexPointer(_ty: GLenum, _stride: i32, _ptr: *const c_void) {
+    [] fn glIndexPointer(_ty: GLenum, _stride: i32, _ptr: *const c_void) {
         missing()
     }
     /// Edge flags (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -856,17 +620,11 @@ exports! {
         missing()
     }
     /// Edge flags (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glEdgeFlagv(_flag: *const u8) {
+    [] fn glEdgeFlagv(_flag: *const u8) {
         missing()
     }
     /// Edge flags (not in softgl yet): `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// Reads and writes nothing.
-    [unsafe] fn glEdgeFlagPointer(_stride: i32, _ptr: *const c_void) {
+    [] fn glEdgeFlagPointer(_stride: i32, _ptr: *const c_void) {
         missing()
     }
 }

@@ -1,7 +1,8 @@
 //! The GL entry points. Each submodule declares its exports with
-//! [`exports!`], which also lists them for `OSMesaGetProcAddress`.
+//! `exports!`, which also lists them for `OSMesaGetProcAddress`.
 
-use crate::state::{with_gl, OsContext};
+use crate::gl_state::{Cmd, GlState};
+use crate::state::with_gl;
 use softgl::{Context, GlError, GlResult};
 
 /// Declares `extern "C"` exports and a `table()` of their names and addresses.
@@ -21,11 +22,11 @@ macro_rules! exports {
 }
 
 mod arrays;
-pub(crate) mod attrib;
+mod attrib;
 mod enums;
 mod get;
 mod immediate;
-pub(crate) mod lists;
+mod lists;
 mod missing;
 mod pixels;
 mod state;
@@ -39,8 +40,8 @@ pub use missing::*;
 pub use pixels::*;
 pub use state::*;
 
-/// The address of the export called `name`.
-pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
+/// Every `gl*` export of this library: each module's `exports!` table.
+fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)> {
     [
         arrays::table,
         attrib::table,
@@ -51,36 +52,23 @@ pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
         pixels::table,
         state::table,
     ]
-    .iter()
+    .into_iter()
     .flat_map(|t| t())
-    .find(|(n, _)| *n == name)
-    .map(|(_, p)| p)
+}
+
+/// The address of the export called `name`.
+pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
+    all_exports().find(|(n, _)| *n == name).map(|(_, p)| p)
 }
 
 /// Every `gl*` name this library exports.
 pub fn exported_names() -> Vec<&'static str> {
-    [
-        arrays::table,
-        attrib::table,
-        get::table,
-        immediate::table,
-        lists::table,
-        missing::table,
-        pixels::table,
-        state::table,
-    ]
-    .iter()
-    .flat_map(|t| t())
-    .map(|(n, _)| n)
-    .collect()
+    all_exports().map(|(n, _)| n).collect()
 }
-
-/// A command of a display list: a GL call with its arguments.
-pub(crate) type Cmd = std::sync::Arc<dyn Fn(&mut OsContext, &mut Context) + Send + Sync>;
 
 /// Runs `cmd` now, or records it in the display list being compiled (and
 /// runs it too under `GL_COMPILE_AND_EXECUTE`).
-pub(crate) fn run_or_record(os: &mut OsContext, gl: &mut Context, cmd: Cmd) {
+pub(crate) fn run_or_record(os: &mut GlState, gl: &mut Context, cmd: Cmd) {
     match os.compiling.as_mut() {
         Some(list) => {
             list.cmds.push(cmd.clone());
@@ -94,7 +82,7 @@ pub(crate) fn run_or_record(os: &mut OsContext, gl: &mut Context, cmd: Cmd) {
 
 /// A GL call that display lists record: runs `f` on the current context
 /// (recording the error it returns), or records it.
-fn rec(f: impl Fn(&mut OsContext, &mut Context) -> GlResult + Send + Sync + 'static) {
+fn rec(f: impl Fn(&mut GlState, &mut Context) -> GlResult + Send + Sync + 'static) {
     with_gl((), |os, gl| {
         if os.compiling.is_none() {
             // The common case: no list, no allocation.
@@ -103,7 +91,7 @@ fn rec(f: impl Fn(&mut OsContext, &mut Context) -> GlResult + Send + Sync + 'sta
             }
             return;
         }
-        let cmd: Cmd = std::sync::Arc::new(move |os: &mut OsContext, gl: &mut Context| {
+        let cmd: Cmd = std::sync::Arc::new(move |os: &mut GlState, gl: &mut Context| {
             if let Err(e) = f(os, gl) {
                 gl.record_error(e);
             }
@@ -128,7 +116,7 @@ fn checked(f: impl Fn(&mut Context) -> GlResult + Send + Sync + 'static) {
 
 /// A call that runs at once, never recorded in a display list (queries,
 /// client state, pixel packing, list management), recording its error.
-fn now(f: impl FnOnce(&mut OsContext, &mut Context) -> GlResult) {
+fn now(f: impl FnOnce(&mut GlState, &mut Context) -> GlResult) {
     with_gl((), |os, gl| {
         if let Err(e) = f(os, gl) {
             gl.record_error(e);

@@ -2,7 +2,7 @@
 
 use super::now;
 use crate::consts::*;
-use crate::state::PixelStore;
+use crate::gl_state::PixelStore;
 use softgl::{Context, GlError, GlResult};
 use std::ffi::c_void;
 

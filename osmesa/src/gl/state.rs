@@ -1,9 +1,10 @@
 //! State, matrices, clears and synchronisation.
 
-use super::enums::{self, Cap};
+use super::enums::{self, decode, Cap};
 use super::{checked, gl, rec};
 use crate::consts::*;
-use crate::state::{with_gl, with_os, HINTS};
+use crate::gl_state::HINTS;
+use crate::state::{with_current, with_gl};
 use glam::{DMat4, Mat4};
 use softgl::{ClearMask, Context, GlError, GlResult};
 
@@ -72,11 +73,14 @@ exports! {
             gl.get_error().map_or(GL_NO_ERROR, GlError::code)
         })
     }
+    /// The converted formats reach the caller's buffer, and the Z24S8 copy
+    /// `OSMesaGetDepthBuffer` handed out is brought up to date.
     [] fn glFlush() {
-        with_os((), flush)
+        with_current((), |os| os.flush())
     }
+    /// As `glFlush`: softgl draws at each call, so there is nothing to wait for.
     [] fn glFinish() {
-        with_os((), flush)
+        with_current((), |os| os.flush())
     }
     [] fn glHint(target: GLenum, mode: GLenum) {
         rec(move |os, gl| {
@@ -147,7 +151,7 @@ exports! {
     }
 
     [] fn glMatrixMode(mode: GLenum) {
-        checked(move |gl| gl.matrix_mode(enums::matrix_mode(mode)?))
+        checked(move |gl| gl.matrix_mode(decode(mode)?))
     }
     [] fn glPushMatrix() {
         gl(Context::push_matrix)
@@ -212,16 +216,16 @@ exports! {
     }
 
     [] fn glShadeModel(mode: GLenum) {
-        checked(move |gl| gl.shade_model(enums::shade_model(mode)?))
+        checked(move |gl| gl.shade_model(decode(mode)?))
     }
     [] fn glFrontFace(mode: GLenum) {
-        checked(move |gl| gl.front_face(enums::front_face(mode)?))
+        checked(move |gl| gl.front_face(decode(mode)?))
     }
     [] fn glCullFace(mode: GLenum) {
-        checked(move |gl| gl.cull_face(enums::face(mode)?))
+        checked(move |gl| gl.cull_face(decode(mode)?))
     }
     [] fn glPolygonMode(face: GLenum, mode: GLenum) {
-        checked(move |gl| gl.polygon_mode(enums::face(face)?, enums::polygon_mode(mode)?))
+        checked(move |gl| gl.polygon_mode(decode(face)?, decode(mode)?))
     }
     [] fn glPolygonOffset(factor: f32, units: f32) {
         gl(move |gl| gl.polygon_offset(factor, units))
@@ -234,33 +238,33 @@ exports! {
     }
 
     [] fn glAlphaFunc(func: GLenum, reference: f32) {
-        checked(move |gl| gl.alpha_func(enums::compare(func)?, reference))
+        checked(move |gl| gl.alpha_func(decode(func)?, reference))
     }
     [] fn glStencilFunc(func: GLenum, reference: i32, mask: u32) {
-        checked(move |gl| gl.stencil_func(enums::compare(func)?, reference, mask))
+        checked(move |gl| gl.stencil_func(decode(func)?, reference, mask))
     }
     [] fn glStencilOp(fail: GLenum, zfail: GLenum, zpass: GLenum) {
-        checked(move |gl| gl.stencil_op(enums::stencil_op(fail)?, enums::stencil_op(zfail)?, enums::stencil_op(zpass)?))
+        checked(move |gl| gl.stencil_op(decode(fail)?, decode(zfail)?, decode(zpass)?))
     }
     [] fn glStencilMask(mask: u32) {
         gl(move |gl| gl.stencil_mask(mask))
     }
     [] fn glDepthFunc(func: GLenum) {
-        checked(move |gl| gl.depth_func(enums::compare(func)?))
+        checked(move |gl| gl.depth_func(decode(func)?))
     }
     [] fn glDepthMask(flag: u8) {
         gl(move |gl| gl.depth_mask(flag != 0))
     }
     [] fn glBlendFunc(src: GLenum, dst: GLenum) {
-        checked(move |gl| gl.blend_func(enums::blend_factor(src)?, enums::blend_factor(dst)?))
+        checked(move |gl| gl.blend_func(decode(src)?, decode(dst)?))
     }
     [] fn glBlendFuncSeparate(src_rgb: GLenum, dst_rgb: GLenum, src_alpha: GLenum, dst_alpha: GLenum) {
         checked(move |gl| {
             gl.blend_func_separate(
-                enums::blend_factor(src_rgb)?,
-                enums::blend_factor(dst_rgb)?,
-                enums::blend_factor(src_alpha)?,
-                enums::blend_factor(dst_alpha)?,
+                decode(src_rgb)?,
+                decode(dst_rgb)?,
+                decode(src_alpha)?,
+                decode(dst_alpha)?,
             )
         })
     }
@@ -268,13 +272,13 @@ exports! {
         glBlendFuncSeparate(src_rgb, dst_rgb, src_alpha, dst_alpha)
     }
     [] fn glBlendEquation(mode: GLenum) {
-        checked(move |gl| gl.blend_equation(enums::blend_equation(mode)?))
+        checked(move |gl| gl.blend_equation(decode(mode)?))
     }
     [] fn glBlendEquationEXT(mode: GLenum) {
         glBlendEquation(mode)
     }
     [] fn glBlendEquationSeparate(rgb: GLenum, alpha: GLenum) {
-        checked(move |gl| gl.blend_equation_separate(enums::blend_equation(rgb)?, enums::blend_equation(alpha)?))
+        checked(move |gl| gl.blend_equation_separate(decode(rgb)?, decode(alpha)?))
     }
     [] fn glBlendColor(r: f32, g: f32, b: f32, a: f32) {
         gl(move |gl| gl.blend_color(r, g, b, a))
@@ -283,16 +287,9 @@ exports! {
         glBlendColor(r, g, b, a)
     }
     [] fn glLogicOp(op: GLenum) {
-        checked(move |gl| gl.logic_op(enums::logic_op(op)?))
+        checked(move |gl| gl.logic_op(decode(op)?))
     }
     [] fn glColorMask(r: u8, g: u8, b: u8, a: u8) {
         gl(move |gl| gl.color_mask(r != 0, g != 0, b != 0, a != 0))
     }
-}
-
-/// `glFlush`/`glFinish`: the converted formats reach the caller's buffer, and
-/// the Z24S8 copy `OSMesaGetDepthBuffer` handed out is brought up to date.
-fn flush(os: &mut crate::state::OsContext) {
-    os.flush();
-    crate::api::refresh_depth_view(os);
 }

@@ -129,13 +129,16 @@ int main(int argc, char **argv) {
     dump("depth16", db, (size_t)dw * dh * bpv);
     OSMesaDestroyContext(ctx);
   }
-  /* No depth buffer: OSMesaGetDepthBuffer answers GL_FALSE and zeros. */
-  {
+  /* No depth buffer, with or without stencil: OSMesaGetDepthBuffer answers
+   * GL_FALSE and writes zeros and NULL (read after the call: C evaluates
+   * printf's arguments in no fixed order). */
+  for (int stencil = 0; stencil <= 8; stencil += 8) {
     static unsigned char buf[W * H * 4];
-    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, NULL);
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 0, stencil, 0, NULL);
     CHECK(OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H));
     GLint dw = 7, dh = 7, bpv = 7; void *db = buf;
-    printf("no depth: %d %d %d %d %d\n", OSMesaGetDepthBuffer(ctx, &dw, &dh, &bpv, &db), dw, dh, bpv, db == NULL);
+    GLboolean r = OSMesaGetDepthBuffer(ctx, &dw, &dh, &bpv, &db);
+    printf("no depth, stencil %d: %d %d %d %d %d\n", stencil, r, dw, dh, bpv, db == NULL);
     OSMesaDestroyContext(ctx);
   }
   printf("done\n");

@@ -1,0 +1,165 @@
+//! The GL state this library keeps beside [`softgl::Context`]: client
+//! arrays, pixel store, hints, capabilities without effect yet, the attribute
+//! stacks and the display lists. The GL entry points (`gl/*`) work on it; the
+//! OSMesa context ([`crate::state::OsContext`]) owns one and hands it to them
+//! with the GL context. It imports neither: `gl/*` → `state` → `gl_state`.
+
+use crate::consts::*;
+use softgl::state::RasterState;
+use softgl::{Context, CurrentAttribs, MatrixMode};
+use std::collections::HashMap;
+use std::sync::Arc;
+
+/// A client vertex array (`glVertexPointer` and friends).
+#[derive(Clone, Copy, Debug)]
+pub struct ClientArray {
+    pub enabled: bool,
+    pub size: i32,
+    pub ty: GLenum,
+    pub stride: i32,
+    pub ptr: *const u8,
+}
+
+impl ClientArray {
+    pub const fn new(size: i32) -> ClientArray {
+        ClientArray {
+            enabled: false,
+            size,
+            ty: GL_FLOAT,
+            stride: 0,
+            ptr: std::ptr::null(),
+        }
+    }
+}
+
+// SAFETY: the pointer is the caller's, read only while drawing on the thread
+// where the context is current, under GL's contract for client arrays.
+unsafe impl Send for ClientArray {}
+
+/// `glPixelStore` state for one direction (pack or unpack).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelStore {
+    pub swap_bytes: bool,
+    pub lsb_first: bool,
+    pub row_length: i32,
+    pub skip_rows: i32,
+    pub skip_pixels: i32,
+    pub alignment: i32,
+    pub image_height: i32,
+    pub skip_images: i32,
+}
+
+impl PixelStore {
+    pub const DEFAULT: PixelStore = PixelStore {
+        swap_bytes: false,
+        lsb_first: false,
+        row_length: 0,
+        skip_rows: 0,
+        skip_pixels: 0,
+        alignment: 4,
+        image_height: 0,
+        skip_images: 0,
+    };
+}
+
+/// `glHint` targets, in the order of [`GlState::hints`].
+pub const HINTS: [GLenum; 5] = [
+    GL_PERSPECTIVE_CORRECTION_HINT,
+    GL_POINT_SMOOTH_HINT,
+    GL_LINE_SMOOTH_HINT,
+    GL_POLYGON_SMOOTH_HINT,
+    GL_FOG_HINT,
+];
+
+/// A command of a display list: a GL call with its arguments.
+pub type Cmd = Arc<dyn Fn(&mut GlState, &mut Context) + Send + Sync>;
+
+/// The list `glNewList` opened.
+pub struct Compiling {
+    pub name: u32,
+    pub execute: bool,
+    pub cmds: Vec<Cmd>,
+}
+
+/// The state one `glPushAttrib` saved.
+#[derive(Clone)]
+pub struct SavedAttrib {
+    pub mask: u32,
+    pub state: RasterState,
+    pub current: CurrentAttribs,
+    pub matrix_mode: MatrixMode,
+    pub hints: [GLenum; 5],
+    pub inert_caps: Vec<GLenum>,
+}
+
+/// The state one `glPushClientAttrib` saved.
+#[derive(Clone)]
+pub struct SavedClient {
+    pub mask: u32,
+    pub pack: PixelStore,
+    pub unpack: PixelStore,
+    pub arrays: [ClientArray; 4],
+}
+
+/// The GL state of one context that `softgl::Context` does not hold.
+pub struct GlState {
+    pub vertex: ClientArray,
+    pub color: ClientArray,
+    pub normal: ClientArray,
+    pub tex_coord: ClientArray,
+    pub pack: PixelStore,
+    pub unpack: PixelStore,
+    /// `glHint` modes, in the order of [`HINTS`].
+    pub hints: [GLenum; 5],
+    /// Capabilities accepted but without effect until lighting lands
+    /// (`GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_COLOR_MATERIAL`, `GL_AUTO_NORMAL`).
+    pub inert_caps: Vec<GLenum>,
+    /// `glPushAttrib` and `glPushClientAttrib` stacks.
+    pub attrib_stack: Vec<SavedAttrib>,
+    pub client_attrib_stack: Vec<SavedClient>,
+    /// Display lists by name, the one being compiled, `glListBase`, and how
+    /// deep `glCallList` is nested.
+    pub lists: HashMap<u32, Arc<Vec<Cmd>>>,
+    pub compiling: Option<Compiling>,
+    pub list_base: u32,
+    pub call_depth: u32,
+}
+
+impl Default for GlState {
+    fn default() -> GlState {
+        GlState {
+            vertex: ClientArray::new(4),
+            color: ClientArray::new(4),
+            normal: ClientArray::new(3),
+            tex_coord: ClientArray::new(4),
+            pack: PixelStore::DEFAULT,
+            unpack: PixelStore::DEFAULT,
+            hints: [GL_DONT_CARE; 5],
+            inert_caps: Vec::new(),
+            attrib_stack: Vec::new(),
+            client_attrib_stack: Vec::new(),
+            lists: HashMap::new(),
+            compiling: None,
+            list_base: 0,
+            call_depth: 0,
+        }
+    }
+}
+
+impl GlState {
+    /// The four client arrays, in `glPushClientAttrib`'s order.
+    pub fn arrays(&self) -> [ClientArray; 4] {
+        [self.vertex, self.color, self.normal, self.tex_coord]
+    }
+
+    /// The client array `glEnableClientState` names, if softgl has it.
+    pub fn array_mut(&mut self, array: GLenum) -> Option<&mut ClientArray> {
+        Some(match array {
+            GL_VERTEX_ARRAY => &mut self.vertex,
+            GL_COLOR_ARRAY => &mut self.color,
+            GL_NORMAL_ARRAY => &mut self.normal,
+            GL_TEXTURE_COORD_ARRAY => &mut self.tex_coord,
+            _ => return None,
+        })
+    }
+}

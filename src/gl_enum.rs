@@ -1,0 +1,223 @@
+//! GL enumerants of softgl's state types, written once: each type's variants
+//! with their GL name and value (Mesa's `GL/gl.h`, `GL/glext.h`). The C ABI
+//! (`softgl-osmesa`) decodes C's arguments and encodes query answers with it,
+//! and the conformance back ends that speak C GL encode their calls with it.
+//!
+//! The one list per type generates an exhaustive `match` for [`GlEnum::to_gl`]
+//! (a new variant without a value does not compile) and a `match` for
+//! [`GlEnum::from_gl`] (a value listed twice is an unreachable-pattern lint).
+
+use crate::matrix::MatrixMode;
+use crate::state::{Capability, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};
+use softgl_jit::{BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilOp};
+
+/// A softgl type that stands for a set of GL enumerants.
+pub trait GlEnum: Copy + Eq + std::fmt::Debug + 'static {
+    /// Every variant with its GL name and value, in GL's order.
+    const TABLE: &'static [(Self, &'static str, u32)];
+    /// The GL value.
+    fn to_gl(self) -> u32;
+    /// The variant whose GL value is `value`; `None` for any other value
+    /// (`GL_INVALID_ENUM` at the C ABI).
+    fn from_gl(value: u32) -> Option<Self>;
+    /// The GL name (`"GL_LESS"`).
+    fn gl_name(self) -> &'static str {
+        Self::TABLE
+            .iter()
+            .find(|(v, _, _)| *v == self)
+            .map_or("", |&(_, name, _)| name)
+    }
+}
+
+macro_rules! gl_enums {
+    ($($ty:ident { $($variant:ident = $name:ident $value:literal,)* })*) => {
+        $(
+            impl GlEnum for $ty {
+                const TABLE: &'static [(Self, &'static str, u32)] =
+                    &[$(($ty::$variant, stringify!($name), $value)),*];
+                fn to_gl(self) -> u32 {
+                    match self {
+                        $($ty::$variant => $value,)*
+                    }
+                }
+                fn from_gl(value: u32) -> Option<Self> {
+                    match value {
+                        $($value => Some($ty::$variant),)*
+                        _ => None,
+                    }
+                }
+            }
+        )*
+    };
+}
+
+gl_enums! {
+    PrimitiveMode {
+        Points = GL_POINTS 0x0000,
+        Lines = GL_LINES 0x0001,
+        LineLoop = GL_LINE_LOOP 0x0002,
+        LineStrip = GL_LINE_STRIP 0x0003,
+        Triangles = GL_TRIANGLES 0x0004,
+        TriangleStrip = GL_TRIANGLE_STRIP 0x0005,
+        TriangleFan = GL_TRIANGLE_FAN 0x0006,
+        Quads = GL_QUADS 0x0007,
+        QuadStrip = GL_QUAD_STRIP 0x0008,
+        Polygon = GL_POLYGON 0x0009,
+    }
+    CompareFunc {
+        Never = GL_NEVER 0x0200,
+        Less = GL_LESS 0x0201,
+        Equal = GL_EQUAL 0x0202,
+        Lequal = GL_LEQUAL 0x0203,
+        Greater = GL_GREATER 0x0204,
+        Notequal = GL_NOTEQUAL 0x0205,
+        Gequal = GL_GEQUAL 0x0206,
+        Always = GL_ALWAYS 0x0207,
+    }
+    StencilOp {
+        Zero = GL_ZERO 0x0000,
+        Invert = GL_INVERT 0x150A,
+        Keep = GL_KEEP 0x1E00,
+        Replace = GL_REPLACE 0x1E01,
+        Incr = GL_INCR 0x1E02,
+        Decr = GL_DECR 0x1E03,
+        IncrWrap = GL_INCR_WRAP 0x8507,
+        DecrWrap = GL_DECR_WRAP 0x8508,
+    }
+    BlendFactor {
+        Zero = GL_ZERO 0x0000,
+        One = GL_ONE 0x0001,
+        SrcColor = GL_SRC_COLOR 0x0300,
+        OneMinusSrcColor = GL_ONE_MINUS_SRC_COLOR 0x0301,
+        SrcAlpha = GL_SRC_ALPHA 0x0302,
+        OneMinusSrcAlpha = GL_ONE_MINUS_SRC_ALPHA 0x0303,
+        DstAlpha = GL_DST_ALPHA 0x0304,
+        OneMinusDstAlpha = GL_ONE_MINUS_DST_ALPHA 0x0305,
+        DstColor = GL_DST_COLOR 0x0306,
+        OneMinusDstColor = GL_ONE_MINUS_DST_COLOR 0x0307,
+        SrcAlphaSaturate = GL_SRC_ALPHA_SATURATE 0x0308,
+        ConstantColor = GL_CONSTANT_COLOR 0x8001,
+        OneMinusConstantColor = GL_ONE_MINUS_CONSTANT_COLOR 0x8002,
+        ConstantAlpha = GL_CONSTANT_ALPHA 0x8003,
+        OneMinusConstantAlpha = GL_ONE_MINUS_CONSTANT_ALPHA 0x8004,
+    }
+    BlendEquation {
+        Add = GL_FUNC_ADD 0x8006,
+        Min = GL_MIN 0x8007,
+        Max = GL_MAX 0x8008,
+        Subtract = GL_FUNC_SUBTRACT 0x800A,
+        ReverseSubtract = GL_FUNC_REVERSE_SUBTRACT 0x800B,
+    }
+    LogicOp {
+        Clear = GL_CLEAR 0x1500,
+        And = GL_AND 0x1501,
+        AndReverse = GL_AND_REVERSE 0x1502,
+        Copy = GL_COPY 0x1503,
+        AndInverted = GL_AND_INVERTED 0x1504,
+        Noop = GL_NOOP 0x1505,
+        Xor = GL_XOR 0x1506,
+        Or = GL_OR 0x1507,
+        Nor = GL_NOR 0x1508,
+        Equiv = GL_EQUIV 0x1509,
+        Invert = GL_INVERT 0x150A,
+        OrReverse = GL_OR_REVERSE 0x150B,
+        CopyInverted = GL_COPY_INVERTED 0x150C,
+        OrInverted = GL_OR_INVERTED 0x150D,
+        Nand = GL_NAND 0x150E,
+        Set = GL_SET 0x150F,
+    }
+    Face {
+        Front = GL_FRONT 0x0404,
+        Back = GL_BACK 0x0405,
+        FrontAndBack = GL_FRONT_AND_BACK 0x0408,
+    }
+    FrontFace {
+        Cw = GL_CW 0x0900,
+        Ccw = GL_CCW 0x0901,
+    }
+    PolygonMode {
+        Point = GL_POINT 0x1B00,
+        Line = GL_LINE 0x1B01,
+        Fill = GL_FILL 0x1B02,
+    }
+    ShadeModel {
+        Flat = GL_FLAT 0x1D00,
+        Smooth = GL_SMOOTH 0x1D01,
+    }
+    MatrixMode {
+        Modelview = GL_MODELVIEW 0x1700,
+        Projection = GL_PROJECTION 0x1701,
+        Texture = GL_TEXTURE 0x1702,
+    }
+    Capability {
+        CullFace = GL_CULL_FACE 0x0B44,
+        DepthTest = GL_DEPTH_TEST 0x0B71,
+        StencilTest = GL_STENCIL_TEST 0x0B90,
+        AlphaTest = GL_ALPHA_TEST 0x0BC0,
+        Dither = GL_DITHER 0x0BD0,
+        Blend = GL_BLEND 0x0BE2,
+        ColorLogicOp = GL_COLOR_LOGIC_OP 0x0BF2,
+        ScissorTest = GL_SCISSOR_TEST 0x0C11,
+        PolygonOffsetPoint = GL_POLYGON_OFFSET_POINT 0x2A01,
+        PolygonOffsetLine = GL_POLYGON_OFFSET_LINE 0x2A02,
+        PolygonOffsetFill = GL_POLYGON_OFFSET_FILL 0x8037,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every entry decodes to itself, encodes to its value, and has a name
+    /// and a value of its own within its type.
+    fn round_trip<T: GlEnum>() -> usize {
+        for (i, &(v, name, value)) in T::TABLE.iter().enumerate() {
+            assert_eq!(v.to_gl(), value, "{v:?}");
+            assert_eq!(T::from_gl(value), Some(v), "{name}");
+            assert_eq!(v.gl_name(), name, "{v:?}");
+            assert!(name.starts_with("GL_"), "{name}");
+            for &(w, other_name, other_value) in &T::TABLE[..i] {
+                assert_ne!(w, v, "{v:?} listed twice");
+                assert_ne!(other_name, name);
+                assert_ne!(other_value, value);
+            }
+        }
+        T::TABLE.len()
+    }
+
+    #[test]
+    fn every_entry_round_trips() {
+        let counts = [
+            round_trip::<PrimitiveMode>(),
+            round_trip::<CompareFunc>(),
+            round_trip::<StencilOp>(),
+            round_trip::<BlendFactor>(),
+            round_trip::<BlendEquation>(),
+            round_trip::<LogicOp>(),
+            round_trip::<Face>(),
+            round_trip::<FrontFace>(),
+            round_trip::<PolygonMode>(),
+            round_trip::<ShadeModel>(),
+            round_trip::<MatrixMode>(),
+            round_trip::<Capability>(),
+        ];
+        // Every variant of each type (to_gl's exhaustive match already
+        // refuses a table without one).
+        assert_eq!(counts, [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 11]);
+    }
+
+    #[test]
+    fn the_all_lists_are_in_table_order_where_gl_orders_them() {
+        let values = |all: &[u32]| all.windows(2).all(|w| w[0] < w[1]);
+        assert!(values(&CompareFunc::ALL.map(CompareFunc::to_gl)));
+        assert!(values(&LogicOp::ALL.map(LogicOp::to_gl)));
+        assert_eq!(LogicOp::ALL.map(LogicOp::to_gl)[0], 0x1500);
+        assert_eq!(PrimitiveMode::from_gl(0x000A), None);
+        assert_eq!(CompareFunc::from_gl(0x0208), None);
+        assert_eq!(
+            Capability::from_gl(0x0B50),
+            None,
+            "GL_LIGHTING is not a softgl capability yet"
+        );
+    }
+}
