@@ -3,8 +3,8 @@
 //! llvmpipe's.
 
 use softgl::{
-    BlendFactor, Capability, ClearMask, ColorFormat, CompareFunc, Context, FramebufferDesc, MatrixMode, PrimitiveMode,
-    ShadeModel, StencilOp, VertexArrays,
+    BlendFactor, Capability, ClearMask, ColorFormat, CompareFunc, Context, FramebufferDesc, Indices, MatrixMode,
+    PrimitiveMode, ShadeModel, StencilOp, VertexArrays,
 };
 
 /// A context whose object coordinates are window coordinates (y up).
@@ -250,6 +250,66 @@ fn quads_split_along_v0_v2_and_flat_shading_takes_the_last_vertex() {
                 want
             };
             assert_eq!(got, want, "{mode:?} at ({x}, {y})");
+        }
+    }
+}
+
+/// A self-intersecting quad shows which diagonal llvmpipe split it along. Its
+/// split depends on how the quad is drawn (Mesa 22.3.6, probed with these
+/// vertices; docs/llvmpipe-facts.md §12): v0-v2 in immediate mode and
+/// `draw_arrays`, unless flat shading meets a per-vertex colour; v1-v3 always
+/// for `draw_elements`.
+#[test]
+fn bowtie_quads_split_as_llvmpipe_does_for_each_way_of_drawing() {
+    const V: [(f32, f32); 4] = [(2.0, 2.0), (2.0, 29.0), (29.0, 4.0), (29.0, 30.0)];
+    const COLORS: [[f32; 3]; 4] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 1.0, 0.0]];
+    let coverage = |draw: &dyn Fn(&mut Context)| {
+        let mut gl = window_ctx(32, 32);
+        count_with_stencil(&mut gl);
+        draw(&mut gl);
+        stencil_grid(&gl)
+    };
+    let split = |t: [usize; 6]| coverage(&|gl| draw(gl, PrimitiveMode::Triangles, &t.map(|i| V[i])));
+    let (v0_v2, v1_v3) = (split([0, 1, 2, 0, 2, 3]), split([0, 1, 3, 1, 2, 3]));
+    assert_ne!(v0_v2, v1_v3, "the two splits of the bowtie differ");
+    let pos: Vec<f32> = V.iter().flat_map(|&(x, y)| [x, y]).collect();
+    let col: Vec<f32> = COLORS.concat();
+    for shade in [ShadeModel::Smooth, ShadeModel::Flat] {
+        for per_vertex in [false, true] {
+            let arrays = if per_vertex {
+                VertexArrays::with_colors(2, &pos, 3, &col)
+            } else {
+                VertexArrays::positions(2, &pos)
+            };
+            let immediate = coverage(&|gl| {
+                gl.shade_model(shade).unwrap();
+                gl.begin(PrimitiveMode::Quads).unwrap();
+                for (&(x, y), [r, g, b]) in V.iter().zip(COLORS) {
+                    if per_vertex {
+                        gl.color3(r, g, b);
+                    }
+                    gl.vertex2(x, y);
+                }
+                gl.end().unwrap();
+            });
+            let draw_arrays = coverage(&|gl| {
+                gl.shade_model(shade).unwrap();
+                gl.draw_arrays(PrimitiveMode::Quads, 0, 4, &arrays).unwrap();
+            });
+            let draw_elements = coverage(&|gl| {
+                gl.shade_model(shade).unwrap();
+                gl.draw_elements(PrimitiveMode::Quads, Indices::U8(&[0, 1, 2, 3]), &arrays)
+                    .unwrap();
+            });
+            let want = if shade == ShadeModel::Flat && per_vertex {
+                &v1_v3
+            } else {
+                &v0_v2
+            };
+            let what = format!("{shade:?}, per-vertex colour {per_vertex}");
+            assert!(immediate == *want, "begin/end, {what}");
+            assert!(draw_arrays == *want, "draw_arrays, {what}");
+            assert!(draw_elements == v1_v3, "draw_elements, {what}");
         }
     }
 }

@@ -254,7 +254,7 @@ proptest! {
     }
 }
 
-/// The 565 packing in compiled code divides by 255 as `(n + 1 + (n >> 8)) >> 8`;
+/// The 565 ordered dither in compiled code divides by 255 as `(n + 1 + (n >> 8)) >> 8`;
 /// that identity must hold over every value the packing can form (`c * 63 + 247`).
 #[test]
 fn division_by_255_identity_holds_over_the_packing_range() {
