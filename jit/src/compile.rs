@@ -690,7 +690,11 @@ impl<'a> Gen<'a> {
                         self.b.ins().ushr_imm_u(g, 2),
                         self.b.ins().ushr_imm_u(b, 3),
                     ],
-                    Some(bias) => [self.dither(r, 31, bias), self.dither(g, 63, bias), self.dither(b, 31, bias)],
+                    Some(bias) => [
+                        self.dither(r, 31, bias),
+                        self.dither(g, 63, bias),
+                        self.dither(b, 31, bias),
+                    ],
                 };
                 let r = place(self, r, 11);
                 let g = place(self, g, 5);

@@ -80,7 +80,11 @@ pub fn pack(format: ColorFormat, [r, g, b, a]: [u8; 4], dither: Option<u32>) -> 
         ColorFormat::Rgb565 => {
             let [r, g, b] = match dither {
                 None => [truncate(r, 5), truncate(g, 6), truncate(b, 5)],
-                Some(bias) => [self::dither(r, 31, bias), self::dither(g, 63, bias), self::dither(b, 31, bias)],
+                Some(bias) => [
+                    self::dither(r, 31, bias),
+                    self::dither(g, 63, bias),
+                    self::dither(b, 31, bias),
+                ],
             };
             (r << 11) | (g << 5) | b
         }
