@@ -479,6 +479,70 @@ fn every_primitive_mode_draws_the_expected_fragment_count() {
     }
 }
 
+/// RGB 5-6-5 as llvmpipe stores it (docs/llvmpipe-facts.md §13): fragments
+/// and scissored clears truncate the unorm8 value to its high bits, a
+/// whole-buffer clear rounds `c * max` half up, and `GL_DITHER` dithers only
+/// when the opt-in knob is on.
+#[test]
+fn rgb565_truncates_like_llvmpipe_and_dithers_only_when_asked() {
+    let desc = FramebufferDesc {
+        color: ColorFormat::Rgb565,
+        depth_bits: 0,
+        stencil_bits: 0,
+        ..FramebufferDesc::rgba8_d24s8(8, 8)
+    };
+    let stored = |gl: &Context, x: u32, y: u32| {
+        let i = (y * 8 + x) as usize * 2;
+        let b = gl.framebuffer().color_bytes();
+        let v = u16::from_le_bytes([b[i], b[i + 1]]);
+        (v >> 11, (v >> 5) & 63, v & 31)
+    };
+    let mut gl = Context::new(desc).unwrap();
+    // (0.1, 0.2, 0.3): unorm8 (26, 51, 76) truncates to (3, 12, 9); c * max
+    // is (3.1, 12.6, 9.3), which rounds to (3, 13, 9).
+    gl.clear_color(0.1, 0.2, 0.3, 1.0).unwrap();
+    gl.clear(ClearMask::COLOR).unwrap();
+    assert_eq!(stored(&gl, 5, 5), (3, 13, 9), "whole-buffer clear");
+    gl.enable(Capability::ScissorTest).unwrap();
+    gl.scissor(0, 0, 4, 8).unwrap();
+    gl.clear(ClearMask::COLOR).unwrap();
+    gl.disable(Capability::ScissorTest).unwrap();
+    assert_eq!(
+        (stored(&gl, 1, 1), stored(&gl, 5, 1)),
+        ((3, 12, 9), (3, 13, 9)),
+        "scissored clear"
+    );
+    gl.color3(0.1, 0.2, 0.3);
+    draw(
+        &mut gl,
+        PrimitiveMode::Triangles,
+        &[(0.0, -1.0), (1.0, -1.0), (1.0, 1.0)],
+    );
+    assert_eq!(stored(&gl, 7, 0), (3, 12, 9), "a fragment");
+
+    // Red byte 4 is 0.49 of a 5-bit step: truncated it is 0; the ordered
+    // dither stores 1 where the Bayer entry is 8 or more (16 b + 7 >= 255 - 124).
+    let full = [
+        (-1.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 1.0),
+        (-1.0, -1.0),
+        (1.0, 1.0),
+        (-1.0, 1.0),
+    ];
+    let reds = |gl: &mut Context| {
+        gl.color3(4.0 / 255.0, 0.0, 0.0);
+        draw(gl, PrimitiveMode::Triangles, &full);
+        (0..64).map(|i| stored(gl, i % 8, i / 8).0).sum::<u16>()
+    };
+    assert!(gl.state().dither, "GL_DITHER is on by default");
+    assert_eq!(reds(&mut gl), 0, "GL_DITHER alone changes nothing");
+    gl.set_ordered_dither(true);
+    assert_eq!(reds(&mut gl), 32, "half of each 4x4 block dithers up");
+    gl.disable(Capability::Dither).unwrap();
+    assert_eq!(reds(&mut gl), 0, "the knob without GL_DITHER");
+}
+
 #[test]
 fn rgb565_and_bgra_framebuffers_render() {
     for color in [ColorFormat::Rgb565, ColorFormat::Bgra8, ColorFormat::Rgb8] {
