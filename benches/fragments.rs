@@ -118,13 +118,8 @@ fn coherent_spans() -> Vec<FragmentSpan> {
 /// Spans over the same pixels with seeded random colors, depths (D24 range)
 /// and coverage (each fragment covered with probability 3/4).
 fn random_spans() -> Vec<FragmentSpan> {
-    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
-    let mut next = move || {
-        seed ^= seed >> 12;
-        seed ^= seed << 25;
-        seed ^= seed >> 27;
-        seed.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    };
+    let mut rng = softgl_jit::rng::Rng::new(0x2545_f491);
+    let mut next = move || rng.next_u64();
     let mut spans = coherent_spans();
     for s in &mut spans {
         for i in 0..SPAN_MAX {

@@ -7,7 +7,7 @@
 use crate::error::{GlError, GlResult};
 use crate::fragment::{Backend, FragmentStage};
 use crate::framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
-use crate::geometry::{Geometry, InVertex, MAX_VIEWPORT};
+use crate::geometry::{DrawSource, Geometry, InVertex, MAX_VIEWPORT};
 use crate::matrix::{self, MatrixMode, MatrixStack};
 use crate::state::{
     Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, RasterState, ShadeModel, WindowRect,
@@ -161,11 +161,14 @@ pub struct Context {
     texture: MatrixStack,
     matrix_mode: MatrixMode,
     current: CurrentAttribs,
-    /// The primitive between `begin` and `end`, with its vertices.
-    begun: Option<(PrimitiveMode, Vec<InVertex>)>,
+    /// The primitive between `begin` and `end`, with its vertices and whether
+    /// `color4` was called in between (the colour is then per vertex).
+    begun: Option<(PrimitiveMode, Vec<InVertex>, bool)>,
     error: Option<GlError>,
     backend: Backend,
     specialists: SpecialistCache,
+    /// Whether `GL_DITHER` dithers (see [`Context::set_ordered_dither`]).
+    ordered_dither: bool,
 }
 
 impl Context {
@@ -194,6 +197,7 @@ impl Context {
             error: None,
             backend: Backend::from_env(),
             specialists: SpecialistCache::from_env(),
+            ordered_dither: std::env::var("SOFTGL_DITHER").is_ok_and(|v| v.trim() == "1"),
         }
     }
 
@@ -247,6 +251,15 @@ impl Context {
     /// Chooses the back end for later draws.
     pub fn set_backend(&mut self, backend: Backend) {
         self.backend = backend;
+    }
+
+    /// Whether `GL_DITHER` (on by default in GL) dithers colour stored in
+    /// 5-6-5 buffers with a 4x4 ordered (Bayer) dither. Off by default
+    /// (`SOFTGL_DITHER=1` at creation turns it on): llvmpipe ignores
+    /// `GL_DITHER` and truncates each unorm8 channel to its high bits, and
+    /// softgl does the same so that 5-6-5 images equal llvmpipe's.
+    pub fn set_ordered_dither(&mut self, on: bool) {
+        self.ordered_dither = on;
     }
 
     /// What the specialist cache has done: hits, misses, evictions, failed
@@ -590,22 +603,23 @@ impl Context {
     /// `glBegin`; `InvalidOperation` when already inside `begin`.
     pub fn begin(&mut self, mode: PrimitiveMode) -> GlResult {
         self.outside()?;
-        self.begun = Some((mode, Vec::new()));
+        self.begun = Some((mode, Vec::new(), false));
         Ok(())
     }
 
     /// `glEnd`: draws the vertices given since `begin`.
     pub fn end(&mut self) -> GlResult {
-        let Some((mode, verts)) = self.begun.take() else {
+        let Some((mode, verts, per_vertex_color)) = self.begun.take() else {
             return self.record(Err(GlError::InvalidOperation));
         };
-        self.draw(mode, verts.len(), &|i| verts[i])
+        let source = DrawSource::Arrays { per_vertex_color };
+        self.draw((mode, source), verts.len(), &|i| verts[i])
     }
 
     /// `glVertex4f`: outside `begin`/`end` it is ignored, as in GL.
     pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) {
         let color = self.current.color;
-        if let Some((_, verts)) = &mut self.begun {
+        if let Some((_, verts, _)) = &mut self.begun {
             verts.push(InVertex {
                 pos: Vec4::new(x, y, z, w),
                 color,
@@ -623,6 +637,9 @@ impl Context {
 
     pub fn color4(&mut self, r: f32, g: f32, b: f32, a: f32) {
         self.current.color = Vec4::new(r, g, b, a);
+        if let Some((_, _, per_vertex_color)) = &mut self.begun {
+            *per_vertex_color = true;
+        }
     }
 
     pub fn color3(&mut self, r: f32, g: f32, b: f32) {
@@ -658,7 +675,10 @@ impl Context {
         let end = first.checked_add(count).filter(|&e| e <= len);
         self.require(end.is_some())?;
         let current = self.current.color;
-        self.draw(mode, count, &|i| fetch(arrays, first + i, current))
+        let source = DrawSource::Arrays {
+            per_vertex_color: arrays.color.is_some(),
+        };
+        self.draw((mode, source), count, &|i| fetch(arrays, first + i, current))
     }
 
     /// `glDrawElements`: the vertices of `arrays` that `indices` name, in order.
@@ -668,13 +688,14 @@ impl Context {
         let len = self.record(arrays.check())?;
         self.require(indices.iter().all(|i| i < len))?;
         let current = self.current.color;
-        self.draw(mode, indices.len(), &|k| fetch(arrays, indices.get(k), current))
+        let source = (mode, DrawSource::Elements);
+        self.draw(source, indices.len(), &|k| fetch(arrays, indices.get(k), current))
     }
 
     // ----- drawing -----
 
-    fn draw(&mut self, mode: PrimitiveMode, count: usize, fetch: &dyn Fn(usize) -> InVertex) -> GlResult {
-        let key = self.state.fragment_key(&self.fb);
+    fn draw(&mut self, mode: (PrimitiveMode, DrawSource), count: usize, fetch: &dyn Fn(usize) -> InVertex) -> GlResult {
+        let key = self.state.fragment_key(&self.fb, self.ordered_dither);
         let uniforms = self.state.fragment_uniforms();
         let stages = key.stages();
         let reads_color = stages

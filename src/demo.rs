@@ -112,11 +112,9 @@ fn sky(gl: &mut Context) -> GlResult {
     gl.end()?;
     gl.point_size(2.0)?;
     gl.begin(PrimitiveMode::Points)?;
-    let mut seed = 0x2545_f491_u32;
+    let mut rng = crate::rng::Rng::new(0x2545_f491);
     for _ in 0..60 {
-        seed ^= seed << 13;
-        seed ^= seed >> 17;
-        seed ^= seed << 5;
+        let seed = rng.next_u32();
         let x = (seed & 0xffff) as f32 / 32768.0 - 1.0;
         let y = ((seed >> 16) & 0xffff) as f32 / 65536.0 * 0.8 + 0.2;
         let b = 0.6 + 0.4 * y;

@@ -378,8 +378,17 @@ impl Framebuffer {
         if bits == 0 || rect.is_empty() {
             return;
         }
-        let c = rgba.map(|v| float_to_unorm(v, 255) as u8);
-        let value = pixel::pack(format, c, pixel::reduce_bias(false, 0, 0));
+        let rgb_written = mask.r && mask.g && mask.b;
+        let value = if format == ColorFormat::Rgb565 && rect == self.bounds() && rgb_written {
+            // A whole-buffer clear is llvmpipe's `pipe->clear`, packed by
+            // `util_format_pack_rgba`: `util_iround(c * max)`, half up in f32.
+            // A scissored or masked clear draws a quad, whose colour goes the
+            // fragments' way: unorm8, then truncated (docs/llvmpipe-facts.md §13).
+            let q = |v: f32, max: f32| (v.clamp(0.0, 1.0) * max + 0.5) as u32;
+            (q(rgba[0], 31.0) << 11) | (q(rgba[1], 63.0) << 5) | q(rgba[2], 31.0)
+        } else {
+            pixel::pack(format, rgba.map(|v| float_to_unorm(v, 255) as u8), None)
+        };
         let bpp = format.bytes_per_pixel();
         for y in rect.y0..rect.y1 {
             let start = self.color_offset(rect.x0, y);

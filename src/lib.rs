@@ -36,6 +36,7 @@ pub use fragment::Backend;
 pub use framebuffer::{ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
 pub use gl_enum::GlEnum;
 pub use matrix::MatrixMode;
+pub use softgl_jit::rng;
 pub use softgl_jit::{
     BlendEquation, BlendFactor, CacheStats, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
     StencilOp,

@@ -279,8 +279,9 @@ impl RasterState {
 
     /// The fragment key for drawing into `fb`: normalized, so stages that cannot
     /// change a pixel (a scissor box covering the framebuffer, tests without
-    /// their buffer) are left out.
-    pub fn fragment_key(&self, fb: &Framebuffer) -> FragmentKey {
+    /// their buffer) are left out. `GL_DITHER` dithers only with `ordered_dither`
+    /// (the context's opt-in knob): llvmpipe ignores it and truncates.
+    pub fn fragment_key(&self, fb: &Framebuffer, ordered_dither: bool) -> FragmentKey {
         let [x0, y0, x1, y1] = self.scissor_box();
         let scissor_covers = x0 <= 0 && y0 <= 0 && x1 >= fb.width() as i32 && y1 >= fb.height() as i32;
         let key = FragmentKey {
@@ -300,7 +301,7 @@ impl RasterState {
                 write: self.depth_write,
             }),
             blend: (self.blend && self.blend_func != BlendKey::DEFAULT).then_some(self.blend_func),
-            dither: self.dither,
+            dither: self.dither && ordered_dither,
             logic_op: (self.color_logic_op && self.logic_op != LogicOp::Copy).then_some(self.logic_op),
             color_mask: self.color_mask,
         };

@@ -3,8 +3,8 @@
 //! llvmpipe's.
 
 use softgl::{
-    BlendFactor, Capability, ClearMask, ColorFormat, CompareFunc, Context, FramebufferDesc, MatrixMode, PrimitiveMode,
-    ShadeModel, StencilOp, VertexArrays,
+    BlendFactor, Capability, ClearMask, ColorFormat, CompareFunc, Context, FramebufferDesc, Indices, MatrixMode,
+    PrimitiveMode, ShadeModel, StencilOp, VertexArrays,
 };
 
 /// A context whose object coordinates are window coordinates (y up).
@@ -254,6 +254,66 @@ fn quads_split_along_v0_v2_and_flat_shading_takes_the_last_vertex() {
     }
 }
 
+/// A self-intersecting quad shows which diagonal llvmpipe split it along. Its
+/// split depends on how the quad is drawn (Mesa 22.3.6, probed with these
+/// vertices; docs/llvmpipe-facts.md §12): v0-v2 in immediate mode and
+/// `draw_arrays`, unless flat shading meets a per-vertex colour; v1-v3 always
+/// for `draw_elements`.
+#[test]
+fn bowtie_quads_split_as_llvmpipe_does_for_each_way_of_drawing() {
+    const V: [(f32, f32); 4] = [(2.0, 2.0), (2.0, 29.0), (29.0, 4.0), (29.0, 30.0)];
+    const COLORS: [[f32; 3]; 4] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 1.0, 0.0]];
+    let coverage = |draw: &dyn Fn(&mut Context)| {
+        let mut gl = window_ctx(32, 32);
+        count_with_stencil(&mut gl);
+        draw(&mut gl);
+        stencil_grid(&gl)
+    };
+    let split = |t: [usize; 6]| coverage(&|gl| draw(gl, PrimitiveMode::Triangles, &t.map(|i| V[i])));
+    let (v0_v2, v1_v3) = (split([0, 1, 2, 0, 2, 3]), split([0, 1, 3, 1, 2, 3]));
+    assert_ne!(v0_v2, v1_v3, "the two splits of the bowtie differ");
+    let pos: Vec<f32> = V.iter().flat_map(|&(x, y)| [x, y]).collect();
+    let col: Vec<f32> = COLORS.concat();
+    for shade in [ShadeModel::Smooth, ShadeModel::Flat] {
+        for per_vertex in [false, true] {
+            let arrays = if per_vertex {
+                VertexArrays::with_colors(2, &pos, 3, &col)
+            } else {
+                VertexArrays::positions(2, &pos)
+            };
+            let immediate = coverage(&|gl| {
+                gl.shade_model(shade).unwrap();
+                gl.begin(PrimitiveMode::Quads).unwrap();
+                for (&(x, y), [r, g, b]) in V.iter().zip(COLORS) {
+                    if per_vertex {
+                        gl.color3(r, g, b);
+                    }
+                    gl.vertex2(x, y);
+                }
+                gl.end().unwrap();
+            });
+            let draw_arrays = coverage(&|gl| {
+                gl.shade_model(shade).unwrap();
+                gl.draw_arrays(PrimitiveMode::Quads, 0, 4, &arrays).unwrap();
+            });
+            let draw_elements = coverage(&|gl| {
+                gl.shade_model(shade).unwrap();
+                gl.draw_elements(PrimitiveMode::Quads, Indices::U8(&[0, 1, 2, 3]), &arrays)
+                    .unwrap();
+            });
+            let want = if shade == ShadeModel::Flat && per_vertex {
+                &v1_v3
+            } else {
+                &v0_v2
+            };
+            let what = format!("{shade:?}, per-vertex colour {per_vertex}");
+            assert!(immediate == *want, "begin/end, {what}");
+            assert!(draw_arrays == *want, "draw_arrays, {what}");
+            assert!(draw_elements == v1_v3, "draw_elements, {what}");
+        }
+    }
+}
+
 #[test]
 fn quad_strip_splits_along_v0_v3() {
     // Red 255 at v0 and v3 of the strip's quad: the v0-v3 diagonal is all 255.
@@ -417,6 +477,70 @@ fn every_primitive_mode_draws_the_expected_fragment_count() {
         };
         assert_eq!(count, want, "{mode:?}");
     }
+}
+
+/// RGB 5-6-5 as llvmpipe stores it (docs/llvmpipe-facts.md §13): fragments
+/// and scissored clears truncate the unorm8 value to its high bits, a
+/// whole-buffer clear rounds `c * max` half up, and `GL_DITHER` dithers only
+/// when the opt-in knob is on.
+#[test]
+fn rgb565_truncates_like_llvmpipe_and_dithers_only_when_asked() {
+    let desc = FramebufferDesc {
+        color: ColorFormat::Rgb565,
+        depth_bits: 0,
+        stencil_bits: 0,
+        ..FramebufferDesc::rgba8_d24s8(8, 8)
+    };
+    let stored = |gl: &Context, x: u32, y: u32| {
+        let i = (y * 8 + x) as usize * 2;
+        let b = gl.framebuffer().color_bytes();
+        let v = u16::from_le_bytes([b[i], b[i + 1]]);
+        (v >> 11, (v >> 5) & 63, v & 31)
+    };
+    let mut gl = Context::new(desc).unwrap();
+    // (0.1, 0.2, 0.3): unorm8 (26, 51, 76) truncates to (3, 12, 9); c * max
+    // is (3.1, 12.6, 9.3), which rounds to (3, 13, 9).
+    gl.clear_color(0.1, 0.2, 0.3, 1.0).unwrap();
+    gl.clear(ClearMask::COLOR).unwrap();
+    assert_eq!(stored(&gl, 5, 5), (3, 13, 9), "whole-buffer clear");
+    gl.enable(Capability::ScissorTest).unwrap();
+    gl.scissor(0, 0, 4, 8).unwrap();
+    gl.clear(ClearMask::COLOR).unwrap();
+    gl.disable(Capability::ScissorTest).unwrap();
+    assert_eq!(
+        (stored(&gl, 1, 1), stored(&gl, 5, 1)),
+        ((3, 12, 9), (3, 13, 9)),
+        "scissored clear"
+    );
+    gl.color3(0.1, 0.2, 0.3);
+    draw(
+        &mut gl,
+        PrimitiveMode::Triangles,
+        &[(0.0, -1.0), (1.0, -1.0), (1.0, 1.0)],
+    );
+    assert_eq!(stored(&gl, 7, 0), (3, 12, 9), "a fragment");
+
+    // Red byte 4 is 0.49 of a 5-bit step: truncated it is 0; the ordered
+    // dither stores 1 where the Bayer entry is 8 or more (16 b + 7 >= 255 - 124).
+    let full = [
+        (-1.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 1.0),
+        (-1.0, -1.0),
+        (1.0, 1.0),
+        (-1.0, 1.0),
+    ];
+    let reds = |gl: &mut Context| {
+        gl.color3(4.0 / 255.0, 0.0, 0.0);
+        draw(gl, PrimitiveMode::Triangles, &full);
+        (0..64).map(|i| stored(gl, i % 8, i / 8).0).sum::<u16>()
+    };
+    assert!(gl.state().dither, "GL_DITHER is on by default");
+    assert_eq!(reds(&mut gl), 0, "GL_DITHER alone changes nothing");
+    gl.set_ordered_dither(true);
+    assert_eq!(reds(&mut gl), 32, "half of each 4x4 block dithers up");
+    gl.disable(Capability::Dither).unwrap();
+    assert_eq!(reds(&mut gl), 0, "the knob without GL_DITHER");
 }
 
 #[test]

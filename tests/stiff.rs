@@ -155,7 +155,7 @@ fn w_near_zero_is_a_point_at_infinity() {
 #[test]
 fn all_w_near_zero_leaves_the_good_quad_exact() {
     // Three vertices with w ≈ 0 are three points at infinity. Where the
-    // triangle through them lands is checked exactly (and currently fails) in
+    // triangle through them lands is checked exactly in
     // `huge_primitives_crossing_the_window_keep_their_shape`; here: no panic,
     // only red or the clear color outside the quad, and the quad exact.
     for w in [1e-30, -1e-30, 0.0] {
@@ -331,14 +331,12 @@ fn large_primitives_crossing_the_window_keep_their_shape() {
     }
 }
 
-/// Renderer bug (src/geometry/clip.rs, `ClipVertex::lerp` as used by
-/// `clip_polygon` and `clip_segment`): guard-band clipping interpolates the
-/// intersection as `a + (b - a) * t` in f64; with vertices beyond ~1e21 the
-/// error (ulp(1e21) ≈ 1.3e5) exceeds the guard band (2^21 / 32 = 65536 ndc
-/// units for a 32-pixel viewport), so the clipped polygon loses the lower half
-/// of the window (cover: 512 of 1024 pixels), or the primitive vanishes
-/// (diagonal triangle: 0 of 496; diagonal line: 0 of 32). Three vertices at
-/// w = 1e-30 are the same case: 384 of 768 pixels.
+/// Vertices beyond ~1e21, where one f64 interpolation `a + (b - a) * t`
+/// errs by more than a guard band (ulp(1e21) ≈ 1.3e5) and once cost the
+/// lower half of the window (512 of 1024 pixels), the diagonal triangle (0 of
+/// 496) or line (0 of 32): src/geometry/clip.rs now brings them in through
+/// nested guard bands (`GUARD_LEVELS`), so each shape is exact. Three vertices
+/// at w = 1e-30 are the same case (once 384 of 768 pixels).
 #[test]
 fn huge_primitives_crossing_the_window_keep_their_shape() {
     for big in [1e21, 1e30, 1e38, 3e38, f32::MAX] {
@@ -1051,15 +1049,12 @@ fn polygon_offset_extremes() {
     }
 }
 
-/// A deterministic xorshift64 generator.
-struct XorShift(u64);
+/// softgl's deterministic generator, with the stiff values drawn from it.
+struct XorShift(softgl::rng::Rng);
 
 impl XorShift {
     fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
+        self.0.next_u64()
     }
 
     fn below(&mut self, n: u64) -> u64 {
@@ -1137,10 +1132,11 @@ fn random_extreme_triangles_do_not_poison_later_frames() {
     };
     let mut gl = context(32, 32);
     gl.viewport(VP.0, VP.1, VP.2, VP.3).unwrap();
-    let mut rng = XorShift(0x9e37_79b9_7f4a_7c15);
+    let mut rng = XorShift(softgl::rng::Rng::new(0x9e37_79b9));
     // 3000 vertices (1000 triangles' worth) in 10 draws of 300, each under
     // different state; 300 crosses the geometry's 256-vertex batches. Odd
     // draws go through draw_elements with random indices.
+    let mut drawn = 0;
     for draw in 0..10 {
         // Wide points and lines may reach past the viewport (as in llvmpipe and
         // as GL allows); each draw starts from a clear frame to check the rest.
@@ -1200,6 +1196,7 @@ fn random_extreme_triangles_do_not_poison_later_frames() {
         }
         let fb = gl.framebuffer();
         assert_eq!((fb.width(), fb.height(), fb.color_bytes().len()), (32, 32, 32 * 32 * 4));
+        drawn += (0..32 * 32).filter(|i| fb.pixel(i % 32, i / 32) != Some(CLEAR)).count();
         for y in 0..32 {
             for x in 0..32 {
                 if !inside_vp(x, y) && !wide {
@@ -1220,9 +1217,6 @@ fn random_extreme_triangles_do_not_poison_later_frames() {
     }
 
     // The random draws did rasterize something inside the viewport.
-    let drawn = (0..32 * 32)
-        .filter(|i| gl.framebuffer().pixel(i % 32, i / 32) != Some(CLEAR))
-        .count();
     assert!(drawn > 0, "no random primitive reached the framebuffer");
 
     // A fresh frame: default state back, clear, one good quad: exact.

@@ -41,13 +41,8 @@ pub fn all_ops_key() -> FragmentKey {
 /// Positions (xyz, NDC) and colors (rgba) of `count` seeded random triangles,
 /// each within `extent` (NDC units) of its centre, alpha in `min_alpha..1`.
 pub fn random_triangles(count: usize, seed: u32, extent: f32, min_alpha: f32) -> (Vec<f32>, Vec<f32>) {
-    let mut seed = seed;
-    let mut next = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 17;
-        seed ^= seed << 5;
-        seed as f32 / u32::MAX as f32
-    };
+    let mut rng = softgl_jit::rng::Rng::new(seed);
+    let mut next = move || rng.unit();
     let (mut pos, mut col) = (Vec::new(), Vec::new());
     for _ in 0..count {
         let (cx, cy, z) = (next() * 2.0 - 1.0, next() * 2.0 - 1.0, next() * 2.0 - 1.0);

@@ -423,8 +423,7 @@ impl<'a> Gen<'a> {
                     g.rgba = self.blend(&blend, g.rgba, d, u);
                 }
                 Stage::Pack { dither } => {
-                    let bias = if dither { u.dither } else { self.splat(127) };
-                    g.packed = Some(self.pack(g.rgba, bias));
+                    g.packed = Some(self.pack(g.rgba, dither.then_some(u.dither)));
                 }
                 Stage::LogicOp(op) => {
                     let dst = self.load_dst(&mut g);
@@ -662,8 +661,9 @@ impl<'a> Gen<'a> {
         self.b.ins().bor(hi, lo)
     }
 
-    /// RGBA bytes to the format's packed value, as [`pixel::pack`].
-    fn pack(&mut self, [r, g, b, a]: [Value; 4], bias: Value) -> Value {
+    /// RGBA bytes to the format's packed value, as [`pixel::pack`]: `dither`
+    /// holds the lanes' ordered-dither biases, or is `None` to truncate.
+    fn pack(&mut self, [r, g, b, a]: [Value; 4], dither: Option<Value>) -> Value {
         let place = |s: &mut Self, v: Value, shift: i64| if shift == 0 { v } else { s.b.ins().ishl_imm_u(v, shift) };
         match self.key.color_format {
             ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8 => {
@@ -684,9 +684,18 @@ impl<'a> Gen<'a> {
                 }
             }
             ColorFormat::Rgb565 => {
-                let r = self.reduce(r, 31, bias);
-                let g = self.reduce(g, 63, bias);
-                let b = self.reduce(b, 31, bias);
+                let [r, g, b] = match dither {
+                    None => [
+                        self.b.ins().ushr_imm_u(r, 3),
+                        self.b.ins().ushr_imm_u(g, 2),
+                        self.b.ins().ushr_imm_u(b, 3),
+                    ],
+                    Some(bias) => [
+                        self.dither(r, 31, bias),
+                        self.dither(g, 63, bias),
+                        self.dither(b, 31, bias),
+                    ],
+                };
                 let r = place(self, r, 11);
                 let g = place(self, g, 5);
                 let v = self.b.ins().bor(r, g);
@@ -695,9 +704,9 @@ impl<'a> Gen<'a> {
         }
     }
 
-    /// `(c * max + bias) / 255`, as [`pixel::reduce`]: for `n <= 65534`,
+    /// `(c * max + bias) / 255`, as [`pixel::dither`]: for `n <= 65534`,
     /// `n / 255 == (n + 1 + (n >> 8)) >> 8` (checked over the range in tests).
-    fn reduce(&mut self, c: Value, max: i64, bias: Value) -> Value {
+    fn dither(&mut self, c: Value, max: i64, bias: Value) -> Value {
         let m = self.splat(max);
         let n = self.b.ins().imul(c, m);
         let n = self.b.ins().iadd(n, bias);

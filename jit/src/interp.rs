@@ -145,7 +145,7 @@ fn run_span(key: &FragmentKey, stages: &[Stage], u: &FragmentUniforms, span: &Fr
             }
             Stage::Pack { dither } => {
                 for i in lanes(live) {
-                    let bias = pixel::reduce_bias(dither, x0 + i as u32, y);
+                    let bias = dither.then(|| pixel::dither_bias(x0 + i as u32, y));
                     packed[i] = pixel::pack(format, rgba[i], bias);
                 }
             }

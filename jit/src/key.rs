@@ -385,7 +385,9 @@ pub struct FragmentKey {
     pub depth: Option<DepthKey>,
     /// Ignored (and dropped by [`FragmentKey::normalized`]) while `logic_op` is on.
     pub blend: Option<BlendKey>,
-    /// Only meaningful for formats with fewer than 8 bits a channel.
+    /// The ordered (Bayer) dither; off, colour is truncated to the channel's
+    /// high bits as llvmpipe does. Only meaningful for formats with fewer than
+    /// 8 bits a channel.
     pub dither: bool,
     pub logic_op: Option<LogicOp>,
     pub color_mask: ColorMask,

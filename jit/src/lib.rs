@@ -12,6 +12,7 @@ pub mod compile;
 pub mod interp;
 pub mod key;
 pub mod pixel;
+pub mod rng;
 pub mod span;
 #[allow(unsafe_code)]
 pub mod specialist;

@@ -17,21 +17,26 @@ pub fn mul_unorm8(a: u8, b: u8) -> u8 {
 /// The 4x4 ordered-dither (Bayer) matrix, indexed `[y & 3][x & 3]`.
 pub const BAYER4: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
 
-/// The rounding bias for reducing a byte to fewer bits at `(x, y)`: 127 rounds to
-/// nearest; dithering spreads it over `7..=247` (mean 127) with [`BAYER4`].
+/// The ordered-dither bias at `(x, y)` for [`dither`]: [`BAYER4`] spread over
+/// `7..=247` (mean 127, which alone would round to nearest).
 #[inline]
-pub fn reduce_bias(dither: bool, x: u32, y: u32) -> u32 {
-    if dither {
-        u32::from(BAYER4[(y & 3) as usize][(x & 3) as usize]) * 16 + 7
-    } else {
-        127
-    }
+pub fn dither_bias(x: u32, y: u32) -> u32 {
+    u32::from(BAYER4[(y & 3) as usize][(x & 3) as usize]) * 16 + 7
 }
 
-/// `floor((c * max + bias) / 255)`: a byte reduced to a `max`-valued channel.
+/// `floor((c * max + bias) / 255)`: a byte dithered to a `max`-valued channel
+/// (the opt-in ordered dither; llvmpipe never dithers, see [`truncate`]).
 #[inline]
-pub fn reduce(c: u8, max: u32, bias: u32) -> u32 {
+pub fn dither(c: u8, max: u32, bias: u32) -> u32 {
     (u32::from(c) * max + bias) / 255
+}
+
+/// A byte reduced to its `bits` high bits, `c >> (8 - bits)`: how llvmpipe
+/// stores unorm8 colour into a narrower channel (its `scale_bits` in
+/// `lp_state_fs.c` shifts, "the wrong rounding"; docs/llvmpipe-facts.md §13).
+#[inline]
+pub fn truncate(c: u8, bits: u32) -> u32 {
+    u32::from(c) >> (8 - bits)
 }
 
 /// Expands a 5-bit channel to 8 bits by bit replication (exact for 0 and 31).
@@ -64,14 +69,25 @@ pub fn store(format: ColorFormat, bytes: &mut [u8], v: u32) {
     bytes[..n].copy_from_slice(&le[..n]);
 }
 
-/// Packs unorm bytes RGBA into `format`, reducing with `bias` where bits are lost.
+/// Packs unorm bytes RGBA into `format`. Where bits are lost, `dither` is
+/// `None` for llvmpipe's truncation or `Some(bias)` for the ordered dither.
 #[inline]
-pub fn pack(format: ColorFormat, [r, g, b, a]: [u8; 4], bias: u32) -> u32 {
+pub fn pack(format: ColorFormat, [r, g, b, a]: [u8; 4], dither: Option<u32>) -> u32 {
     match format {
         ColorFormat::Rgba8 => u32::from_le_bytes([r, g, b, a]),
         ColorFormat::Bgra8 => u32::from_le_bytes([b, g, r, a]),
         ColorFormat::Rgb8 => u32::from_le_bytes([r, g, b, 0]),
-        ColorFormat::Rgb565 => (reduce(r, 31, bias) << 11) | (reduce(g, 63, bias) << 5) | reduce(b, 31, bias),
+        ColorFormat::Rgb565 => {
+            let [r, g, b] = match dither {
+                None => [truncate(r, 5), truncate(g, 6), truncate(b, 5)],
+                Some(bias) => [
+                    self::dither(r, 31, bias),
+                    self::dither(g, 63, bias),
+                    self::dither(b, 31, bias),
+                ],
+            };
+            (r << 11) | (g << 5) | b
+        }
     }
 }
 

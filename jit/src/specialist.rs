@@ -138,7 +138,7 @@ impl Specialist {
             live,
             groups,
             _pad: 0,
-            dither: std::array::from_fn(|i| pixel::reduce_bias(true, span.x + i as u32, span.y)),
+            dither: std::array::from_fn(|i| pixel::dither_bias(span.x + i as u32, span.y)),
         };
         let bpp = self.key.color_format.bytes_per_pixel();
         let color_at = t.color_offset(span.x, span.y);

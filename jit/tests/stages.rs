@@ -236,9 +236,10 @@ fn channel_max(bits: u32) -> f64 {
     f64::from((1u32 << bits) - 1)
 }
 
-/// GL's conversion of a unorm byte to a `bits`-bit channel: `round(c * max / 255)`.
+/// llvmpipe's conversion of a unorm byte to a `bits`-bit channel: its high
+/// `bits` bits (`scale_bits` in `lp_state_fs.c`; docs/llvmpipe-facts.md §13).
 fn spec_reduce(c: u8, bits: u32) -> u32 {
-    (f64::from(c) * channel_max(bits) / 255.0).round() as u32
+    u32::from(c) >> (8 - bits)
 }
 
 /// GL's conversion of a `bits`-bit channel to the nearest unorm byte: `round(v * 255 / max)`.
@@ -246,7 +247,7 @@ fn spec_expand(v: u32, bits: u32) -> u8 {
     (f64::from(v) * 255.0 / channel_max(bits)).round() as u8
 }
 
-/// The 16-bit RGB565 value of unorm bytes, rounded to nearest.
+/// The 16-bit RGB565 value of unorm bytes, as llvmpipe stores them.
 fn spec_565([r, g, b, _]: [u8; 4]) -> u16 {
     ((spec_reduce(r, 5) << 11) | (spec_reduce(g, 6) << 5) | spec_reduce(b, 5)) as u16
 }
@@ -1183,7 +1184,7 @@ fn color_mask_each_channel_each_format() {
 // ---------------------------------------------------------------------------
 
 #[test]
-fn rgb565_packs_to_nearest_without_dither() {
+fn rgb565_keeps_the_high_bits_without_dither() {
     let mut fb = Fb::new(64, 4, ColorFormat::Rgb565);
     let frags: Vec<_> = (0..=255u8).map(|c| ([c, c, c, 255], 0)).collect();
     fb.run(&fb.key(), &uniforms(), &grid_spans(64, &frags)).unwrap();
@@ -1197,13 +1198,13 @@ fn rgb565_packs_to_nearest_without_dither() {
             "byte {c}"
         );
     }
-    // Spelled out: 4 * 31 / 255 = 0.486 rounds to 0, 5 * 31 / 255 = 0.608 to 1.
+    // Spelled out: 7 (0.85 of a 5-bit step) stores 0, 8 stores 1.
     let stored = |c: u8| {
         let (x, y) = grid_pos(64, usize::from(c));
         u16::from_le_bytes([fb.pixel(x, y)[0], fb.pixel(x, y)[1]]) >> 11
     };
     assert_eq!(
-        (stored(4), stored(5), stored(127), stored(128), stored(255)),
+        (stored(7), stored(8), stored(127), stored(128), stored(255)),
         (0, 1, 15, 16, 31)
     );
 }

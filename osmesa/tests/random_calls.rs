@@ -10,19 +10,16 @@ use OSMesa::*;
 
 static PANICS: AtomicUsize = AtomicUsize::new(0);
 
-/// xorshift64*: deterministic, so a failure replays.
-struct Rng(u64);
+/// softgl's deterministic generator, so a failure replays.
+struct Rng(softgl::rng::Rng);
 
 impl Rng {
     fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+        self.0.next_u64()
     }
 
     fn pick<T: Copy>(&mut self, v: &[T]) -> T {
-        v[(self.next() % v.len() as u64) as usize]
+        self.0.pick(v)
     }
 
     fn f(&mut self) -> f32 {
@@ -151,7 +148,7 @@ fn random_calls_neither_panic_nor_write_outside_the_buffer() {
         unsafe { OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, W, H) },
         GL_TRUE
     );
-    let mut r = Rng(0x9E37_79B9_7F4A_7C15);
+    let mut r = Rng(softgl::rng::Rng::new(0x9E37_79B9));
     let mut read = vec![0u8; (W * H * 4) as usize + TAIL];
     let mut ints = [0i32; 16];
     let mut floats = [0f32; 16];

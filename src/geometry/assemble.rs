@@ -23,15 +23,16 @@ pub enum Primitive {
     },
 }
 
-/// How llvmpipe splits `GL_QUADS`: it depends on the path the draw takes
-/// through Mesa's draw module (measured, `docs/llvmpipe-facts.md` §12).
+/// How llvmpipe splits `GL_QUADS`: it depends on how the draw is made and on
+/// the path it takes through Mesa's draw module (`docs/llvmpipe-facts.md` §12).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum QuadSplit {
-    /// `(v0, v1, v2), (v0, v2, v3)`: draws with every vertex inside the view
-    /// volume and both polygon modes `Fill`.
+    /// `(v0, v1, v2), (v0, v2, v3)`: non-indexed draws with every vertex
+    /// inside the view volume, both polygon modes `Fill`, and smooth shading
+    /// or a colour that is not per vertex.
     Direct,
-    /// `(v0, v1, v3), (v1, v2, v3)`: draws that need clipping or draw a face
-    /// as lines or points.
+    /// `(v0, v1, v3), (v1, v2, v3)`: every other draw (indexed, flat-shaded
+    /// per-vertex colour, needing clipping, or a face drawn as lines or points).
     Pipeline,
 }
 

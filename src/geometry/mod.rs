@@ -26,6 +26,18 @@ pub struct InVertex {
     pub color: Vec4,
 }
 
+/// How a draw hands its vertices over, as far as llvmpipe's quad split
+/// depends on it (`docs/llvmpipe-facts.md` §12).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DrawSource {
+    /// `glBegin`/`glEnd` or `glDrawArrays`; `per_vertex_color` says whether
+    /// the colour varies per vertex (`glColor` between `begin` and `end`, or
+    /// a colour array) rather than being the current colour.
+    Arrays { per_vertex_color: bool },
+    /// `glDrawElements`.
+    Elements,
+}
+
 /// The viewport transform, in f32 as llvmpipe computes it.
 #[derive(Clone, Copy, Debug)]
 struct Viewport {
@@ -95,7 +107,7 @@ impl<'s> Geometry<'s> {
     pub fn draw(
         &self,
         mvp: &Mat4,
-        mode: PrimitiveMode,
+        (mode, source): (PrimitiveMode, DrawSource),
         count: usize,
         fetch: &dyn Fn(usize) -> InVertex,
         sink: &mut dyn SpanSink,
@@ -103,7 +115,7 @@ impl<'s> Geometry<'s> {
         if self.params.bounds.is_empty() {
             return;
         }
-        let quads = if mode == PrimitiveMode::Quads && self.quads_take_the_pipeline(mvp, count, fetch) {
+        let quads = if mode == PrimitiveMode::Quads && self.quads_split_v1_v3(mvp, source, count, fetch) {
             QuadSplit::Pipeline
         } else {
             QuadSplit::Direct
@@ -123,14 +135,26 @@ impl<'s> Geometry<'s> {
         });
     }
 
-    /// Whether llvmpipe would send this draw through its draw pipeline (and
-    /// split quads the other way): a face drawn as lines or points, or a vertex
-    /// outside the view volume.
-    fn quads_take_the_pipeline(&self, mvp: &Mat4, count: usize, fetch: &dyn Fn(usize) -> InVertex) -> bool {
+    /// Whether llvmpipe splits this draw's quads along v1-v3
+    /// (`docs/llvmpipe-facts.md` §12): indexed draws (its `draw_elements`),
+    /// flat shading of a per-vertex colour (its `draw_arrays` with constant
+    /// interpolation), and draws through its draw pipeline: a face drawn as
+    /// lines or points, or a vertex outside the view volume.
+    fn quads_split_v1_v3(
+        &self,
+        mvp: &Mat4,
+        source: DrawSource,
+        count: usize,
+        fetch: &dyn Fn(usize) -> InVertex,
+    ) -> bool {
+        let direct_v1_v3 = match source {
+            DrawSource::Elements => true,
+            DrawSource::Arrays { per_vertex_color } => per_vertex_color && self.state.shade_model == ShadeModel::Flat,
+        };
         let unfilled = [true, false]
             .iter()
             .any(|&front| self.state.polygon_mode(front) != PolygonMode::Fill);
-        unfilled || (0..count).any(|i| outcode((*mvp * fetch(i).pos).as_dvec4(), 1.0) != 0)
+        direct_v1_v3 || unfilled || (0..count).any(|i| outcode((*mvp * fetch(i).pos).as_dvec4(), 1.0) != 0)
     }
 
     fn flat_color(&self, v: &ClipVertex) -> Option<[f32; 4]> {

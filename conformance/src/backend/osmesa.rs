@@ -5,13 +5,15 @@
 use super::{median, Outcome, Timing};
 use crate::call::{clear_bits, Call};
 use crate::scenes::Recording;
-use softgl::GlEnum;
+use softgl::{ColorFormat, GlEnum};
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::time::Instant;
 
 type Ctx = *mut c_void;
 const GL_RGBA: u32 = 0x1908;
 const GL_UNSIGNED_BYTE: u32 = 0x1401;
+const OSMESA_RGB_565: u32 = 0x5;
+const GL_UNSIGNED_SHORT_5_6_5: u32 = 0x8363;
 const GL_FLOAT: u32 = 0x1406;
 const GL_VERTEX_ARRAY: u32 = 0x8074;
 const GL_COLOR_ARRAY: u32 = 0x8076;
@@ -138,26 +140,24 @@ impl OsMesa {
         }
     }
 
-    /// A current RGBA8 context with 24-bit depth and 8-bit stencil drawing into
-    /// its own `width` x `height` buffer.
-    pub fn context(&self, width: u32, height: u32) -> Result<Context<'_>, String> {
+    /// A current context with 24-bit depth and 8-bit stencil drawing into its
+    /// own `width` x `height` buffer of `color` (RGBA8 or RGB 5-6-5).
+    pub fn context(&self, width: u32, height: u32, color: ColorFormat) -> Result<Context<'_>, String> {
+        let (format, ty) = match color {
+            ColorFormat::Rgba8 => (GL_RGBA, GL_UNSIGNED_BYTE),
+            ColorFormat::Rgb565 => (OSMESA_RGB_565, GL_UNSIGNED_SHORT_5_6_5),
+            other => return Err(format!("no OSMesa buffer set up for {other:?}")),
+        };
         // SAFETY: plain OSMesa call; a NULL share list is allowed.
-        let ctx = unsafe { (self.create)(GL_RGBA, 24, 8, 0, std::ptr::null_mut()) };
+        let ctx = unsafe { (self.create)(format, 24, 8, 0, std::ptr::null_mut()) };
         if ctx.is_null() {
             return Err("OSMesaCreateContextExt failed".into());
         }
-        let mut buffer = vec![0u8; width as usize * height as usize * 4].into_boxed_slice();
-        // SAFETY: `buffer` holds width*height RGBA8 pixels and outlives the
+        let bpp = color.bytes_per_pixel();
+        let mut buffer = vec![0u8; width as usize * height as usize * bpp].into_boxed_slice();
+        // SAFETY: `buffer` holds width*height pixels of `color` and outlives the
         // context (both are dropped together by `Context`, the context first).
-        let ok = unsafe {
-            (self.make_current)(
-                ctx,
-                buffer.as_mut_ptr().cast(),
-                GL_UNSIGNED_BYTE,
-                width as i32,
-                height as i32,
-            )
-        };
+        let ok = unsafe { (self.make_current)(ctx, buffer.as_mut_ptr().cast(), ty, width as i32, height as i32) };
         if ok == 0 {
             // SAFETY: `ctx` came from OSMesaCreateContextExt and is not current.
             unsafe { (self.destroy)(ctx) };
@@ -172,6 +172,7 @@ impl OsMesa {
             mesa: self,
             ctx,
             buffer,
+            color,
             width,
             height,
             gl,
@@ -184,6 +185,7 @@ pub struct Context<'m> {
     mesa: &'m OsMesa,
     ctx: Ctx,
     buffer: Box<[u8]>,
+    color: ColorFormat,
     width: u32,
     height: u32,
     gl: Gl,
@@ -219,10 +221,19 @@ impl Context<'_> {
         unsafe { (self.gl.glFinish)() };
         // OSMesa renders y up: row 0 of the buffer is the bottom row.
         let (w, h) = (self.width, self.height);
-        let row = w as usize * 4;
-        let mut out = Vec::with_capacity(self.buffer.len());
+        let row = w as usize * self.color.bytes_per_pixel();
+        let mut out = Vec::with_capacity(w as usize * h as usize * 4);
         for y in (0..h as usize).rev() {
-            out.extend_from_slice(&self.buffer[y * row..(y + 1) * row]);
+            let line = &self.buffer[y * row..(y + 1) * row];
+            if self.color == ColorFormat::Rgb565 {
+                // To RGBA8 by bit replication, as softgl's `to_rgba_image` reads 5-6-5.
+                for p in line.chunks_exact(2).map(|p| u16::from_le_bytes([p[0], p[1]])) {
+                    let (r, g, b) = (p >> 11, (p >> 5) & 63, p & 31);
+                    out.extend([(r << 3) | (r >> 2), (g << 2) | (g >> 4), (b << 3) | (b >> 2), 255].map(|c| c as u8));
+                }
+            } else {
+                out.extend_from_slice(line);
+            }
         }
         image::RgbaImage::from_raw(w, h, out).expect("buffer is w*h*4 bytes")
     }
@@ -300,7 +311,7 @@ impl Context<'_> {
 
 /// Renders a recording in a fresh context: the first frame, then `runs` more.
 pub fn render(mesa: &OsMesa, rec: &Recording, runs: usize) -> (Outcome, String) {
-    let mut ctx = match mesa.context(rec.width, rec.height) {
+    let mut ctx = match mesa.context(rec.width, rec.height, rec.color) {
         Ok(c) => c,
         Err(e) => return (Outcome::Failed(e), String::new()),
     };

@@ -36,7 +36,11 @@ impl Backend for Softgl {
 
     fn render(&mut self, scene: &Scene, full: bool, runs: usize) -> Outcome {
         let rec = scene.record(full);
-        let mut gl = match Context::new(FramebufferDesc::rgba8_d24s8(rec.width, rec.height)) {
+        let desc = FramebufferDesc {
+            color: rec.color,
+            ..FramebufferDesc::rgba8_d24s8(rec.width, rec.height)
+        };
+        let mut gl = match Context::new(desc) {
             Ok(gl) => gl,
             Err(e) => return Outcome::Failed(format!("context: {e}")),
         };

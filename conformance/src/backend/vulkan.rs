@@ -1220,6 +1220,9 @@ pub fn render(rec: &Recording, runs: usize) -> (Outcome, String) {
     if let Err(why) = plan(rec) {
         return (Outcome::Unsupported(why), name);
     }
+    if rec.color != softgl::ColorFormat::Rgba8 {
+        return (Outcome::Unsupported(format!("{:?} colour buffers", rec.color)), name);
+    }
     let t = Instant::now();
     let image = match gpu.frame(rec) {
         Ok(i) => i,
@@ -1256,6 +1259,7 @@ mod tests {
         Recording {
             width: 8,
             height: 8,
+            color: softgl::ColorFormat::Rgba8,
             calls: r.calls,
         }
     }

@@ -3,7 +3,7 @@
 use super::stages::show_stencil;
 use super::{gradient_background, random_triangles, Group, Rng, Scene, Size, Tolerance};
 use crate::call::{Call, Rec};
-use softgl::{BlendFactor, Capability, ClearMask, CompareFunc, LogicOp, PrimitiveMode, StencilOp};
+use softgl::{BlendFactor, Capability, ClearMask, ColorFormat, CompareFunc, LogicOp, PrimitiveMode, StencilOp};
 
 const G: Group = Group::Combination;
 const E: Tolerance = Tolerance::EXACT;
@@ -17,6 +17,7 @@ pub fn scenes() -> Vec<Scene> {
         Scene::new("scissored_clears", G, E, scissored_clears),
         Scene::new("stencil_depth_fail", G, E, stencil_depth_fail),
         Scene::new("all_stages", G, E, all_stages),
+        Scene::new("rgb565", G, E, rgb565).in_format(ColorFormat::Rgb565),
     ]
 }
 
@@ -138,4 +139,37 @@ fn all_stages(r: &mut Rec, s: Size) {
         .call(Call::BlendFunc(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha))
         .call(Call::ColorMask([true, true, false, true]));
     random_triangles(r, &mut rng, s.count(600), s, 20.0, (0.0, 1.0));
+}
+
+/// Into an RGB 5-6-5 buffer (`OSMESA_RGB_565`), GL_DITHER on (GL's default):
+/// a whole-buffer clear between 5- and 6-bit steps, a smooth gradient, blended
+/// triangles, XOR, a colour-masked and a scissored clear. llvmpipe ignores
+/// GL_DITHER, truncates unorm8 to the high bits and rounds whole-buffer clears
+/// half up (docs/llvmpipe-facts.md §13).
+fn rgb565(r: &mut Rec, s: Size) {
+    let mut rng = Rng::new(25);
+    r.clear_color(0.1, 0.2, 0.3, 0.4).clear(ClearMask::COLOR);
+    r.begin(PrimitiveMode::Triangles);
+    r.color(1.0, 0.0, 0.5, 1.0).vertex(0.0, 0.0, 0.0);
+    r.color(0.0, 1.0, 0.25, 1.0).vertex(s.wf(), 0.0, 0.0);
+    r.color(0.3, 0.6, 1.0, 1.0).vertex(0.0, s.hf() * 0.8, 0.0);
+    r.end();
+    r.enable(Capability::Blend)
+        .call(Call::BlendFunc(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha));
+    random_triangles(r, &mut rng, s.count(150), s, 25.0, (0.1, 0.9));
+    r.disable(Capability::Blend)
+        .enable(Capability::ColorLogicOp)
+        .call(Call::LogicOp(LogicOp::Xor))
+        .color(0.7, 0.35, 0.9, 1.0)
+        .rect(s.wf() * 0.2, s.hf() * 0.3, s.wf() * 0.7, s.hf() * 0.6, 0.0);
+    r.disable(Capability::ColorLogicOp)
+        .call(Call::ColorMask([true, false, true, true]))
+        .clear_color(0.55, 0.9, 0.45, 1.0)
+        .clear(ClearMask::COLOR)
+        .call(Call::ColorMask([true; 4]))
+        .enable(Capability::ScissorTest)
+        .scissor(s.w as i32 / 2, s.h as i32 / 4, s.w as i32 / 3, s.h as i32 / 2)
+        .clear_color(0.61, 0.33, 0.77, 1.0)
+        .clear(ClearMask::COLOR)
+        .disable(Capability::ScissorTest);
 }

@@ -8,7 +8,7 @@ mod stiff;
 mod timing;
 
 use crate::call::Rec;
-use softgl::{ClearMask, MatrixMode};
+use softgl::{ClearMask, ColorFormat, MatrixMode};
 
 /// How far softgl may land from llvmpipe on a scene.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -76,7 +76,7 @@ impl Size {
     pub fn hf(self) -> f32 {
         self.h as f32
     }
-    /// `n` in the report, scaled down for the tests (never below `n / 16`, 1).
+    /// `n` in the report; `n / 8` (at least 1) in the tests.
     pub fn count(self, n: usize) -> usize {
         if self.full {
             n
@@ -94,6 +94,8 @@ pub struct Scene {
     /// Size in the report; the tests use `test_size`.
     pub full_size: (u32, u32),
     pub test_size: (u32, u32),
+    /// The colour buffer's format (RGBA8 unless the scene says otherwise).
+    pub color: ColorFormat,
     build: fn(&mut Rec, Size),
 }
 
@@ -102,6 +104,7 @@ pub struct Scene {
 pub struct Recording {
     pub width: u32,
     pub height: u32,
+    pub color: ColorFormat,
     pub calls: Vec<crate::call::Call>,
 }
 
@@ -113,8 +116,15 @@ impl Scene {
             tolerance,
             full_size: (256, 256),
             test_size: (96, 96),
+            color: ColorFormat::Rgba8,
             build,
         }
+    }
+
+    /// The same scene rendered into a `color` buffer.
+    const fn in_format(mut self, color: ColorFormat) -> Scene {
+        self.color = color;
+        self
     }
 
     const fn sized(mut self, full: (u32, u32), test: (u32, u32)) -> Scene {
@@ -142,6 +152,7 @@ impl Scene {
         Recording {
             width: w,
             height: h,
+            color: self.color,
             calls: r.calls,
         }
     }
@@ -211,23 +222,8 @@ pub fn by_name(name: &str) -> Option<Scene> {
     all().into_iter().find(|s| s.name == name)
 }
 
-/// A xorshift32 generator: the same numbers on every back end and run.
-pub struct Rng(u32);
-
-impl Rng {
-    pub fn new(seed: u32) -> Rng {
-        Rng(seed.max(1))
-    }
-    pub fn unit(&mut self) -> f32 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 17;
-        self.0 ^= self.0 << 5;
-        (self.0 >> 8) as f32 / (1u32 << 24) as f32
-    }
-    pub fn range(&mut self, a: f32, b: f32) -> f32 {
-        a + (b - a) * self.unit()
-    }
-}
+/// softgl's xorshift32: the same numbers on every back end and run.
+pub use softgl::rng::Rng;
 
 /// A `cols` x `rows` grid of panels over the window, each `[x0, y0, x1, y1]`.
 pub fn panels(n: usize, s: Size) -> Vec<[f32; 4]> {

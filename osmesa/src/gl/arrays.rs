@@ -7,7 +7,7 @@ use super::enums::decode;
 use super::{now, run_or_record};
 use crate::consts::*;
 use crate::gl_state::{ClientArray, Cmd, GlState};
-use softgl::{AttribArray, Context, GlError, GlResult, PrimitiveMode, VertexArrays};
+use softgl::{AttribArray, Context, GlError, GlResult, Indices, PrimitiveMode, VertexArrays};
 use std::ffi::c_void;
 
 fn type_size(ty: GLenum) -> Option<usize> {
@@ -122,8 +122,14 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
     }))
 }
 
-/// Draws (or records, in a display list) the vertices `indices` names.
-fn draw(os: &mut GlState, gl: &mut Context, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult {
+/// Draws (or records, in a display list) the vertices `indices` names; `indexed`
+/// for glDrawElements, whose quads llvmpipe splits differently (docs/llvmpipe-facts.md §12).
+fn draw(
+    os: &mut GlState,
+    gl: &mut Context,
+    (mode, indexed): (GLenum, bool),
+    indices: &mut dyn Iterator<Item = usize>,
+) -> GlResult {
     let Some(f) = gather(os, mode, indices)? else {
         return Ok(());
     };
@@ -133,7 +139,12 @@ fn draw(os: &mut GlState, gl: &mut Context, mode: GLenum, indices: &mut dyn Iter
             color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
         };
         // The context records its own errors (inside begin/end, …).
-        let _ = gl.draw_arrays(f.mode, 0, f.count, &arrays);
+        let _ = if indexed {
+            let order: Vec<u32> = (0..f.count as u32).collect();
+            gl.draw_elements(f.mode, Indices::U32(&order), &arrays)
+        } else {
+            gl.draw_arrays(f.mode, 0, f.count, &arrays)
+        };
     });
     run_or_record(os, gl, cmd);
     Ok(())
@@ -222,7 +233,7 @@ exports! {
                 decode::<PrimitiveMode>(mode)?;
                 return Err(GlError::InvalidValue);
             }
-            draw(os, gl, mode, &mut (first as usize..first as usize + count as usize))
+            draw(os, gl, (mode, false), &mut (first as usize..first as usize + count as usize))
         })
     }
     /// # Safety
@@ -254,7 +265,7 @@ exports! {
                     }
                 }
             });
-            draw(os, gl, mode, &mut it)
+            draw(os, gl, (mode, true), &mut it)
         })
     }
     /// GL 1.2's `glDrawElements` with an index range hint: indices outside
