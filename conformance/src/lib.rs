@@ -6,12 +6,14 @@
 //! - [`scenes`]: the scenes, each with its tolerance and the reason;
 //! - [`backend`]: softgl in process, the references in child processes;
 //! - [`metrics`]: distances between images;
+//! - [`missing`]: what a check does when a reference is not installed;
 //! - [`run`]: one scene on every back end, compared;
 //! - [`report`]: `report.md`, `error_vs_time.png` and diff images.
 
 pub mod backend;
 pub mod call;
 pub mod metrics;
+pub mod missing;
 pub mod report;
 pub mod run;
 pub mod scenes;

@@ -26,7 +26,7 @@ pub struct Options {
 /// A back end's availability, as the report states it.
 pub struct Availability {
     pub backend: String,
-    pub status: Result<String, String>,
+    pub status: Result<String, crate::backend::Unavailable>,
 }
 
 /// Checks which back ends are there, saying loudly which are not.
