@@ -94,7 +94,7 @@ fn write_diffs(results: &[SceneResult], dir: &Path) -> Result<Vec<String>, Strin
     for s in results {
         let Some(reference) = s.reference() else { continue };
         for r in &s.results {
-            if r.backend == REFERENCE || s.within(&r.backend) != Some(false) {
+            if s.is_reference(&r.backend) || s.within(&r.backend) != Some(false) {
                 continue;
             }
             if let Outcome::Rendered { image, .. } = &r.outcome {
@@ -130,7 +130,7 @@ fn fmt_psnr(p: f64) -> String {
 
 fn csv(results: &[SceneResult]) -> String {
     let mut o = String::from(
-        "scene,group,width,height,backend,status,max_diff,pixels_over,share_over,mae,psnr,coverage,first_ms,steady_ms,runs,within,jit_compiles_first,jit_compile_ms_first\n",
+        "scene,group,width,height,reference,backend,status,max_diff,pixels_over,pixels_near,near_budget,share_over,mae,psnr,coverage,first_ms,steady_ms,runs,within,jit_compiles_first,jit_compile_ms_first\n",
     );
     for s in results {
         for r in &s.results {
@@ -139,11 +139,13 @@ fn csv(results: &[SceneResult]) -> String {
                 Outcome::Unsupported(_) => ("unsupported", 0.0, 0.0, 0),
                 Outcome::Failed(_) => ("failed", 0.0, 0.0, 0),
             };
-            let m = r.metrics.map_or(",,,,,".to_string(), |m| {
+            let m = r.metrics.map_or(",,,,,,,".to_string(), |m| {
                 format!(
-                    "{},{},{:.6},{:.6},{},{}",
+                    "{},{},{},{},{:.6},{:.6},{},{}",
                     m.max_diff,
                     m.over,
+                    m.near,
+                    s.tolerance.near(s.full),
                     m.share_over,
                     m.mae,
                     fmt_psnr(m.psnr),
@@ -157,8 +159,8 @@ fn csv(results: &[SceneResult]) -> String {
             };
             let _ = writeln!(
                 o,
-                "{},{:?},{},{},{},{status},{m},{first:.3},{steady:.3},{runs},{within},{jit}",
-                s.scene, s.group, s.size.0, s.size.1, r.backend
+                "{},{:?},{},{},{},{},{status},{m},{first:.3},{steady:.3},{runs},{within},{jit}",
+                s.scene, s.group, s.size.0, s.size.1, s.reference, r.backend
             );
         }
     }
@@ -256,7 +258,7 @@ fn cell(s: &SceneResult, backend: &str) -> String {
         (Outcome::Unsupported(_), _) => "n/a".into(),
         (Outcome::Failed(_), _) => "**FAILED**".into(),
         (Outcome::Rendered { timing, .. }, Some(m)) => {
-            let mark = if backend == REFERENCE {
+            let mark = if s.is_reference(backend) {
                 ""
             } else if m.identical() {
                 "= "
@@ -265,7 +267,7 @@ fn cell(s: &SceneResult, backend: &str) -> String {
             } else {
                 "**X** "
             };
-            if backend == REFERENCE {
+            if s.is_reference(backend) {
                 format!("{:.2} ms", ms(timing.steady))
             } else {
                 format!("{mark}{:.3} / {} / {:.2} ms", m.mae, m.coverage, ms(timing.steady))
@@ -416,7 +418,7 @@ fn markdown(
                 let verdict = match &r.outcome {
                     Outcome::Unsupported(why) => format!("n/a: {why}"),
                     Outcome::Failed(why) => format!("**FAILED**: {why}"),
-                    Outcome::Rendered { .. } if r.backend == REFERENCE => "reference".into(),
+                    Outcome::Rendered { .. } if s.is_reference(&r.backend) => "reference".into(),
                     Outcome::Rendered { .. } => {
                         let mut v = match s.within(&r.backend) {
                             Some(true) => "within".to_string(),

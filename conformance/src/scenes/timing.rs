@@ -1,7 +1,7 @@
 //! Large seeded scenes, to time: 20k triangles at 1024x1024 in the report
 //! (2.5k at 256x256 in the tests).
 
-use super::{random_triangles, Group, Rng, Scene, Size, Tolerance};
+use super::{random_triangles, Group, Near, Rng, Scene, Size, Tolerance};
 use crate::call::{Call, Rec};
 use softgl::{BlendFactor, Capability, CompareFunc, StencilOp};
 
@@ -11,6 +11,7 @@ const E: Tolerance = Tolerance::EXACT;
 /// OPEN: at 1024x1024 with 20k triangles, 2 pixels of coverage and 5 colours differ (the only coverage difference in any triangle scene); 1 LSB elsewhere (docs/llvmpipe-facts.md 11).
 const RANDOM_20K: Tolerance = Tolerance {
     channel: 1,
+    near: Near { test: 0, report: 0 },
     share_over: 1e-05,
     coverage: 2,
     reason: "OPEN: at 1024x1024 with 20k triangles, 2 pixels of coverage and 5 colours differ (the only coverage difference in any triangle scene); 1 LSB elsewhere (docs/llvmpipe-facts.md 11).",

@@ -67,7 +67,8 @@ pub fn render(rec: &Recording, runs: usize) -> (Outcome, String) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::call::Rec;
+    use crate::call::{Call, Rec};
+    use softgl::PrimitiveMode;
 
     fn recording(build: impl Fn(&mut Rec)) -> Recording {
         let mut r = Rec::default();
