@@ -16,7 +16,7 @@ use std::time::{Duration, Instant};
 const CHILD_TIMEOUT: Duration = Duration::from_secs(300);
 
 /// A Mesa renderer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, clap::ValueEnum)]
 pub enum Reference {
     /// OSMesa with `GALLIUM_DRIVER=llvmpipe`: the reference for every metric.
     Llvmpipe,
@@ -194,14 +194,10 @@ impl Backend for External {
 
     fn render(&mut self, scene: &Scene, full: bool, runs: usize) -> Outcome {
         let runs_s = runs.to_string();
-        let args = [
-            "--scene",
-            scene.name,
-            "--full",
-            if full { "1" } else { "0" },
-            "--runs",
-            &runs_s,
-        ];
+        let mut args = vec!["--scene", scene.name, "--runs", &runs_s];
+        if full {
+            args.push("--full");
+        }
         if self.warm_cache.is_some() {
             // Fills the cache; the run below is the warm one.
             let _ = self.run(&args);
@@ -337,22 +333,34 @@ fn zero_timing() -> Timing {
     }
 }
 
-/// The child's side: `child --backend NAME --out FILE (--probe | --scene NAME
-/// --full 0|1 --runs N)`. Writes its result to FILE.
-pub fn child_main(args: &[String]) -> Result<(), String> {
-    let arg = |name: &str| {
-        args.iter()
-            .position(|a| a == name)
-            .and_then(|i| args.get(i + 1))
-            .cloned()
-    };
-    let reference = arg("--backend")
-        .as_deref()
-        .and_then(Reference::parse)
-        .ok_or("child: --backend llvmpipe|softpipe|lavapipe")?;
-    let out = arg("--out").ok_or("child: --out FILE")?;
-    let probe = args.iter().any(|a| a == "--probe");
-    let result = if probe {
+/// The child's command line (`softgl-conformance child ...`, run by
+/// [`External`]).
+#[derive(clap::Args, Debug)]
+pub struct ChildArgs {
+    /// The reference to run.
+    #[arg(long)]
+    backend: Reference,
+    /// Where the result goes.
+    #[arg(long)]
+    out: PathBuf,
+    /// Only start the driver and say what it is (or that it is missing).
+    #[arg(long, conflicts_with = "scene")]
+    probe: bool,
+    /// The scene to render.
+    #[arg(long, required_unless_present = "probe")]
+    scene: Option<String>,
+    /// At the report's size (else the tests').
+    #[arg(long)]
+    full: bool,
+    /// Steady-state frames after the first.
+    #[arg(long, default_value_t = 0)]
+    runs: usize,
+}
+
+/// The child's side: renders and writes its result to `--out`.
+pub fn child_main(args: &ChildArgs) -> Result<(), String> {
+    let (reference, out) = (args.backend, &args.out);
+    let result = if args.probe {
         match installed(reference) {
             Err(Unavailable::Missing(m)) => ChildResult {
                 status: Status::Missing,
@@ -366,16 +374,14 @@ pub fn child_main(args: &[String]) -> Result<(), String> {
             }
         }
     } else {
-        let name = arg("--scene").ok_or("child: --scene NAME")?;
-        let scene = scenes::by_name(&name).ok_or_else(|| format!("no scene {name}"))?;
-        let full = arg("--full").as_deref() == Some("1");
-        let runs = arg("--runs").and_then(|r| r.parse().ok()).unwrap_or(0);
-        let (outcome, renderer) = run_reference(reference, &scene, full, runs);
+        let name = args.scene.as_deref().unwrap_or_default();
+        let scene = scenes::by_name(name).ok_or_else(|| format!("no scene {name}"))?;
+        let (outcome, renderer) = run_reference(reference, &scene, args.full, args.runs);
         ChildResult::from_outcome(outcome, renderer)
     };
     let bytes = result.encode();
-    let mut f = std::fs::File::create(&out).map_err(|e| format!("{out}: {e}"))?;
-    f.write_all(&bytes).map_err(|e| format!("{out}: {e}"))
+    let mut f = std::fs::File::create(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    f.write_all(&bytes).map_err(|e| format!("{}: {e}", out.display()))
 }
 
 /// Whether the driver is installed (`libOSMesa.so.8` loads; Vulkan has a

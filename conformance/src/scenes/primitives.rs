@@ -53,14 +53,14 @@ pub fn scenes() -> Vec<Scene> {
         Scene::new("quads", G, QUAD_DIAGONAL, quads),
         Scene::new("quad_single", G, E, quad_single),
         Scene::new("quad_strip", G, E, quad_strip),
-        Scene::new("polygon", G, Tolerance::one_lsb(0, 0), polygon),
+        Scene::new("polygon", G, Tolerance::one_lsb(1, 3), polygon),
         Scene::new("modes_flat", G, BOWTIE, modes_flat),
-        Scene::new("modes_smooth", G, Tolerance::one_lsb(0, 0), modes_smooth),
+        Scene::new("modes_smooth", G, Tolerance::one_lsb(0, 1), modes_smooth),
         Scene::new("culling", G, E, culling),
         Scene::new("polygon_mode", G, POLYGON_EDGES, polygon_mode),
         Scene::new("polygon_offset", G, E, polygon_offset),
         Scene::new("vertex_arrays", G, E, vertex_arrays),
-        Scene::new("perspective_clipped", G, Tolerance::one_lsb(0, 0), perspective),
+        Scene::new("perspective_clipped", G, Tolerance::one_lsb(0, 1), perspective),
     ]
 }
 
