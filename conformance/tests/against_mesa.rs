@@ -14,7 +14,7 @@
 
 use softgl_conformance::backend::child::{External, Reference};
 use softgl_conformance::backend::{self, Backend, Outcome, Unavailable};
-use softgl_conformance::missing::Missing;
+use softgl_conformance::missing::{self, Missing};
 use softgl_conformance::run::{run_scene, REFERENCE};
 use softgl_conformance::scenes::{self, Group};
 use std::path::Path;
@@ -227,25 +227,30 @@ fn summary(found: &Found, run: usize, failures: &[&str]) -> String {
         );
     }
     o += &format!(
-        "test result: {}. {} passed; {} failed; {} references skipped",
+        "test result: {}. {} passed; {} failed; {} references {}",
         if failures.is_empty() { "ok" } else { "FAILED" },
         run - failures.len(),
         failures.len(),
-        found.missing.len()
+        found.missing.len(),
+        if missing::required() {
+            "missing (a failure under SOFTGL_REQUIRE_REFERENCES=1)"
+        } else {
+            "skipped"
+        }
     );
     if found.missing.is_empty() {
         o += " (llvmpipe, softpipe and lavapipe all compared)";
     } else {
         let scenes = scenes::all();
         let oracle = scenes.iter().filter(|s| s.oracle.is_some()).count();
-        o += "\nSKIPPED, not installed:";
+        o += "\nNot installed:";
         for (r, m) in &found.missing {
             o += &format!("\n    {}", m.line(&format!("{} comparison", r.name())));
         }
         if found.missing.iter().any(|(r, _)| *r == Reference::Llvmpipe) {
             o += &format!(
-                "\n    without llvmpipe, softgl was judged on the {oracle} scenes with an exact oracle and on \
-                 interpreter = JIT; {} scenes were not compared with llvmpipe",
+                "\n    without llvmpipe, softgl was judged on interpreter = JIT and on the scenes with an exact \
+                 oracle ({oracle}); {} scenes were not compared with llvmpipe",
                 scenes.len() - oracle
             );
         }

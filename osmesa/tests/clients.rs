@@ -69,7 +69,7 @@ impl Need {
             .ok_or_else(|| Missing::new("GLU (GL/glu.h, libGLU.so.1)", "apt-get install -y libglu1-mesa-dev")),
             Need::Nm if ok("nm", &["--version"]) => Ok(()),
             Need::Nm => Err(Missing::new("nm", "apt-get install -y binutils")),
-            Need::PyOpenGl if ok("python3", &["-c", "import OpenGL"]) => Ok(()),
+            Need::PyOpenGl if ok("python3", &["-c", "import OpenGL.version"]) => Ok(()),
             Need::PyOpenGl if ok("python3", &["--version"]) => Err(Missing::new(
                 "PyOpenGL for python3",
                 "python3 -m pip install PyOpenGL (Debian's python3: apt-get install -y python3-opengl)",
