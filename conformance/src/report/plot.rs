@@ -201,11 +201,16 @@ where
     Ok(())
 }
 
-fn titled<'a, 'p>(
+/// A white chart with log axes (error up, time across), its mesh and the
+/// labelled floor of identical images.
+fn log_chart<'a, 'p>(
     root: &'a DrawingArea<BitMapBackend<'p>, Shift>,
     title: &str,
+    x_desc: &str,
+    (x, y): (std::ops::Range<f64>, std::ops::Range<f64>),
     labels: bool,
-) -> ChartBuilder<'a, 'a, BitMapBackend<'p>> {
+) -> Result<LogChart<'a, BitMapBackend<'p>>, String> {
+    root.fill(&WHITE).map_err(|e| err(&e))?;
     let mut b = ChartBuilder::on(root);
     b.margin(20);
     if labels {
@@ -213,7 +218,12 @@ fn titled<'a, 'p>(
             .x_label_area_size(45)
             .y_label_area_size(80);
     }
-    b
+    let mut chart = b
+        .build_cartesian_2d(x.clone().log_scale(), y.log_scale())
+        .map_err(|e| err(&e))?;
+    mesh(&mut chart, labels, x_desc, "mean abs. error per channel (log)")?;
+    draw_floor(&mut chart, x, labels)?;
+    Ok(chart)
 }
 
 /// `error_vs_time.png`: one point per scene and back end, error against the
@@ -228,21 +238,13 @@ pub fn error_vs_time(results: &[SceneResult], names: &[String], path: &Path) -> 
     let x = range(all.iter().map(|p| p.1), 1e-3);
     let y = FLOOR / 3.0..range(all.iter().map(|p| p.2), FLOOR).end;
     let root = BitMapBackend::new(path, (1100, 750)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let mut chart = titled(
+    let mut chart = log_chart(
         &root,
         "error against the reference vs steady frame time, per scene",
-        labels,
-    )
-    .build_cartesian_2d(x.clone().log_scale(), y.log_scale())
-    .map_err(|e| err(&e))?;
-    mesh(
-        &mut chart,
-        labels,
         "steady frame time, ms (log)",
-        "mean abs. error per channel (log)",
+        (x, y),
+        labels,
     )?;
-    draw_floor(&mut chart, x, labels)?;
     for (i, name) in names.iter().enumerate() {
         let (color, shape) = style(i);
         let filled = !name.ends_with("-warm");
@@ -303,21 +305,13 @@ pub fn backends(results: &[SceneResult], names: &[String], path: &Path) -> Resul
     let x = x.start..x.end * 6.0;
     let y = FLOOR / 3.0..range(pts.iter().map(|p| p.worst.max(FLOOR)), FLOOR).end;
     let root = BitMapBackend::new(path, (1100, 650)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let mut chart = titled(
+    let mut chart = log_chart(
         &root,
         "per back end: total steady time vs median (filled) and worst (outline) error",
-        labels,
-    )
-    .build_cartesian_2d(x.clone().log_scale(), y.log_scale())
-    .map_err(|e| err(&e))?;
-    mesh(
-        &mut chart,
-        labels,
         "sum of steady frame times over the scenes rendered, ms (log)",
-        "mean abs. error per channel (log)",
+        (x, y),
+        labels,
     )?;
-    draw_floor(&mut chart, x, labels)?;
     for p in &pts {
         let i = names.iter().position(|n| *n == p.name).unwrap_or(0);
         let (color, shape) = style(i);

@@ -124,6 +124,25 @@ impl Gpu {
             .ok_or_else(|| format!("no memory type {flags:?}"))
     }
 
+    /// Device memory for `req` with `flags`; the caller binds it, and `Drop` frees it.
+    fn allocate(
+        &self,
+        req: vk::MemoryRequirements,
+        flags: vk::MemoryPropertyFlags,
+    ) -> Result<vk::DeviceMemory, String> {
+        let mem_type = self.memory_type(req.memory_type_bits, flags)?;
+        // SAFETY: a valid allocation info on a live device.
+        unsafe {
+            self.device.allocate_memory(
+                &vk::MemoryAllocateInfo::default()
+                    .allocation_size(req.size)
+                    .memory_type_index(mem_type),
+                None,
+            )
+        }
+        .map_err(vk_err("vkAllocateMemory"))
+    }
+
     /// # Safety
     /// Called once, from `new`, with the device alive.
     unsafe fn targets(&mut self, depth_format: vk::Format) -> Result<(), String> {
@@ -163,17 +182,9 @@ impl Gpu {
             .map_err(vk_err("vkCreateImage"))?;
             // SAFETY: `image` was just created on this device.
             let req = unsafe { d.get_image_memory_requirements(image) };
-            let mem_type = self.memory_type(req.memory_type_bits, vk::MemoryPropertyFlags::DEVICE_LOCAL)?;
-            // SAFETY: valid allocation info; memory is bound once, to this image.
+            let memory = self.allocate(req, vk::MemoryPropertyFlags::DEVICE_LOCAL)?;
+            // SAFETY: memory is bound once, to this image.
             let (memory, view) = unsafe {
-                let memory = d
-                    .allocate_memory(
-                        &vk::MemoryAllocateInfo::default()
-                            .allocation_size(req.size)
-                            .memory_type_index(mem_type),
-                        None,
-                    )
-                    .map_err(vk_err("vkAllocateMemory"))?;
                 d.bind_image_memory(image, memory, 0)
                     .map_err(vk_err("vkBindImageMemory"))?;
                 let view = d
@@ -268,18 +279,10 @@ impl Gpu {
                 .create_buffer(&vk::BufferCreateInfo::default().size(size.max(4)).usage(usage), None)
                 .map_err(vk_err("vkCreateBuffer"))?;
             let req = d.get_buffer_memory_requirements(buffer);
-            let mem_type = self.memory_type(
-                req.memory_type_bits,
+            let memory = self.allocate(
+                req,
                 vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT,
             )?;
-            let memory = d
-                .allocate_memory(
-                    &vk::MemoryAllocateInfo::default()
-                        .allocation_size(req.size)
-                        .memory_type_index(mem_type),
-                    None,
-                )
-                .map_err(vk_err("vkAllocateMemory"))?;
             d.bind_buffer_memory(buffer, memory, 0)
                 .map_err(vk_err("vkBindBufferMemory"))?;
             Ok((buffer, memory))
