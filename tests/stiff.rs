@@ -154,8 +154,8 @@ fn w_near_zero_is_a_point_at_infinity() {
 
 #[test]
 fn all_w_near_zero_leaves_the_good_quad_exact() {
-    // Three vertices with w ≈ 0 are three points at infinity. Where the
-    // triangle through them lands is checked exactly in
+    // Three vertices with w ≈ 0 are three points at infinity. Where a
+    // triangle through such far points lands is checked exactly in
     // `huge_primitives_crossing_the_window_keep_their_shape`; here: no panic,
     // only red or the clear color outside the quad, and the quad exact.
     for w in [1e-30, -1e-30, 0.0] {

@@ -1,26 +1,72 @@
 //! `softgl-conformance report -o DIR`: every scene on every back end, the
-//! report, the plot and the diff images. (`child` is the harness re-run as a
-//! Mesa reference; see `backend::child`.)
+//! report, the plots and the diff images. `list` prints the scenes. (`child`,
+//! hidden, is the harness re-run as a Mesa reference; see `backend::child`.)
 
+use clap::{Parser, Subcommand};
 use softgl_conformance::{backend, report, scenes};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: softgl-conformance report -o DIR [--runs N] [--small] [--no-warm] [--scenes a,b,...]
-       softgl-conformance list";
+/// softgl against Mesa: llvmpipe, softpipe and lavapipe, error against time.
+#[derive(Parser, Debug)]
+#[command(name = "softgl-conformance")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Every scene on every back end: report.md, error_vs_time.png,
+    /// backends.png, results.csv and diff images.
+    Report {
+        /// The directory to write into.
+        #[arg(short, long)]
+        out: PathBuf,
+        /// Steady-state frames per scene and back end (the median is reported).
+        #[arg(long, default_value_t = 5)]
+        runs: usize,
+        /// The tests' small sizes instead of the report's.
+        #[arg(long)]
+        small: bool,
+        /// Skip llvmpipe with a warm shader cache (llvmpipe-warm).
+        #[arg(long)]
+        no_warm: bool,
+        /// Only these scenes (comma-separated names; `list` shows them).
+        #[arg(long, value_delimiter = ',')]
+        scenes: Option<Vec<String>>,
+    },
+    /// The scenes: name, group, and the reason for the tolerance.
+    List,
+    #[command(hide = true)]
+    Child(backend::child::ChildArgs),
+}
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let result = match args.first().map(String::as_str) {
-        Some("child") => backend::child::child_main(&args[1..]),
-        Some("list") => {
+    let result = match Cli::parse().command {
+        Command::Child(args) => backend::child::child_main(&args),
+        Command::List => {
             for s in scenes::all() {
                 println!("{:<32} {:<18} {}", s.name, s.group.name(), s.tolerance.reason);
             }
             Ok(())
         }
-        Some("report") => report_main(&args[1..]),
-        _ => Err(USAGE.to_string()),
+        Command::Report {
+            out,
+            runs,
+            small,
+            no_warm,
+            scenes,
+        } => std::env::current_exe().map_err(|e| e.to_string()).and_then(|exe| {
+            let opts = report::Options {
+                out,
+                runs,
+                full: !small,
+                only: scenes,
+                warm: !no_warm,
+            };
+            report::run(&opts, &exe)
+        }),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -31,28 +77,31 @@ fn main() -> ExitCode {
     }
 }
 
-fn report_main(args: &[String]) -> Result<(), String> {
-    let mut opts = report::Options {
-        out: PathBuf::new(),
-        runs: 5,
-        full: true,
-        only: None,
-        warm: true,
-    };
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "-o" | "--out" => opts.out = it.next().ok_or(USAGE)?.into(),
-            "--runs" => opts.runs = it.next().and_then(|r| r.parse().ok()).ok_or("--runs takes a number")?,
-            "--small" => opts.full = false,
-            "--no-warm" => opts.warm = false,
-            "--scenes" => opts.only = Some(it.next().ok_or(USAGE)?.split(',').map(String::from).collect()),
-            _ => return Err(format!("unknown argument {a}\n{USAGE}")),
-        }
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn the_command_line_parses() {
+        Cli::command().debug_assert();
+        let cli = Cli::try_parse_from(["softgl-conformance", "report", "-o", "r", "--small", "--scenes", "a,b"])
+            .expect("parses");
+        let Command::Report {
+            out,
+            small,
+            scenes,
+            runs,
+            ..
+        } = cli.command
+        else {
+            panic!("report");
+        };
+        assert_eq!((out, small, runs), (PathBuf::from("r"), true, 5));
+        assert_eq!(scenes, Some(vec!["a".to_string(), "b".to_string()]));
+        assert!(
+            Cli::try_parse_from(["softgl-conformance", "report"]).is_err(),
+            "-o is required"
+        );
     }
-    if opts.out.as_os_str().is_empty() {
-        return Err(USAGE.into());
-    }
-    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
-    report::run(&opts, &exe)
 }

@@ -9,6 +9,9 @@ pub struct Metrics {
     pub max_diff: u8,
     /// Pixels with a channel differing by more than the scene's tolerance.
     pub over: usize,
+    /// Pixels that differ, but by no more than the scene's tolerance
+    /// (1..=channel; always 0 for a tolerance of 0).
+    pub near: usize,
     /// `over` as a share of all pixels.
     pub share_over: f64,
     /// Mean absolute difference per channel.
@@ -31,7 +34,7 @@ pub fn compare(reference: &RgbaImage, test: &RgbaImage, background: [u8; 4], cha
     if reference.dimensions() != test.dimensions() {
         return None;
     }
-    let (mut max_diff, mut over, mut coverage) = (0u8, 0usize, 0usize);
+    let (mut max_diff, mut over, mut near, mut coverage) = (0u8, 0usize, 0usize, 0usize);
     let (mut abs, mut sq) = (0u64, 0u64);
     for (a, b) in reference.pixels().zip(test.pixels()) {
         let mut m = 0u8;
@@ -43,6 +46,7 @@ pub fn compare(reference: &RgbaImage, test: &RgbaImage, background: [u8; 4], cha
         }
         max_diff = max_diff.max(m);
         over += (m > channel) as usize;
+        near += (m > 0 && m <= channel) as usize;
         coverage += ((a.0 != background) != (b.0 != background)) as usize;
     }
     let pixels = (reference.width() * reference.height()) as usize;
@@ -51,6 +55,7 @@ pub fn compare(reference: &RgbaImage, test: &RgbaImage, background: [u8; 4], cha
     Some(Metrics {
         max_diff,
         over,
+        near,
         share_over: over as f64 / pixels.max(1) as f64,
         mae: abs as f64 / values,
         psnr: if sq == 0 {
@@ -103,17 +108,20 @@ mod tests {
 
     #[test]
     fn metrics_of_a_known_difference() {
-        let a = RgbaImage::from_pixel(4, 4, Rgba([0, 0, 0, 0]));
+        let mut a = RgbaImage::from_pixel(4, 4, Rgba([0, 0, 0, 0]));
+        a.put_pixel(3, 3, Rgba([0, 0, 0, 255]));
         let mut b = a.clone();
         b.put_pixel(1, 1, Rgba([10, 0, 0, 255]));
         b.put_pixel(2, 2, Rgba([0, 0, 0, 0]));
+        b.put_pixel(3, 3, Rgba([0, 5, 0, 255]));
         let m = compare(&a, &b, [0; 4], 5).expect("same size");
         assert_eq!(m.max_diff, 255);
         assert_eq!(m.over, 1);
+        assert_eq!(m.near, 1, "(3, 3) differs by 5, within the tolerance");
         assert_eq!(m.coverage, 1);
         assert_eq!(m.share_over, 1.0 / 16.0);
-        assert!((m.mae - 265.0 / 64.0).abs() < 1e-12);
-        let mse = (100.0 + 255.0 * 255.0) / 64.0;
+        assert!((m.mae - 270.0 / 64.0).abs() < 1e-12);
+        let mse = (100.0 + 255.0 * 255.0 + 25.0) / 64.0;
         assert!((m.psnr - 10.0 * (65025.0f64 / mse).log10()).abs() < 1e-9);
         assert_eq!(compare(&a, &a, [0; 4], 0).expect("same size").psnr, f64::INFINITY);
         assert!(compare(&a, &RgbaImage::new(2, 2), [0; 4], 0).is_none());

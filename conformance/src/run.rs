@@ -1,13 +1,17 @@
-//! One scene on every back end, each compared with llvmpipe.
+//! One scene on every back end, each compared with the scene's reference:
+//! llvmpipe, or the scene's exact oracle when it has one.
 
 use crate::backend::{Backend, Outcome};
 use crate::call::Rec;
 use crate::metrics::{compare, Metrics};
 use crate::scenes::{Group, Scene, Tolerance};
+use image::RgbaImage;
 
 /// The name of the reference back end.
 pub const REFERENCE: &str = "llvmpipe";
-/// The anchor: softgl should land no farther from llvmpipe than this.
+/// The reference of scenes with an exact oracle (not a back end).
+pub const ORACLE: &str = "oracle";
+/// The anchor: softgl should land no farther from the reference than this.
 pub const ANCHOR: &str = "softpipe";
 
 /// One back end's result on one scene.
@@ -15,7 +19,7 @@ pub const ANCHOR: &str = "softpipe";
 pub struct BackendResult {
     pub backend: String,
     pub outcome: Outcome,
-    /// Against llvmpipe (`None` if either did not render, or sizes differ).
+    /// Against the reference (`None` if either did not render, or sizes differ).
     pub metrics: Option<Metrics>,
 }
 
@@ -26,6 +30,12 @@ pub struct SceneResult {
     pub group: Group,
     pub tolerance: Tolerance,
     pub size: (u32, u32),
+    /// The report's size (true) or the tests'.
+    pub full: bool,
+    /// What the metrics are against: [`REFERENCE`] or [`ORACLE`].
+    pub reference: &'static str,
+    /// The oracle's image, for scenes that have one.
+    pub oracle: Option<RgbaImage>,
     pub results: Vec<BackendResult>,
 }
 
@@ -34,21 +44,62 @@ impl SceneResult {
         self.results.iter().find(|r| r.backend == backend)
     }
 
-    pub fn reference(&self) -> Option<&image::RgbaImage> {
+    /// The image every back end is compared with.
+    pub fn reference(&self) -> Option<&RgbaImage> {
+        if let Some(o) = &self.oracle {
+            return Some(o);
+        }
         match &self.get(REFERENCE)?.outcome {
             Outcome::Rendered { image, .. } => Some(image),
             _ => None,
         }
     }
 
-    /// Whether `backend` is within the scene's tolerance (`None`: not compared).
-    pub fn within(&self, backend: &str) -> Option<bool> {
-        let m = self.get(backend)?.metrics?;
-        Some(within(&m, &self.tolerance))
+    /// Whether `backend` is what the others are compared with.
+    pub fn is_reference(&self, backend: &str) -> bool {
+        backend == self.reference
     }
 
-    /// Whether `backend` lands no farther from llvmpipe than softpipe does
-    /// (mean absolute error and coverage both no larger).
+    /// Whether `backend` is within the scene's tolerance (`None`: not compared).
+    pub fn within(&self, backend: &str) -> Option<bool> {
+        self.get(backend)?.metrics?;
+        Some(self.check(backend).is_ok())
+    }
+
+    /// `Ok` when `backend` is within the scene's tolerance; else what is over
+    /// (or that it was not compared).
+    pub fn check(&self, backend: &str) -> Result<(), String> {
+        let Some(m) = self.get(backend).and_then(|r| r.metrics) else {
+            return Err(format!("not compared with {}", self.reference));
+        };
+        let t = &self.tolerance;
+        let near = t.near(self.full);
+        let mut over = Vec::new();
+        if m.share_over > t.share_over {
+            over.push(format!(
+                "{} pixels over ±{} ({:.5} > {:.5} of all), max diff {}",
+                m.over, t.channel, m.share_over, t.share_over, m.max_diff
+            ));
+        }
+        if m.near > near {
+            over.push(format!("{} pixels 1..={} off (budget {near})", m.near, t.channel));
+        }
+        if m.coverage > t.coverage {
+            over.push(format!("coverage {} > {}", m.coverage, t.coverage));
+        }
+        if over.is_empty() {
+            Ok(())
+        } else {
+            Err(format!(
+                "over tolerance against {}: {}",
+                self.reference,
+                over.join(", ")
+            ))
+        }
+    }
+
+    /// Whether `backend` lands no farther from the reference than softpipe
+    /// does (mean absolute error and coverage both no larger).
     pub fn meets_anchor(&self, backend: &str) -> Option<bool> {
         let m = self.get(backend)?.metrics?;
         let a = self.get(ANCHOR)?.metrics?;
@@ -56,12 +107,8 @@ impl SceneResult {
     }
 }
 
-/// The tolerance test softgl must pass.
-pub fn within(m: &Metrics, t: &Tolerance) -> bool {
-    m.share_over <= t.share_over && m.coverage <= t.coverage
-}
-
-/// Renders `scene` on every back end (llvmpipe among them) and compares.
+/// Renders `scene` on every back end (llvmpipe among them) and compares
+/// each with the scene's reference.
 pub fn run_scene(scene: &Scene, backends: &mut [Box<dyn Backend>], full: bool, runs: usize) -> SceneResult {
     let rec = scene.record(full);
     let background = Rec::background(&rec.calls);
@@ -73,25 +120,31 @@ pub fn run_scene(scene: &Scene, backends: &mut [Box<dyn Backend>], full: bool, r
             metrics: None,
         })
         .collect();
-    let reference = results
-        .iter()
-        .find(|r| r.backend == REFERENCE)
-        .and_then(|r| match &r.outcome {
-            Outcome::Rendered { image, .. } => Some(image.clone()),
-            _ => None,
-        });
-    if let Some(reference) = reference {
+    let mut result = SceneResult {
+        scene: scene.name,
+        group: scene.group,
+        tolerance: scene.tolerance,
+        size: (rec.width, rec.height),
+        full,
+        reference: if scene.oracle.is_some() { ORACLE } else { REFERENCE },
+        oracle: scene.oracle.map(|o| o(scene.size(full))),
+        results: Vec::new(),
+    };
+    if let Some(reference) = result.reference().cloned().or_else(|| {
+        results
+            .iter()
+            .find(|r| r.backend == REFERENCE)
+            .and_then(|r| match &r.outcome {
+                Outcome::Rendered { image, .. } => Some(image.clone()),
+                _ => None,
+            })
+    }) {
         for r in &mut results {
             if let Outcome::Rendered { image, .. } = &r.outcome {
                 r.metrics = compare(&reference, image, background, scene.tolerance.channel);
             }
         }
     }
-    SceneResult {
-        scene: scene.name,
-        group: scene.group,
-        tolerance: scene.tolerance,
-        size: (rec.width, rec.height),
-        results,
-    }
+    result.results = results;
+    result
 }

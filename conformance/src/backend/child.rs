@@ -3,7 +3,8 @@
 //! first frame is a cold start, and a crash costs one scene, not the report.
 //! The child writes its result to a file the parent names.
 
-use super::{Backend, Outcome, Timing};
+use super::{Backend, Outcome, Timing, Unavailable};
+use crate::missing::Missing;
 use crate::scenes::{self, Scene};
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
@@ -15,7 +16,7 @@ use std::time::{Duration, Instant};
 const CHILD_TIMEOUT: Duration = Duration::from_secs(300);
 
 /// A Mesa renderer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, clap::ValueEnum)]
 pub enum Reference {
     /// OSMesa with `GALLIUM_DRIVER=llvmpipe`: the reference for every metric.
     Llvmpipe,
@@ -38,6 +39,19 @@ impl Reference {
             .into_iter()
             .find(|r| r.name() == s)
     }
+    /// What the reference needs installed, and the command that installs it.
+    pub fn needs(self) -> Missing {
+        match self {
+            Reference::Llvmpipe | Reference::Softpipe => {
+                Missing::new(super::osmesa::LIBRARY, "apt-get install -y libosmesa6 libosmesa6-dev")
+            }
+            Reference::Lavapipe => Missing::new(
+                "lavapipe (the Vulkan loader libvulkan.so.1 and lvp_icd.x86_64.json)",
+                "apt-get install -y libvulkan1 mesa-vulkan-drivers",
+            ),
+        }
+    }
+
     /// What the driver's renderer string must contain (lavapipe calls its
     /// device "llvmpipe" too).
     fn renderer_mark(self) -> &'static str {
@@ -84,23 +98,25 @@ impl External {
         self.reference
     }
 
-    /// Starts the driver once and returns its renderer string, or why it is
-    /// not there (library missing, wrong driver picked).
-    pub fn probe(&self) -> Result<String, String> {
+    /// Starts the driver once and returns its renderer string, or why it
+    /// cannot be used: not installed, or installed and broken (a crash, the
+    /// wrong driver picked).
+    pub fn probe(&self) -> Result<String, Unavailable> {
         match self.run(&["--probe"]) {
             Ok(r) if r.status == Status::Ok => {
                 if r.renderer.contains(self.reference.renderer_mark()) {
                     Ok(r.renderer)
                 } else {
-                    Err(format!(
+                    Err(Unavailable::Broken(format!(
                         "asked for {} and got renderer {:?}",
                         self.reference.name(),
                         r.renderer
-                    ))
+                    )))
                 }
             }
-            Ok(r) => Err(r.message),
-            Err(e) => Err(e),
+            Ok(r) if r.status == Status::Missing => Err(Unavailable::Missing(self.reference.needs())),
+            Ok(r) => Err(Unavailable::Broken(r.message)),
+            Err(e) => Err(Unavailable::Broken(e)),
         }
     }
 
@@ -172,20 +188,16 @@ impl Backend for External {
         &self.name
     }
 
-    fn probe(&self) -> Result<String, String> {
+    fn probe(&self) -> Result<String, Unavailable> {
         External::probe(self)
     }
 
     fn render(&mut self, scene: &Scene, full: bool, runs: usize) -> Outcome {
         let runs_s = runs.to_string();
-        let args = [
-            "--scene",
-            scene.name,
-            "--full",
-            if full { "1" } else { "0" },
-            "--runs",
-            &runs_s,
-        ];
+        let mut args = vec!["--scene", scene.name, "--runs", &runs_s];
+        if full {
+            args.push("--full");
+        }
         if self.warm_cache.is_some() {
             // Fills the cache; the run below is the warm one.
             let _ = self.run(&args);
@@ -207,6 +219,7 @@ impl Backend for External {
                     None => Outcome::Failed("child image has the wrong size".into()),
                 },
                 Status::Unsupported => Outcome::Unsupported(r.message),
+                Status::Missing => Outcome::Failed(format!("{} not installed: {}", self.reference.name(), r.message)),
                 Status::Failed => Outcome::Failed(r.message),
             },
         }
@@ -218,6 +231,8 @@ enum Status {
     Ok,
     Unsupported,
     Failed,
+    /// The driver is not installed (only `--probe` says so).
+    Missing,
 }
 
 /// What a child sends back.
@@ -256,6 +271,7 @@ impl ChildResult {
             Status::Ok => 0,
             Status::Unsupported => 1,
             Status::Failed => 2,
+            Status::Missing => 3,
         });
         for s in [&self.message, &self.renderer] {
             b.extend((s.len() as u32).to_le_bytes());
@@ -281,6 +297,7 @@ impl ChildResult {
         let status = match take(&mut b, 1)?[0] {
             0 => Status::Ok,
             1 => Status::Unsupported,
+            3 => Status::Missing,
             _ => Status::Failed,
         };
         let mut strings = Vec::new();
@@ -316,34 +333,66 @@ fn zero_timing() -> Timing {
     }
 }
 
-/// The child's side: `child --backend NAME --out FILE (--probe | --scene NAME
-/// --full 0|1 --runs N)`. Writes its result to FILE.
-pub fn child_main(args: &[String]) -> Result<(), String> {
-    let arg = |name: &str| {
-        args.iter()
-            .position(|a| a == name)
-            .and_then(|i| args.get(i + 1))
-            .cloned()
-    };
-    let reference = arg("--backend")
-        .as_deref()
-        .and_then(Reference::parse)
-        .ok_or("child: --backend llvmpipe|softpipe|lavapipe")?;
-    let out = arg("--out").ok_or("child: --out FILE")?;
-    let probe = args.iter().any(|a| a == "--probe");
-    let (outcome, renderer) = if probe {
-        let scene = scenes::by_name("clear").expect("the clear scene exists");
-        run_reference(reference, &scene, false, 0)
+/// The child's command line (`softgl-conformance child ...`, run by
+/// [`External`]).
+#[derive(clap::Args, Debug)]
+pub struct ChildArgs {
+    /// The reference to run.
+    #[arg(long)]
+    backend: Reference,
+    /// Where the result goes.
+    #[arg(long)]
+    out: PathBuf,
+    /// Only start the driver and say what it is (or that it is missing).
+    #[arg(long, conflicts_with = "scene")]
+    probe: bool,
+    /// The scene to render.
+    #[arg(long, required_unless_present = "probe")]
+    scene: Option<String>,
+    /// At the report's size (else the tests').
+    #[arg(long)]
+    full: bool,
+    /// Steady-state frames after the first.
+    #[arg(long, default_value_t = 0)]
+    runs: usize,
+}
+
+/// The child's side: renders and writes its result to `--out`.
+pub fn child_main(args: &ChildArgs) -> Result<(), String> {
+    let (reference, out) = (args.backend, &args.out);
+    let result = if args.probe {
+        match installed(reference) {
+            Err(Unavailable::Missing(m)) => ChildResult {
+                status: Status::Missing,
+                ..ChildResult::from_outcome(Outcome::Failed(m.what), String::new())
+            },
+            Err(Unavailable::Broken(why)) => ChildResult::from_outcome(Outcome::Failed(why), String::new()),
+            Ok(()) => {
+                let scene = scenes::by_name("clear").expect("the clear scene exists");
+                let (outcome, renderer) = run_reference(reference, &scene, false, 0);
+                ChildResult::from_outcome(outcome, renderer)
+            }
+        }
     } else {
-        let name = arg("--scene").ok_or("child: --scene NAME")?;
-        let scene = scenes::by_name(&name).ok_or_else(|| format!("no scene {name}"))?;
-        let full = arg("--full").as_deref() == Some("1");
-        let runs = arg("--runs").and_then(|r| r.parse().ok()).unwrap_or(0);
-        run_reference(reference, &scene, full, runs)
+        let name = args.scene.as_deref().unwrap_or_default();
+        let scene = scenes::by_name(name).ok_or_else(|| format!("no scene {name}"))?;
+        let (outcome, renderer) = run_reference(reference, &scene, args.full, args.runs);
+        ChildResult::from_outcome(outcome, renderer)
     };
-    let bytes = ChildResult::from_outcome(outcome, renderer).encode();
-    let mut f = std::fs::File::create(&out).map_err(|e| format!("{out}: {e}"))?;
-    f.write_all(&bytes).map_err(|e| format!("{out}: {e}"))
+    let bytes = result.encode();
+    let mut f = std::fs::File::create(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    f.write_all(&bytes).map_err(|e| format!("{}: {e}", out.display()))
+}
+
+/// Whether the driver is installed (`libOSMesa.so.8` loads; Vulkan has a
+/// lavapipe device).
+fn installed(reference: Reference) -> Result<(), Unavailable> {
+    match reference {
+        Reference::Llvmpipe | Reference::Softpipe => super::osmesa::OsMesa::load()
+            .map(drop)
+            .map_err(|_| Unavailable::Missing(reference.needs())),
+        Reference::Lavapipe => super::vulkan::installed(),
+    }
 }
 
 fn run_reference(reference: Reference, scene: &Scene, full: bool, runs: usize) -> (Outcome, String) {

@@ -9,6 +9,7 @@ pub mod osmesa;
 pub mod softgl;
 pub mod vulkan;
 
+use crate::missing::Missing;
 use crate::scenes::Scene;
 use image::RgbaImage;
 use std::time::Duration;
@@ -61,8 +62,27 @@ pub trait Backend {
     /// Renders `scene` at its report (`full`) or test size: one first frame,
     /// then `runs` more for the steady-state median.
     fn render(&mut self, scene: &Scene, full: bool, runs: usize) -> Outcome;
-    /// Whether the back end is there: what it calls itself, or why it is missing.
-    fn probe(&self) -> Result<String, String>;
+    /// Whether the back end is there: what it calls itself, or why not.
+    fn probe(&self) -> Result<String, Unavailable>;
+}
+
+/// Why a back end cannot render.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Unavailable {
+    /// Not installed: the checks that need it are skipped (failed under
+    /// `SOFTGL_REQUIRE_REFERENCES=1`; see [`crate::missing`]).
+    Missing(Missing),
+    /// Installed, but it does not work (a crash, the wrong driver): a failure.
+    Broken(String),
+}
+
+impl std::fmt::Display for Unavailable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Unavailable::Missing(m) => write!(f, "{} not found — {}", m.what, m.install),
+            Unavailable::Broken(why) => f.write_str(why),
+        }
+    }
 }
 
 /// The median of `t` (empty: zero).

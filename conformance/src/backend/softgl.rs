@@ -30,7 +30,7 @@ impl Backend for Softgl {
         &self.name
     }
 
-    fn probe(&self) -> Result<String, String> {
+    fn probe(&self) -> Result<String, super::Unavailable> {
         Ok(format!("softgl {} (in process)", env!("CARGO_PKG_VERSION")))
     }
 

@@ -1,6 +1,6 @@
 //! Primitive modes, shading, culling, polygon mode and offset.
 
-use super::{panels, random_triangles, Group, Rng, Scene, Size, Tolerance};
+use super::{panels, random_triangles, Group, Near, Rng, Scene, Size, Tolerance};
 use crate::call::{Call, Rec};
 use softgl::{Capability, CompareFunc, Face, FrontFace, MatrixMode, PolygonMode, PrimitiveMode, ShadeModel};
 
@@ -10,6 +10,7 @@ const E: Tolerance = Tolerance::EXACT;
 /// Line end points exactly on k or k+0.5: llvmpipe's diamond-exit tests are asymmetric there and softgl's are not (measured at 256x256: 40 pixels, 26 of them coverage).
 const LINE_TIES: Tolerance = Tolerance {
     channel: 0,
+    near: Near::NONE,
     share_over: 0.00065,
     coverage: 26,
     reason: "Line end points exactly on k or k+0.5: llvmpipe's diamond-exit tests are asymmetric there and softgl's are not (measured at 256x256: 40 pixels, 26 of them coverage).",
@@ -18,22 +19,16 @@ const LINE_TIES: Tolerance = Tolerance {
 /// Quads in a draw that needs clipping split along v1-v3 in llvmpipe (its draw pipeline), else along v0-v2; softgl follows the same rule (docs/llvmpipe-facts.md 12), so the scene matches exactly.
 const QUAD_DIAGONAL: Tolerance = Tolerance {
     channel: 0,
+    near: Near::NONE,
     share_over: 0.0,
     coverage: 0,
     reason: "Exact: softgl splits GL_QUADS as llvmpipe does per draw (v1-v3 when a vertex needs clipping or a face is unfilled, v0-v2 otherwise; docs/llvmpipe-facts.md 12).",
 };
 
-/// Colours may differ by 1 LSB on a few pixels: softgl's f32 attribute setup does not repeat llvmpipe's step for step (docs/llvmpipe-facts.md 11).
-const ONE_LSB: Tolerance = Tolerance {
-    channel: 1,
-    share_over: 0.0,
-    coverage: 0,
-    reason: "Colours may differ by 1 LSB on a few pixels: softgl's f32 attribute setup does not repeat llvmpipe's step for step (docs/llvmpipe-facts.md 11).",
-};
-
 /// Polygon-mode edges are lines between the triangle's vertices: line end-point ties as for lines (measured 121 pixels, 7 coverage at 256x256).
 const POLYGON_EDGES: Tolerance = Tolerance {
     channel: 0,
+    near: Near::NONE,
     share_over: 0.0019,
     coverage: 7,
     reason: "Polygon-mode edges are lines between the triangle's vertices: line end-point ties as for lines (measured 121 pixels, 7 coverage at 256x256).",
@@ -49,14 +44,14 @@ pub fn scenes() -> Vec<Scene> {
         Scene::new("quads", G, QUAD_DIAGONAL, quads),
         Scene::new("quad_single", G, E, quad_single),
         Scene::new("quad_strip", G, E, quad_strip),
-        Scene::new("polygon", G, ONE_LSB, polygon),
+        Scene::new("polygon", G, Tolerance::one_lsb(1, 3), polygon),
         Scene::new("modes_flat", G, E, modes_flat),
-        Scene::new("modes_smooth", G, ONE_LSB, modes_smooth),
+        Scene::new("modes_smooth", G, Tolerance::one_lsb(0, 1), modes_smooth),
         Scene::new("culling", G, E, culling),
         Scene::new("polygon_mode", G, POLYGON_EDGES, polygon_mode),
         Scene::new("polygon_offset", G, E, polygon_offset),
         Scene::new("vertex_arrays", G, E, vertex_arrays),
-        Scene::new("perspective_clipped", G, ONE_LSB, perspective),
+        Scene::new("perspective_clipped", G, Tolerance::one_lsb(0, 1), perspective),
     ]
 }
 

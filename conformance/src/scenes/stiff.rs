@@ -1,32 +1,33 @@
 //! DESIGN.md's stiff and extreme input. None may crash a softgl back end.
 
+use super::oracle::{self, ClipTriangle, SmoothTriangle};
 use super::stages::show_stencil;
-use super::{panels, random_triangles, Group, Rng, Scene, Size, Tolerance};
+use super::{panels, random_triangles, Group, Near, Rng, Scene, Size, Tolerance};
 use crate::call::{Call, Rec};
-use softgl::{BlendFactor, Capability, CompareFunc, MatrixMode, PrimitiveMode, StencilOp};
+use softgl::{BlendFactor, Capability, CompareFunc, MatrixMode, PrimitiveMode, ShadeModel, StencilOp};
 
 const G: Group = Group::Stiff;
 const E: Tolerance = Tolerance::EXACT;
 
-/// Colours may differ by 1 LSB on a few pixels: softgl's f32 attribute setup does not repeat llvmpipe's step for step (docs/llvmpipe-facts.md 11).
-const ONE_LSB: Tolerance = Tolerance {
-    channel: 1,
-    share_over: 0.0,
-    coverage: 0,
-    reason: "Colours may differ by 1 LSB on a few pixels: softgl's f32 attribute setup does not repeat llvmpipe's step for step (docs/llvmpipe-facts.md 11).",
-};
-
-/// Clipping triangles with 1e8..1e38 vertices in f32 loses different bits in softgl and llvmpipe; colours differ near the clipped edges (measured 1.3% of pixels at 256x256, 2 coverage at 96x96).
+/// OPEN, softgl's error: against the f64 answer (`oracle::depth_tested_image`, test
+/// `huge_coordinates_against_the_f64_answer`) llvmpipe is exact at 96x96 and 3 pixels off at
+/// 256x256, softgl 96 and 871 (colours 1 LSB off across triangles with a vertex beyond 1e8,
+/// a few depth and coverage flips): measured 1.3% of pixels at 256x256, 2 coverage at 96x96.
 const HUGE: Tolerance = Tolerance {
     channel: 0,
+    near: Near::NONE,
     share_over: 0.014,
     coverage: 2,
-    reason: "Clipping triangles with 1e8..1e38 vertices in f32 loses different bits in softgl and llvmpipe; colours differ near the clipped edges (measured 1.3% of pixels at 256x256, 2 coverage at 96x96).",
+    reason: "OPEN, softgl's error: triangles with a vertex at 1e8..1e38 come out 1 LSB off (a few depth and coverage \
+             flips) where llvmpipe matches the f64 answer (llvmpipe 0 pixels off it at 96x96 and 3 at 256x256, softgl \
+             96 and 871; test huge_coordinates_against_the_f64_answer). Measured 1.3% of pixels at 256x256, 2 coverage \
+             at 96x96.",
 };
 
 /// Offsets of 1e6..1e30 saturate the depth range; where llvmpipe's f32 clamp order differs, a few depth tests flip (measured 6 pixels at 256x256).
 const OFFSET_EXTREME: Tolerance = Tolerance {
     channel: 0,
+    near: Near::NONE,
     share_over: 0.0001,
     coverage: 0,
     reason: "Offsets of 1e6..1e30 saturate the depth range; where llvmpipe's f32 clamp order differs, a few depth tests flip (measured 6 pixels at 256x256).",
@@ -35,16 +36,25 @@ const OFFSET_EXTREME: Tolerance = Tolerance {
 /// OPEN: the two triangles whose coverage differs from llvmpipe's in random_20k_depth; each has a pixel centre within 0.01 px of an edge (one of them clipped at the window's edge).
 const COVERAGE_TIES: Tolerance = Tolerance {
     channel: 0,
+    near: Near::NONE,
     share_over: 0.000002,
     coverage: 2,
     reason: "OPEN: the two triangles whose coverage differs from llvmpipe's in random_20k_depth; each has a pixel centre within 0.01 px of an edge (one of them clipped at the window's edge).",
 };
 
+/// Judged against the exact oracle, not Mesa: softgl draws these as the real numbers say.
+const EXACT_ORACLE: Tolerance = Tolerance {
+    reason: "Exact against the oracle (coverage decided in exact arithmetic from the clip-space vertices): \
+             softgl clips in f32 without losing the triangles; llvmpipe's and softpipe's clippers lose most of them.",
+    ..Tolerance::EXACT
+};
+
 pub fn scenes() -> Vec<Scene> {
     vec![
-        Scene::new("w_near_zero", G, ONE_LSB, w_near_zero),
-        Scene::new("negative_w", G, ONE_LSB, negative_w),
+        Scene::new("w_near_zero", G, Tolerance::one_lsb(0, 3), w_near_zero),
+        Scene::new("negative_w", G, Tolerance::one_lsb(0, 4), negative_w),
         Scene::new("huge_coordinates", G, HUGE, huge_coordinates),
+        Scene::new("huge_triangles_exact", G, EXACT_ORACLE, huge_triangles).with_oracle(huge_triangles_oracle),
         Scene::new("nan_inf", G, E, nan_inf),
         Scene::new("degenerate_triangles", G, E, degenerate),
         Scene::new("slivers", G, E, slivers),
@@ -53,7 +63,7 @@ pub fn scenes() -> Vec<Scene> {
         Scene::new("shared_edges", G, E, shared_edges),
         Scene::new("near_far_1e-7", G, E, near_tiny),
         Scene::new("near_far_1e7", G, E, far_huge),
-        Scene::new("near_singular_modelview", G, ONE_LSB, near_singular),
+        Scene::new("near_singular_modelview", G, Tolerance::one_lsb(1, 0), near_singular),
         Scene::new("viewport_1x1", G, E, viewport_1x1),
         Scene::new("framebuffer_1x1", G, E, framebuffer_1x1).sized((1, 1), (1, 1)),
         Scene::new("huge_viewport", G, E, huge_viewport),
@@ -118,29 +128,77 @@ fn negative_w(r: &mut Rec, s: Size) {
     r.end();
 }
 
-fn huge_coordinates(r: &mut Rec, s: Size) {
+/// The triangles of `huge_coordinates`: each with one vertex at up to
+/// ±1e38 and two in the window.
+fn huge_coordinate_triangles(s: Size) -> Vec<SmoothTriangle> {
     let mut rng = Rng::new(52);
+    (0..s.count(40))
+        .map(|i| {
+            let big = [1e38f32, 1e20, 1e8, 3e3][i % 4];
+            let c0 = [rng.unit(), rng.unit(), rng.unit(), 1.0];
+            let v0 = [rng.range(0.0, s.wf()), rng.range(0.0, s.hf()), rng.range(-1.0, 1.0)];
+            let c1 = [rng.unit(), rng.unit(), rng.unit(), 1.0];
+            let v1 = [
+                rng.range(-1.0, 1.0) * big,
+                rng.range(-1.0, 1.0) * big,
+                rng.range(-1.0, 1.0),
+            ];
+            let c2 = [rng.unit(), rng.unit(), rng.unit(), 1.0];
+            let v2 = [rng.range(0.0, s.wf()), rng.range(0.0, s.hf()), rng.range(-1.0, 1.0)];
+            SmoothTriangle {
+                vertices: [v0, v1, v2],
+                colors: [c0, c1, c2],
+            }
+        })
+        .collect()
+}
+
+fn huge_coordinates(r: &mut Rec, s: Size) {
     r.enable(Capability::DepthTest).call(Call::DepthFunc(CompareFunc::Less));
     r.begin(PrimitiveMode::Triangles);
-    for i in 0..s.count(40) {
-        let big = [1e38f32, 1e20, 1e8, 3e3][i % 4];
-        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
-            rng.range(0.0, s.wf()),
-            rng.range(0.0, s.hf()),
-            rng.range(-1.0, 1.0),
-        );
-        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
-            rng.range(-1.0, 1.0) * big,
-            rng.range(-1.0, 1.0) * big,
-            rng.range(-1.0, 1.0),
-        );
-        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
-            rng.range(0.0, s.wf()),
-            rng.range(0.0, s.hf()),
-            rng.range(-1.0, 1.0),
-        );
+    for t in huge_coordinate_triangles(s) {
+        for (c, v) in t.colors.iter().zip(t.vertices) {
+            r.color(c[0], c[1], c[2], c[3]).vertex(v[0], v[1], v[2]);
+        }
     }
     r.end();
+}
+
+/// Triangles with vertices at ±1e30 in clip space, each in one colour: the
+/// first covers the whole viewport, the second the part below the clip
+/// line y = 0.2, the third the part left of x = -0.3 (edges that stay exact
+/// through any clipper: they are parallel to an axis).
+const HUGE_TRIANGLES: [ClipTriangle; 3] = [
+    ClipTriangle {
+        vertices: [[-1e30, -1e30], [1e30, -1e30], [0.0, 1e30]],
+        color: [1.0, 0.2, 0.6, 1.0],
+    },
+    ClipTriangle {
+        vertices: [[-1e30, 0.2], [1e30, 0.2], [0.0, -1e30]],
+        color: [0.0, 0.4, 1.0, 1.0],
+    },
+    ClipTriangle {
+        vertices: [[-0.3, -1e30], [-0.3, 1e30], [-1e30, 0.0]],
+        color: [0.2, 1.0, 0.4, 1.0],
+    },
+];
+
+fn huge_triangles(r: &mut Rec, _s: Size) {
+    clip_space(r);
+    r.call(Call::ShadeModel(ShadeModel::Flat))
+        .begin(PrimitiveMode::Triangles);
+    for t in HUGE_TRIANGLES {
+        let [cr, cg, cb, ca] = t.color;
+        r.color(cr, cg, cb, ca);
+        for [x, y] in t.vertices {
+            r.vertex4(x, y, 0.0, 1.0);
+        }
+    }
+    r.end();
+}
+
+fn huge_triangles_oracle(s: Size) -> image::RgbaImage {
+    oracle::image(&HUGE_TRIANGLES, s)
 }
 
 /// NaN and infinity in positions, colours and a matrix, between ordinary
@@ -438,4 +496,32 @@ fn coverage_ties(r: &mut Rec, _s: Size) {
         .vertex(995.8139, 801.3328, -0.3328477)
         .vertex(1039.3273, 801.76874, 0.3715731)
         .end();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::backend::{softgl::Softgl, Backend, Outcome};
+    use crate::metrics::compare;
+
+    /// softgl against the f64 answer of `huge_coordinates` (llvmpipe: no
+    /// pixel off at this size). A ceiling, measured: lower it as softgl's
+    /// clipper improves.
+    #[test]
+    fn huge_coordinates_against_the_f64_answer() {
+        let scene = crate::scenes::by_name("huge_coordinates").expect("scene");
+        let Outcome::Rendered { image, .. } = Softgl::new(softgl::Backend::Jit).render(&scene, false, 0) else {
+            panic!("softgl renders the scene");
+        };
+        let size = scene.size(false);
+        let exact = oracle::depth_tested_image(&huge_coordinate_triangles(size), size);
+        let m = compare(&exact, &image, [0; 4], 1).expect("same size");
+        assert!(
+            m.over <= 2 && m.near <= 94 && m.coverage <= 2,
+            "{} pixels over 1 LSB (ceiling 2), {} at 1 LSB (ceiling 94), coverage {} (ceiling 2)",
+            m.over,
+            m.near,
+            m.coverage
+        );
+    }
 }

@@ -1,5 +1,8 @@
-//! The report: `report.md`, `error_vs_time.png`, `results.csv` and a diff
-//! image for every scene and back end over the scene's tolerance.
+//! The report: `report.md`, the plots (`error_vs_time.png`, `backends.png`;
+//! see [`plot`]), `results.csv` and a diff image for every scene and back end
+//! over the scene's tolerance.
+
+mod plot;
 
 use crate::backend::child::{External, Reference};
 use crate::backend::{self, Backend, Compiles, Outcome};
@@ -26,7 +29,7 @@ pub struct Options {
 /// A back end's availability, as the report states it.
 pub struct Availability {
     pub backend: String,
-    pub status: Result<String, String>,
+    pub status: Result<String, crate::backend::Unavailable>,
 }
 
 /// Checks which back ends are there, saying loudly which are not.
@@ -75,7 +78,8 @@ pub fn run(opts: &Options, exe: &Path) -> Result<(), String> {
     let _ = std::fs::remove_dir_all(&cache);
     let names: Vec<String> = backends.iter().map(|b| b.name().to_string()).collect();
     let diffs = write_diffs(&results, &opts.out.join("diff"))?;
-    plot(&results, &names, &opts.out.join("error_vs_time.png"))?;
+    plot::error_vs_time(&results, &names, &opts.out.join("error_vs_time.png"))?;
+    plot::backends(&results, &names, &opts.out.join("backends.png"))?;
     std::fs::write(opts.out.join("results.csv"), csv(&results)).map_err(|e| e.to_string())?;
     let md = markdown(&results, &names, &available, opts, &diffs);
     std::fs::write(opts.out.join("report.md"), &md).map_err(|e| e.to_string())?;
@@ -94,7 +98,7 @@ fn write_diffs(results: &[SceneResult], dir: &Path) -> Result<Vec<String>, Strin
     for s in results {
         let Some(reference) = s.reference() else { continue };
         for r in &s.results {
-            if r.backend == REFERENCE || s.within(&r.backend) != Some(false) {
+            if s.is_reference(&r.backend) || s.within(&r.backend) != Some(false) {
                 continue;
             }
             if let Outcome::Rendered { image, .. } = &r.outcome {
@@ -130,7 +134,7 @@ fn fmt_psnr(p: f64) -> String {
 
 fn csv(results: &[SceneResult]) -> String {
     let mut o = String::from(
-        "scene,group,width,height,backend,status,max_diff,pixels_over,share_over,mae,psnr,coverage,first_ms,steady_ms,runs,within,jit_compiles_first,jit_compile_ms_first\n",
+        "scene,group,width,height,reference,backend,status,max_diff,pixels_over,pixels_near,near_budget,share_over,mae,psnr,coverage,first_ms,steady_ms,runs,within,jit_compiles_first,jit_compile_ms_first\n",
     );
     for s in results {
         for r in &s.results {
@@ -139,11 +143,13 @@ fn csv(results: &[SceneResult]) -> String {
                 Outcome::Unsupported(_) => ("unsupported", 0.0, 0.0, 0),
                 Outcome::Failed(_) => ("failed", 0.0, 0.0, 0),
             };
-            let m = r.metrics.map_or(",,,,,".to_string(), |m| {
+            let m = r.metrics.map_or(",,,,,,,".to_string(), |m| {
                 format!(
-                    "{},{},{:.6},{:.6},{},{}",
+                    "{},{},{},{},{:.6},{:.6},{},{}",
                     m.max_diff,
                     m.over,
+                    m.near,
+                    s.tolerance.near(s.full),
                     m.share_over,
                     m.mae,
                     fmt_psnr(m.psnr),
@@ -157,8 +163,8 @@ fn csv(results: &[SceneResult]) -> String {
             };
             let _ = writeln!(
                 o,
-                "{},{:?},{},{},{},{status},{m},{first:.3},{steady:.3},{runs},{within},{jit}",
-                s.scene, s.group, s.size.0, s.size.1, r.backend
+                "{},{:?},{},{},{},{},{status},{m},{first:.3},{steady:.3},{runs},{within},{jit}",
+                s.scene, s.group, s.size.0, s.size.1, s.reference, r.backend
             );
         }
     }
@@ -224,7 +230,7 @@ pub fn summary(results: &[SceneResult], names: &[String]) -> String {
     let mut o = String::new();
     let _ = writeln!(
         o,
-        "| back end | rendered | identical to llvmpipe | within tolerance | coverage exact | no farther than softpipe | failed | unsupported | first frames (sum) | steady frames (sum) |"
+        "| back end | rendered | identical to the reference | within tolerance | coverage exact | no farther than softpipe | failed | unsupported | first frames (sum) | steady frames (sum) |"
     );
     let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|");
     for n in names {
@@ -256,7 +262,7 @@ fn cell(s: &SceneResult, backend: &str) -> String {
         (Outcome::Unsupported(_), _) => "n/a".into(),
         (Outcome::Failed(_), _) => "**FAILED**".into(),
         (Outcome::Rendered { timing, .. }, Some(m)) => {
-            let mark = if backend == REFERENCE {
+            let mark = if s.is_reference(backend) {
                 ""
             } else if m.identical() {
                 "= "
@@ -265,7 +271,7 @@ fn cell(s: &SceneResult, backend: &str) -> String {
             } else {
                 "**X** "
             };
-            if backend == REFERENCE {
+            if s.is_reference(backend) {
                 format!("{:.2} ms", ms(timing.steady))
             } else {
                 format!("{mark}{:.3} / {} / {:.2} ms", m.mae, m.coverage, ms(timing.steady))
@@ -286,9 +292,13 @@ fn markdown(
     let _ = writeln!(o, "# softgl conformance against Mesa\n");
     let _ = writeln!(
         o,
-        "Every scene rendered by every back end and compared with Mesa's **llvmpipe** (the reference). \
-         softgl's bar: within each scene's tolerance, no farther from llvmpipe than **softpipe** is \
-         (mean absolute error and coverage), and triangle coverage exactly llvmpipe's.\n"
+        "Every scene rendered by every back end and compared with its reference: Mesa's **llvmpipe**, \
+         except for the {} scenes with an **exact oracle** (triangles whose exact image Mesa's f32 clippers \
+         miss), where every back end, llvmpipe too, is compared with the exact image. softgl's bar: within each \
+         scene's tolerance (pixels over it, pixels within it but not equal, coverage: each a measured budget), \
+         no farther from the reference than **softpipe** is (mean absolute error and coverage), and triangle \
+         coverage exactly the reference's.\n",
+        results.iter().filter(|s| s.oracle.is_some()).count()
     );
     let _ = writeln!(
         o,
@@ -349,7 +359,45 @@ fn markdown(
             all.iter().map(|c| c.later).sum::<u64>()
         );
     }
-    let _ = writeln!(o, "![error against run time](error_vs_time.png)\n");
+    let _ = writeln!(
+        o,
+        "## Error against time\n\nOne point per scene and back end: the error against the scene's reference \
+         (log) over the steady frame time (log). Images identical to the reference sit on the dashed floor. \
+         Each back end has its own colour (Okabe–Ito) and marker; `llvmpipe-warm` is drawn in outline.\n\n\
+         ![error against run time, per scene](error_vs_time.png)\n\n\
+         One point per back end: the sum of its steady frame times against the median (filled) and worst \
+         (outline) of its per-scene errors.\n\n\
+         ![total time against median and worst error, per back end](backends.png)\n\n\
+         | back end | scenes | steady frames (sum) | median MAE | worst MAE |\n|---|---|---|---|---|"
+    );
+    for p in plot::backend_points(results, names) {
+        let _ = writeln!(
+            o,
+            "| {} | {} | {:.1} ms | {:.4} | {:.4} |",
+            p.name, p.scenes, p.total_ms, p.median, p.worst
+        );
+    }
+    let _ = writeln!(o);
+    for s in results.iter().filter(|s| s.oracle.is_some()) {
+        let _ = writeln!(
+            o,
+            "**{}** against its exact oracle ({}x{}): {}.\n",
+            s.scene,
+            s.size.0,
+            s.size.1,
+            s.results
+                .iter()
+                .filter_map(|r| r.metrics.map(|m| format!(
+                    "{} {} pixels off (max {}), {} coverage",
+                    r.backend,
+                    m.over + m.near,
+                    m.max_diff,
+                    m.coverage
+                )))
+                .collect::<Vec<_>>()
+                .join("; ")
+        );
+    }
     let off: Vec<String> = results
         .iter()
         .flat_map(|s| {
@@ -368,8 +416,8 @@ fn markdown(
     let _ = writeln!(
         o,
         "## At a glance\n\nEach cell: mean absolute error per channel / coverage mismatches / steady frame time. \
-         `=` identical to llvmpipe, `~` within the scene's tolerance, **X** over it, n/a: the back end cannot \
-         express the scene. The llvmpipe column shows its own time.\n"
+         `=` identical to the reference, `~` within the scene's tolerance, **X** over it, n/a: the back end \
+         cannot express the scene. Where llvmpipe is the reference its column shows its own time.\n"
     );
     let _ = writeln!(o, "| scene | {} |", names.join(" | "));
     let _ = writeln!(o, "|---|{}", "---|".repeat(names.len()));
@@ -391,20 +439,28 @@ fn markdown(
             let t = &s.tolerance;
             let _ = writeln!(
                 o,
-                "**{}** ({}x{}). Tolerance: channel ±{}, {:.3}% of pixels over, {} coverage. {}\n",
+                "**{}** ({}x{}). Reference: {}. Tolerance: channel ±{}, {:.3}% of pixels over, {} pixels within \
+                 ±{} but not equal, {} coverage. {}\n",
                 s.scene,
                 s.size.0,
                 s.size.1,
+                if s.oracle.is_some() {
+                    "the exact oracle"
+                } else {
+                    REFERENCE
+                },
                 t.channel,
                 t.share_over * 100.0,
+                t.near(s.full),
+                t.channel,
                 t.coverage,
                 t.reason
             );
             let _ = writeln!(
                 o,
-                "| back end | max diff | pixels over | MAE | PSNR dB | coverage | first ms | steady ms | JIT compiles | verdict |"
+                "| back end | max diff | pixels over | pixels within, not equal | MAE | PSNR dB | coverage | first ms | steady ms | JIT compiles | verdict |"
             );
-            let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|");
+            let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|---|");
             for r in &s.results {
                 let (first, steady) = match &r.outcome {
                     Outcome::Rendered { timing, .. } => {
@@ -416,7 +472,7 @@ fn markdown(
                 let verdict = match &r.outcome {
                     Outcome::Unsupported(why) => format!("n/a: {why}"),
                     Outcome::Failed(why) => format!("**FAILED**: {why}"),
-                    Outcome::Rendered { .. } if r.backend == REFERENCE => "reference".into(),
+                    Outcome::Rendered { .. } if s.is_reference(&r.backend) => "reference".into(),
                     Outcome::Rendered { .. } => {
                         let mut v = match s.within(&r.backend) {
                             Some(true) => "within".to_string(),
@@ -437,10 +493,11 @@ fn markdown(
                 };
                 let _ = writeln!(
                     o,
-                    "| {} | {} | {} | {} | {} | {} | {first} | {steady} | {compiles} | {verdict} |",
+                    "| {} | {} | {} | {} | {} | {} | {} | {first} | {steady} | {compiles} | {verdict} |",
                     r.backend,
                     m(&|m| m.max_diff.to_string()),
                     m(&|m| format!("{} ({:.3}%)", m.over, m.share_over * 100.0)),
+                    m(&|m| m.near.to_string()),
                     m(&|m| format!("{:.4}", m.mae)),
                     m(&|m| fmt_psnr(m.psnr)),
                     m(&|m| m.coverage.to_string()),
@@ -451,106 +508,8 @@ fn markdown(
     }
     let _ = writeln!(
         o,
-        "## Diff images\n\n{} written to `diff/` (llvmpipe, the back end, their difference x16; red: over tolerance).",
+        "## Diff images\n\n{} written to `diff/` (the reference, the back end, their difference x16; red: over tolerance).",
         diffs.len()
     );
     o
-}
-
-/// The system font the plot's labels use, if installed (Debian: fonts-dejavu-core).
-const FONT: &str = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-
-/// One point per scene and back end: error (MAE against llvmpipe, log) over
-/// steady frame time (log). Identical images sit on the bottom line, where
-/// llvmpipe's own times are drawn in black.
-fn plot(results: &[SceneResult], names: &[String], path: &Path) -> Result<(), String> {
-    use plotters::prelude::*;
-    let labels = match std::fs::read(FONT) {
-        Ok(bytes) => {
-            plotters::style::register_font("sans-serif", FontStyle::Normal, Box::leak(bytes.into_boxed_slice())).is_ok()
-        }
-        Err(_) => false,
-    };
-    if !labels {
-        eprintln!("note: {FONT} not found; error_vs_time.png has no labels");
-    }
-    const FLOOR: f64 = 1e-4;
-    let points: Vec<(usize, f64, f64)> = results
-        .iter()
-        .flat_map(|s| {
-            s.results.iter().filter_map(|r| match (&r.outcome, r.metrics) {
-                (Outcome::Rendered { timing, .. }, Some(m)) => {
-                    let i = names.iter().position(|n| *n == r.backend)?;
-                    Some((i, ms(timing.steady).max(1e-3), m.mae.max(FLOOR)))
-                }
-                _ => None,
-            })
-        })
-        .collect();
-    let tmax = points.iter().map(|p| p.1).fold(1.0, f64::max) * 2.0;
-    let tmin = points.iter().map(|p| p.1).fold(tmax, f64::min) / 2.0;
-    let emax = points.iter().map(|p| p.2).fold(1.0, f64::max) * 2.0;
-    let root = BitMapBackend::new(path, (1000, 700)).into_drawing_area();
-    let err = |e: &dyn std::fmt::Display| e.to_string();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let mut builder = ChartBuilder::on(&root);
-    builder.margin(20);
-    if labels {
-        builder
-            .caption("error against llvmpipe vs steady frame time", ("sans-serif", 24))
-            .x_label_area_size(45)
-            .y_label_area_size(70);
-    }
-    let mut chart = builder
-        .build_cartesian_2d((tmin..tmax).log_scale(), (FLOOR / 2.0..emax).log_scale())
-        .map_err(|e| err(&e))?;
-    if labels {
-        chart
-            .configure_mesh()
-            .x_desc("steady frame time, ms (log)")
-            .y_desc("mean abs. error per channel (log; identical at bottom)")
-            .draw()
-            .map_err(|e| err(&e))?;
-    } else {
-        chart
-            .configure_mesh()
-            .disable_x_mesh()
-            .disable_y_mesh()
-            .x_labels(0)
-            .y_labels(0)
-            .draw()
-            .map_err(|e| err(&e))?;
-    }
-    let colors = [RED, BLUE, GREEN, MAGENTA, CYAN, BLACK];
-    for (i, name) in names.iter().enumerate() {
-        // The reference is identical to itself: its times sit on the bottom line, in black.
-        let color = if name == REFERENCE {
-            BLACK
-        } else {
-            colors[i % colors.len()]
-        };
-        let series = chart
-            .draw_series(
-                points
-                    .iter()
-                    .filter(|p| p.0 == i)
-                    .map(|p| Circle::new((p.1, p.2), 4, color.filled())),
-            )
-            .map_err(|e| err(&e))?;
-        if labels {
-            series
-                .label(name.as_str())
-                .legend(move |(x, y)| Circle::new((x, y), 4, color.filled()));
-        }
-    }
-    if labels {
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .draw()
-            .map_err(|e| err(&e))?;
-    }
-    root.present().map_err(|e| err(&e))?;
-    Ok(())
 }
