@@ -3,7 +3,7 @@
 
 use crate::consts::*;
 use crate::convert::UserFormat;
-use softgl::{ColorMemory, Context, FramebufferDesc, GlError};
+use softgl::{ColorMemory, Context, Framebuffer, FramebufferDesc, GlError};
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -196,6 +196,25 @@ impl OsContext {
             compiling: None,
             list_base: 0,
             call_depth: 0,
+        }
+    }
+
+    /// A context drawing into `fb`, a buffer softgl owns (EGL's pbuffers),
+    /// created as an RGBA one with these depth and stencil sizes.
+    pub fn with_framebuffer(fb: Framebuffer, depth_bits: i32, stencil_bits: i32) -> OsContext {
+        let mut os = OsContext::new(OSMESA_RGBA, depth_bits, stencil_bits);
+        os.gl = Some(Box::new(Context::with_framebuffer(fb)));
+        os
+    }
+
+    /// Draws into `fb` from now on (state kept); the previous framebuffer.
+    pub fn swap_framebuffer(&mut self, fb: Framebuffer) -> Option<Framebuffer> {
+        match &mut self.gl {
+            Some(gl) => Some(gl.replace_framebuffer(fb)),
+            None => {
+                self.gl = Some(Box::new(Context::with_framebuffer(fb)));
+                None
+            }
         }
     }
 

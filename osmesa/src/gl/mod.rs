@@ -23,7 +23,7 @@ macro_rules! exports {
 mod arrays;
 pub(crate) mod attrib;
 mod enums;
-mod get;
+pub(crate) mod get;
 mod immediate;
 pub(crate) mod lists;
 mod missing;
