@@ -191,42 +191,45 @@ pub extern "C" fn eglMakeCurrent(dpy: EGLDisplay, draw: EGLSurface, read: EGLSur
                 return Err(EGL_BAD_ACCESS);
             }
         }
-        if mine == Some((h, surface.as_ref().map(|(sh, _)| *sh))) {
-            return Ok(EGL_TRUE);
-        }
-        if let Some(cur) = with_thread(None, |t| t.current.take()) {
-            release(&mut egl, cur);
-        }
-        let entry = egl.contexts.get_mut(&h).ok_or(EGL_BAD_CONTEXT)?;
-        entry.current_on = Some(std::thread::current().id());
-        let shared = entry.shared.clone();
         let mut first_size = None;
-        if let Some((sh, s)) = &surface {
-            let mut s = lock(s);
-            let fb = s.fb.take().ok_or(EGL_BAD_ACCESS)?;
-            lock(&shared).swap_framebuffer(fb);
-            s.bound_to = Some(h);
-            entry.surface = Some(*sh);
-            if !entry.viewport_set {
-                entry.viewport_set = true;
-                first_size = Some((s.width, s.height));
+        let shared = if mine == Some((h, surface.as_ref().map(|(sh, _)| *sh))) {
+            // Already bound here (OSMesaMakeCurrent may have taken the slot since).
+            egl.contexts.get(&h).ok_or(EGL_BAD_CONTEXT)?.shared.clone()
+        } else {
+            if let Some(cur) = with_thread(None, |t| t.current.take()) {
+                release(&mut egl, cur);
             }
-        }
+            let entry = egl.contexts.get_mut(&h).ok_or(EGL_BAD_CONTEXT)?;
+            entry.current_on = Some(std::thread::current().id());
+            let shared = entry.shared.clone();
+            if let Some((sh, s)) = &surface {
+                let mut s = lock(s);
+                let fb = s.fb.take().ok_or(EGL_BAD_ACCESS)?;
+                lock(&shared).swap_framebuffer(fb);
+                s.bound_to = Some(h);
+                entry.surface = Some(*sh);
+                if !entry.viewport_set {
+                    entry.viewport_set = true;
+                    first_size = Some((s.width, s.height));
+                }
+            }
+            with_thread((), |t| {
+                t.current = Some(Current {
+                    ctx: h,
+                    shared: shared.clone(),
+                    surface,
+                })
+            });
+            shared
+        };
         // An OSMesa context current here stops being current (its caller's
         // buffer gets its last frame, as with OSMesaMakeCurrent).
-        let previous = CURRENT.with(|c| c.borrow_mut().replace((h, shared.clone())));
+        let previous = CURRENT.with(|c| c.borrow_mut().replace((h, shared)));
         if let Some((ph, prev)) = previous {
-            if ph & 0xF == 0 {
+            if ph != h && ph & 0xF == 0 {
                 lock(&prev).flush();
             }
         }
-        with_thread((), |t| {
-            t.current = Some(Current {
-                ctx: h,
-                shared,
-                surface,
-            })
-        });
         drop(egl);
         if let Some((w, h)) = first_size {
             // GL sets viewport and scissor to the first surface a context draws into.
