@@ -7,11 +7,13 @@
 //! - [`backend`]: softgl in process, the references in child processes;
 //! - [`metrics`]: distances between images;
 //! - [`run`]: one scene on every back end, compared;
-//! - [`report`]: `report.md`, `error_vs_time.png` and diff images.
+//! - [`report`]: `report.md`, `error_vs_time.png` and diff images;
+//! - [`piglit`]: piglit's GL 1.x groups on softgl beside llvmpipe.
 
 pub mod backend;
 pub mod call;
 pub mod metrics;
+pub mod piglit;
 pub mod report;
 pub mod run;
 pub mod scenes;

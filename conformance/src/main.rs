@@ -2,12 +2,13 @@
 //! report, the plot and the diff images. (`child` is the harness re-run as a
 //! Mesa reference; see `backend::child`.)
 
-use softgl_conformance::{backend, report, scenes};
+use softgl_conformance::{backend, piglit, report, scenes};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 const USAGE: &str = "usage: softgl-conformance report -o DIR [--runs N] [--small] [--no-warm] [--scenes a,b,...]
-       softgl-conformance list";
+       softgl-conformance list
+       softgl-conformance piglit RESULTS_DIR   (markdown: softgl's piglit GL 1.x results beside llvmpipe's)";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -20,6 +21,7 @@ fn main() -> ExitCode {
             Ok(())
         }
         Some("report") => report_main(&args[1..]),
+        Some("piglit") if args.len() == 2 => piglit::section(args[1].as_ref()).map(|md| print!("{md}")),
         _ => Err(USAGE.to_string()),
     };
     match result {
