@@ -254,28 +254,40 @@ pub(crate) fn choose(requested: &[(EGLint, EGLint)]) -> EglResult<Vec<usize>> {
     Ok(chosen)
 }
 
-/// Writes up to `size` handles of `list` to `configs` (when not `NULL`) and
-/// their number to `num_config`.
+/// The body of `eglGetConfigs` and `eglChooseConfig`: after the display
+/// check, writes up to `size` handles of the configs `list` gives to
+/// `configs` (when not `NULL`) and their number to `num_config`.
 ///
 /// # Safety
-/// `configs` is `NULL` or has room for `size` handles; `num_config` is writable.
-unsafe fn hand_out(list: &[usize], configs: *mut EGLConfig, size: EGLint, num_config: *mut EGLint) -> EglResult<()> {
-    if num_config.is_null() {
-        return Err(EGL_BAD_PARAMETER);
-    }
-    let n = if configs.is_null() {
-        list.len()
-    } else {
-        let n = list.len().min(size.max(0) as usize);
-        for (k, &i) in list.iter().take(n).enumerate() {
-            // SAFETY: k < size, and the caller's array has room for `size` handles.
-            unsafe { *configs.add(k) = config_handle(i) };
+/// `configs` is `NULL` or has room for `size` handles; `num_config` is `NULL` or writable.
+unsafe fn hand_out(
+    dpy: EGLDisplay,
+    list: impl FnOnce() -> EglResult<Vec<usize>>,
+    configs: *mut EGLConfig,
+    size: EGLint,
+    num_config: *mut EGLint,
+) -> EGLBoolean {
+    call(EGL_FALSE, || {
+        egl_state().check(dpy)?;
+        let list = list()?;
+        if num_config.is_null() {
+            return Err(EGL_BAD_PARAMETER);
         }
-        n
-    };
-    // SAFETY: checked non-null; writable by the caller's contract.
-    unsafe { *num_config = n as EGLint };
-    Ok(())
+        let n = if configs.is_null() {
+            list.len()
+        } else {
+            list.len().min(size.max(0) as usize)
+        };
+        if !configs.is_null() {
+            for (k, &i) in list.iter().take(n).enumerate() {
+                // SAFETY: k < size, and the caller's array has room for `size` handles.
+                unsafe { *configs.add(k) = config_handle(i) };
+            }
+        }
+        // SAFETY: checked non-null; writable by the caller's contract.
+        unsafe { *num_config = n as EGLint };
+        Ok(EGL_TRUE)
+    })
 }
 
 /// `eglGetConfigs`: every config (or their number when `configs` is `NULL`).
@@ -290,12 +302,9 @@ pub unsafe extern "C" fn eglGetConfigs(
     config_size: EGLint,
     num_config: *mut EGLint,
 ) -> EGLBoolean {
-    call(EGL_FALSE, || {
-        egl_state().check(dpy)?;
-        let all: Vec<usize> = (0..CONFIGS.len()).collect();
-        // SAFETY: the caller's contract.
-        boolean(unsafe { hand_out(&all, configs, config_size, num_config) })
-    })
+    let all = || Ok((0..CONFIGS.len()).collect());
+    // SAFETY: the caller's contract.
+    unsafe { hand_out(dpy, all, configs, config_size, num_config) }
 }
 
 /// `eglChooseConfig`: the configs matching `attrib_list`, best first.
@@ -312,14 +321,10 @@ pub unsafe extern "C" fn eglChooseConfig(
     config_size: EGLint,
     num_config: *mut EGLint,
 ) -> EGLBoolean {
-    call(EGL_FALSE, || {
-        egl_state().check(dpy)?;
-        // SAFETY: the caller's contract.
-        let requested = unsafe { int_attribs(attrib_list) }?;
-        let chosen = choose(&requested)?;
-        // SAFETY: the caller's contract.
-        boolean(unsafe { hand_out(&chosen, configs, config_size, num_config) })
-    })
+    // SAFETY: the caller's contract for the list.
+    let chosen = || choose(&unsafe { int_attribs(attrib_list) }?);
+    // SAFETY: the caller's contract for the outputs.
+    unsafe { hand_out(dpy, chosen, configs, config_size, num_config) }
 }
 
 /// `eglGetConfigAttrib`.

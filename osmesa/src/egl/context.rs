@@ -130,11 +130,9 @@ pub unsafe extern "C" fn eglCreateContext(
 /// on some thread lives until released there.
 #[no_mangle]
 pub extern "C" fn eglDestroyContext(dpy: EGLDisplay, ctx: EGLContext) -> EGLBoolean {
-    call(EGL_FALSE, || {
-        let mut egl = egl_state();
-        egl.check(dpy)?;
-        egl.contexts.remove(&(ctx as usize)).ok_or(EGL_BAD_CONTEXT)?;
-        Ok(EGL_TRUE)
+    on_display(dpy, EGL_FALSE, |egl| match egl.contexts.remove(&(ctx as usize)) {
+        Some(_) => Ok(EGL_TRUE),
+        None => Err(EGL_BAD_CONTEXT),
     })
 }
 

@@ -205,8 +205,8 @@ pub extern "C" fn eglWaitNative(_engine: EGLint) -> EGLBoolean {
     call(EGL_FALSE, || Ok(EGL_TRUE))
 }
 
-/// `eglGetProcAddress`: every `egl*` and `gl*` function this library
-/// exports (`EGL_KHR_get_all_proc_addresses`), else `NULL`.
+/// `eglGetProcAddress`: every function this library exports
+/// (`EGL_KHR_get_all_proc_addresses`: `egl*` and `gl*`), else `NULL`.
 ///
 /// # Safety
 /// `procname` is `NULL` or a NUL-terminated string.
@@ -217,13 +217,13 @@ pub unsafe extern "C" fn eglGetProcAddress(procname: *const c_char) -> EGLProc {
     }
     // SAFETY: a NUL-terminated string, by the caller's contract.
     let name = unsafe { CStr::from_ptr(procname) };
-    guard(None, || {
-        let name = name.to_str().ok()?;
-        let p = egl_proc(name).or_else(|| crate::gl::proc_address(name))?;
+    match guard(None, || name.to_str().ok().and_then(egl_proc)) {
         // SAFETY: `p` is the address of an `extern "C"` function of this
         // library; C casts it back to its real signature before calling.
-        Some(unsafe { std::mem::transmute::<*const c_void, unsafe extern "C" fn()>(p) })
-    })
+        Some(p) => Some(unsafe { std::mem::transmute::<*const c_void, unsafe extern "C" fn()>(p) }),
+        // SAFETY: the same string (OSMesa's lookup answers the gl* names).
+        None => unsafe { crate::api::OSMesaGetProcAddress(procname) },
+    }
 }
 
 /// The address of the `egl*` export called `name`.

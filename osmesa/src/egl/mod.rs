@@ -175,9 +175,13 @@ fn call<R: Copy>(fail: R, f: impl FnOnce() -> EglResult<R>) -> R {
     r.unwrap_or(fail)
 }
 
-/// `EGL_TRUE` for `Ok(())`.
-fn boolean(r: EglResult<()>) -> EglResult<EGLBoolean> {
-    r.map(|()| EGL_TRUE)
+/// [`call`] with the display checked and its state locked.
+fn on_display<R: Copy>(dpy: EGLDisplay, fail: R, f: impl FnOnce(&mut Egl) -> EglResult<R>) -> R {
+    call(fail, || {
+        let mut egl = egl_state();
+        egl.check(dpy)?;
+        f(&mut egl)
+    })
 }
 
 /// Most pairs an attribute list may hold (a longer one lacks its `EGL_NONE`).

@@ -89,11 +89,9 @@ pub unsafe extern "C" fn eglCreatePbufferSurface(
 /// to a current context keeps its buffer until released.
 #[no_mangle]
 pub extern "C" fn eglDestroySurface(dpy: EGLDisplay, surface: EGLSurface) -> EGLBoolean {
-    call(EGL_FALSE, || {
-        let mut egl = egl_state();
-        egl.check(dpy)?;
-        egl.surfaces.remove(&(surface as usize)).ok_or(EGL_BAD_SURFACE)?;
-        Ok(EGL_TRUE)
+    on_display(dpy, EGL_FALSE, |egl| match egl.surfaces.remove(&(surface as usize)) {
+        Some(_) => Ok(EGL_TRUE),
+        None => Err(EGL_BAD_SURFACE),
     })
 }
 
