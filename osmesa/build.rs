@@ -3,7 +3,9 @@
 //! to the `libOSMesa.so` cargo writes into `<target>/<profile>/deps/` (every
 //! build writes that one; `cargo test` does not copy it up to `<profile>/`).
 //! That directory is what `LD_LIBRARY_PATH` names for programs built against
-//! Mesa's OSMesa.
+//! Mesa's OSMesa. `<target>/<profile>/egl/` holds the same library as
+//! `libEGL.so.1`, `libGL.so.1` and `libOpenGL.so.0` (and their `.so` names),
+//! for EGL programs (piglit, PyOpenGL with `PYOPENGL_PLATFORM=egl`).
 
 use std::path::{Path, PathBuf};
 
@@ -14,9 +16,25 @@ fn main() {
         println!("cargo:warning=could not locate the target directory; libOSMesa.so.8 links not made");
         return;
     };
-    let dir = profile_dir.join("osmesa");
-    if let Err(e) = link_dir(&dir) {
-        println!("cargo:warning=could not make {}: {e}", dir.display());
+    let dirs: [(&str, &[&str]); 2] = [
+        ("osmesa", &["libOSMesa.so.8", "libOSMesa.so"]),
+        (
+            "egl",
+            &[
+                "libEGL.so.1",
+                "libEGL.so",
+                "libGL.so.1",
+                "libGL.so",
+                "libOpenGL.so.0",
+                "libOpenGL.so",
+            ],
+        ),
+    ];
+    for (name, links) in dirs {
+        let dir = profile_dir.join(name);
+        if let Err(e) = link_dir(&dir, links) {
+            println!("cargo:warning=could not make {}: {e}", dir.display());
+        }
     }
 }
 
@@ -26,9 +44,9 @@ fn profile_dir() -> Option<PathBuf> {
     out.ancestors().nth(3).map(Path::to_path_buf)
 }
 
-fn link_dir(dir: &Path) -> std::io::Result<()> {
+fn link_dir(dir: &Path, links: &[&str]) -> std::io::Result<()> {
     std::fs::create_dir_all(dir)?;
-    for name in ["libOSMesa.so.8", "libOSMesa.so"] {
+    for name in links {
         let link = dir.join(name);
         if std::fs::symlink_metadata(&link).is_ok() {
             std::fs::remove_file(&link)?;

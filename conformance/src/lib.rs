@@ -10,12 +10,14 @@
 //! - [`metrics`]: distances between images;
 //! - [`missing`]: what a check does when a reference is not installed;
 //! - [`run`]: one scene on every back end, compared;
-//! - [`report`]: `report.md`, `error_vs_time.png`, `backends.png` and diff images.
+//! - [`report`]: `report.md`, `error_vs_time.png`, `backends.png` and diff images;
+//! - [`piglit`]: piglit's GL 1.x groups on softgl beside llvmpipe.
 
 pub mod backend;
 pub mod call;
 pub mod metrics;
 pub mod missing;
+pub mod piglit;
 pub mod report;
 pub mod run;
 pub mod scenes;

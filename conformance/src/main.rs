@@ -3,7 +3,7 @@
 //! hidden, is the harness re-run as a Mesa reference; see `backend::child`.)
 
 use clap::{Parser, Subcommand};
-use softgl_conformance::{backend, report, scenes};
+use softgl_conformance::{backend, piglit, report, scenes};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -38,6 +38,11 @@ enum Command {
     },
     /// The scenes: name, group, and the reason for the tolerance.
     List,
+    /// Markdown: softgl's piglit GL 1.x results in RESULTS_DIR beside llvmpipe's.
+    Piglit {
+        /// A `piglit run` results directory.
+        results: PathBuf,
+    },
     #[command(hide = true)]
     Child(backend::child::ChildArgs),
 }
@@ -51,6 +56,7 @@ fn main() -> ExitCode {
             }
             Ok(())
         }
+        Command::Piglit { results } => piglit::section(&results).map(|md| print!("{md}")),
         Command::Report {
             out,
             runs,

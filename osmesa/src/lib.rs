@@ -13,12 +13,16 @@
 //!   into the caller's at `glFlush`, `glFinish` and when the context stops
 //!   being current, which is when Mesa's gallium OSMesa copies too.
 //!
+//! - The same library is also an EGL 1.5 `libEGL.so.1` and a `libGL.so.1`
+//!   (see [`egl`]): an EGL context is an OSMesa context drawing into a pbuffer.
+//!
 //! `unsafe` lives in this crate only, one `// SAFETY:` line per block.
 #![allow(non_snake_case)]
 
 mod api;
 pub mod consts;
 mod convert;
+pub mod egl;
 mod gl;
 mod gl_state;
 mod state;

@@ -151,6 +151,25 @@ impl OsContext {
         self.clamp = clamp;
     }
 
+    /// A context drawing into `fb`, a buffer softgl owns (EGL's pbuffers),
+    /// created as an RGBA one with these depth and stencil sizes.
+    pub fn with_framebuffer(fb: Framebuffer, depth_bits: i32, stencil_bits: i32) -> OsContext {
+        let mut os = OsContext::new(OSMESA_RGBA, depth_bits, stencil_bits);
+        os.gl = Some(Box::new(Context::with_framebuffer(fb)));
+        os
+    }
+
+    /// Draws into `fb` from now on (state kept); the previous framebuffer.
+    pub fn swap_framebuffer(&mut self, fb: Framebuffer) -> Option<Framebuffer> {
+        match &mut self.gl {
+            Some(gl) => Some(gl.replace_framebuffer(fb)),
+            None => {
+                self.gl = Some(Box::new(Context::with_framebuffer(fb)));
+                None
+            }
+        }
+    }
+
     /// Depth bits of the buffer Mesa's llvmpipe OSMesa makes: Z16 (2 bytes a
     /// value) for 1 to 16 bits without stencil, else Z24 in 32 bits (Z24S8
     /// with stencil), also for 32 (measured: `GL_DEPTH_BITS` says 16 or 24).
@@ -410,6 +429,22 @@ pub fn release_current() {
     if let Some((_, prev)) = CURRENT.with(|cur| cur.borrow_mut().take()) {
         lock(&prev).flush();
     }
+}
+
+/// Makes `shared` (handle `h`) this thread's current context without flushing
+/// anything (EGL's make-current does its own bookkeeping); the one it replaces.
+pub fn replace_current(h: usize, shared: Shared) -> Option<(usize, Shared)> {
+    CURRENT.with(|cur| cur.borrow_mut().replace((h, shared)))
+}
+
+/// Empties this thread's slot if it holds handle `h` (safe during thread exit).
+pub fn clear_current_if(h: usize) {
+    let _ = CURRENT.try_with(|cur| {
+        let mut cur = cur.borrow_mut();
+        if cur.as_ref().is_some_and(|(c, _)| *c == h) {
+            *cur = None;
+        }
+    });
 }
 
 /// This thread's current context.

@@ -81,7 +81,10 @@ pub fn run(opts: &Options, exe: &Path) -> Result<(), String> {
     plot::error_vs_time(&results, &names, &opts.out.join("error_vs_time.png"))?;
     plot::backends(&results, &names, &opts.out.join("backends.png"))?;
     std::fs::write(opts.out.join("results.csv"), csv(&results)).map_err(|e| e.to_string())?;
-    let md = markdown(&results, &names, &available, opts, &diffs);
+    let mut md = markdown(&results, &names, &available, opts, &diffs);
+    if let Some(dir) = crate::piglit::results_dir(exe) {
+        md += &crate::piglit::section(&dir)?;
+    }
     std::fs::write(opts.out.join("report.md"), &md).map_err(|e| e.to_string())?;
     println!("{}", summary(&results, &names));
     println!("wrote {}", opts.out.join("report.md").display());

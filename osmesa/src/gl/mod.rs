@@ -24,7 +24,7 @@ macro_rules! exports {
 mod arrays;
 mod attrib;
 mod enums;
-mod get;
+pub(crate) mod get;
 mod immediate;
 mod lists;
 mod missing;
