@@ -314,17 +314,7 @@ fn random_smooth_triangles_depth_tested() {
 
 #[test]
 fn perspective_triangles_clipped_at_near_and_sides() {
-    // Depth: clipped triangles whose f32 setup softgl does not reproduce step for step; most of these
-    // triangles are clipped at the near plane; two pixels differ by 1.
-    check(
-        "2",
-        Budget {
-            color_pixels: 2,
-            depth_values: 1693,
-            depth_max: 32,
-            ..EXACT
-        },
-    );
+    check("2", EXACT);
 }
 
 #[test]
@@ -405,8 +395,8 @@ fn polygon_offset_depth_values() {
     check(
         "8b",
         Budget {
-            depth_values: 3412,
-            depth_max: 3,
+            depth_values: 119,
+            depth_max: 2,
             ..EXACT
         },
     );
@@ -429,8 +419,8 @@ fn viewport_inside_a_larger_framebuffer() {
     check(
         "10",
         Budget {
-            depth_values: 559,
-            depth_max: 57,
+            depth_values: 397,
+            depth_max: 36,
             ..EXACT
         },
     );

@@ -2,10 +2,12 @@
 //! and against a guard band in x and y (the rasterizer then bounds fragments to
 //! the viewport, which is exact clipping without new vertices on the sides).
 //!
-//! Clip coordinates are f64 here. A polygon whose vertices are all far outside
-//! (up to f32::MAX) is brought in through guard bands 10^8 apart, so each
-//! intersection is computed from endpoints at most 10^8 times larger than the
-//! plane it lands on (f64 keeps ~16 digits, leaving 8). The last step, onto the
+//! Clip coordinates are f64 here. A primitive with a coordinate beyond 10^4,
+//! or with a vertex (`w > 0`) outside the 10^4 guard band, is brought in
+//! through guard bands 10^8 apart, so each intersection is computed from
+//! endpoints at most 10^8 times larger than the plane it lands on (f64 keeps
+//! ~16 digits, leaving 8); any other goes straight to the last step, as in
+//! llvmpipe (which has no guard band). The last step, onto the
 //! view volume itself, computes in f32 exactly as llvmpipe's clipper does
 //! (`draw_pipe_clip.c`), so that clipped vertices, and the colours and depths
 //! interpolated from them, carry the same bits. Polygons: planes right, left,
@@ -27,6 +29,26 @@ pub struct ClipVertex {
 
 /// Scales of the nested guard bands, outermost first, relative to the final one.
 pub const GUARD_LEVELS: [f64; 6] = [1e32, 1e24, 1e16, 1e8, 1e4, 1.0];
+
+/// A primitive whose clip coordinates are all within this magnitude, and whose
+/// vertices with `w > 0` are all inside the guard band of this scale, is
+/// clipped in one f32 step, as llvmpipe clips it (a vertex with `w <= 0` is
+/// outside every guard band, and would otherwise be brought in through all of
+/// them, near and far planes first).
+const DIRECT_BOUND: f64 = 1e4;
+
+/// The guard scales to clip `vertices` through: all of them for a primitive
+/// beyond `DIRECT_BOUND`, else the view volume alone.
+pub fn guard_levels<'a>(mut vertices: impl Iterator<Item = &'a ClipVertex>) -> &'static [f64] {
+    let near = |v: &ClipVertex| {
+        v.pos.abs().max_element() <= DIRECT_BOUND && (v.pos.w <= 0.0 || outcode(v.pos, DIRECT_BOUND) & 0b11_1100 == 0)
+    };
+    if vertices.all(near) {
+        &GUARD_LEVELS[GUARD_LEVELS.len() - 1..]
+    } else {
+        &GUARD_LEVELS
+    }
+}
 
 /// The order llvmpipe clips against the view volume's planes (indices as in `dist`).
 const FINAL_ORDER: [usize; 6] = [3, 2, 5, 4, 0, 1];
