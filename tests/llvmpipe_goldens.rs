@@ -309,41 +309,17 @@ fn check_against_llvmpipe(name: &str, gl: &Context, budget: Budget) {
 
 #[test]
 fn random_smooth_triangles_depth_tested() {
-    // Depth: clipped triangles whose f32 setup softgl does not reproduce step for step.
-    check(
-        "1",
-        Budget {
-            depth_values: 117,
-            depth_max: 25,
-            ..EXACT
-        },
-    );
+    check("1", EXACT);
 }
 
 #[test]
 fn perspective_triangles_clipped_at_near_and_sides() {
-    // The same, more often: most of these triangles are clipped; two pixels differ by 1.
-    check(
-        "2",
-        Budget {
-            color_pixels: 2,
-            depth_values: 1977,
-            depth_max: 32,
-            ..EXACT
-        },
-    );
+    check("2", EXACT);
 }
 
 #[test]
 fn triangles_with_huge_coordinates() {
-    check(
-        "3",
-        Budget {
-            depth_values: 3537,
-            depth_max: 2,
-            ..EXACT
-        },
-    );
+    check("3", EXACT);
 }
 
 #[test]
@@ -419,8 +395,8 @@ fn polygon_offset_depth_values() {
     check(
         "8b",
         Budget {
-            depth_values: 3412,
-            depth_max: 3,
+            depth_values: 119,
+            depth_max: 2,
             ..EXACT
         },
     );
@@ -443,8 +419,8 @@ fn viewport_inside_a_larger_framebuffer() {
     check(
         "10",
         Budget {
-            depth_values: 559,
-            depth_max: 57,
+            depth_values: 397,
+            depth_max: 36,
             ..EXACT
         },
     );

@@ -2,15 +2,21 @@
 //! and against a guard band in x and y (the rasterizer then bounds fragments to
 //! the viewport, which is exact clipping without new vertices on the sides).
 //!
-//! Clip coordinates are f64 here. A vertex far outside (up to f32::MAX) is
-//! brought in through guard bands 10^8 apart, so each intersection is computed
-//! from endpoints at most 10^8 times larger than the plane it lands on (f64
-//! keeps ~16 digits, leaving 8). The last step, onto the view volume itself,
-//! computes in f32 exactly as llvmpipe's clipper does (planes right, left, top,
-//! bottom, near, far; `out + t·(in − out)` with `t = d_out / (d_out − d_in)`),
-//! so that clipped vertices, and the colors and depths interpolated from
-//! them, carry the same bits; its inputs are then within 10^4 of the volume,
-//! where f32 is accurate to 10^-3 of a viewport.
+//! Clip coordinates are f64 here. A primitive with a coordinate beyond 10^4,
+//! or with a vertex (`w > 0`) outside the 10^4 guard band, is brought in
+//! through guard bands 10^8 apart, so each intersection is computed from
+//! endpoints at most 10^8 times larger than the plane it lands on (f64 keeps
+//! ~16 digits, leaving 8); any other goes straight to the last step, as in
+//! llvmpipe (which has no guard band). The last step, onto the
+//! view volume itself, computes in f32 exactly as llvmpipe's clipper does
+//! (`draw_pipe_clip.c`), so that clipped vertices, and the colours and depths
+//! interpolated from them, carry the same bits. Polygons: planes right, left,
+//! top, bottom, near, far; each crossing is `a + t·(b − a)`,
+//! `t = d_a / (d_a − d_b)`, from the endpoint `a` nearer the plane (the inside
+//! one on a tie), so `t` is small and a far endpoint (1e38, or a guard-band
+//! vertex rounded to f32) moves the crossing only by its rounding times `t`.
+//! Lines: each end is moved once from the ends the step starts from, by the
+//! largest `t` of the planes it is outside of.
 
 use glam::{DVec4, Vec4};
 
@@ -23,6 +29,26 @@ pub struct ClipVertex {
 
 /// Scales of the nested guard bands, outermost first, relative to the final one.
 pub const GUARD_LEVELS: [f64; 6] = [1e32, 1e24, 1e16, 1e8, 1e4, 1.0];
+
+/// A primitive whose clip coordinates are all within this magnitude, and whose
+/// vertices with `w > 0` are all inside the guard band of this scale, is
+/// clipped in one f32 step, as llvmpipe clips it (a vertex with `w <= 0` is
+/// outside every guard band, and would otherwise be brought in through all of
+/// them, near and far planes first).
+const DIRECT_BOUND: f64 = 1e4;
+
+/// The guard scales to clip `vertices` through: all of them for a primitive
+/// beyond `DIRECT_BOUND`, else the view volume alone.
+pub fn guard_levels<'a>(mut vertices: impl Iterator<Item = &'a ClipVertex>) -> &'static [f64] {
+    let near = |v: &ClipVertex| {
+        v.pos.abs().max_element() <= DIRECT_BOUND && (v.pos.w <= 0.0 || outcode(v.pos, DIRECT_BOUND) & 0b11_1100 == 0)
+    };
+    if vertices.all(near) {
+        &GUARD_LEVELS[GUARD_LEVELS.len() - 1..]
+    } else {
+        &GUARD_LEVELS
+    }
+}
 
 /// The order llvmpipe clips against the view volume's planes (indices as in `dist`).
 const FINAL_ORDER: [usize; 6] = [3, 2, 5, 4, 0, 1];
@@ -46,14 +72,25 @@ impl ClipVertex {
         ClipVertex { pos, color }
     }
 
-    /// The crossing as llvmpipe computes it, in f32: `out + t·(in − out)`,
-    /// `t = d_out / (d_out − d_in)`, with `self` and `o` the inside and
-    /// outside vertices.
+    /// The crossing as llvmpipe computes it, in f32: `a + t·(b − a)`,
+    /// `t = d_a / (d_a − d_b)`, from the endpoint `a` nearer the plane (the
+    /// inside one on a tie), so that `t` is small and the far endpoint's
+    /// magnitude cancels out. `d_in` and `d_out` are the distances of the
+    /// inside vertex `self` and the outside vertex `o`.
     fn crossing_f32(&self, o: &ClipVertex, d_in: f32, d_out: f32) -> ClipVertex {
-        let t = d_out / (d_out - d_in);
-        let (pin, pout) = (self.pos.as_vec4(), o.pos.as_vec4());
-        let pos = (pout + (pin - pout) * t).as_dvec4();
-        let color = o.color + (self.color - o.color) * t;
+        let (a, b, da, db) = if -d_out < d_in {
+            (o, self, d_out, d_in)
+        } else {
+            (self, o, d_in, d_out)
+        };
+        a.lerp_f32(b, da / (da - db))
+    }
+
+    /// `self + t·(o − self)` in f32, position and colour alike.
+    fn lerp_f32(&self, o: &ClipVertex, t: f32) -> ClipVertex {
+        let (pa, pb) = (self.pos.as_vec4(), o.pos.as_vec4());
+        let pos = (pa + (pb - pa) * t).as_dvec4();
+        let color = self.color + (o.color - self.color) * t;
         ClipVertex { pos, color }
     }
 }
@@ -136,33 +173,59 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64) {
     }
 }
 
-/// Clips segment `a → b` to the planes in `planes` at guard scale `g`
-/// one plane after another; `None` when nothing is left.
+/// Clips segment `a → b` to the planes in `planes` at guard scale `g`;
+/// `None` when nothing is left. The guard bands clip one plane after another
+/// in f64; the view volume itself is clipped as llvmpipe clips a line: in f32,
+/// each end moved once from the ends `a`, `b` by the largest `t` over the
+/// planes it is outside of.
 pub fn clip_segment(a: &ClipVertex, b: &ClipVertex, planes: u8, g: f64) -> Option<(ClipVertex, ClipVertex)> {
+    if g == 1.0 {
+        return clip_segment_f32(a, b, planes);
+    }
     let (mut a, mut b) = (*a, *b);
-    let last = g == 1.0;
-    let order = if last { FINAL_ORDER } else { [0, 1, 2, 3, 4, 5] };
-    for k in order {
+    for k in 0..6 {
         if planes & (1 << k) == 0 {
             continue;
         }
-        if last {
-            let (da, db) = (dist_f32(a.pos, k), dist_f32(b.pos, k));
-            match (da >= 0.0, db >= 0.0) {
-                (false, false) => return None,
-                (true, true) => {}
-                (false, true) => a = b.crossing_f32(&a, db, da),
-                (true, false) => b = a.crossing_f32(&b, da, db),
-            }
-        } else {
-            let (da, db) = (dist(a.pos, k, g), dist(b.pos, k, g));
-            match (da >= 0.0, db >= 0.0) {
-                (false, false) => return None,
-                (true, true) => {}
-                (false, true) => a = a.crossing(&b, da, db),
-                (true, false) => b = a.crossing(&b, da, db),
-            }
+        let (da, db) = (dist(a.pos, k, g), dist(b.pos, k, g));
+        match (da >= 0.0, db >= 0.0) {
+            (false, false) => return None,
+            (true, true) => {}
+            (false, true) => a = a.crossing(&b, da, db),
+            (true, false) => b = a.crossing(&b, da, db),
         }
     }
     Some((a, b))
+}
+
+/// llvmpipe's line clip: `t0`, `t1` the largest `d_out / (d_out − d_in)` of
+/// each end over the planes, the segment gone when `t0 + t1 >= 1`.
+fn clip_segment_f32(a: &ClipVertex, b: &ClipVertex, planes: u8) -> Option<(ClipVertex, ClipVertex)> {
+    let (mut t0, mut t1) = (0.0f32, 0.0f32);
+    for k in FINAL_ORDER {
+        if planes & (1 << k) == 0 {
+            continue;
+        }
+        let (d0, d1) = (dist_f32(a.pos, k), dist_f32(b.pos, k));
+        if d1 < 0.0 {
+            t1 = t1.max(d1 / (d1 - d0));
+        }
+        if d0 < 0.0 {
+            t0 = t0.max(d0 / (d0 - d1));
+        }
+        if t0 + t1 >= 1.0 {
+            return None;
+        }
+    }
+    let a2 = if outcode(a.pos, 1.0) != 0 {
+        a.lerp_f32(b, t0)
+    } else {
+        *a
+    };
+    let b2 = if outcode(b.pos, 1.0) != 0 {
+        b.lerp_f32(a, t1)
+    } else {
+        *b
+    };
+    Some((a2, b2))
 }

@@ -11,7 +11,7 @@ use crate::raster::{self, RasterParams, RasterVertex, SpanSink};
 use crate::state::{FrontFace, PolygonMode, RasterState, ShadeModel};
 use assemble::{assemble, Primitive, QuadSplit};
 use batch::VertexBatch;
-use clip::{clip_polygon, clip_segment, outcode, ClipVertex, PolyVertex, GUARD_LEVELS};
+use clip::{clip_polygon, clip_segment, guard_levels, outcode, ClipVertex, PolyVertex};
 use glam::{Mat4, Vec4};
 
 pub use crate::state::PrimitiveMode;
@@ -195,7 +195,7 @@ impl<'s> Geometry<'s> {
             return;
         }
         let (mut a, mut b) = (*a, *b);
-        for g in GUARD_LEVELS {
+        for &g in guard_levels([a, b].iter()) {
             let planes = outcode(a.pos, g) | outcode(b.pos, g);
             if planes != 0 {
                 let Some(clipped) = clip_segment(&a, &b, planes, g) else {
@@ -219,7 +219,7 @@ impl<'s> Geometry<'s> {
         }
         let mut clipped: Vec<PolyVertex> = poly.to_vec();
         let mut was_clipped = false;
-        for g in GUARD_LEVELS {
+        for &g in guard_levels(poly.iter().map(|(v, _)| v)) {
             let planes = clipped.iter().fold(0, |acc, (v, _)| acc | outcode(v.pos, g));
             if planes != 0 {
                 clip_polygon(&mut clipped, planes, g);

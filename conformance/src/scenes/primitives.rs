@@ -51,7 +51,7 @@ pub fn scenes() -> Vec<Scene> {
         Scene::new("polygon_mode", G, POLYGON_EDGES, polygon_mode),
         Scene::new("polygon_offset", G, E, polygon_offset),
         Scene::new("vertex_arrays", G, E, vertex_arrays),
-        Scene::new("perspective_clipped", G, Tolerance::one_lsb(0, 1), perspective),
+        Scene::new("perspective_clipped", G, E, perspective),
     ]
 }
 

@@ -23,7 +23,7 @@ pub fn scenes() -> Vec<Scene> {
         Scene::new("clear", G, E, clear),
         Scene::new("smooth_triangles", G, E, smooth_triangles),
         Scene::new("flat_triangles", G, E, flat_triangles),
-        Scene::new("depth_less", G, Tolerance::one_lsb(0, 1), depth_less),
+        Scene::new("depth_less", G, E, depth_less),
         Scene::new("depth_funcs", G, E, depth_funcs),
         Scene::new("depth_mask_off", G, E, depth_mask_off),
         Scene::new("depth_range", G, E, depth_range),
