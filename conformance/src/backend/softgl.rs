@@ -10,6 +10,9 @@ use std::time::Instant;
 pub struct Softgl {
     backend: softgl::Backend,
     name: String,
+    /// softgl's opt-in ordered dither (`Context::set_ordered_dither`), off by
+    /// default: the report shows what it costs against llvmpipe, which never dithers.
+    dither: bool,
 }
 
 impl Softgl {
@@ -21,6 +24,17 @@ impl Softgl {
         Softgl {
             backend,
             name: name.to_string(),
+            dither: false,
+        }
+    }
+
+    /// The JIT with the opt-in 4x4 ordered dither on ("softgl-jit-dither"):
+    /// the error it buys on 5-6-5 buffers, on the report's plots.
+    pub fn dithered() -> Softgl {
+        Softgl {
+            backend: softgl::Backend::Jit,
+            name: "softgl-jit-dither".to_string(),
+            dither: true,
         }
     }
 }
@@ -45,6 +59,7 @@ impl Backend for Softgl {
             Err(e) => return Outcome::Failed(format!("context: {e}")),
         };
         gl.set_backend(self.backend);
+        gl.set_ordered_dither(self.dither);
         let frame = |gl: &mut Context| {
             let t = Instant::now();
             for c in &rec.calls {

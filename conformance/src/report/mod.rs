@@ -55,6 +55,8 @@ pub fn run(opts: &Options, exe: &Path) -> Result<(), String> {
     let _ = std::fs::remove_dir_all(opts.out.join("diff"));
     std::fs::create_dir_all(opts.out.join("diff")).map_err(|e| format!("{}: {e}", opts.out.display()))?;
     let mut backends = backend::all(exe);
+    // The opt-in dither knob, measured like a back end (report only).
+    backends.push(Box::new(backend::softgl::Softgl::dithered()));
     let cache = std::env::temp_dir().join(format!("softgl-conformance-cache-{}", std::process::id()));
     if opts.warm {
         backends.insert(1, Box::new(External::warm(Reference::Llvmpipe, exe, &cache)));
