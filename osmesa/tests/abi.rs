@@ -638,3 +638,29 @@ fn releasing_a_converted_format_copies_its_last_frame() {
     assert_eq!(floats, [0.0, 0.0, 1.0, 1.0]);
     OSMesaDestroyContext(ctx);
 }
+
+#[test]
+fn a_draw_without_arrays_between_begin_and_end_is_invalid_operation() {
+    const GL_COMPILE: u32 = 0x1300;
+    let mut buf = vec![0u8; 4 * 4 * 4];
+    let ctx = current(&mut buf, 4, 4);
+    // No vertex array enabled: GL draws nothing, but inside glBegin/glEnd
+    // the draw is still an error (piglit's gl-1.0-dlist-beginend).
+    glBegin(GL_TRIANGLES);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnd();
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    // Recorded in a list, the error comes when the list runs inside glBegin.
+    let list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEndList();
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    glBegin(GL_TRIANGLES);
+    glCallList(list);
+    glEnd();
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    OSMesaDestroyContext(ctx);
+}

@@ -131,6 +131,15 @@ fn draw(
     indices: &mut dyn Iterator<Item = usize>,
 ) -> GlResult {
     let Some(f) = gather(os, mode, indices)? else {
+        // Without a vertex array GL draws nothing, but the draw is still a
+        // draw: between glBegin and glEnd (now, or when a list holding it
+        // runs) it is GL_INVALID_OPERATION.
+        let cmd: Cmd = std::sync::Arc::new(|_: &mut GlState, gl: &mut Context| {
+            if gl.inside_begin() {
+                gl.record_error(GlError::InvalidOperation);
+            }
+        });
+        run_or_record(os, gl, cmd);
         return Ok(());
     };
     let cmd: Cmd = std::sync::Arc::new(move |_: &mut GlState, gl: &mut Context| {
