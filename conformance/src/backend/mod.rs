@@ -86,6 +86,15 @@ impl std::fmt::Display for Unavailable {
 }
 
 /// The median of `t` (empty: zero).
+impl Timing {
+    /// The first frame and the median of the `runs` frames after it in `times`.
+    pub fn measured(first: Duration, mut times: Vec<Duration>, runs: usize) -> Timing {
+        let steady = if runs == 0 { first } else { median(&mut times) };
+        Timing { first, steady, runs }
+    }
+}
+
+/// The median of `t` (zero when empty).
 pub fn median(t: &mut [Duration]) -> Duration {
     t.sort();
     t.get(t.len() / 2).copied().unwrap_or_default()

@@ -2,7 +2,7 @@
 //! time. Runs inside a child process: the Gallium driver (`GALLIUM_DRIVER`)
 //! is fixed when the library loads.
 
-use super::{median, Outcome, Timing};
+use super::{Outcome, Timing};
 use crate::call::{clear_bits, Call};
 use crate::scenes::Recording;
 use softgl::{ColorFormat, GlEnum};
@@ -319,18 +319,17 @@ pub fn render(mesa: &OsMesa, rec: &Recording, runs: usize) -> (Outcome, String) 
     let t = Instant::now();
     let image = ctx.frame(&rec.calls);
     let first = t.elapsed();
-    let mut times: Vec<_> = (0..runs)
+    let times: Vec<_> = (0..runs)
         .map(|_| {
             let t = Instant::now();
             ctx.frame(&rec.calls);
             t.elapsed()
         })
         .collect();
-    let steady = if runs == 0 { first } else { median(&mut times) };
     (
         Outcome::Rendered {
             image,
-            timing: Timing { first, steady, runs },
+            timing: Timing::measured(first, times, runs),
             compiles: None,
         },
         renderer,

@@ -1,6 +1,6 @@
 //! softgl itself, in process, through its public API.
 
-use super::{median, Backend, Compiles, Outcome, Timing};
+use super::{Backend, Compiles, Outcome, Timing};
 use crate::call::Call;
 use crate::scenes::Scene;
 use softgl::{Context, FramebufferDesc, GlResult, VertexArrays};
@@ -72,8 +72,7 @@ impl Backend for Softgl {
         };
         let (image, first) = frame(&mut gl);
         let after_first = gl.specialist_stats();
-        let mut times: Vec<_> = (0..runs).map(|_| frame(&mut gl).1).collect();
-        let steady = if runs == 0 { first } else { median(&mut times) };
+        let times: Vec<_> = (0..runs).map(|_| frame(&mut gl).1).collect();
         let end = gl.specialist_stats();
         let compiles = (self.backend == softgl::Backend::Jit).then_some(Compiles {
             first: after_first.misses,
@@ -83,7 +82,7 @@ impl Backend for Softgl {
         });
         Outcome::Rendered {
             image,
-            timing: Timing { first, steady, runs },
+            timing: Timing::measured(first, times, runs),
             compiles,
         }
     }

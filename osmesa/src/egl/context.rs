@@ -302,11 +302,6 @@ pub unsafe extern "C" fn eglQueryContext(
             EGL_RENDER_BUFFER => EGL_NONE,
             _ => return Err(EGL_BAD_ATTRIBUTE),
         };
-        if value.is_null() {
-            return Err(EGL_BAD_PARAMETER);
-        }
-        // SAFETY: checked non-null; writable by the caller's contract.
-        unsafe { *value = v };
-        Ok(EGL_TRUE)
+        answer(value, v)
     })
 }

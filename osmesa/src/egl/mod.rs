@@ -220,6 +220,17 @@ unsafe fn int_attribs(list: *const EGLint) -> EglResult<Vec<(EGLint, EGLint)>> {
 }
 
 /// A 1×1 buffer for a context with no surface: GL calls work, draw nowhere visible.
+/// Writes an attribute query's answer to the caller's `value`:
+/// `EGL_BAD_PARAMETER` when it is NULL.
+fn answer(value: *mut EGLint, v: EGLint) -> EglResult<EGLBoolean> {
+    if value.is_null() {
+        return Err(EGL_BAD_PARAMETER);
+    }
+    // SAFETY: checked non-null; writable by the caller's contract.
+    unsafe { *value = v };
+    Ok(EGL_TRUE)
+}
+
 fn placeholder() -> Framebuffer {
     let desc = softgl::FramebufferDesc {
         width: 1,

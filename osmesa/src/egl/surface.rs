@@ -132,12 +132,7 @@ pub unsafe extern "C" fn eglQuerySurface(
             EGL_VG_ALPHA_FORMAT => EGL_VG_ALPHA_FORMAT_NONPRE,
             _ => return Err(EGL_BAD_ATTRIBUTE),
         };
-        if value.is_null() {
-            return Err(EGL_BAD_PARAMETER);
-        }
-        // SAFETY: checked non-null; writable by the caller's contract.
-        unsafe { *value = v };
-        Ok(EGL_TRUE)
+        answer(value, v)
     })
 }
 

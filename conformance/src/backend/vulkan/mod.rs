@@ -21,7 +21,7 @@ mod frame;
 mod pipeline;
 mod plan;
 
-use super::{median, Outcome, Timing};
+use super::{Outcome, Timing};
 use crate::scenes::Recording;
 pub use device::installed;
 use device::Gpu;
@@ -56,11 +56,10 @@ pub fn render(rec: &Recording, runs: usize) -> (Outcome, String) {
         }
         times.push(t.elapsed());
     }
-    let steady = if runs == 0 { first } else { median(&mut times) };
     (
         Outcome::Rendered {
             image,
-            timing: Timing { first, steady, runs },
+            timing: Timing::measured(first, times, runs),
             compiles: None,
         },
         name,
