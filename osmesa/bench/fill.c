@@ -1,0 +1,71 @@
+/* Fill, depth and lit frames at 1024x1024 through the OSMesa C ABI, for Mesa
+ * and softgl in one run (not a test; osmesa/bench/compare.sh runs it):
+ *   cc -O2 osmesa/bench/fill.c -o /tmp/fill -lOSMesa -lGLU -lm
+ *   LP_NUM_THREADS=1 /tmp/fill CASE                                 # Mesa llvmpipe
+ *   LD_LIBRARY_PATH=$PWD/target/release/osmesa /tmp/fill CASE       # softgl
+ * CASE: fill (16 full-screen smooth-shaded quads, no depth), depth (16 full-screen
+ * quads, depth test LESS, nearer each time so every fragment passes), tris (20k random
+ * triangles of ~2000 px, depth test), lit (a GLU sphere of 1000x800 slices/stacks,
+ * ~1.6 M triangles, one infinite light, depth test). Prints one line: the case, the
+ * median ms of the frames, and fragments (or triangles) per second. */
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glu.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+static double now(void){struct timespec t;clock_gettime(CLOCK_MONOTONIC,&t);return t.tv_sec+t.tv_nsec*1e-9;}
+static int cmp(const void*a,const void*b){double x=*(const double*)a,y=*(const double*)b;return x<y?-1:x>y;}
+#define W 1024
+#define H 1024
+static float tri[20000*9], col[20000*9];
+static void quads(int depth){
+  for(int k=0;k<16;k++){
+    float z = depth ? 0.9f - k*0.1f : 0.0f;
+    glBegin(GL_QUADS);
+    glColor3f(1,0,0); glVertex3f(-1,-1,z);
+    glColor3f(0,1,0); glVertex3f( 1,-1,z);
+    glColor3f(0,0,1); glVertex3f( 1, 1,z);
+    glColor3f(1,1,(k&1)?1.f:0.f); glVertex3f(-1, 1,z);
+    glEnd();
+  }
+}
+int main(int argc,char**argv){
+  const char*c = argc>1 ? argv[1] : "fill";
+  int frames = argc>2 ? atoi(argv[2]) : 9;
+  unsigned char*buf=malloc((size_t)W*H*4);
+  OSMesaContext ctx=OSMesaCreateContextExt(OSMESA_RGBA,24,8,0,NULL);
+  if(!ctx||!OSMesaMakeCurrent(ctx,buf,GL_UNSIGNED_BYTE,W,H)){fprintf(stderr,"no context\n");return 1;}
+  GLUquadric*q=gluNewQuadric();
+  srand(1);
+  for(int t=0;t<20000;t++){float cx=(rand()/(float)RAND_MAX)*1.8f-0.9f, cy=(rand()/(float)RAND_MAX)*1.8f-0.9f; for(int v=0;v<3;v++){tri[t*9+v*3]=cx+(rand()/(float)RAND_MAX)*0.2f-0.1f; tri[t*9+v*3+1]=cy+(rand()/(float)RAND_MAX)*0.2f-0.1f; tri[t*9+v*3+2]=(rand()/(float)RAND_MAX)*2-1;}}
+  for(int i=0;i<20000*9;i++) col[i]=rand()/(float)RAND_MAX;
+  double work=0; const char*unit="Mfrag/s";
+  if(!strcmp(c,"fill")){ work=16.0*W*H; }
+  else if(!strcmp(c,"depth")){ glEnable(GL_DEPTH_TEST); work=16.0*W*H; }
+  else if(!strcmp(c,"tris")){ glEnable(GL_DEPTH_TEST);
+    glVertexPointer(3,GL_FLOAT,0,tri); glColorPointer(3,GL_FLOAT,0,col);
+    glEnableClientState(GL_VERTEX_ARRAY); glEnableClientState(GL_COLOR_ARRAY); work=0; unit="ms"; }
+  else if(!strcmp(c,"lit")){ glEnable(GL_DEPTH_TEST); glEnable(GL_LIGHTING); glEnable(GL_LIGHT0);
+    GLfloat pos[4]={1,1,2,0}; glLightfv(GL_LIGHT0,GL_POSITION,pos);
+    GLfloat red[4]={0.8f,0.2f,0.2f,1}; glMaterialfv(GL_FRONT_AND_BACK,GL_AMBIENT_AND_DIFFUSE,red);
+    glMatrixMode(GL_PROJECTION); gluPerspective(40,1,1,20); glMatrixMode(GL_MODELVIEW); gluLookAt(0,0,5,0,0,0,0,1,0);
+    work=2.0*1000*800; unit="Mtri/s"; }
+  else { fprintf(stderr,"unknown case %s\n",c); return 2; }
+  double ms[64]; if(frames>64) frames=64;
+  for(int f=-1; f<frames; f++){
+    double t0=now();
+    glClear(GL_COLOR_BUFFER_BIT|GL_DEPTH_BUFFER_BIT);
+    if(!strcmp(c,"fill")||!strcmp(c,"depth")) quads(!strcmp(c,"depth"));
+    else if(!strcmp(c,"tris")) glDrawArrays(GL_TRIANGLES,0,20000*3);
+    else gluSphere(q,1.5,1000,800);
+    glFinish();
+    if(f>=0) ms[f]=(now()-t0)*1000;
+  }
+  qsort(ms,frames,sizeof ms[0],cmp);
+  double med=ms[frames/2];
+  if(work>0) printf("%s %.2f ms %.1f %s\n",c,med,work/(med*1e-3)/1e6,unit);
+  else printf("%s %.2f ms\n",c,med);
+  return glGetError()!=GL_NO_ERROR;
+}
