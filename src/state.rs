@@ -2,6 +2,7 @@
 //! becomes a [`FragmentKey`] and [`FragmentUniforms`] at draw time.
 
 use crate::framebuffer::{float_to_unorm, Framebuffer};
+use crate::geometry::varying::VaryingLayout;
 use softgl_jit::{
     BlendFactor, BlendKey, ColorMask, CompareFunc, DepthKey, FragmentKey, FragmentUniforms, LogicOp, StencilKey,
     StencilOp,
@@ -306,6 +307,16 @@ impl RasterState {
             color_mask: self.color_mask,
         };
         key.normalized()
+    }
+
+    /// The varyings a draw's vertices carry, from the same state as
+    /// [`Self::fragment_key`]: the primary colour when a stage reads the
+    /// fragment colour (`reads_color`), nothing else yet.
+    pub fn varying_layout(&self, reads_color: bool) -> VaryingLayout {
+        VaryingLayout {
+            color: reads_color,
+            ..VaryingLayout::default()
+        }
     }
 
     /// The values the fragment stages read, in the units they compare in.

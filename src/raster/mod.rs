@@ -14,6 +14,7 @@ pub use point::point;
 pub use triangle::{offset, triangle};
 
 use crate::framebuffer::Rect;
+use crate::geometry::varying::{VaryingLayout, Varyings};
 use softgl_jit::{DepthFormat, FragmentSpan};
 
 /// Sub-pixel bits of the fixed-point grid.
@@ -34,8 +35,8 @@ pub struct RasterVertex {
     pub z: f64,
     /// `1 / w_clip`, for perspective-correct interpolation.
     pub inv_w: f32,
-    /// RGBA in `[0, 1]`.
-    pub color: [f32; 4],
+    /// The varyings of [`RasterParams::layout`] (colours in `[0, 1]`).
+    pub v: Varyings,
 }
 
 /// Receives the spans a primitive covers.
@@ -59,8 +60,9 @@ pub struct RasterParams {
     pub depth: Option<DepthFormat>,
     /// Framebuffer height in pixels.
     pub height: u32,
-    /// Whether any stage reads the fragment color.
-    pub color: bool,
+    /// The varyings the vertices carry; the colour is interpolated only
+    /// when `layout.color` (some stage reads the fragment colour).
+    pub layout: VaryingLayout,
     /// Polygon offset `(factor, units)` for this primitive, if enabled.
     pub offset: Option<(f32, f32)>,
 }

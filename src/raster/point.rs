@@ -32,7 +32,10 @@ pub fn point(v: &RasterVertex, size: f32, params: &RasterParams, sink: &mut dyn 
     if x0 > x1 || y0 > y1 {
         return;
     }
-    let rgba = v.color.map(color_to_unorm8);
+    let rgba = params
+        .layout
+        .color()
+        .map_or([0; 4], |o| [0, 1, 2, 3].map(|c| color_to_unorm8(v.v[o + c])));
     let z = depth_value(v.z, params.depth);
     let mut span = FragmentSpan::new(0, 0);
     for y in y0..=y1 {

@@ -1,6 +1,7 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 
 use super::{ceil_div, color_to_unorm8, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
+use crate::geometry::varying::Varyings;
 use softgl_jit::{DepthFormat, FragmentSpan};
 
 /// `a * b + c` rounded once, as an FMA instruction gives it: the f32 product
@@ -66,8 +67,9 @@ impl Setup {
     }
 }
 
-/// Rasterizes a triangle, either winding. `flat` replaces the interpolated color.
-pub fn triangle(v: [&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterParams, sink: &mut dyn SpanSink) {
+/// Rasterizes a triangle, either winding. `flat` (the provoking vertex's
+/// varyings) replaces the interpolated colours.
+pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams, sink: &mut dyn SpanSink) {
     let mut p = v.map(|v| (snap(v.x), snap(v.y)));
     let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
     if area == 0 || params.bounds.is_empty() {
@@ -144,7 +146,7 @@ struct Shading {
 }
 
 impl Shading {
-    fn new(v: [&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterParams) -> Shading {
+    fn new(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) -> Shading {
         // llvmpipe orders the vertices by the sign of the snapped area in its
         // y-down frame, and swaps the first two when it is negative.
         let mut v = v;
@@ -154,8 +156,9 @@ impl Shading {
             v.swap(0, 1);
         }
         let setup = Setup::new(v.map(|v| (v.x, v.y_down)));
-        let color = (params.color && flat.is_none()).then(|| {
-            let planes = [0, 1, 2, 3].map(|c| setup.plane(v.map(|v| v.color[c] * v.inv_w)));
+        let color_at = params.layout.color();
+        let color = color_at.filter(|_| flat.is_none()).map(|o| {
+            let planes = [0, 1, 2, 3].map(|c| setup.plane(v.map(|v| v.v[o + c] * v.inv_w)));
             (planes, setup.plane(v.map(|v| v.inv_w)))
         });
         let depth = params.depth.map(|f| {
@@ -169,7 +172,9 @@ impl Shading {
         });
         Shading {
             color,
-            flat: flat.filter(|_| params.color).map(|c| c.map(color_to_unorm8)),
+            flat: flat
+                .zip(color_at)
+                .map(|(f, o)| [0, 1, 2, 3].map(|c| color_to_unorm8(f[o + c]))),
             depth,
             height: params.height,
         }

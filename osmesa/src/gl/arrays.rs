@@ -146,6 +146,7 @@ fn draw(
         let arrays = VertexArrays {
             position: AttribArray::new(f.pos_size, &f.pos),
             color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
+            ..VertexArrays::positions(f.pos_size, &f.pos)
         };
         // The context records its own errors (inside begin/end, …).
         let _ = if indexed {
