@@ -92,6 +92,8 @@ struct Fetched {
     pos_size: usize,
     pos: Vec<f32>,
     color: Option<(usize, Vec<f32>)>,
+    secondary: Option<Vec<f32>>,
+    fog_coord: Option<Vec<f32>>,
 }
 
 /// Reads the vertices `indices` names; `None` without a vertex array (GL then draws nothing).
@@ -101,7 +103,9 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         return Ok(None);
     }
     let color = (os.color.enabled && !os.color.ptr.is_null()).then_some(&os.color);
-    let (mut pos, mut col) = (Vec::new(), Vec::new());
+    let secondary = (os.secondary.enabled && !os.secondary.ptr.is_null()).then_some(&os.secondary);
+    let fog_coord = (os.fog_coord.enabled && !os.fog_coord.ptr.is_null()).then_some(&os.fog_coord);
+    let (mut pos, mut col, mut sec, mut fog) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let mut count = 0;
     for i in indices {
         // SAFETY: the enabled arrays hold every element the draw names (GL's contract).
@@ -109,6 +113,12 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
             fetch(&os.vertex, i, false, &mut pos);
             if let Some(c) = color {
                 fetch(c, i, true, &mut col);
+            }
+            if let Some(c) = secondary {
+                fetch(c, i, true, &mut sec);
+            }
+            if let Some(c) = fog_coord {
+                fetch(c, i, false, &mut fog);
             }
         }
         count += 1;
@@ -119,6 +129,8 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         pos_size: os.vertex.size as usize,
         pos,
         color: color.map(|c| (c.size as usize, col)),
+        secondary: secondary.map(|_| sec),
+        fog_coord: fog_coord.map(|_| fog),
     }))
 }
 
@@ -146,6 +158,8 @@ fn draw(
         let arrays = VertexArrays {
             position: AttribArray::new(f.pos_size, &f.pos),
             color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
+            secondary: f.secondary.as_ref().map(|c| AttribArray::new(3, c)),
+            fog_coord: f.fog_coord.as_ref().map(|c| AttribArray::new(1, c)),
         };
         // The context records its own errors (inside begin/end, …).
         let _ = if indexed {
@@ -160,7 +174,7 @@ fn draw(
 }
 
 /// Sets a client array pointer after checking its arguments.
-fn pointer(
+pub(super) fn pointer(
     which: fn(&mut GlState) -> &mut ClientArray,
     sizes: &[i32],
     size: i32,
@@ -196,8 +210,8 @@ fn client_state(array: GLenum, on: bool) {
     })
 }
 
-const ALL_TYPES: [GLenum; 4] = [GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
-const COLOR_TYPES: [GLenum; 8] = [
+pub(super) const ALL_TYPES: [GLenum; 4] = [GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+pub(super) const COLOR_TYPES: [GLenum; 8] = [
     GL_BYTE,
     GL_UNSIGNED_BYTE,
     GL_SHORT,
@@ -340,6 +354,8 @@ exports! {
                 GL_COLOR_ARRAY_POINTER => os.color.ptr,
                 GL_NORMAL_ARRAY_POINTER => os.normal.ptr,
                 GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord.ptr,
+                0x845D => os.secondary.ptr, // GL_SECONDARY_COLOR_ARRAY_POINTER
+                0x8456 => os.fog_coord.ptr, // GL_FOG_COORD_ARRAY_POINTER
                 _ => return Err(GlError::InvalidEnum),
             };
             if !params.is_null() {
