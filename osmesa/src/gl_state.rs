@@ -98,7 +98,7 @@ pub struct SavedClient {
     pub mask: u32,
     pub pack: PixelStore,
     pub unpack: PixelStore,
-    pub arrays: [ClientArray; 4],
+    pub arrays: [ClientArray; 5],
 }
 
 /// The GL state of one context that `softgl::Context` does not hold.
@@ -107,6 +107,8 @@ pub struct GlState {
     pub color: ClientArray,
     pub normal: ClientArray,
     pub tex_coord: ClientArray,
+    /// `glEdgeFlagPointer`: `GLboolean`s.
+    pub edge_flag: ClientArray,
     pub pack: PixelStore,
     pub unpack: PixelStore,
     /// `glHint` modes, in the order of [`HINTS`].
@@ -132,6 +134,10 @@ impl Default for GlState {
             color: ClientArray::new(4),
             normal: ClientArray::new(3),
             tex_coord: ClientArray::new(4),
+            edge_flag: ClientArray {
+                ty: GL_UNSIGNED_BYTE,
+                ..ClientArray::new(1)
+            },
             pack: PixelStore::DEFAULT,
             unpack: PixelStore::DEFAULT,
             hints: [GL_DONT_CARE; 5],
@@ -147,9 +153,9 @@ impl Default for GlState {
 }
 
 impl GlState {
-    /// The four client arrays, in `glPushClientAttrib`'s order.
-    pub fn arrays(&self) -> [ClientArray; 4] {
-        [self.vertex, self.color, self.normal, self.tex_coord]
+    /// The client arrays, in `glPushClientAttrib`'s order.
+    pub fn arrays(&self) -> [ClientArray; 5] {
+        [self.vertex, self.color, self.normal, self.tex_coord, self.edge_flag]
     }
 
     /// The client array `glEnableClientState` names, if softgl has it.
@@ -159,6 +165,7 @@ impl GlState {
             GL_COLOR_ARRAY => &mut self.color,
             GL_NORMAL_ARRAY => &mut self.normal,
             GL_TEXTURE_COORD_ARRAY => &mut self.tex_coord,
+            GL_EDGE_FLAG_ARRAY => &mut self.edge_flag,
             _ => return None,
         })
     }

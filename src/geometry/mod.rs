@@ -32,6 +32,9 @@ pub struct InVertex {
     /// `glFogCoord`.
     pub fog_coord: f32,
     pub normal: Vec3,
+    /// `glEdgeFlag`: whether the polygon edge starting here is a boundary
+    /// edge, drawn under polygon mode `Line`/`Point`.
+    pub edge: bool,
 }
 
 impl InVertex {
@@ -43,6 +46,7 @@ impl InVertex {
             secondary: Vec4::new(0.0, 0.0, 0.0, 1.0),
             fog_coord: 0.0,
             normal: Vec3::Z,
+            edge: true,
         }
     }
 }
@@ -144,6 +148,7 @@ impl<'s> Geometry<'s> {
         } else {
             QuadSplit::Direct
         };
+        let unfilled = self.unfilled();
         let mut batch = VertexBatch::new(*stage, count, fetch);
         assemble(mode, count, quads, |prim| match prim {
             Primitive::Point(i) => self.point(&batch.get(i), sink),
@@ -152,7 +157,11 @@ impl<'s> Geometry<'s> {
                 self.line(&va, &vb, self.flat(&vp), sink)
             }
             Primitive::Triangle { v, provoking, edges } => {
-                let poly = [0, 1, 2].map(|k| (batch.get(v[k]), edges[k]));
+                // A vertex's edge flag ANDs with the assembly's boundary flag
+                // for every triangle mode, as llvmpipe's unfilled stage does
+                // (docs/llvmpipe-facts.md, "Edge flags").
+                let edge = |k: usize| edges[k] && (!unfilled || fetch(v[k]).edge);
+                let poly = [0, 1, 2].map(|k| (batch.get(v[k]), edge(k)));
                 let flat = self.flat(&batch.get(provoking));
                 self.polygon(poly, flat, sink)
             }
@@ -175,10 +184,14 @@ impl<'s> Geometry<'s> {
             DrawSource::Elements => true,
             DrawSource::Arrays { per_vertex_color } => per_vertex_color && self.state.shade_model == ShadeModel::Flat,
         };
-        let unfilled = [true, false]
+        direct_v1_v3 || self.unfilled() || (0..count).any(|i| outcode((stage.mvp * fetch(i).pos).as_dvec4(), 1.0) != 0)
+    }
+
+    /// Whether a face is drawn as lines or points.
+    fn unfilled(&self) -> bool {
+        [true, false]
             .iter()
-            .any(|&front| self.state.polygon_mode(front) != PolygonMode::Fill);
-        direct_v1_v3 || unfilled || (0..count).any(|i| outcode((stage.mvp * fetch(i).pos).as_dvec4(), 1.0) != 0)
+            .any(|&front| self.state.polygon_mode(front) != PolygonMode::Fill)
     }
 
     /// The provoking vertex's varyings under flat shading (the rasterizer

@@ -55,6 +55,8 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         gl.color4(c.color.x, c.color.y, c.color.z, c.color.w);
         gl.normal3(c.normal.x, c.normal.y, c.normal.z);
         gl.tex_coord4(c.tex_coord.x, c.tex_coord.y, c.tex_coord.z, c.tex_coord.w);
+        gl.index(c.index);
+        gl.edge_flag(c.edge_flag);
     }
     if m & POINT_BIT != 0 {
         gl.point_size(st.point_size)?;
@@ -178,7 +180,8 @@ exports! {
         })
     }
     [] fn glPushClientAttrib(mask: u32) {
-        now(|os, _| {
+        now(|os, gl| {
+            super::outside(gl)?;
             if os.client_attrib_stack.len() >= MAX_DEPTH {
                 return Err(GlError::StackOverflow);
             }
@@ -193,13 +196,14 @@ exports! {
         })
     }
     [] fn glPopClientAttrib() {
-        now(|os, _| {
+        now(|os, gl| {
+            super::outside(gl)?;
             let s = os.client_attrib_stack.pop().ok_or(GlError::StackUnderflow)?;
             if s.mask & CLIENT_PIXEL_STORE_BIT != 0 {
                 (os.pack, os.unpack) = (s.pack, s.unpack);
             }
             if s.mask & CLIENT_VERTEX_ARRAY_BIT != 0 {
-                [os.vertex, os.color, os.normal, os.tex_coord] = s.arrays;
+                [os.vertex, os.color, os.normal, os.tex_coord, os.edge_flag] = s.arrays;
             }
             Ok(())
         })

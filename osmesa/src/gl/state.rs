@@ -76,10 +76,16 @@ exports! {
     /// The converted formats reach the caller's buffer, and the Z24S8 copy
     /// `OSMesaGetDepthBuffer` handed out is brought up to date.
     [] fn glFlush() {
+        if super::refused_inside_begin() {
+            return;
+        }
         with_current((), |os| os.flush())
     }
     /// As `glFlush`: softgl draws at each call, so there is nothing to wait for.
     [] fn glFinish() {
+        if super::refused_inside_begin() {
+            return;
+        }
         with_current((), |os| os.flush())
     }
     [] fn glHint(target: GLenum, mode: GLenum) {
@@ -97,7 +103,8 @@ exports! {
     }
     /// `GL_FRONT` and its aliases: an OSMesa context is single-buffered.
     [] fn glDrawBuffer(mode: GLenum) {
-        checked(move |_| match mode {
+        checked(move |gl| match mode {
+            _ if gl.inside_begin() => Err(GlError::InvalidOperation),
             GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK => Ok(()),
             GL_NONE | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT => {
                 Err(GlError::InvalidOperation)
@@ -107,7 +114,8 @@ exports! {
         })
     }
     [] fn glReadBuffer(mode: GLenum) {
-        checked(move |_| match mode {
+        checked(move |gl| match mode {
+            _ if gl.inside_begin() => Err(GlError::InvalidOperation),
             GL_FRONT | GL_FRONT_LEFT | GL_LEFT => Ok(()),
             GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT | GL_FRONT_AND_BACK => {
                 Err(GlError::InvalidOperation)
