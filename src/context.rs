@@ -108,7 +108,12 @@ impl<'a> VertexArrays<'a> {
     fn check(&self) -> GlResult<usize> {
         self.position.check(2..=4)?;
         let mut len = self.position.len();
-        for (array, sizes) in [(&self.color, 3..=4), (&self.secondary, 3..=3), (&self.fog_coord, 1..=1), (&self.edge_flag, 1..=1)] {
+        for (array, sizes) in [
+            (&self.color, 3..=4),
+            (&self.secondary, 3..=3),
+            (&self.fog_coord, 1..=1),
+            (&self.edge_flag, 1..=1),
+        ] {
             if let Some(a) = array {
                 a.check(sizes)?;
                 len = len.min(a.len());
@@ -157,7 +162,9 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVer
         secondary: arrays.secondary.map_or(current.secondary, |c| c.get(i, Vec4::W)),
         fog_coord: arrays.fog_coord.map_or(current.fog_coord, |c| c.get(i, Vec4::ZERO).x),
         normal: current.normal,
-        edge: arrays.edge_flag.map_or(current.edge_flag, |e| e.get(i, Vec4::ONE).x != 0.0),
+        edge: arrays
+            .edge_flag
+            .map_or(current.edge_flag, |e| e.get(i, Vec4::ONE).x != 0.0),
     }
 }
 

