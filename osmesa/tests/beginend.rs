@@ -3,7 +3,8 @@
 //! flag as current state, edge flags drawn by polygon mode `GL_LINE` (from
 //! `glEdgeFlag` and from `glEdgeFlagPointer`), evaluator calls that generate
 //! nothing without a map, the calls that are errors there, and unimplemented
-//! commands compiled into display lists.
+//! commands compiled into display lists; and `glEnable` of a client array,
+//! which Mesa accepts (piglit's line-flat-clip-color relies on it).
 
 use std::ptr::null_mut;
 use OSMesa::consts::*;
@@ -185,5 +186,23 @@ fn unimplemented_commands_are_compiled_and_fail_when_the_list_runs() {
     glEndList();
     glCallList(list);
     assert_eq!(glGetError(), GL_NO_ERROR);
+    OSMesaDestroyContext(ctx);
+}
+
+#[test]
+fn gl_enable_switches_client_arrays_as_mesa_does() {
+    let mut buf = vec![0u8; W * W * 4];
+    let ctx = current(&mut buf);
+    let full = [[0.0f32, 0.0], [8.0, 0.0], [8.0, 8.0], [0.0, 8.0]];
+    // SAFETY: the array outlives the draw.
+    unsafe { glVertexPointer(2, GL_FLOAT, 0, full.as_ptr().cast()) };
+    glEnable(GL_VERTEX_ARRAY);
+    assert_eq!((glGetError(), glIsEnabled(GL_VERTEX_ARRAY)), (GL_NO_ERROR, GL_TRUE));
+    glColor3f(0.0, 1.0, 0.0);
+    glDrawArrays(GL_POLYGON, 0, 4);
+    glFinish();
+    assert!(green_at(&buf, 4, 4));
+    glDisable(GL_VERTEX_ARRAY);
+    assert_eq!(glIsEnabled(GL_VERTEX_ARRAY), GL_FALSE);
     OSMesaDestroyContext(ctx);
 }

@@ -3,7 +3,7 @@
 use super::enums::{self, decode, Cap};
 use super::{checked, gl, rec};
 use crate::consts::*;
-use crate::gl_state::HINTS;
+use crate::gl_state::{GlState, HINTS};
 use crate::state::{with_current, with_gl};
 use glam::{DMat4, Mat4};
 use softgl::{ClearMask, Context, GlError, GlResult};
@@ -29,6 +29,20 @@ fn set_cap(gl: &mut softgl::Context, inert: &mut Vec<GLenum>, cap: GLenum, on: b
     }
 }
 
+/// `glEnable`/`glDisable`, which in a compatibility context also switch the
+/// client arrays (`GL_VERTEX_ARRAY`, …) as Mesa does (`_mesa_set_enable`,
+/// `src/mesa/main/enable.c`), where GL 1.5 asks for `glEnableClientState`.
+fn set_cap_or_array(os: &mut GlState, gl: &mut Context, cap: GLenum, on: bool) -> GlResult {
+    match os.array_mut(cap) {
+        Some(array) => {
+            super::outside(gl)?;
+            array.enabled = on;
+            Ok(())
+        }
+        None => set_cap(gl, &mut os.inert_caps, cap, on),
+    }
+}
+
 /// Reads 16 values through `m` (column-major, as GL lays them out).
 ///
 /// # Safety
@@ -48,10 +62,10 @@ unsafe fn matrix_from<T: Copy + Into<f64>>(m: *const T) -> GlResult<Mat4> {
 
 exports! {
     [] fn glEnable(cap: GLenum) {
-        rec(move |os, gl| set_cap(gl, &mut os.inert_caps, cap, true))
+        rec(move |os, gl| set_cap_or_array(os, gl, cap, true))
     }
     [] fn glDisable(cap: GLenum) {
-        rec(move |os, gl| set_cap(gl, &mut os.inert_caps, cap, false))
+        rec(move |os, gl| set_cap_or_array(os, gl, cap, false))
     }
     [] fn glIsEnabled(cap: GLenum) -> u8 {
         with_gl(GL_FALSE, |os, gl| match super::get::is_enabled(os, gl, cap) {
