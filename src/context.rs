@@ -5,9 +5,10 @@
 //! for callers (such as the C ABI) that poll.
 
 use crate::error::{GlError, GlResult};
+use crate::fog::{FogCoordSrc, FogParam, FogState};
 use crate::fragment::{Backend, FragmentStage};
 use crate::framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
-use crate::geometry::batch::VertexStage;
+use crate::geometry::batch::{FogSource, VertexStage};
 use crate::geometry::varying::VaryingLayout;
 use crate::geometry::{DrawSource, Geometry, InVertex, MAX_VIEWPORT};
 use crate::matrix::{self, MatrixMode, MatrixStack};
@@ -710,6 +711,30 @@ impl Context {
         self.current.edge_flag = flag;
     }
 
+    /// `glSecondaryColor3f` (GL 1.4): the current secondary colour, alpha 1.
+    pub fn secondary_color3(&mut self, r: f32, g: f32, b: f32) {
+        self.current.secondary = Vec4::new(r, g, b, 1.0);
+    }
+
+    /// `glFogCoordf` (GL 1.4): the current fog coordinate.
+    pub fn fog_coord(&mut self, c: f32) {
+        self.current.fog_coord = c;
+    }
+
+    /// `glFog*`: one fog parameter; a negative density is `InvalidValue`.
+    pub fn fog(&mut self, p: FogParam) -> GlResult {
+        self.outside()?;
+        let mut fog = self.state.fog;
+        self.record(fog.set(p))?;
+        self.state.fog = fog;
+        Ok(())
+    }
+
+    /// The fog state (`glGet` of `GL_FOG_*`).
+    pub fn fog_state(&self) -> &FogState {
+        &self.state.fog
+    }
+
     /// `glTexCoord4f`: kept as current state for texturing.
     pub fn tex_coord4(&mut self, s: f32, t: f32, r: f32, q: f32) {
         self.current.tex_coord = Vec4::new(s, t, r, q);
@@ -769,7 +794,12 @@ impl Context {
         let (key, layout) = self.draw_plan();
         let uniforms = self.state.fragment_uniforms();
         let reads_depth = key.depth.is_some();
-        let vertex_stage = VertexStage::new(*self.projection.top() * *self.modelview.top(), layout);
+        let mut vertex_stage = VertexStage::new(*self.projection.top() * *self.modelview.top(), layout);
+        if self.state.fog.coord_src == FogCoordSrc::FragmentDepth {
+            vertex_stage.fog = FogSource::EyeDepth {
+                row: self.modelview.top().row(2),
+            };
+        }
         let geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
         let specialist = match self.backend {
             Backend::Jit => self.specialists.get(&key),

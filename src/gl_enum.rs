@@ -7,6 +7,7 @@
 //! (a new variant without a value does not compile) and a `match` for
 //! [`GlEnum::from_gl`] (a value listed twice is an unreachable-pattern lint).
 
+use crate::fog::{FogCoordSrc, FogMode};
 use crate::matrix::MatrixMode;
 use crate::state::{Capability, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};
 use softgl_jit::{BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilOp};
@@ -151,6 +152,7 @@ gl_enums! {
     }
     Capability {
         CullFace = GL_CULL_FACE 0x0B44,
+        Fog = GL_FOG 0x0B60,
         DepthTest = GL_DEPTH_TEST 0x0B71,
         StencilTest = GL_STENCIL_TEST 0x0B90,
         AlphaTest = GL_ALPHA_TEST 0x0BC0,
@@ -161,6 +163,16 @@ gl_enums! {
         PolygonOffsetPoint = GL_POLYGON_OFFSET_POINT 0x2A01,
         PolygonOffsetLine = GL_POLYGON_OFFSET_LINE 0x2A02,
         PolygonOffsetFill = GL_POLYGON_OFFSET_FILL 0x8037,
+        ColorSum = GL_COLOR_SUM 0x8458,
+    }
+    FogMode {
+        Exp = GL_EXP 0x0800,
+        Exp2 = GL_EXP2 0x0801,
+        Linear = GL_LINEAR 0x2601,
+    }
+    FogCoordSrc {
+        FogCoord = GL_FOG_COORD 0x8451,
+        FragmentDepth = GL_FRAGMENT_DEPTH 0x8452,
     }
 }
 
@@ -200,10 +212,12 @@ mod tests {
             round_trip::<ShadeModel>(),
             round_trip::<MatrixMode>(),
             round_trip::<Capability>(),
+            round_trip::<FogMode>(),
+            round_trip::<FogCoordSrc>(),
         ];
         // Every variant of each type (to_gl's exhaustive match already
         // refuses a table without one).
-        assert_eq!(counts, [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 11]);
+        assert_eq!(counts, [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 13, 3, 2]);
     }
 
     #[test]

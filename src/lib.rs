@@ -22,6 +22,7 @@
 pub mod context;
 pub mod demo;
 pub mod error;
+pub mod fog;
 pub mod fragment;
 pub mod framebuffer;
 pub mod geometry;
@@ -32,6 +33,7 @@ pub mod state;
 
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
 pub use error::{GlError, GlResult};
+pub use fog::{FogCoordSrc, FogMode, FogParam};
 pub use fragment::Backend;
 pub use framebuffer::{ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
 pub use gl_enum::GlEnum;

@@ -1,6 +1,7 @@
 //! GL state that shapes rasterization and the fragment stages, and how it
 //! becomes a [`FragmentKey`] and [`FragmentUniforms`] at draw time.
 
+use crate::fog::FogState;
 use crate::framebuffer::{float_to_unorm, Framebuffer};
 use crate::geometry::varying::VaryingLayout;
 use softgl_jit::{
@@ -22,6 +23,10 @@ pub enum Capability {
     PolygonOffsetPoint,
     ScissorTest,
     StencilTest,
+    /// `GL_FOG`.
+    Fog,
+    /// `GL_COLOR_SUM`: add the secondary colour to the primary one.
+    ColorSum,
 }
 
 /// The ten GL 1.x primitive modes.
@@ -182,6 +187,10 @@ pub struct RasterState {
     pub clear_color: [f32; 4],
     pub clear_depth: f64,
     pub clear_stencil: i32,
+    /// `glFog` state with `GL_FOG`.
+    pub fog: FogState,
+    /// `GL_COLOR_SUM`.
+    pub color_sum: bool,
 }
 
 impl RasterState {
@@ -235,6 +244,8 @@ impl RasterState {
             clear_color: [0.0; 4],
             clear_depth: 1.0,
             clear_stencil: 0,
+            fog: FogState::default(),
+            color_sum: false,
         }
     }
 
@@ -252,6 +263,8 @@ impl RasterState {
             Capability::PolygonOffsetPoint => &mut self.offset_point,
             Capability::ScissorTest => &mut self.scissor_test,
             Capability::StencilTest => &mut self.stencil_test,
+            Capability::Fog => &mut self.fog.enabled,
+            Capability::ColorSum => &mut self.color_sum,
         }
     }
 
@@ -269,6 +282,8 @@ impl RasterState {
             Capability::PolygonOffsetPoint => self.offset_point,
             Capability::ScissorTest => self.scissor_test,
             Capability::StencilTest => self.stencil_test,
+            Capability::Fog => self.fog.enabled,
+            Capability::ColorSum => self.color_sum,
         }
     }
 
@@ -311,10 +326,13 @@ impl RasterState {
 
     /// The varyings a draw's vertices carry, from the same state as
     /// [`Self::fragment_key`]: the primary colour when a stage reads the
-    /// fragment colour (`reads_color`), nothing else yet.
+    /// fragment colour (`reads_color`), with the secondary colour when the
+    /// colour sum is on and the fog coordinate when fog is.
     pub fn varying_layout(&self, reads_color: bool) -> VaryingLayout {
         VaryingLayout {
             color: reads_color,
+            secondary: reads_color && self.color_sum,
+            fog: reads_color && self.fog.enabled,
             ..VaryingLayout::default()
         }
     }

@@ -13,6 +13,7 @@ pub mod interp;
 pub mod key;
 pub mod pixel;
 pub mod rng;
+pub mod shade;
 pub mod span;
 #[allow(unsafe_code)]
 pub mod specialist;
@@ -25,6 +26,7 @@ pub use key::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, FragmentKey,
     KeyError, LogicOp, Stage, StencilKey, StencilOp,
 };
+pub use shade::{FogMode, FogUniforms};
 pub use span::{FragmentSpan, SPAN_MAX};
 pub use specialist::{Specialist, SpecialistError};
 pub use target::{DepthTarget, Target, TargetError};

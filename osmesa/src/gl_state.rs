@@ -98,7 +98,7 @@ pub struct SavedClient {
     pub mask: u32,
     pub pack: PixelStore,
     pub unpack: PixelStore,
-    pub arrays: [ClientArray; 5],
+    pub arrays: [ClientArray; 7],
 }
 
 /// The GL state of one context that `softgl::Context` does not hold.
@@ -107,6 +107,8 @@ pub struct GlState {
     pub color: ClientArray,
     pub normal: ClientArray,
     pub tex_coord: ClientArray,
+    pub secondary: ClientArray,
+    pub fog_coord: ClientArray,
     /// `glEdgeFlagPointer`: `GLboolean`s.
     pub edge_flag: ClientArray,
     pub pack: PixelStore,
@@ -134,6 +136,8 @@ impl Default for GlState {
             color: ClientArray::new(4),
             normal: ClientArray::new(3),
             tex_coord: ClientArray::new(4),
+            secondary: ClientArray::new(3),
+            fog_coord: ClientArray::new(1),
             edge_flag: ClientArray {
                 ty: GL_UNSIGNED_BYTE,
                 ..ClientArray::new(1)
@@ -154,8 +158,16 @@ impl Default for GlState {
 
 impl GlState {
     /// The client arrays, in `glPushClientAttrib`'s order.
-    pub fn arrays(&self) -> [ClientArray; 5] {
-        [self.vertex, self.color, self.normal, self.tex_coord, self.edge_flag]
+    pub fn arrays(&self) -> [ClientArray; 7] {
+        [
+            self.vertex,
+            self.color,
+            self.normal,
+            self.tex_coord,
+            self.secondary,
+            self.fog_coord,
+            self.edge_flag,
+        ]
     }
 
     /// The client array `glEnableClientState` names, if softgl has it.
@@ -166,6 +178,8 @@ impl GlState {
             GL_NORMAL_ARRAY => &mut self.normal,
             GL_TEXTURE_COORD_ARRAY => &mut self.tex_coord,
             GL_EDGE_FLAG_ARRAY => &mut self.edge_flag,
+            0x845E => &mut self.secondary, // GL_SECONDARY_COLOR_ARRAY
+            0x8457 => &mut self.fog_coord, // GL_FOG_COORD_ARRAY
             _ => return None,
         })
     }

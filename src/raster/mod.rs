@@ -15,7 +15,7 @@ pub use triangle::{offset, triangle};
 
 use crate::framebuffer::Rect;
 use crate::geometry::varying::{VaryingLayout, Varyings};
-use softgl_jit::{DepthFormat, FragmentSpan};
+use softgl_jit::{shade, DepthFormat, FogMode, FogUniforms, FragmentSpan};
 
 /// Sub-pixel bits of the fixed-point grid.
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -63,6 +63,8 @@ pub struct RasterParams {
     /// The varyings the vertices carry; the colour is interpolated only
     /// when `layout.color` (some stage reads the fragment colour).
     pub layout: VaryingLayout,
+    /// Fog mode and values, when `layout.fog`.
+    pub fog: Option<(FogMode, FogUniforms)>,
     /// Polygon offset `(factor, units)` for this primitive, if enabled.
     pub offset: Option<(f32, f32)>,
 }
@@ -86,6 +88,28 @@ pub fn snap(v: f32) -> i64 {
 #[inline]
 pub fn color_to_unorm8(c: f32) -> u8 {
     crate::framebuffer::float_to_unorm(c, 255) as u8
+}
+
+/// The unorm8 colour of a fragment whose primary colour, secondary colour
+/// (with the colour sum) and fog coordinate (with fog) are these.
+#[inline]
+pub fn shade_unorm8(
+    primary: [f32; 4],
+    secondary: Option<[f32; 3]>,
+    fog: Option<(f32, &(FogMode, FogUniforms))>,
+) -> [u8; 4] {
+    shade::shade(primary, secondary, fog.map(|(c, (m, u))| (*m, c, u))).map(color_to_unorm8)
+}
+
+/// The unorm8 colour of a fragment taking every varying from `v` (points,
+/// flat-shaded fragments): its colour, secondary colour and fog coordinate
+/// as `params.layout` places them.
+pub fn shade_varyings(v: &Varyings, params: &RasterParams) -> [u8; 4] {
+    let l = params.layout;
+    let Some(o) = l.color() else { return [0; 4] };
+    let secondary = l.secondary().map(|s| [v[s], v[s + 1], v[s + 2]]);
+    let fog = l.fog().zip(params.fog.as_ref()).map(|(f, p)| (v[f], p));
+    shade_unorm8([v[o], v[o + 1], v[o + 2], v[o + 3]], secondary, fog)
 }
 
 /// Converts window depth to buffer units (clamped to `[0, 1]`).

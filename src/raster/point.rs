@@ -1,6 +1,6 @@
 //! Points: squares of an integer size around the snapped position.
 
-use super::{color_to_unorm8, depth_value, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
+use super::{depth_value, emit_row, floor_div, shade_varyings, snap, RasterParams, RasterVertex, SpanSink, ONE};
 use softgl_jit::FragmentSpan;
 
 /// The integer size llvmpipe rasterizes for `size`: the size on the 1/256
@@ -32,10 +32,7 @@ pub fn point(v: &RasterVertex, size: f32, params: &RasterParams, sink: &mut dyn 
     if x0 > x1 || y0 > y1 {
         return;
     }
-    let rgba = params
-        .layout
-        .color()
-        .map_or([0; 4], |o| [0, 1, 2, 3].map(|c| color_to_unorm8(v.v[o + c])));
+    let rgba = shade_varyings(&v.v, params);
     let z = depth_value(v.z, params.depth);
     let mut span = FragmentSpan::new(0, 0);
     for y in y0..=y1 {

@@ -1,8 +1,11 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 
-use super::{ceil_div, color_to_unorm8, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
-use crate::geometry::varying::Varyings;
-use softgl_jit::{DepthFormat, FragmentSpan};
+use super::{
+    ceil_div, color_to_unorm8, emit_row, floor_div, shade_unorm8, shade_varyings, snap, RasterParams, RasterVertex,
+    SpanSink, ONE,
+};
+use crate::geometry::varying::{VaryingLayout, Varyings};
+use softgl_jit::{DepthFormat, FogMode, FogUniforms, FragmentSpan};
 
 /// `a * b + c` rounded once, as an FMA instruction gives it: the f32 product
 /// is exact in f64, and the f64 sum rounds to f32 (a second rounding that can
@@ -139,7 +142,17 @@ pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterP
 struct Shading {
     /// Planes of r/w, g/w, b/w, a/w and 1/w.
     color: Option<([Plane; 4], Plane)>,
+    /// The colour of every fragment, when nothing varies (flat shading, no fog).
     flat: Option<[u8; 4]>,
+    /// The provoking vertex's varyings, for flat shading with fog.
+    flat_v: Option<Varyings>,
+    /// Planes of the secondary colour's r/w, g/w, b/w (colour sum).
+    secondary: Option<[Plane; 3]>,
+    /// Plane of the fog coordinate over w, with the fog mode and values.
+    fog: Option<(Plane, (FogMode, FogUniforms))>,
+    /// 1/w, when a varying is interpolated.
+    inv_w: Plane,
+    layout: VaryingLayout,
     depth: Option<(Plane, DepthFormat)>,
     /// Framebuffer height, to turn window rows into llvmpipe's top-down rows.
     height: u32,
@@ -156,11 +169,22 @@ impl Shading {
             v.swap(0, 1);
         }
         let setup = Setup::new(v.map(|v| (v.x, v.y_down)));
-        let color_at = params.layout.color();
-        let color = color_at.filter(|_| flat.is_none()).map(|o| {
-            let planes = [0, 1, 2, 3].map(|c| setup.plane(v.map(|v| v.v[o + c] * v.inv_w)));
-            (planes, setup.plane(v.map(|v| v.inv_w)))
-        });
+        let layout = params.layout;
+        let over_w = |k: usize| setup.plane(v.map(|v| v.v[k] * v.inv_w));
+        let inv_w = setup.plane(v.map(|v| v.inv_w));
+        let color = layout
+            .color()
+            .filter(|_| flat.is_none())
+            .map(|o| ([0, 1, 2, 3].map(|c| over_w(o + c)), inv_w));
+        let secondary = layout
+            .secondary()
+            .filter(|_| flat.is_none())
+            .map(|o| [0, 1, 2].map(|c| over_w(o + c)));
+        let fog = layout
+            .color()
+            .and(layout.fog())
+            .zip(params.fog)
+            .map(|(o, f)| (over_w(o), f));
         let depth = params.depth.map(|f| {
             let mut z = v.map(|v| v.z as f32);
             if let Some((factor, units)) = params.offset {
@@ -170,11 +194,17 @@ impl Shading {
             }
             (setup.plane(z), f)
         });
+        let flat_params = RasterParams { fog: None, ..*params };
         Shading {
             color,
             flat: flat
-                .zip(color_at)
-                .map(|(f, o)| [0, 1, 2, 3].map(|c| color_to_unorm8(f[o + c]))),
+                .filter(|_| fog.is_none() && layout.color)
+                .map(|f| shade_varyings(f, &flat_params)),
+            flat_v: flat.filter(|_| fog.is_some()).copied(),
+            secondary,
+            fog,
+            inv_w,
+            layout,
             depth,
             height: params.height,
         }
@@ -183,22 +213,40 @@ impl Shading {
     #[inline]
     fn shade(&self, x: u32, y: u32, span: &mut FragmentSpan, i: usize) {
         let (px, row) = (x as f32, self.height.saturating_sub(y + 1) as f32);
-        if let Some(c) = self.flat {
+        let rgba = if let Some(c) = self.flat {
+            Some(c)
+        } else if self.fog.is_none() && self.secondary.is_none() {
+            self.color.as_ref().map(|(planes, iw)| {
+                let w = 1.0 / iw.at(px, row);
+                planes.map(|p| color_to_unorm8(p.at(px, row) * w))
+            })
+        } else {
+            self.shade_stages(px, row)
+        };
+        if let Some(c) = rgba {
             span.r[i] = c[0];
             span.g[i] = c[1];
             span.b[i] = c[2];
             span.a[i] = c[3];
-        } else if let Some((planes, iw)) = &self.color {
-            let w = 1.0 / iw.at(px, row);
-            let ch = |k: usize| color_to_unorm8(planes[k].at(px, row) * w);
-            span.r[i] = ch(0);
-            span.g[i] = ch(1);
-            span.b[i] = ch(2);
-            span.a[i] = ch(3);
         }
         if let Some((plane, f)) = &self.depth {
             span.z[i] = crate::framebuffer::depth_to_unorm(f64::from(plane.at(px, row)), *f);
         }
+    }
+
+    /// The colour through the colour sum and fog.
+    fn shade_stages(&self, px: f32, row: f32) -> Option<[u8; 4]> {
+        let w = 1.0 / self.inv_w.at(px, row);
+        let fog = self.fog.as_ref().map(|(p, f)| (p.at(px, row) * w, f));
+        if let Some(f) = &self.flat_v {
+            let o = self.layout.color()?;
+            let secondary = self.layout.secondary().map(|s| [f[s], f[s + 1], f[s + 2]]);
+            return Some(shade_unorm8([f[o], f[o + 1], f[o + 2], f[o + 3]], secondary, fog));
+        }
+        let (planes, _) = self.color.as_ref()?;
+        let primary = planes.map(|p| p.at(px, row) * w);
+        let secondary = self.secondary.map(|s| s.map(|p| p.at(px, row) * w));
+        Some(shade_unorm8(primary, secondary, fog))
     }
 }
 

@@ -95,6 +95,8 @@ struct Fetched {
     color: Option<(usize, Vec<f32>)>,
     /// The edge flags, 0 or not (`glEdgeFlagPointer`).
     edge_flag: Option<Vec<f32>>,
+    secondary: Option<Vec<f32>>,
+    fog_coord: Option<Vec<f32>>,
 }
 
 /// Reads the vertices `indices` names; `None` without a vertex array (GL then draws nothing).
@@ -105,7 +107,9 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
     }
     let color = (os.color.enabled && !os.color.ptr.is_null()).then_some(&os.color);
     let edge_flag = (os.edge_flag.enabled && !os.edge_flag.ptr.is_null()).then_some(&os.edge_flag);
-    let (mut pos, mut col, mut edges) = (Vec::new(), Vec::new(), Vec::new());
+    let secondary = (os.secondary.enabled && !os.secondary.ptr.is_null()).then_some(&os.secondary);
+    let fog_coord = (os.fog_coord.enabled && !os.fog_coord.ptr.is_null()).then_some(&os.fog_coord);
+    let (mut pos, mut col, mut sec, mut fog, mut edges) = (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let mut count = 0;
     for i in indices {
         // SAFETY: the enabled arrays hold every element the draw names (GL's contract).
@@ -117,6 +121,12 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
             if let Some(e) = edge_flag {
                 fetch(e, i, false, &mut edges);
             }
+            if let Some(c) = secondary {
+                fetch(c, i, true, &mut sec);
+            }
+            if let Some(c) = fog_coord {
+                fetch(c, i, false, &mut fog);
+            }
         }
         count += 1;
     }
@@ -127,6 +137,8 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         pos,
         color: color.map(|c| (c.size as usize, col)),
         edge_flag: edge_flag.map(|_| edges),
+        secondary: secondary.map(|_| sec),
+        fog_coord: fog_coord.map(|_| fog),
     }))
 }
 
@@ -155,7 +167,8 @@ fn draw(
             position: AttribArray::new(f.pos_size, &f.pos),
             color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
             edge_flag: f.edge_flag.as_ref().map(|e| AttribArray::new(1, e)),
-            ..VertexArrays::positions(f.pos_size, &f.pos)
+            secondary: f.secondary.as_ref().map(|c| AttribArray::new(3, c)),
+            fog_coord: f.fog_coord.as_ref().map(|c| AttribArray::new(1, c)),
         };
         // The context records its own errors (inside begin/end, …).
         let _ = if indexed {
@@ -170,7 +183,7 @@ fn draw(
 }
 
 /// Sets a client array pointer after checking its arguments.
-fn pointer(
+pub(super) fn pointer(
     which: fn(&mut GlState) -> &mut ClientArray,
     sizes: &[i32],
     size: i32,
@@ -208,8 +221,8 @@ fn client_state(array: GLenum, on: bool) {
     })
 }
 
-const ALL_TYPES: [GLenum; 4] = [GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
-const COLOR_TYPES: [GLenum; 8] = [
+pub(super) const ALL_TYPES: [GLenum; 4] = [GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+pub(super) const COLOR_TYPES: [GLenum; 8] = [
     GL_BYTE,
     GL_UNSIGNED_BYTE,
     GL_SHORT,
@@ -363,6 +376,8 @@ exports! {
                 GL_NORMAL_ARRAY_POINTER => os.normal.ptr,
                 GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord.ptr,
                 GL_EDGE_FLAG_ARRAY_POINTER => os.edge_flag.ptr,
+                0x845D => os.secondary.ptr, // GL_SECONDARY_COLOR_ARRAY_POINTER
+                0x8456 => os.fog_coord.ptr, // GL_FOG_COORD_ARRAY_POINTER
                 _ => return Err(GlError::InvalidEnum),
             };
             if !params.is_null() {

@@ -27,7 +27,7 @@ pub fn cap(v: GLenum) -> GlResult<Cap> {
     match v {
         // NORMALIZE, RESCALE_NORMAL, COLOR_MATERIAL, AUTO_NORMAL
         0x0BA1 | 0x803A | 0x0B57 | 0x0D80 => Ok(Cap::Inert(v)),
-        // LIGHTING, LIGHT0..7, TEXTURE_1D/2D/3D, FOG, LINE/POLYGON_STIPPLE,
+        // LIGHTING, LIGHT0..7, TEXTURE_1D/2D/3D, LINE/POLYGON_STIPPLE,
         // POINT/LINE/POLYGON_SMOOTH, CLIP_PLANE0..5, TEXTURE_GEN_S..Q,
         // MAP1_*, MAP2_*, INDEX_LOGIC_OP
         0x0B50
@@ -35,7 +35,6 @@ pub fn cap(v: GLenum) -> GlResult<Cap> {
         | 0x0DE0
         | 0x0DE1
         | 0x806F
-        | 0x0B60
         | 0x0B24
         | 0x0B42
         | 0x0B10

@@ -25,6 +25,7 @@ mod arrays;
 mod attrib;
 mod enums;
 mod extra_attribs;
+mod fog;
 pub(crate) mod get;
 mod immediate;
 mod lists;
@@ -35,6 +36,7 @@ mod state;
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
 pub use extra_attribs::*;
+pub use fog::*;
 pub use get::*;
 pub use immediate::*;
 pub use lists::*;
@@ -48,6 +50,8 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         arrays::table,
         attrib::table,
         extra_attribs::table,
+        fog::table,
+        fog::color_table,
         get::table,
         immediate::table,
         lists::table,
