@@ -82,6 +82,8 @@ pub struct VertexArrays<'a> {
     pub secondary: Option<AttribArray<'a>>,
     /// `glFogCoordPointer`: 1 component.
     pub fog_coord: Option<AttribArray<'a>>,
+    /// `glEdgeFlagPointer`: 1 component, 0 for a non-boundary edge.
+    pub edge_flag: Option<AttribArray<'a>>,
 }
 
 impl<'a> VertexArrays<'a> {
@@ -92,6 +94,7 @@ impl<'a> VertexArrays<'a> {
             color: None,
             secondary: None,
             fog_coord: None,
+            edge_flag: None,
         }
     }
 
@@ -106,7 +109,12 @@ impl<'a> VertexArrays<'a> {
     fn check(&self) -> GlResult<usize> {
         self.position.check(2..=4)?;
         let mut len = self.position.len();
-        for (array, sizes) in [(&self.color, 3..=4), (&self.secondary, 3..=3), (&self.fog_coord, 1..=1)] {
+        for (array, sizes) in [
+            (&self.color, 3..=4),
+            (&self.secondary, 3..=3),
+            (&self.fog_coord, 1..=1),
+            (&self.edge_flag, 1..=1),
+        ] {
             if let Some(a) = array {
                 a.check(sizes)?;
                 len = len.min(a.len());
@@ -155,6 +163,9 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVer
         secondary: arrays.secondary.map_or(current.secondary, |c| c.get(i, Vec4::W)),
         fog_coord: arrays.fog_coord.map_or(current.fog_coord, |c| c.get(i, Vec4::ZERO).x),
         normal: current.normal,
+        edge: arrays
+            .edge_flag
+            .map_or(current.edge_flag, |e| e.get(i, Vec4::ONE).x != 0.0),
     }
 }
 
@@ -168,6 +179,10 @@ pub struct CurrentAttribs {
     /// RGB and 1 (GL 1.4's initial `(0, 0, 0, 1)`).
     pub secondary: Vec4,
     pub fog_coord: f32,
+    /// `glIndex`: kept (and queryable) but without effect in RGBA mode.
+    pub index: f32,
+    /// `glEdgeFlag`.
+    pub edge_flag: bool,
 }
 
 impl CurrentAttribs {
@@ -179,6 +194,7 @@ impl CurrentAttribs {
             secondary: self.secondary,
             fog_coord: self.fog_coord,
             normal: self.normal,
+            edge: self.edge_flag,
         }
     }
 }
@@ -225,6 +241,8 @@ impl Context {
                 tex_coord: Vec4::W,
                 secondary: Vec4::W,
                 fog_coord: 0.0,
+                index: 1.0,
+                edge_flag: true,
             },
             begun: None,
             error: None,
@@ -679,6 +697,18 @@ impl Context {
     /// `glNormal3f`: kept as current state for lighting.
     pub fn normal3(&mut self, x: f32, y: f32, z: f32) {
         self.current.normal = Vec3::new(x, y, z);
+    }
+
+    /// `glIndexf`: the current colour index, kept for `GL_CURRENT_INDEX`
+    /// (an RGBA context draws nothing with it).
+    pub fn index(&mut self, c: f32) {
+        self.current.index = c;
+    }
+
+    /// `glEdgeFlag`: whether the edges that start at the next vertices are
+    /// boundary edges (polygon mode `Line`/`Point` draws only those).
+    pub fn edge_flag(&mut self, flag: bool) {
+        self.current.edge_flag = flag;
     }
 
     /// `glSecondaryColor3f` (GL 1.4): the current secondary colour, alpha 1.

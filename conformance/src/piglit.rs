@@ -13,6 +13,35 @@ use std::process::Command;
 /// llvmpipe's result per test: `test<TAB>gl45_default<TAB>gl15_noext<TAB>gl15_ext2003`.
 pub const LLVMPIPE_TSV: &str = include_str!("../piglit_gl1x_llvmpipe.tsv");
 
+/// Results whose cause lies outside softgl, with the evidence
+/// (`test<TAB>kind<TAB>why`; kinds `excluded` and `surfaceless-abort`),
+/// the file `osmesa/tests/piglit.rs` runs piglit with.
+pub const NOTES_TSV: &str = include_str!("../../osmesa/tests/piglit_notes.tsv");
+
+/// Test → (kind, why) from a notes file.
+pub fn notes(tsv: &str) -> BTreeMap<String, (String, String)> {
+    tsv.lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .filter_map(|l| {
+            let mut f = l.splitn(3, '\t');
+            Some((f.next()?.to_string(), (f.next()?.to_string(), f.next()?.to_string())))
+        })
+        .collect()
+}
+
+/// What softgl's result of `test` owes to: piglit itself on surfaceless EGL,
+/// an excluded test, or (for a crash) softgl.
+fn label(test: &str, ours: &str, notes: &BTreeMap<String, (String, String)>) -> Option<String> {
+    match (ours, notes.get(test)) {
+        ("crash", Some((kind, why))) if kind == "surfaceless-abort" => Some(format!(
+            "piglit's own abort on every surfaceless EGL, llvmpipe too ({why})"
+        )),
+        ("not run", Some((kind, why))) if kind == "excluded" => Some(format!("not run: {why}")),
+        ("crash", _) => Some("softgl crashes here: a bug".to_string()),
+        _ => None,
+    }
+}
+
 /// The llvmpipe columns, in the TSV's order.
 const LLVMPIPE_RUNS: [&str; 3] = ["llvmpipe GL 4.5", "llvmpipe GL 1.5", "llvmpipe GL 1.5 + 2003 ext."];
 
@@ -92,8 +121,9 @@ impl Counts {
 
 /// The markdown section: counts per group, then llvmpipe's passes softgl lacks.
 /// Every test of the TSV is counted; one softgl did not run is "not run" (other).
-pub fn markdown(softgl: &BTreeMap<String, String>, tsv: &str) -> String {
+pub fn markdown(softgl: &BTreeMap<String, String>, tsv: &str, notes_tsv: &str) -> String {
     let llvm = llvmpipe(tsv);
+    let notes = notes(notes_tsv);
     let mut groups: BTreeMap<&str, (Counts, [Counts; 3])> = BTreeMap::new();
     let mut total = (Counts::default(), [Counts::default(); 3]);
     for (test, runs) in &llvm {
@@ -112,8 +142,8 @@ pub fn markdown(softgl: &BTreeMap<String, String>, tsv: &str) -> String {
         o,
         "Each cell: pass / fail / skip / crash, (+N) timeouts, incomplete or not run (`warn` counts as fail). \
          softgl runs through its EGL face (`PIGLIT_PLATFORM=surfaceless_egl`, `PIGLIT_NO_WINDOW=1`); \
-         `gl-1.0-blend-func` is not run (over 600 s on llvmpipe). Tests that need a displayed window crash on \
-         every surfaceless implementation.\n"
+         the tests listed below as not run are excluded, and the crashes labelled piglit's own happen on \
+         every surfaceless implementation (`osmesa/tests/piglit_notes.tsv` holds the evidence).\n"
     );
     let _ = writeln!(o, "| group | softgl | {} |", LLVMPIPE_RUNS.join(" | "));
     let _ = writeln!(o, "|---|---|---|---|---|");
@@ -133,7 +163,19 @@ pub fn markdown(softgl: &BTreeMap<String, String>, tsv: &str) -> String {
         missing.len()
     );
     for (test, ours) in missing {
-        let _ = writeln!(o, "- `{test}`: {ours}");
+        let why = label(test, ours, &notes).map(|w| format!(": {w}")).unwrap_or_default();
+        let _ = writeln!(o, "- `{test}`: {ours}{why}");
+    }
+    let odd: Vec<(&String, String)> = llvm
+        .keys()
+        .filter_map(|t| {
+            let ours = softgl.get(t).map_or("not run", String::as_str);
+            matches!(ours, "crash" | "not run").then(|| (t, label(t, ours, &notes).unwrap_or_default()))
+        })
+        .collect();
+    let _ = writeln!(o, "\n### softgl's crashes and tests not run ({})\n", odd.len());
+    for (test, why) in odd {
+        let _ = writeln!(o, "- `{test}`: {why}");
     }
     o
 }
@@ -151,7 +193,7 @@ pub fn results_dir(exe: &Path) -> Option<std::path::PathBuf> {
 
 /// The section for the results in `dir`.
 pub fn section(dir: &Path) -> Result<String, String> {
-    Ok(markdown(&read_results(dir)?, LLVMPIPE_TSV))
+    Ok(markdown(&read_results(dir)?, LLVMPIPE_TSV, NOTES_TSV))
 }
 
 #[cfg(test)]
@@ -175,7 +217,8 @@ mod tests {
     fn the_table_counts_each_group_and_lists_what_llvmpipe_passes() {
         let ours =
             parse_csv("spec@!opengl 1.0@x,0,0,pass\nspec@!opengl 1.0@y,0,1,fail\nspec@!opengl 1.1@z,0,-6,crash\n");
-        let md = markdown(&ours, TSV);
+        let notes = "# c\nspec@!opengl 1.1@z\tsurfaceless-abort\tneeds a window\nspec@!opengl 1.1@w\texcluded\tslow\n";
+        let md = markdown(&ours, TSV, notes);
         assert!(
             md.contains("| spec@!opengl 1.0 | 1 / 1 / 0 / 0 | 2 / 0 / 0 / 0 | 1 / 0 / 1 / 0 | 2 / 0 / 0 / 0 |"),
             "{md}"
@@ -187,6 +230,30 @@ mod tests {
         assert!(md.contains("| total | 1 / 1 / 0 / 1 (+1) |"), "{md}");
         assert!(md.contains("not on softgl (1)"), "{md}");
         assert!(md.contains("- `spec@!opengl 1.0@y`: fail"), "{md}");
+        assert!(md.contains("crashes and tests not run (2)"), "{md}");
+        assert!(
+            md.contains(
+                "- `spec@!opengl 1.1@z`: piglit's own abort on every surfaceless EGL, llvmpipe too (needs a window)"
+            ),
+            "{md}"
+        );
+        assert!(md.contains("- `spec@!opengl 1.1@w`: not run: slow"), "{md}");
+        let unlisted = markdown(&parse_csv("spec@!opengl 1.0@x,0,-6,crash\n"), TSV, notes);
+        assert!(
+            unlisted.contains("- `spec@!opengl 1.0@x`: softgl crashes here: a bug"),
+            "{unlisted}"
+        );
+    }
+
+    #[test]
+    fn every_note_names_a_gl1x_test_and_a_known_kind() {
+        let l = llvmpipe(LLVMPIPE_TSV);
+        let n = notes(NOTES_TSV);
+        assert_eq!(n.len(), 8);
+        for (test, (kind, _)) in &n {
+            assert!(l.contains_key(test), "{test}");
+            assert!(kind == "excluded" || kind == "surfaceless-abort", "{kind}");
+        }
     }
 
     #[test]

@@ -98,7 +98,7 @@ pub struct SavedClient {
     pub mask: u32,
     pub pack: PixelStore,
     pub unpack: PixelStore,
-    pub arrays: [ClientArray; 6],
+    pub arrays: [ClientArray; 7],
 }
 
 /// The GL state of one context that `softgl::Context` does not hold.
@@ -109,6 +109,8 @@ pub struct GlState {
     pub tex_coord: ClientArray,
     pub secondary: ClientArray,
     pub fog_coord: ClientArray,
+    /// `glEdgeFlagPointer`: `GLboolean`s.
+    pub edge_flag: ClientArray,
     pub pack: PixelStore,
     pub unpack: PixelStore,
     /// `glHint` modes, in the order of [`HINTS`].
@@ -136,6 +138,10 @@ impl Default for GlState {
             tex_coord: ClientArray::new(4),
             secondary: ClientArray::new(3),
             fog_coord: ClientArray::new(1),
+            edge_flag: ClientArray {
+                ty: GL_UNSIGNED_BYTE,
+                ..ClientArray::new(1)
+            },
             pack: PixelStore::DEFAULT,
             unpack: PixelStore::DEFAULT,
             hints: [GL_DONT_CARE; 5],
@@ -152,7 +158,7 @@ impl Default for GlState {
 
 impl GlState {
     /// The client arrays, in `glPushClientAttrib`'s order.
-    pub fn arrays(&self) -> [ClientArray; 6] {
+    pub fn arrays(&self) -> [ClientArray; 7] {
         [
             self.vertex,
             self.color,
@@ -160,6 +166,7 @@ impl GlState {
             self.tex_coord,
             self.secondary,
             self.fog_coord,
+            self.edge_flag,
         ]
     }
 
@@ -170,6 +177,7 @@ impl GlState {
             GL_COLOR_ARRAY => &mut self.color,
             GL_NORMAL_ARRAY => &mut self.normal,
             GL_TEXTURE_COORD_ARRAY => &mut self.tex_coord,
+            GL_EDGE_FLAG_ARRAY => &mut self.edge_flag,
             0x845E => &mut self.secondary, // GL_SECONDARY_COLOR_ARRAY
             0x8457 => &mut self.fog_coord, // GL_FOG_COORD_ARRAY
             _ => return None,

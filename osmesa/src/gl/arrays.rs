@@ -1,10 +1,11 @@
 //! Client vertex arrays: the pointers, `glDrawArrays`, `glDrawElements`,
 //! `glArrayElement`. The caller's arrays are read into f32 arrays for softgl
 //! at each draw; normals and texture coordinates are accepted and, without
-//! lighting and texturing, have no effect on the image.
+//! lighting and texturing, have no effect on the image; edge flags
+//! (`glEdgeFlagPointer`) pick the edges polygon mode `GL_LINE`/`GL_POINT` draws.
 
 use super::enums::decode;
-use super::{now, run_or_record};
+use super::{now, outside, run_or_record};
 use crate::consts::*;
 use crate::gl_state::{ClientArray, Cmd, GlState};
 use softgl::{AttribArray, Context, GlError, GlResult, Indices, PrimitiveMode, VertexArrays};
@@ -92,6 +93,8 @@ struct Fetched {
     pos_size: usize,
     pos: Vec<f32>,
     color: Option<(usize, Vec<f32>)>,
+    /// The edge flags, 0 or not (`glEdgeFlagPointer`).
+    edge_flag: Option<Vec<f32>>,
     secondary: Option<Vec<f32>>,
     fog_coord: Option<Vec<f32>>,
 }
@@ -103,9 +106,10 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         return Ok(None);
     }
     let color = (os.color.enabled && !os.color.ptr.is_null()).then_some(&os.color);
+    let edge_flag = (os.edge_flag.enabled && !os.edge_flag.ptr.is_null()).then_some(&os.edge_flag);
     let secondary = (os.secondary.enabled && !os.secondary.ptr.is_null()).then_some(&os.secondary);
     let fog_coord = (os.fog_coord.enabled && !os.fog_coord.ptr.is_null()).then_some(&os.fog_coord);
-    let (mut pos, mut col, mut sec, mut fog) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut pos, mut col, mut sec, mut fog, mut edges) = (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let mut count = 0;
     for i in indices {
         // SAFETY: the enabled arrays hold every element the draw names (GL's contract).
@@ -113,6 +117,9 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
             fetch(&os.vertex, i, false, &mut pos);
             if let Some(c) = color {
                 fetch(c, i, true, &mut col);
+            }
+            if let Some(e) = edge_flag {
+                fetch(e, i, false, &mut edges);
             }
             if let Some(c) = secondary {
                 fetch(c, i, true, &mut sec);
@@ -129,6 +136,7 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         pos_size: os.vertex.size as usize,
         pos,
         color: color.map(|c| (c.size as usize, col)),
+        edge_flag: edge_flag.map(|_| edges),
         secondary: secondary.map(|_| sec),
         fog_coord: fog_coord.map(|_| fog),
     }))
@@ -158,6 +166,7 @@ fn draw(
         let arrays = VertexArrays {
             position: AttribArray::new(f.pos_size, &f.pos),
             color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
+            edge_flag: f.edge_flag.as_ref().map(|e| AttribArray::new(1, e)),
             secondary: f.secondary.as_ref().map(|c| AttribArray::new(3, c)),
             fog_coord: f.fog_coord.as_ref().map(|c| AttribArray::new(1, c)),
         };
@@ -183,7 +192,8 @@ pub(super) fn pointer(
     stride: i32,
     ptr: *const c_void,
 ) {
-    now(|os, _| {
+    now(|os, gl| {
+        outside(gl)?;
         if !types.contains(&ty) {
             return Err(GlError::InvalidEnum);
         }
@@ -197,12 +207,13 @@ pub(super) fn pointer(
 }
 
 fn client_state(array: GLenum, on: bool) {
-    now(|os, _| {
+    now(|os, gl| {
+        outside(gl)?;
         let a = match (os.array_mut(array), array) {
             (Some(a), _) => a,
-            // Colour-index and edge-flag arrays do not exist in softgl yet.
-            (None, GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY) if on => return Err(GlError::InvalidOperation),
-            (None, GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY) => return Ok(()),
+            // Colour-index arrays do not exist in softgl yet.
+            (None, GL_INDEX_ARRAY) if on => return Err(GlError::InvalidOperation),
+            (None, GL_INDEX_ARRAY) => return Ok(()),
             (None, _) => return Err(GlError::InvalidEnum),
         };
         a.enabled = on;
@@ -243,6 +254,11 @@ exports! {
     /// `ptr` stays valid while drawing reads it (GL's contract).
     [unsafe] fn glTexCoordPointer(size: i32, ty: GLenum, stride: i32, ptr: *const c_void) {
         pointer(|o| &mut o.tex_coord, &[1, 2, 3, 4], size, ty, &ALL_TYPES, stride, ptr)
+    }
+    /// # Safety
+    /// `ptr` stays valid while drawing reads it (GL's contract).
+    [unsafe] fn glEdgeFlagPointer(stride: i32, ptr: *const c_void) {
+        pointer(|o| &mut o.edge_flag, &[1], 1, GL_UNSIGNED_BYTE, &[GL_UNSIGNED_BYTE], stride, ptr)
     }
     [] fn glEnableClientState(array: GLenum) {
         client_state(array, true)
@@ -326,6 +342,7 @@ exports! {
             let color = read(&os.color, true).map(|v| pad(v, os.color.size));
             let normal = read(&os.normal, true);
             let tex = read(&os.tex_coord, false).map(|v| pad(v, os.tex_coord.size));
+            let edge_flag = read(&os.edge_flag, false).map(|v| v[0] != 0.0);
             let vertex = read(&os.vertex, false).map(|v| pad(v, os.vertex.size));
             let cmd: Cmd = std::sync::Arc::new(move |_: &mut GlState, gl: &mut Context| {
                 if let Some([r, g, b, a]) = color {
@@ -336,6 +353,9 @@ exports! {
                 }
                 if let Some([s, t, r, q]) = tex {
                     gl.tex_coord4(s, t, r, q);
+                }
+                if let Some(e) = edge_flag {
+                    gl.edge_flag(e);
                 }
                 if let Some([x, y, z, w]) = vertex {
                     gl.vertex4(x, y, z, w);
@@ -348,12 +368,14 @@ exports! {
     /// # Safety
     /// `params` is null or writable.
     [unsafe] fn glGetPointerv(pname: GLenum, params: *mut *mut c_void) {
-        now(|os, _| {
+        now(|os, gl| {
+            outside(gl)?;
             let p = match pname {
                 GL_VERTEX_ARRAY_POINTER => os.vertex.ptr,
                 GL_COLOR_ARRAY_POINTER => os.color.ptr,
                 GL_NORMAL_ARRAY_POINTER => os.normal.ptr,
                 GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord.ptr,
+                GL_EDGE_FLAG_ARRAY_POINTER => os.edge_flag.ptr,
                 0x845D => os.secondary.ptr, // GL_SECONDARY_COLOR_ARRAY_POINTER
                 0x8456 => os.fog_coord.ptr, // GL_FOG_COORD_ARRAY_POINTER
                 _ => return Err(GlError::InvalidEnum),

@@ -56,6 +56,8 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         gl.color4(c.color.x, c.color.y, c.color.z, c.color.w);
         gl.normal3(c.normal.x, c.normal.y, c.normal.z);
         gl.tex_coord4(c.tex_coord.x, c.tex_coord.y, c.tex_coord.z, c.tex_coord.w);
+        gl.index(c.index);
+        gl.edge_flag(c.edge_flag);
         gl.secondary_color3(c.secondary.x, c.secondary.y, c.secondary.z);
         gl.fog_coord(c.fog_coord);
     }
@@ -188,7 +190,8 @@ exports! {
         })
     }
     [] fn glPushClientAttrib(mask: u32) {
-        now(|os, _| {
+        now(|os, gl| {
+            super::outside(gl)?;
             if os.client_attrib_stack.len() >= MAX_DEPTH {
                 return Err(GlError::StackOverflow);
             }
@@ -203,13 +206,14 @@ exports! {
         })
     }
     [] fn glPopClientAttrib() {
-        now(|os, _| {
+        now(|os, gl| {
+            super::outside(gl)?;
             let s = os.client_attrib_stack.pop().ok_or(GlError::StackUnderflow)?;
             if s.mask & CLIENT_PIXEL_STORE_BIT != 0 {
                 (os.pack, os.unpack) = (s.pack, s.unpack);
             }
             if s.mask & CLIENT_VERTEX_ARRAY_BIT != 0 {
-                [os.vertex, os.color, os.normal, os.tex_coord, os.secondary, os.fog_coord] = s.arrays;
+                [os.vertex, os.color, os.normal, os.tex_coord, os.secondary, os.fog_coord, os.edge_flag] = s.arrays;
             }
             Ok(())
         })

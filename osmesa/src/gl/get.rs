@@ -234,6 +234,10 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x8088 => i(os.tex_coord.size), // TEXTURE_COORD_ARRAY_SIZE
         0x8089 => e(os.tex_coord.ty),
         0x808A => i(os.tex_coord.stride),
+        GL_EDGE_FLAG_ARRAY => Val::B(vec![os.edge_flag.enabled]),
+        0x808C => i(os.edge_flag.stride),               // EDGE_FLAG_ARRAY_STRIDE
+        0x0B01 => f(gl.current().index),                // CURRENT_INDEX
+        0x0B43 => Val::B(vec![gl.current().edge_flag]), // EDGE_FLAG
         _ => match enums::cap(pname)? {
             Cap::Core(c) => Val::B(vec![gl.is_enabled(c)]),
             Cap::Inert(c) => Val::B(vec![os.inert_caps.contains(&c)]),

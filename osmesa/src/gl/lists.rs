@@ -127,7 +127,8 @@ exports! {
         })
     }
     [] fn glListBase(base: u32) {
-        rec(move |os, _| {
+        rec(move |os, gl| {
+            super::outside(gl)?;
             os.list_base = base;
             Ok(())
         })

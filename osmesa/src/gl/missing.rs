@@ -1,10 +1,13 @@
 //! Entry points of GL 1.x that softgl does not implement yet. Each is
 //! exported (so that GLU and PyOpenGL resolve it here, not in another GL
-//! library) and records `GL_INVALID_OPERATION`. None reads its pointers, so
+//! library) and records `GL_INVALID_OPERATION` when it runs: compiled into a
+//! display list like the command it stands for, or at once for the commands
+//! GL never compiles (queries, texture names, `glRenderMode`, client
+//! arrays). None reads its pointers, so
 //! none is `unsafe` but the two texture queries that write a 0.
 //! The README lists them by group.
 
-use super::missing;
+use super::{missing, missing_now};
 use crate::consts::*;
 use std::ffi::c_void;
 
@@ -19,7 +22,7 @@ exports! {
             // SAFETY: writable by GL's contract.
             unsafe { *params = 0 };
         }
-        missing()
+        missing_now()
     }
     /// As `glGetTexLevelParameteriv`.
     ///
@@ -30,11 +33,11 @@ exports! {
             // SAFETY: writable by GL's contract.
             unsafe { *params = 0.0 };
         }
-        missing()
+        missing_now()
     }
     /// Texturing (not in softgl yet): writes no names, records `GL_INVALID_OPERATION`.
     [] fn glGenTextures(_n: i32, _textures: *mut u32) {
-        missing()
+        missing_now()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glLightf(_light: GLenum, _pname: GLenum, _param: f32) {
@@ -78,7 +81,7 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetTexParameterfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
-        missing()
+        missing_now()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glTexEnvf(_target: GLenum, _pname: GLenum, _param: f32) {
@@ -90,7 +93,7 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetTexEnvfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
-        missing()
+        missing_now()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glTexGenf(_coord: GLenum, _pname: GLenum, _param: f32) {
@@ -102,7 +105,7 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetTexGenfv(_coord: GLenum, _pname: GLenum, _params: *mut f32) {
-        missing()
+        missing_now()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glPixelTransferf(_pname: GLenum, _param: f32) {
@@ -150,7 +153,7 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetTexParameteriv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
-        missing()
+        missing_now()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glTexEnvi(_target: GLenum, _pname: GLenum, _param: i32) {
@@ -162,7 +165,7 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetTexEnviv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
-        missing()
+        missing_now()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glTexGeni(_coord: GLenum, _pname: GLenum, _param: i32) {
@@ -174,7 +177,7 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetTexGeniv(_coord: GLenum, _pname: GLenum, _params: *mut i32) {
-        missing()
+        missing_now()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glPixelTransferi(_pname: GLenum, _param: i32) {
@@ -190,7 +193,7 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetTexGendv(_coord: GLenum, _pname: GLenum, _params: *mut f64) {
-        missing()
+        missing_now()
     }
     /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glColorMaterial(_face: GLenum, _mode: GLenum) {
@@ -234,7 +237,7 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetTexImage(_target: GLenum, _level: i32, _format: GLenum, _ty: GLenum, _pixels: *mut c_void) {
-        missing()
+        missing_now()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glBindTexture(_target: GLenum, _texture: u32) {
@@ -242,11 +245,11 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glDeleteTextures(_n: i32, _textures: *const u32) {
-        missing()
+        missing_now()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glIsTexture(_texture: u32) -> u8 {
-        missing();
+        missing_now();
         GL_FALSE
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -255,7 +258,7 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glAreTexturesResident(_n: i32, _textures: *const u32, _residences: *mut u8) -> u8 {
-        missing();
+        missing_now();
         GL_FALSE
     }
     /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -268,7 +271,7 @@ exports! {
     }
     /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetPolygonStipple(_mask: *mut u8) {
-        missing()
+        missing_now()
     }
     /// Clip planes (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glClipPlane(_plane: GLenum, _equation: *const f64) {
@@ -412,28 +415,28 @@ exports! {
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetPixelMapfv(_map: GLenum, _values: *mut f32) {
-        missing()
+        missing_now()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetPixelMapuiv(_map: GLenum, _values: *mut u32) {
-        missing()
+        missing_now()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetPixelMapusv(_map: GLenum, _values: *mut u16) {
-        missing()
+        missing_now()
     }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glRenderMode(_mode: GLenum) -> i32 {
-        missing();
+        missing_now();
         0
     }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glSelectBuffer(_size: i32, _buffer: *mut u32) {
-        missing()
+        missing_now()
     }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glFeedbackBuffer(_size: i32, _ty: GLenum, _buffer: *mut f32) {
-        missing()
+        missing_now()
     }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glInitNames() {
@@ -472,24 +475,8 @@ exports! {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalCoord1f(_u: f32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalCoord1fv(_u: *const f32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalCoord2f(_u: f32, _v: f32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalCoord2fv(_u: *const f32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetMapfv(_target: GLenum, _query: GLenum, _v: *mut f32) {
-        missing()
+        missing_now()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glMap1d(_target: GLenum, _u1: f64, _u2: f64, _stride: i32, _order: i32, _points: *const f64) {
@@ -508,84 +495,12 @@ exports! {
         missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalCoord1d(_u: f64) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalCoord1dv(_u: *const f64) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalCoord2d(_u: f64, _v: f64) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalCoord2dv(_u: *const f64) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetMapdv(_target: GLenum, _query: GLenum, _v: *mut f64) {
-        missing()
+        missing_now()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetMapiv(_target: GLenum, _query: GLenum, _v: *mut i32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalMesh1(_mode: GLenum, _i1: i32, _i2: i32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalMesh2(_mode: GLenum, _i1: i32, _i2: i32, _j1: i32, _j2: i32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalPoint1(_i: i32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEvalPoint2(_i: i32, _j: i32) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexf(_c: f32) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexfv(_c: *const f32) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexd(_c: f64) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexdv(_c: *const f64) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexi(_c: i32) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexiv(_c: *const i32) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexs(_c: i16) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexsv(_c: *const i16) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexub(_c: u8) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexubv(_c: *const u8) {
-        missing()
+        missing_now()
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glIndexMask(_mask: u32) {
@@ -597,18 +512,6 @@ exports! {
     }
     /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glIndexPointer(_ty: GLenum, _stride: i32, _ptr: *const c_void) {
-        missing()
-    }
-    /// Edge flags (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEdgeFlag(_flag: u8) {
-        missing()
-    }
-    /// Edge flags (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEdgeFlagv(_flag: *const u8) {
-        missing()
-    }
-    /// Edge flags (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glEdgeFlagPointer(_stride: i32, _ptr: *const c_void) {
-        missing()
+        missing_now()
     }
 }

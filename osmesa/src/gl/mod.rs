@@ -24,6 +24,7 @@ macro_rules! exports {
 mod arrays;
 mod attrib;
 mod enums;
+mod extra_attribs;
 mod fog;
 pub(crate) mod get;
 mod immediate;
@@ -34,6 +35,7 @@ mod state;
 
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
+pub use extra_attribs::*;
 pub use fog::*;
 pub use get::*;
 pub use immediate::*;
@@ -47,6 +49,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
     [
         arrays::table,
         attrib::table,
+        extra_attribs::table,
         fog::table,
         fog::color_table,
         get::table,
@@ -128,8 +131,36 @@ fn now(f: impl FnOnce(&mut GlState, &mut Context) -> GlResult) {
     })
 }
 
-/// A function softgl does not implement yet: `GL_INVALID_OPERATION`, at
-/// once (also while a display list is compiled).
+/// A function softgl does not implement yet: `GL_INVALID_OPERATION` when it
+/// runs. Like the command it stands for, it is compiled into a display list
+/// (nothing is reported then) and runs, failing, when the list is called.
 fn missing() {
+    rec(|_, _| Err(GlError::InvalidOperation))
+}
+
+/// As [`missing`], for the commands GL runs at once even while a list is
+/// compiled (queries, names, client state: GL 1.5 §5.4).
+fn missing_now() {
     now(|_, _| Err(GlError::InvalidOperation))
+}
+
+/// `GL_INVALID_OPERATION` between `glBegin` and `glEnd`, where GL allows only
+/// vertex attributes, `glArrayElement`, evaluators and `glCallList(s)`.
+fn outside(gl: &Context) -> GlResult {
+    if gl.inside_begin() {
+        return Err(GlError::InvalidOperation);
+    }
+    Ok(())
+}
+
+/// Records `GL_INVALID_OPERATION` and says so between `glBegin` and `glEnd`
+/// (for calls that are not run through [`now`] or [`rec`]).
+fn refused_inside_begin() -> bool {
+    with_gl(false, |_, gl| {
+        let inside = gl.inside_begin();
+        if inside {
+            gl.record_error(GlError::InvalidOperation);
+        }
+        inside
+    })
 }

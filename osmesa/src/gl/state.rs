@@ -3,7 +3,7 @@
 use super::enums::{self, decode, Cap};
 use super::{checked, gl, rec};
 use crate::consts::*;
-use crate::gl_state::HINTS;
+use crate::gl_state::{GlState, HINTS};
 use crate::state::{with_current, with_gl};
 use glam::{DMat4, Mat4};
 use softgl::{ClearMask, Context, GlError, GlResult};
@@ -29,6 +29,20 @@ fn set_cap(gl: &mut softgl::Context, inert: &mut Vec<GLenum>, cap: GLenum, on: b
     }
 }
 
+/// `glEnable`/`glDisable`, which in a compatibility context also switch the
+/// client arrays (`GL_VERTEX_ARRAY`, …) as Mesa does (`_mesa_set_enable`,
+/// `src/mesa/main/enable.c`), where GL 1.5 asks for `glEnableClientState`.
+fn set_cap_or_array(os: &mut GlState, gl: &mut Context, cap: GLenum, on: bool) -> GlResult {
+    match os.array_mut(cap) {
+        Some(array) => {
+            super::outside(gl)?;
+            array.enabled = on;
+            Ok(())
+        }
+        None => set_cap(gl, &mut os.inert_caps, cap, on),
+    }
+}
+
 /// Reads 16 values through `m` (column-major, as GL lays them out).
 ///
 /// # Safety
@@ -48,10 +62,10 @@ unsafe fn matrix_from<T: Copy + Into<f64>>(m: *const T) -> GlResult<Mat4> {
 
 exports! {
     [] fn glEnable(cap: GLenum) {
-        rec(move |os, gl| set_cap(gl, &mut os.inert_caps, cap, true))
+        rec(move |os, gl| set_cap_or_array(os, gl, cap, true))
     }
     [] fn glDisable(cap: GLenum) {
-        rec(move |os, gl| set_cap(gl, &mut os.inert_caps, cap, false))
+        rec(move |os, gl| set_cap_or_array(os, gl, cap, false))
     }
     [] fn glIsEnabled(cap: GLenum) -> u8 {
         with_gl(GL_FALSE, |os, gl| match super::get::is_enabled(os, gl, cap) {
@@ -76,10 +90,16 @@ exports! {
     /// The converted formats reach the caller's buffer, and the Z24S8 copy
     /// `OSMesaGetDepthBuffer` handed out is brought up to date.
     [] fn glFlush() {
+        if super::refused_inside_begin() {
+            return;
+        }
         with_current((), |os| os.flush())
     }
     /// As `glFlush`: softgl draws at each call, so there is nothing to wait for.
     [] fn glFinish() {
+        if super::refused_inside_begin() {
+            return;
+        }
         with_current((), |os| os.flush())
     }
     [] fn glHint(target: GLenum, mode: GLenum) {
@@ -97,7 +117,8 @@ exports! {
     }
     /// `GL_FRONT` and its aliases: an OSMesa context is single-buffered.
     [] fn glDrawBuffer(mode: GLenum) {
-        checked(move |_| match mode {
+        checked(move |gl| match mode {
+            _ if gl.inside_begin() => Err(GlError::InvalidOperation),
             GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK => Ok(()),
             GL_NONE | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT => {
                 Err(GlError::InvalidOperation)
@@ -107,7 +128,8 @@ exports! {
         })
     }
     [] fn glReadBuffer(mode: GLenum) {
-        checked(move |_| match mode {
+        checked(move |gl| match mode {
+            _ if gl.inside_begin() => Err(GlError::InvalidOperation),
             GL_FRONT | GL_FRONT_LEFT | GL_LEFT => Ok(()),
             GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT | GL_FRONT_AND_BACK => {
                 Err(GlError::InvalidOperation)

@@ -1,0 +1,150 @@
+//! The other commands GL allows between `glBegin` and `glEnd`: `glIndex*`
+//! (the current colour index: kept and queryable as `GL_CURRENT_INDEX`,
+//! without effect in an RGBA context), `glEdgeFlag*` (drawn by polygon mode
+//! `GL_LINE`/`GL_POINT`) and the evaluator calls `glEvalCoord*`,
+//! `glEvalPoint*` (and `glEvalMesh*`, outside), which generate nothing
+//! because no map can be enabled in softgl (GL 1.5 §5.1: only enabled maps
+//! are evaluated).
+
+use super::{outside, rec};
+use crate::consts::GLenum;
+
+/// Reads one value through `v`, or `None` for a null pointer.
+///
+/// # Safety
+/// `v` is null or points to a readable value.
+unsafe fn read1<T: Copy>(v: *const T) -> Option<T> {
+    // SAFETY: null or readable by the caller's contract.
+    (!v.is_null()).then(|| unsafe { v.read_unaligned() })
+}
+
+fn index(c: f32) {
+    rec(move |_, gl| {
+        gl.index(c);
+        Ok(())
+    })
+}
+
+fn edge_flag(flag: u8) {
+    rec(move |_, gl| {
+        gl.edge_flag(flag != 0);
+        Ok(())
+    })
+}
+
+/// An evaluator call allowed between `glBegin` and `glEnd`: with no map
+/// enabled it generates no vertex and changes no state.
+fn eval() {
+    rec(|_, _| Ok(()))
+}
+
+/// `glEvalMesh*`: not allowed between `glBegin` and `glEnd`; else, with no
+/// map enabled, nothing.
+fn eval_mesh() {
+    rec(|_, gl| outside(gl))
+}
+
+exports! {
+    [] fn glIndexf(c: f32) {
+        index(c)
+    }
+    [] fn glIndexd(c: f64) {
+        index(c as f32)
+    }
+    [] fn glIndexi(c: i32) {
+        index(c as f32)
+    }
+    [] fn glIndexs(c: i16) {
+        index(f32::from(c))
+    }
+    [] fn glIndexub(c: u8) {
+        index(f32::from(c))
+    }
+    /// # Safety
+    /// `c` is null or readable.
+    [unsafe] fn glIndexfv(c: *const f32) {
+        // SAFETY: readable by GL's contract; null is ignored.
+        if let Some(c) = unsafe { read1(c) } {
+            index(c)
+        }
+    }
+    /// # Safety
+    /// `c` is null or readable.
+    [unsafe] fn glIndexdv(c: *const f64) {
+        // SAFETY: readable by GL's contract; null is ignored.
+        if let Some(c) = unsafe { read1(c) } {
+            index(c as f32)
+        }
+    }
+    /// # Safety
+    /// `c` is null or readable.
+    [unsafe] fn glIndexiv(c: *const i32) {
+        // SAFETY: readable by GL's contract; null is ignored.
+        if let Some(c) = unsafe { read1(c) } {
+            index(c as f32)
+        }
+    }
+    /// # Safety
+    /// `c` is null or readable.
+    [unsafe] fn glIndexsv(c: *const i16) {
+        // SAFETY: readable by GL's contract; null is ignored.
+        if let Some(c) = unsafe { read1(c) } {
+            index(f32::from(c))
+        }
+    }
+    /// # Safety
+    /// `c` is null or readable.
+    [unsafe] fn glIndexubv(c: *const u8) {
+        // SAFETY: readable by GL's contract; null is ignored.
+        if let Some(c) = unsafe { read1(c) } {
+            index(f32::from(c))
+        }
+    }
+    [] fn glEdgeFlag(flag: u8) {
+        edge_flag(flag)
+    }
+    /// # Safety
+    /// `flag` is null or readable.
+    [unsafe] fn glEdgeFlagv(flag: *const u8) {
+        // SAFETY: readable by GL's contract; null is ignored.
+        if let Some(f) = unsafe { read1(flag) } {
+            edge_flag(f)
+        }
+    }
+    [] fn glEvalCoord1f(_u: f32) {
+        eval()
+    }
+    [] fn glEvalCoord1fv(_u: *const f32) {
+        eval()
+    }
+    [] fn glEvalCoord2f(_u: f32, _v: f32) {
+        eval()
+    }
+    [] fn glEvalCoord2fv(_u: *const f32) {
+        eval()
+    }
+    [] fn glEvalCoord1d(_u: f64) {
+        eval()
+    }
+    [] fn glEvalCoord1dv(_u: *const f64) {
+        eval()
+    }
+    [] fn glEvalCoord2d(_u: f64, _v: f64) {
+        eval()
+    }
+    [] fn glEvalCoord2dv(_u: *const f64) {
+        eval()
+    }
+    [] fn glEvalPoint1(_i: i32) {
+        eval()
+    }
+    [] fn glEvalPoint2(_i: i32, _j: i32) {
+        eval()
+    }
+    [] fn glEvalMesh1(_mode: GLenum, _i1: i32, _i2: i32) {
+        eval_mesh()
+    }
+    [] fn glEvalMesh2(_mode: GLenum, _i1: i32, _i2: i32, _j1: i32, _j2: i32) {
+        eval_mesh()
+    }
+}
