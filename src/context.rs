@@ -8,6 +8,9 @@ use crate::error::{GlError, GlResult};
 use crate::fragment::{Backend, FragmentStage};
 use crate::framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
 use crate::geometry::{DrawSource, Geometry, InVertex, MAX_VIEWPORT};
+use crate::lighting::{
+    ColorMaterialMode, LightModelParam, LightParam, LightParamName, MaterialParam, MaterialParamName,
+};
 use crate::matrix::{self, MatrixMode, MatrixStack};
 use crate::state::{
     Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, RasterState, ShadeModel, WindowRect,
@@ -75,6 +78,8 @@ pub struct VertexArrays<'a> {
     pub position: AttribArray<'a>,
     /// 3 or 4 components.
     pub color: Option<AttribArray<'a>>,
+    /// 3 components (`glNormalPointer`).
+    pub normal: Option<AttribArray<'a>>,
 }
 
 impl<'a> VertexArrays<'a> {
@@ -83,6 +88,7 @@ impl<'a> VertexArrays<'a> {
         VertexArrays {
             position: AttribArray::new(size, data),
             color: None,
+            normal: None,
         }
     }
 
@@ -91,6 +97,15 @@ impl<'a> VertexArrays<'a> {
         VertexArrays {
             position: AttribArray::new(pos_size, pos),
             color: Some(AttribArray::new(color_size, color)),
+            normal: None,
+        }
+    }
+
+    /// The same arrays with per-vertex normals (3 floats each).
+    pub fn with_normals(self, normal: &'a [f32]) -> VertexArrays<'a> {
+        VertexArrays {
+            normal: Some(AttribArray::new(3, normal)),
+            ..self
         }
     }
 
@@ -100,6 +115,10 @@ impl<'a> VertexArrays<'a> {
         if let Some(c) = &self.color {
             c.check(3..=4)?;
             len = len.min(c.len());
+        }
+        if let Some(n) = &self.normal {
+            n.check(3..=3)?;
+            len = len.min(n.len());
         }
         Ok(len)
     }
@@ -312,11 +331,23 @@ impl Context {
 
     // ----- capabilities -----
 
+    /// `glEnable`; a light or clip plane past the last is `InvalidEnum`.
+    /// Enabling `ColorMaterial` makes the material follow the current colour.
     pub fn enable(&mut self, cap: Capability) -> GlResult {
-        self.set(|s| *s.flag_mut(cap) = true)
+        self.outside()?;
+        self.record(if cap.valid() { Ok(()) } else { Err(GlError::InvalidEnum) })?;
+        let color = self.current.color;
+        self.set(|s| {
+            *s.flag_mut(cap) = true;
+            if cap == Capability::ColorMaterial {
+                s.lighting.track_color(color);
+            }
+        })
     }
 
     pub fn disable(&mut self, cap: Capability) -> GlResult {
+        self.outside()?;
+        self.record(if cap.valid() { Ok(()) } else { Err(GlError::InvalidEnum) })?;
         self.set(|s| *s.flag_mut(cap) = false)
     }
 
@@ -598,6 +629,79 @@ impl Context {
         self.set(|s| s.color_mask = ColorMask { r, g, b, a })
     }
 
+    // ----- lighting and clip planes -----
+
+    /// `glLight` on light `index` (`InvalidEnum` from 8 on); positions and
+    /// spot directions are transformed by the modelview in force.
+    pub fn light(&mut self, index: u32, param: LightParam) -> GlResult {
+        self.outside()?;
+        let mv = *self.modelview.top();
+        let r = self.state.lighting.set_light(index, param, &mv);
+        self.record(r)
+    }
+
+    /// `glGetLight`: positions and directions in eye coordinates.
+    pub fn get_light(&mut self, index: u32, name: LightParamName) -> GlResult<LightParam> {
+        self.outside()?;
+        let r = self.state.lighting.light(index, name);
+        self.record(r)
+    }
+
+    pub fn light_model(&mut self, param: LightModelParam) -> GlResult {
+        self.set(|s| s.lighting.set_model(param))
+    }
+
+    /// `glMaterial`, also between `begin` and `end` (the whole primitive
+    /// then takes the last value).
+    pub fn material(&mut self, face: Face, param: MaterialParam) -> GlResult {
+        let r = self.state.lighting.set_material(face, param);
+        self.record(r)
+    }
+
+    /// `glGetMaterial` of `Front` or `Back`.
+    pub fn get_material(&mut self, face: Face, name: MaterialParamName) -> GlResult<MaterialParam> {
+        self.outside()?;
+        let r = self.state.lighting.material(face, name);
+        self.record(r)
+    }
+
+    /// `glColorMaterial`; with `ColorMaterial` on, the material follows the
+    /// current colour at once.
+    pub fn color_material(&mut self, face: Face, mode: ColorMaterialMode) -> GlResult {
+        let color = self.current.color;
+        self.set(|s| {
+            (s.lighting.color_material_face, s.lighting.color_material_mode) = (face, mode);
+            s.lighting.track_color(color);
+        })
+    }
+
+    /// Replaces the whole lighting and clip plane state, values as stored
+    /// (eye coordinates): how `glPopAttrib` restores it.
+    pub fn restore_lighting(&mut self, lighting: crate::lighting::LightingState) -> GlResult {
+        self.set(|s| s.lighting = lighting)
+    }
+
+    /// `glClipPlane`: `plane` in object coordinates, kept in eye coordinates.
+    pub fn clip_plane(&mut self, index: u32, plane: [f64; 4]) -> GlResult {
+        self.outside()?;
+        let mv = *self.modelview.top();
+        let r = self.state.lighting.set_clip_plane(index, plane, &mv);
+        self.record(r)
+    }
+
+    /// `glGetClipPlane`: the plane in eye coordinates.
+    pub fn get_clip_plane(&mut self, index: u32) -> GlResult<[f64; 4]> {
+        self.outside()?;
+        let r = self
+            .state
+            .lighting
+            .clip_planes
+            .get(index as usize)
+            .copied()
+            .ok_or(GlError::InvalidEnum);
+        self.record(r)
+    }
+
     // ----- immediate mode -----
 
     /// `glBegin`; `InvalidOperation` when already inside `begin`.
@@ -637,6 +741,7 @@ impl Context {
 
     pub fn color4(&mut self, r: f32, g: f32, b: f32, a: f32) {
         self.current.color = Vec4::new(r, g, b, a);
+        self.state.lighting.track_color(self.current.color);
         if let Some((_, _, per_vertex_color)) = &mut self.begun {
             *per_vertex_color = true;
         }

@@ -26,6 +26,7 @@ pub mod fragment;
 pub mod framebuffer;
 pub mod geometry;
 pub mod gl_enum;
+pub mod lighting;
 pub mod matrix;
 pub mod raster;
 pub mod state;
@@ -35,6 +36,9 @@ pub use error::{GlError, GlResult};
 pub use fragment::Backend;
 pub use framebuffer::{ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
 pub use gl_enum::GlEnum;
+pub use lighting::{
+    ColorControl, ColorMaterialMode, LightModelParam, LightParam, LightParamName, MaterialParam, MaterialParamName,
+};
 pub use matrix::MatrixMode;
 pub use softgl_jit::rng;
 pub use softgl_jit::{

@@ -21,6 +21,26 @@ pub enum Capability {
     PolygonOffsetPoint,
     ScissorTest,
     StencilTest,
+    Lighting,
+    /// `GL_LIGHTi`, `i < 8`.
+    Light(u8),
+    ColorMaterial,
+    Normalize,
+    RescaleNormal,
+    /// `GL_CLIP_PLANEi`, `i < 6`.
+    ClipPlane(u8),
+}
+
+impl Capability {
+    /// Whether the capability names something that exists (a light below
+    /// 8, a clip plane below 6).
+    pub fn valid(self) -> bool {
+        match self {
+            Capability::Light(i) => usize::from(i) < crate::lighting::MAX_LIGHTS,
+            Capability::ClipPlane(i) => usize::from(i) < crate::lighting::MAX_CLIP_PLANES,
+            _ => true,
+        }
+    }
 }
 
 /// The ten GL 1.x primitive modes.
@@ -181,6 +201,9 @@ pub struct RasterState {
     pub clear_color: [f32; 4],
     pub clear_depth: f64,
     pub clear_stencil: i32,
+
+    /// Lighting, materials, normals and user clip planes.
+    pub lighting: crate::lighting::LightingState,
 }
 
 impl RasterState {
@@ -234,10 +257,11 @@ impl RasterState {
             clear_color: [0.0; 4],
             clear_depth: 1.0,
             clear_stencil: 0,
+            lighting: crate::lighting::LightingState::default(),
         }
     }
 
-    /// The enable flag behind `cap`.
+    /// The enable flag behind `cap` (which must be [`Capability::valid`]).
     pub fn flag_mut(&mut self, cap: Capability) -> &mut bool {
         match cap {
             Capability::AlphaTest => &mut self.alpha_test,
@@ -251,6 +275,12 @@ impl RasterState {
             Capability::PolygonOffsetPoint => &mut self.offset_point,
             Capability::ScissorTest => &mut self.scissor_test,
             Capability::StencilTest => &mut self.stencil_test,
+            Capability::Lighting => &mut self.lighting.enabled,
+            Capability::Light(i) => &mut self.lighting.lights[usize::from(i)].enabled,
+            Capability::ColorMaterial => &mut self.lighting.color_material,
+            Capability::Normalize => &mut self.lighting.normalize,
+            Capability::RescaleNormal => &mut self.lighting.rescale_normal,
+            Capability::ClipPlane(i) => &mut self.lighting.clip_enabled[usize::from(i)],
         }
     }
 
@@ -268,6 +298,12 @@ impl RasterState {
             Capability::PolygonOffsetPoint => self.offset_point,
             Capability::ScissorTest => self.scissor_test,
             Capability::StencilTest => self.stencil_test,
+            Capability::Lighting => self.lighting.enabled,
+            Capability::Light(i) => self.lighting.lights.get(usize::from(i)).is_some_and(|l| l.enabled),
+            Capability::ColorMaterial => self.lighting.color_material,
+            Capability::Normalize => self.lighting.normalize,
+            Capability::RescaleNormal => self.lighting.rescale_normal,
+            Capability::ClipPlane(i) => self.lighting.clip_enabled.get(usize::from(i)) == Some(&true),
         }
     }
 

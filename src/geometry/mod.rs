@@ -5,6 +5,7 @@
 pub mod assemble;
 pub mod batch;
 pub mod clip;
+pub mod lighting;
 
 use crate::framebuffer::{Framebuffer, Rect};
 use crate::raster::{self, RasterParams, RasterVertex, SpanSink};

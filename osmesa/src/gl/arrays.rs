@@ -1,7 +1,7 @@
 //! Client vertex arrays: the pointers, `glDrawArrays`, `glDrawElements`,
 //! `glArrayElement`. The caller's arrays are read into f32 arrays for softgl
-//! at each draw; normals and texture coordinates are accepted and, without
-//! lighting and texturing, have no effect on the image.
+//! at each draw (positions, colours, normals); texture coordinates are
+//! accepted and, without texturing, have no effect on the image.
 
 use super::enums::decode;
 use super::{now, run_or_record};
@@ -92,6 +92,7 @@ struct Fetched {
     pos_size: usize,
     pos: Vec<f32>,
     color: Option<(usize, Vec<f32>)>,
+    normal: Option<Vec<f32>>,
 }
 
 /// Reads the vertices `indices` names; `None` without a vertex array (GL then draws nothing).
@@ -101,7 +102,8 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         return Ok(None);
     }
     let color = (os.color.enabled && !os.color.ptr.is_null()).then_some(&os.color);
-    let (mut pos, mut col) = (Vec::new(), Vec::new());
+    let normal = (os.normal.enabled && !os.normal.ptr.is_null()).then_some(&os.normal);
+    let (mut pos, mut col, mut nrm) = (Vec::new(), Vec::new(), Vec::new());
     let mut count = 0;
     for i in indices {
         // SAFETY: the enabled arrays hold every element the draw names (GL's contract).
@@ -109,6 +111,9 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
             fetch(&os.vertex, i, false, &mut pos);
             if let Some(c) = color {
                 fetch(c, i, true, &mut col);
+            }
+            if let Some(n) = normal {
+                fetch(n, i, true, &mut nrm);
             }
         }
         count += 1;
@@ -119,6 +124,7 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         pos_size: os.vertex.size as usize,
         pos,
         color: color.map(|c| (c.size as usize, col)),
+        normal: normal.map(|_| nrm),
     }))
 }
 
@@ -146,6 +152,7 @@ fn draw(
         let arrays = VertexArrays {
             position: AttribArray::new(f.pos_size, &f.pos),
             color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
+            normal: f.normal.as_ref().map(|n| AttribArray::new(3, n)),
         };
         // The context records its own errors (inside begin/end, …).
         let _ = if indexed {

@@ -26,6 +26,7 @@ mod attrib;
 mod enums;
 pub(crate) mod get;
 mod immediate;
+mod lighting;
 mod lists;
 mod missing;
 mod pixels;
@@ -35,6 +36,7 @@ pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
 pub use get::*;
 pub use immediate::*;
+pub use lighting::*;
 pub use lists::*;
 pub use missing::*;
 pub use pixels::*;
@@ -47,6 +49,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         attrib::table,
         get::table,
         immediate::table,
+        lighting::table,
         lists::table,
         missing::table,
         pixels::table,
