@@ -17,8 +17,8 @@ use crate::state::{
 };
 use glam::{Mat4, Vec3, Vec4};
 use softgl_jit::{
-    BlendEquation, BlendFactor, BlendKey, CacheStats, ColorMask, CompareFunc, FragmentKey, LogicOp, SpecialistCache,
-    Stage, StencilOp,
+    BlendEquation, BlendFactor, BlendKey, CacheStats, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
+    ShadeKey, SpecialistCache, Stage, StencilOp,
 };
 
 /// One vertex attribute array: `size` floats per element, elements `stride`
@@ -749,15 +749,24 @@ impl Context {
     // ----- drawing -----
 
     /// The fragment key and the varying layout a draw made now would use,
-    /// both decided from the current state.
+    /// both decided from the current state: the key's shading stage
+    /// interpolates what the layout carries.
     pub fn draw_plan(&self) -> (FragmentKey, VaryingLayout) {
-        let key = self.state.fragment_key(&self.fb, self.ordered_dither);
+        let mut key = self.state.fragment_key(&self.fb, self.ordered_dither);
         let reads_color = key
             .stages()
             .as_slice()
             .iter()
             .any(|s| matches!(s, Stage::Pack { .. } | Stage::AlphaTest(_)));
-        (key, self.state.varying_layout(reads_color))
+        let layout = self.state.varying_layout(reads_color);
+        key.shade = Some(ShadeKey {
+            color: layout.color,
+            flat: layout.color && self.state.shade_model == ShadeModel::Flat,
+            color_sum: layout.secondary,
+            fog: layout.fog.then_some(self.state.fog.mode),
+            depth: key.depth.is_some() && key.depth_format != Some(DepthFormat::D32),
+        });
+        (key, layout)
     }
 
     fn draw(&mut self, mode: (PrimitiveMode, DrawSource), count: usize, fetch: &dyn Fn(usize) -> InVertex) -> GlResult {

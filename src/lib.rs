@@ -41,6 +41,6 @@ pub use matrix::MatrixMode;
 pub use softgl_jit::rng;
 pub use softgl_jit::{
     BlendEquation, BlendFactor, CacheStats, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
-    StencilOp,
+    ShadeKey, StencilOp,
 };
 pub use state::{Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};

@@ -320,6 +320,7 @@ impl RasterState {
             dither: self.dither && ordered_dither,
             logic_op: (self.color_logic_op && self.logic_op != LogicOp::Copy).then_some(self.logic_op),
             color_mask: self.color_mask,
+            shade: None,
         };
         key.normalized()
     }
@@ -346,6 +347,7 @@ impl RasterState {
             stencil_ref: self.stencil_ref.clamp(0, 255) as u8,
             stencil_value_mask: self.stencil_value_mask as u8,
             stencil_write_mask: self.stencil_write_mask as u8,
+            fog: self.fog.uniforms(),
         }
     }
 

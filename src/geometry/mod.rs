@@ -111,7 +111,6 @@ impl<'s> Geometry<'s> {
             height: fb.height(),
             depth: depth_format,
             layout,
-            fog: layout.fog.then(|| (state.fog.mode, state.fog.uniforms())),
             offset: None,
         };
         let wide_params = RasterParams {
