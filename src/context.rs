@@ -5,8 +5,11 @@
 //! for callers (such as the C ABI) that poll.
 
 use crate::error::{GlError, GlResult};
+use crate::fog::{FogCoordSrc, FogParam, FogState};
 use crate::fragment::{Backend, FragmentStage};
 use crate::framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
+use crate::geometry::batch::{FogSource, VertexStage};
+use crate::geometry::varying::VaryingLayout;
 use crate::geometry::{DrawSource, Geometry, InVertex, MAX_VIEWPORT};
 use crate::lighting::{
     ColorMaterialMode, LightModelParam, LightParam, LightParamName, MaterialParam, MaterialParamName,
@@ -17,8 +20,8 @@ use crate::state::{
 };
 use glam::{Mat4, Vec3, Vec4};
 use softgl_jit::{
-    BlendEquation, BlendFactor, BlendKey, CacheStats, ColorMask, CompareFunc, LogicOp, SpecialistCache, Stage,
-    StencilOp,
+    BlendEquation, BlendFactor, BlendKey, CacheStats, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
+    ShadeKey, SpecialistCache, Stage, StencilOp,
 };
 
 /// One vertex attribute array: `size` floats per element, elements `stride`
@@ -80,6 +83,10 @@ pub struct VertexArrays<'a> {
     pub color: Option<AttribArray<'a>>,
     /// 3 components (`glNormalPointer`).
     pub normal: Option<AttribArray<'a>>,
+    /// `glSecondaryColorPointer`: 3 components.
+    pub secondary: Option<AttribArray<'a>>,
+    /// `glFogCoordPointer`: 1 component.
+    pub fog_coord: Option<AttribArray<'a>>,
 }
 
 impl<'a> VertexArrays<'a> {
@@ -89,15 +96,16 @@ impl<'a> VertexArrays<'a> {
             position: AttribArray::new(size, data),
             color: None,
             normal: None,
+            secondary: None,
+            fog_coord: None,
         }
     }
 
     /// Positions with per-vertex colors.
     pub fn with_colors(pos_size: usize, pos: &'a [f32], color_size: usize, color: &'a [f32]) -> VertexArrays<'a> {
         VertexArrays {
-            position: AttribArray::new(pos_size, pos),
             color: Some(AttribArray::new(color_size, color)),
-            normal: None,
+            ..VertexArrays::positions(pos_size, pos)
         }
     }
 
@@ -112,9 +120,11 @@ impl<'a> VertexArrays<'a> {
     fn check(&self) -> GlResult<usize> {
         self.position.check(2..=4)?;
         let mut len = self.position.len();
-        if let Some(c) = &self.color {
-            c.check(3..=4)?;
-            len = len.min(c.len());
+        for (array, sizes) in [(&self.color, 3..=4), (&self.secondary, 3..=3), (&self.fog_coord, 1..=1)] {
+            if let Some(a) = array {
+                a.check(sizes)?;
+                len = len.min(a.len());
+            }
         }
         if let Some(n) = &self.normal {
             n.check(3..=3)?;
@@ -155,20 +165,40 @@ impl Indices<'_> {
     }
 }
 
-/// Vertex `i` of `arrays`, attributes without an array taking `current`.
-fn fetch(arrays: &VertexArrays<'_>, i: usize, current: Vec4) -> InVertex {
+/// Vertex `i` of `arrays`, attributes without an array taking `current`'s.
+fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVertex {
     InVertex {
         pos: arrays.position.get(i, Vec4::W),
-        color: arrays.color.map_or(current, |c| c.get(i, Vec4::W)),
+        color: arrays.color.map_or(current.color, |c| c.get(i, Vec4::W)),
+        secondary: arrays.secondary.map_or(current.secondary, |c| c.get(i, Vec4::W)),
+        fog_coord: arrays.fog_coord.map_or(current.fog_coord, |c| c.get(i, Vec4::ZERO).x),
+        normal: current.normal,
     }
 }
 
-/// The current vertex attributes (`glColor`, `glNormal`, `glTexCoord`).
+/// The current vertex attributes (`glColor`, `glNormal`, `glTexCoord`,
+/// `glSecondaryColor`, `glFogCoord`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CurrentAttribs {
     pub color: Vec4,
     pub normal: Vec3,
     pub tex_coord: Vec4,
+    /// RGB and 1 (GL 1.4's initial `(0, 0, 0, 1)`).
+    pub secondary: Vec4,
+    pub fog_coord: f32,
+}
+
+impl CurrentAttribs {
+    /// A vertex at `pos` with these attributes.
+    pub fn vertex(&self, pos: Vec4) -> InVertex {
+        InVertex {
+            pos,
+            color: self.color,
+            secondary: self.secondary,
+            fog_coord: self.fog_coord,
+            normal: self.normal,
+        }
+    }
 }
 
 /// A software GL 1.x context with its own framebuffer. `Send`: it owns all its data.
@@ -211,6 +241,8 @@ impl Context {
                 color: Vec4::ONE,
                 normal: Vec3::Z,
                 tex_coord: Vec4::W,
+                secondary: Vec4::W,
+                fog_coord: 0.0,
             },
             begun: None,
             error: None,
@@ -722,12 +754,9 @@ impl Context {
 
     /// `glVertex4f`: outside `begin`/`end` it is ignored, as in GL.
     pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) {
-        let color = self.current.color;
+        let v = self.current.vertex(Vec4::new(x, y, z, w));
         if let Some((_, verts, _)) = &mut self.begun {
-            verts.push(InVertex {
-                pos: Vec4::new(x, y, z, w),
-                color,
-            });
+            verts.push(v);
         }
     }
 
@@ -756,6 +785,30 @@ impl Context {
         self.current.normal = Vec3::new(x, y, z);
     }
 
+    /// `glSecondaryColor3f` (GL 1.4): the current secondary colour, alpha 1.
+    pub fn secondary_color3(&mut self, r: f32, g: f32, b: f32) {
+        self.current.secondary = Vec4::new(r, g, b, 1.0);
+    }
+
+    /// `glFogCoordf` (GL 1.4): the current fog coordinate.
+    pub fn fog_coord(&mut self, c: f32) {
+        self.current.fog_coord = c;
+    }
+
+    /// `glFog*`: one fog parameter; a negative density is `InvalidValue`.
+    pub fn fog(&mut self, p: FogParam) -> GlResult {
+        self.outside()?;
+        let mut fog = self.state.fog;
+        self.record(fog.set(p))?;
+        self.state.fog = fog;
+        Ok(())
+    }
+
+    /// The fog state (`glGet` of `GL_FOG_*`).
+    pub fn fog_state(&self) -> &FogState {
+        &self.state.fog
+    }
+
     /// `glTexCoord4f`: kept as current state for texturing.
     pub fn tex_coord4(&mut self, s: f32, t: f32, r: f32, q: f32) {
         self.current.tex_coord = Vec4::new(s, t, r, q);
@@ -779,11 +832,11 @@ impl Context {
         let len = self.record(arrays.check())?;
         let end = first.checked_add(count).filter(|&e| e <= len);
         self.require(end.is_some())?;
-        let current = self.current.color;
+        let current = self.current;
         let source = DrawSource::Arrays {
             per_vertex_color: arrays.color.is_some(),
         };
-        self.draw((mode, source), count, &|i| fetch(arrays, first + i, current))
+        self.draw((mode, source), count, &|i| fetch(arrays, first + i, &current))
     }
 
     /// `glDrawElements`: the vertices of `arrays` that `indices` name, in order.
@@ -792,30 +845,51 @@ impl Context {
         self.outside()?;
         let len = self.record(arrays.check())?;
         self.require(indices.iter().all(|i| i < len))?;
-        let current = self.current.color;
+        let current = self.current;
         let source = (mode, DrawSource::Elements);
-        self.draw(source, indices.len(), &|k| fetch(arrays, indices.get(k), current))
+        self.draw(source, indices.len(), &|k| fetch(arrays, indices.get(k), &current))
     }
 
     // ----- drawing -----
 
-    fn draw(&mut self, mode: (PrimitiveMode, DrawSource), count: usize, fetch: &dyn Fn(usize) -> InVertex) -> GlResult {
-        let key = self.state.fragment_key(&self.fb, self.ordered_dither);
-        let uniforms = self.state.fragment_uniforms();
-        let stages = key.stages();
-        let reads_color = stages
+    /// The fragment key and the varying layout a draw made now would use,
+    /// both decided from the current state: the key's shading stage
+    /// interpolates what the layout carries.
+    pub fn draw_plan(&self) -> (FragmentKey, VaryingLayout) {
+        let mut key = self.state.fragment_key(&self.fb, self.ordered_dither);
+        let reads_color = key
+            .stages()
             .as_slice()
             .iter()
             .any(|s| matches!(s, Stage::Pack { .. } | Stage::AlphaTest(_)));
+        let layout = self.state.varying_layout(reads_color);
+        key.shade = Some(ShadeKey {
+            color: layout.color,
+            flat: layout.color && self.state.shade_model == ShadeModel::Flat,
+            color_sum: layout.secondary,
+            fog: layout.fog.then_some(self.state.fog.mode),
+            depth: key.depth.is_some() && key.depth_format != Some(DepthFormat::D32),
+        });
+        (key, layout)
+    }
+
+    fn draw(&mut self, mode: (PrimitiveMode, DrawSource), count: usize, fetch: &dyn Fn(usize) -> InVertex) -> GlResult {
+        let (key, layout) = self.draw_plan();
+        let uniforms = self.state.fragment_uniforms();
         let reads_depth = key.depth.is_some();
-        let mvp = *self.projection.top() * *self.modelview.top();
-        let geometry = Geometry::new(&self.state, &self.fb, reads_depth, reads_color);
+        let mut vertex_stage = VertexStage::new(*self.projection.top() * *self.modelview.top(), layout);
+        if self.state.fog.coord_src == FogCoordSrc::FragmentDepth {
+            vertex_stage.fog = FogSource::EyeDepth {
+                row: self.modelview.top().row(2),
+            };
+        }
+        let geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
         let specialist = match self.backend {
             Backend::Jit => self.specialists.get(&key),
             Backend::Interpreter => None,
         };
         let r = FragmentStage::new(key, uniforms, self.fb.target(), specialist).and_then(|mut stage| {
-            geometry.draw(&mvp, mode, count, fetch, &mut stage);
+            geometry.draw(&vertex_stage, mode, count, fetch, &mut stage);
             stage.finish()
         });
         self.record(r.map_err(|_| GlError::InvalidOperation))

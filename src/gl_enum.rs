@@ -7,6 +7,7 @@
 //! (a new variant without a value does not compile) and a `match` for
 //! [`GlEnum::from_gl`] (a value listed twice is an unreachable-pattern lint).
 
+use crate::fog::{FogCoordSrc, FogMode};
 use crate::lighting::{ColorControl, ColorMaterialMode, LightParamName, MaterialParamName};
 use crate::matrix::MatrixMode;
 use crate::state::{Capability, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};
@@ -155,6 +156,7 @@ gl_enums! {
     }
     Capability {
         CullFace = GL_CULL_FACE 0x0B44,
+        Fog = GL_FOG 0x0B60,
         DepthTest = GL_DEPTH_TEST 0x0B71,
         StencilTest = GL_STENCIL_TEST 0x0B90,
         AlphaTest = GL_ALPHA_TEST 0x0BC0,
@@ -165,6 +167,7 @@ gl_enums! {
         PolygonOffsetPoint = GL_POLYGON_OFFSET_POINT 0x2A01,
         PolygonOffsetLine = GL_POLYGON_OFFSET_LINE 0x2A02,
         PolygonOffsetFill = GL_POLYGON_OFFSET_FILL 0x8037,
+        ColorSum = GL_COLOR_SUM 0x8458,
         Lighting = GL_LIGHTING 0x0B50,
         ColorMaterial = GL_COLOR_MATERIAL 0x0B57,
         Normalize = GL_NORMALIZE 0x0BA1,
@@ -214,6 +217,15 @@ gl_enums! {
         Emission = GL_EMISSION 0x1600,
         Shininess = GL_SHININESS 0x1601,
     }
+    FogMode {
+        Exp = GL_EXP 0x0800,
+        Exp2 = GL_EXP2 0x0801,
+        Linear = GL_LINEAR 0x2601,
+    }
+    FogCoordSrc {
+        FogCoord = GL_FOG_COORD 0x8451,
+        FragmentDepth = GL_FRAGMENT_DEPTH 0x8452,
+    }
 }
 
 #[cfg(test)]
@@ -256,10 +268,12 @@ mod tests {
             round_trip::<ColorMaterialMode>(),
             round_trip::<LightParamName>(),
             round_trip::<MaterialParamName>(),
+            round_trip::<FogMode>(),
+            round_trip::<FogCoordSrc>(),
         ];
         // Every variant of each type (to_gl's exhaustive match already
         // refuses a table without one).
-        assert_eq!(counts, [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 29, 2, 5, 10, 5]);
+        assert_eq!(counts, [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 31, 2, 5, 10, 5, 3, 2]);
     }
 
     #[test]

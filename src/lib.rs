@@ -22,6 +22,7 @@
 pub mod context;
 pub mod demo;
 pub mod error;
+pub mod fog;
 pub mod fragment;
 pub mod framebuffer;
 pub mod geometry;
@@ -33,6 +34,7 @@ pub mod state;
 
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
 pub use error::{GlError, GlResult};
+pub use fog::{FogCoordSrc, FogMode, FogParam};
 pub use fragment::Backend;
 pub use framebuffer::{ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
 pub use gl_enum::GlEnum;
@@ -43,6 +45,6 @@ pub use matrix::MatrixMode;
 pub use softgl_jit::rng;
 pub use softgl_jit::{
     BlendEquation, BlendFactor, CacheStats, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
-    StencilOp,
+    ShadeKey, StencilOp,
 };
 pub use state::{Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};

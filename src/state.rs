@@ -1,7 +1,9 @@
 //! GL state that shapes rasterization and the fragment stages, and how it
 //! becomes a [`FragmentKey`] and [`FragmentUniforms`] at draw time.
 
+use crate::fog::FogState;
 use crate::framebuffer::{float_to_unorm, Framebuffer};
+use crate::geometry::varying::VaryingLayout;
 use softgl_jit::{
     BlendFactor, BlendKey, ColorMask, CompareFunc, DepthKey, FragmentKey, FragmentUniforms, LogicOp, StencilKey,
     StencilOp,
@@ -21,6 +23,10 @@ pub enum Capability {
     PolygonOffsetPoint,
     ScissorTest,
     StencilTest,
+    /// `GL_FOG`.
+    Fog,
+    /// `GL_COLOR_SUM`: add the secondary colour to the primary one.
+    ColorSum,
     Lighting,
     /// `GL_LIGHTi`, `i < 8`.
     Light(u8),
@@ -201,6 +207,10 @@ pub struct RasterState {
     pub clear_color: [f32; 4],
     pub clear_depth: f64,
     pub clear_stencil: i32,
+    /// `glFog` state with `GL_FOG`.
+    pub fog: FogState,
+    /// `GL_COLOR_SUM`.
+    pub color_sum: bool,
 
     /// Lighting, materials, normals and user clip planes.
     pub lighting: crate::lighting::LightingState,
@@ -257,6 +267,8 @@ impl RasterState {
             clear_color: [0.0; 4],
             clear_depth: 1.0,
             clear_stencil: 0,
+            fog: FogState::default(),
+            color_sum: false,
             lighting: crate::lighting::LightingState::default(),
         }
     }
@@ -275,6 +287,8 @@ impl RasterState {
             Capability::PolygonOffsetPoint => &mut self.offset_point,
             Capability::ScissorTest => &mut self.scissor_test,
             Capability::StencilTest => &mut self.stencil_test,
+            Capability::Fog => &mut self.fog.enabled,
+            Capability::ColorSum => &mut self.color_sum,
             Capability::Lighting => &mut self.lighting.enabled,
             Capability::Light(i) => &mut self.lighting.lights[usize::from(i)].enabled,
             Capability::ColorMaterial => &mut self.lighting.color_material,
@@ -298,6 +312,8 @@ impl RasterState {
             Capability::PolygonOffsetPoint => self.offset_point,
             Capability::ScissorTest => self.scissor_test,
             Capability::StencilTest => self.stencil_test,
+            Capability::Fog => self.fog.enabled,
+            Capability::ColorSum => self.color_sum,
             Capability::Lighting => self.lighting.enabled,
             Capability::Light(i) => self.lighting.lights.get(usize::from(i)).is_some_and(|l| l.enabled),
             Capability::ColorMaterial => self.lighting.color_material,
@@ -340,8 +356,22 @@ impl RasterState {
             dither: self.dither && ordered_dither,
             logic_op: (self.color_logic_op && self.logic_op != LogicOp::Copy).then_some(self.logic_op),
             color_mask: self.color_mask,
+            shade: None,
         };
         key.normalized()
+    }
+
+    /// The varyings a draw's vertices carry, from the same state as
+    /// [`Self::fragment_key`]: the primary colour when a stage reads the
+    /// fragment colour (`reads_color`), with the secondary colour when the
+    /// colour sum is on and the fog coordinate when fog is.
+    pub fn varying_layout(&self, reads_color: bool) -> VaryingLayout {
+        VaryingLayout {
+            color: reads_color,
+            secondary: reads_color && self.color_sum,
+            fog: reads_color && self.fog.enabled,
+            ..VaryingLayout::default()
+        }
     }
 
     /// The values the fragment stages read, in the units they compare in.
@@ -353,6 +383,7 @@ impl RasterState {
             stencil_ref: self.stencil_ref.clamp(0, 255) as u8,
             stencil_value_mask: self.stencil_value_mask as u8,
             stencil_write_mask: self.stencil_write_mask as u8,
+            fog: self.fog.uniforms(),
         }
     }
 

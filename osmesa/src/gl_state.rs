@@ -98,7 +98,7 @@ pub struct SavedClient {
     pub mask: u32,
     pub pack: PixelStore,
     pub unpack: PixelStore,
-    pub arrays: [ClientArray; 4],
+    pub arrays: [ClientArray; 6],
 }
 
 /// The GL state of one context that `softgl::Context` does not hold.
@@ -107,6 +107,8 @@ pub struct GlState {
     pub color: ClientArray,
     pub normal: ClientArray,
     pub tex_coord: ClientArray,
+    pub secondary: ClientArray,
+    pub fog_coord: ClientArray,
     pub pack: PixelStore,
     pub unpack: PixelStore,
     /// `glHint` modes, in the order of [`HINTS`].
@@ -132,6 +134,8 @@ impl Default for GlState {
             color: ClientArray::new(4),
             normal: ClientArray::new(3),
             tex_coord: ClientArray::new(4),
+            secondary: ClientArray::new(3),
+            fog_coord: ClientArray::new(1),
             pack: PixelStore::DEFAULT,
             unpack: PixelStore::DEFAULT,
             hints: [GL_DONT_CARE; 5],
@@ -147,9 +151,16 @@ impl Default for GlState {
 }
 
 impl GlState {
-    /// The four client arrays, in `glPushClientAttrib`'s order.
-    pub fn arrays(&self) -> [ClientArray; 4] {
-        [self.vertex, self.color, self.normal, self.tex_coord]
+    /// The client arrays, in `glPushClientAttrib`'s order.
+    pub fn arrays(&self) -> [ClientArray; 6] {
+        [
+            self.vertex,
+            self.color,
+            self.normal,
+            self.tex_coord,
+            self.secondary,
+            self.fog_coord,
+        ]
     }
 
     /// The client array `glEnableClientState` names, if softgl has it.
@@ -159,6 +170,8 @@ impl GlState {
             GL_COLOR_ARRAY => &mut self.color,
             GL_NORMAL_ARRAY => &mut self.normal,
             GL_TEXTURE_COORD_ARRAY => &mut self.tex_coord,
+            0x845E => &mut self.secondary, // GL_SECONDARY_COLOR_ARRAY
+            0x8457 => &mut self.fog_coord, // GL_FOG_COORD_ARRAY
             _ => return None,
         })
     }

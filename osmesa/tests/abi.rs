@@ -134,8 +134,6 @@ fn unimplemented_functions_record_invalid_operation() {
     // SAFETY: one writable GLint.
     unsafe { glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &mut width) };
     assert_eq!((width, glGetError()), (0, GL_INVALID_OPERATION));
-    glFogf(0x0B62, 0.5); // GL_FOG_DENSITY
-    assert_eq!(glGetError(), GL_INVALID_OPERATION);
     // Inert (no evaluators): accepted and reported.
     glEnable(GL_AUTO_NORMAL);
     assert_eq!((glGetError(), glIsEnabled(GL_AUTO_NORMAL)), (GL_NO_ERROR, GL_TRUE));

@@ -1,18 +1,92 @@
 //! Vertex batches: vertices are fetched and transformed to clip space 256 at a
 //! time, as primitive assembly reaches them, so a draw of any size needs one
 //! batch of memory and the transform runs as a tight loop.
+//!
+//! [`VertexBatch::transform`] is the one place a vertex's varyings are filled,
+//! as the draw's [`VertexStage`] says: colours copied (and clamped), the fog
+//! coordinate taken from the eye-space depth or from `glFogCoord`.
 
 use super::clip::ClipVertex;
+use super::varying::{VaryingLayout, MAX_VARYINGS};
 use super::InVertex;
 use glam::{Mat4, Vec4};
 
 /// Vertices transformed at once.
 pub const BATCH: usize = 256;
 
+/// Where the fog coordinate of a vertex comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FogSource {
+    /// `GL_FRAGMENT_DEPTH`: `|z_eye|`, z_eye computed as Mesa's fixed-function
+    /// vertex program does when it needs no other eye coordinate (a `DP4` of
+    /// the position with the modelview's third row, `docs/llvmpipe-facts.md`).
+    EyeDepth { row: Vec4 },
+    /// `GL_FOG_COORD`: `|fog_coord|` of the vertex.
+    FogCoord,
+}
+
+/// The per-draw constants of the vertex stage: what each vertex computes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VertexStage {
+    /// Object to clip coordinates.
+    pub mvp: Mat4,
+    /// The varyings to fill.
+    pub layout: VaryingLayout,
+    /// The fog coordinate's source, when `layout.fog`.
+    pub fog: FogSource,
+}
+
+impl VertexStage {
+    /// A stage transforming by `mvp`, filling the colours `layout` carries.
+    pub fn new(mvp: Mat4, layout: VaryingLayout) -> VertexStage {
+        VertexStage {
+            mvp,
+            layout,
+            fog: FogSource::FogCoord,
+        }
+    }
+
+    /// Vertex `v` in clip space with its varyings.
+    pub fn transform(&self, v: &InVertex) -> ClipVertex {
+        let mut out = ClipVertex {
+            pos: (self.mvp * v.pos).as_dvec4(),
+            v: [0.0; MAX_VARYINGS],
+        };
+        if let Some(o) = self.layout.color() {
+            out.v[o..o + 4].copy_from_slice(&clamp_color(v.color));
+        }
+        if let Some(o) = self.layout.secondary() {
+            out.v[o..o + 4].copy_from_slice(&clamp_color(v.secondary));
+        }
+        if let Some(o) = self.layout.fog() {
+            out.v[o] = match self.fog {
+                FogSource::EyeDepth { row } => eye_dot(row, v.pos).abs(),
+                FogSource::FogCoord => v.fog_coord.abs(),
+            };
+        }
+        out
+    }
+}
+
+/// GL clamps vertex colors to `[0, 1]`; NaN reads as 0 on every target.
+fn clamp_color(c: Vec4) -> [f32; 4] {
+    c.to_array().map(|c| if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) })
+}
+
+/// `DP4` as llvmpipe's vertex shaders run it (`lower_fdot` with `ffma`
+/// lowered, `nir_lower_alu_width.c`): products summed from the last
+/// component, `((p.w·m.w + p.z·m.z) + p.y·m.y) + p.x·m.x`, each step rounded.
+pub fn eye_dot(m: Vec4, p: Vec4) -> f32 {
+    let mut s = p.w * m.w;
+    s += p.z * m.z;
+    s += p.y * m.y;
+    s + p.x * m.x
+}
+
 /// A sliding window of transformed vertices, plus vertex 0, which fans,
 /// polygons and line loops refer back to.
 pub struct VertexBatch<'a> {
-    mvp: Mat4,
+    stage: VertexStage,
     fetch: &'a dyn Fn(usize) -> InVertex,
     count: usize,
     base: usize,
@@ -22,9 +96,9 @@ pub struct VertexBatch<'a> {
 
 impl<'a> VertexBatch<'a> {
     /// A batch over `count` vertices, `fetch(i)` giving vertex `i`.
-    pub fn new(mvp: Mat4, count: usize, fetch: &'a dyn Fn(usize) -> InVertex) -> VertexBatch<'a> {
+    pub fn new(stage: VertexStage, count: usize, fetch: &'a dyn Fn(usize) -> InVertex) -> VertexBatch<'a> {
         VertexBatch {
-            mvp,
+            stage,
             fetch,
             count,
             base: 0,
@@ -34,16 +108,7 @@ impl<'a> VertexBatch<'a> {
     }
 
     fn transform(&self, v: InVertex) -> ClipVertex {
-        // GL clamps vertex colors to [0, 1]; NaN reads as 0 on every target.
-        let color = Vec4::from_array(
-            v.color
-                .to_array()
-                .map(|c| if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) }),
-        );
-        ClipVertex {
-            pos: (self.mvp * v.pos).as_dvec4(),
-            color,
-        }
+        self.stage.transform(&v)
     }
 
     /// Vertex `i` in clip space. Assembly asks for indices that never fall more

@@ -18,13 +18,16 @@
 //! Lines: each end is moved once from the ends the step starts from, by the
 //! largest `t` of the planes it is outside of.
 
-use glam::{DVec4, Vec4};
+use super::varying::Varyings;
+use glam::DVec4;
 
-/// A vertex in clip space with the attributes clipping interpolates.
+/// A vertex in clip space with the attributes clipping interpolates: the
+/// first `n` slots of `v`, `n` the draw's `VaryingLayout::len` (the functions
+/// here take it as a parameter and never touch the slots past it).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClipVertex {
     pub pos: DVec4,
-    pub color: Vec4,
+    pub v: Varyings,
 }
 
 /// Scales of the nested guard bands, outermost first, relative to the final one.
@@ -54,8 +57,9 @@ pub fn guard_levels<'a>(mut vertices: impl Iterator<Item = &'a ClipVertex>) -> &
 const FINAL_ORDER: [usize; 6] = [3, 2, 5, 4, 0, 1];
 
 impl ClipVertex {
-    pub fn is_finite(&self) -> bool {
-        self.pos.is_finite() && self.color.is_finite()
+    /// Whether the position and the first `n` varyings are finite.
+    pub fn is_finite(&self, n: usize) -> bool {
+        self.pos.is_finite() && self.v[..n].iter().all(|c| c.is_finite())
     }
 
     /// The point where the segment to `o` crosses a plane, given the signed
@@ -64,12 +68,15 @@ impl ClipVertex {
     /// cancel, rather than `self + (o − self)·t`, which loses a small `w` next to
     /// a large one. Every component comes from the same two weights, so a
     /// rounding error moves the point along the segment, never off it.
-    fn crossing(&self, o: &ClipVertex, d: f64, do_: f64) -> ClipVertex {
+    fn crossing(&self, o: &ClipVertex, d: f64, do_: f64, n: usize) -> ClipVertex {
         let sum = d - do_;
         let pos = (o.pos * d - self.pos * do_) / sum;
         let t = d / sum;
-        let color = (self.color.as_dvec4() + (o.color.as_dvec4() - self.color.as_dvec4()) * t).as_vec4();
-        ClipVertex { pos, color }
+        let mut v = self.v;
+        for (c, &oc) in v[..n].iter_mut().zip(&o.v[..n]) {
+            *c = (f64::from(*c) + (f64::from(oc) - f64::from(*c)) * t) as f32;
+        }
+        ClipVertex { pos, v }
     }
 
     /// The crossing as llvmpipe computes it, in f32: `a + t·(b − a)`,
@@ -77,21 +84,24 @@ impl ClipVertex {
     /// inside one on a tie), so that `t` is small and the far endpoint's
     /// magnitude cancels out. `d_in` and `d_out` are the distances of the
     /// inside vertex `self` and the outside vertex `o`.
-    fn crossing_f32(&self, o: &ClipVertex, d_in: f32, d_out: f32) -> ClipVertex {
+    fn crossing_f32(&self, o: &ClipVertex, d_in: f32, d_out: f32, n: usize) -> ClipVertex {
         let (a, b, da, db) = if -d_out < d_in {
             (o, self, d_out, d_in)
         } else {
             (self, o, d_in, d_out)
         };
-        a.lerp_f32(b, da / (da - db))
+        a.lerp_f32(b, da / (da - db), n)
     }
 
-    /// `self + t·(o − self)` in f32, position and colour alike.
-    fn lerp_f32(&self, o: &ClipVertex, t: f32) -> ClipVertex {
+    /// `self + t·(o − self)` in f32, position and the `n` varyings alike.
+    fn lerp_f32(&self, o: &ClipVertex, t: f32, n: usize) -> ClipVertex {
         let (pa, pb) = (self.pos.as_vec4(), o.pos.as_vec4());
         let pos = (pa + (pb - pa) * t).as_dvec4();
-        let color = self.color + (o.color - self.color) * t;
-        ClipVertex { pos, color }
+        let mut v = self.v;
+        for (c, &oc) in v[..n].iter_mut().zip(&o.v[..n]) {
+            *c += (oc - *c) * t;
+        }
+        ClipVertex { pos, v }
     }
 }
 
@@ -134,8 +144,8 @@ pub type PolyVertex = (ClipVertex, bool);
 
 /// Clips the polygon `poly` (edge flags per vertex) against the planes set in
 /// `planes` at guard scale `g` (Sutherland–Hodgman). Edges made by clipping
-/// are not boundary edges.
-pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64) {
+/// are not boundary edges. `n` varyings are interpolated.
+pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64, n: usize) {
     let mut out: Vec<PolyVertex> = Vec::with_capacity(poly.len() + 6);
     let last = g == 1.0;
     let order = if last { FINAL_ORDER } else { [0, 1, 2, 3, 4, 5] };
@@ -154,9 +164,9 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64) {
                     out.push((p, edge));
                 }
                 if p_in && !q_in {
-                    out.push((p.crossing_f32(&q, dp, dq), false));
+                    out.push((p.crossing_f32(&q, dp, dq, n), false));
                 } else if !p_in && q_in {
-                    out.push((q.crossing_f32(&p, dq, dp), edge));
+                    out.push((q.crossing_f32(&p, dq, dp, n), edge));
                 }
             } else {
                 let (dp, dq) = (dist(p.pos, k, g), dist(q.pos, k, g));
@@ -165,7 +175,7 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64) {
                     out.push((p, edge));
                 }
                 if p_in != q_in {
-                    out.push((p.crossing(&q, dp, dq), !p_in && edge));
+                    out.push((p.crossing(&q, dp, dq, n), !p_in && edge));
                 }
             }
         }
@@ -177,10 +187,15 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64) {
 /// `None` when nothing is left. The guard bands clip one plane after another
 /// in f64; the view volume itself is clipped as llvmpipe clips a line: in f32,
 /// each end moved once from the ends `a`, `b` by the largest `t` over the
-/// planes it is outside of.
-pub fn clip_segment(a: &ClipVertex, b: &ClipVertex, planes: u8, g: f64) -> Option<(ClipVertex, ClipVertex)> {
+/// planes it is outside of. `n` varyings are interpolated.
+pub fn clip_segment(
+    (a, b): (&ClipVertex, &ClipVertex),
+    planes: u8,
+    g: f64,
+    n: usize,
+) -> Option<(ClipVertex, ClipVertex)> {
     if g == 1.0 {
-        return clip_segment_f32(a, b, planes);
+        return clip_segment_f32(a, b, planes, n);
     }
     let (mut a, mut b) = (*a, *b);
     for k in 0..6 {
@@ -191,8 +206,8 @@ pub fn clip_segment(a: &ClipVertex, b: &ClipVertex, planes: u8, g: f64) -> Optio
         match (da >= 0.0, db >= 0.0) {
             (false, false) => return None,
             (true, true) => {}
-            (false, true) => a = a.crossing(&b, da, db),
-            (true, false) => b = a.crossing(&b, da, db),
+            (false, true) => a = a.crossing(&b, da, db, n),
+            (true, false) => b = a.crossing(&b, da, db, n),
         }
     }
     Some((a, b))
@@ -200,7 +215,7 @@ pub fn clip_segment(a: &ClipVertex, b: &ClipVertex, planes: u8, g: f64) -> Optio
 
 /// llvmpipe's line clip: `t0`, `t1` the largest `d_out / (d_out − d_in)` of
 /// each end over the planes, the segment gone when `t0 + t1 >= 1`.
-fn clip_segment_f32(a: &ClipVertex, b: &ClipVertex, planes: u8) -> Option<(ClipVertex, ClipVertex)> {
+fn clip_segment_f32(a: &ClipVertex, b: &ClipVertex, planes: u8, n: usize) -> Option<(ClipVertex, ClipVertex)> {
     let (mut t0, mut t1) = (0.0f32, 0.0f32);
     for k in FINAL_ORDER {
         if planes & (1 << k) == 0 {
@@ -218,12 +233,12 @@ fn clip_segment_f32(a: &ClipVertex, b: &ClipVertex, planes: u8) -> Option<(ClipV
         }
     }
     let a2 = if outcode(a.pos, 1.0) != 0 {
-        a.lerp_f32(b, t0)
+        a.lerp_f32(b, t0, n)
     } else {
         *a
     };
     let b2 = if outcode(b.pos, 1.0) != 0 {
-        b.lerp_f32(a, t1)
+        b.lerp_f32(a, t1, n)
     } else {
         *b
     };

@@ -6,25 +6,46 @@ pub mod assemble;
 pub mod batch;
 pub mod clip;
 pub mod lighting;
+pub mod varying;
 
 use crate::framebuffer::{Framebuffer, Rect};
 use crate::raster::{self, RasterParams, RasterVertex, SpanSink};
 use crate::state::{FrontFace, PolygonMode, RasterState, ShadeModel};
 use assemble::{assemble, Primitive, QuadSplit};
-use batch::VertexBatch;
+use batch::{VertexBatch, VertexStage};
 use clip::{clip_polygon, clip_segment, guard_levels, outcode, ClipVertex, PolyVertex};
-use glam::{Mat4, Vec4};
+use glam::{Vec3, Vec4};
+use varying::{copy_slots, VaryingLayout, Varyings};
 
 pub use crate::state::PrimitiveMode;
 
 /// The largest viewport side (`GL_MAX_VIEWPORT_DIMS`, as Mesa reports it).
 pub const MAX_VIEWPORT: i32 = 16384;
 
-/// A vertex as the API hands it over: object position and current color.
+/// A vertex as the API hands it over: object position and the current (or
+/// array) values of its other attributes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct InVertex {
     pub pos: Vec4,
     pub color: Vec4,
+    /// `glSecondaryColor` (alpha 0, unused).
+    pub secondary: Vec4,
+    /// `glFogCoord`.
+    pub fog_coord: f32,
+    pub normal: Vec3,
+}
+
+impl InVertex {
+    /// A vertex at `pos` with `color` and GL's initial values for the rest.
+    pub fn new(pos: Vec4, color: Vec4) -> InVertex {
+        InVertex {
+            pos,
+            color,
+            secondary: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            fog_coord: 0.0,
+            normal: Vec3::Z,
+        }
+    }
 }
 
 /// How a draw hands its vertices over, as far as llvmpipe's quad split
@@ -57,12 +78,14 @@ pub struct Geometry<'s> {
     /// Points and lines: clipped to the view volume, their width may reach
     /// past the viewport up to the framebuffer's edges, as in llvmpipe.
     wide_params: RasterParams,
+    /// The varyings every vertex carries.
+    layout: VaryingLayout,
 }
 
 impl<'s> Geometry<'s> {
-    /// Sets up a draw into `fb` with `state`; `depth`/`color` say whether any
-    /// fragment stage reads those interpolants.
-    pub fn new(state: &'s RasterState, fb: &Framebuffer, depth: bool, color: bool) -> Geometry<'s> {
+    /// Sets up a draw into `fb` with `state`; `depth` says whether any
+    /// fragment stage reads depth, `layout` which varyings are carried.
+    pub fn new(state: &'s RasterState, fb: &Framebuffer, depth: bool, layout: VaryingLayout) -> Geometry<'s> {
         let vp = state.viewport;
         let (vw, vh) = (vp.width.min(MAX_VIEWPORT), vp.height.min(MAX_VIEWPORT));
         let (n, f) = state.depth_range;
@@ -88,7 +111,7 @@ impl<'s> Geometry<'s> {
             bounds,
             height: fb.height(),
             depth: depth_format,
-            color,
+            layout,
             offset: None,
         };
         let wide_params = RasterParams {
@@ -100,14 +123,15 @@ impl<'s> Geometry<'s> {
             viewport,
             params,
             wide_params,
+            layout,
         }
     }
 
     /// Draws `count` vertices, `fetch(i)` giving vertex `i`, as `mode` into
-    /// `sink`, transforming them by `mvp` in batches.
+    /// `sink`, running `stage` over them in batches.
     pub fn draw(
         &self,
-        mvp: &Mat4,
+        stage: &VertexStage,
         (mode, source): (PrimitiveMode, DrawSource),
         count: usize,
         fetch: &dyn Fn(usize) -> InVertex,
@@ -116,21 +140,21 @@ impl<'s> Geometry<'s> {
         if self.params.bounds.is_empty() {
             return;
         }
-        let quads = if mode == PrimitiveMode::Quads && self.quads_split_v1_v3(mvp, source, count, fetch) {
+        let quads = if mode == PrimitiveMode::Quads && self.quads_split_v1_v3(stage, source, count, fetch) {
             QuadSplit::Pipeline
         } else {
             QuadSplit::Direct
         };
-        let mut batch = VertexBatch::new(*mvp, count, fetch);
+        let mut batch = VertexBatch::new(*stage, count, fetch);
         assemble(mode, count, quads, |prim| match prim {
             Primitive::Point(i) => self.point(&batch.get(i), sink),
             Primitive::Line { a, b, provoking } => {
                 let (va, vb, vp) = (batch.get(a), batch.get(b), batch.get(provoking));
-                self.line(&va, &vb, self.flat_color(&vp), sink)
+                self.line(&va, &vb, self.flat(&vp), sink)
             }
             Primitive::Triangle { v, provoking, edges } => {
                 let poly = [0, 1, 2].map(|k| (batch.get(v[k]), edges[k]));
-                let flat = self.flat_color(&batch.get(provoking));
+                let flat = self.flat(&batch.get(provoking));
                 self.polygon(poly, flat, sink)
             }
         });
@@ -143,7 +167,7 @@ impl<'s> Geometry<'s> {
     /// lines or points, or a vertex outside the view volume.
     fn quads_split_v1_v3(
         &self,
-        mvp: &Mat4,
+        stage: &VertexStage,
         source: DrawSource,
         count: usize,
         fetch: &dyn Fn(usize) -> InVertex,
@@ -155,11 +179,30 @@ impl<'s> Geometry<'s> {
         let unfilled = [true, false]
             .iter()
             .any(|&front| self.state.polygon_mode(front) != PolygonMode::Fill);
-        direct_v1_v3 || unfilled || (0..count).any(|i| outcode((*mvp * fetch(i).pos).as_dvec4(), 1.0) != 0)
+        direct_v1_v3 || unfilled || (0..count).any(|i| outcode((stage.mvp * fetch(i).pos).as_dvec4(), 1.0) != 0)
     }
 
-    fn flat_color(&self, v: &ClipVertex) -> Option<[f32; 4]> {
-        (self.state.shade_model == ShadeModel::Flat).then(|| v.color.to_array())
+    /// The provoking vertex's varyings under flat shading (the rasterizer
+    /// takes its colours from them), else `None`.
+    fn flat(&self, v: &ClipVertex) -> Option<Varyings> {
+        (self.state.shade_model == ShadeModel::Flat).then_some(v.v)
+    }
+
+    /// Two-sided selection: for a back face, the back colours (when the
+    /// layout carries them) replace the front ones the rasterizer reads.
+    fn select_face(&self, v: &mut Varyings, front: bool) {
+        if front {
+            return;
+        }
+        let l = &self.layout;
+        if let (Some(f), Some(b)) = (l.color(), l.back_color()) {
+            let src = *v;
+            copy_slots(v, f, &src, b, 4);
+        }
+        if let (Some(f), Some(b)) = (l.secondary(), l.back_secondary()) {
+            let src = *v;
+            copy_slots(v, f, &src, b, 4);
+        }
     }
 
     /// Perspective divide and viewport transform; `None` when not finite.
@@ -178,12 +221,12 @@ impl<'s> Geometry<'s> {
             y_down,
             z: f64::from(z),
             inv_w,
-            color: v.color.to_array(),
+            v: v.v,
         })
     }
 
     fn point(&self, v: &ClipVertex, sink: &mut dyn SpanSink) {
-        if !v.is_finite() || outcode(v.pos, 1.0) != 0 {
+        if !v.is_finite(self.layout.len()) || outcode(v.pos, 1.0) != 0 {
             return;
         }
         if let Some(rv) = self.project(v) {
@@ -191,27 +234,29 @@ impl<'s> Geometry<'s> {
         }
     }
 
-    fn line(&self, a: &ClipVertex, b: &ClipVertex, flat: Option<[f32; 4]>, sink: &mut dyn SpanSink) {
-        if !(a.is_finite() && b.is_finite()) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
+    fn line(&self, a: &ClipVertex, b: &ClipVertex, flat: Option<Varyings>, sink: &mut dyn SpanSink) {
+        let n = self.layout.len();
+        if !(a.is_finite(n) && b.is_finite(n)) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
             return;
         }
         let (mut a, mut b) = (*a, *b);
         for &g in guard_levels([a, b].iter()) {
             let planes = outcode(a.pos, g) | outcode(b.pos, g);
             if planes != 0 {
-                let Some(clipped) = clip_segment(&a, &b, planes, g) else {
+                let Some(clipped) = clip_segment((&a, &b), planes, g, n) else {
                     return;
                 };
                 (a, b) = clipped;
             }
         }
         if let (Some(ra), Some(rb)) = (self.project(&a), self.project(&b)) {
-            raster::line(&ra, &rb, self.state.line_width, flat, &self.wide_params, sink);
+            raster::line(&ra, &rb, self.state.line_width, flat.as_ref(), &self.wide_params, sink);
         }
     }
 
-    fn polygon(&self, poly: [PolyVertex; 3], flat: Option<[f32; 4]>, sink: &mut dyn SpanSink) {
-        if poly.iter().any(|(v, _)| !v.is_finite()) {
+    fn polygon(&self, poly: [PolyVertex; 3], mut flat: Option<Varyings>, sink: &mut dyn SpanSink) {
+        let n = self.layout.len();
+        if poly.iter().any(|(v, _)| !v.is_finite(n)) {
             return;
         }
         let codes = poly.map(|(v, _)| outcode(v.pos, 1.0));
@@ -223,7 +268,7 @@ impl<'s> Geometry<'s> {
         for &g in guard_levels(poly.iter().map(|(v, _)| v)) {
             let planes = clipped.iter().fold(0, |acc, (v, _)| acc | outcode(v.pos, g));
             if planes != 0 {
-                clip_polygon(&mut clipped, planes, g);
+                clip_polygon(&mut clipped, planes, g, n);
                 was_clipped = true;
             }
         }
@@ -248,6 +293,15 @@ impl<'s> Geometry<'s> {
         if self.state.culls(front) {
             return;
         }
+        if self.layout.back_color || self.layout.back_secondary {
+            for (v, _) in win.iter_mut() {
+                self.select_face(&mut v.v, front);
+            }
+            if let Some(f) = flat.as_mut() {
+                self.select_face(f, front);
+            }
+        }
+        let flat = flat.as_ref();
         let mode = self.state.polygon_mode(front);
         let offset_on = match mode {
             PolygonMode::Fill => self.state.offset_fill,
@@ -287,10 +341,13 @@ impl<'s> Geometry<'s> {
                         let next = &shifted[(i + 1) % shifted.len()].0;
                         raster::line(v, next, self.state.line_width, flat, &self.params, sink);
                     } else {
-                        let v = RasterVertex {
-                            color: flat.unwrap_or(v.color),
-                            ..*v
-                        };
+                        let mut v = *v;
+                        if let (Some(f), Some(o)) = (flat, self.layout.color()) {
+                            copy_slots(&mut v.v, o, f, o, 4);
+                        }
+                        if let (Some(f), Some(o)) = (flat, self.layout.secondary()) {
+                            copy_slots(&mut v.v, o, f, o, 4);
+                        }
                         raster::point(&v, self.state.point_size, &self.params, sink);
                     }
                 }

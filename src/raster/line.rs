@@ -4,6 +4,7 @@
 //! it is filled with the triangle rule.
 
 use super::{triangle, RasterParams, RasterVertex, SpanSink};
+use crate::geometry::varying::Varyings;
 
 /// The integer width GL rasterizes for `width`: rounded half up, 1 to 255.
 pub fn line_width_pixels(width: f32) -> u32 {
@@ -18,12 +19,13 @@ fn in_diamond(x: f32, y: f32, i: i64, j: i64) -> bool {
     (x - (i as f32 + 0.5)).abs() + (y - (j as f32 + 0.5)).abs() < 0.5
 }
 
-/// Rasterizes the segment `a → b`. `flat` replaces the interpolated color.
+/// Rasterizes the segment `a → b`. `flat` (the provoking vertex's varyings)
+/// replaces the interpolated colours.
 pub fn line(
     a: &RasterVertex,
     b: &RasterVertex,
     width: f32,
-    flat: Option<[f32; 4]>,
+    flat: Option<&Varyings>,
     params: &RasterParams,
     sink: &mut dyn SpanSink,
 ) {
@@ -66,17 +68,18 @@ pub fn line(
         let (x, y) = if x_major { (u, v) } else { (v, u) };
         let t = (u - u0) / du;
         let inv_w = a.inv_w + (b.inv_w - a.inv_w) * t;
-        let color = [0, 1, 2, 3].map(|c| {
-            let cw = a.color[c] * a.inv_w + (b.color[c] * b.inv_w - a.color[c] * a.inv_w) * t;
-            cw / inv_w
-        });
+        let mut vary = a.v;
+        for (k, out) in vary[..params.layout.len()].iter_mut().enumerate() {
+            let cw = a.v[k] * a.inv_w + (b.v[k] * b.inv_w - a.v[k] * a.inv_w) * t;
+            *out = cw / inv_w;
+        }
         RasterVertex {
             x,
             y,
             y_down: params.height as f32 - y,
             z: a.z + (b.z - a.z) * f64::from(t),
             inv_w,
-            color,
+            v: vary,
         }
     };
     let (ulo, uhi) = (lo as f32, (hi + 1) as f32);

@@ -14,6 +14,8 @@ pub use point::point;
 pub use triangle::{offset, triangle};
 
 use crate::framebuffer::Rect;
+use crate::geometry::varying::{VaryingLayout, Varyings};
+use softgl_jit::shade::{slot, Planes};
 use softgl_jit::{DepthFormat, FragmentSpan};
 
 /// Sub-pixel bits of the fixed-point grid.
@@ -34,13 +36,15 @@ pub struct RasterVertex {
     pub z: f64,
     /// `1 / w_clip`, for perspective-correct interpolation.
     pub inv_w: f32,
-    /// RGBA in `[0, 1]`.
-    pub color: [f32; 4],
+    /// The varyings of [`RasterParams::layout`] (colours in `[0, 1]`).
+    pub v: Varyings,
 }
 
-/// Receives the spans a primitive covers.
+/// Receives the spans a primitive covers, after its planes.
 pub trait SpanSink {
     fn span(&mut self, span: &FragmentSpan);
+    /// The planes of the spans that follow (until the next call).
+    fn planes(&mut self, _planes: &Planes) {}
 }
 
 impl<F: FnMut(&FragmentSpan)> SpanSink for F {
@@ -59,8 +63,9 @@ pub struct RasterParams {
     pub depth: Option<DepthFormat>,
     /// Framebuffer height in pixels.
     pub height: u32,
-    /// Whether any stage reads the fragment color.
-    pub color: bool,
+    /// The varyings the vertices carry; the colour is interpolated only
+    /// when `layout.color` (some stage reads the fragment colour).
+    pub layout: VaryingLayout,
     /// Polygon offset `(factor, units)` for this primitive, if enabled.
     pub offset: Option<(f32, f32)>,
 }
@@ -84,6 +89,28 @@ pub fn snap(v: f32) -> i64 {
 #[inline]
 pub fn color_to_unorm8(c: f32) -> u8 {
     crate::framebuffer::float_to_unorm(c, 255) as u8
+}
+
+/// The planes of a point (or anything else constant): each varying of `v`
+/// and depth `z` as a constant, 1/w as 1, so that the fragment stage's
+/// perspective division leaves the values exact.
+pub fn constant_planes(v: &Varyings, z: f32, params: &RasterParams) -> Planes {
+    let mut p = Planes::default();
+    p.constant(slot::INV_W, 1.0);
+    let l = params.layout;
+    for (at, to, n) in [
+        (l.color(), slot::COLOR, 4),
+        (l.secondary(), slot::SECONDARY, 3),
+        (l.fog(), slot::FOG, 1),
+    ] {
+        if let Some(o) = at {
+            for c in 0..n {
+                p.constant(to + c, v[o + c]);
+            }
+        }
+    }
+    p.constant(slot::Z, z);
+    p
 }
 
 /// Converts window depth to buffer units (clamped to `[0, 1]`).

@@ -1,30 +1,19 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 
-use super::{ceil_div, color_to_unorm8, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
+use super::{ceil_div, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
+use crate::geometry::varying::Varyings;
+use softgl_jit::interp::row_of;
+use softgl_jit::shade::{slot, Planes};
 use softgl_jit::{DepthFormat, FragmentSpan};
 
-/// `a * b + c` rounded once, as an FMA instruction gives it: the f32 product
-/// is exact in f64, and the f64 sum rounds to f32 (a second rounding that can
-/// differ from a true FMA only on rare ties), without needing FMA hardware.
-#[inline]
-fn fma32(a: f32, b: f32, c: f32) -> f32 {
-    (f64::from(a) * f64::from(b) + f64::from(c)) as f32
-}
-
 /// An attribute plane in llvmpipe's frame: x right, y down from the top row,
-/// evaluated at integer pixel coordinates for the pixel centers.
+/// evaluated at integer pixel coordinates for the pixel centers (by the
+/// fragment stage: `Planes::at`).
 #[derive(Clone, Copy, Debug)]
 struct Plane {
     a0: f32,
     dadx: f32,
     dady: f32,
-}
-
-impl Plane {
-    #[inline]
-    fn at(&self, px: f32, row: f32) -> f32 {
-        fma32(self.dady, row, fma32(self.dadx, px, self.a0))
-    }
 }
 
 /// Triangle setup in f32 from the unsnapped window positions, step for step
@@ -66,8 +55,9 @@ impl Setup {
     }
 }
 
-/// Rasterizes a triangle, either winding. `flat` replaces the interpolated color.
-pub fn triangle(v: [&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterParams, sink: &mut dyn SpanSink) {
+/// Rasterizes a triangle, either winding. `flat` (the provoking vertex's
+/// varyings) replaces the interpolated colours.
+pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams, sink: &mut dyn SpanSink) {
     let mut p = v.map(|v| (snap(v.x), snap(v.y)));
     let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
     if area == 0 || params.bounds.is_empty() {
@@ -104,7 +94,8 @@ pub fn triangle(v: [&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterPa
         return;
     }
 
-    let shade = Shading::new(v, flat, params);
+    let (planes, per_fragment_z) = setup_planes(v, flat, params);
+    sink.planes(&planes);
     let mut span = FragmentSpan::new(0, 0);
     for py in py0..=py1 {
         let sy = py * ONE;
@@ -128,73 +119,73 @@ pub fn triangle(v: [&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterPa
             continue;
         }
         emit_row(sink, &mut span, py as u32, lo as u32, hi as u32, |x, s, i| {
-            shade.shade(x, py as u32, s, i)
-        });
-    }
-}
-
-/// Per-fragment attribute evaluation for one triangle.
-struct Shading {
-    /// Planes of r/w, g/w, b/w, a/w and 1/w.
-    color: Option<([Plane; 4], Plane)>,
-    flat: Option<[u8; 4]>,
-    depth: Option<(Plane, DepthFormat)>,
-    /// Framebuffer height, to turn window rows into llvmpipe's top-down rows.
-    height: u32,
-}
-
-impl Shading {
-    fn new(v: [&RasterVertex; 3], flat: Option<[f32; 4]>, params: &RasterParams) -> Shading {
-        // llvmpipe orders the vertices by the sign of the snapped area in its
-        // y-down frame, and swaps the first two when it is negative.
-        let mut v = v;
-        let q = v.map(|v| (snap(v.x), snap(v.y_down)));
-        let area = (q[0].0 - q[1].0) * (q[2].1 - q[0].1) - (q[2].0 - q[0].0) * (q[0].1 - q[1].1);
-        if area < 0 {
-            v.swap(0, 1);
-        }
-        let setup = Setup::new(v.map(|v| (v.x, v.y_down)));
-        let color = (params.color && flat.is_none()).then(|| {
-            let planes = [0, 1, 2, 3].map(|c| setup.plane(v.map(|v| v.color[c] * v.inv_w)));
-            (planes, setup.plane(v.map(|v| v.inv_w)))
-        });
-        let depth = params.depth.map(|f| {
-            let mut z = v.map(|v| v.z as f32);
-            if let Some((factor, units)) = params.offset {
-                let slope = setup.plane(z);
-                let o = offset(factor, units, slope.dadx, slope.dady, f);
-                z = z.map(|z| (z + o).clamp(0.0, 1.0));
+            if let Some(format) = per_fragment_z {
+                let z = planes.at(slot::Z, x as f32, row_of(py as u32, params.height));
+                s.z[i] = crate::framebuffer::depth_to_unorm(f64::from(z), format);
             }
-            (setup.plane(z), f)
         });
-        Shading {
-            color,
-            flat: flat.filter(|_| params.color).map(|c| c.map(color_to_unorm8)),
-            depth,
-            height: params.height,
-        }
     }
+}
 
-    #[inline]
-    fn shade(&self, x: u32, y: u32, span: &mut FragmentSpan, i: usize) {
-        let (px, row) = (x as f32, self.height.saturating_sub(y + 1) as f32);
-        if let Some(c) = self.flat {
-            span.r[i] = c[0];
-            span.g[i] = c[1];
-            span.b[i] = c[2];
-            span.a[i] = c[3];
-        } else if let Some((planes, iw)) = &self.color {
-            let w = 1.0 / iw.at(px, row);
-            let ch = |k: usize| color_to_unorm8(planes[k].at(px, row) * w);
-            span.r[i] = ch(0);
-            span.g[i] = ch(1);
-            span.b[i] = ch(2);
-            span.a[i] = ch(3);
-        }
-        if let Some((plane, f)) = &self.depth {
-            span.z[i] = crate::framebuffer::depth_to_unorm(f64::from(plane.at(px, row)), *f);
+/// The planes of a triangle's attributes for the fragment stage, set up in
+/// llvmpipe's order: colours (the flat ones constant), the secondary colour
+/// and the fog coordinate over w, 1/w, depth (with polygon offset). Also the
+/// depth format whose values the rasterizer computes per fragment itself
+/// (32-bit depth, which the shading stage leaves to the span).
+fn setup_planes(
+    v: [&RasterVertex; 3],
+    flat: Option<&Varyings>,
+    params: &RasterParams,
+) -> (Planes, Option<DepthFormat>) {
+    // llvmpipe orders the vertices by the sign of the snapped area in its
+    // y-down frame, and swaps the first two when it is negative.
+    let mut v = v;
+    let q = v.map(|v| (snap(v.x), snap(v.y_down)));
+    let area = (q[0].0 - q[1].0) * (q[2].1 - q[0].1) - (q[2].0 - q[0].0) * (q[0].1 - q[1].1);
+    if area < 0 {
+        v.swap(0, 1);
+    }
+    let setup = Setup::new(v.map(|v| (v.x, v.y_down)));
+    let mut planes = Planes::default();
+    let mut put = |k: usize, p: Plane| (planes.a0[k], planes.dadx[k], planes.dady[k]) = (p.a0, p.dadx, p.dady);
+    let layout = params.layout;
+    let over_w = |k: usize| setup.plane(v.map(|v| v.v[k] * v.inv_w));
+    put(slot::INV_W, setup.plane(v.map(|v| v.inv_w)));
+    let colours = [
+        (layout.color(), slot::COLOR, 4),
+        (layout.secondary(), slot::SECONDARY, 3),
+    ];
+    for (at, to, n) in colours {
+        let Some(o) = at else { continue };
+        for c in 0..n {
+            let p = match flat {
+                Some(f) => Plane {
+                    a0: f[o + c],
+                    dadx: 0.0,
+                    dady: 0.0,
+                },
+                None => over_w(o + c),
+            };
+            put(to + c, p);
         }
     }
+    if let Some(o) = layout.fog() {
+        put(slot::FOG, over_w(o));
+    }
+    let mut per_fragment_z = None;
+    if let Some(f) = params.depth {
+        let mut z = v.map(|v| v.z as f32);
+        if let Some((factor, units)) = params.offset {
+            let slope = setup.plane(z);
+            let o = offset(factor, units, slope.dadx, slope.dady, f);
+            z = z.map(|z| (z + o).clamp(0.0, 1.0));
+        }
+        put(slot::Z, setup.plane(z));
+        if f == DepthFormat::D32 {
+            per_fragment_z = Some(f);
+        }
+    }
+    (planes, per_fragment_z)
 }
 
 /// Polygon offset in window depth, as llvmpipe computes it in f32:

@@ -93,6 +93,8 @@ struct Fetched {
     pos: Vec<f32>,
     color: Option<(usize, Vec<f32>)>,
     normal: Option<Vec<f32>>,
+    secondary: Option<Vec<f32>>,
+    fog_coord: Option<Vec<f32>>,
 }
 
 /// Reads the vertices `indices` names; `None` without a vertex array (GL then draws nothing).
@@ -103,7 +105,10 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
     }
     let color = (os.color.enabled && !os.color.ptr.is_null()).then_some(&os.color);
     let normal = (os.normal.enabled && !os.normal.ptr.is_null()).then_some(&os.normal);
+    let secondary = (os.secondary.enabled && !os.secondary.ptr.is_null()).then_some(&os.secondary);
+    let fog_coord = (os.fog_coord.enabled && !os.fog_coord.ptr.is_null()).then_some(&os.fog_coord);
     let (mut pos, mut col, mut nrm) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut sec, mut fog) = (Vec::new(), Vec::new());
     let mut count = 0;
     for i in indices {
         // SAFETY: the enabled arrays hold every element the draw names (GL's contract).
@@ -115,6 +120,12 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
             if let Some(n) = normal {
                 fetch(n, i, true, &mut nrm);
             }
+            if let Some(c) = secondary {
+                fetch(c, i, true, &mut sec);
+            }
+            if let Some(c) = fog_coord {
+                fetch(c, i, false, &mut fog);
+            }
         }
         count += 1;
     }
@@ -125,6 +136,8 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         pos,
         color: color.map(|c| (c.size as usize, col)),
         normal: normal.map(|_| nrm),
+        secondary: secondary.map(|_| sec),
+        fog_coord: fog_coord.map(|_| fog),
     }))
 }
 
@@ -153,6 +166,8 @@ fn draw(
             position: AttribArray::new(f.pos_size, &f.pos),
             color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
             normal: f.normal.as_ref().map(|n| AttribArray::new(3, n)),
+            secondary: f.secondary.as_ref().map(|c| AttribArray::new(3, c)),
+            fog_coord: f.fog_coord.as_ref().map(|c| AttribArray::new(1, c)),
         };
         // The context records its own errors (inside begin/end, …).
         let _ = if indexed {
@@ -167,7 +182,7 @@ fn draw(
 }
 
 /// Sets a client array pointer after checking its arguments.
-fn pointer(
+pub(super) fn pointer(
     which: fn(&mut GlState) -> &mut ClientArray,
     sizes: &[i32],
     size: i32,
@@ -203,8 +218,8 @@ fn client_state(array: GLenum, on: bool) {
     })
 }
 
-const ALL_TYPES: [GLenum; 4] = [GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
-const COLOR_TYPES: [GLenum; 8] = [
+pub(super) const ALL_TYPES: [GLenum; 4] = [GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+pub(super) const COLOR_TYPES: [GLenum; 8] = [
     GL_BYTE,
     GL_UNSIGNED_BYTE,
     GL_SHORT,
@@ -347,6 +362,8 @@ exports! {
                 GL_COLOR_ARRAY_POINTER => os.color.ptr,
                 GL_NORMAL_ARRAY_POINTER => os.normal.ptr,
                 GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord.ptr,
+                0x845D => os.secondary.ptr, // GL_SECONDARY_COLOR_ARRAY_POINTER
+                0x8456 => os.fog_coord.ptr, // GL_FOG_COORD_ARRAY_POINTER
                 _ => return Err(GlError::InvalidEnum),
             };
             if !params.is_null() {

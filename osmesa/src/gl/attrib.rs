@@ -1,7 +1,7 @@
 //! The attribute stacks: `glPushAttrib`/`glPopAttrib` and the client ones.
 //! A push saves the whole state; a pop restores the groups its mask named,
 //! through the context's own setters. Groups without state in softgl yet
-//! (fog, lighting values, textures, …) save nothing.
+//! (lighting values, textures, …) save nothing.
 
 use super::{now, rec};
 use crate::consts::*;
@@ -17,6 +17,7 @@ const POINT_BIT: u32 = 0x2;
 const LINE_BIT: u32 = 0x4;
 const POLYGON_BIT: u32 = 0x8;
 const LIGHTING_BIT: u32 = 0x40;
+const FOG_BIT: u32 = 0x80;
 const DEPTH_BIT: u32 = 0x100;
 const STENCIL_BIT: u32 = 0x400;
 const VIEWPORT_BIT: u32 = 0x800;
@@ -83,6 +84,8 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         gl.color4(c.color.x, c.color.y, c.color.z, c.color.w);
         gl.normal3(c.normal.x, c.normal.y, c.normal.z);
         gl.tex_coord4(c.tex_coord.x, c.tex_coord.y, c.tex_coord.z, c.tex_coord.w);
+        gl.secondary_color3(c.secondary.x, c.secondary.y, c.secondary.z);
+        gl.fog_coord(c.fog_coord);
     }
     if m & POINT_BIT != 0 {
         gl.point_size(st.point_size)?;
@@ -107,6 +110,13 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         gl.shade_model(st.shade_model)?;
     }
     restore_lighting(gl, m, &st.lighting)?;
+    if m & (FOG_BIT | ENABLE_BIT) != 0 {
+        set_cap(gl, Capability::Fog, st.fog.enabled)?;
+        set_cap(gl, Capability::ColorSum, st.color_sum)?;
+    }
+    if m & FOG_BIT != 0 {
+        super::fog::restore(gl, &st.fog)?;
+    }
     if m & (DEPTH_BIT | ENABLE_BIT) != 0 {
         set_cap(gl, Capability::DepthTest, st.depth_test)?;
     }
@@ -222,7 +232,7 @@ exports! {
                 (os.pack, os.unpack) = (s.pack, s.unpack);
             }
             if s.mask & CLIENT_VERTEX_ARRAY_BIT != 0 {
-                [os.vertex, os.color, os.normal, os.tex_coord] = s.arrays;
+                [os.vertex, os.color, os.normal, os.tex_coord, os.secondary, os.fog_coord] = s.arrays;
             }
             Ok(())
         })

@@ -33,7 +33,6 @@ pub fn cap(v: GLenum) -> GlResult<Cap> {
         0x0DE0
         | 0x0DE1
         | 0x806F
-        | 0x0B60
         | 0x0B24
         | 0x0B42
         | 0x0B10

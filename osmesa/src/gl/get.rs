@@ -8,7 +8,7 @@ use softgl::{Backend, ColorFormat, Context, GlEnum, GlError, GlResult, MatrixMod
 use std::ffi::c_char;
 
 /// A queried value before conversion to the caller's type.
-enum Val {
+pub(super) enum Val {
     /// Integers and enumerants.
     I(Vec<i64>),
     /// Floats that convert to integers by rounding.
@@ -77,6 +77,8 @@ pub(super) fn is_enabled(os: &GlState, gl: &Context, cap: GLenum) -> GlResult<bo
         GL_COLOR_ARRAY => os.color.enabled,
         GL_NORMAL_ARRAY => os.normal.enabled,
         GL_TEXTURE_COORD_ARRAY => os.tex_coord.enabled,
+        super::fog::GL_SECONDARY_COLOR_ARRAY => os.secondary.enabled,
+        super::fog::GL_FOG_COORD_ARRAY => os.fog_coord.enabled,
         GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY => false,
         _ => match enums::cap(cap)? {
             Cap::Core(c) => gl.is_enabled(c),
@@ -127,6 +129,9 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     }
     if let Some(h) = HINTS.iter().position(|&t| t == pname) {
         return Ok(e(os.hints[h]));
+    }
+    if let Some(v) = super::fog::value(os, gl, pname) {
+        return Ok(v);
     }
     let b = s.blend_func;
     let cm = s.color_mask;

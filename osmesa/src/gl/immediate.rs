@@ -7,7 +7,7 @@ use softgl::Context;
 
 /// Integer colour components to floats, GL 1.x's rules: unsigned `c / max`,
 /// signed `(2c + 1) / (2 max + 1)`.
-trait Norm: Copy {
+pub(super) trait Norm: Copy {
     fn norm(self) -> f32;
 }
 impl Norm for f32 {
@@ -55,7 +55,7 @@ impl Norm for i32 {
 ///
 /// # Safety
 /// `v` is null or points to `N` readable values.
-unsafe fn read<T: Copy, const N: usize>(v: *const T) -> Option<[T; N]> {
+pub(super) unsafe fn read<T: Copy, const N: usize>(v: *const T) -> Option<[T; N]> {
     if v.is_null() {
         return None;
     }

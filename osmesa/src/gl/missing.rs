@@ -72,14 +72,6 @@ exports! {
     [] fn glGetTexGenfv(_coord: GLenum, _pname: GLenum, _params: *mut f32) {
         missing()
     }
-    /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glFogf(_pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glFogfv(_pname: GLenum, _params: *const f32) {
-        missing()
-    }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glPixelTransferf(_pname: GLenum, _param: f32) {
         missing()
@@ -118,14 +110,6 @@ exports! {
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetTexGeniv(_coord: GLenum, _pname: GLenum, _params: *mut i32) {
-        missing()
-    }
-    /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glFogi(_pname: GLenum, _param: i32) {
-        missing()
-    }
-    /// Fog (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glFogiv(_pname: GLenum, _params: *const i32) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.

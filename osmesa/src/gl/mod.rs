@@ -24,6 +24,7 @@ macro_rules! exports {
 mod arrays;
 mod attrib;
 mod enums;
+mod fog;
 pub(crate) mod get;
 mod immediate;
 mod lighting;
@@ -34,6 +35,7 @@ mod state;
 
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
+pub use fog::*;
 pub use get::*;
 pub use immediate::*;
 pub use lighting::*;
@@ -47,6 +49,8 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
     [
         arrays::table,
         attrib::table,
+        fog::table,
+        fog::color_table,
         get::table,
         immediate::table,
         lighting::table,

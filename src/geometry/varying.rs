@@ -1,0 +1,130 @@
+//! The varying layout: which attributes a draw's vertices carry past the
+//! vertex stage, and where each sits in a vertex's [`Varyings`].
+//!
+//! The layout is decided once per draw from the same state that builds the
+//! [`FragmentKey`](softgl_jit::FragmentKey) (`RasterState::varying_layout`):
+//! an attribute no fragment stage reads is neither computed, clipped, set up
+//! nor interpolated. Slots are packed in a fixed order — primary colour,
+//! back primary colour, secondary colour, back secondary colour, fog
+//! coordinate — each present only when its flag is on.
+
+/// Which varyings a draw carries, decided once per state change from the same
+/// state that builds the `FragmentKey`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub struct VaryingLayout {
+    /// Primary colour RGBA (front).
+    pub color: bool,
+    /// Primary colour RGBA for back faces (two-sided lighting only).
+    pub back_color: bool,
+    /// Secondary colour RGBA (colour sum / separate specular; alpha unused).
+    pub secondary: bool,
+    /// Back-face secondary colour (two-sided lighting with separate specular).
+    pub back_secondary: bool,
+    /// Fog coordinate: eye distance `|z_eye|` or `|glFogCoord|`.
+    pub fog: bool,
+}
+
+/// Most f32 slots a vertex carries.
+pub const MAX_VARYINGS: usize = 32;
+
+/// The attribute values of one vertex; the first `layout.len()` slots are meaningful.
+pub type Varyings = [f32; MAX_VARYINGS];
+
+impl VaryingLayout {
+    /// Slots of each attribute, in packing order, with whether it is on.
+    fn parts(&self) -> [(bool, usize); 5] {
+        [
+            (self.color, 4),
+            (self.back_color, 4),
+            (self.secondary, 4),
+            (self.back_secondary, 4),
+            (self.fog, 1),
+        ]
+    }
+
+    /// The offset of part `k` of [`Self::parts`], if it is on.
+    fn offset(&self, k: usize) -> Option<usize> {
+        let parts = self.parts();
+        parts[k].0.then(|| parts[..k].iter().filter(|p| p.0).map(|p| p.1).sum())
+    }
+
+    /// f32 slots in use.
+    pub fn len(&self) -> usize {
+        self.parts().iter().filter(|p| p.0).map(|p| p.1).sum()
+    }
+
+    /// Whether the vertices carry nothing but their position.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Offset of the primary colour's 4 slots, if active.
+    pub fn color(&self) -> Option<usize> {
+        self.offset(0)
+    }
+
+    /// Offset of the back primary colour's 4 slots, if active.
+    pub fn back_color(&self) -> Option<usize> {
+        self.offset(1)
+    }
+
+    /// Offset of the secondary colour's 4 slots, if active.
+    pub fn secondary(&self) -> Option<usize> {
+        self.offset(2)
+    }
+
+    /// Offset of the back secondary colour's 4 slots, if active.
+    pub fn back_secondary(&self) -> Option<usize> {
+        self.offset(3)
+    }
+
+    /// Offset of the fog coordinate's slot, if active.
+    pub fn fog(&self) -> Option<usize> {
+        self.offset(4)
+    }
+}
+
+/// Copies `n` slots of the attribute at `from` in `src` to `to` in `dst`.
+#[inline]
+pub fn copy_slots(dst: &mut Varyings, to: usize, src: &Varyings, from: usize, n: usize) {
+    dst[to..to + n].copy_from_slice(&src[from..from + n]);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn offsets_pack_in_order() {
+        let all = VaryingLayout {
+            color: true,
+            back_color: true,
+            secondary: true,
+            back_secondary: true,
+            fog: true,
+        };
+        assert_eq!(all.len(), 17);
+        assert_eq!(
+            (
+                all.color(),
+                all.back_color(),
+                all.secondary(),
+                all.back_secondary(),
+                all.fog()
+            ),
+            (Some(0), Some(4), Some(8), Some(12), Some(16))
+        );
+        let some = VaryingLayout {
+            color: true,
+            fog: true,
+            ..VaryingLayout::default()
+        };
+        assert_eq!((some.len(), some.secondary(), some.fog()), (5, None, Some(4)));
+        let fog_only = VaryingLayout {
+            fog: true,
+            ..VaryingLayout::default()
+        };
+        assert_eq!((fog_only.len(), fog_only.color(), fog_only.fog()), (1, None, Some(0)));
+        assert!(VaryingLayout::default().is_empty());
+    }
+}
