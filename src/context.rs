@@ -9,6 +9,7 @@ use crate::fog::{FogCoordSrc, FogParam, FogState};
 use crate::fragment::{Backend, FragmentStage};
 use crate::framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
 use crate::geometry::batch::{FogSource, VertexStage};
+use crate::geometry::lighting::LightSetup;
 use crate::geometry::varying::VaryingLayout;
 use crate::geometry::{DrawSource, Geometry, InVertex, MAX_VIEWPORT};
 use crate::lighting::{
@@ -172,7 +173,7 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVer
         color: arrays.color.map_or(current.color, |c| c.get(i, Vec4::W)),
         secondary: arrays.secondary.map_or(current.secondary, |c| c.get(i, Vec4::W)),
         fog_coord: arrays.fog_coord.map_or(current.fog_coord, |c| c.get(i, Vec4::ZERO).x),
-        normal: current.normal,
+        normal: arrays.normal.map_or(current.normal, |n| n.get(i, Vec4::ZERO).truncate()),
     }
 }
 
@@ -882,6 +883,10 @@ impl Context {
             vertex_stage.fog = FogSource::EyeDepth {
                 row: self.modelview.top().row(2),
             };
+        }
+        let lit = layout.color || layout.secondary;
+        if self.state.lighting.enabled && lit {
+            vertex_stage.lighting = Some(LightSetup::new(&self.state.lighting, self.modelview.top()));
         }
         let geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
         let specialist = match self.backend {

@@ -366,11 +366,17 @@ impl RasterState {
     /// fragment colour (`reads_color`), with the secondary colour when the
     /// colour sum is on and the fog coordinate when fog is.
     pub fn varying_layout(&self, reads_color: bool) -> VaryingLayout {
+        // Lighting adds back colours when two-sided, and a secondary colour
+        // (summed, as GL 1.4 §3.9 says) with GL_SEPARATE_SPECULAR_COLOR.
+        let l = &self.lighting;
+        let two_side = l.enabled && l.two_side;
+        let separate = l.enabled && l.color_control == crate::lighting::ColorControl::SeparateSpecular;
         VaryingLayout {
             color: reads_color,
-            secondary: reads_color && self.color_sum,
+            back_color: reads_color && two_side,
+            secondary: reads_color && (self.color_sum || separate),
+            back_secondary: reads_color && two_side && separate,
             fog: reads_color && self.fog.enabled,
-            ..VaryingLayout::default()
         }
     }
 

@@ -182,7 +182,7 @@ struct FromColor {
 }
 
 /// One side's material as the program sees it.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 struct Side {
     emission: [f32; 4],
     ambient: [f32; 4],
@@ -208,7 +208,7 @@ impl Side {
 }
 
 /// The derived constants of one enabled light (`gl_light._Position`, …).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 struct LightConst {
     /// Position (divided by w when positional), eye or object space.
     position: V3,
@@ -235,7 +235,7 @@ enum NormalFix {
 }
 
 /// Everything one draw's lighting needs, derived once from the state.
-#[derive(Clone, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightSetup {
     /// Mesa's `_NeedEyeCoords`: light in eye space; else in object space.
     eye_space: bool,
@@ -243,7 +243,9 @@ pub struct LightSetup {
     /// Rows of the inverse transpose of the modelview's upper 3x3.
     normal_rows: [V3; 3],
     normal_fix: NormalFix,
-    lights: Vec<LightConst>,
+    /// The enabled lights, in index order: the first `count`.
+    lights: [LightConst; MAX_LIGHTS],
+    count: usize,
     sides: [Side; 2],
     model_ambient: [f32; 4],
     two_side: bool,
@@ -253,7 +255,7 @@ pub struct LightSetup {
     shininess_zero: bool,
     /// Light products `light · material` per light, side and term
     /// (ambient, diffuse, specular), alpha the material's.
-    products: Vec<[[[f32; 4]; 3]; 2]>,
+    products: [[[[f32; 4]; 3]; 2]; MAX_LIGHTS],
     fast: bool,
 }
 
@@ -352,7 +354,7 @@ impl LightSetup {
         } else {
             [0, 4, 8].map(|k| 0.0 * mvc[k] + 0.0 * mvc[k + 1] + 1.0 * mvc[k + 2])
         };
-        let lights: Vec<LightConst> = enabled
+        let list: Vec<LightConst> = enabled
             .iter()
             .map(|(_, l)| {
                 let mut p = if eye_space {
@@ -417,9 +419,11 @@ impl LightSetup {
         });
         // check_active_shininess: the front's, else (two-sided) the back's.
         let shininess_zero = sides[0].shininess == 0.0 && !(state.two_side && sides[1].shininess != 0.0);
-        let products = lights
-            .iter()
-            .map(|l| {
+        let mut lights = [LightConst::default(); MAX_LIGHTS];
+        lights[..list.len()].copy_from_slice(&list);
+        let mut products = [[[[0.0; 4]; 3]; 2]; MAX_LIGHTS];
+        for (p, l) in products.iter_mut().zip(&list) {
+            *p = {
                 [0, 1].map(|s| {
                     let mat = sides[s].values([0.0; 4]);
                     [0, 1, 2].map(|k| {
@@ -427,15 +431,16 @@ impl LightSetup {
                         [lc[0] * mc[0], lc[1] * mc[1], lc[2] * mc[2], mc[3]]
                     })
                 })
-            })
-            .collect();
-        let fast = !state.local_viewer && lights.iter().all(|l| !l.positional && l.spot.is_none());
+            };
+        }
+        let fast = !state.local_viewer && list.iter().all(|l| !l.positional && l.spot.is_none());
         LightSetup {
             eye_space,
             modelview: *mv,
             normal_rows,
             normal_fix,
             lights,
+            count: list.len(),
             sides,
             model_ambient: state.model_ambient,
             two_side: state.two_side,
@@ -514,7 +519,7 @@ impl LightSetup {
     /// Lights one vertex (the general path).
     pub fn light(&self, v: &LightInput) -> LitColors {
         let n = self.normal(v.normal);
-        let needs_pos = self.local_viewer || self.lights.iter().any(|l| l.positional);
+        let needs_pos = self.local_viewer || self.lights[..self.count].iter().any(|l| l.positional);
         let eye = if needs_pos { self.position(v.pos) } else { [0.0; 3] };
         let eye_hat = if self.local_viewer { normalize_vp(eye) } else { [0.0; 3] };
         let c = v.color.to_array();
@@ -525,7 +530,7 @@ impl LightSetup {
             let sc = self.scene(&mats[s]);
             acc[s][0] = [sc[0], sc[1], sc[2]];
         }
-        for (i, l) in self.lights.iter().enumerate() {
+        for (i, l) in self.lights[..self.count].iter().enumerate() {
             let (vp, dist) = if l.positional {
                 let vp = sub(l.position, eye);
                 let d2 = dp3(vp, vp);
@@ -612,6 +617,16 @@ impl LightSetup {
         out
     }
 
+    /// Lights one vertex through the fast path when it applies.
+    #[inline]
+    pub fn light_vertex(&self, v: &LightInput) -> LitColors {
+        if self.fast {
+            self.light_fast(v)
+        } else {
+            self.light(v)
+        }
+    }
+
     /// Lights `inputs` into `out` (same length): the fast path when it
     /// applies, else the general one.
     pub fn light_batch(&self, inputs: &[LightInput], out: &mut [LitColors]) {
@@ -640,7 +655,7 @@ impl LightSetup {
             acc[s][0] = [sc[0], sc[1], sc[2]];
         }
         let j = usize::from(self.separate);
-        for (i, l) in self.lights.iter().enumerate() {
+        for (i, l) in self.lights[..self.count].iter().enumerate() {
             let nl = dp3(n, l.vp_inf);
             let nh = if self.shininess_zero { nl } else { dp3(n, l.half_inf) };
             for s in 0..nsides {
@@ -667,11 +682,6 @@ impl LightSetup {
         }
         self.finish(&acc, &mats)
     }
-}
-
-/// Whether any light is enabled (lighting with none still yields the scene colour).
-pub fn any_light(state: &LightingState) -> bool {
-    state.lights.iter().take(MAX_LIGHTS).any(|l| l.enabled)
 }
 
 #[cfg(test)]
