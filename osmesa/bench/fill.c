@@ -6,10 +6,13 @@
  * CASE: fill (16 full-screen smooth-shaded quads, no depth), depth (16 full-screen
  * quads, depth test LESS, nearer each time so every fragment passes), tris (20k random
  * triangles of ~2000 px, depth test), lit (a GLU sphere of 1000x800 slices/stacks,
- * ~1.6 M triangles, one infinite light, depth test). Prints one line: the case, the
+ * ~1.6 M triangles, one infinite light, depth test), fog (fill with EXP fog and
+ * GL_COLOR_SUM on). Prints one line: the case, the
  * median ms of the frames, and fragments (or triangles) per second. */
+#define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
 #include <GL/gl.h>
+#include <GL/glext.h>
 #include <GL/glu.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -43,6 +46,8 @@ int main(int argc,char**argv){
   for(int i=0;i<20000*9;i++) col[i]=rand()/(float)RAND_MAX;
   double work=0; const char*unit="Mfrag/s";
   if(!strcmp(c,"fill")){ work=16.0*W*H; }
+  else if(!strcmp(c,"fog")){ glEnable(GL_FOG); glFogi(GL_FOG_MODE,GL_EXP); glFogf(GL_FOG_DENSITY,0.7f);
+    glEnable(GL_COLOR_SUM); glSecondaryColor3f(0.1f,0.2f,0.3f); work=16.0*W*H; }
   else if(!strcmp(c,"depth")){ glEnable(GL_DEPTH_TEST); work=16.0*W*H; }
   else if(!strcmp(c,"tris")){ glEnable(GL_DEPTH_TEST);
     glVertexPointer(3,GL_FLOAT,0,tri); glColorPointer(3,GL_FLOAT,0,col);
@@ -57,7 +62,7 @@ int main(int argc,char**argv){
   for(int f=-1; f<frames; f++){
     double t0=now();
     glClear(GL_COLOR_BUFFER_BIT|GL_DEPTH_BUFFER_BIT);
-    if(!strcmp(c,"fill")||!strcmp(c,"depth")) quads(!strcmp(c,"depth"));
+    if(!strcmp(c,"fill")||!strcmp(c,"fog")||!strcmp(c,"depth")) quads(!strcmp(c,"depth"));
     else if(!strcmp(c,"tris")) glDrawArrays(GL_TRIANGLES,0,20000*3);
     else gluSphere(q,1.5,1000,800);
     glFinish();

@@ -5,6 +5,7 @@
 pub mod assemble;
 pub mod batch;
 pub mod clip;
+pub mod lighting;
 pub mod varying;
 
 use crate::framebuffer::{Framebuffer, Rect};
@@ -129,7 +130,6 @@ impl<'s> Geometry<'s> {
             height: fb.height(),
             depth: depth_format,
             layout,
-            fog: layout.fog.then(|| (state.fog.mode, state.fog.uniforms())),
             offset: None,
         };
         let wide_params = RasterParams {
