@@ -183,15 +183,37 @@ impl Gen<'_> {
                 self.exp2(x)
             }
         };
-        self.saturate(f)
+        self.saturate_factor(f)
+    }
+
+    /// `clamp(f, 0, 1)` with NaN as 0 by two compares, for the fog factor:
+    /// it differs from [`Self::saturate`] only in making −0 +0, which no
+    /// colour byte can see (`fog·(1 − f) + c·f` is then ±0 either way, and
+    /// both convert to 0).
+    fn saturate_factor(&mut self, f: Value) -> Value {
+        let one = self.fconst(1.0);
+        let zero = self.fconst(0.0);
+        let f = self.select_if(FloatCC::GreaterThanOrEqual, f, one);
+        let positive = self.b.ins().fcmp(FloatCC::GreaterThan, f, zero);
+        let bits = self.b.ins().bitcast(I32X4, MemFlagsData::new(), f);
+        let bits = self.b.ins().band(bits, positive);
+        self.b.ins().bitcast(F32X4, MemFlagsData::new(), bits)
+    }
+
+    /// `bound` in the lanes where `v <cc> bound` (false for NaN), else `v`.
+    fn select_if(&mut self, cc: FloatCC, v: Value, bound: Value) -> Value {
+        let m = self.b.ins().fcmp(cc, v, bound);
+        let m = self.b.ins().bitcast(F32X4, MemFlagsData::new(), m);
+        self.b.ins().bitselect(m, bound, v)
     }
 
     /// llvmpipe's `exp2` (`crate::shade::exp2`).
     fn exp2(&mut self, x: Value) -> Value {
         let hi = self.fconst(128.0);
         let lo = self.fconst(-126.99999);
-        let x = self.b.ins().fmin(x, hi);
-        let x = self.b.ins().fmax(x, lo);
+        // The clamp by compares keeps NaN, as the reference does.
+        let x = self.select_if(FloatCC::GreaterThan, x, hi);
+        let x = self.select_if(FloatCC::LessThan, x, lo);
         let ipart = self.b.ins().floor(x);
         let fpart = self.b.ins().fsub(x, ipart);
         let i = self.b.ins().fcvt_to_sint_sat(I32X4, ipart);
