@@ -2,8 +2,8 @@
 //! [`Call`]s, and every back end replays that list its own way.
 
 use softgl::{
-    BlendEquation, BlendFactor, Capability, ClearMask, CompareFunc, Face, FrontFace, LogicOp, MatrixMode, PolygonMode,
-    PrimitiveMode, ShadeModel, StencilOp,
+    BlendEquation, BlendFactor, Capability, ClearMask, CompareFunc, Face, FogParam, FrontFace, LogicOp, MatrixMode,
+    PolygonMode, PrimitiveMode, ShadeModel, StencilOp,
 };
 
 /// One GL 1.x call, with GL's arguments.
@@ -53,6 +53,12 @@ pub enum Call {
     End,
     Color([f32; 4]),
     Vertex([f32; 4]),
+    /// `glFog*`: one parameter.
+    Fog(FogParam),
+    /// `glSecondaryColor3f`.
+    SecondaryColor([f32; 3]),
+    /// `glFogCoordf`.
+    FogCoord(f32),
     /// `glDrawArrays` over client arrays of 4-component positions and colours.
     DrawArrays {
         mode: PrimitiveMode,
@@ -119,6 +125,15 @@ impl Rec {
     }
     pub fn vertex(&mut self, x: f32, y: f32, z: f32) -> &mut Self {
         self.call(Call::Vertex([x, y, z, 1.0]))
+    }
+    pub fn fog(&mut self, p: FogParam) -> &mut Self {
+        self.call(Call::Fog(p))
+    }
+    pub fn secondary_color(&mut self, r: f32, g: f32, b: f32) -> &mut Self {
+        self.call(Call::SecondaryColor([r, g, b]))
+    }
+    pub fn fog_coord(&mut self, c: f32) -> &mut Self {
+        self.call(Call::FogCoord(c))
     }
     pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) -> &mut Self {
         self.call(Call::Vertex([x, y, z, w]))

@@ -5,7 +5,7 @@
 use super::{Outcome, Timing};
 use crate::call::{clear_bits, Call};
 use crate::scenes::Recording;
-use softgl::{ColorFormat, GlEnum};
+use softgl::{ColorFormat, FogParam, GlEnum};
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::time::Instant;
 
@@ -86,6 +86,11 @@ gl_fns! {
     glEnd();
     glColor4f(f32, f32, f32, f32);
     glVertex4f(f32, f32, f32, f32);
+    glFogf(u32, f32);
+    glFogi(u32, i32);
+    glFogfv(u32, *const f32);
+    glSecondaryColor3f(f32, f32, f32);
+    glFogCoordf(f32);
     glEnableClientState(u32);
     glDisableClientState(u32);
     glVertexPointer(i32, u32, i32, *const c_void);
@@ -289,6 +294,17 @@ impl Context<'_> {
                 Call::End => (g.glEnd)(),
                 Call::Color([r, gg, bb, a]) => (g.glColor4f)(*r, *gg, *bb, *a),
                 Call::Vertex([x, y, z, w]) => (g.glVertex4f)(*x, *y, *z, *w),
+                Call::Fog(p) => match p {
+                    FogParam::Mode(m) => (g.glFogi)(0x0B65, m.to_gl() as i32), // GL_FOG_MODE
+                    FogParam::Density(d) => (g.glFogf)(0x0B62, *d),
+                    FogParam::Start(v) => (g.glFogf)(0x0B63, *v),
+                    FogParam::End(v) => (g.glFogf)(0x0B64, *v),
+                    FogParam::Color(c) => (g.glFogfv)(0x0B66, c.as_ptr()),
+                    FogParam::Index(i) => (g.glFogf)(0x0B61, *i),
+                    FogParam::CoordSrc(s) => (g.glFogi)(0x8450, s.to_gl() as i32), // GL_FOG_COORD_SRC
+                },
+                Call::SecondaryColor([r, gg, bb]) => (g.glSecondaryColor3f)(*r, *gg, *bb),
+                Call::FogCoord(c) => (g.glFogCoordf)(*c),
                 Call::DrawArrays {
                     mode,
                     positions,

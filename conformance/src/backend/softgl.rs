@@ -139,6 +139,15 @@ pub fn replay(gl: &mut Context, c: &Call) -> GlResult {
             gl.vertex4(*x, *y, *z, *w);
             Ok(())
         }
+        Call::Fog(p) => gl.fog(*p),
+        Call::SecondaryColor([r, g, b]) => {
+            gl.secondary_color3(*r, *g, *b);
+            Ok(())
+        }
+        Call::FogCoord(c) => {
+            gl.fog_coord(*c);
+            Ok(())
+        }
         Call::DrawArrays {
             mode,
             positions,

@@ -436,6 +436,7 @@ fn markdown(
         Group::Primitive,
         Group::Stiff,
         Group::Timing,
+        Group::Fog,
     ];
     let _ = writeln!(o, "\n## Per scene and back end\n");
     for g in groups {

@@ -4,6 +4,7 @@
 //! (geometry where Mesa's f32 clippers are known to be wrong).
 
 mod combos;
+mod fog;
 pub mod oracle;
 mod primitives;
 mod stages;
@@ -86,6 +87,8 @@ pub enum Group {
     Stiff,
     /// Large random scenes, for timing.
     Timing,
+    /// Fog and the colour sum (issue 11).
+    Fog,
 }
 
 impl Group {
@@ -96,6 +99,7 @@ impl Group {
             Group::Primitive => "primitives",
             Group::Stiff => "stiff and extreme",
             Group::Timing => "timing",
+            Group::Fog => "fog and colour sum",
         }
     }
 }
@@ -268,6 +272,7 @@ pub fn all() -> Vec<Scene> {
     v.extend(combos::scenes());
     v.extend(primitives::scenes());
     v.extend(stiff::scenes());
+    v.extend(fog::scenes());
     v.extend(timing::scenes());
     v
 }

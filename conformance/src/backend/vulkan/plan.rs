@@ -301,6 +301,11 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
     for c in &rec.calls {
         match c {
             Call::Enable(cap) => {
+                if matches!(cap, Capability::Fog | Capability::ColorSum) {
+                    return Err(format!(
+                        "{cap:?}: a fixed-function fragment stage this back end's pipelines do not have"
+                    ));
+                }
                 st.caps.insert(*cap, true);
             }
             Call::Disable(cap) => {
@@ -428,6 +433,8 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
                 }
             }
             Call::Color(c) => st.color = *c,
+            // Without GL_FOG and GL_COLOR_SUM (refused above) these change no pixel.
+            Call::Fog(_) | Call::SecondaryColor(_) | Call::FogCoord(_) => {}
             Call::Vertex(v) => {
                 let color = st.color;
                 st.batch.push((*v, color));
