@@ -334,8 +334,8 @@ fn lit_scenes_match_mesa() {
     };
     let counts: Vec<(f64, usize)> = (0..4).map(|q| diff(&quarter(&a, q), &quarter(&b, q))).collect();
     // Measured: scenes 1 and 3 identical; scene 2 (8 spot lights with
-    // attenuation, local viewer) one channel one step off; scene 4 (colour
-    // material, NORMALIZE, flat, a user clip plane) identical.
+    // attenuation, local viewer, linear fog) two channels one step off;
+    // scene 4 (colour material, NORMALIZE, flat, a user clip plane) identical.
     assert!(counts.iter().all(|&(max, _)| max <= 1.0), "{counts:?}");
     assert!(counts.iter().map(|c| c.1).sum::<usize>() <= 4, "{counts:?}");
 }

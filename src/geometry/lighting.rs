@@ -483,6 +483,14 @@ impl LightSetup {
         }
     }
 
+    /// The eye position the program computes for lighting (positional
+    /// lights, local viewer), which its fog coordinate then reuses
+    /// (`get_eye_position_z`); `None` when lighting computes none.
+    pub fn eye_position(&self, p: Vec4) -> Option<[f32; 3]> {
+        let needs = self.local_viewer || self.lights[..self.count].iter().any(|l| l.positional);
+        needs.then(|| self.position(p))
+    }
+
     /// The eye (or object) position: `MUL`/`MAD` by the modelview's columns.
     #[inline(always)]
     fn position(&self, p: Vec4) -> V3 {
