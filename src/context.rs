@@ -9,16 +9,20 @@ use crate::fog::{FogCoordSrc, FogParam, FogState};
 use crate::fragment::{Backend, FragmentStage};
 use crate::framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
 use crate::geometry::batch::{FogSource, VertexStage};
+use crate::geometry::lighting::LightSetup;
 use crate::geometry::varying::VaryingLayout;
 use crate::geometry::{DrawSource, Geometry, InVertex, MAX_VIEWPORT};
+use crate::lighting::{
+    ColorMaterialMode, LightModelParam, LightParam, LightParamName, MaterialParam, MaterialParamName,
+};
 use crate::matrix::{self, MatrixMode, MatrixStack};
 use crate::state::{
     Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, RasterState, ShadeModel, WindowRect,
 };
 use glam::{Mat4, Vec3, Vec4};
 use softgl_jit::{
-    BlendEquation, BlendFactor, BlendKey, CacheStats, ColorMask, CompareFunc, FragmentKey, LogicOp, SpecialistCache,
-    Stage, StencilOp,
+    BlendEquation, BlendFactor, BlendKey, CacheStats, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
+    ShadeKey, SpecialistCache, Stage, StencilOp,
 };
 
 /// One vertex attribute array: `size` floats per element, elements `stride`
@@ -78,6 +82,8 @@ pub struct VertexArrays<'a> {
     pub position: AttribArray<'a>,
     /// 3 or 4 components.
     pub color: Option<AttribArray<'a>>,
+    /// 3 components (`glNormalPointer`).
+    pub normal: Option<AttribArray<'a>>,
     /// `glSecondaryColorPointer`: 3 components.
     pub secondary: Option<AttribArray<'a>>,
     /// `glFogCoordPointer`: 1 component.
@@ -92,6 +98,7 @@ impl<'a> VertexArrays<'a> {
         VertexArrays {
             position: AttribArray::new(size, data),
             color: None,
+            normal: None,
             secondary: None,
             fog_coord: None,
             edge_flag: None,
@@ -103,6 +110,14 @@ impl<'a> VertexArrays<'a> {
         VertexArrays {
             color: Some(AttribArray::new(color_size, color)),
             ..VertexArrays::positions(pos_size, pos)
+        }
+    }
+
+    /// The same arrays with per-vertex normals (3 floats each).
+    pub fn with_normals(self, normal: &'a [f32]) -> VertexArrays<'a> {
+        VertexArrays {
+            normal: Some(AttribArray::new(3, normal)),
+            ..self
         }
     }
 
@@ -119,6 +134,10 @@ impl<'a> VertexArrays<'a> {
                 a.check(sizes)?;
                 len = len.min(a.len());
             }
+        }
+        if let Some(n) = &self.normal {
+            n.check(3..=3)?;
+            len = len.min(n.len());
         }
         Ok(len)
     }
@@ -162,7 +181,9 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVer
         color: arrays.color.map_or(current.color, |c| c.get(i, Vec4::W)),
         secondary: arrays.secondary.map_or(current.secondary, |c| c.get(i, Vec4::W)),
         fog_coord: arrays.fog_coord.map_or(current.fog_coord, |c| c.get(i, Vec4::ZERO).x),
-        normal: current.normal,
+        normal: arrays
+            .normal
+            .map_or(current.normal, |n| n.get(i, Vec4::ZERO).truncate()),
         edge: arrays
             .edge_flag
             .map_or(current.edge_flag, |e| e.get(i, Vec4::ONE).x != 0.0),
@@ -363,11 +384,23 @@ impl Context {
 
     // ----- capabilities -----
 
+    /// `glEnable`; a light or clip plane past the last is `InvalidEnum`.
+    /// Enabling `ColorMaterial` makes the material follow the current colour.
     pub fn enable(&mut self, cap: Capability) -> GlResult {
-        self.set(|s| *s.flag_mut(cap) = true)
+        self.outside()?;
+        self.record(if cap.valid() { Ok(()) } else { Err(GlError::InvalidEnum) })?;
+        let color = self.current.color;
+        self.set(|s| {
+            *s.flag_mut(cap) = true;
+            if cap == Capability::ColorMaterial {
+                s.lighting.track_color(color);
+            }
+        })
     }
 
     pub fn disable(&mut self, cap: Capability) -> GlResult {
+        self.outside()?;
+        self.record(if cap.valid() { Ok(()) } else { Err(GlError::InvalidEnum) })?;
         self.set(|s| *s.flag_mut(cap) = false)
     }
 
@@ -649,6 +682,79 @@ impl Context {
         self.set(|s| s.color_mask = ColorMask { r, g, b, a })
     }
 
+    // ----- lighting and clip planes -----
+
+    /// `glLight` on light `index` (`InvalidEnum` from 8 on); positions and
+    /// spot directions are transformed by the modelview in force.
+    pub fn light(&mut self, index: u32, param: LightParam) -> GlResult {
+        self.outside()?;
+        let mv = *self.modelview.top();
+        let r = self.state.lighting.set_light(index, param, &mv);
+        self.record(r)
+    }
+
+    /// `glGetLight`: positions and directions in eye coordinates.
+    pub fn get_light(&mut self, index: u32, name: LightParamName) -> GlResult<LightParam> {
+        self.outside()?;
+        let r = self.state.lighting.light(index, name);
+        self.record(r)
+    }
+
+    pub fn light_model(&mut self, param: LightModelParam) -> GlResult {
+        self.set(|s| s.lighting.set_model(param))
+    }
+
+    /// `glMaterial`, also between `begin` and `end` (the whole primitive
+    /// then takes the last value).
+    pub fn material(&mut self, face: Face, param: MaterialParam) -> GlResult {
+        let r = self.state.lighting.set_material(face, param);
+        self.record(r)
+    }
+
+    /// `glGetMaterial` of `Front` or `Back`.
+    pub fn get_material(&mut self, face: Face, name: MaterialParamName) -> GlResult<MaterialParam> {
+        self.outside()?;
+        let r = self.state.lighting.material(face, name);
+        self.record(r)
+    }
+
+    /// `glColorMaterial`; with `ColorMaterial` on, the material follows the
+    /// current colour at once.
+    pub fn color_material(&mut self, face: Face, mode: ColorMaterialMode) -> GlResult {
+        let color = self.current.color;
+        self.set(|s| {
+            (s.lighting.color_material_face, s.lighting.color_material_mode) = (face, mode);
+            s.lighting.track_color(color);
+        })
+    }
+
+    /// Replaces the whole lighting and clip plane state, values as stored
+    /// (eye coordinates): how `glPopAttrib` restores it.
+    pub fn restore_lighting(&mut self, lighting: crate::lighting::LightingState) -> GlResult {
+        self.set(|s| s.lighting = lighting)
+    }
+
+    /// `glClipPlane`: `plane` in object coordinates, kept in eye coordinates.
+    pub fn clip_plane(&mut self, index: u32, plane: [f64; 4]) -> GlResult {
+        self.outside()?;
+        let mv = *self.modelview.top();
+        let r = self.state.lighting.set_clip_plane(index, plane, &mv);
+        self.record(r)
+    }
+
+    /// `glGetClipPlane`: the plane in eye coordinates.
+    pub fn get_clip_plane(&mut self, index: u32) -> GlResult<[f64; 4]> {
+        self.outside()?;
+        let r = self
+            .state
+            .lighting
+            .clip_planes
+            .get(index as usize)
+            .copied()
+            .ok_or(GlError::InvalidEnum);
+        self.record(r)
+    }
+
     // ----- immediate mode -----
 
     /// `glBegin`; `InvalidOperation` when already inside `begin`.
@@ -685,6 +791,7 @@ impl Context {
 
     pub fn color4(&mut self, r: f32, g: f32, b: f32, a: f32) {
         self.current.color = Vec4::new(r, g, b, a);
+        self.state.lighting.track_color(self.current.color);
         if let Some((_, _, per_vertex_color)) = &mut self.begun {
             *per_vertex_color = true;
         }
@@ -779,15 +886,24 @@ impl Context {
     // ----- drawing -----
 
     /// The fragment key and the varying layout a draw made now would use,
-    /// both decided from the current state.
+    /// both decided from the current state: the key's shading stage
+    /// interpolates what the layout carries.
     pub fn draw_plan(&self) -> (FragmentKey, VaryingLayout) {
-        let key = self.state.fragment_key(&self.fb, self.ordered_dither);
+        let mut key = self.state.fragment_key(&self.fb, self.ordered_dither);
         let reads_color = key
             .stages()
             .as_slice()
             .iter()
             .any(|s| matches!(s, Stage::Pack { .. } | Stage::AlphaTest(_)));
-        (key, self.state.varying_layout(reads_color))
+        let layout = self.state.varying_layout(reads_color);
+        key.shade = Some(ShadeKey {
+            color: layout.color,
+            flat: layout.color && self.state.shade_model == ShadeModel::Flat,
+            color_sum: layout.secondary,
+            fog: layout.fog.then_some(self.state.fog.mode),
+            depth: key.depth.is_some() && key.depth_format != Some(DepthFormat::D32),
+        });
+        (key, layout)
     }
 
     fn draw(&mut self, mode: (PrimitiveMode, DrawSource), count: usize, fetch: &dyn Fn(usize) -> InVertex) -> GlResult {
@@ -800,7 +916,12 @@ impl Context {
                 row: self.modelview.top().row(2),
             };
         }
-        let geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
+        let lit = layout.color || layout.secondary;
+        if self.state.lighting.enabled && lit {
+            vertex_stage.lighting = Some(LightSetup::new(&self.state.lighting, self.modelview.top()));
+        }
+        let mut geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
+        geometry.set_user_planes(self.projection.top());
         let specialist = match self.backend {
             Backend::Jit => self.specialists.get(&key),
             Backend::Interpreter => None,

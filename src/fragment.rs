@@ -2,7 +2,7 @@
 //! to the back end for the draw's key.
 
 use crate::raster::SpanSink;
-use softgl_jit::{interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Specialist, Target};
+use softgl_jit::{interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target};
 
 /// Spans handed to the back end at once.
 const BATCH: usize = 32;
@@ -34,13 +34,16 @@ impl Backend {
 }
 
 /// Collects spans and runs the fragment stages over them in batches, with the
-/// key's specialist when there is one, else with the interpreter.
+/// key's specialist when there is one, else with the interpreter. Each span
+/// names the planes of its primitive among the batch's.
 pub struct FragmentStage<'t> {
     specialist: Option<&'t Specialist>,
     key: FragmentKey,
     uniforms: FragmentUniforms,
     target: Target<'t>,
     batch: Vec<FragmentSpan>,
+    /// The planes of the batch's primitives; the last is the current one's.
+    planes: Vec<Planes>,
     error: Option<FragmentError>,
 }
 
@@ -60,6 +63,7 @@ impl<'t> FragmentStage<'t> {
             uniforms,
             target,
             batch: Vec::with_capacity(BATCH),
+            planes: Vec::with_capacity(BATCH),
             error: None,
         })
     }
@@ -69,13 +73,16 @@ impl<'t> FragmentStage<'t> {
             return;
         }
         let r = match self.specialist {
-            Some(s) => s.run(&self.uniforms, &self.batch, &mut self.target),
-            None => interp::run(&self.key, &self.uniforms, &self.batch, &mut self.target),
+            Some(s) => s.run_with_planes(&self.uniforms, &self.batch, &self.planes, &mut self.target),
+            None => interp::run_with_planes(&self.key, &self.uniforms, &self.batch, &self.planes, &mut self.target),
         };
         if let Err(e) = r {
             self.error.get_or_insert(e);
         }
         self.batch.clear();
+        // The current primitive's planes stay, as planes 0, for its next spans.
+        let last = self.planes.len().saturating_sub(1);
+        self.planes.drain(..last);
     }
 
     /// Runs what is left and reports the first error, if any.
@@ -90,9 +97,18 @@ impl SpanSink for FragmentStage<'_> {
         if span.live_mask() == 0 {
             return;
         }
-        self.batch.push(span.clone());
+        let mut s = span.clone();
+        s.planes = self.planes.len().saturating_sub(1) as u32;
+        self.batch.push(s);
         if self.batch.len() == BATCH {
             self.flush();
         }
+    }
+
+    fn planes(&mut self, planes: &Planes) {
+        if self.planes.len() == BATCH {
+            self.flush();
+        }
+        self.planes.push(*planes);
     }
 }

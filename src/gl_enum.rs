@@ -8,6 +8,7 @@
 //! [`GlEnum::from_gl`] (a value listed twice is an unreachable-pattern lint).
 
 use crate::fog::{FogCoordSrc, FogMode};
+use crate::lighting::{ColorControl, ColorMaterialMode, LightParamName, MaterialParamName};
 use crate::matrix::MatrixMode;
 use crate::state::{Capability, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};
 use softgl_jit::{BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilOp};
@@ -31,19 +32,22 @@ pub trait GlEnum: Copy + Eq + std::fmt::Debug + 'static {
 }
 
 macro_rules! gl_enums {
-    ($($ty:ident { $($variant:ident = $name:ident $value:literal,)* })*) => {
+    ($($ty:ident { $($variant:ident $(($arg:literal))? = $name:ident $value:literal,)* })*) => {
         $(
             impl GlEnum for $ty {
                 const TABLE: &'static [(Self, &'static str, u32)] =
-                    &[$(($ty::$variant, stringify!($name), $value)),*];
+                    &[$(($ty::$variant $(($arg))?, stringify!($name), $value)),*];
                 fn to_gl(self) -> u32 {
                     match self {
-                        $($ty::$variant => $value,)*
+                        $($ty::$variant $(($arg))? => $value,)*
+                        // Still exhaustive over the variants: a tuple variant
+                        // (`Light(8)`) outside its listed values has no GL value.
+                        $(#[allow(unreachable_patterns)] $ty::$variant { .. } => 0,)*
                     }
                 }
                 fn from_gl(value: u32) -> Option<Self> {
                     match value {
-                        $($value => Some($ty::$variant),)*
+                        $($value => Some($ty::$variant $(($arg))?),)*
                         _ => None,
                     }
                 }
@@ -164,6 +168,54 @@ gl_enums! {
         PolygonOffsetLine = GL_POLYGON_OFFSET_LINE 0x2A02,
         PolygonOffsetFill = GL_POLYGON_OFFSET_FILL 0x8037,
         ColorSum = GL_COLOR_SUM 0x8458,
+        Lighting = GL_LIGHTING 0x0B50,
+        ColorMaterial = GL_COLOR_MATERIAL 0x0B57,
+        Normalize = GL_NORMALIZE 0x0BA1,
+        RescaleNormal = GL_RESCALE_NORMAL 0x803A,
+        ClipPlane(0) = GL_CLIP_PLANE0 0x3000,
+        ClipPlane(1) = GL_CLIP_PLANE1 0x3001,
+        ClipPlane(2) = GL_CLIP_PLANE2 0x3002,
+        ClipPlane(3) = GL_CLIP_PLANE3 0x3003,
+        ClipPlane(4) = GL_CLIP_PLANE4 0x3004,
+        ClipPlane(5) = GL_CLIP_PLANE5 0x3005,
+        Light(0) = GL_LIGHT0 0x4000,
+        Light(1) = GL_LIGHT1 0x4001,
+        Light(2) = GL_LIGHT2 0x4002,
+        Light(3) = GL_LIGHT3 0x4003,
+        Light(4) = GL_LIGHT4 0x4004,
+        Light(5) = GL_LIGHT5 0x4005,
+        Light(6) = GL_LIGHT6 0x4006,
+        Light(7) = GL_LIGHT7 0x4007,
+    }
+    ColorControl {
+        SingleColor = GL_SINGLE_COLOR 0x81F9,
+        SeparateSpecular = GL_SEPARATE_SPECULAR_COLOR 0x81FA,
+    }
+    ColorMaterialMode {
+        Ambient = GL_AMBIENT 0x1200,
+        Diffuse = GL_DIFFUSE 0x1201,
+        Specular = GL_SPECULAR 0x1202,
+        Emission = GL_EMISSION 0x1600,
+        AmbientAndDiffuse = GL_AMBIENT_AND_DIFFUSE 0x1602,
+    }
+    LightParamName {
+        Ambient = GL_AMBIENT 0x1200,
+        Diffuse = GL_DIFFUSE 0x1201,
+        Specular = GL_SPECULAR 0x1202,
+        Position = GL_POSITION 0x1203,
+        SpotDirection = GL_SPOT_DIRECTION 0x1204,
+        SpotExponent = GL_SPOT_EXPONENT 0x1205,
+        SpotCutoff = GL_SPOT_CUTOFF 0x1206,
+        ConstantAttenuation = GL_CONSTANT_ATTENUATION 0x1207,
+        LinearAttenuation = GL_LINEAR_ATTENUATION 0x1208,
+        QuadraticAttenuation = GL_QUADRATIC_ATTENUATION 0x1209,
+    }
+    MaterialParamName {
+        Ambient = GL_AMBIENT 0x1200,
+        Diffuse = GL_DIFFUSE 0x1201,
+        Specular = GL_SPECULAR 0x1202,
+        Emission = GL_EMISSION 0x1600,
+        Shininess = GL_SHININESS 0x1601,
     }
     FogMode {
         Exp = GL_EXP 0x0800,
@@ -212,12 +264,16 @@ mod tests {
             round_trip::<ShadeModel>(),
             round_trip::<MatrixMode>(),
             round_trip::<Capability>(),
+            round_trip::<ColorControl>(),
+            round_trip::<ColorMaterialMode>(),
+            round_trip::<LightParamName>(),
+            round_trip::<MaterialParamName>(),
             round_trip::<FogMode>(),
             round_trip::<FogCoordSrc>(),
         ];
         // Every variant of each type (to_gl's exhaustive match already
         // refuses a table without one).
-        assert_eq!(counts, [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 13, 3, 2]);
+        assert_eq!(counts, [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 31, 2, 5, 10, 5, 3, 2]);
     }
 
     #[test]
@@ -228,10 +284,8 @@ mod tests {
         assert_eq!(LogicOp::ALL.map(LogicOp::to_gl)[0], 0x1500);
         assert_eq!(PrimitiveMode::from_gl(0x000A), None);
         assert_eq!(CompareFunc::from_gl(0x0208), None);
-        assert_eq!(
-            Capability::from_gl(0x0B50),
-            None,
-            "GL_LIGHTING is not a softgl capability yet"
-        );
+        assert_eq!(Capability::from_gl(0x0B50), Some(Capability::Lighting));
+        assert_eq!(Capability::from_gl(0x4008), None, "GL_LIGHT8 does not exist");
+        assert_eq!(Capability::from_gl(0x3006), None, "GL_CLIP_PLANE6 does not exist");
     }
 }

@@ -27,6 +27,7 @@ pub mod fragment;
 pub mod framebuffer;
 pub mod geometry;
 pub mod gl_enum;
+pub mod lighting;
 pub mod matrix;
 pub mod raster;
 pub mod state;
@@ -37,10 +38,13 @@ pub use fog::{FogCoordSrc, FogMode, FogParam};
 pub use fragment::Backend;
 pub use framebuffer::{ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
 pub use gl_enum::GlEnum;
+pub use lighting::{
+    ColorControl, ColorMaterialMode, LightModelParam, LightParam, LightParamName, MaterialParam, MaterialParamName,
+};
 pub use matrix::MatrixMode;
 pub use softgl_jit::rng;
 pub use softgl_jit::{
     BlendEquation, BlendFactor, CacheStats, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
-    StencilOp,
+    ShadeKey, StencilOp,
 };
 pub use state::{Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};

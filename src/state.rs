@@ -27,6 +27,26 @@ pub enum Capability {
     Fog,
     /// `GL_COLOR_SUM`: add the secondary colour to the primary one.
     ColorSum,
+    Lighting,
+    /// `GL_LIGHTi`, `i < 8`.
+    Light(u8),
+    ColorMaterial,
+    Normalize,
+    RescaleNormal,
+    /// `GL_CLIP_PLANEi`, `i < 6`.
+    ClipPlane(u8),
+}
+
+impl Capability {
+    /// Whether the capability names something that exists (a light below
+    /// 8, a clip plane below 6).
+    pub fn valid(self) -> bool {
+        match self {
+            Capability::Light(i) => usize::from(i) < crate::lighting::MAX_LIGHTS,
+            Capability::ClipPlane(i) => usize::from(i) < crate::lighting::MAX_CLIP_PLANES,
+            _ => true,
+        }
+    }
 }
 
 /// The ten GL 1.x primitive modes.
@@ -191,6 +211,9 @@ pub struct RasterState {
     pub fog: FogState,
     /// `GL_COLOR_SUM`.
     pub color_sum: bool,
+
+    /// Lighting, materials, normals and user clip planes.
+    pub lighting: crate::lighting::LightingState,
 }
 
 impl RasterState {
@@ -246,10 +269,11 @@ impl RasterState {
             clear_stencil: 0,
             fog: FogState::default(),
             color_sum: false,
+            lighting: crate::lighting::LightingState::default(),
         }
     }
 
-    /// The enable flag behind `cap`.
+    /// The enable flag behind `cap` (which must be [`Capability::valid`]).
     pub fn flag_mut(&mut self, cap: Capability) -> &mut bool {
         match cap {
             Capability::AlphaTest => &mut self.alpha_test,
@@ -265,6 +289,12 @@ impl RasterState {
             Capability::StencilTest => &mut self.stencil_test,
             Capability::Fog => &mut self.fog.enabled,
             Capability::ColorSum => &mut self.color_sum,
+            Capability::Lighting => &mut self.lighting.enabled,
+            Capability::Light(i) => &mut self.lighting.lights[usize::from(i)].enabled,
+            Capability::ColorMaterial => &mut self.lighting.color_material,
+            Capability::Normalize => &mut self.lighting.normalize,
+            Capability::RescaleNormal => &mut self.lighting.rescale_normal,
+            Capability::ClipPlane(i) => &mut self.lighting.clip_enabled[usize::from(i)],
         }
     }
 
@@ -284,6 +314,12 @@ impl RasterState {
             Capability::StencilTest => self.stencil_test,
             Capability::Fog => self.fog.enabled,
             Capability::ColorSum => self.color_sum,
+            Capability::Lighting => self.lighting.enabled,
+            Capability::Light(i) => self.lighting.lights.get(usize::from(i)).is_some_and(|l| l.enabled),
+            Capability::ColorMaterial => self.lighting.color_material,
+            Capability::Normalize => self.lighting.normalize,
+            Capability::RescaleNormal => self.lighting.rescale_normal,
+            Capability::ClipPlane(i) => self.lighting.clip_enabled.get(usize::from(i)) == Some(&true),
         }
     }
 
@@ -320,6 +356,7 @@ impl RasterState {
             dither: self.dither && ordered_dither,
             logic_op: (self.color_logic_op && self.logic_op != LogicOp::Copy).then_some(self.logic_op),
             color_mask: self.color_mask,
+            shade: None,
         };
         key.normalized()
     }
@@ -329,11 +366,17 @@ impl RasterState {
     /// fragment colour (`reads_color`), with the secondary colour when the
     /// colour sum is on and the fog coordinate when fog is.
     pub fn varying_layout(&self, reads_color: bool) -> VaryingLayout {
+        // Lighting adds back colours when two-sided, and a secondary colour
+        // (summed, as GL 1.4 §3.9 says) with GL_SEPARATE_SPECULAR_COLOR.
+        let l = &self.lighting;
+        let two_side = l.enabled && l.two_side;
+        let separate = l.enabled && l.color_control == crate::lighting::ColorControl::SeparateSpecular;
         VaryingLayout {
             color: reads_color,
-            secondary: reads_color && self.color_sum,
+            back_color: reads_color && two_side,
+            secondary: reads_color && (self.color_sum || separate),
+            back_secondary: reads_color && two_side && separate,
             fog: reads_color && self.fog.enabled,
-            ..VaryingLayout::default()
         }
     }
 
@@ -346,6 +389,7 @@ impl RasterState {
             stencil_ref: self.stencil_ref.clamp(0, 255) as u8,
             stencil_value_mask: self.stencil_value_mask as u8,
             stencil_write_mask: self.stencil_write_mask as u8,
+            fog: self.fog.uniforms(),
         }
     }
 

@@ -1,7 +1,7 @@
 //! The varying layout a draw carries: only what its state reads.
 
 use softgl::geometry::varying::VaryingLayout;
-use softgl::{ColorFormat, Context, DepthFormat, FragmentKey, FramebufferDesc};
+use softgl::{ColorFormat, Context, DepthFormat, FragmentKey, FramebufferDesc, ShadeKey};
 
 fn context() -> Context {
     Context::new(FramebufferDesc::rgba8_d24s8(8, 8)).unwrap()
@@ -23,11 +23,18 @@ fn an_unlit_unfogged_draw_carries_the_primary_colour_only() {
         (layout.secondary(), layout.fog(), layout.back_color()),
         (None, None, None)
     );
-    // The key of GL's initial state is the plain colour write: no shading stage.
-    assert_eq!(
-        key,
-        FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), true).normalized()
-    );
+    // The key of GL's initial state is the plain colour write, its shading
+    // stage interpolating the primary colour alone: no colour sum, no fog.
+    let plain = ShadeKey {
+        color: true,
+        ..ShadeKey::default()
+    };
+    let expected = FragmentKey {
+        shade: Some(plain),
+        ..FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), true).normalized()
+    };
+    assert_eq!(key, expected);
+    assert_eq!((plain.color_sum, plain.fog, plain.flat), (false, None, false));
 }
 
 #[test]

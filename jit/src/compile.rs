@@ -18,6 +18,7 @@ use crate::key::{
     Stage, StencilKey, StencilOp,
 };
 use crate::pixel;
+use crate::shade::Planes;
 use crate::span::FragmentSpan;
 use crate::uniforms::FragmentUniforms;
 use cranelift_codegen::ir::condcodes::IntCC;
@@ -27,6 +28,8 @@ use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use std::mem::offset_of;
+
+mod shade;
 
 const I32X4: Type = types::I32X4;
 
@@ -49,6 +52,11 @@ pub struct SpanCall {
     pub _pad: u32,
     /// The dither bias of lanes `0..4` (the pattern repeats every four pixels).
     pub dither: [u32; 4],
+    /// The span's primitive's planes (keys with a shading stage), or null.
+    pub planes: *const Planes,
+    /// The span's row in llvmpipe's top-down frame, for the planes.
+    pub row: f32,
+    pub _pad2: u32,
 }
 
 /// The signature of a compiled specialist.
@@ -124,6 +132,9 @@ enum Factor {
 
 /// Per-span values loaded once in the entry block.
 struct SpanValues {
+    /// The `SpanCall` and uniforms pointers.
+    call: Value,
+    u: Value,
     span: Value,
     color: Value,
     depth: Value,
@@ -146,6 +157,8 @@ struct Group {
     depth_p: Value,
     stencil_p: Value,
     lane0: Value,
+    /// Depth values computed by the shading stage; else read from the span.
+    z: Option<Value>,
 }
 
 struct Gen<'a> {
@@ -196,6 +209,8 @@ impl<'a> Gen<'a> {
             .ins()
             .load(types::I32, mem(), span, offset_of!(FragmentSpan, x) as i32);
         let sv = SpanValues {
+            call,
+            u,
             span,
             color,
             depth,
@@ -320,6 +335,7 @@ impl<'a> Gen<'a> {
             depth_p,
             stencil_p,
             lane0,
+            z: None,
         }
     }
 
@@ -344,16 +360,21 @@ impl<'a> Gen<'a> {
             .iter()
             .any(|s| matches!(s, Stage::Pack { .. } | Stage::Blend(_)));
         let needs_alpha = needs_color || self.key.alpha_test.is_some();
-        if needs_color {
+        if let Some(shade) = self.key.shade {
+            self.shade(&mut g, sv, &shade);
+        }
+        let from_span = !self.key.shade.is_some_and(|s| s.color);
+        if needs_color && from_span {
             for c in 0..3 {
                 g.rgba[c] = self.span_channel(sv, g.lane0, c);
             }
         }
-        if needs_alpha {
+        if needs_alpha && from_span {
             g.rgba[3] = self.span_channel(sv, g.lane0, 3);
         }
         for stage in stages.as_slice() {
             match *stage {
+                Stage::Shade(_) => {}
                 Stage::Scissor => {
                     let x = self.b.ins().iadd(sv.x0, g.lane0);
                     let x = self.b.ins().splat(I32X4, x);
@@ -392,10 +413,15 @@ impl<'a> Gen<'a> {
                 Stage::DepthTest { depth, stencil } => {
                     let Some(format) = self.key.depth_format else { continue };
                     let max = self.splat(i64::from(format.max_value()));
-                    let lane0_p = self.b.ins().uextend(self.ptr, g.lane0);
-                    let zoff = self.b.ins().imul_imm_u(lane0_p, 4);
-                    let zp = self.b.ins().iadd(sv.span, zoff);
-                    let z = self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32);
+                    let z = match g.z {
+                        Some(z) => z,
+                        None => {
+                            let lane0_p = self.b.ins().uextend(self.ptr, g.lane0);
+                            let zoff = self.b.ins().imul_imm_u(lane0_p, 4);
+                            let zp = self.b.ins().iadd(sv.span, zoff);
+                            self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32)
+                        }
+                    };
                     let z = self.b.ins().umin(z, max);
                     let stored = self.load_depth(format, g.depth_p);
                     let pass = self.compare(depth.func, z, stored);

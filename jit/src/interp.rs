@@ -8,6 +8,7 @@ use crate::key::{
     BlendEquation, BlendFactor, BlendKey, ColorMask, FragmentKey, KeyError, Stage, StencilKey, StencilOp,
 };
 use crate::pixel;
+use crate::shade::{self, Planes};
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::target::Target;
 use crate::uniforms::FragmentUniforms;
@@ -19,6 +20,8 @@ pub enum FragmentError {
     Key(#[from] KeyError),
     #[error("the key's buffers do not match the target's")]
     TargetMismatch,
+    #[error("a span names planes the batch does not have")]
+    MissingPlanes,
 }
 
 /// Checks that `key` is valid and names exactly the buffers `target` has.
@@ -41,12 +44,40 @@ pub fn run(
     spans: &[FragmentSpan],
     target: &mut Target<'_>,
 ) -> Result<(), FragmentError> {
+    run_with_planes(key, uniforms, spans, &[], target)
+}
+
+/// [`run`] for keys with a shading stage: span `s` is of the primitive
+/// whose planes are `planes[s.planes]`.
+pub fn run_with_planes(
+    key: &FragmentKey,
+    uniforms: &FragmentUniforms,
+    spans: &[FragmentSpan],
+    planes: &[Planes],
+    target: &mut Target<'_>,
+) -> Result<(), FragmentError> {
     check_key(key, target)?;
+    check_planes(key, spans, planes)?;
     let stages = key.stages();
     for span in spans {
-        run_span(key, stages.as_slice(), uniforms, span, target);
+        let p = planes.get(span.planes as usize).copied().unwrap_or_default();
+        run_span(key, stages.as_slice(), uniforms, (span, &p), target);
     }
     Ok(())
+}
+
+/// Checks that every span of a key with a shading stage has its planes.
+pub fn check_planes(key: &FragmentKey, spans: &[FragmentSpan], planes: &[Planes]) -> Result<(), FragmentError> {
+    if key.shade.is_some() && spans.iter().any(|s| s.planes as usize >= planes.len()) {
+        return Err(FragmentError::MissingPlanes);
+    }
+    Ok(())
+}
+
+/// The row of `y` in llvmpipe's top-down frame of a target `height` high.
+#[inline]
+pub fn row_of(y: u32, height: u32) -> f32 {
+    height.saturating_sub(y + 1) as f32
 }
 
 /// The mask of `span`'s fragments that lie inside the target.
@@ -62,7 +93,13 @@ pub fn owned_mask(span: &FragmentSpan, width: u32, height: u32) -> u64 {
     live
 }
 
-fn run_span(key: &FragmentKey, stages: &[Stage], u: &FragmentUniforms, span: &FragmentSpan, t: &mut Target<'_>) {
+fn run_span(
+    key: &FragmentKey,
+    stages: &[Stage],
+    u: &FragmentUniforms,
+    (span, planes): (&FragmentSpan, &Planes),
+    t: &mut Target<'_>,
+) {
     let mut live = owned_mask(span, t.width(), t.height());
     if live == 0 {
         return;
@@ -75,9 +112,24 @@ fn run_span(key: &FragmentKey, stages: &[Stage], u: &FragmentUniforms, span: &Fr
         *c = [span.r[i], span.g[i], span.b[i], span.a[i]];
     }
     let mut packed = [0u32; SPAN_MAX];
+    let mut z = span.z;
 
     for stage in stages {
         match *stage {
+            Stage::Shade(shade) => {
+                let row = row_of(y, t.height());
+                let max = key.depth_format.map_or(0, |f| f.max_value());
+                for i in lanes(live) {
+                    let px = (x0 + i as u32) as f32;
+                    let (c, d) = shade::fragment(&shade, planes, (px, row), &u.fog, max);
+                    if let Some(c) = c {
+                        rgba[i] = c;
+                    }
+                    if let Some(d) = d {
+                        z[i] = d;
+                    }
+                }
+            }
             Stage::Scissor => {
                 let [sx0, sy0, sx1, sy1] = u.scissor;
                 let yi = i64::from(y);
@@ -120,7 +172,7 @@ fn run_span(key: &FragmentKey, stages: &[Stage], u: &FragmentUniforms, span: &Fr
                 let max = dbuf.format().max_value();
                 let mut stencil_buf = stencil_buf;
                 for i in lanes(live) {
-                    let z = span.z[i].min(max);
+                    let z = z[i].min(max);
                     let pass = depth.func.test(z, dbuf.get(idx0 + i));
                     if pass && depth.write {
                         dbuf.set(idx0 + i, z);

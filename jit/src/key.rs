@@ -391,6 +391,27 @@ pub struct FragmentKey {
     pub dither: bool,
     pub logic_op: Option<LogicOp>,
     pub color_mask: ColorMask,
+    /// Colour and depth computed from the primitive's planes; `None`: taken
+    /// from the span (`FragmentSpan::r` … `z`).
+    pub shade: Option<ShadeKey>,
+}
+
+/// The shading stage: which attributes a fragment interpolates from its
+/// primitive's [`Planes`](crate::shade::Planes) and what it makes of them
+/// (`crate::shade::fragment` is its reference).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct ShadeKey {
+    /// The primary colour (perspective-correct unless `flat`); else the
+    /// colour is the span's.
+    pub color: bool,
+    /// The colour planes hold constant values, not values over w.
+    pub flat: bool,
+    /// Add the secondary colour (`GL_COLOR_SUM`, separate specular).
+    pub color_sum: bool,
+    /// Fog the colour.
+    pub fog: Option<crate::shade::FogMode>,
+    /// Depth from the Z plane (16- and 24-bit buffers); else from the span.
+    pub depth: bool,
 }
 
 /// A key that does not fit the buffers it names.
@@ -423,6 +444,7 @@ impl FragmentKey {
             dither: false,
             logic_op: None,
             color_mask: ColorMask::ALL,
+            shade: None,
         }
     }
 
@@ -474,6 +496,9 @@ impl FragmentKey {
             list: [Stage::Scissor; MAX_STAGES],
             len: 0,
         };
+        if let Some(shade) = self.shade {
+            s.push(Stage::Shade(shade));
+        }
         if self.scissor {
             s.push(Stage::Scissor);
         }
@@ -510,11 +535,13 @@ impl FragmentKey {
 }
 
 /// Longest possible stage list.
-pub const MAX_STAGES: usize = 8;
+pub const MAX_STAGES: usize = 9;
 
 /// One per-fragment stage with the part of the key it needs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Stage {
+    /// Interpolate colour and depth from the planes, colour sum, fog.
+    Shade(ShadeKey),
     /// Kill fragments outside the scissor box.
     Scissor,
     /// Kill fragments whose alpha fails `alpha <func> ref`.

@@ -24,9 +24,9 @@ pub use cache::{CacheStats, SpecialistCache};
 pub use interp::FragmentError;
 pub use key::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, FragmentKey,
-    KeyError, LogicOp, Stage, StencilKey, StencilOp,
+    KeyError, LogicOp, ShadeKey, Stage, StencilKey, StencilOp,
 };
-pub use shade::{FogMode, FogUniforms};
+pub use shade::{FogMode, FogUniforms, Planes};
 pub use span::{FragmentSpan, SPAN_MAX};
 pub use specialist::{Specialist, SpecialistError};
 pub use target::{DepthTarget, Target, TargetError};

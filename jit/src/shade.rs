@@ -168,3 +168,84 @@ mod tests {
         }
     }
 }
+
+/// Plane slots of [`Planes`]: 1/w, the primary colour over w (RGBA), the
+/// secondary colour over w (RGB), the fog coordinate over w, window depth.
+pub mod slot {
+    pub const INV_W: usize = 0;
+    pub const COLOR: usize = 1;
+    pub const SECONDARY: usize = 5;
+    pub const FOG: usize = 8;
+    pub const Z: usize = 9;
+}
+
+/// Plane slots in a [`Planes`].
+pub const PLANES: usize = 10;
+
+/// The attribute planes of one primitive in llvmpipe's frame (x right, y
+/// down from the top row, pixel centres at integer coordinates): attribute
+/// `k` at pixel `(px, row)` is `fma(dady[k], row, fma(dadx[k], px, a0[k]))`
+/// (`docs/llvmpipe-facts.md` §11). `#[repr(C)]`: compiled code reads it.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Planes {
+    pub a0: [f32; PLANES],
+    pub dadx: [f32; PLANES],
+    pub dady: [f32; PLANES],
+}
+
+impl Planes {
+    /// Attribute `k` at pixel `(px, row)`, with llvmpipe's fused multiply-adds.
+    #[inline]
+    pub fn at(&self, k: usize, px: f32, row: f32) -> f32 {
+        self.dady[k].mul_add(row, self.dadx[k].mul_add(px, self.a0[k]))
+    }
+
+    /// Sets slot `k` to the constant `v` (points, flat colours).
+    pub fn constant(&mut self, k: usize, v: f32) {
+        (self.a0[k], self.dadx[k], self.dady[k]) = (v, 0.0, 0.0);
+    }
+}
+
+/// Converts a colour channel to a unorm byte as llvmpipe does: clamped to
+/// `[0, 1]` (NaN as 0), times 255, rounded half to even.
+#[inline]
+pub fn unorm8(c: f32) -> u8 {
+    (saturate(c) * 255.0).round_ties_even() as u8
+}
+
+/// Converts window depth to a 16- or 24-bit depth value as llvmpipe does:
+/// clamped to `[0, 1]` (NaN as 0), times the largest value, in f32, rounded
+/// half to even.
+#[inline]
+pub fn unorm_depth(z: f32, max: u32) -> u32 {
+    (saturate(z) * max as f32).round_ties_even() as u32
+}
+
+/// The colour and depth of the fragment at `(px, row)` of `planes`, as the
+/// shading stage of `key` makes them (`None` for what the key leaves to the span).
+pub fn fragment(
+    key: &crate::key::ShadeKey,
+    planes: &Planes,
+    (px, row): (f32, f32),
+    fog_u: &FogUniforms,
+    depth_max: u32,
+) -> (Option<[u8; 4]>, Option<u32>) {
+    let z = key.depth.then(|| unorm_depth(planes.at(slot::Z, px, row), depth_max));
+    if !key.color {
+        return (None, z);
+    }
+    let w = 1.0 / planes.at(slot::INV_W, px, row);
+    let colour = |k: usize| {
+        let v = planes.at(k, px, row);
+        if key.flat {
+            v
+        } else {
+            v * w
+        }
+    };
+    let primary = [0, 1, 2, 3].map(|c| colour(slot::COLOR + c));
+    let secondary = key.color_sum.then(|| [0, 1, 2].map(|c| colour(slot::SECONDARY + c)));
+    let fog = key.fog.map(|m| (m, planes.at(slot::FOG, px, row) * w, fog_u));
+    (Some(shade(primary, secondary, fog).map(unorm8)), z)
+}

@@ -15,6 +15,9 @@ pub struct FragmentSpan {
     /// Number of fragment slots in use, at most [`SPAN_MAX`].
     pub len: u32,
     pub mask: u64,
+    /// Which of the batch's [`Planes`](crate::Planes) this span's primitive
+    /// has (keys with a shading stage only).
+    pub planes: u32,
     pub r: [u8; SPAN_MAX],
     pub g: [u8; SPAN_MAX],
     pub b: [u8; SPAN_MAX],
@@ -32,6 +35,7 @@ impl FragmentSpan {
             y,
             len: 0,
             mask: 0,
+            planes: 0,
             r: [0; SPAN_MAX],
             g: [0; SPAN_MAX],
             b: [0; SPAN_MAX],

@@ -1,9 +1,10 @@
 //! A compiled specialist and the one place softgl calls into generated code.
 
 use crate::compile::{self, CompileError, SpanCall, SpanFn};
-use crate::interp::{check_key, owned_mask, FragmentError};
+use crate::interp::{check_key, check_planes, owned_mask, row_of, FragmentError};
 use crate::key::FragmentKey;
 use crate::pixel;
+use crate::shade::Planes;
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::target::{DepthTarget, Target};
 use crate::uniforms::FragmentUniforms;
@@ -115,14 +116,30 @@ impl Specialist {
         spans: &[FragmentSpan],
         target: &mut Target<'_>,
     ) -> Result<(), FragmentError> {
+        self.run_with_planes(uniforms, spans, &[], target)
+    }
+
+    /// [`Self::run`] for keys with a shading stage: the same result as
+    /// [`crate::interp::run_with_planes`], bit for bit.
+    pub fn run_with_planes(
+        &self,
+        uniforms: &FragmentUniforms,
+        spans: &[FragmentSpan],
+        planes: &[Planes],
+        target: &mut Target<'_>,
+    ) -> Result<(), FragmentError> {
         check_key(&self.key, target)?;
+        check_planes(&self.key, spans, planes)?;
         for span in spans {
-            self.run_span(uniforms, span, target);
+            let p = planes
+                .get(span.planes as usize)
+                .map_or(std::ptr::null(), |p| p as *const Planes);
+            self.run_span(uniforms, (span, p), target);
         }
         Ok(())
     }
 
-    fn run_span(&self, u: &FragmentUniforms, span: &FragmentSpan, t: &mut Target<'_>) {
+    fn run_span(&self, u: &FragmentUniforms, (span, planes): (&FragmentSpan, *const Planes), t: &mut Target<'_>) {
         let live = owned_mask(span, t.width(), t.height());
         if live == 0 {
             return;
@@ -139,6 +156,9 @@ impl Specialist {
             groups,
             _pad: 0,
             dither: std::array::from_fn(|i| pixel::dither_bias(span.x + i as u32, span.y)),
+            planes,
+            row: row_of(span.y, t.height()),
+            _pad2: 0,
         };
         let bpp = self.key.color_format.bytes_per_pixel();
         let color_at = t.color_offset(span.x, span.y);
@@ -204,7 +224,8 @@ impl Specialist {
     fn call(&self, call: &SpanCall, u: &FragmentUniforms) {
         // SAFETY: `self.func` was compiled from `self.key`, which `run` checked against
         // the target's formats. The generated code reads the span and the uniforms
-        // through these references, and reads and writes `4 * call.groups` pixels
+        // through these references (and the planes, non-null whenever the key has a
+        // shading stage: `check_planes`), and reads and writes `4 * call.groups` pixels
         // from each non-null buffer pointer (and no buffer the key does not use):
         // `run_span` made each pointer from a slice of at least that many pixels.
         unsafe { (self.func)(call, u) }

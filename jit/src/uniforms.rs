@@ -17,6 +17,8 @@ pub struct FragmentUniforms {
     pub stencil_value_mask: u8,
     /// `glStencilMask`: which stencil bits may be written.
     pub stencil_write_mask: u8,
+    /// Fog parameters and colour (f32 bits), read by the shading stage.
+    pub fog: crate::shade::FogUniforms,
 }
 
 impl Default for FragmentUniforms {
@@ -30,6 +32,7 @@ impl Default for FragmentUniforms {
             stencil_ref: 0,
             stencil_value_mask: 0xff,
             stencil_write_mask: 0xff,
+            fog: crate::shade::FogUniforms::default(),
         }
     }
 }

@@ -14,6 +14,7 @@ use softgl_jit::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, DepthTarget,
     FragmentKey, FragmentSpan, FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target, SPAN_MAX,
 };
+use softgl_jit::{FogMode, FogUniforms, Planes, ShadeKey};
 
 const COLOR_FORMATS: [ColorFormat; 4] = [
     ColorFormat::Rgba8,
@@ -108,6 +109,7 @@ fn uniforms() -> impl Strategy<Value = FragmentUniforms> {
                 stencil_ref,
                 stencil_value_mask: vm,
                 stencil_write_mask: wm,
+                fog: FogUniforms::default(),
             },
         )
 }
@@ -251,6 +253,126 @@ proptest! {
     }
 }
 
+/// Shading stages: any combination, flat or not.
+fn shade_key() -> impl Strategy<Value = ShadeKey> {
+    let fog = prop::option::of(select(&[FogMode::Linear, FogMode::Exp, FogMode::Exp2][..]));
+    (any::<[bool; 4]>(), fog).prop_map(|([color, flat, color_sum, depth], fog)| ShadeKey {
+        color,
+        flat,
+        color_sum,
+        fog,
+        depth,
+    })
+}
+
+/// A float for a plane or a fog parameter: from a pool of edge values (zeros,
+/// ties, huge, infinite, NaN) a quarter of the time, else of any magnitude
+/// between 1e-3 and 1e3 with either sign.
+fn float(rng: &mut Rng) -> f32 {
+    const POOL: [f32; 10] = [0.0, -0.0, 0.5, 1.0, -1.0, 1e30, -1e30, f32::INFINITY, f32::NAN, 2.5e-3];
+    if rng.below(4) == 0 {
+        return POOL[rng.below(POOL.len() as u64) as usize];
+    }
+    let mag = 10f32.powf(rng.below(6001) as f32 / 1000.0 - 3.0);
+    if rng.next() & 1 == 0 {
+        mag
+    } else {
+        -mag
+    }
+}
+
+/// Random planes, with colours and depth mostly in range so that most fragments do not saturate.
+fn planes(rng: &mut Rng) -> Planes {
+    let mut p = Planes::default();
+    for k in 0..softgl_jit::shade::PLANES {
+        let scale = if rng.below(3) == 0 { 1.0 } else { 1e-3 };
+        p.a0[k] = if rng.below(2) == 0 {
+            rng.below(1000) as f32 / 999.0
+        } else {
+            float(rng)
+        };
+        p.dadx[k] = float(rng) * scale;
+        p.dady[k] = float(rng) * scale;
+    }
+    p
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    /// Keys with a shading stage: random planes per span, random fog values.
+    #[test]
+    fn shaded_jit_equals_interpreter(
+        key in key(),
+        shade in shade_key(),
+        u in uniforms(),
+        fog in (any::<[bool; 2]>(), 0u32..1000, 0u32..1000, 0u32..1000, any::<[u8; 3]>()),
+        seed in any::<u64>(),
+    ) {
+        let key = FragmentKey { shade: Some(shade), ..key };
+        let mut rng = Rng(softgl_jit::rng::Rng::new((seed ^ (seed >> 32)) as u32));
+        let (same, negative, start, end, density, color) = (fog.0[0], fog.0[1], fog.1, fog.2, fog.3, fog.4);
+        let (start, end) = (start as f32 / 100.0, if same { start as f32 / 100.0 } else { end as f32 / 50.0 });
+        let density = if negative { float(&mut rng).abs() } else { density as f32 / 200.0 };
+        let u = FragmentUniforms {
+            fog: FogUniforms::new(start, end, density, color.map(|c| f32::from(c) / 255.0)),
+            ..u
+        };
+        let mut interp_buf = Buffers::random(&key, &mut rng);
+        let mut spans = spans(&interp_buf, &key, &mut rng);
+        let planes: Vec<Planes> = (0..1 + rng.below(3)).map(|_| planes(&mut rng)).collect();
+        for s in &mut spans {
+            s.planes = rng.below(planes.len() as u64) as u32;
+        }
+        let mut jit_buf = interp_buf.clone();
+        let specialist = Specialist::compile(&key).expect("a valid key compiles");
+        interp::run_with_planes(&key, &u, &spans, &planes, &mut interp_buf.target()).expect("the key names the buffers");
+        specialist.run_with_planes(&u, &spans, &planes, &mut jit_buf.target()).expect("the key names the buffers");
+        prop_assert_eq!(&jit_buf.color, &interp_buf.color, "color differs");
+        prop_assert_eq!(&jit_buf.depth16, &interp_buf.depth16, "depth differs");
+        prop_assert_eq!(&jit_buf.depth32, &interp_buf.depth32, "depth differs");
+        prop_assert_eq!(&jit_buf.stencil, &interp_buf.stencil, "stencil differs");
+    }
+}
+
+#[test]
+fn a_span_without_its_planes_is_an_error() {
+    let key = FragmentKey {
+        shade: Some(ShadeKey {
+            color: true,
+            ..ShadeKey::default()
+        }),
+        ..FragmentKey::new(ColorFormat::Rgba8, None, false)
+    };
+    let mut color = vec![0u8; 16];
+    let mut target = Target::new(4, 1, ColorFormat::Rgba8, &mut color, 16, None, None).unwrap();
+    let mut span = FragmentSpan::new(0, 0);
+    span.set(0, [1, 2, 3, 4], 0);
+    span.planes = 1;
+    let planes = [Planes::default()];
+    assert_eq!(
+        interp::run_with_planes(
+            &key,
+            &FragmentUniforms::default(),
+            std::slice::from_ref(&span),
+            &planes,
+            &mut target
+        ),
+        Err(interp::FragmentError::MissingPlanes)
+    );
+    let s = Specialist::compile(&key).unwrap();
+    assert_eq!(
+        s.run_with_planes(
+            &FragmentUniforms::default(),
+            std::slice::from_ref(&span),
+            &planes,
+            &mut target
+        ),
+        Err(interp::FragmentError::MissingPlanes)
+    );
+    assert_eq!(color, vec![0u8; 16]);
+}
+
 /// The 565 ordered dither in compiled code divides by 255 as `(n + 1 + (n >> 8)) >> 8`;
 /// that identity must hold over every value the packing can form (`c * 63 + 247`).
 #[test]
@@ -258,4 +380,46 @@ fn division_by_255_identity_holds_over_the_packing_range() {
     for n in 0u32..=255 * 63 + 247 {
         assert_eq!((n + 1 + (n >> 8)) >> 8, n / 255, "n = {n}");
     }
+}
+
+/// One fogged fragment by hand: constant planes (1/w = 1), EXP fog of density
+/// ln 2 at coordinate 1 halves the colour towards the fog colour.
+#[test]
+fn a_fogged_fragment_by_hand() {
+    let key = FragmentKey {
+        shade: Some(ShadeKey {
+            color: true,
+            fog: Some(FogMode::Exp),
+            ..ShadeKey::default()
+        }),
+        ..FragmentKey::new(ColorFormat::Rgba8, None, false)
+    };
+    let mut p = Planes::default();
+    for (k, v) in [(0, 1.0), (1, 1.0), (2, 0.0), (3, 0.2), (4, 0.6), (8, 1.0)] {
+        p.constant(k, v);
+    }
+    let u = FragmentUniforms {
+        fog: FogUniforms::new(0.0, 1.0, std::f32::consts::LN_2, [0.0, 1.0, 0.2]),
+        ..FragmentUniforms::default()
+    };
+    let mut span = FragmentSpan::new(0, 0);
+    for i in 0..4 {
+        span.set(i, [9, 9, 9, 9], 0);
+    }
+    let run = |jit: bool| {
+        let mut color = vec![0u8; 16];
+        let mut target = Target::new(4, 1, ColorFormat::Rgba8, &mut color, 16, None, None).unwrap();
+        let spans = std::slice::from_ref(&span);
+        if jit {
+            let s = Specialist::compile(&key).unwrap();
+            s.run_with_planes(&u, spans, &[p], &mut target).unwrap();
+        } else {
+            interp::run_with_planes(&key, &u, spans, &[p], &mut target).unwrap();
+        }
+        color
+    };
+    // f = 2^-(ln2 · log2 e) ≈ 0.5: r = 0.5 → 127.5 → 128 (or 127), g 0.5, b 0.2, alpha 0.6.
+    let interp = run(false);
+    assert_eq!(&interp[..4], &[128, 128, 51, 153]);
+    assert_eq!(run(true), interp);
 }

@@ -9,11 +9,8 @@ use OSMesa::*;
 
 const GL_TRIANGLES: u32 = 4;
 const GL_QUADS: u32 = 7;
-const GL_LIGHTING: u32 = 0x0B50;
-const GL_LIGHT0: u32 = 0x4000;
-const GL_NORMALIZE: u32 = 0x0BA1;
+const GL_AUTO_NORMAL: u32 = 0x0D80;
 const GL_TEXTURE_2D: u32 = 0x0DE1;
-const GL_DIFFUSE: u32 = 0x1201;
 const GL_TEXTURE_WIDTH: u32 = 0x1000;
 const GL_INVALID_ENUM: u32 = 0x500;
 const GL_INVALID_VALUE: u32 = 0x501;
@@ -114,15 +111,11 @@ fn unknown_and_destroyed_handles_are_refused() {
 fn unimplemented_functions_record_invalid_operation() {
     let mut buf = vec![0u8; 8 * 8 * 4];
     let ctx = current(&mut buf, 8, 8);
-    glEnable(GL_LIGHTING);
+    glEnable(GL_TEXTURE_2D);
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
-    assert_eq!(glIsEnabled(GL_LIGHTING), GL_FALSE);
-    glDisable(GL_LIGHTING); // disabling what is off is fine
+    assert_eq!(glIsEnabled(GL_TEXTURE_2D), GL_FALSE);
+    glDisable(GL_TEXTURE_2D); // disabling what is off is fine
     assert_eq!(glGetError(), GL_NO_ERROR);
-    let diffuse = [1.0f32, 0.0, 0.0, 1.0];
-    // Not `unsafe`: the unimplemented entry points read nothing.
-    glLightfv(GL_LIGHT0, GL_DIFFUSE, diffuse.as_ptr());
-    assert_eq!(glGetError(), GL_INVALID_OPERATION);
     glEnable(GL_TEXTURE_2D);
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     glTexImage2D(
@@ -141,9 +134,9 @@ fn unimplemented_functions_record_invalid_operation() {
     // SAFETY: one writable GLint.
     unsafe { glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &mut width) };
     assert_eq!((width, glGetError()), (0, GL_INVALID_OPERATION));
-    // Inert until lighting lands: accepted and reported.
-    glEnable(GL_NORMALIZE);
-    assert_eq!((glGetError(), glIsEnabled(GL_NORMALIZE)), (GL_NO_ERROR, GL_TRUE));
+    // Inert (no evaluators): accepted and reported.
+    glEnable(GL_AUTO_NORMAL);
+    assert_eq!((glGetError(), glIsEnabled(GL_AUTO_NORMAL)), (GL_NO_ERROR, GL_TRUE));
     // Drawing still works after all that.
     glColor3f(0.0, 1.0, 0.0);
     glRectf(0.0, 0.0, 8.0, 8.0);

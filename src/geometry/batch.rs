@@ -3,10 +3,12 @@
 //! batch of memory and the transform runs as a tight loop.
 //!
 //! [`VertexBatch::transform`] is the one place a vertex's varyings are filled,
-//! as the draw's [`VertexStage`] says: colours copied (and clamped), the fog
+//! as the draw's [`VertexStage`] says: colours copied (and clamped) or lit
+//! (front and back, primary and secondary, [`super::lighting`]), the fog
 //! coordinate taken from the eye-space depth or from `glFogCoord`.
 
 use super::clip::ClipVertex;
+use super::lighting::{LightInput, LightSetup};
 use super::varying::{VaryingLayout, MAX_VARYINGS};
 use super::InVertex;
 use glam::{Mat4, Vec4};
@@ -34,6 +36,9 @@ pub struct VertexStage {
     pub layout: VaryingLayout,
     /// The fog coordinate's source, when `layout.fog`.
     pub fog: FogSource,
+    /// With `GL_LIGHTING`: the colours are lit, not copied. `None` when
+    /// lighting is off (no normal is then transformed, nothing computed).
+    pub lighting: Option<LightSetup>,
 }
 
 impl VertexStage {
@@ -43,6 +48,7 @@ impl VertexStage {
             mvp,
             layout,
             fog: FogSource::FogCoord,
+            lighting: None,
         }
     }
 
@@ -52,15 +58,37 @@ impl VertexStage {
             pos: (self.mvp * v.pos).as_dvec4(),
             v: [0.0; MAX_VARYINGS],
         };
-        if let Some(o) = self.layout.color() {
-            out.v[o..o + 4].copy_from_slice(&clamp_color(v.color));
-        }
-        if let Some(o) = self.layout.secondary() {
-            out.v[o..o + 4].copy_from_slice(&clamp_color(v.secondary));
+        if let Some(light) = &self.lighting {
+            let lit = light.light_vertex(&LightInput {
+                pos: v.pos,
+                normal: v.normal,
+                color: v.color,
+            });
+            let l = &self.layout;
+            for (slot, c) in [
+                (l.color(), lit.front),
+                (l.back_color(), lit.back),
+                (l.secondary(), lit.front_secondary),
+                (l.back_secondary(), lit.back_secondary),
+            ] {
+                if let Some(o) = slot {
+                    out.v[o..o + 4].copy_from_slice(&c);
+                }
+            }
+        } else {
+            if let Some(o) = self.layout.color() {
+                out.v[o..o + 4].copy_from_slice(&clamp_color(v.color));
+            }
+            if let Some(o) = self.layout.secondary() {
+                out.v[o..o + 4].copy_from_slice(&clamp_color(v.secondary));
+            }
         }
         if let Some(o) = self.layout.fog() {
             out.v[o] = match self.fog {
-                FogSource::EyeDepth { row } => eye_dot(row, v.pos).abs(),
+                FogSource::EyeDepth { row } => match self.lighting.and_then(|l| l.eye_position(v.pos)) {
+                    Some(eye) => eye[2].abs(),
+                    None => eye_dot(row, v.pos).abs(),
+                },
                 FogSource::FogCoord => v.fog_coord.abs(),
             };
         }

@@ -15,7 +15,8 @@ pub use triangle::{offset, triangle};
 
 use crate::framebuffer::Rect;
 use crate::geometry::varying::{VaryingLayout, Varyings};
-use softgl_jit::{shade, DepthFormat, FogMode, FogUniforms, FragmentSpan};
+use softgl_jit::shade::{slot, Planes};
+use softgl_jit::{DepthFormat, FragmentSpan};
 
 /// Sub-pixel bits of the fixed-point grid.
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -39,9 +40,11 @@ pub struct RasterVertex {
     pub v: Varyings,
 }
 
-/// Receives the spans a primitive covers.
+/// Receives the spans a primitive covers, after its planes.
 pub trait SpanSink {
     fn span(&mut self, span: &FragmentSpan);
+    /// The planes of the spans that follow (until the next call).
+    fn planes(&mut self, _planes: &Planes) {}
 }
 
 impl<F: FnMut(&FragmentSpan)> SpanSink for F {
@@ -63,8 +66,6 @@ pub struct RasterParams {
     /// The varyings the vertices carry; the colour is interpolated only
     /// when `layout.color` (some stage reads the fragment colour).
     pub layout: VaryingLayout,
-    /// Fog mode and values, when `layout.fog`.
-    pub fog: Option<(FogMode, FogUniforms)>,
     /// Polygon offset `(factor, units)` for this primitive, if enabled.
     pub offset: Option<(f32, f32)>,
 }
@@ -90,26 +91,26 @@ pub fn color_to_unorm8(c: f32) -> u8 {
     crate::framebuffer::float_to_unorm(c, 255) as u8
 }
 
-/// The unorm8 colour of a fragment whose primary colour, secondary colour
-/// (with the colour sum) and fog coordinate (with fog) are these.
-#[inline]
-pub fn shade_unorm8(
-    primary: [f32; 4],
-    secondary: Option<[f32; 3]>,
-    fog: Option<(f32, &(FogMode, FogUniforms))>,
-) -> [u8; 4] {
-    shade::shade(primary, secondary, fog.map(|(c, (m, u))| (*m, c, u))).map(color_to_unorm8)
-}
-
-/// The unorm8 colour of a fragment taking every varying from `v` (points,
-/// flat-shaded fragments): its colour, secondary colour and fog coordinate
-/// as `params.layout` places them.
-pub fn shade_varyings(v: &Varyings, params: &RasterParams) -> [u8; 4] {
+/// The planes of a point (or anything else constant): each varying of `v`
+/// and depth `z` as a constant, 1/w as 1, so that the fragment stage's
+/// perspective division leaves the values exact.
+pub fn constant_planes(v: &Varyings, z: f32, params: &RasterParams) -> Planes {
+    let mut p = Planes::default();
+    p.constant(slot::INV_W, 1.0);
     let l = params.layout;
-    let Some(o) = l.color() else { return [0; 4] };
-    let secondary = l.secondary().map(|s| [v[s], v[s + 1], v[s + 2]]);
-    let fog = l.fog().zip(params.fog.as_ref()).map(|(f, p)| (v[f], p));
-    shade_unorm8([v[o], v[o + 1], v[o + 2], v[o + 3]], secondary, fog)
+    for (at, to, n) in [
+        (l.color(), slot::COLOR, 4),
+        (l.secondary(), slot::SECONDARY, 3),
+        (l.fog(), slot::FOG, 1),
+    ] {
+        if let Some(o) = at {
+            for c in 0..n {
+                p.constant(to + c, v[o + c]);
+            }
+        }
+    }
+    p.constant(slot::Z, z);
+    p
 }
 
 /// Converts window depth to buffer units (clamped to `[0, 1]`).

@@ -1,6 +1,6 @@
 //! Points: squares of an integer size around the snapped position.
 
-use super::{depth_value, emit_row, floor_div, shade_varyings, snap, RasterParams, RasterVertex, SpanSink, ONE};
+use super::{constant_planes, depth_value, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
 use softgl_jit::FragmentSpan;
 
 /// The integer size llvmpipe rasterizes for `size`: the size on the 1/256
@@ -32,16 +32,11 @@ pub fn point(v: &RasterVertex, size: f32, params: &RasterParams, sink: &mut dyn 
     if x0 > x1 || y0 > y1 {
         return;
     }
-    let rgba = shade_varyings(&v.v, params);
+    sink.planes(&constant_planes(&v.v, v.z as f32, params));
+    // 32-bit depth is the span's (computed in f64, as for triangles).
     let z = depth_value(v.z, params.depth);
     let mut span = FragmentSpan::new(0, 0);
     for y in y0..=y1 {
-        emit_row(sink, &mut span, y as u32, x0 as u32, x1 as u32, |_, s, i| {
-            s.r[i] = rgba[0];
-            s.g[i] = rgba[1];
-            s.b[i] = rgba[2];
-            s.a[i] = rgba[3];
-            s.z[i] = z;
-        });
+        emit_row(sink, &mut span, y as u32, x0 as u32, x1 as u32, |_, s, i| s.z[i] = z);
     }
 }

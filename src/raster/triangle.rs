@@ -1,34 +1,19 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 
-use super::{
-    ceil_div, color_to_unorm8, emit_row, floor_div, shade_unorm8, shade_varyings, snap, RasterParams, RasterVertex,
-    SpanSink, ONE,
-};
-use crate::geometry::varying::{VaryingLayout, Varyings};
-use softgl_jit::{DepthFormat, FogMode, FogUniforms, FragmentSpan};
-
-/// `a * b + c` rounded once, as an FMA instruction gives it: the f32 product
-/// is exact in f64, and the f64 sum rounds to f32 (a second rounding that can
-/// differ from a true FMA only on rare ties), without needing FMA hardware.
-#[inline]
-fn fma32(a: f32, b: f32, c: f32) -> f32 {
-    (f64::from(a) * f64::from(b) + f64::from(c)) as f32
-}
+use super::{ceil_div, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
+use crate::geometry::varying::Varyings;
+use softgl_jit::interp::row_of;
+use softgl_jit::shade::{slot, Planes};
+use softgl_jit::{DepthFormat, FragmentSpan};
 
 /// An attribute plane in llvmpipe's frame: x right, y down from the top row,
-/// evaluated at integer pixel coordinates for the pixel centers.
+/// evaluated at integer pixel coordinates for the pixel centers (by the
+/// fragment stage: `Planes::at`).
 #[derive(Clone, Copy, Debug)]
 struct Plane {
     a0: f32,
     dadx: f32,
     dady: f32,
-}
-
-impl Plane {
-    #[inline]
-    fn at(&self, px: f32, row: f32) -> f32 {
-        fma32(self.dady, row, fma32(self.dadx, px, self.a0))
-    }
 }
 
 /// Triangle setup in f32 from the unsnapped window positions, step for step
@@ -109,7 +94,8 @@ pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterP
         return;
     }
 
-    let shade = Shading::new(v, flat, params);
+    let (planes, per_fragment_z) = setup_planes(v, flat, params);
+    sink.planes(&planes);
     let mut span = FragmentSpan::new(0, 0);
     for py in py0..=py1 {
         let sy = py * ONE;
@@ -133,121 +119,73 @@ pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterP
             continue;
         }
         emit_row(sink, &mut span, py as u32, lo as u32, hi as u32, |x, s, i| {
-            shade.shade(x, py as u32, s, i)
-        });
-    }
-}
-
-/// Per-fragment attribute evaluation for one triangle.
-struct Shading {
-    /// Planes of r/w, g/w, b/w, a/w and 1/w.
-    color: Option<([Plane; 4], Plane)>,
-    /// The colour of every fragment, when nothing varies (flat shading, no fog).
-    flat: Option<[u8; 4]>,
-    /// The provoking vertex's varyings, for flat shading with fog.
-    flat_v: Option<Varyings>,
-    /// Planes of the secondary colour's r/w, g/w, b/w (colour sum).
-    secondary: Option<[Plane; 3]>,
-    /// Plane of the fog coordinate over w, with the fog mode and values.
-    fog: Option<(Plane, (FogMode, FogUniforms))>,
-    /// 1/w, when a varying is interpolated.
-    inv_w: Plane,
-    layout: VaryingLayout,
-    depth: Option<(Plane, DepthFormat)>,
-    /// Framebuffer height, to turn window rows into llvmpipe's top-down rows.
-    height: u32,
-}
-
-impl Shading {
-    fn new(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) -> Shading {
-        // llvmpipe orders the vertices by the sign of the snapped area in its
-        // y-down frame, and swaps the first two when it is negative.
-        let mut v = v;
-        let q = v.map(|v| (snap(v.x), snap(v.y_down)));
-        let area = (q[0].0 - q[1].0) * (q[2].1 - q[0].1) - (q[2].0 - q[0].0) * (q[0].1 - q[1].1);
-        if area < 0 {
-            v.swap(0, 1);
-        }
-        let setup = Setup::new(v.map(|v| (v.x, v.y_down)));
-        let layout = params.layout;
-        let over_w = |k: usize| setup.plane(v.map(|v| v.v[k] * v.inv_w));
-        let inv_w = setup.plane(v.map(|v| v.inv_w));
-        let color = layout
-            .color()
-            .filter(|_| flat.is_none())
-            .map(|o| ([0, 1, 2, 3].map(|c| over_w(o + c)), inv_w));
-        let secondary = layout
-            .secondary()
-            .filter(|_| flat.is_none())
-            .map(|o| [0, 1, 2].map(|c| over_w(o + c)));
-        let fog = layout
-            .color()
-            .and(layout.fog())
-            .zip(params.fog)
-            .map(|(o, f)| (over_w(o), f));
-        let depth = params.depth.map(|f| {
-            let mut z = v.map(|v| v.z as f32);
-            if let Some((factor, units)) = params.offset {
-                let slope = setup.plane(z);
-                let o = offset(factor, units, slope.dadx, slope.dady, f);
-                z = z.map(|z| (z + o).clamp(0.0, 1.0));
+            if let Some(format) = per_fragment_z {
+                let z = planes.at(slot::Z, x as f32, row_of(py as u32, params.height));
+                s.z[i] = crate::framebuffer::depth_to_unorm(f64::from(z), format);
             }
-            (setup.plane(z), f)
         });
-        let flat_params = RasterParams { fog: None, ..*params };
-        Shading {
-            color,
-            flat: flat
-                .filter(|_| fog.is_none() && layout.color)
-                .map(|f| shade_varyings(f, &flat_params)),
-            flat_v: flat.filter(|_| fog.is_some()).copied(),
-            secondary,
-            fog,
-            inv_w,
-            layout,
-            depth,
-            height: params.height,
-        }
     }
+}
 
-    #[inline]
-    fn shade(&self, x: u32, y: u32, span: &mut FragmentSpan, i: usize) {
-        let (px, row) = (x as f32, self.height.saturating_sub(y + 1) as f32);
-        let rgba = if let Some(c) = self.flat {
-            Some(c)
-        } else if self.fog.is_none() && self.secondary.is_none() {
-            self.color.as_ref().map(|(planes, iw)| {
-                let w = 1.0 / iw.at(px, row);
-                planes.map(|p| color_to_unorm8(p.at(px, row) * w))
-            })
-        } else {
-            self.shade_stages(px, row)
-        };
-        if let Some(c) = rgba {
-            span.r[i] = c[0];
-            span.g[i] = c[1];
-            span.b[i] = c[2];
-            span.a[i] = c[3];
-        }
-        if let Some((plane, f)) = &self.depth {
-            span.z[i] = crate::framebuffer::depth_to_unorm(f64::from(plane.at(px, row)), *f);
+/// The planes of a triangle's attributes for the fragment stage, set up in
+/// llvmpipe's order: colours (the flat ones constant), the secondary colour
+/// and the fog coordinate over w, 1/w, depth (with polygon offset). Also the
+/// depth format whose values the rasterizer computes per fragment itself
+/// (32-bit depth, which the shading stage leaves to the span).
+fn setup_planes(
+    v: [&RasterVertex; 3],
+    flat: Option<&Varyings>,
+    params: &RasterParams,
+) -> (Planes, Option<DepthFormat>) {
+    // llvmpipe orders the vertices by the sign of the snapped area in its
+    // y-down frame, and swaps the first two when it is negative.
+    let mut v = v;
+    let q = v.map(|v| (snap(v.x), snap(v.y_down)));
+    let area = (q[0].0 - q[1].0) * (q[2].1 - q[0].1) - (q[2].0 - q[0].0) * (q[0].1 - q[1].1);
+    if area < 0 {
+        v.swap(0, 1);
+    }
+    let setup = Setup::new(v.map(|v| (v.x, v.y_down)));
+    let mut planes = Planes::default();
+    let mut put = |k: usize, p: Plane| (planes.a0[k], planes.dadx[k], planes.dady[k]) = (p.a0, p.dadx, p.dady);
+    let layout = params.layout;
+    let over_w = |k: usize| setup.plane(v.map(|v| v.v[k] * v.inv_w));
+    put(slot::INV_W, setup.plane(v.map(|v| v.inv_w)));
+    let colours = [
+        (layout.color(), slot::COLOR, 4),
+        (layout.secondary(), slot::SECONDARY, 3),
+    ];
+    for (at, to, n) in colours {
+        let Some(o) = at else { continue };
+        for c in 0..n {
+            let p = match flat {
+                Some(f) => Plane {
+                    a0: f[o + c],
+                    dadx: 0.0,
+                    dady: 0.0,
+                },
+                None => over_w(o + c),
+            };
+            put(to + c, p);
         }
     }
-
-    /// The colour through the colour sum and fog.
-    fn shade_stages(&self, px: f32, row: f32) -> Option<[u8; 4]> {
-        let w = 1.0 / self.inv_w.at(px, row);
-        let fog = self.fog.as_ref().map(|(p, f)| (p.at(px, row) * w, f));
-        if let Some(f) = &self.flat_v {
-            let o = self.layout.color()?;
-            let secondary = self.layout.secondary().map(|s| [f[s], f[s + 1], f[s + 2]]);
-            return Some(shade_unorm8([f[o], f[o + 1], f[o + 2], f[o + 3]], secondary, fog));
-        }
-        let (planes, _) = self.color.as_ref()?;
-        let primary = planes.map(|p| p.at(px, row) * w);
-        let secondary = self.secondary.map(|s| s.map(|p| p.at(px, row) * w));
-        Some(shade_unorm8(primary, secondary, fog))
+    if let Some(o) = layout.fog() {
+        put(slot::FOG, over_w(o));
     }
+    let mut per_fragment_z = None;
+    if let Some(f) = params.depth {
+        let mut z = v.map(|v| v.z as f32);
+        if let Some((factor, units)) = params.offset {
+            let slope = setup.plane(z);
+            let o = offset(factor, units, slope.dadx, slope.dady, f);
+            z = z.map(|z| (z + o).clamp(0.0, 1.0));
+        }
+        put(slot::Z, setup.plane(z));
+        if f == DepthFormat::D32 {
+            per_fragment_z = Some(f);
+        }
+    }
+    (planes, per_fragment_z)
 }
 
 /// Polygon offset in window depth, as llvmpipe computes it in f32:

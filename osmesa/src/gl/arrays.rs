@@ -1,7 +1,7 @@
 //! Client vertex arrays: the pointers, `glDrawArrays`, `glDrawElements`,
 //! `glArrayElement`. The caller's arrays are read into f32 arrays for softgl
-//! at each draw; normals and texture coordinates are accepted and, without
-//! lighting and texturing, have no effect on the image; edge flags
+//! at each draw (positions, colours, normals); texture coordinates are
+//! accepted and, without texturing, have no effect on the image; edge flags
 //! (`glEdgeFlagPointer`) pick the edges polygon mode `GL_LINE`/`GL_POINT` draws.
 
 use super::enums::decode;
@@ -95,6 +95,7 @@ struct Fetched {
     color: Option<(usize, Vec<f32>)>,
     /// The edge flags, 0 or not (`glEdgeFlagPointer`).
     edge_flag: Option<Vec<f32>>,
+    normal: Option<Vec<f32>>,
     secondary: Option<Vec<f32>>,
     fog_coord: Option<Vec<f32>>,
 }
@@ -107,9 +108,11 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
     }
     let color = (os.color.enabled && !os.color.ptr.is_null()).then_some(&os.color);
     let edge_flag = (os.edge_flag.enabled && !os.edge_flag.ptr.is_null()).then_some(&os.edge_flag);
+    let normal = (os.normal.enabled && !os.normal.ptr.is_null()).then_some(&os.normal);
     let secondary = (os.secondary.enabled && !os.secondary.ptr.is_null()).then_some(&os.secondary);
     let fog_coord = (os.fog_coord.enabled && !os.fog_coord.ptr.is_null()).then_some(&os.fog_coord);
-    let (mut pos, mut col, mut sec, mut fog, mut edges) = (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut pos, mut col, mut nrm) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut sec, mut fog, mut edges) = (Vec::new(), Vec::new(), Vec::new());
     let mut count = 0;
     for i in indices {
         // SAFETY: the enabled arrays hold every element the draw names (GL's contract).
@@ -120,6 +123,9 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
             }
             if let Some(e) = edge_flag {
                 fetch(e, i, false, &mut edges);
+            }
+            if let Some(n) = normal {
+                fetch(n, i, true, &mut nrm);
             }
             if let Some(c) = secondary {
                 fetch(c, i, true, &mut sec);
@@ -137,6 +143,7 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         pos,
         color: color.map(|c| (c.size as usize, col)),
         edge_flag: edge_flag.map(|_| edges),
+        normal: normal.map(|_| nrm),
         secondary: secondary.map(|_| sec),
         fog_coord: fog_coord.map(|_| fog),
     }))
@@ -167,6 +174,7 @@ fn draw(
             position: AttribArray::new(f.pos_size, &f.pos),
             color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
             edge_flag: f.edge_flag.as_ref().map(|e| AttribArray::new(1, e)),
+            normal: f.normal.as_ref().map(|n| AttribArray::new(3, n)),
             secondary: f.secondary.as_ref().map(|c| AttribArray::new(3, c)),
             fog_coord: f.fog_coord.as_ref().map(|c| AttribArray::new(1, c)),
         };

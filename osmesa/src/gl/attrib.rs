@@ -6,6 +6,7 @@
 use super::{now, rec};
 use crate::consts::*;
 use crate::gl_state::{GlState, SavedAttrib, SavedClient};
+use softgl::lighting::LightingState;
 use softgl::{Capability, Context, Face, GlError, GlResult};
 
 /// `GL_MAX_ATTRIB_STACK_DEPTH` and `GL_MAX_CLIENT_ATTRIB_STACK_DEPTH` (Mesa's 16).
@@ -29,9 +30,6 @@ const SCISSOR_BIT: u32 = 0x80000;
 const CLIENT_PIXEL_STORE_BIT: u32 = 0x1;
 const CLIENT_VERTEX_ARRAY_BIT: u32 = 0x2;
 
-const NORMALIZE: GLenum = 0x0BA1;
-const RESCALE_NORMAL: GLenum = 0x803A;
-const COLOR_MATERIAL: GLenum = 0x0B57;
 const AUTO_NORMAL: GLenum = 0x0D80;
 
 fn set_cap(gl: &mut Context, cap: Capability, on: bool) -> GlResult {
@@ -46,6 +44,36 @@ fn set_cap(gl: &mut Context, cap: Capability, on: bool) -> GlResult {
 fn restore_inert(os: &mut GlState, saved: &[GLenum], which: &[GLenum]) {
     os.inert_caps.retain(|c| !which.contains(c));
     os.inert_caps.extend(saved.iter().filter(|c| which.contains(c)));
+}
+
+/// Restores the lighting and clip plane state of the groups in `m`:
+/// `GL_LIGHTING_BIT` (lights, model, materials, colour material),
+/// `GL_TRANSFORM_BIT` (clip planes and their enables, normalize, rescale)
+/// and `GL_ENABLE_BIT` (every enable among them).
+fn restore_lighting(gl: &mut Context, m: u32, saved: &LightingState) -> GlResult {
+    if m & (LIGHTING_BIT | TRANSFORM_BIT | ENABLE_BIT) == 0 {
+        return Ok(());
+    }
+    let mut l = gl.state().lighting.clone();
+    if m & LIGHTING_BIT != 0 {
+        let clip = (l.clip_planes, l.clip_enabled, l.normalize, l.rescale_normal);
+        l = saved.clone();
+        (l.clip_planes, l.clip_enabled, l.normalize, l.rescale_normal) = clip;
+    }
+    if m & TRANSFORM_BIT != 0 {
+        (l.clip_planes, l.clip_enabled) = (saved.clip_planes, saved.clip_enabled);
+        (l.normalize, l.rescale_normal) = (saved.normalize, saved.rescale_normal);
+    }
+    if m & ENABLE_BIT != 0 {
+        l.enabled = saved.enabled;
+        for (light, was) in l.lights.iter_mut().zip(&saved.lights) {
+            light.enabled = was.enabled;
+        }
+        (l.color_material, l.normalize, l.rescale_normal) =
+            (saved.color_material, saved.normalize, saved.rescale_normal);
+        l.clip_enabled = saved.clip_enabled;
+    }
+    gl.restore_lighting(l)
 }
 
 /// Restores the groups of `s.mask`.
@@ -82,8 +110,8 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
     }
     if m & LIGHTING_BIT != 0 {
         gl.shade_model(st.shade_model)?;
-        restore_inert(os, &s.inert_caps, &[COLOR_MATERIAL]);
     }
+    restore_lighting(gl, m, &st.lighting)?;
     if m & (FOG_BIT | ENABLE_BIT) != 0 {
         set_cap(gl, Capability::Fog, st.fog.enabled)?;
         set_cap(gl, Capability::ColorSum, st.color_sum)?;
@@ -115,7 +143,6 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
     }
     if m & TRANSFORM_BIT != 0 {
         gl.matrix_mode(s.matrix_mode)?;
-        restore_inert(os, &s.inert_caps, &[NORMALIZE, RESCALE_NORMAL]);
     }
     if m & (COLOR_BIT | ENABLE_BIT) != 0 {
         set_cap(gl, Capability::AlphaTest, st.alpha_test)?;
@@ -144,11 +171,7 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         gl.scissor(b.x, b.y, b.width, b.height)?;
     }
     if m & ENABLE_BIT != 0 {
-        restore_inert(
-            os,
-            &s.inert_caps,
-            &[NORMALIZE, RESCALE_NORMAL, COLOR_MATERIAL, AUTO_NORMAL],
-        );
+        restore_inert(os, &s.inert_caps, &[AUTO_NORMAL]);
     }
     if m & EVAL_BIT != 0 {
         restore_inert(os, &s.inert_caps, &[AUTO_NORMAL]);

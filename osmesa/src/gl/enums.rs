@@ -14,7 +14,7 @@ pub fn decode<T: GlEnum>(v: GLenum) -> GlResult<T> {
 pub enum Cap {
     /// A capability softgl implements.
     Core(Capability),
-    /// Accepted and stored; without effect until lighting lands.
+    /// Accepted and stored; without effect (`GL_AUTO_NORMAL`).
     Inert(GLenum),
     /// A valid GL 1.x capability softgl does not implement yet.
     Missing,
@@ -25,14 +25,12 @@ pub fn cap(v: GLenum) -> GlResult<Cap> {
         return Ok(Cap::Core(c));
     }
     match v {
-        // NORMALIZE, RESCALE_NORMAL, COLOR_MATERIAL, AUTO_NORMAL
-        0x0BA1 | 0x803A | 0x0B57 | 0x0D80 => Ok(Cap::Inert(v)),
-        // LIGHTING, LIGHT0..7, TEXTURE_1D/2D/3D, LINE/POLYGON_STIPPLE,
-        // POINT/LINE/POLYGON_SMOOTH, CLIP_PLANE0..5, TEXTURE_GEN_S..Q,
+        // AUTO_NORMAL (evaluators are not in softgl)
+        0x0D80 => Ok(Cap::Inert(v)),
+        // TEXTURE_1D/2D/3D, FOG, LINE/POLYGON_STIPPLE,
+        // POINT/LINE/POLYGON_SMOOTH, TEXTURE_GEN_S..Q,
         // MAP1_*, MAP2_*, INDEX_LOGIC_OP
-        0x0B50
-        | 0x4000..=0x4007
-        | 0x0DE0
+        0x0DE0
         | 0x0DE1
         | 0x806F
         | 0x0B24
@@ -40,7 +38,6 @@ pub fn cap(v: GLenum) -> GlResult<Cap> {
         | 0x0B10
         | 0x0B20
         | 0x0B41
-        | 0x3000..=0x3005
         | 0x0C60..=0x0C63
         | 0x0D90..=0x0D98
         | 0x0DB0..=0x0DB8

@@ -219,6 +219,14 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x8005 => Val::N(s.blend_color.iter().map(|&c| f64::from(c)).collect()), // BLEND_COLOR
         0x0BF0 => e(s.logic_op.to_gl()),                                         // LOGIC_OP_MODE
         0x0C23 => Val::B(vec![cm.r, cm.g, cm.b, cm.a]),                          // COLOR_WRITEMASK
+        0x0D31 => i(softgl::lighting::MAX_LIGHTS as i64),                        // MAX_LIGHTS
+        0x0D32 => i(softgl::lighting::MAX_CLIP_PLANES as i64),                   // MAX_CLIP_PLANES
+        0x0B53 => Val::N(s.lighting.model_ambient.iter().map(|&c| f64::from(c)).collect()), // LIGHT_MODEL_AMBIENT
+        0x0B51 => Val::B(vec![s.lighting.local_viewer]),                         // LIGHT_MODEL_LOCAL_VIEWER
+        0x0B52 => Val::B(vec![s.lighting.two_side]),                             // LIGHT_MODEL_TWO_SIDE
+        0x81F8 => e(s.lighting.color_control.to_gl()),                           // LIGHT_MODEL_COLOR_CONTROL
+        0x0B55 => e(s.lighting.color_material_face.to_gl()),                     // COLOR_MATERIAL_FACE
+        0x0B56 => e(s.lighting.color_material_mode.to_gl()),                     // COLOR_MATERIAL_PARAMETER
         GL_VERTEX_ARRAY => Val::B(vec![os.vertex.enabled]),
         GL_COLOR_ARRAY => Val::B(vec![os.color.enabled]),
         GL_NORMAL_ARRAY => Val::B(vec![os.normal.enabled]),

@@ -39,38 +39,6 @@ exports! {
     [] fn glGenTextures(_n: i32, _textures: *mut u32) {
         missing_now()
     }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLightf(_light: GLenum, _pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLightfv(_light: GLenum, _pname: GLenum, _params: *const f32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLightModelf(_pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLightModelfv(_pname: GLenum, _params: *const f32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMaterialf(_face: GLenum, _pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMaterialfv(_face: GLenum, _pname: GLenum, _params: *const f32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetLightfv(_light: GLenum, _pname: GLenum, _params: *mut f32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetMaterialfv(_face: GLenum, _pname: GLenum, _params: *mut f32) {
-        missing()
-    }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glTexParameterf(_target: GLenum, _pname: GLenum, _param: f32) {
         missing()
@@ -109,38 +77,6 @@ exports! {
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glPixelTransferf(_pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLighti(_light: GLenum, _pname: GLenum, _param: i32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLightiv(_light: GLenum, _pname: GLenum, _params: *const i32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLightModeli(_pname: GLenum, _param: i32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLightModeliv(_pname: GLenum, _params: *const i32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMateriali(_face: GLenum, _pname: GLenum, _param: i32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMaterialiv(_face: GLenum, _pname: GLenum, _params: *const i32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetLightiv(_light: GLenum, _pname: GLenum, _params: *mut i32) {
-        missing()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetMaterialiv(_face: GLenum, _pname: GLenum, _params: *mut i32) {
         missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
@@ -194,10 +130,6 @@ exports! {
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetTexGendv(_coord: GLenum, _pname: GLenum, _params: *mut f64) {
         missing_now()
-    }
-    /// Lighting (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glColorMaterial(_face: GLenum, _mode: GLenum) {
-        missing()
     }
     /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glTexImage1D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
@@ -272,14 +204,6 @@ exports! {
     /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetPolygonStipple(_mask: *mut u8) {
         missing_now()
-    }
-    /// Clip planes (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glClipPlane(_plane: GLenum, _equation: *const f64) {
-        missing()
-    }
-    /// Clip planes (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetClipPlane(_plane: GLenum, _equation: *mut f64) {
-        missing()
     }
     /// Accumulation buffer (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glAccum(_op: GLenum, _value: f32) {

@@ -28,6 +28,7 @@ mod extra_attribs;
 mod fog;
 pub(crate) mod get;
 mod immediate;
+mod lighting;
 mod lists;
 mod missing;
 mod pixels;
@@ -39,6 +40,7 @@ pub use extra_attribs::*;
 pub use fog::*;
 pub use get::*;
 pub use immediate::*;
+pub use lighting::*;
 pub use lists::*;
 pub use missing::*;
 pub use pixels::*;
@@ -54,6 +56,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         fog::color_table,
         get::table,
         immediate::table,
+        lighting::table,
         lists::table,
         missing::table,
         pixels::table,

@@ -1,0 +1,181 @@
+//! The shading stage in generated code: attribute planes evaluated for four
+//! fragments at once in `f32x4`, then the colour sum, fog and the conversion
+//! to unorm8, each step the same f32 operation as `crate::shade` (fused
+//! multiply-adds exactly where it has them), so the bits equal the
+//! interpreter's.
+
+use super::{mem, Gen, Group, SpanCall, SpanValues, I32X4};
+use crate::key::ShadeKey;
+use crate::shade::{exp2_coeffs, slot, FogMode, FogUniforms, Planes};
+use crate::uniforms::FragmentUniforms;
+use cranelift_codegen::ir::condcodes::FloatCC;
+use cranelift_codegen::ir::{types, InstBuilder, MemFlagsData, Value};
+use std::mem::offset_of;
+
+const F32X4: cranelift_codegen::ir::Type = types::F32X4;
+
+impl Gen<'_> {
+    /// Sets the group's colour (as bytes) and depth from its primitive's planes.
+    pub(super) fn shade(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+        let planes = self
+            .b
+            .ins()
+            .load(self.ptr, mem(), sv.call, offset_of!(SpanCall, planes) as i32);
+        let row = self
+            .b
+            .ins()
+            .load(types::F32, mem(), sv.call, offset_of!(SpanCall, row) as i32);
+        let row = self.b.ins().splat(F32X4, row);
+        // Pixel x of each lane: span.x + lane0 + 0..4, as f32.
+        let x = self.b.ins().iadd(sv.x0, g.lane0);
+        let x = self.b.ins().splat(I32X4, x);
+        let idx = self.vconst([0, 1, 2, 3]);
+        let x = self.b.ins().iadd(x, idx);
+        let px = self.b.ins().fcvt_from_uint(F32X4, x);
+        let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
+
+        if key.depth {
+            if let Some(format) = self.key.depth_format {
+                let z = at(self, slot::Z);
+                g.z = Some(self.unorm_lanes(z, format.max_value()));
+            }
+        }
+        if !key.color {
+            return;
+        }
+        let w = if !key.flat || key.fog.is_some() {
+            let iw = at(self, slot::INV_W);
+            let one = self.fconst(1.0);
+            Some(self.b.ins().fdiv(one, iw))
+        } else {
+            None
+        };
+        let colour = |s: &mut Self, k: usize| {
+            let v = at(s, k);
+            match (key.flat, w) {
+                (false, Some(w)) => s.b.ins().fmul(v, w),
+                _ => v,
+            }
+        };
+        let mut c = [0, 1, 2, 3].map(|k| colour(self, slot::COLOR + k));
+        if key.color_sum {
+            for (k, ck) in c.iter_mut().take(3).enumerate() {
+                let s = colour(self, slot::SECONDARY + k);
+                *ck = self.b.ins().fadd(*ck, s);
+            }
+        }
+        if let (Some(mode), Some(w)) = (key.fog, w) {
+            let coord = at(self, slot::FOG);
+            let coord = self.b.ins().fmul(coord, w);
+            let f = self.fog_factor(mode, coord, sv.u);
+            let one = self.fconst(1.0);
+            let inv = self.b.ins().fsub(one, f);
+            for (k, ck) in c.iter_mut().take(3).enumerate() {
+                let off = offset_of!(FragmentUniforms, fog) + offset_of!(FogUniforms, color) + 4 * k;
+                let fog = self.uniform_f32(sv.u, off);
+                let a = self.b.ins().fmul(fog, inv);
+                let b = self.b.ins().fmul(*ck, f);
+                *ck = self.b.ins().fadd(a, b);
+            }
+        }
+        g.rgba = c.map(|v| self.unorm_lanes(v, 255));
+    }
+
+    /// Plane `k` at the lanes' pixels: `fma(dady, row, fma(dadx, px, a0))`.
+    fn plane(&mut self, planes: Value, k: usize, px: Value, row: Value) -> Value {
+        let load = |s: &mut Self, field: usize| {
+            let v = s.b.ins().load(types::F32, mem(), planes, (field + 4 * k) as i32);
+            s.b.ins().splat(F32X4, v)
+        };
+        let a0 = load(self, offset_of!(Planes, a0));
+        let dadx = load(self, offset_of!(Planes, dadx));
+        let dady = load(self, offset_of!(Planes, dady));
+        let inner = self.b.ins().fma(dadx, px, a0);
+        self.b.ins().fma(dady, row, inner)
+    }
+
+    fn fconst(&mut self, v: f32) -> Value {
+        let c = self.b.ins().f32const(v);
+        self.b.ins().splat(F32X4, c)
+    }
+
+    fn uniform_f32(&mut self, u: Value, off: usize) -> Value {
+        let v = self.b.ins().load(types::F32, mem(), u, off as i32);
+        self.b.ins().splat(F32X4, v)
+    }
+
+    /// `clamp(v, 0, 1)`, NaN as 0 (`crate::shade::saturate`).
+    fn saturate(&mut self, v: Value) -> Value {
+        let ordered = self.b.ins().fcmp(FloatCC::Ordered, v, v);
+        let zero = self.fconst(0.0);
+        let one = self.fconst(1.0);
+        let lo = self.b.ins().fmax(v, zero);
+        let c = self.b.ins().fmin(lo, one);
+        let bits = self.b.ins().bitcast(I32X4, MemFlagsData::new(), c);
+        let bits = self.b.ins().band(bits, ordered);
+        self.b.ins().bitcast(F32X4, MemFlagsData::new(), bits)
+    }
+
+    /// `round_half_even(saturate(v) · max)` as integer lanes (`unorm8`, `unorm_depth`).
+    fn unorm_lanes(&mut self, v: Value, max: u32) -> Value {
+        let v = self.saturate(v);
+        let m = self.fconst(max as f32);
+        let v = self.b.ins().fmul(v, m);
+        let v = self.b.ins().nearest(v);
+        self.b.ins().fcvt_to_uint_sat(I32X4, v)
+    }
+
+    /// The fog factor of `coord` (`crate::shade::fog_factor`).
+    fn fog_factor(&mut self, mode: FogMode, coord: Value, u: Value) -> Value {
+        let p = |s: &mut Self, k: usize| {
+            s.uniform_f32(
+                u,
+                offset_of!(FragmentUniforms, fog) + offset_of!(FogUniforms, params) + 4 * k,
+            )
+        };
+        let f = match mode {
+            FogMode::Linear => {
+                let (p0, p1) = (p(self, 0), p(self, 1));
+                let t = self.b.ins().fmul(coord, p0);
+                self.b.ins().fadd(t, p1)
+            }
+            FogMode::Exp => {
+                let p2 = p(self, 2);
+                let t = self.b.ins().fmul(coord, p2);
+                let x = self.b.ins().fneg(t);
+                self.exp2(x)
+            }
+            FogMode::Exp2 => {
+                let p3 = p(self, 3);
+                let t = self.b.ins().fmul(coord, p3);
+                let t2 = self.b.ins().fmul(t, t);
+                let x = self.b.ins().fneg(t2);
+                self.exp2(x)
+            }
+        };
+        self.saturate(f)
+    }
+
+    /// llvmpipe's `exp2` (`crate::shade::exp2`).
+    fn exp2(&mut self, x: Value) -> Value {
+        let hi = self.fconst(128.0);
+        let lo = self.fconst(-126.99999);
+        let x = self.b.ins().fmin(x, hi);
+        let x = self.b.ins().fmax(x, lo);
+        let ipart = self.b.ins().floor(x);
+        let fpart = self.b.ins().fsub(x, ipart);
+        let i = self.b.ins().fcvt_to_sint_sat(I32X4, ipart);
+        let bias = self.splat(127);
+        let i = self.b.ins().iadd(i, bias);
+        let i = self.b.ins().ishl_imm_u(i, 23);
+        let expipart = self.b.ins().bitcast(F32X4, MemFlagsData::new(), i);
+        let c = exp2_coeffs().map(|v| self.fconst(v));
+        let x2 = self.b.ins().fmul(fpart, fpart);
+        let odd = self.b.ins().fma(x2, c[5], c[3]);
+        let odd = self.b.ins().fma(x2, odd, c[1]);
+        let even = self.b.ins().fma(x2, c[4], c[2]);
+        let even = self.b.ins().fma(x2, even, c[0]);
+        let poly = self.b.ins().fma(odd, fpart, even);
+        self.b.ins().fmul(expipart, poly)
+    }
+}
