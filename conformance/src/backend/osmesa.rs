@@ -5,7 +5,7 @@
 use super::{Outcome, Timing};
 use crate::call::{clear_bits, Call};
 use crate::scenes::Recording;
-use softgl::{ColorFormat, FogParam, GlEnum};
+use softgl::{ColorFormat, FogParam, GlEnum, LightModelParam, LightParam, MaterialParam};
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::time::Instant;
 
@@ -91,6 +91,15 @@ gl_fns! {
     glFogfv(u32, *const f32);
     glSecondaryColor3f(f32, f32, f32);
     glFogCoordf(f32);
+    glNormal3f(f32, f32, f32);
+    glLightf(u32, u32, f32);
+    glLightfv(u32, u32, *const f32);
+    glLightModelfv(u32, *const f32);
+    glLightModeli(u32, i32);
+    glMaterialf(u32, u32, f32);
+    glMaterialfv(u32, u32, *const f32);
+    glColorMaterial(u32, u32);
+    glClipPlane(u32, *const f64);
     glEnableClientState(u32);
     glDisableClientState(u32);
     glVertexPointer(i32, u32, i32, *const c_void);
@@ -305,6 +314,41 @@ impl Context<'_> {
                 },
                 Call::SecondaryColor([r, gg, bb]) => (g.glSecondaryColor3f)(*r, *gg, *bb),
                 Call::FogCoord(c) => (g.glFogCoordf)(*c),
+                Call::Normal([x, y, z]) => (g.glNormal3f)(*x, *y, *z),
+                Call::Light(i, p) => {
+                    let light = 0x4000 + i; // GL_LIGHT0 + i
+                    match p {
+                        LightParam::Ambient(v) => (g.glLightfv)(light, 0x1200, v.as_ptr()),
+                        LightParam::Diffuse(v) => (g.glLightfv)(light, 0x1201, v.as_ptr()),
+                        LightParam::Specular(v) => (g.glLightfv)(light, 0x1202, v.as_ptr()),
+                        LightParam::Position(v) => (g.glLightfv)(light, 0x1203, v.as_ptr()),
+                        LightParam::SpotDirection(v) => (g.glLightfv)(light, 0x1204, v.as_ptr()),
+                        LightParam::SpotExponent(v) => (g.glLightf)(light, 0x1205, *v),
+                        LightParam::SpotCutoff(v) => (g.glLightf)(light, 0x1206, *v),
+                        LightParam::ConstantAttenuation(v) => (g.glLightf)(light, 0x1207, *v),
+                        LightParam::LinearAttenuation(v) => (g.glLightf)(light, 0x1208, *v),
+                        LightParam::QuadraticAttenuation(v) => (g.glLightf)(light, 0x1209, *v),
+                    }
+                }
+                Call::LightModel(p) => match p {
+                    LightModelParam::Ambient(v) => (g.glLightModelfv)(0x0B53, v.as_ptr()),
+                    LightModelParam::LocalViewer(on) => (g.glLightModeli)(0x0B51, i32::from(*on)),
+                    LightModelParam::TwoSide(on) => (g.glLightModeli)(0x0B52, i32::from(*on)),
+                    LightModelParam::ColorControl(c) => (g.glLightModeli)(0x81F8, c.to_gl() as i32),
+                },
+                Call::Material(face, p) => {
+                    let f = face.to_gl();
+                    match p {
+                        MaterialParam::Ambient(v) => (g.glMaterialfv)(f, 0x1200, v.as_ptr()),
+                        MaterialParam::Diffuse(v) => (g.glMaterialfv)(f, 0x1201, v.as_ptr()),
+                        MaterialParam::Specular(v) => (g.glMaterialfv)(f, 0x1202, v.as_ptr()),
+                        MaterialParam::Emission(v) => (g.glMaterialfv)(f, 0x1600, v.as_ptr()),
+                        MaterialParam::AmbientAndDiffuse(v) => (g.glMaterialfv)(f, 0x1602, v.as_ptr()),
+                        MaterialParam::Shininess(s) => (g.glMaterialf)(f, 0x1601, *s),
+                    }
+                }
+                Call::ColorMaterial(face, mode) => (g.glColorMaterial)(face.to_gl(), mode.to_gl()),
+                Call::ClipPlane(i, p) => (g.glClipPlane)(0x3000 + i, p.as_ptr()), // GL_CLIP_PLANE0 + i
                 Call::DrawArrays {
                     mode,
                     positions,

@@ -148,6 +148,15 @@ pub fn replay(gl: &mut Context, c: &Call) -> GlResult {
             gl.fog_coord(*c);
             Ok(())
         }
+        Call::Normal([x, y, z]) => {
+            gl.normal3(*x, *y, *z);
+            Ok(())
+        }
+        Call::Light(i, p) => gl.light(*i, *p),
+        Call::LightModel(p) => gl.light_model(*p),
+        Call::Material(f, p) => gl.material(*f, *p),
+        Call::ColorMaterial(f, m) => gl.color_material(*f, *m),
+        Call::ClipPlane(i, p) => gl.clip_plane(*i, *p),
         Call::DrawArrays {
             mode,
             positions,

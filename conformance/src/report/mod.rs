@@ -437,6 +437,7 @@ fn markdown(
         Group::Stiff,
         Group::Timing,
         Group::Fog,
+        Group::Lighting,
     ];
     let _ = writeln!(o, "\n## Per scene and back end\n");
     for g in groups {

@@ -5,6 +5,7 @@
 
 mod combos;
 mod fog;
+mod lighting;
 pub mod oracle;
 mod primitives;
 mod stages;
@@ -89,6 +90,8 @@ pub enum Group {
     Timing,
     /// Fog and the colour sum (issue 11).
     Fog,
+    /// Lighting, materials and user clip planes (issue 11).
+    Lighting,
 }
 
 impl Group {
@@ -100,6 +103,7 @@ impl Group {
             Group::Stiff => "stiff and extreme",
             Group::Timing => "timing",
             Group::Fog => "fog and colour sum",
+            Group::Lighting => "lighting and clip planes",
         }
     }
 }
@@ -236,7 +240,16 @@ fn reset_state(r: &mut Rec, w: u32, h: u32) {
         Capability::PolygonOffsetPoint,
         Capability::ScissorTest,
         Capability::StencilTest,
-    ] {
+        Capability::Fog,
+        Capability::ColorSum,
+        Capability::Lighting,
+        Capability::ColorMaterial,
+        Capability::Normalize,
+        Capability::RescaleNormal,
+    ]
+    .into_iter()
+    .chain((0..6).map(Capability::ClipPlane))
+    {
         r.disable(cap);
     }
     r.enable(Capability::Dither)
@@ -273,6 +286,7 @@ pub fn all() -> Vec<Scene> {
     v.extend(primitives::scenes());
     v.extend(stiff::scenes());
     v.extend(fog::scenes());
+    v.extend(lighting::scenes());
     v.extend(timing::scenes());
     v
 }
