@@ -182,12 +182,18 @@ fn eight_lights(r: &mut Rec, _s: Size) {
     material(r, [0.9, 0.9, 0.9, 1.0], 20.0);
     sphere(r, [0.0, 0.0, -10.0], 4.0, (32, 24), 1.0);
     // A floor behind it, finely tessellated so the spots show.
+    grid(r, 16, (-12.0, 1.5), -16.0);
+}
+
+/// An `n` x `n` grid of triangle strips facing +z at depth `z`, from
+/// `(start, start)` in steps of `step`.
+fn grid(r: &mut Rec, n: u32, (start, step): (f32, f32), z: f32) {
     r.normal(0.0, 0.0, 1.0);
-    for j in 0..16 {
+    for j in 0..n {
         r.begin(PrimitiveMode::TriangleStrip);
-        for i in 0..=16 {
+        for i in 0..=n {
             for jj in [j, j + 1] {
-                r.vertex(-12.0 + 1.5 * i as f32, -12.0 + 1.5 * jj as f32, -16.0);
+                r.vertex(start + step * i as f32, start + step * jj as f32, z);
             }
         }
         r.end();
@@ -351,16 +357,7 @@ fn spot_exponent(r: &mut Rec, _s: Size) {
         .light(1, LightParam::SpotExponent(2.0))
         .light(1, LightParam::SpotCutoff(90.0));
     material(r, [0.9, 0.9, 0.9, 1.0], 10.0);
-    r.normal(0.0, 0.0, 1.0);
-    for j in 0..24 {
-        r.begin(PrimitiveMode::TriangleStrip);
-        for i in 0..=24 {
-            for jj in [j, j + 1] {
-                r.vertex(-6.0 + 0.5 * i as f32, -6.0 + 0.5 * jj as f32, -9.0);
-            }
-        }
-        r.end();
-    }
+    grid(r, 24, (-6.0, 0.5), -9.0);
 }
 
 /// Normals of length 1e-20 and 1e20 on spheres, without `GL_NORMALIZE`
