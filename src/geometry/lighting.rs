@@ -86,8 +86,7 @@ fn polynomial<const N: usize>(x: f32, coeffs: &[f64; N]) -> f32 {
     let x2 = x * x;
     let c = |i: usize| coeffs[i] as f32;
     // The highest even and odd coefficients start their chains.
-    let top_even = if (N - 1) % 2 == 0 { N - 1 } else { N - 2 };
-    let top_odd = if (N - 1) % 2 == 1 { N - 1 } else { N - 2 };
+    let (top_even, top_odd) = if N % 2 == 1 { (N - 1, N - 2) } else { (N - 2, N - 1) };
     let mut even = c(top_even);
     let mut i = top_even;
     while i >= 2 {
