@@ -193,3 +193,29 @@ fn lines_and_points_are_clipped_by_user_planes() {
     assert_eq!(gl.framebuffer().pixel(1, 6), Some([0, 0, 0, 0]));
     assert_eq!(gl.framebuffer().pixel(1, 1), Some([255; 4]));
 }
+
+#[test]
+fn lit_flat_quads_split_along_v1_v3_as_llvmpipe() {
+    // A bowtie quad (docs/llvmpipe-facts.md §12): lit colours are vertex
+    // outputs, so flat shading sends it down llvmpipe's v1-v3 split.
+    let v = [[2.0f32, 2.0], [2.0, 29.0], [29.0, 4.0], [29.0, 30.0]];
+    let draw = |order: &[usize], mode: PrimitiveMode| {
+        let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(32, 32)).unwrap();
+        gl.matrix_mode(softgl::MatrixMode::Projection).unwrap();
+        gl.ortho(0.0, 32.0, 0.0, 32.0, -1.0, 1.0).unwrap();
+        gl.shade_model(softgl::ShadeModel::Flat).unwrap();
+        gl.enable(Capability::Lighting).unwrap();
+        gl.enable(Capability::Light(0)).unwrap();
+        gl.begin(mode).unwrap();
+        for &i in order {
+            gl.vertex2(v[i][0], v[i][1]);
+        }
+        gl.end().unwrap();
+        gl.read_pixels(0, 0, 32, 32, softgl::ReadFormat::Rgba8).unwrap()
+    };
+    let as_quad = draw(&[0, 1, 2, 3], PrimitiveMode::Quads);
+    assert_eq!(as_quad, draw(&[0, 1, 3, 1, 2, 3], PrimitiveMode::Triangles));
+    assert_ne!(as_quad, draw(&[0, 1, 2, 0, 2, 3], PrimitiveMode::Triangles));
+    let covered = as_quad.chunks_exact(4).filter(|p| p[0] != 0).count();
+    assert_eq!(covered, 534, "llvmpipe's count");
+}
