@@ -210,7 +210,7 @@ impl<'s> Geometry<'s> {
 
     /// Whether llvmpipe splits this draw's quads along v1-v3
     /// (`docs/llvmpipe-facts.md` §12): indexed draws (its `draw_elements`),
-    /// flat shading of a per-vertex colour (its `draw_arrays` with constant
+    /// flat shading of a per-vertex or lit colour (its `draw_arrays` with constant
     /// interpolation), and draws through its draw pipeline: a face drawn as
     /// lines or points, or a vertex outside the view volume.
     fn quads_split_v1_v3(
@@ -222,7 +222,11 @@ impl<'s> Geometry<'s> {
     ) -> bool {
         let direct_v1_v3 = match source {
             DrawSource::Elements => true,
-            DrawSource::Arrays { per_vertex_color } => per_vertex_color && self.state.shade_model == ShadeModel::Flat,
+            DrawSource::Arrays { per_vertex_color } => {
+                // Lit colours are vertex-shader outputs, so the fragment shader
+                // reads them as (flat) inputs however the colour was given.
+                (per_vertex_color || self.state.lighting.enabled) && self.state.shade_model == ShadeModel::Flat
+            }
         };
         let clips = |p: glam::DVec4| outcode(p, 1.0) != 0 || self.user.code(p) != 0;
         direct_v1_v3 || self.unfilled() || (0..count).any(|i| clips((stage.mvp * fetch(i).pos).as_dvec4()))
