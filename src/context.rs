@@ -181,7 +181,9 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVer
         color: arrays.color.map_or(current.color, |c| c.get(i, Vec4::W)),
         secondary: arrays.secondary.map_or(current.secondary, |c| c.get(i, Vec4::W)),
         fog_coord: arrays.fog_coord.map_or(current.fog_coord, |c| c.get(i, Vec4::ZERO).x),
-        normal: arrays.normal.map_or(current.normal, |n| n.get(i, Vec4::ZERO).truncate()),
+        normal: arrays
+            .normal
+            .map_or(current.normal, |n| n.get(i, Vec4::ZERO).truncate()),
         edge: arrays
             .edge_flag
             .map_or(current.edge_flag, |e| e.get(i, Vec4::ONE).x != 0.0),
@@ -918,7 +920,8 @@ impl Context {
         if self.state.lighting.enabled && lit {
             vertex_stage.lighting = Some(LightSetup::new(&self.state.lighting, self.modelview.top()));
         }
-        let geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
+        let mut geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
+        geometry.set_user_planes(self.projection.top());
         let specialist = match self.backend {
             Backend::Jit => self.specialists.get(&key),
             Backend::Interpreter => None,

@@ -2,8 +2,8 @@
 //! [`Call`]s, and every back end replays that list its own way.
 
 use softgl::{
-    BlendEquation, BlendFactor, Capability, ClearMask, CompareFunc, Face, FrontFace, LogicOp, MatrixMode, PolygonMode,
-    PrimitiveMode, ShadeModel, StencilOp,
+    BlendEquation, BlendFactor, Capability, ClearMask, ColorMaterialMode, CompareFunc, Face, FogParam, FrontFace,
+    LightModelParam, LightParam, LogicOp, MaterialParam, MatrixMode, PolygonMode, PrimitiveMode, ShadeModel, StencilOp,
 };
 
 /// One GL 1.x call, with GL's arguments.
@@ -53,6 +53,24 @@ pub enum Call {
     End,
     Color([f32; 4]),
     Vertex([f32; 4]),
+    /// `glFog*`: one parameter.
+    Fog(FogParam),
+    /// `glSecondaryColor3f`.
+    SecondaryColor([f32; 3]),
+    /// `glFogCoordf`.
+    FogCoord(f32),
+    /// `glNormal3f`.
+    Normal([f32; 3]),
+    /// `glLight*` on light `GL_LIGHT0 + index`.
+    Light(u32, LightParam),
+    /// `glLightModel*`.
+    LightModel(LightModelParam),
+    /// `glMaterial*`.
+    Material(Face, MaterialParam),
+    /// `glColorMaterial`.
+    ColorMaterial(Face, ColorMaterialMode),
+    /// `glClipPlane(GL_CLIP_PLANE0 + index, equation)`.
+    ClipPlane(u32, [f64; 4]),
     /// `glDrawArrays` over client arrays of 4-component positions and colours.
     DrawArrays {
         mode: PrimitiveMode,
@@ -119,6 +137,27 @@ impl Rec {
     }
     pub fn vertex(&mut self, x: f32, y: f32, z: f32) -> &mut Self {
         self.call(Call::Vertex([x, y, z, 1.0]))
+    }
+    pub fn fog(&mut self, p: FogParam) -> &mut Self {
+        self.call(Call::Fog(p))
+    }
+    pub fn secondary_color(&mut self, r: f32, g: f32, b: f32) -> &mut Self {
+        self.call(Call::SecondaryColor([r, g, b]))
+    }
+    pub fn fog_coord(&mut self, c: f32) -> &mut Self {
+        self.call(Call::FogCoord(c))
+    }
+    pub fn normal(&mut self, x: f32, y: f32, z: f32) -> &mut Self {
+        self.call(Call::Normal([x, y, z]))
+    }
+    pub fn light(&mut self, index: u32, p: LightParam) -> &mut Self {
+        self.call(Call::Light(index, p))
+    }
+    pub fn light_model(&mut self, p: LightModelParam) -> &mut Self {
+        self.call(Call::LightModel(p))
+    }
+    pub fn material(&mut self, face: Face, p: MaterialParam) -> &mut Self {
+        self.call(Call::Material(face, p))
     }
     pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) -> &mut Self {
         self.call(Call::Vertex([x, y, z, w]))

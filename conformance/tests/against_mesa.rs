@@ -23,12 +23,14 @@ use std::sync::Mutex;
 
 const EXE: &str = env!("CARGO_BIN_EXE_softgl-conformance");
 
-const GROUPS: [(&str, Group); 5] = [
+const GROUPS: [(&str, Group); 7] = [
     ("stages_alone", Group::Stage),
     ("combinations", Group::Combination),
     ("primitives", Group::Primitive),
     ("stiff_and_extreme", Group::Stiff),
     ("timing_scenes_small", Group::Timing),
+    ("fog_and_color_sum", Group::Fog),
+    ("lighting_and_clip_planes", Group::Lighting),
 ];
 
 /// The test that probes the references.

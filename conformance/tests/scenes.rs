@@ -18,6 +18,8 @@ fn at_least_forty_scenes_with_unique_names_in_every_group() {
         Group::Primitive,
         Group::Stiff,
         Group::Timing,
+        Group::Fog,
+        Group::Lighting,
     ] {
         assert!(all.iter().any(|s| s.group == g), "no scene in {g:?}");
     }

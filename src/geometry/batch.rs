@@ -85,7 +85,10 @@ impl VertexStage {
         }
         if let Some(o) = self.layout.fog() {
             out.v[o] = match self.fog {
-                FogSource::EyeDepth { row } => eye_dot(row, v.pos).abs(),
+                FogSource::EyeDepth { row } => match self.lighting.as_ref().and_then(|l| l.eye_position(v.pos)) {
+                    Some(eye) => eye[2].abs(),
+                    None => eye_dot(row, v.pos).abs(),
+                },
                 FogSource::FogCoord => v.fog_coord.abs(),
             };
         }

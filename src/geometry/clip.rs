@@ -139,6 +139,92 @@ pub fn outcode(p: DVec4, g: f64) -> u8 {
     (0..6).fold(0, |code, k| if dist(p, k, g) < 0.0 { code | (1 << k) } else { code })
 }
 
+/// The enabled user clip planes of a draw, in clip coordinates, and how
+/// llvmpipe evaluates them (`docs/llvmpipe-facts.md` § "User clip planes").
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct UserPlanes {
+    pub planes: [[f32; 4]; 6],
+    /// Bit `i` set when plane `i` is enabled.
+    pub enabled: u8,
+}
+
+impl UserPlanes {
+    /// Bit `i` set when `p` is outside enabled plane `i`, by draw's vertex
+    /// test (`draw_llvm.c`): `0 > d`, `d` a chain of `fmuladd`s, which LLVM
+    /// fuses on a CPU with FMA: `fma(w, pw, fma(z, pz, fma(y, py, x·px)))`.
+    pub fn code(&self, p: DVec4) -> u8 {
+        if self.enabled == 0 {
+            return 0;
+        }
+        let p = p.as_vec4();
+        (0..6).fold(0, |code, i| {
+            let q = &self.planes[i];
+            let d = q[3].mul_add(p.w, q[2].mul_add(p.z, q[1].mul_add(p.y, q[0] * p.x)));
+            if self.enabled & (1 << i) != 0 && 0.0 > d {
+                code | (1 << i)
+            } else {
+                code
+            }
+        })
+    }
+
+    /// Distance to plane `i` as draw's clipper computes it (`draw_pipe_clip.c`
+    /// `dot4`, in C order without fusing).
+    fn dist(&self, p: DVec4, i: usize) -> f32 {
+        let (p, q) = (p.as_vec4(), &self.planes[i]);
+        p.x * q[0] + p.y * q[1] + p.z * q[2] + p.w * q[3]
+    }
+}
+
+/// One Sutherland–Hodgman step in f32 against a plane whose distance is
+/// `d(pos)`, as llvmpipe's clipper steps (`draw_pipe_clip.c` `do_clip_tri`).
+/// An edge leaving through a user plane is a boundary edge (`user`), one
+/// leaving through the view volume is not. `false` when a distance is not
+/// finite (llvmpipe then drops the primitive).
+fn clip_step_f32(
+    poly: &[PolyVertex],
+    out: &mut Vec<PolyVertex>,
+    d: impl Fn(DVec4) -> f32,
+    n: usize,
+    user: bool,
+) -> bool {
+    out.clear();
+    for i in 0..poly.len() {
+        let (p, edge) = poly[i];
+        let (q, _) = poly[(i + 1) % poly.len()];
+        let (dp, dq) = (d(p.pos), d(q.pos));
+        if user && !(dp.is_finite() && dq.is_finite()) {
+            return false;
+        }
+        let (p_in, q_in) = (dp >= 0.0, dq >= 0.0);
+        if p_in {
+            out.push((p, edge));
+        }
+        if p_in && !q_in {
+            out.push((p.crossing_f32(&q, dp, dq, n), user));
+        } else if !p_in && q_in {
+            out.push((q.crossing_f32(&p, dq, dp, n), edge));
+        }
+    }
+    true
+}
+
+/// Clips `poly` against the user planes in `mask` (after the view volume, in
+/// plane order, as llvmpipe); `false` when llvmpipe drops the polygon.
+pub fn clip_polygon_user(poly: &mut Vec<PolyVertex>, user: &UserPlanes, mask: u8, n: usize) -> bool {
+    let mut out: Vec<PolyVertex> = Vec::with_capacity(poly.len() + 6);
+    for i in 0..6 {
+        if mask & (1 << i) == 0 || poly.len() < 3 {
+            continue;
+        }
+        if !clip_step_f32(poly, &mut out, |p| user.dist(p, i), n, true) {
+            return false;
+        }
+        std::mem::swap(poly, &mut out);
+    }
+    true
+}
+
 /// A polygon vertex and whether the edge starting at it is a boundary edge.
 pub type PolyVertex = (ClipVertex, bool);
 
@@ -153,22 +239,16 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64, n: usize) {
         if planes & (1 << k) == 0 || poly.is_empty() {
             continue;
         }
+        if last {
+            clip_step_f32(poly, &mut out, |p| dist_f32(p, k), n, false);
+            std::mem::swap(poly, &mut out);
+            continue;
+        }
         out.clear();
         for i in 0..poly.len() {
             let (p, edge) = poly[i];
             let (q, _) = poly[(i + 1) % poly.len()];
-            if last {
-                let (dp, dq) = (dist_f32(p.pos, k), dist_f32(q.pos, k));
-                let (p_in, q_in) = (dp >= 0.0, dq >= 0.0);
-                if p_in {
-                    out.push((p, edge));
-                }
-                if p_in && !q_in {
-                    out.push((p.crossing_f32(&q, dp, dq, n), false));
-                } else if !p_in && q_in {
-                    out.push((q.crossing_f32(&p, dq, dp, n), edge));
-                }
-            } else {
+            {
                 let (dp, dq) = (dist(p.pos, k, g), dist(q.pos, k, g));
                 let (p_in, q_in) = (dp >= 0.0, dq >= 0.0);
                 if p_in {
@@ -190,12 +270,12 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64, n: usize) {
 /// planes it is outside of. `n` varyings are interpolated.
 pub fn clip_segment(
     (a, b): (&ClipVertex, &ClipVertex),
-    planes: u8,
+    (planes, user): (u8, &UserPlanes),
     g: f64,
     n: usize,
 ) -> Option<(ClipVertex, ClipVertex)> {
     if g == 1.0 {
-        return clip_segment_f32(a, b, planes, n);
+        return clip_segment_f32(a, b, (planes, user), n);
     }
     let (mut a, mut b) = (*a, *b);
     for k in 0..6 {
@@ -214,14 +294,21 @@ pub fn clip_segment(
 }
 
 /// llvmpipe's line clip: `t0`, `t1` the largest `d_out / (d_out − d_in)` of
-/// each end over the planes, the segment gone when `t0 + t1 >= 1`.
-fn clip_segment_f32(a: &ClipVertex, b: &ClipVertex, planes: u8, n: usize) -> Option<(ClipVertex, ClipVertex)> {
+/// each end over the planes (the view volume's, then the user planes that
+/// either end is outside of), the segment gone when `t0 + t1 >= 1`.
+fn clip_segment_f32(
+    a: &ClipVertex,
+    b: &ClipVertex,
+    (planes, user): (u8, &UserPlanes),
+    n: usize,
+) -> Option<(ClipVertex, ClipVertex)> {
     let (mut t0, mut t1) = (0.0f32, 0.0f32);
-    for k in FINAL_ORDER {
-        if planes & (1 << k) == 0 {
-            continue;
-        }
-        let (d0, d1) = (dist_f32(a.pos, k), dist_f32(b.pos, k));
+    let (ua, ub) = (user.code(a.pos), user.code(b.pos));
+    let view = FINAL_ORDER.iter().filter(|&&k| planes & (1 << k) != 0);
+    let users = (0..6).filter(|&i| (ua | ub) & (1 << i) != 0).map(|i| i + 6);
+    for k in view.copied().chain(users) {
+        let d = |p| if k < 6 { dist_f32(p, k) } else { user.dist(p, k - 6) };
+        let (d0, d1) = (d(a.pos), d(b.pos));
         if d1 < 0.0 {
             t1 = t1.max(d1 / (d1 - d0));
         }
@@ -232,12 +319,12 @@ fn clip_segment_f32(a: &ClipVertex, b: &ClipVertex, planes: u8, n: usize) -> Opt
             return None;
         }
     }
-    let a2 = if outcode(a.pos, 1.0) != 0 {
+    let a2 = if outcode(a.pos, 1.0) != 0 || ua != 0 {
         a.lerp_f32(b, t0, n)
     } else {
         *a
     };
-    let b2 = if outcode(b.pos, 1.0) != 0 {
+    let b2 = if outcode(b.pos, 1.0) != 0 || ub != 0 {
         b.lerp_f32(a, t1, n)
     } else {
         *b

@@ -79,21 +79,27 @@ fn sub(a: V3, b: V3) -> V3 {
 }
 
 /// gallivm's `lp_build_polynomial`: even and odd terms in `x²`, each step a
-/// `fmuladd`, which LLVM fuses on a CPU with FMA (`lp_bld_arit.c`).
+/// `fmuladd`, which LLVM fuses on a CPU with FMA (`lp_bld_arit.c`). `N`
+/// coefficients (at least 2), rounded to f32 as `lp_build_const_vec` does.
 #[inline(always)]
-fn polynomial(x: f32, coeffs: &[f64]) -> f32 {
+fn polynomial<const N: usize>(x: f32, coeffs: &[f64; N]) -> f32 {
     let x2 = x * x;
-    let (mut even, mut odd): (Option<f32>, Option<f32>) = (None, None);
-    for i in (0..coeffs.len()).rev() {
-        let c = coeffs[i] as f32;
-        let slot = if i % 2 == 0 { &mut even } else { &mut odd };
-        *slot = Some(slot.map_or(c, |acc| x2.mul_add(acc, c)));
+    let c = |i: usize| coeffs[i] as f32;
+    // The highest even and odd coefficients start their chains.
+    let (top_even, top_odd) = if N % 2 == 1 { (N - 1, N - 2) } else { (N - 2, N - 1) };
+    let mut even = c(top_even);
+    let mut i = top_even;
+    while i >= 2 {
+        i -= 2;
+        even = x2.mul_add(even, c(i));
     }
-    match (odd, even) {
-        (Some(o), Some(e)) => o.mul_add(x, e),
-        (None, Some(e)) => e,
-        _ => f32::NAN,
+    let mut odd = c(top_odd);
+    let mut i = top_odd;
+    while i >= 3 {
+        i -= 2;
+        odd = x2.mul_add(odd, c(i));
     }
+    odd.mul_add(x, even)
 }
 
 /// `lp_build_exp2_polynomial` (degree 5), Mesa's literals as written.
@@ -483,6 +489,14 @@ impl LightSetup {
         }
     }
 
+    /// The eye position the program computes for lighting (positional
+    /// lights, local viewer), which its fog coordinate then reuses
+    /// (`get_eye_position_z`); `None` when lighting computes none.
+    pub fn eye_position(&self, p: Vec4) -> Option<[f32; 3]> {
+        let needs = self.local_viewer || self.lights[..self.count].iter().any(|l| l.positional);
+        needs.then(|| self.position(p))
+    }
+
     /// The eye (or object) position: `MUL`/`MAD` by the modelview's columns.
     #[inline(always)]
     fn position(&self, p: Vec4) -> V3 {
@@ -505,6 +519,9 @@ impl LightSetup {
     #[inline(always)]
     fn products(&self, i: usize, s: usize, mat: &[[f32; 4]; 4]) -> [[f32; 4]; 3] {
         let f = self.sides[s].from_color;
+        if f == FromColor::default() {
+            return self.products[i][s];
+        }
         let from = [f.ambient, f.diffuse, f.specular];
         let mut p = self.products[i][s];
         for k in 0..3 {

@@ -13,7 +13,7 @@ use crate::raster::{self, RasterParams, RasterVertex, SpanSink};
 use crate::state::{FrontFace, PolygonMode, RasterState, ShadeModel};
 use assemble::{assemble, Primitive, QuadSplit};
 use batch::{VertexBatch, VertexStage};
-use clip::{clip_polygon, clip_segment, guard_levels, outcode, ClipVertex, PolyVertex};
+use clip::{clip_polygon, clip_polygon_user, clip_segment, guard_levels, outcode, ClipVertex, PolyVertex, UserPlanes};
 use glam::{Vec3, Vec4};
 use varying::{copy_slots, VaryingLayout, Varyings};
 
@@ -94,6 +94,8 @@ pub struct Geometry<'s> {
     wide_params: RasterParams,
     /// The varyings every vertex carries.
     layout: VaryingLayout,
+    /// The enabled user clip planes, in clip coordinates.
+    user: UserPlanes,
 }
 
 impl<'s> Geometry<'s> {
@@ -142,6 +144,29 @@ impl<'s> Geometry<'s> {
             params,
             wide_params,
             layout,
+            user: UserPlanes::default(),
+        }
+    }
+
+    /// Enables the user clip planes of the state for this draw: each eye
+    /// plane times the inverse `projection` (Mesa's `_ClipUserPlane`,
+    /// `main/clip.c`), in f32.
+    pub fn set_user_planes(&mut self, projection: &glam::Mat4) {
+        let l = &self.state.lighting;
+        if !l.clipping() {
+            return;
+        }
+        let inv = crate::lighting::inverse(projection).as_mat4().to_cols_array();
+        for i in 0..6 {
+            if !l.clip_enabled[i] {
+                continue;
+            }
+            let e = l.clip_planes[i].map(|c| c as f32);
+            self.user.planes[i] = [0, 1, 2, 3].map(|j| {
+                let c = &inv[4 * j..4 * j + 4];
+                e[0] * c[0] + e[1] * c[1] + e[2] * c[2] + e[3] * c[3]
+            });
+            self.user.enabled |= 1 << i;
         }
     }
 
@@ -185,7 +210,7 @@ impl<'s> Geometry<'s> {
 
     /// Whether llvmpipe splits this draw's quads along v1-v3
     /// (`docs/llvmpipe-facts.md` §12): indexed draws (its `draw_elements`),
-    /// flat shading of a per-vertex colour (its `draw_arrays` with constant
+    /// flat shading of a per-vertex or lit colour (its `draw_arrays` with constant
     /// interpolation), and draws through its draw pipeline: a face drawn as
     /// lines or points, or a vertex outside the view volume.
     fn quads_split_v1_v3(
@@ -197,9 +222,14 @@ impl<'s> Geometry<'s> {
     ) -> bool {
         let direct_v1_v3 = match source {
             DrawSource::Elements => true,
-            DrawSource::Arrays { per_vertex_color } => per_vertex_color && self.state.shade_model == ShadeModel::Flat,
+            DrawSource::Arrays { per_vertex_color } => {
+                // Lit colours are vertex-shader outputs, so the fragment shader
+                // reads them as (flat) inputs however the colour was given.
+                (per_vertex_color || self.state.lighting.enabled) && self.state.shade_model == ShadeModel::Flat
+            }
         };
-        direct_v1_v3 || self.unfilled() || (0..count).any(|i| outcode((stage.mvp * fetch(i).pos).as_dvec4(), 1.0) != 0)
+        let clips = |p: glam::DVec4| outcode(p, 1.0) != 0 || self.user.code(p) != 0;
+        direct_v1_v3 || self.unfilled() || (0..count).any(|i| clips((stage.mvp * fetch(i).pos).as_dvec4()))
     }
 
     /// Whether a face is drawn as lines or points.
@@ -253,7 +283,7 @@ impl<'s> Geometry<'s> {
     }
 
     fn point(&self, v: &ClipVertex, sink: &mut dyn SpanSink) {
-        if !v.is_finite(self.layout.len()) || outcode(v.pos, 1.0) != 0 {
+        if !v.is_finite(self.layout.len()) || outcode(v.pos, 1.0) != 0 || self.user.code(v.pos) != 0 {
             return;
         }
         if let Some(rv) = self.project(v) {
@@ -266,11 +296,19 @@ impl<'s> Geometry<'s> {
         if !(a.is_finite(n) && b.is_finite(n)) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
             return;
         }
+        if self.user.code(a.pos) & self.user.code(b.pos) != 0 {
+            return;
+        }
         let (mut a, mut b) = (*a, *b);
         for &g in guard_levels([a, b].iter()) {
             let planes = outcode(a.pos, g) | outcode(b.pos, g);
-            if planes != 0 {
-                let Some(clipped) = clip_segment((&a, &b), planes, g, n) else {
+            let user = if g == 1.0 {
+                self.user.code(a.pos) | self.user.code(b.pos)
+            } else {
+                0
+            };
+            if planes != 0 || user != 0 {
+                let Some(clipped) = clip_segment((&a, &b), (planes, &self.user), g, n) else {
                     return;
                 };
                 (a, b) = clipped;
@@ -287,7 +325,8 @@ impl<'s> Geometry<'s> {
             return;
         }
         let codes = poly.map(|(v, _)| outcode(v.pos, 1.0));
-        if codes[0] & codes[1] & codes[2] != 0 {
+        let user = poly.map(|(v, _)| self.user.code(v.pos));
+        if codes[0] & codes[1] & codes[2] != 0 || user[0] & user[1] & user[2] != 0 {
             return;
         }
         let mut clipped: Vec<PolyVertex> = poly.to_vec();
@@ -298,6 +337,14 @@ impl<'s> Geometry<'s> {
                 clip_polygon(&mut clipped, planes, g, n);
                 was_clipped = true;
             }
+        }
+        // User planes after the view volume's, as llvmpipe's clipper orders them.
+        let user_mask = user[0] | user[1] | user[2];
+        if user_mask != 0 {
+            if !clip_polygon_user(&mut clipped, &self.user, user_mask, n) {
+                return;
+            }
+            was_clipped = true;
         }
         let mut win: Vec<(RasterVertex, bool)> = Vec::with_capacity(clipped.len());
         for (v, edge) in &clipped {

@@ -5,7 +5,7 @@
 use super::{Outcome, Timing};
 use crate::call::{clear_bits, Call};
 use crate::scenes::Recording;
-use softgl::{ColorFormat, GlEnum};
+use softgl::{ColorFormat, FogParam, GlEnum, LightModelParam, LightParam, MaterialParam};
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::time::Instant;
 
@@ -86,6 +86,20 @@ gl_fns! {
     glEnd();
     glColor4f(f32, f32, f32, f32);
     glVertex4f(f32, f32, f32, f32);
+    glFogf(u32, f32);
+    glFogi(u32, i32);
+    glFogfv(u32, *const f32);
+    glSecondaryColor3f(f32, f32, f32);
+    glFogCoordf(f32);
+    glNormal3f(f32, f32, f32);
+    glLightf(u32, u32, f32);
+    glLightfv(u32, u32, *const f32);
+    glLightModelfv(u32, *const f32);
+    glLightModeli(u32, i32);
+    glMaterialf(u32, u32, f32);
+    glMaterialfv(u32, u32, *const f32);
+    glColorMaterial(u32, u32);
+    glClipPlane(u32, *const f64);
     glEnableClientState(u32);
     glDisableClientState(u32);
     glVertexPointer(i32, u32, i32, *const c_void);
@@ -289,6 +303,52 @@ impl Context<'_> {
                 Call::End => (g.glEnd)(),
                 Call::Color([r, gg, bb, a]) => (g.glColor4f)(*r, *gg, *bb, *a),
                 Call::Vertex([x, y, z, w]) => (g.glVertex4f)(*x, *y, *z, *w),
+                Call::Fog(p) => match p {
+                    FogParam::Mode(m) => (g.glFogi)(0x0B65, m.to_gl() as i32), // GL_FOG_MODE
+                    FogParam::Density(d) => (g.glFogf)(0x0B62, *d),
+                    FogParam::Start(v) => (g.glFogf)(0x0B63, *v),
+                    FogParam::End(v) => (g.glFogf)(0x0B64, *v),
+                    FogParam::Color(c) => (g.glFogfv)(0x0B66, c.as_ptr()),
+                    FogParam::Index(i) => (g.glFogf)(0x0B61, *i),
+                    FogParam::CoordSrc(s) => (g.glFogi)(0x8450, s.to_gl() as i32), // GL_FOG_COORD_SRC
+                },
+                Call::SecondaryColor([r, gg, bb]) => (g.glSecondaryColor3f)(*r, *gg, *bb),
+                Call::FogCoord(c) => (g.glFogCoordf)(*c),
+                Call::Normal([x, y, z]) => (g.glNormal3f)(*x, *y, *z),
+                Call::Light(i, p) => {
+                    let light = 0x4000 + i; // GL_LIGHT0 + i
+                    match p {
+                        LightParam::Ambient(v) => (g.glLightfv)(light, 0x1200, v.as_ptr()),
+                        LightParam::Diffuse(v) => (g.glLightfv)(light, 0x1201, v.as_ptr()),
+                        LightParam::Specular(v) => (g.glLightfv)(light, 0x1202, v.as_ptr()),
+                        LightParam::Position(v) => (g.glLightfv)(light, 0x1203, v.as_ptr()),
+                        LightParam::SpotDirection(v) => (g.glLightfv)(light, 0x1204, v.as_ptr()),
+                        LightParam::SpotExponent(v) => (g.glLightf)(light, 0x1205, *v),
+                        LightParam::SpotCutoff(v) => (g.glLightf)(light, 0x1206, *v),
+                        LightParam::ConstantAttenuation(v) => (g.glLightf)(light, 0x1207, *v),
+                        LightParam::LinearAttenuation(v) => (g.glLightf)(light, 0x1208, *v),
+                        LightParam::QuadraticAttenuation(v) => (g.glLightf)(light, 0x1209, *v),
+                    }
+                }
+                Call::LightModel(p) => match p {
+                    LightModelParam::Ambient(v) => (g.glLightModelfv)(0x0B53, v.as_ptr()),
+                    LightModelParam::LocalViewer(on) => (g.glLightModeli)(0x0B51, i32::from(*on)),
+                    LightModelParam::TwoSide(on) => (g.glLightModeli)(0x0B52, i32::from(*on)),
+                    LightModelParam::ColorControl(c) => (g.glLightModeli)(0x81F8, c.to_gl() as i32),
+                },
+                Call::Material(face, p) => {
+                    let f = face.to_gl();
+                    match p {
+                        MaterialParam::Ambient(v) => (g.glMaterialfv)(f, 0x1200, v.as_ptr()),
+                        MaterialParam::Diffuse(v) => (g.glMaterialfv)(f, 0x1201, v.as_ptr()),
+                        MaterialParam::Specular(v) => (g.glMaterialfv)(f, 0x1202, v.as_ptr()),
+                        MaterialParam::Emission(v) => (g.glMaterialfv)(f, 0x1600, v.as_ptr()),
+                        MaterialParam::AmbientAndDiffuse(v) => (g.glMaterialfv)(f, 0x1602, v.as_ptr()),
+                        MaterialParam::Shininess(s) => (g.glMaterialf)(f, 0x1601, *s),
+                    }
+                }
+                Call::ColorMaterial(face, mode) => (g.glColorMaterial)(face.to_gl(), mode.to_gl()),
+                Call::ClipPlane(i, p) => (g.glClipPlane)(0x3000 + i, p.as_ptr()), // GL_CLIP_PLANE0 + i
                 Call::DrawArrays {
                     mode,
                     positions,

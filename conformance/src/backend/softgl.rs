@@ -139,6 +139,24 @@ pub fn replay(gl: &mut Context, c: &Call) -> GlResult {
             gl.vertex4(*x, *y, *z, *w);
             Ok(())
         }
+        Call::Fog(p) => gl.fog(*p),
+        Call::SecondaryColor([r, g, b]) => {
+            gl.secondary_color3(*r, *g, *b);
+            Ok(())
+        }
+        Call::FogCoord(c) => {
+            gl.fog_coord(*c);
+            Ok(())
+        }
+        Call::Normal([x, y, z]) => {
+            gl.normal3(*x, *y, *z);
+            Ok(())
+        }
+        Call::Light(i, p) => gl.light(*i, *p),
+        Call::LightModel(p) => gl.light_model(*p),
+        Call::Material(f, p) => gl.material(*f, *p),
+        Call::ColorMaterial(f, m) => gl.color_material(*f, *m),
+        Call::ClipPlane(i, p) => gl.clip_plane(*i, *p),
         Call::DrawArrays {
             mode,
             positions,

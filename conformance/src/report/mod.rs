@@ -436,6 +436,8 @@ fn markdown(
         Group::Primitive,
         Group::Stiff,
         Group::Timing,
+        Group::Fog,
+        Group::Lighting,
     ];
     let _ = writeln!(o, "\n## Per scene and back end\n");
     for g in groups {

@@ -4,6 +4,8 @@
 //! (geometry where Mesa's f32 clippers are known to be wrong).
 
 mod combos;
+mod fog;
+mod lighting;
 pub mod oracle;
 mod primitives;
 mod stages;
@@ -86,6 +88,10 @@ pub enum Group {
     Stiff,
     /// Large random scenes, for timing.
     Timing,
+    /// Fog and the colour sum (issue 11).
+    Fog,
+    /// Lighting, materials and user clip planes (issue 11).
+    Lighting,
 }
 
 impl Group {
@@ -96,6 +102,8 @@ impl Group {
             Group::Primitive => "primitives",
             Group::Stiff => "stiff and extreme",
             Group::Timing => "timing",
+            Group::Fog => "fog and colour sum",
+            Group::Lighting => "lighting and clip planes",
         }
     }
 }
@@ -232,7 +240,16 @@ fn reset_state(r: &mut Rec, w: u32, h: u32) {
         Capability::PolygonOffsetPoint,
         Capability::ScissorTest,
         Capability::StencilTest,
-    ] {
+        Capability::Fog,
+        Capability::ColorSum,
+        Capability::Lighting,
+        Capability::ColorMaterial,
+        Capability::Normalize,
+        Capability::RescaleNormal,
+    ]
+    .into_iter()
+    .chain((0..6).map(Capability::ClipPlane))
+    {
         r.disable(cap);
     }
     r.enable(Capability::Dither)
@@ -268,6 +285,8 @@ pub fn all() -> Vec<Scene> {
     v.extend(combos::scenes());
     v.extend(primitives::scenes());
     v.extend(stiff::scenes());
+    v.extend(fog::scenes());
+    v.extend(lighting::scenes());
     v.extend(timing::scenes());
     v
 }

@@ -1,9 +1,8 @@
 //! Client vertex arrays: the pointers, `glDrawArrays`, `glDrawElements`,
 //! `glArrayElement`. The caller's arrays are read into f32 arrays for softgl
-//! at each draw (positions, colours, normals, secondary colours, fog
-//! coordinates); texture coordinates are accepted and, without texturing,
-//! have no effect on the image; edge flags (`glEdgeFlagPointer`) pick the
-//! edges polygon mode `GL_LINE`/`GL_POINT` draws.
+//! at each draw (positions, colours, normals); texture coordinates are
+//! accepted and, without texturing, have no effect on the image; edge flags
+//! (`glEdgeFlagPointer`) pick the edges polygon mode `GL_LINE`/`GL_POINT` draws.
 
 use super::enums::decode;
 use super::{now, outside, run_or_record};
@@ -108,8 +107,8 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         return Ok(None);
     }
     let color = (os.color.enabled && !os.color.ptr.is_null()).then_some(&os.color);
-    let normal = (os.normal.enabled && !os.normal.ptr.is_null()).then_some(&os.normal);
     let edge_flag = (os.edge_flag.enabled && !os.edge_flag.ptr.is_null()).then_some(&os.edge_flag);
+    let normal = (os.normal.enabled && !os.normal.ptr.is_null()).then_some(&os.normal);
     let secondary = (os.secondary.enabled && !os.secondary.ptr.is_null()).then_some(&os.secondary);
     let fog_coord = (os.fog_coord.enabled && !os.fog_coord.ptr.is_null()).then_some(&os.fog_coord);
     let (mut pos, mut col, mut nrm) = (Vec::new(), Vec::new(), Vec::new());

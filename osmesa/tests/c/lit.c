@@ -1,7 +1,8 @@
 /* Lighting through the C ABI, compared with Mesa: four scenes side by side
  * in one 256x256 image, each in its own viewport (GLU spheres and strips):
  * 1. one infinite light, specular (shininess 32), smooth;
- * 2. a positional spotlight with attenuation and a local viewer, 8 lights;
+ * 2. 8 lights (spot, attenuation, positional), a local viewer, linear fog
+ *    (its eye distance is the lighting's eye position);
  * 3. two-sided lighting with separate specular on a twisted strip;
  * 4. colour material (ambient and diffuse) with GL_NORMALIZE on a scaled
  *    sphere, flat shaded, cut by a user clip plane. */
@@ -74,7 +75,14 @@ int main(int argc, char **argv) {
   }
   materialv(GL_FRONT, GL_DIFFUSE, 0.9f, 0.9f, 0.9f, 1);
   glMaterialf(GL_FRONT, GL_SHININESS, 60);
+  glEnable(GL_FOG);
+  glFogi(GL_FOG_MODE, GL_LINEAR);
+  glFogf(GL_FOG_START, 3.5f);
+  glFogf(GL_FOG_END, 6.5f);
+  GLfloat fog[4] = {0.3f, 0.3f, 0.5f, 1};
+  glFogfv(GL_FOG_COLOR, fog);
   gluSphere(q, 1.2, 32, 24);
+  glDisable(GL_FOG);
   printf("scene 2 error 0x%x\n", glGetError());
   for (int i = 1; i < 8; i++) glDisable(GL_LIGHT0 + i);
   lightv(GL_LIGHT0, GL_DIFFUSE, 1, 1, 1, 1);

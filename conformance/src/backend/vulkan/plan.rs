@@ -301,6 +301,14 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
     for c in &rec.calls {
         match c {
             Call::Enable(cap) => {
+                if matches!(
+                    cap,
+                    Capability::Fog | Capability::ColorSum | Capability::Lighting | Capability::ClipPlane(_)
+                ) {
+                    return Err(format!(
+                        "{cap:?}: a fixed-function fragment stage this back end's pipelines do not have"
+                    ));
+                }
                 st.caps.insert(*cap, true);
             }
             Call::Disable(cap) => {
@@ -428,6 +436,17 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
                 }
             }
             Call::Color(c) => st.color = *c,
+            // Without GL_FOG, GL_COLOR_SUM, GL_LIGHTING and the clip planes
+            // (refused above) these change no pixel.
+            Call::Fog(_)
+            | Call::SecondaryColor(_)
+            | Call::FogCoord(_)
+            | Call::Normal(_)
+            | Call::Light(..)
+            | Call::LightModel(_)
+            | Call::Material(..)
+            | Call::ColorMaterial(..)
+            | Call::ClipPlane(..) => {}
             Call::Vertex(v) => {
                 let color = st.color;
                 st.batch.push((*v, color));
