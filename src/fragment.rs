@@ -41,7 +41,13 @@ pub struct FragmentStage<'t> {
     key: FragmentKey,
     uniforms: FragmentUniforms,
     target: Target<'t>,
+    /// Spans `..count` are the batch's; the storage is reused.
     batch: Vec<FragmentSpan>,
+    count: usize,
+    /// Whether the stages read the spans' colours and depths (a key without
+    /// a shading stage, or one leaving them to the span).
+    span_color: bool,
+    span_z: bool,
     /// The planes of the batch's primitives; the last is the current one's.
     planes: Vec<Planes>,
     error: Option<FragmentError>,
@@ -59,6 +65,9 @@ impl<'t> FragmentStage<'t> {
         interp::check_key(&key, &target)?;
         Ok(FragmentStage {
             specialist: specialist.filter(|s| *s.key() == key),
+            span_color: key.shade.is_none_or(|s| !s.color),
+            span_z: key.shade.is_none_or(|s| !s.depth),
+            count: 0,
             key,
             uniforms,
             target,
@@ -69,17 +78,18 @@ impl<'t> FragmentStage<'t> {
     }
 
     fn flush(&mut self) {
-        if self.batch.is_empty() {
+        if self.count == 0 {
             return;
         }
+        let spans = &self.batch[..self.count];
         let r = match self.specialist {
-            Some(s) => s.run_with_planes(&self.uniforms, &self.batch, &self.planes, &mut self.target),
-            None => interp::run_with_planes(&self.key, &self.uniforms, &self.batch, &self.planes, &mut self.target),
+            Some(s) => s.run_with_planes(&self.uniforms, spans, &self.planes, &mut self.target),
+            None => interp::run_with_planes(&self.key, &self.uniforms, spans, &self.planes, &mut self.target),
         };
         if let Err(e) = r {
             self.error.get_or_insert(e);
         }
-        self.batch.clear();
+        self.count = 0;
         // The current primitive's planes stay, as planes 0, for its next spans.
         let last = self.planes.len().saturating_sub(1);
         self.planes.drain(..last);
@@ -97,10 +107,21 @@ impl SpanSink for FragmentStage<'_> {
         if span.live_mask() == 0 {
             return;
         }
-        let mut s = span.clone();
+        if self.count == self.batch.len() {
+            self.batch.push(FragmentSpan::new(0, 0));
+        }
+        // Only what the stages read is copied: with planes, the header.
+        let s = &mut self.batch[self.count];
+        (s.x, s.y, s.len, s.mask) = (span.x, span.y, span.len, span.mask);
         s.planes = self.planes.len().saturating_sub(1) as u32;
-        self.batch.push(s);
-        if self.batch.len() == BATCH {
+        if self.span_color {
+            (s.r, s.g, s.b, s.a) = (span.r, span.g, span.b, span.a);
+        }
+        if self.span_z {
+            s.z = span.z;
+        }
+        self.count += 1;
+        if self.count == BATCH {
             self.flush();
         }
     }

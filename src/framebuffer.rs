@@ -390,13 +390,20 @@ impl Framebuffer {
             pixel::pack(format, rgba.map(|v| float_to_unorm(v, 255) as u8), None)
         };
         let bpp = format.bytes_per_pixel();
+        let all = bits == pixel::mask_bits(format, ColorMask::ALL);
+        let mut bytes = [0u8; 4];
+        pixel::store(format, &mut bytes, value);
         for y in rect.y0..rect.y1 {
             let start = self.color_offset(rect.x0, y);
             let len = (rect.x1 - rect.x0) as usize * bpp;
             let row = &mut self.color.bytes_mut()[start..][..len];
             for px in row.chunks_exact_mut(bpp) {
-                let old = pixel::load(format, px);
-                pixel::store(format, px, (value & bits) | (old & !bits));
+                if all {
+                    px.copy_from_slice(&bytes[..bpp]);
+                } else {
+                    let old = pixel::load(format, px);
+                    pixel::store(format, px, (value & bits) | (old & !bits));
+                }
             }
         }
     }

@@ -107,6 +107,8 @@ pub fn build(key: &FragmentKey, isa: &OwnedTargetIsa, func: &mut cranelift_codeg
     let mut fctx = FunctionBuilderContext::new();
     let b = FunctionBuilder::new(func, &mut fctx);
     let mut g = Gen::new(key, isa.pointer_type(), b);
+    // Specialists are compiled for the host (`host_isa`).
+    g.x86 = cfg!(target_arch = "x86_64");
     g.emit();
     g.b.seal_all_blocks();
     g.b.finalize(isa.frontend_config());
@@ -170,6 +172,10 @@ struct Gen<'a> {
     consts: Vec<(i64, Value)>,
     /// `255 - v` of the current blend, by `v`.
     inverses: Vec<(Value, Value)>,
+    /// Whether the target is x86-64 (whose own instructions some stages use).
+    x86: bool,
+    /// Splatted f32 constants of the current group, by their bits.
+    fconsts: Vec<(u32, Value)>,
 }
 
 impl<'a> Gen<'a> {
@@ -180,6 +186,8 @@ impl<'a> Gen<'a> {
             b,
             consts: Vec::new(),
             inverses: Vec::new(),
+            x86: false,
+            fconsts: Vec::new(),
         }
     }
 
@@ -262,6 +270,7 @@ impl<'a> Gen<'a> {
         // dozen splats live across the loop costs more register-allocation time
         // than the loads (which hit L1) cost at run time.
         self.consts.clear();
+        self.fconsts.clear();
         let uniforms = Uniforms::load(self, u, call);
         let group = self.group(&sv, gi, bits);
         self.stages(group, &sv, &uniforms, next);
@@ -312,7 +321,7 @@ impl<'a> Gen<'a> {
         let lane_bits = self.vconst([1, 2, 4, 8]);
         let sel = self.b.ins().band(bits_v, lane_bits);
         let zero = self.splat(0);
-        let live = self.b.ins().icmp(IntCC::NotEqual, sel, zero);
+        let live = self.b.ins().icmp(IntCC::Equal, sel, lane_bits);
         let lane0 = self.b.ins().ishl_imm_u(gi, 2);
         let lane0_p = self.b.ins().uextend(self.ptr, lane0);
         let bpp = self.key.color_format.bytes_per_pixel() as i64;

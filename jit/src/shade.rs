@@ -184,26 +184,40 @@ pub const PLANES: usize = 10;
 
 /// The attribute planes of one primitive in llvmpipe's frame (x right, y
 /// down from the top row, pixel centres at integer coordinates): attribute
-/// `k` at pixel `(px, row)` is `fma(dady[k], row, fma(dadx[k], px, a0[k]))`
-/// (`docs/llvmpipe-facts.md` §11). `#[repr(C)]`: compiled code reads it.
-#[repr(C)]
+/// `k` at pixel `(px, row)` is `fma(dady, row, fma(dadx, px, a0))`
+/// (`docs/llvmpipe-facts.md` §11). `#[repr(C)]`: compiled code reads it, each
+/// coefficient stored four times so that one aligned vector load splats it.
+#[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Planes {
-    pub a0: [f32; PLANES],
-    pub dadx: [f32; PLANES],
-    pub dady: [f32; PLANES],
+    /// `[a0, dadx, dady]` of slot `k`, each repeated in four lanes.
+    pub coeffs: [[[f32; 4]; 3]; PLANES],
 }
 
 impl Planes {
+    /// Sets slot `k`'s plane.
+    #[inline]
+    pub fn set(&mut self, k: usize, a0: f32, dadx: f32, dady: f32) {
+        self.coeffs[k] = [[a0; 4], [dadx; 4], [dady; 4]];
+    }
+
+    /// Slot `k`'s plane as `(a0, dadx, dady)`.
+    #[inline]
+    pub fn get(&self, k: usize) -> (f32, f32, f32) {
+        let [a0, dadx, dady] = self.coeffs[k];
+        (a0[0], dadx[0], dady[0])
+    }
+
     /// Attribute `k` at pixel `(px, row)`, with llvmpipe's fused multiply-adds.
     #[inline]
     pub fn at(&self, k: usize, px: f32, row: f32) -> f32 {
-        self.dady[k].mul_add(row, self.dadx[k].mul_add(px, self.a0[k]))
+        let (a0, dadx, dady) = self.get(k);
+        dady.mul_add(row, dadx.mul_add(px, a0))
     }
 
     /// Sets slot `k` to the constant `v` (points, flat colours).
     pub fn constant(&mut self, k: usize, v: f32) {
-        (self.a0[k], self.dadx[k], self.dady[k]) = (v, 0.0, 0.0);
+        self.set(k, v, 0.0, 0.0);
     }
 }
 

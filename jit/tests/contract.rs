@@ -286,13 +286,12 @@ fn planes(rng: &mut Rng) -> Planes {
     let mut p = Planes::default();
     for k in 0..softgl_jit::shade::PLANES {
         let scale = if rng.below(3) == 0 { 1.0 } else { 1e-3 };
-        p.a0[k] = if rng.below(2) == 0 {
+        let a0 = if rng.below(2) == 0 {
             rng.below(1000) as f32 / 999.0
         } else {
             float(rng)
         };
-        p.dadx[k] = float(rng) * scale;
-        p.dady[k] = float(rng) * scale;
+        p.set(k, a0, float(rng) * scale, float(rng) * scale);
     }
     p
 }

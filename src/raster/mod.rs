@@ -134,15 +134,19 @@ pub(crate) fn ceil_div(a: i64, b: i64) -> i64 {
     -((-a).div_euclid(b))
 }
 
+/// Fills slot `i` of a span with the fragment at `x` (what the planes do not give).
+pub(crate) type FillSlot<'a> = dyn FnMut(u32, &mut FragmentSpan, usize) + 'a;
+
 /// Emits a row `y` from `x0` to `x1` (inclusive) in spans of at most 64 fragments,
-/// with `shade(x, slot)` filling each slot.
+/// with `shade(x, slot)` filling each slot when given (the planes carry
+/// everything else).
 pub(crate) fn emit_row(
     sink: &mut dyn SpanSink,
     span: &mut FragmentSpan,
     y: u32,
     x0: u32,
     x1: u32,
-    mut shade: impl FnMut(u32, &mut FragmentSpan, usize),
+    mut shade: Option<&mut FillSlot<'_>>,
 ) {
     let mut x = x0;
     while x <= x1 {
@@ -151,8 +155,10 @@ pub(crate) fn emit_row(
         span.y = y;
         span.len = n;
         span.mask = if n == 64 { u64::MAX } else { (1u64 << n) - 1 };
-        for i in 0..n {
-            shade(x + i, span, i as usize);
+        if let Some(shade) = shade.as_mut() {
+            for i in 0..n {
+                shade(x + i, span, i as usize);
+            }
         }
         sink.span(span);
         x += n;

@@ -1,6 +1,8 @@
 //! Points: squares of an integer size around the snapped position.
 
-use super::{constant_planes, depth_value, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
+use super::{
+    constant_planes, depth_value, emit_row, floor_div, snap, FillSlot, RasterParams, RasterVertex, SpanSink, ONE,
+};
 use softgl_jit::FragmentSpan;
 
 /// The integer size llvmpipe rasterizes for `size`: the size on the 1/256
@@ -37,6 +39,12 @@ pub fn point(v: &RasterVertex, size: f32, params: &RasterParams, sink: &mut dyn 
     let z = depth_value(v.z, params.depth);
     let mut span = FragmentSpan::new(0, 0);
     for y in y0..=y1 {
-        emit_row(sink, &mut span, y as u32, x0 as u32, x1 as u32, |_, s, i| s.z[i] = z);
+        let mut fill_z = |_: u32, s: &mut FragmentSpan, i: usize| s.z[i] = z;
+        let shade: Option<&mut FillSlot<'_>> = if params.depth.is_some() {
+            Some(&mut fill_z)
+        } else {
+            None
+        };
+        emit_row(sink, &mut span, y as u32, x0 as u32, x1 as u32, shade);
     }
 }

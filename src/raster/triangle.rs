@@ -1,6 +1,6 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 
-use super::{ceil_div, emit_row, floor_div, snap, RasterParams, RasterVertex, SpanSink, ONE};
+use super::{ceil_div, emit_row, floor_div, snap, FillSlot, RasterParams, RasterVertex, SpanSink, ONE};
 use crate::geometry::varying::Varyings;
 use softgl_jit::interp::row_of;
 use softgl_jit::shade::{slot, Planes};
@@ -118,12 +118,19 @@ pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterP
         if lo > hi {
             continue;
         }
-        emit_row(sink, &mut span, py as u32, lo as u32, hi as u32, |x, s, i| {
+        let row = row_of(py as u32, params.height);
+        let mut fill_z = |x: u32, s: &mut FragmentSpan, i: usize| {
             if let Some(format) = per_fragment_z {
-                let z = planes.at(slot::Z, x as f32, row_of(py as u32, params.height));
+                let z = planes.at(slot::Z, x as f32, row);
                 s.z[i] = crate::framebuffer::depth_to_unorm(f64::from(z), format);
             }
-        });
+        };
+        let shade: Option<&mut FillSlot<'_>> = if per_fragment_z.is_some() {
+            Some(&mut fill_z)
+        } else {
+            None
+        };
+        emit_row(sink, &mut span, py as u32, lo as u32, hi as u32, shade);
     }
 }
 
@@ -147,7 +154,7 @@ fn setup_planes(
     }
     let setup = Setup::new(v.map(|v| (v.x, v.y_down)));
     let mut planes = Planes::default();
-    let mut put = |k: usize, p: Plane| (planes.a0[k], planes.dadx[k], planes.dady[k]) = (p.a0, p.dadx, p.dady);
+    let mut put = |k: usize, p: Plane| planes.set(k, p.a0, p.dadx, p.dady);
     let layout = params.layout;
     let over_w = |k: usize| setup.plane(v.map(|v| v.v[k] * v.inv_w));
     put(slot::INV_W, setup.plane(v.map(|v| v.inv_w)));

@@ -5,7 +5,7 @@
 //! interpreter's.
 
 use super::{mem, Gen, Group, SpanCall, SpanValues, I32X4};
-use crate::key::ShadeKey;
+use crate::key::{DepthFormat, ShadeKey};
 use crate::shade::{exp2_coeffs, slot, FogMode, FogUniforms, Planes};
 use crate::uniforms::FragmentUniforms;
 use cranelift_codegen::ir::condcodes::FloatCC;
@@ -31,13 +31,16 @@ impl Gen<'_> {
         let x = self.b.ins().splat(I32X4, x);
         let idx = self.vconst([0, 1, 2, 3]);
         let x = self.b.ins().iadd(x, idx);
-        let px = self.b.ins().fcvt_from_uint(F32X4, x);
+        let px = self.b.ins().fcvt_from_sint(F32X4, x);
         let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
 
         if key.depth {
             if let Some(format) = self.key.depth_format {
                 let z = at(self, slot::Z);
-                g.z = Some(self.unorm_lanes(z, format.max_value()));
+                g.z = Some(match format {
+                    DepthFormat::D32 => self.unorm_lanes(z, format.max_value()),
+                    DepthFormat::D16 | DepthFormat::D24 => self.unorm_lanes_small(z, format.max_value()),
+                });
             }
         }
         if !key.color {
@@ -78,25 +81,31 @@ impl Gen<'_> {
                 *ck = self.b.ins().fadd(a, b);
             }
         }
-        g.rgba = c.map(|v| self.unorm_lanes(v, 255));
+        g.rgba = c.map(|v| self.unorm_lanes_small(v, 255));
     }
 
-    /// Plane `k` at the lanes' pixels: `fma(dady, row, fma(dadx, px, a0))`.
+    /// Plane `k` at the lanes' pixels: `fma(dady, row, fma(dadx, px, a0))`,
+    /// each coefficient one aligned vector load (`Planes` stores them splatted).
     fn plane(&mut self, planes: Value, k: usize, px: Value, row: Value) -> Value {
-        let load = |s: &mut Self, field: usize| {
-            let v = s.b.ins().load(types::F32, mem(), planes, (field + 4 * k) as i32);
-            s.b.ins().splat(F32X4, v)
+        let load = |s: &mut Self, c: usize| {
+            let off = offset_of!(Planes, coeffs) + (3 * k + c) * 16;
+            s.b.ins().load(F32X4, mem().with_aligned(), planes, off as i32)
         };
-        let a0 = load(self, offset_of!(Planes, a0));
-        let dadx = load(self, offset_of!(Planes, dadx));
-        let dady = load(self, offset_of!(Planes, dady));
+        let a0 = load(self, 0);
+        let dadx = load(self, 1);
+        let dady = load(self, 2);
         let inner = self.b.ins().fma(dadx, px, a0);
         self.b.ins().fma(dady, row, inner)
     }
 
     fn fconst(&mut self, v: f32) -> Value {
+        if let Some(&(_, c)) = self.fconsts.iter().find(|(k, _)| *k == v.to_bits()) {
+            return c;
+        }
         let c = self.b.ins().f32const(v);
-        self.b.ins().splat(F32X4, c)
+        let c = self.b.ins().splat(F32X4, c);
+        self.fconsts.push((v.to_bits(), c));
+        c
     }
 
     fn uniform_f32(&mut self, u: Value, off: usize) -> Value {
@@ -123,6 +132,27 @@ impl Gen<'_> {
         let v = self.b.ins().fmul(v, m);
         let v = self.b.ins().nearest(v);
         self.b.ins().fcvt_to_uint_sat(I32X4, v)
+    }
+
+    /// [`Self::unorm_lanes`] for `max < 2^24` in fewer instructions (the
+    /// same values: rounding is monotonic, 0 and `max` are exact): `v · max`,
+    /// lanes at or above `max` set to it (a compare, false for NaN), rounded
+    /// half to even, converted (x86's conversion gives `i32::MIN` for NaN
+    /// and negative overflow), negatives to 0.
+    fn unorm_lanes_small(&mut self, v: Value, max: u32) -> Value {
+        let m = self.fconst(max as f32);
+        let t = self.b.ins().fmul(v, m);
+        let over = self.b.ins().fcmp(FloatCC::GreaterThanOrEqual, t, m);
+        let over = self.b.ins().bitcast(F32X4, MemFlagsData::new(), over);
+        let t = self.b.ins().bitselect(over, m, t);
+        let r = self.b.ins().nearest(t);
+        let i = if self.x86 {
+            self.b.ins().x86_cvtt2dq(I32X4, r)
+        } else {
+            self.b.ins().fcvt_to_sint_sat(I32X4, r)
+        };
+        let zero = self.splat(0);
+        self.b.ins().smax(i, zero)
     }
 
     /// The fog factor of `coord` (`crate::shade::fog_factor`).
@@ -153,15 +183,37 @@ impl Gen<'_> {
                 self.exp2(x)
             }
         };
-        self.saturate(f)
+        self.saturate_factor(f)
+    }
+
+    /// `clamp(f, 0, 1)` with NaN as 0 by two compares, for the fog factor:
+    /// it differs from [`Self::saturate`] only in making −0 +0, which no
+    /// colour byte can see (`fog·(1 − f) + c·f` is then ±0 either way, and
+    /// both convert to 0).
+    fn saturate_factor(&mut self, f: Value) -> Value {
+        let one = self.fconst(1.0);
+        let zero = self.fconst(0.0);
+        let f = self.select_if(FloatCC::GreaterThanOrEqual, f, one);
+        let positive = self.b.ins().fcmp(FloatCC::GreaterThan, f, zero);
+        let bits = self.b.ins().bitcast(I32X4, MemFlagsData::new(), f);
+        let bits = self.b.ins().band(bits, positive);
+        self.b.ins().bitcast(F32X4, MemFlagsData::new(), bits)
+    }
+
+    /// `bound` in the lanes where `v <cc> bound` (false for NaN), else `v`.
+    fn select_if(&mut self, cc: FloatCC, v: Value, bound: Value) -> Value {
+        let m = self.b.ins().fcmp(cc, v, bound);
+        let m = self.b.ins().bitcast(F32X4, MemFlagsData::new(), m);
+        self.b.ins().bitselect(m, bound, v)
     }
 
     /// llvmpipe's `exp2` (`crate::shade::exp2`).
     fn exp2(&mut self, x: Value) -> Value {
         let hi = self.fconst(128.0);
         let lo = self.fconst(-126.99999);
-        let x = self.b.ins().fmin(x, hi);
-        let x = self.b.ins().fmax(x, lo);
+        // The clamp by compares keeps NaN, as the reference does.
+        let x = self.select_if(FloatCC::GreaterThan, x, hi);
+        let x = self.select_if(FloatCC::LessThan, x, lo);
         let ipart = self.b.ins().floor(x);
         let fpart = self.b.ins().fsub(x, ipart);
         let i = self.b.ins().fcvt_to_sint_sat(I32X4, ipart);
