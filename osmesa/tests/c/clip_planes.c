@@ -5,37 +5,13 @@
  * 3. glDrawElements with a GL_SHORT normal array, lit, under a plane given
  *    with a rotated modelview;
  * 4. lines crossing a plane and the near plane. */
-#include "common.h"
-#include <GL/glu.h>
-#include <math.h>
-
-#define W 256
-#define H 256
-
-static void view(int i) {
-  glViewport((i % 2) * W / 2, (i / 2) * H / 2, W / 2, H / 2);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  gluPerspective(40.0, 1.0, 1.0, 20.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  gluLookAt(0, 0.5, 5, 0, 0, 0, 0, 1, 0);
-}
+#include "scenes.h"
 
 int main(int argc, char **argv) {
-  start(argc, argv);
-  static unsigned char buf[W * H * 4];
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-  CHECK(ctx);
-  CHECK(OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H));
-  glClearColor(0.05f, 0.05f, 0.1f, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_DEPTH_TEST);
+  GLUquadric *q = begin_scenes(argc, argv);
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
   GLfloat pos[4] = {1, 1, 2, 0};
-  GLUquadric *q = gluNewQuadric();
-  CHECK(q);
 
   /* 1 */
   view(0);
@@ -122,10 +98,5 @@ int main(int argc, char **argv) {
   glDisable(GL_CLIP_PLANE5);
   printf("scene 4 error 0x%x\n", glGetError());
 
-  glFinish();
-  dump("clip_planes.color", buf, sizeof buf);
-  gluDeleteQuadric(q);
-  OSMesaDestroyContext(ctx);
-  printf("done\n");
-  return 0;
+  return end_scenes("clip_planes.color", q);
 }
