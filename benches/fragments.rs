@@ -11,9 +11,11 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
+use softgl_jit::shade::slot;
 use softgl_jit::{
-    BlendFactor, BlendKey, ColorFormat, CompareFunc, DepthFormat, DepthKey, DepthTarget, FragmentKey, FragmentSpan,
-    FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target, SPAN_MAX,
+    BlendFactor, BlendKey, ColorFormat, CompareFunc, DepthFormat, DepthKey, DepthTarget, FogMode, FogUniforms,
+    FragmentKey, FragmentSpan, FragmentUniforms, LogicOp, Planes, ShadeKey, Specialist, StencilKey, StencilOp, Target,
+    SPAN_MAX,
 };
 
 mod common;
@@ -31,7 +33,13 @@ trait Backend {
 
     fn prepare(&self, key: &FragmentKey) -> Self::Prepared;
 
-    fn run(&self, prepared: &Self::Prepared, u: &FragmentUniforms, spans: &[FragmentSpan], target: &mut Target<'_>);
+    fn run(
+        &self,
+        prepared: &Self::Prepared,
+        u: &FragmentUniforms,
+        work: (&[FragmentSpan], &[Planes]),
+        target: &mut Target<'_>,
+    );
 }
 
 /// The reference interpreter.
@@ -45,8 +53,14 @@ impl Backend for Interpreter {
         *key
     }
 
-    fn run(&self, key: &FragmentKey, u: &FragmentUniforms, spans: &[FragmentSpan], target: &mut Target<'_>) {
-        softgl_jit::interp::run(key, u, spans, target).expect("scene keys match their buffers");
+    fn run(
+        &self,
+        key: &FragmentKey,
+        u: &FragmentUniforms,
+        (spans, planes): (&[FragmentSpan], &[Planes]),
+        target: &mut Target<'_>,
+    ) {
+        softgl_jit::interp::run_with_planes(key, u, spans, planes, target).expect("scene keys match their buffers");
     }
 }
 
@@ -61,8 +75,15 @@ impl Backend for Jit {
         Specialist::compile(key).expect("bench keys compile")
     }
 
-    fn run(&self, s: &Specialist, u: &FragmentUniforms, spans: &[FragmentSpan], target: &mut Target<'_>) {
-        s.run(u, spans, target).expect("scene keys match their buffers");
+    fn run(
+        &self,
+        s: &Specialist,
+        u: &FragmentUniforms,
+        (spans, planes): (&[FragmentSpan], &[Planes]),
+        target: &mut Target<'_>,
+    ) {
+        s.run_with_planes(u, spans, planes, target)
+            .expect("scene keys match their buffers");
     }
 }
 
@@ -95,6 +116,8 @@ struct Scene {
     key: FragmentKey,
     uniforms: FragmentUniforms,
     buffers: Buffers,
+    /// The planes of the spans' primitive, for keys with a shading stage.
+    planes: Vec<Planes>,
 }
 
 /// Full 64-wide spans covering the target: red follows x, green y, blue and
@@ -154,6 +177,30 @@ fn scenes() -> Vec<Scene> {
         ..BlendKey::DEFAULT
     };
     let rgba8 = FragmentKey::new(ColorFormat::Rgba8, None, false);
+    // One perspective triangle's planes over the target: colours and the fog
+    // coordinate over w, 1/w from 1 to 0.5 across, depth across the D24 range.
+    let mut planes = Planes::default();
+    planes.set(slot::INV_W, 1.0, -0.5 / SIZE as f32, 0.0);
+    for (k, (a0, dx, dy)) in [(1.0, -1.0, 0.5), (0.2, 1.5, 0.0), (0.5, 0.0, 1.0), (1.0, -0.2, -0.2)]
+        .into_iter()
+        .enumerate()
+    {
+        planes.set(slot::COLOR + k, a0, dx / SIZE as f32, dy / SIZE as f32);
+    }
+    for k in 0..3 {
+        planes.set(slot::SECONDARY + k, 0.1, 0.1 / SIZE as f32, 0.0);
+    }
+    planes.set(slot::FOG, 0.5, 4.0 / SIZE as f32, 2.0 / SIZE as f32);
+    planes.set(slot::Z, 0.1, 0.4 / SIZE as f32, 0.4 / SIZE as f32);
+    let depth_key = FragmentKey {
+        depth: Some(less),
+        ..FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), false)
+    };
+    let shaded = ShadeKey {
+        color: true,
+        depth: true,
+        ..ShadeKey::default()
+    };
     let stencil_buffers = Buffers {
         stencil: Some((0..SIZE * SIZE).map(|i| (i % 3) as u8).collect()),
         ..color_only.clone()
@@ -164,6 +211,40 @@ fn scenes() -> Vec<Scene> {
             key: rgba8,
             uniforms: FragmentUniforms::default(),
             buffers: color_only.clone(),
+            planes: Vec::new(),
+        },
+        Scene {
+            name: "shaded",
+            key: FragmentKey {
+                shade: Some(shaded),
+                ..depth_key
+            },
+            uniforms: FragmentUniforms::default(),
+            buffers: Buffers {
+                depth: Some(cleared_depth.clone()),
+                ..color_only.clone()
+            },
+            planes: vec![planes],
+        },
+        Scene {
+            name: "shaded_fog",
+            key: FragmentKey {
+                shade: Some(ShadeKey {
+                    color_sum: true,
+                    fog: Some(FogMode::Exp),
+                    ..shaded
+                }),
+                ..depth_key
+            },
+            uniforms: FragmentUniforms {
+                fog: FogUniforms::new(0.0, 1.0, 0.5, [0.5, 0.6, 0.7]),
+                ..FragmentUniforms::default()
+            },
+            buffers: Buffers {
+                depth: Some(cleared_depth.clone()),
+                ..color_only.clone()
+            },
+            planes: vec![planes],
         },
         Scene {
             name: "depth_only",
@@ -176,6 +257,7 @@ fn scenes() -> Vec<Scene> {
                 depth: Some(cleared_depth.clone()),
                 ..color_only.clone()
             },
+            planes: Vec::new(),
         },
         Scene {
             name: "blend_only",
@@ -185,6 +267,7 @@ fn scenes() -> Vec<Scene> {
             },
             uniforms: FragmentUniforms::default(),
             buffers: color_only.clone(),
+            planes: Vec::new(),
         },
         Scene {
             name: "logic_op",
@@ -194,6 +277,7 @@ fn scenes() -> Vec<Scene> {
             },
             uniforms: FragmentUniforms::default(),
             buffers: color_only.clone(),
+            planes: Vec::new(),
         },
         Scene {
             name: "stencil_only",
@@ -211,6 +295,7 @@ fn scenes() -> Vec<Scene> {
                 ..FragmentUniforms::default()
             },
             buffers: stencil_buffers,
+            planes: Vec::new(),
         },
         Scene {
             name: "all_ops",
@@ -225,6 +310,7 @@ fn scenes() -> Vec<Scene> {
                 depth: Some(cleared_depth),
                 stencil: Some(vec![0; (SIZE * SIZE) as usize]),
             },
+            planes: Vec::new(),
         },
     ]
 }
@@ -243,7 +329,7 @@ fn bench_backend<B: Backend>(c: &mut Criterion, backend: &B) {
                     || scene.buffers.clone(),
                     |buffers| {
                         let mut target = buffers.target();
-                        backend.run(&prepared, &scene.uniforms, &spans, &mut target);
+                        backend.run(&prepared, &scene.uniforms, (&spans, &scene.planes), &mut target);
                         black_box(target.color());
                     },
                     BatchSize::LargeInput,

@@ -4,7 +4,7 @@
 //! reads them is [`crate::geometry::lighting`].
 
 use crate::state::Face;
-use glam::{DMat4, Mat4, Vec4};
+use glam::{Mat4, Vec4};
 
 /// `GL_MAX_LIGHTS`.
 pub const MAX_LIGHTS: usize = 8;
@@ -334,7 +334,7 @@ impl LightingState {
             .ok_or(crate::GlError::InvalidEnum)?;
         // Mesa keeps the plane in f32: e_j = p · column j of the inverse,
         // summed in order (`_mesa_transform_vector`).
-        let inv = inverse(mv).as_mat4().to_cols_array();
+        let inv = crate::inverse::inverse(mv).to_cols_array();
         let p = plane.map(|c| c as f32);
         *slot = [0, 1, 2, 3].map(|j| {
             let c = &inv[4 * j..4 * j + 4];
@@ -347,12 +347,6 @@ impl LightingState {
     pub fn clipping(&self) -> bool {
         self.clip_enabled.iter().any(|&e| e)
     }
-}
-
-/// The inverse of `m` computed in f64 (Mesa inverts in f32 with its own
-/// per-matrix-type code; the results agree to about an ulp).
-pub fn inverse(m: &Mat4) -> DMat4 {
-    m.as_dmat4().inverse()
 }
 
 /// Mesa's `TRANSFORM_POINT`: `m · p` in f32, terms summed in column order.

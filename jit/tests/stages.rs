@@ -8,14 +8,16 @@
 //! through the key's compiled specialist on a copy of it: the two must leave
 //! the buffers identical, so every case here also pins the JIT.
 
-use softgl_jit::interp::run;
+use softgl_jit::interp::{run, run_with_planes};
 use softgl_jit::key::Stages;
 use softgl_jit::pixel::{self, BAYER4};
+use softgl_jit::shade::slot;
 use softgl_jit::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, DepthTarget,
     FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, KeyError, LogicOp, Specialist, Stage, StencilKey,
     StencilOp, Target, SPAN_MAX,
 };
+use softgl_jit::{FogMode, FogUniforms, Planes, ShadeKey};
 
 // ---------------------------------------------------------------------------
 // Fixtures: owned buffers, spans, and the memory layout as the docs state it.
@@ -140,6 +142,17 @@ impl Fb {
             assert!(jit == *self, "JIT and interpreter buffers differ for {key:?}");
         }
         r
+    }
+
+    /// [`Fb::run`] for keys with a shading stage, spans naming `planes`.
+    fn run_planes(&mut self, key: &FragmentKey, u: &FragmentUniforms, spans: &[FragmentSpan], planes: &[Planes]) {
+        let mut jit = self.clone();
+        let specialist = Specialist::compile(key).expect("a valid key compiles");
+        self.run_with(|t| run_with_planes(key, u, spans, planes, t))
+            .expect("the key names the buffers");
+        jit.run_with(|t| specialist.run_with_planes(u, spans, planes, t))
+            .expect("the key names the buffers");
+        assert!(jit == *self, "JIT and interpreter buffers differ for {key:?}");
     }
 
     fn run_with(&mut self, f: impl FnOnce(&mut Target<'_>) -> Result<(), FragmentError>) -> Result<(), FragmentError> {
@@ -1841,4 +1854,103 @@ fn invalid_key_is_an_error_and_writes_nothing() {
     // The normalized key runs.
     fb.run(&key.normalized(), &uniforms(), &spans).unwrap();
     assert_eq!(fb.pixel(0, 0), RED);
+}
+
+// ---------------------------------------------------------------------------
+// The shading stage: planes to colour and depth.
+// ---------------------------------------------------------------------------
+
+/// `round(c · 255)` of a colour clamped to [0, 1] (§2.14.9).
+fn spec_unorm8(c: f64) -> u8 {
+    (c.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+/// A 4x1 RGBA8 + D24 framebuffer, the depth test ALWAYS writing, and one
+/// full span over it naming planes 0.
+fn shaded(shade: ShadeKey) -> (Fb, FragmentKey, Vec<FragmentSpan>) {
+    let fb = Fb::new(4, 1, ColorFormat::Rgba8).with_depth(DepthFormat::D24, 0);
+    let key = FragmentKey {
+        depth: Some(DepthKey {
+            func: CompareFunc::Always,
+            write: true,
+        }),
+        shade: Some(shade),
+        ..fb.key()
+    };
+    let s = span(0, 0, &[([0; 4], 0); 4]);
+    (fb, key, vec![s])
+}
+
+#[test]
+fn shading_interpolates_over_w_divides_and_takes_depth_from_its_plane() {
+    let (mut fb, key, spans) = shaded(ShadeKey {
+        color: true,
+        depth: true,
+        ..ShadeKey::default()
+    });
+    // 1/w = 2 everywhere; red over w from 0.4 rising 0.125 a pixel (red 0.2 +
+    // 0.0625 x); green over w 1.2 (0.6); blue 0; alpha over w 2 (1.0). Depth
+    // 0.25 + 0.125 x. Row 0 of a 1-high target is llvmpipe's row 0, so dy is unused.
+    let mut p = Planes::default();
+    p.set(slot::INV_W, 2.0, 0.0, 7.0);
+    p.set(slot::COLOR, 0.4, 0.125, 3.0);
+    p.constant(slot::COLOR + 1, 1.2);
+    p.constant(slot::COLOR + 3, 2.0);
+    p.set(slot::Z, 0.25, 0.125, 5.0);
+    fb.run_planes(&key, &uniforms(), &spans, &[p]);
+    for x in 0..4u32 {
+        let r = (0.4 + 0.125 * f64::from(x)) / 2.0;
+        assert_eq!(fb.pixel(x, 0), &[spec_unorm8(r), spec_unorm8(0.6), 0, 255], "x = {x}");
+        let z = 0.25 + 0.125 * f64::from(x);
+        assert_eq!(fb.depth(x, 0), (z * f64::from(0xff_ffffu32)).round() as u32);
+    }
+}
+
+#[test]
+fn flat_colours_are_their_planes_values_and_the_sum_saturates() {
+    let (mut fb, key, spans) = shaded(ShadeKey {
+        color: true,
+        flat: true,
+        color_sum: true,
+        ..ShadeKey::default()
+    });
+    let mut p = Planes::default();
+    p.constant(slot::INV_W, 4.0); // not divided by: flat
+    for (k, v) in [(0, 0.8), (1, 0.1), (2, 0.35), (3, 0.4)] {
+        p.constant(slot::COLOR + k, v);
+    }
+    for (k, v) in [(0, 0.5), (1, 0.25), (2, 0.0)] {
+        p.constant(slot::SECONDARY + k, v);
+    }
+    fb.run_planes(&key, &uniforms(), &spans, &[p]);
+    // RGB sums (0.8 + 0.5 saturates), alpha the primary's.
+    assert_eq!(
+        fb.pixel(2, 0),
+        &[255, spec_unorm8(0.35), spec_unorm8(0.35), spec_unorm8(0.4)]
+    );
+}
+
+#[test]
+fn linear_fog_blends_towards_the_fog_colour() {
+    let (mut fb, key, spans) = shaded(ShadeKey {
+        color: true,
+        fog: Some(FogMode::Linear),
+        ..ShadeKey::default()
+    });
+    // Fog coordinate x (over w, w = 1), start 0, end 4: f = (4 − x) / 4.
+    let mut p = Planes::default();
+    p.constant(slot::INV_W, 1.0);
+    p.constant(slot::COLOR, 1.0);
+    p.constant(slot::COLOR + 3, 0.6);
+    p.set(slot::FOG, 0.0, 1.0, 0.0);
+    let u = FragmentUniforms {
+        fog: FogUniforms::new(0.0, 4.0, 1.0, [0.0, 0.7, 1.0]),
+        ..uniforms()
+    };
+    fb.run_planes(&key, &u, &spans, &[p]);
+    for x in 0..4u32 {
+        let f = (4.0 - f64::from(x)) / 4.0;
+        let want = [spec_unorm8(f), spec_unorm8((1.0 - f) * 0.7), spec_unorm8(1.0 - f), 153];
+        assert_eq!(fb.pixel(x, 0), &want, "x = {x}");
+    }
 }

@@ -265,61 +265,7 @@ pub struct LightSetup {
     fast: bool,
 }
 
-/// Mesa's `_math_matrix_is_length_preserving` for a matrix analysed from
-/// scratch (`math/m_matrix.c` `analyse_from_scratch`): only rotation and
-/// translation flags.
-pub fn length_preserving(m: &Mat4) -> bool {
-    let m = m.to_cols_array();
-    let mut mask = 0u32;
-    for (i, &v) in m.iter().enumerate() {
-        if v == 0.0 {
-            mask |= 1 << i;
-        }
-    }
-    for i in [0, 5, 10, 15] {
-        if m[i] == 1.0 {
-            mask |= 1 << (i + 16);
-        }
-    }
-    let zero = |l: &[usize]| l.iter().fold(0u32, |a, &i| a | (1 << i));
-    let one = |l: &[usize]| l.iter().fold(0u32, |a, &i| a | (1 << (i + 16)));
-    let identity = one(&[0, 5, 10, 15]) | zero(&[1, 2, 3, 4, 6, 7, 8, 9, 11, 12, 13, 14]);
-    let two_d_no_rot = zero(&[4, 8, 1, 9, 2, 6, 14, 3, 7, 11]) | one(&[10, 15]);
-    let two_d = zero(&[8, 9, 2, 6, 14, 3, 7, 11]) | one(&[10, 15]);
-    let three_d_no_rot = zero(&[4, 8, 1, 9, 2, 6, 3, 7, 11]) | one(&[15]);
-    let three_d = zero(&[3, 7, 11]) | one(&[15]);
-    let sq = |x: f32| x * x;
-    let eps = sq(1e-6);
-    // Mesa sets a flag when `SQ(..) > SQ(1e-6F)`; NaN sets none.
-    let over = |x: f32| x > eps;
-    if mask == identity {
-        true
-    } else if mask & two_d_no_rot == two_d_no_rot {
-        m[0] == 1.0 && m[5] == 1.0
-    } else if mask & two_d == two_d {
-        let mm = m[0] * m[0] + m[1] * m[1];
-        let m4m4 = m[4] * m[4] + m[5] * m[5];
-        let mm4 = m[0] * m[4] + m[1] * m[5];
-        !over(sq(mm - 1.0)) && !over(sq(m4m4 - 1.0)) && !over(sq(mm4))
-    } else if mask & three_d_no_rot == three_d_no_rot {
-        // Scale flags unless all three are (within 1e-6) one.
-        sq(m[0] - m[5]) < eps && sq(m[0] - m[10]) < eps && !over(sq(m[0] - 1.0))
-    } else if mask & three_d == three_d {
-        let c1 = dot3_c([m[0], m[1], m[2]], [m[0], m[1], m[2]]);
-        let c2 = dot3_c([m[4], m[5], m[6]], [m[4], m[5], m[6]]);
-        let c3 = dot3_c([m[8], m[9], m[10]], [m[8], m[9], m[10]]);
-        let d1 = dot3_c([m[0], m[1], m[2]], [m[4], m[5], m[6]]);
-        let no_scale = sq(c1 - c2) < eps && sq(c1 - c3) < eps && !over(sq(c1 - 1.0));
-        let cp = [
-            m[1] * m[6] - m[2] * m[5] - m[8],
-            m[2] * m[4] - m[0] * m[6] - m[9],
-            m[0] * m[5] - m[1] * m[4] - m[10],
-        ];
-        no_scale && sq(d1) < eps && dot3_c(cp, cp) < eps
-    } else {
-        false
-    }
-}
+pub use crate::inverse::length_preserving;
 
 impl LightSetup {
     /// The constants for drawing with `state` under the modelview `mv`.
@@ -332,7 +278,7 @@ impl LightSetup {
         // main/light.c: _mesa_update_lighting and _mesa_update_tnl_spaces.
         let need_vertices = positional || spot || separate || state.local_viewer;
         let eye_space = need_vertices || !length_preserving(mv);
-        let inv = crate::lighting::inverse(mv).as_mat4().to_cols_array();
+        let inv = crate::inverse::inverse(mv).to_cols_array();
         // Row r of the inverse transpose is column r of the inverse.
         let normal_rows = [0, 1, 2].map(|r| [inv[4 * r], inv[4 * r + 1], inv[4 * r + 2]]);
         let normal_fix = if state.normalize {
@@ -1099,17 +1045,5 @@ mod tests {
         }
         // log2's polynomial error (~1e-7) times y = 128 in the exponent.
         assert!(worst < 2e-5, "worst relative error {worst}");
-    }
-
-    #[test]
-    fn length_preserving_follows_mesa_analysis() {
-        assert!(length_preserving(&Mat4::IDENTITY));
-        assert!(length_preserving(&Mat4::from_rotation_z(0.7)));
-        assert!(length_preserving(&Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0))));
-        assert!(length_preserving(
-            &(Mat4::from_rotation_x(0.3) * Mat4::from_rotation_y(1.1))
-        ));
-        assert!(!length_preserving(&Mat4::from_scale(Vec3::splat(2.0))));
-        assert!(!length_preserving(&Mat4::perspective_rh_gl(1.0, 1.0, 0.1, 10.0)));
     }
 }

@@ -156,7 +156,7 @@ impl<'s> Geometry<'s> {
         if !l.clipping() {
             return;
         }
-        let inv = crate::lighting::inverse(projection).as_mat4().to_cols_array();
+        let inv = crate::inverse::inverse(projection).to_cols_array();
         for i in 0..6 {
             if !l.clip_enabled[i] {
                 continue;

@@ -6,44 +6,10 @@
  * 3. two-sided lighting with separate specular on a twisted strip;
  * 4. colour material (ambient and diffuse) with GL_NORMALIZE on a scaled
  *    sphere, flat shaded, cut by a user clip plane. */
-#include "common.h"
-#include <GL/glu.h>
-#include <math.h>
-
-#define W 256
-#define H 256
-
-static void lightv(GLenum l, GLenum p, float a, float b, float c, float d) {
-  GLfloat v[4] = {a, b, c, d};
-  glLightfv(l, p, v);
-}
-
-static void materialv(GLenum f, GLenum p, float a, float b, float c, float d) {
-  GLfloat v[4] = {a, b, c, d};
-  glMaterialfv(f, p, v);
-}
-
-static void view(int i) {
-  glViewport((i % 2) * W / 2, (i / 2) * H / 2, W / 2, H / 2);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  gluPerspective(40.0, 1.0, 1.0, 20.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  gluLookAt(0, 0.5, 5, 0, 0, 0, 0, 1, 0);
-}
+#include "scenes.h"
 
 int main(int argc, char **argv) {
-  start(argc, argv);
-  static unsigned char buf[W * H * 4];
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-  CHECK(ctx);
-  CHECK(OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H));
-  glClearColor(0.05f, 0.05f, 0.1f, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_DEPTH_TEST);
-  GLUquadric *q = gluNewQuadric();
-  CHECK(q);
+  GLUquadric *q = begin_scenes(argc, argv);
 
   /* 1: one infinite light, white specular. */
   view(0);
@@ -126,10 +92,5 @@ int main(int argc, char **argv) {
   gluSphere(q, 1.0, 20, 14);
   printf("scene 4 error 0x%x\n", glGetError());
 
-  glFinish();
-  dump("lit.color", buf, sizeof buf);
-  gluDeleteQuadric(q);
-  OSMesaDestroyContext(ctx);
-  printf("done\n");
-  return 0;
+  return end_scenes("lit.color", q);
 }

@@ -5,27 +5,7 @@
  * 3. normals of length 1e-20 (no GL_NORMALIZE) and 1e20 (GL_NORMALIZE);
  * 4. a rotated modelview (Mesa lights in object space), two infinite lights,
  *    per-vertex colours into the diffuse material, glScalef(1, 1, 1). */
-#include "common.h"
-#include <GL/glu.h>
-#include <math.h>
-
-#define W 256
-#define H 256
-
-static void lightv(GLenum l, GLenum p, float a, float b, float c, float d) {
-  GLfloat v[4] = {a, b, c, d};
-  glLightfv(l, p, v);
-}
-
-static void view(int i) {
-  glViewport((i % 2) * W / 2, (i / 2) * H / 2, W / 2, H / 2);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  gluPerspective(40.0, 1.0, 1.0, 20.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  gluLookAt(0, 0.5, 5, 0, 0, 0, 0, 1, 0);
-}
+#include "scenes.h"
 
 static void strip(float scale) {
   glBegin(GL_TRIANGLE_STRIP);
@@ -40,18 +20,9 @@ static void strip(float scale) {
 }
 
 int main(int argc, char **argv) {
-  start(argc, argv);
-  static unsigned char buf[W * H * 4];
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-  CHECK(ctx);
-  CHECK(OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H));
-  glClearColor(0.05f, 0.05f, 0.1f, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_DEPTH_TEST);
+  GLUquadric *q = begin_scenes(argc, argv);
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
-  GLUquadric *q = gluNewQuadric();
-  CHECK(q);
   GLfloat spec[4] = {1, 1, 1, 1};
   glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
 
@@ -126,10 +97,5 @@ int main(int argc, char **argv) {
   glEnd();
   printf("scene 4 error 0x%x\n", glGetError());
 
-  glFinish();
-  dump("lit_stiff.color", buf, sizeof buf);
-  gluDeleteQuadric(q);
-  OSMesaDestroyContext(ctx);
-  printf("done\n");
-  return 0;
+  return end_scenes("lit_stiff.color", q);
 }
