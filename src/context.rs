@@ -13,7 +13,7 @@ use crate::geometry::lighting::LightSetup;
 use crate::geometry::varying::VaryingLayout;
 use crate::geometry::{DrawSource, Geometry, InVertex, MAX_VIEWPORT};
 use crate::lighting::{
-    ColorMaterialMode, LightModelParam, LightParam, LightParamName, MaterialParam, MaterialParamName,
+    ColorMaterialMode, LightModelParam, LightParam, LightParamName, Material, MaterialParam, MaterialParamName,
 };
 use crate::matrix::{self, MatrixMode, MatrixStack};
 use crate::state::{
@@ -187,6 +187,7 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVer
         edge: arrays
             .edge_flag
             .map_or(current.edge_flag, |e| e.get(i, Vec4::ONE).x != 0.0),
+        material: 0,
     }
 }
 
@@ -216,8 +217,24 @@ impl CurrentAttribs {
             fog_coord: self.fog_coord,
             normal: self.normal,
             edge: self.edge_flag,
+            material: 0,
         }
     }
+}
+
+/// A primitive between `begin` and `end`.
+struct Begun {
+    mode: PrimitiveMode,
+    verts: Vec<InVertex>,
+    /// Whether `color4` was called in between (the colour is then per vertex).
+    per_vertex_color: bool,
+    /// The materials (front, back) the vertices were given, when `glMaterial`
+    /// was called in between (Mesa keeps materials as vertex attributes,
+    /// `vbo/vbo_exec_api.c` `_mesa_Materialfv`): the first is the material at
+    /// `begin`; empty when none was called. `InVertex::material` indexes it.
+    materials: Vec<[Material; 2]>,
+    /// Whether one of those calls set the shininess.
+    shininess_varies: bool,
 }
 
 /// A software GL 1.x context with its own framebuffer. `Send`: it owns all its data.
@@ -229,9 +246,8 @@ pub struct Context {
     texture: MatrixStack,
     matrix_mode: MatrixMode,
     current: CurrentAttribs,
-    /// The primitive between `begin` and `end`, with its vertices and whether
-    /// `color4` was called in between (the colour is then per vertex).
-    begun: Option<(PrimitiveMode, Vec<InVertex>, bool)>,
+    /// The primitive between `begin` and `end`.
+    begun: Option<Begun>,
     error: Option<GlError>,
     backend: Backend,
     specialists: SpecialistCache,
@@ -704,11 +720,40 @@ impl Context {
         self.set(|s| s.lighting.set_model(param))
     }
 
-    /// `glMaterial`, also between `begin` and `end` (the whole primitive
-    /// then takes the last value).
+    /// `glMaterial`, also between `begin` and `end`, where it sets the
+    /// material of the vertices that follow, as Mesa's vertex attributes do.
     pub fn material(&mut self, face: Face, param: MaterialParam) -> GlResult {
+        let before = self.state.lighting.materials;
         let r = self.state.lighting.set_material(face, param);
-        self.record(r)
+        self.record(r)?;
+        let after = self.state.lighting.materials;
+        if let Some(b) = &mut self.begun {
+            if after != before {
+                if b.materials.is_empty() {
+                    b.materials.push(before);
+                }
+                // A primitive with more distinct materials than u16 indices
+                // keeps the last one for the rest.
+                if b.materials.len() <= usize::from(u16::MAX) {
+                    b.materials.push(after);
+                }
+                b.shininess_varies |= matches!(param, MaterialParam::Shininess(_));
+            }
+        }
+        Ok(())
+    }
+
+    /// The lighting of each material in `materials` (see [`Begun`]), for
+    /// the draw about to happen.
+    fn vertex_materials(&self, materials: &[[Material; 2]], shininess_varies: bool) -> Vec<LightSetup> {
+        if materials.is_empty() || !self.state.lighting.enabled {
+            return Vec::new();
+        }
+        let base = LightSetup::new(&self.state.lighting, self.modelview.top());
+        materials
+            .iter()
+            .map(|m| base.with_materials(&self.state.lighting, m, shininess_varies))
+            .collect()
     }
 
     /// `glGetMaterial` of `Front` or `Back`.
@@ -760,24 +805,34 @@ impl Context {
     /// `glBegin`; `InvalidOperation` when already inside `begin`.
     pub fn begin(&mut self, mode: PrimitiveMode) -> GlResult {
         self.outside()?;
-        self.begun = Some((mode, Vec::new(), false));
+        self.begun = Some(Begun {
+            mode,
+            verts: Vec::new(),
+            per_vertex_color: false,
+            materials: Vec::new(),
+            shininess_varies: false,
+        });
         Ok(())
     }
 
     /// `glEnd`: draws the vertices given since `begin`.
     pub fn end(&mut self) -> GlResult {
-        let Some((mode, verts, per_vertex_color)) = self.begun.take() else {
+        let Some(b) = self.begun.take() else {
             return self.record(Err(GlError::InvalidOperation));
         };
-        let source = DrawSource::Arrays { per_vertex_color };
-        self.draw((mode, source), verts.len(), &|i| verts[i])
+        let source = DrawSource::Arrays {
+            per_vertex_color: b.per_vertex_color,
+        };
+        let vertex_materials = self.vertex_materials(&b.materials, b.shininess_varies);
+        self.draw_with((b.mode, source), b.verts.len(), &|i| b.verts[i], &vertex_materials)
     }
 
     /// `glVertex4f`: outside `begin`/`end` it is ignored, as in GL.
     pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) {
         let v = self.current.vertex(Vec4::new(x, y, z, w));
-        if let Some((_, verts, _)) = &mut self.begun {
-            verts.push(v);
+        if let Some(b) = &mut self.begun {
+            let material = b.materials.len().saturating_sub(1) as u16;
+            b.verts.push(InVertex { material, ..v });
         }
     }
 
@@ -792,8 +847,8 @@ impl Context {
     pub fn color4(&mut self, r: f32, g: f32, b: f32, a: f32) {
         self.current.color = Vec4::new(r, g, b, a);
         self.state.lighting.track_color(self.current.color);
-        if let Some((_, _, per_vertex_color)) = &mut self.begun {
-            *per_vertex_color = true;
+        if let Some(b) = &mut self.begun {
+            b.per_vertex_color = true;
         }
     }
 
@@ -907,6 +962,17 @@ impl Context {
     }
 
     fn draw(&mut self, mode: (PrimitiveMode, DrawSource), count: usize, fetch: &dyn Fn(usize) -> InVertex) -> GlResult {
+        self.draw_with(mode, count, fetch, &[])
+    }
+
+    /// [`Context::draw`] with the per-vertex materials of `begin`/`end`.
+    fn draw_with(
+        &mut self,
+        mode: (PrimitiveMode, DrawSource),
+        count: usize,
+        fetch: &dyn Fn(usize) -> InVertex,
+        vertex_materials: &[LightSetup],
+    ) -> GlResult {
         let (key, layout) = self.draw_plan();
         let uniforms = self.state.fragment_uniforms();
         let reads_depth = key.depth.is_some();
@@ -919,6 +985,7 @@ impl Context {
         let lit = layout.color || layout.secondary;
         if self.state.lighting.enabled && lit {
             vertex_stage.lighting = Some(LightSetup::new(&self.state.lighting, self.modelview.top()));
+            vertex_stage.vertex_materials = vertex_materials;
         }
         let mut geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
         geometry.set_user_planes(self.projection.top());

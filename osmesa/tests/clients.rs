@@ -359,6 +359,24 @@ fn stiff_lit_scenes_match_mesa() {
 }
 
 #[test]
+fn per_vertex_and_tracked_materials_match_mesa() {
+    let Some(exe) = build("materials") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // glMaterial between glBegin and glEnd lights the vertices that follow
+    // (immediate, display list, flat, two-sided); with GL_COLOR_MATERIAL a
+    // glMaterial of the tracked value is ignored: the same image, byte for
+    // byte, and the same materials read back.
+    let image = soft.file("materials.color");
+    let differing = image
+        .iter()
+        .zip(mesa.file("materials.color"))
+        .filter(|(a, b)| **a != *b)
+        .count();
+    assert_eq!(differing, 0);
+    assert!(soft.lines.iter().any(|l| l == "scene 4 error 0x0"), "{:?}", soft.lines);
+}
+
+#[test]
 fn clip_planes_match_mesa() {
     let Some(counts) = scene_diffs("clip_planes", "clip_planes.color") else {
         return;

@@ -29,7 +29,7 @@ pub enum FogSource {
 
 /// The per-draw constants of the vertex stage: what each vertex computes.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct VertexStage {
+pub struct VertexStage<'a> {
     /// Object to clip coordinates.
     pub mvp: Mat4,
     /// The varyings to fill.
@@ -39,16 +39,21 @@ pub struct VertexStage {
     /// With `GL_LIGHTING`: the colours are lit, not copied. `None` when
     /// lighting is off (no normal is then transformed, nothing computed).
     pub lighting: Option<LightSetup>,
+    /// Materials that vary per vertex (`glMaterial` between `glBegin` and
+    /// `glEnd`, which Mesa keeps as vertex attributes): when not empty, a
+    /// vertex is lit by `vertex_materials[v.material]` instead of `lighting`.
+    pub vertex_materials: &'a [LightSetup],
 }
 
-impl VertexStage {
+impl VertexStage<'_> {
     /// A stage transforming by `mvp`, filling the colours `layout` carries.
-    pub fn new(mvp: Mat4, layout: VaryingLayout) -> VertexStage {
+    pub fn new(mvp: Mat4, layout: VaryingLayout) -> VertexStage<'static> {
         VertexStage {
             mvp,
             layout,
             fog: FogSource::FogCoord,
             lighting: None,
+            vertex_materials: &[],
         }
     }
 
@@ -59,6 +64,7 @@ impl VertexStage {
             v: [0.0; MAX_VARYINGS],
         };
         if let Some(light) = &self.lighting {
+            let light = self.vertex_materials.get(usize::from(v.material)).unwrap_or(light);
             let lit = light.light_vertex(&LightInput {
                 pos: v.pos,
                 normal: v.normal,
@@ -114,7 +120,7 @@ pub fn eye_dot(m: Vec4, p: Vec4) -> f32 {
 /// A sliding window of transformed vertices, plus vertex 0, which fans,
 /// polygons and line loops refer back to.
 pub struct VertexBatch<'a> {
-    stage: VertexStage,
+    stage: VertexStage<'a>,
     fetch: &'a dyn Fn(usize) -> InVertex,
     count: usize,
     base: usize,
@@ -124,7 +130,7 @@ pub struct VertexBatch<'a> {
 
 impl<'a> VertexBatch<'a> {
     /// A batch over `count` vertices, `fetch(i)` giving vertex `i`.
-    pub fn new(stage: VertexStage, count: usize, fetch: &'a dyn Fn(usize) -> InVertex) -> VertexBatch<'a> {
+    pub fn new(stage: VertexStage<'a>, count: usize, fetch: &'a dyn Fn(usize) -> InVertex) -> VertexBatch<'a> {
         VertexBatch {
             stage,
             fetch,

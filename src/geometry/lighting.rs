@@ -13,7 +13,7 @@
 //! light is infinite, without spot, and the viewer is not local (the common
 //! case), whose output equals the general path's bit for bit (tested).
 
-use crate::lighting::{ColorControl, ColorMaterialMode, LightingState, MAX_LIGHTS};
+use crate::lighting::{ColorControl, ColorMaterialMode, LightingState, Material, MAX_LIGHTS};
 use crate::state::Face;
 use glam::{Mat4, Vec3, Vec4};
 
@@ -199,6 +199,17 @@ struct Side {
 }
 
 impl Side {
+    fn from_material(m: &Material, from_color: FromColor) -> Side {
+        Side {
+            emission: m.emission,
+            ambient: m.ambient,
+            diffuse: m.diffuse,
+            specular: m.specular,
+            shininess: m.shininess,
+            from_color,
+        }
+    }
+
     /// The material values for a vertex of colour `c`.
     #[inline(always)]
     fn values(&self, c: [f32; 4]) -> [[f32; 4]; 4] {
@@ -341,8 +352,46 @@ impl LightSetup {
                 }
             })
             .collect();
+        let mut setup = LightSetup {
+            eye_space,
+            modelview: *mv,
+            normal_rows,
+            normal_fix,
+            lights: [LightConst::default(); MAX_LIGHTS],
+            count: list.len(),
+            sides: [Side::from_material(&state.materials[0], FromColor::default()); 2],
+            model_ambient: state.model_ambient,
+            two_side: state.two_side,
+            separate,
+            local_viewer: state.local_viewer,
+            shininess_zero: false,
+            products: [[[[0.0; 4]; 3]; 2]; MAX_LIGHTS],
+            fast: !state.local_viewer && list.iter().all(|l| !l.positional && l.spot.is_none()),
+        };
+        setup.lights[..list.len()].copy_from_slice(&list);
+        setup.set_materials(state, &state.materials, false);
+        setup
+    }
+
+    /// The same draw with the materials `materials` (front, back): how a
+    /// vertex whose `glMaterial` came between `glBegin` and `glEnd` is lit.
+    /// `varying_shininess` says the shininess was one of them: Mesa's program
+    /// then reads it per vertex and never takes its shininess-0 shortcut
+    /// (`check_active_shininess`, `main/ffvertex_prog.c`).
+    pub fn with_materials(
+        &self,
+        state: &LightingState,
+        materials: &[Material; 2],
+        varying_shininess: bool,
+    ) -> LightSetup {
+        let mut setup = *self;
+        setup.set_materials(state, materials, varying_shininess);
+        setup
+    }
+
+    /// The material-dependent part: sides, light products, the shininess-0 shortcut.
+    fn set_materials(&mut self, state: &LightingState, materials: &[Material; 2], varying_shininess: bool) {
         let sides = [0, 1].map(|s| {
-            let m = &state.materials[s];
             let applies = state.color_material
                 && match state.color_material_face {
                     Face::Front => s == 0,
@@ -360,48 +409,21 @@ impl LightSetup {
             } else {
                 FromColor::default()
             };
-            Side {
-                emission: m.emission,
-                ambient: m.ambient,
-                diffuse: m.diffuse,
-                specular: m.specular,
-                shininess: m.shininess,
-                from_color,
-            }
+            Side::from_material(&materials[s], from_color)
         });
         // check_active_shininess: the front's, else (two-sided) the back's.
-        let shininess_zero = sides[0].shininess == 0.0 && !(state.two_side && sides[1].shininess != 0.0);
-        let mut lights = [LightConst::default(); MAX_LIGHTS];
-        lights[..list.len()].copy_from_slice(&list);
-        let mut products = [[[[0.0; 4]; 3]; 2]; MAX_LIGHTS];
-        for (p, l) in products.iter_mut().zip(&list) {
-            *p = {
-                [0, 1].map(|s| {
-                    let mat = sides[s].values([0.0; 4]);
-                    [0, 1, 2].map(|k| {
-                        let (lc, mc) = (l.colors[k], mat[k + 1]);
-                        [lc[0] * mc[0], lc[1] * mc[1], lc[2] * mc[2], mc[3]]
-                    })
+        self.shininess_zero =
+            !varying_shininess && sides[0].shininess == 0.0 && !(state.two_side && sides[1].shininess != 0.0);
+        for (p, l) in self.products.iter_mut().zip(&self.lights[..self.count]) {
+            *p = [0, 1].map(|s| {
+                let mat = sides[s].values([0.0; 4]);
+                [0, 1, 2].map(|k| {
+                    let (lc, mc) = (l.colors[k], mat[k + 1]);
+                    [lc[0] * mc[0], lc[1] * mc[1], lc[2] * mc[2], mc[3]]
                 })
-            };
+            });
         }
-        let fast = !state.local_viewer && list.iter().all(|l| !l.positional && l.spot.is_none());
-        LightSetup {
-            eye_space,
-            modelview: *mv,
-            normal_rows,
-            normal_fix,
-            lights,
-            count: list.len(),
-            sides,
-            model_ambient: state.model_ambient,
-            two_side: state.two_side,
-            separate,
-            local_viewer: state.local_viewer,
-            shininess_zero,
-            products,
-            fast,
-        }
+        self.sides = sides;
     }
 
     /// Whether Mesa lights this draw in eye space (else object space).

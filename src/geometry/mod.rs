@@ -36,6 +36,9 @@ pub struct InVertex {
     /// `glEdgeFlag`: whether the polygon edge starting here is a boundary
     /// edge, drawn under polygon mode `Line`/`Point`.
     pub edge: bool,
+    /// Which of the draw's per-vertex materials lights this vertex
+    /// ([`batch::VertexStage::vertex_materials`]); 0 when they do not vary.
+    pub material: u16,
 }
 
 impl InVertex {
@@ -48,6 +51,7 @@ impl InVertex {
             fog_coord: 0.0,
             normal: Vec3::Z,
             edge: true,
+            material: 0,
         }
     }
 }
