@@ -275,18 +275,47 @@ impl LightingState {
     }
 
     /// `glMaterial` on `face`; shininess outside `[0, 128]` is `InvalidValue`.
+    /// With `GL_COLOR_MATERIAL` on, the values it tracks keep following the
+    /// colour: a `glMaterial` of them is ignored (Mesa's `_mesa_Materialfv`,
+    /// `vbo/vbo_exec_api.c`, masks out `_ColorMaterialBitmask`).
     pub fn set_material(&mut self, face: Face, param: MaterialParam) -> crate::GlResult {
         if let MaterialParam::Shininess(s) = param {
             value((0.0..=MAX_EXPONENT).contains(&s))?;
         }
+        let tracked = |side: usize, which: ColorMaterialMode| {
+            self.color_material
+                && sides(self.color_material_face).contains(&side)
+                && (self.color_material_mode == which
+                    || (self.color_material_mode == ColorMaterialMode::AmbientAndDiffuse
+                        && matches!(which, ColorMaterialMode::Ambient | ColorMaterialMode::Diffuse)))
+        };
+        let mut keep = [[false; 4]; 2]; // [side][emission, ambient, diffuse, specular]
+        for (side, k) in keep.iter_mut().enumerate() {
+            *k = [
+                ColorMaterialMode::Emission,
+                ColorMaterialMode::Ambient,
+                ColorMaterialMode::Diffuse,
+                ColorMaterialMode::Specular,
+            ]
+            .map(|which| tracked(side, which));
+        }
         for &side in sides(face) {
             let m = &mut self.materials[side];
+            let [emission, ambient, diffuse, specular] = keep[side];
+            let set = |dst: &mut [f32; 4], c: [f32; 4], kept: bool| {
+                if !kept {
+                    *dst = c;
+                }
+            };
             match param {
-                MaterialParam::Ambient(c) => m.ambient = c,
-                MaterialParam::Diffuse(c) => m.diffuse = c,
-                MaterialParam::AmbientAndDiffuse(c) => (m.ambient, m.diffuse) = (c, c),
-                MaterialParam::Specular(c) => m.specular = c,
-                MaterialParam::Emission(c) => m.emission = c,
+                MaterialParam::Ambient(c) => set(&mut m.ambient, c, ambient),
+                MaterialParam::Diffuse(c) => set(&mut m.diffuse, c, diffuse),
+                MaterialParam::AmbientAndDiffuse(c) => {
+                    set(&mut m.ambient, c, ambient);
+                    set(&mut m.diffuse, c, diffuse);
+                }
+                MaterialParam::Specular(c) => set(&mut m.specular, c, specular),
+                MaterialParam::Emission(c) => set(&mut m.emission, c, emission),
                 MaterialParam::Shininess(s) => m.shininess = s,
             }
         }
@@ -315,14 +344,17 @@ impl LightingState {
             return;
         }
         let c = color.to_array();
-        let param = match self.color_material_mode {
-            ColorMaterialMode::Emission => MaterialParam::Emission(c),
-            ColorMaterialMode::Ambient => MaterialParam::Ambient(c),
-            ColorMaterialMode::Diffuse => MaterialParam::Diffuse(c),
-            ColorMaterialMode::Specular => MaterialParam::Specular(c),
-            ColorMaterialMode::AmbientAndDiffuse => MaterialParam::AmbientAndDiffuse(c),
-        };
-        let _ = self.set_material(self.color_material_face, param);
+        let mode = self.color_material_mode;
+        for &side in sides(self.color_material_face) {
+            let m = &mut self.materials[side];
+            match mode {
+                ColorMaterialMode::Emission => m.emission = c,
+                ColorMaterialMode::Ambient => m.ambient = c,
+                ColorMaterialMode::Diffuse => m.diffuse = c,
+                ColorMaterialMode::Specular => m.specular = c,
+                ColorMaterialMode::AmbientAndDiffuse => (m.ambient, m.diffuse) = (c, c),
+            }
+        }
     }
 
     /// `glClipPlane`: `plane` in object coordinates, stored in eye
@@ -359,4 +391,32 @@ pub fn transform_point(m: &Mat4, p: [f32; 4]) -> [f32; 4] {
 pub fn transform_direction(m: &Mat4, d: [f32; 3]) -> [f32; 3] {
     let c = m.to_cols_array();
     [0, 1, 2].map(|r| d[0] * c[r] + d[1] * c[4 + r] + d[2] * c[8 + r])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn glmaterial_of_a_tracked_value_is_ignored_while_colour_material_is_on() {
+        let mut st = LightingState {
+            color_material: true,
+            color_material_face: Face::Front,
+            color_material_mode: ColorMaterialMode::Diffuse,
+            ..LightingState::default()
+        };
+        st.track_color(Vec4::new(0.0, 1.0, 0.0, 1.0));
+        let red = [1.0, 0.0, 0.0, 1.0];
+        st.set_material(Face::FrontAndBack, MaterialParam::AmbientAndDiffuse(red))
+            .unwrap();
+        // The front diffuse keeps following the colour; the front ambient and
+        // both back values take the call's.
+        assert_eq!(st.materials[0].diffuse, [0.0, 1.0, 0.0, 1.0]);
+        assert_eq!(st.materials[0].ambient, red);
+        assert_eq!((st.materials[1].ambient, st.materials[1].diffuse), (red, red));
+        // Off again, the call applies.
+        st.color_material = false;
+        st.set_material(Face::Front, MaterialParam::Diffuse(red)).unwrap();
+        assert_eq!(st.materials[0].diffuse, red);
+    }
 }

@@ -373,6 +373,7 @@ fn per_vertex_and_tracked_materials_match_mesa() {
         .filter(|(a, b)| **a != *b)
         .count();
     assert_eq!(differing, 0);
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
     assert!(soft.lines.iter().any(|l| l == "scene 4 error 0x0"), "{:?}", soft.lines);
 }
 
