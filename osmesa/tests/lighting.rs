@@ -114,8 +114,11 @@ fn bad_light_and_material_values_are_gl_errors() {
     assert_eq!(glGetError(), GL_INVALID_VALUE);
     glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, -1.0);
     assert_eq!(glGetError(), GL_INVALID_VALUE);
-    glLightf(GL_LIGHT0, GL_POSITION, 1.0); // a vector parameter
-    assert_eq!(glGetError(), GL_INVALID_ENUM);
+    // A vector parameter through the scalar call: the value and three zeros
+    // (Mesa's `_mesa_Lightf`), no error.
+    glLightf(GL_LIGHT0 + 3, GL_POSITION, 1.0);
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    assert_eq!(get_light(GL_LIGHT0 + 3, GL_POSITION), [1.0, 0.0, 0.0, 0.0]);
     glMaterialf(GL_FRONT, GL_SHININESS, 128.5);
     assert_eq!(glGetError(), GL_INVALID_VALUE);
     glMaterialf(GL_FRONT, GL_SHININESS, -0.5);
@@ -128,8 +131,10 @@ fn bad_light_and_material_values_are_gl_errors() {
     assert_eq!(glGetError(), GL_INVALID_ENUM);
     glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, 0x1234);
     assert_eq!(glGetError(), GL_INVALID_ENUM);
-    glLightModelf(GL_LIGHT_MODEL_AMBIENT, 1.0); // a vector parameter
-    assert_eq!(glGetError(), GL_INVALID_ENUM);
+    glMaterialf(GL_FRONT, GL_EMISSION, 0.5); // as Mesa's TAG(Materialf): no error
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    assert_eq!(get_material(GL_FRONT, GL_EMISSION)[0], 0.5);
+    glMaterialf(GL_FRONT, GL_EMISSION, 0.0);
     glColorMaterial(GL_FRONT, 0x1234);
     assert_eq!(glGetError(), GL_INVALID_ENUM);
     let eq = [1.0f64, 0.0, 0.0, 0.0];
@@ -143,6 +148,17 @@ fn bad_light_and_material_values_are_gl_errors() {
     glEnd();
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     assert_eq!(get_material(GL_BACK, GL_SHININESS)[0], 3.0);
+    // There, GL_INVALID_OPERATION comes before any argument check.
+    let mut plane = [0.0f64; 4];
+    glBegin(GL_TRIANGLES);
+    glLightModelf(0x1234, 1.0);
+    glEnd();
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    glBegin(GL_TRIANGLES);
+    // SAFETY: room for 4 doubles.
+    unsafe { glGetClipPlane(0, plane.as_mut_ptr()) };
+    glEnd();
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
     OSMesaDestroyContext(ctx);
 }
 

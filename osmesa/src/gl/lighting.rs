@@ -22,6 +22,16 @@ const GL_LIGHT_MODEL_COLOR_CONTROL: GLenum = 0x81F8;
 const GL_AMBIENT_AND_DIFFUSE: GLenum = 0x1602;
 const GL_COLOR_INDEXES: GLenum = 0x1603;
 
+/// `GL_INVALID_OPERATION` between `glBegin` and `glEnd`: Mesa checks that
+/// before any argument (`ASSERT_OUTSIDE_BEGIN_END`, or the begin/end dispatch).
+fn outside(gl: &softgl::Context) -> GlResult {
+    if gl.inside_begin() {
+        Err(GlError::InvalidOperation)
+    } else {
+        Ok(())
+    }
+}
+
 /// How many values a light parameter has.
 fn light_count(name: LightParamName) -> usize {
     match name {
@@ -124,20 +134,7 @@ unsafe fn light_v<T: Copy>(light: GLenum, pname: GLenum, params: *const T, conv:
         Ok(light_param(name, &v))
     });
     checked(move |gl| {
-        let index = light_index(light)?;
-        gl.light(index, parsed?)
-    })
-}
-
-/// `glLightf`/`glLighti`: scalar parameters only.
-fn light_1(light: GLenum, pname: GLenum, value: f32) {
-    let parsed = decode::<LightParamName>(pname).and_then(|name| {
-        if light_count(name) != 1 {
-            return Err(GlError::InvalidEnum);
-        }
-        Ok(light_param(name, &[value]))
-    });
-    checked(move |gl| {
+        outside(gl)?;
         let index = light_index(light)?;
         gl.light(index, parsed?)
     })
@@ -146,6 +143,7 @@ fn light_1(light: GLenum, pname: GLenum, value: f32) {
 /// `glGetLight*v`.
 fn get_light<T: Copy>(light: GLenum, pname: GLenum, out: *mut T, conv: fn(f32, bool) -> T) {
     now(|_, gl| {
+        outside(gl)?;
         let index = light_index(light)?;
         let name = decode::<LightParamName>(pname)?;
         let v = light_values(gl.get_light(index, name)?);
@@ -157,9 +155,9 @@ fn get_light<T: Copy>(light: GLenum, pname: GLenum, out: *mut T, conv: fn(f32, b
 }
 
 /// `glLightModel*`: `v` the values (up to 4, colours already converted).
-fn light_model(pname: GLenum, v: Vec<f32>, vector: bool) {
+fn light_model(pname: GLenum, v: Vec<f32>) {
     let parsed = match pname {
-        GL_LIGHT_MODEL_AMBIENT if vector => Ok(LightModelParam::Ambient(four(&v))),
+        GL_LIGHT_MODEL_AMBIENT => Ok(LightModelParam::Ambient(four(&v))),
         GL_LIGHT_MODEL_LOCAL_VIEWER => Ok(LightModelParam::LocalViewer(v[0] != 0.0)),
         GL_LIGHT_MODEL_TWO_SIDE => Ok(LightModelParam::TwoSide(v[0] != 0.0)),
         GL_LIGHT_MODEL_COLOR_CONTROL => {
@@ -168,7 +166,10 @@ fn light_model(pname: GLenum, v: Vec<f32>, vector: bool) {
         }
         _ => Err(GlError::InvalidEnum),
     };
-    checked(move |gl| gl.light_model(parsed?))
+    checked(move |gl| {
+        outside(gl)?;
+        gl.light_model(parsed?)
+    })
 }
 
 /// How many values `glLightModel*v` reads for `pname` (1 for unknown names:
@@ -235,6 +236,7 @@ unsafe fn material_v<T: Copy>(face: GLenum, pname: GLenum, params: *const T, con
 /// `glGetMaterial*v`.
 fn get_material<T: Copy>(face: GLenum, pname: GLenum, out: *mut T, conv: fn(f32, bool) -> T) {
     now(|_, gl| {
+        outside(gl)?;
         let face = decode::<Face>(face)?;
         let name = decode::<MaterialParamName>(pname)?;
         let (v, color) = match gl.get_material(face, name)? {
@@ -287,11 +289,15 @@ fn i_out_material(x: f32, color: bool) -> i32 {
 }
 
 exports! {
+    /// A vector `pname` is no error: the value and three zeros, as Mesa's
+    /// `_mesa_Lightf` (`main/light.c`); the same for the three below.
     [] fn glLightf(light: GLenum, pname: GLenum, param: f32) {
-        light_1(light, pname, param)
+        // SAFETY: 4 readable floats.
+        unsafe { glLightfv(light, pname, [param, 0.0, 0.0, 0.0].as_ptr()) }
     }
     [] fn glLighti(light: GLenum, pname: GLenum, param: i32) {
-        light_1(light, pname, param as f32)
+        // SAFETY: 4 readable integers.
+        unsafe { glLightiv(light, pname, [param, 0, 0, 0].as_ptr()) }
     }
     /// # Safety
     /// `params` is null or holds the parameter's values.
@@ -316,18 +322,23 @@ exports! {
         get_light(light, pname, params, i_out)
     }
     [] fn glLightModelf(pname: GLenum, param: f32) {
-        light_model(pname, vec![param], false)
+        // SAFETY: 4 readable floats.
+        unsafe { glLightModelfv(pname, [param, 0.0, 0.0, 0.0].as_ptr()) }
     }
     [] fn glLightModeli(pname: GLenum, param: i32) {
-        light_model(pname, vec![param as f32], false)
+        // SAFETY: 4 readable integers.
+        unsafe { glLightModeliv(pname, [param, 0, 0, 0].as_ptr()) }
     }
     /// # Safety
     /// `params` is null or holds the parameter's values.
     [unsafe] fn glLightModelfv(pname: GLenum, params: *const f32) {
         // SAFETY: the parameter's values, by GL's contract.
         match unsafe { read_n(params, model_count(pname)) } {
-            Ok(v) => light_model(pname, v, true),
-            Err(e) => checked(move |_| Err(e)),
+            Ok(v) => light_model(pname, v),
+            Err(e) => checked(move |gl| {
+                outside(gl)?;
+                Err(e)
+            }),
         }
     }
     /// # Safety
@@ -337,14 +348,19 @@ exports! {
         match unsafe { read_n(params, model_count(pname)) } {
             Ok(v) => {
                 let color = pname == GL_LIGHT_MODEL_AMBIENT;
-                light_model(pname, v.iter().map(|&x| i_in(x, color)).collect(), true)
+                light_model(pname, v.iter().map(|&x| i_in(x, color)).collect())
             }
-            Err(e) => checked(move |_| Err(e)),
+            Err(e) => checked(move |gl| {
+                outside(gl)?;
+                Err(e)
+            }),
         }
     }
+    /// A colour `pname` is no error: as Mesa's `TAG(Materialf)`
+    /// (`vbo/vbo_attrib_tmp.h`), the value becomes the first component (Mesa
+    /// leaves the other three unset; softgl takes 0, 0, 1).
     [] fn glMaterialf(face: GLenum, pname: GLenum, param: f32) {
-        let p = if material_count(pname) == 1 { material_param(pname, &[param]) } else { Err(GlError::InvalidEnum) };
-        material(face, p)
+        material(face, material_param(pname, &[param, 0.0, 0.0, 1.0]))
     }
     [] fn glMateriali(face: GLenum, pname: GLenum, param: i32) {
         glMaterialf(face, pname, param as f32)
@@ -380,6 +396,7 @@ exports! {
         // SAFETY: 4 readable doubles, by GL's contract.
         let eq = unsafe { read_n(equation, 4) };
         checked(move |gl| {
+            outside(gl)?;
             let index = plane.checked_sub(GL_CLIP_PLANE0).filter(|&i| (i as usize) < MAX_CLIP_PLANES);
             let index = index.ok_or(GlError::InvalidEnum)?;
             let eq = eq.clone()?;
@@ -390,6 +407,7 @@ exports! {
     /// `equation` is null or has room for 4 doubles.
     [unsafe] fn glGetClipPlane(plane: GLenum, equation: *mut f64) {
         now(|_, gl| {
+            outside(gl)?;
             let index = plane.checked_sub(GL_CLIP_PLANE0).ok_or(GlError::InvalidEnum)?;
             let eq = gl.get_clip_plane(index)?;
             // SAFETY: room for 4 doubles (GL's contract).

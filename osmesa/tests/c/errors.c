@@ -4,6 +4,9 @@
 #include "common.h"
 
 #define E(call) do { call; printf("%-48s 0x%04x\n", #call, glGetError()); } while (0)
+/* The error of `call` made between glBegin and glEnd (glGetError itself is
+ * an error there). */
+#define B(call) do { glBegin(GL_TRIANGLES); call; glEnd(); printf("in begin/end %-35s 0x%04x\n", #call, glGetError()); } while (0)
 
 int main(int argc, char **argv) {
   start(argc, argv);
@@ -60,6 +63,34 @@ int main(int argc, char **argv) {
   glBegin(GL_TRIANGLES);
   E(glClear(GL_COLOR_BUFFER_BIT));
   glEnd();
+  /* Lighting: inside glBegin/glEnd every non-vertex command is
+   * GL_INVALID_OPERATION before its arguments are looked at (Mesa's begin/end
+   * dispatch); glMaterial is allowed there. */
+  GLdouble plane[4];
+  GLfloat lv[4];
+  B(glLightModelf(0x1234, 1));
+  B(glLightModeli(GL_LIGHT_MODEL_AMBIENT, 1));
+  B(glLightModelfv(GL_LIGHT_MODEL_AMBIENT, NULL));
+  B(glLightf(0x1234, GL_SPOT_EXPONENT, 1));
+  B(glGetClipPlane(0, plane));
+  B(glClipPlane(0, plane));
+  B(glGetLightfv(0x1234, GL_AMBIENT, lv));
+  B(glGetMaterialfv(0x1234, GL_AMBIENT, lv));
+  B(glMaterialf(GL_FRONT, GL_AMBIENT, 0.5f));
+  B(glMateriali(GL_FRONT, GL_SHININESS, 200));
+  /* A vector parameter through the scalar call is no error in Mesa. */
+  E(glMaterialf(GL_FRONT, GL_EMISSION, 0.5f));
+  E(glMateriali(GL_BACK, GL_SPECULAR, 1));
+  E(glMaterialf(GL_FRONT, 0x1234, 0.5f));
+  E(glLightf(GL_LIGHT1, GL_POSITION, 2));
+  glGetLightfv(GL_LIGHT1, GL_POSITION, lv); printf("light1 position %g %g %g %g\n", lv[0], lv[1], lv[2], lv[3]);
+  E(glLighti(GL_LIGHT1, GL_SPOT_DIRECTION, 3));
+  glGetLightfv(GL_LIGHT1, GL_SPOT_DIRECTION, lv); printf("light1 spot direction %g %g %g\n", lv[0], lv[1], lv[2]);
+  E(glLightModelf(GL_LIGHT_MODEL_AMBIENT, 0.25f));
+  glGetFloatv(GL_LIGHT_MODEL_AMBIENT, lv); printf("model ambient %g %g %g %g\n", lv[0], lv[1], lv[2], lv[3]);
+  E(glLightModeli(GL_LIGHT_MODEL_AMBIENT, 0x7fffffff));
+  glGetFloatv(GL_LIGHT_MODEL_AMBIENT, lv); printf("model ambient %g %g %g %g\n", lv[0], lv[1], lv[2], lv[3]);
+  E(glLightModelf(0x1234, 1));
   E(glDrawArrays(GL_TRIANGLES, 0, -1));
   E(glDrawArrays(0x20, 0, 3));
   E(glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, NULL));
