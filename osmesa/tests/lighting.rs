@@ -135,6 +135,12 @@ fn bad_light_and_material_values_are_gl_errors() {
     assert_eq!(glGetError(), GL_NO_ERROR);
     assert_eq!(get_material(GL_FRONT, GL_EMISSION)[0], 0.5);
     glMaterialf(GL_FRONT, GL_EMISSION, 0.0);
+    glLightModelf(GL_LIGHT_MODEL_AMBIENT, 0.25); // (0.25, 0, 0, 0), as `_mesa_LightModelf`
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    let mut ambient = [-1.0f32; 4];
+    // SAFETY: room for 4 floats.
+    unsafe { glGetFloatv(GL_LIGHT_MODEL_AMBIENT, ambient.as_mut_ptr()) };
+    assert_eq!(ambient, [0.25, 0.0, 0.0, 0.0]);
     glColorMaterial(GL_FRONT, 0x1234);
     assert_eq!(glGetError(), GL_INVALID_ENUM);
     let eq = [1.0f64, 0.0, 0.0, 0.0];
