@@ -70,8 +70,49 @@ fn rsq(x: f32) -> f32 {
 /// The program's `emit_normalize_vec3`: `DP3`, `RSQ`, `MUL`.
 #[inline(always)]
 fn normalize_vp(v: V3) -> V3 {
-    let s = rsq(dp3(v, v));
-    v.map(|c| c * s)
+    normalize_len(v).0
+}
+
+/// `v·v` at or above this (2^-100) took no denormal step: its terms are not
+/// negative, so a denormal product (< 2^-126) was below half an ulp of the
+/// sum, and flushing it changes nothing.
+const FTZ_SAFE: f32 = 7.888_609e-31;
+
+/// `DP3(v, v)`, `RSQ` and `MUL` as llvmpipe's vertex stage runs them, with
+/// the x86 flush-to-zero and denormals-are-zero modes that `draw_vbo` sets
+/// (`util_fpstate_set_denorms_to_zero`, `draw_pt.c`; docs/llvmpipe-facts.md
+/// "Denormals in the vertex stage"): the normalized vector, `v·v` and its
+/// `rsq`. Only a vector shorter than 2^-50 can see a denormal, so the
+/// flushing arithmetic runs only for those ([`normalize_flushed`]).
+#[inline(always)]
+fn normalize_len(v: V3) -> (V3, f32, f32) {
+    let d2 = dp3(v, v);
+    if d2 < FTZ_SAFE {
+        return normalize_flushed(v);
+    }
+    let s = rsq(d2);
+    (v.map(|c| c * s), d2, s)
+}
+
+/// A denormal as the FTZ and DAZ modes see it: zero of its sign.
+fn flush(x: f32) -> f32 {
+    if x.is_subnormal() {
+        0.0f32.copysign(x)
+    } else {
+        x
+    }
+}
+
+/// [`normalize_len`] with every operand and result flushed: a normal of
+/// length 1e-20 has `v·v` = 1e-40, a denormal, hence 0 and an infinite
+/// `rsq`, so the normalized vector is infinite (NaN where a component is 0).
+#[cold]
+fn normalize_flushed(v: V3) -> (V3, f32, f32) {
+    let v = v.map(flush);
+    let sq = |k: usize| flush(v[k] * v[k]);
+    let d2 = flush(flush(sq(2) + sq(1)) + sq(0));
+    let s = rsq(d2);
+    (v.map(|c| flush(c * s)), d2, s)
 }
 
 fn sub(a: V3, b: V3) -> V3 {
@@ -517,10 +558,8 @@ impl LightSetup {
         }
         for (i, l) in self.lights[..self.count].iter().enumerate() {
             let (vp, dist) = if l.positional {
-                let vp = sub(l.position, eye);
-                let d2 = dp3(vp, vp);
-                let r = rsq(d2);
-                (vp.map(|x| x * r), Some((d2, r)))
+                let (vp, d2, r) = normalize_len(sub(l.position, eye));
+                (vp, Some((d2, r)))
             } else {
                 (l.vp_inf, None)
             };
@@ -828,6 +867,32 @@ mod tests {
             normal: Vec3::from_array(n).normalize(),
             color: Vec4::new(0.9, 0.2, 0.4, 0.5),
         }
+    }
+
+    #[test]
+    fn tiny_vectors_normalize_as_under_flush_to_zero() {
+        // 1e-20 squared is 1e-40, a denormal: flushed to 0, rsq is +inf, the
+        // vector infinite and 0·inf NaN (llvmpipe's FTZ/DAZ vertex stage).
+        let (v, d2, s) = normalize_len([1e-20, 1e-20, 1e-20]);
+        assert_eq!((d2, s), (0.0, f32::INFINITY));
+        assert_eq!(v, [f32::INFINITY; 3]);
+        let v = normalize_vp([0.0, -1e-20, 0.0]);
+        assert!(v[0].is_nan() && v[2].is_nan() && v[1] == f32::NEG_INFINITY, "{v:?}");
+        // A denormal component counts as 0 (DAZ).
+        let v = normalize_vp([1e-40, 0.0, 0.0]);
+        assert!(v.iter().all(|c| c.is_nan()), "{v:?}");
+        // Short vectors whose squares stay normal (>= 2^-126) normalize as
+        // IEEE does, on either side of the 2^-100 switch: 3-4-5 triangles.
+        for scale in [1e-17f32, 1e-16, 1e-14] {
+            let v = normalize_vp([3.0 * scale, 0.0, 4.0 * scale]);
+            assert!(
+                (v[0] - 0.6).abs() < 1e-6 && v[1] == 0.0 && (v[2] - 0.8).abs() < 1e-6,
+                "{scale}: {v:?}"
+            );
+        }
+        // Lengths of 1 and 1e20 take the plain path (1e40 overflows: rsq 0).
+        assert_eq!(normalize_vp([0.0, 2.0, 0.0]), [0.0, 1.0, 0.0]);
+        assert_eq!(normalize_vp([0.0, 1e20, 0.0]), [0.0, 0.0, 0.0]);
     }
 
     #[test]
