@@ -1,7 +1,7 @@
 //! Matrix stacks and GL's matrix constructors.
 
 use crate::error::{GlError, GlResult};
-use glam::{Mat4, Vec3, Vec4};
+use glam::Mat4;
 
 /// Which stack matrix calls act on (`glMatrixMode`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -70,22 +70,55 @@ impl MatrixStack {
     }
 }
 
-/// `glRotate`: `angle` degrees about `(x, y, z)`; a zero axis gives the identity.
+/// `glRotate`: `angle` degrees about `(x, y, z)`, built as Mesa's
+/// `_math_matrix_rotate` (`math/m_matrix.c`) builds it, bit for bit: the
+/// angle to radians in double, `sinf`/`cosf`; an axis along x, y or z gets
+/// exact ones and zeros; any other axis is normalized in f32 and, when its
+/// length is at most 1e-4, gives the identity (no rotation).
 pub fn rotation(angle_deg: f32, x: f32, y: f32, z: f32) -> Mat4 {
-    let axis = Vec3::new(x, y, z);
-    let len = axis.length();
-    if len == 0.0 || !len.is_finite() {
-        return Mat4::IDENTITY;
+    let rad = (f64::from(angle_deg) * std::f64::consts::PI / 180.0) as f32;
+    let (s, c) = (rad.sin(), rad.cos());
+    let mut m = Mat4::IDENTITY.to_cols_array();
+    // M(row, col) = m[col * 4 + row].
+    let mut set = |row: usize, col: usize, v: f32| m[col * 4 + row] = v;
+    if x == 0.0 && y == 0.0 && z != 0.0 {
+        let s = if z < 0.0 { -s } else { s };
+        set(0, 0, c);
+        set(1, 1, c);
+        set(0, 1, -s);
+        set(1, 0, s);
+    } else if x == 0.0 && y != 0.0 && z == 0.0 {
+        let s = if y < 0.0 { -s } else { s };
+        set(0, 0, c);
+        set(2, 2, c);
+        set(0, 2, s);
+        set(2, 0, -s);
+    } else if x != 0.0 && y == 0.0 && z == 0.0 {
+        let s = if x < 0.0 { -s } else { s };
+        set(1, 1, c);
+        set(2, 2, c);
+        set(1, 2, -s);
+        set(2, 1, s);
+    } else {
+        let mag = (x * x + y * y + z * z).sqrt();
+        if mag <= 1.0e-4 {
+            return Mat4::IDENTITY;
+        }
+        let (x, y, z) = (x / mag, y / mag, z / mag);
+        let (xx, yy, zz, xy, yz, zx) = (x * x, y * y, z * z, x * y, y * z, z * x);
+        let (xs, ys, zs) = (x * s, y * s, z * s);
+        let one_c = 1.0 - c;
+        set(0, 0, (one_c * xx) + c);
+        set(0, 1, (one_c * xy) - zs);
+        set(0, 2, (one_c * zx) + ys);
+        set(1, 0, (one_c * xy) + zs);
+        set(1, 1, (one_c * yy) + c);
+        set(1, 2, (one_c * yz) - xs);
+        set(2, 0, (one_c * zx) - ys);
+        set(2, 1, (one_c * yz) + xs);
+        set(2, 2, (one_c * zz) + c);
     }
-    let (s, c) = angle_deg.to_radians().sin_cos();
-    let Vec3 { x, y, z } = axis / len;
-    let t = 1.0 - c;
-    Mat4::from_cols(
-        Vec4::new(x * x * t + c, y * x * t + z * s, x * z * t - y * s, 0.0),
-        Vec4::new(x * y * t - z * s, y * y * t + c, y * z * t + x * s, 0.0),
-        Vec4::new(x * z * t + y * s, y * z * t - x * s, z * z * t + c, 0.0),
-        Vec4::W,
-    )
+    Mat4::from_cols_array(&m)
 }
 
 /// `glFrustum`; `InvalidValue` when `near` or `far` is not positive or a pair is equal.

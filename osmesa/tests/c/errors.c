@@ -200,6 +200,21 @@ int main(int argc, char **argv) {
   glPopClientAttrib();
   glGetIntegerv(GL_PACK_ALIGNMENT, q); printf("client pop: pack alignment %d\n", q[0]);
   E(glPopClientAttrib());
+  /* glRotatef's matrix, bit for bit: axes along x, y, z (Mesa's exact ones
+   * and zeros), general axes, an axis too short to rotate about. */
+  static const float angles[] = {30, 90, 123.4f, -17};
+  static const float axes[][3] = {{1, 0, 0}, {0, -1, 0}, {0, 0, 2}, {1, 1, 0}, {0.3f, -0.5f, 0.8f}, {1e-5f, 0, 1e-5f}};
+  glMatrixMode(GL_MODELVIEW);
+  for (int a = 0; a < 4; a++)
+    for (int x = 0; x < 6; x++) {
+      GLfloat m[16];
+      glLoadIdentity();
+      glRotatef(angles[a], axes[x][0], axes[x][1], axes[x][2]);
+      glGetFloatv(GL_MODELVIEW_MATRIX, m);
+      printf("rotate %g axis %d:", angles[a], x);
+      for (int i = 0; i < 16; i++) printf(" %a", m[i]);
+      printf("\n");
+    }
   printf("final error 0x%x\n", glGetError());
   OSMesaDestroyContext(ctx);
   printf("current after destroy %d\n", OSMesaGetCurrentContext() == NULL);
