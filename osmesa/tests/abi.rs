@@ -7,32 +7,14 @@ use std::ptr::{null, null_mut};
 use OSMesa::consts::*;
 use OSMesa::*;
 
+mod current;
+use current::{current_in_pixels as current, GL_INVALID_ENUM, GL_INVALID_OPERATION, GL_INVALID_VALUE};
+
 const GL_TRIANGLES: u32 = 4;
 const GL_QUADS: u32 = 7;
 const GL_AUTO_NORMAL: u32 = 0x0D80;
 const GL_TEXTURE_2D: u32 = 0x0DE1;
 const GL_TEXTURE_WIDTH: u32 = 0x1000;
-const GL_INVALID_ENUM: u32 = 0x500;
-const GL_INVALID_VALUE: u32 = 0x501;
-const GL_INVALID_OPERATION: u32 = 0x502;
-const GL_PROJECTION: u32 = 0x1701;
-const GL_MODELVIEW: u32 = 0x1700;
-
-/// A context current on this thread, drawing into `buf` (RGBA bytes) with an
-/// orthographic projection of the window in pixels.
-fn current(buf: &mut [u8], w: i32, h: i32) -> OSMesaContext {
-    let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
-    assert!(!ctx.is_null());
-    // SAFETY: `buf` holds w * h RGBA pixels and outlives the test's drawing.
-    assert_eq!(
-        unsafe { OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, w, h) },
-        GL_TRUE
-    );
-    glMatrixMode(GL_PROJECTION);
-    glOrtho(0.0, f64::from(w), 0.0, f64::from(h), -1.0, 1.0);
-    glMatrixMode(GL_MODELVIEW);
-    ctx
-}
 
 fn px(buf: &[u8], w: usize, x: usize, y: usize) -> [u8; 4] {
     let o = (y * w + x) * 4;

@@ -1,9 +1,11 @@
 //! The lighting and clip plane entry points through the C ABI: state,
 //! queries, GL errors, the attribute stack and display lists.
 
-use std::ptr::null_mut;
 use OSMesa::consts::*;
 use OSMesa::*;
+
+mod current;
+use current::{current, GL_INVALID_ENUM, GL_INVALID_OPERATION, GL_INVALID_VALUE};
 
 const GL_LIGHTING: u32 = 0x0B50;
 const GL_LIGHT0: u32 = 0x4000;
@@ -33,20 +35,6 @@ const GL_TRANSFORM_BIT: u32 = 0x1000;
 const GL_ENABLE_BIT: u32 = 0x2000;
 const GL_COMPILE: u32 = 0x1300;
 const GL_TRIANGLES: u32 = 4;
-const GL_INVALID_ENUM: u32 = 0x500;
-const GL_INVALID_VALUE: u32 = 0x501;
-const GL_INVALID_OPERATION: u32 = 0x502;
-
-fn current(buf: &mut [u8], w: i32, h: i32) -> OSMesaContext {
-    let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
-    assert!(!ctx.is_null());
-    // SAFETY: `buf` holds w * h RGBA pixels and outlives the test's drawing.
-    assert_eq!(
-        unsafe { OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, w, h) },
-        GL_TRUE
-    );
-    ctx
-}
 
 fn get_light(light: u32, pname: u32) -> [f32; 4] {
     let mut v = [-9.0f32; 4];
