@@ -16,16 +16,21 @@ const F32X4: cranelift_codegen::ir::Type = types::F32X4;
 
 impl Gen<'_> {
     /// Sets the group's colour (as bytes) and depth from its primitive's planes.
-    pub(super) fn shade(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+    /// The span's planes pointer and its row splatted, loaded once a span.
+    pub(super) fn planes_and_row(&mut self, call: Value) -> (Value, Value) {
         let planes = self
             .b
             .ins()
-            .load(self.ptr, mem(), sv.call, offset_of!(SpanCall, planes) as i32);
+            .load(self.ptr, mem(), call, offset_of!(SpanCall, planes) as i32);
         let row = self
             .b
             .ins()
-            .load(types::F32, mem(), sv.call, offset_of!(SpanCall, row) as i32);
-        let row = self.b.ins().splat(F32X4, row);
+            .load(types::F32, mem(), call, offset_of!(SpanCall, row) as i32);
+        (planes, self.b.ins().splat(F32X4, row))
+    }
+
+    pub(super) fn shade(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+        let (planes, row) = sv.planes.expect("loaded for keys with a shading stage");
         // Pixel x of each lane: span.x + lane0 + 0..4, as f32.
         let x = self.b.ins().iadd(sv.x0, g.lane0);
         let x = self.b.ins().splat(I32X4, x);
