@@ -144,7 +144,7 @@ struct SpanValues {
     groups: Value,
     x0: Value,
     /// The planes pointer and the row splatted, for keys with a shading stage.
-    planes: Option<(Value, Value)>,
+    planes: Option<(Value, Value, Value)>,
 }
 
 /// The fragment values of one group of four, as the stages update them.
@@ -230,7 +230,7 @@ impl<'a> Gen<'a> {
         };
         let mut sv = sv;
         if self.key.shade.is_some() {
-            sv.planes = Some(self.planes_and_row(call));
+            sv.planes = Some(self.planes_and_row(call, x0));
         }
         let exit = self.b.create_block();
 
