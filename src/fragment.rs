@@ -66,7 +66,7 @@ impl<'t> FragmentStage<'t> {
         Ok(FragmentStage {
             specialist: specialist.filter(|s| *s.key() == key),
             span_color: key.shade.is_none_or(|s| !s.color),
-            span_z: key.shade.is_none_or(|s| !s.depth),
+            span_z: key.depth.is_some() && key.shade.is_none_or(|s| !s.depth),
             count: 0,
             key,
             uniforms,

@@ -121,6 +121,14 @@ pub fn rint_nonnegative(v: f32) -> f32 {
     }
 }
 
+/// Writes the first `N` bytes of `bytes` to each `N`-byte pixel of `row`.
+fn fill_row<const N: usize>(row: &mut [u8], bytes: &[u8; 4]) {
+    let px: [u8; N] = std::array::from_fn(|i| bytes[i]);
+    for p in row.chunks_exact_mut(N) {
+        p.copy_from_slice(&px);
+    }
+}
+
 /// Converts a float in `[0, 1]` (clamped; NaN reads as 0) to a unorm value of
 /// `max`, rounding half to even as llvmpipe does.
 #[inline]
@@ -397,12 +405,15 @@ impl Framebuffer {
             let start = self.color_offset(rect.x0, y);
             let len = (rect.x1 - rect.x0) as usize * bpp;
             let row = &mut self.color.bytes_mut()[start..][..len];
-            for px in row.chunks_exact_mut(bpp) {
-                if all {
-                    px.copy_from_slice(&bytes[..bpp]);
-                } else {
-                    let old = pixel::load(format, px);
-                    pixel::store(format, px, (value & bits) | (old & !bits));
+            match (all, bpp) {
+                (true, 4) => fill_row::<4>(row, &bytes),
+                (true, 3) => fill_row::<3>(row, &bytes),
+                (true, _) => fill_row::<2>(row, &bytes),
+                (false, _) => {
+                    for px in row.chunks_exact_mut(bpp) {
+                        let old = pixel::load(format, px);
+                        pixel::store(format, px, (value & bits) | (old & !bits));
+                    }
                 }
             }
         }

@@ -134,8 +134,7 @@ enum Factor {
 
 /// Per-span values loaded once in the entry block.
 struct SpanValues {
-    /// The `SpanCall` and uniforms pointers.
-    call: Value,
+    /// The uniforms pointer.
     u: Value,
     span: Value,
     color: Value,
@@ -144,6 +143,8 @@ struct SpanValues {
     live: Value,
     groups: Value,
     x0: Value,
+    /// The planes pointer and the row splatted, for keys with a shading stage.
+    planes: Option<(Value, Value, Value)>,
 }
 
 /// The fragment values of one group of four, as the stages update them.
@@ -217,7 +218,6 @@ impl<'a> Gen<'a> {
             .ins()
             .load(types::I32, mem(), span, offset_of!(FragmentSpan, x) as i32);
         let sv = SpanValues {
-            call,
             u,
             span,
             color,
@@ -226,7 +226,12 @@ impl<'a> Gen<'a> {
             live,
             groups,
             x0,
+            planes: None,
         };
+        let mut sv = sv;
+        if self.key.shade.is_some() {
+            sv.planes = Some(self.planes_and_row(call, x0));
+        }
         let exit = self.b.create_block();
 
         // The scissor's rows are tested once per span.

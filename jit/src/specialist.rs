@@ -155,7 +155,11 @@ impl Specialist {
             live,
             groups,
             _pad: 0,
-            dither: std::array::from_fn(|i| pixel::dither_bias(span.x + i as u32, span.y)),
+            dither: if self.key.dither {
+                std::array::from_fn(|i| pixel::dither_bias(span.x + i as u32, span.y))
+            } else {
+                [0; 4]
+            },
             planes,
             row: row_of(span.y, t.height()),
             _pad2: 0,

@@ -417,6 +417,29 @@ fn display_lists_match_mesa() {
 }
 
 #[test]
+fn fog_and_the_colour_sum_match_mesa() {
+    let Some(exe) = build("fog") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    for k in 0..11 {
+        let name = format!("fog.{k}");
+        let (m, s) = (mesa.file(&name), soft.file(&name));
+        let differing = m.chunks_exact(4).zip(s.chunks_exact(4)).filter(|(a, b)| a != b).count();
+        // Scene 9 (points and wide lines): one pixel at a line endpoint tie,
+        // where llvmpipe's diamond tests are asymmetric (docs/llvmpipe-facts.md
+        // §11; 3 pixels with fog off). Every triangle scene is byte for byte.
+        let allowed = if k == 9 { 3 } else { 0 };
+        assert!(differing <= allowed, "scene {k}: {differing} pixels differ");
+    }
+    // Something was drawn in every scene: not all pixels the clear colour.
+    for k in 0..11 {
+        let img = soft.file(&format!("fog.{k}"));
+        let drawn = img.chunks_exact(4).filter(|p| p[..3] != [26, 51, 77]).count();
+        assert!(drawn > 500, "scene {k}: only {drawn} pixels drawn");
+    }
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+}
+
+#[test]
 fn contexts_on_threads_are_independent() {
     let Some(exe) = build("threads") else { return };
     for softgl in [false, true] {

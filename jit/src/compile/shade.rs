@@ -16,22 +16,30 @@ const F32X4: cranelift_codegen::ir::Type = types::F32X4;
 
 impl Gen<'_> {
     /// Sets the group's colour (as bytes) and depth from its primitive's planes.
-    pub(super) fn shade(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+    /// The span's planes pointer, its row splatted and the x of its first
+    /// four pixels as f32, made once a span.
+    pub(super) fn planes_and_row(&mut self, call: Value, x0: Value) -> (Value, Value, Value) {
         let planes = self
             .b
             .ins()
-            .load(self.ptr, mem(), sv.call, offset_of!(SpanCall, planes) as i32);
+            .load(self.ptr, mem(), call, offset_of!(SpanCall, planes) as i32);
         let row = self
             .b
             .ins()
-            .load(types::F32, mem(), sv.call, offset_of!(SpanCall, row) as i32);
+            .load(types::F32, mem(), call, offset_of!(SpanCall, row) as i32);
         let row = self.b.ins().splat(F32X4, row);
-        // Pixel x of each lane: span.x + lane0 + 0..4, as f32.
-        let x = self.b.ins().iadd(sv.x0, g.lane0);
-        let x = self.b.ins().splat(I32X4, x);
+        let x = self.b.ins().splat(I32X4, x0);
         let idx = self.vconst([0, 1, 2, 3]);
         let x = self.b.ins().iadd(x, idx);
-        let px = self.b.ins().fcvt_from_sint(F32X4, x);
+        (planes, row, self.b.ins().fcvt_from_sint(F32X4, x))
+    }
+
+    pub(super) fn shade(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+        let (planes, row, px0) = sv.planes.expect("loaded for keys with a shading stage");
+        // Pixel x of each lane: (span.x + 0..4) + lane0 as f32, exact (below 2^24).
+        let lane0 = self.b.ins().fcvt_from_sint(types::F32, g.lane0);
+        let lane0 = self.b.ins().splat(F32X4, lane0);
+        let px = self.b.ins().fadd(px0, lane0);
         let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
 
         if key.depth {
