@@ -32,8 +32,8 @@ const fn lsb(test: usize, report: usize) -> Tolerance {
         share_over: 0.0,
         coverage: 0,
         reason: "1 LSB on the pixels counted, where a lit colour's last f32 bit differs from llvmpipe's \
-                 (softgl inverts the modelview in f64, Mesa in f32: docs/llvmpipe-facts.md 15); softpipe as far or \
-                 farther",
+                 (cause not identified yet; what softgl copies of Mesa's vertex arithmetic: docs/llvmpipe-facts.md \
+                 §15); softpipe as far or farther",
     }
 }
 
