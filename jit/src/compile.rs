@@ -463,7 +463,10 @@ impl<'a> Gen<'a> {
                     g.rgba = self.blend(&blend, g.rgba, d, u);
                 }
                 Stage::Pack { dither } => {
-                    g.packed = Some(self.pack(g.rgba, dither.then_some(u.dither)));
+                    // The shading stage may have packed the colour already.
+                    if g.packed.is_none() {
+                        g.packed = Some(self.pack(g.rgba, dither.then_some(u.dither)));
+                    }
                 }
                 Stage::LogicOp(op) => {
                     let dst = self.load_dst(&mut g);
