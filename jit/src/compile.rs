@@ -143,7 +143,8 @@ struct SpanValues {
     live: Value,
     groups: Value,
     x0: Value,
-    /// The planes pointer and the row splatted, for keys with a shading stage.
+    /// The planes pointer, the row splatted and the pixel x of the span's
+    /// first four lanes, for keys with a shading stage.
     planes: Option<(Value, Value, Value)>,
 }
 
@@ -162,6 +163,8 @@ struct Group {
     lane0: Value,
     /// Depth values computed by the shading stage; else read from the span.
     z: Option<Value>,
+    /// The pixel x of the lanes as f32 (keys with a shading stage).
+    px: Option<Value>,
 }
 
 struct Gen<'a> {
@@ -250,11 +253,21 @@ impl<'a> Gen<'a> {
             self.b.switch_to_block(go);
         }
 
-        // for g in 0..groups
+        // for g in 0..groups, with the pixel x of the group's lanes as f32
+        // carried along (exact: below 2^24) for keys with a shading stage.
         let head = self.b.create_block();
         let gi = self.b.append_block_param(head, types::I32);
         let zero = self.b.ins().iconst(types::I32, 0);
-        self.b.ins().jump(head, &[zero.into()]);
+        let px = sv.planes.map(|(_, _, px0)| {
+            let four = self.b.ins().f32const(4.0);
+            (px0, self.b.ins().splat(types::F32X4, four))
+        });
+        let px_head = px.map(|_| self.b.append_block_param(head, types::F32X4));
+        let mut args = vec![zero.into()];
+        if let Some((px0, _)) = px {
+            args.push(px0.into());
+        }
+        self.b.ins().jump(head, &args);
         self.b.switch_to_block(head);
         let more = self.b.ins().icmp(IntCC::UnsignedLessThan, gi, sv.groups);
         let body = self.b.create_block();
@@ -277,12 +290,17 @@ impl<'a> Gen<'a> {
         self.consts.clear();
         self.fconsts.clear();
         let uniforms = Uniforms::load(self, u, call);
-        let group = self.group(&sv, gi, bits);
+        let mut group = self.group(&sv, gi, bits);
+        group.px = px_head;
         self.stages(group, &sv, &uniforms, next);
 
         self.b.switch_to_block(next);
         let g1 = self.b.ins().iadd_imm_u(gi, 1);
-        self.b.ins().jump(head, &[g1.into()]);
+        let mut args = vec![g1.into()];
+        if let (Some(p), Some((_, four))) = (px_head, px) {
+            args.push(self.b.ins().fadd(p, four).into());
+        }
+        self.b.ins().jump(head, &args);
 
         self.b.switch_to_block(exit);
         self.b.ins().return_(&[]);
@@ -350,6 +368,7 @@ impl<'a> Gen<'a> {
             stencil_p,
             lane0,
             z: None,
+            px: None,
         }
     }
 
@@ -426,19 +445,23 @@ impl<'a> Gen<'a> {
                 }
                 Stage::DepthTest { depth, stencil } => {
                     let Some(format) = self.key.depth_format else { continue };
-                    let max = self.splat(i64::from(format.max_value()));
+                    // Depth from the planes is already at most the format's largest value.
                     let z = match g.z {
                         Some(z) => z,
                         None => {
                             let lane0_p = self.b.ins().uextend(self.ptr, g.lane0);
                             let zoff = self.b.ins().imul_imm_u(lane0_p, 4);
                             let zp = self.b.ins().iadd(sv.span, zoff);
-                            self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32)
+                            let z = self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32);
+                            let max = self.splat(i64::from(format.max_value()));
+                            self.b.ins().umin(z, max)
                         }
                     };
-                    let z = self.b.ins().umin(z, max);
                     let stored = self.load_depth(format, g.depth_p);
-                    let pass = self.compare(depth.func, z, stored);
+                    // 16- and 24-bit values are non-negative as i32, where x86
+                    // compares in one instruction (unsigned takes three).
+                    let signed = format != DepthFormat::D32;
+                    let pass = self.compare_as(depth.func, z, stored, signed);
                     let pass = self.b.ins().band(pass, g.live);
                     if depth.write {
                         let out = self.b.ins().bitselect(pass, z, stored);
@@ -502,15 +525,36 @@ impl<'a> Gen<'a> {
 
     /// Lanes where `incoming <func> stored` holds (unsigned), as a lane mask.
     fn compare(&mut self, func: CompareFunc, incoming: Value, stored: Value) -> Value {
+        self.compare_as(func, incoming, stored, false)
+    }
+
+    /// [`Self::compare`], as signed integers when `signed` (for lanes known
+    /// to be below `2^31`, where both orders agree).
+    fn compare_as(&mut self, func: CompareFunc, incoming: Value, stored: Value, signed: bool) -> Value {
+        let (lt, le, gt, ge) = if signed {
+            (
+                IntCC::SignedLessThan,
+                IntCC::SignedLessThanOrEqual,
+                IntCC::SignedGreaterThan,
+                IntCC::SignedGreaterThanOrEqual,
+            )
+        } else {
+            (
+                IntCC::UnsignedLessThan,
+                IntCC::UnsignedLessThanOrEqual,
+                IntCC::UnsignedGreaterThan,
+                IntCC::UnsignedGreaterThanOrEqual,
+            )
+        };
         let cc = match func {
             CompareFunc::Never => return self.splat(0),
             CompareFunc::Always => return self.splat(-1),
-            CompareFunc::Less => IntCC::UnsignedLessThan,
+            CompareFunc::Less => lt,
             CompareFunc::Equal => IntCC::Equal,
-            CompareFunc::Lequal => IntCC::UnsignedLessThanOrEqual,
-            CompareFunc::Greater => IntCC::UnsignedGreaterThan,
+            CompareFunc::Lequal => le,
+            CompareFunc::Greater => gt,
             CompareFunc::Notequal => IntCC::NotEqual,
-            CompareFunc::Gequal => IntCC::UnsignedGreaterThanOrEqual,
+            CompareFunc::Gequal => ge,
         };
         self.b.ins().icmp(cc, incoming, stored)
     }

@@ -35,11 +35,8 @@ impl Gen<'_> {
     }
 
     pub(super) fn shade(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
-        let (planes, row, px0) = sv.planes.expect("loaded for keys with a shading stage");
-        // Pixel x of each lane: (span.x + 0..4) + lane0 as f32, exact (below 2^24).
-        let lane0 = self.b.ins().fcvt_from_sint(types::F32, g.lane0);
-        let lane0 = self.b.ins().splat(F32X4, lane0);
-        let px = self.b.ins().fadd(px0, lane0);
+        let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
+        let px = g.px.expect("carried by the loop for keys with a shading stage");
         let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
 
         if key.depth {
