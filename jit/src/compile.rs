@@ -394,9 +394,13 @@ impl<'a> Gen<'a> {
             .any(|s| matches!(s, Stage::Pack { .. } | Stage::Blend(_)));
         let needs_alpha = needs_color || self.key.alpha_test.is_some();
         if let Some(shade) = self.key.shade {
-            self.shade(&mut g, sv, &shade);
+            self.shade_depth(&mut g, sv, &shade);
         }
-        let from_span = !self.key.shade.is_some_and(|s| s.color);
+        // The colour from the planes is made just before the first stage that
+        // reads it, so that groups the scissor, stencil or depth test kill
+        // skip it (the 20k-triangle frame's depth test kills most).
+        let mut colour_due = self.key.shade.filter(|s| s.color);
+        let from_span = colour_due.is_none();
         if needs_color && from_span {
             for c in 0..3 {
                 g.rgba[c] = self.span_channel(sv, g.lane0, c);
@@ -406,6 +410,10 @@ impl<'a> Gen<'a> {
             g.rgba[3] = self.span_channel(sv, g.lane0, 3);
         }
         for stage in stages.as_slice() {
+            if let (Some(shade), Stage::AlphaTest(_) | Stage::Blend(_) | Stage::Pack { .. }) = (colour_due, stage) {
+                self.shade_color(&mut g, sv, &shade);
+                colour_due = None;
+            }
             match *stage {
                 Stage::Shade(_) => {}
                 Stage::Scissor => {

@@ -15,7 +15,6 @@ use std::mem::offset_of;
 const F32X4: cranelift_codegen::ir::Type = types::F32X4;
 
 impl Gen<'_> {
-    /// Sets the group's colour (as bytes) and depth from its primitive's planes.
     /// The span's planes pointer, its row splatted and the x of its first
     /// four pixels as f32, made once a span.
     pub(super) fn planes_and_row(&mut self, call: Value, x0: Value) -> (Value, Value, Value) {
@@ -34,11 +33,12 @@ impl Gen<'_> {
         (planes, row, self.b.ins().fcvt_from_sint(F32X4, x))
     }
 
-    pub(super) fn shade(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+    /// Sets the group's depth from its primitive's planes (keys whose shading
+    /// stage computes depth).
+    pub(super) fn shade_depth(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
         let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
         let px = g.px.expect("carried by the loop for keys with a shading stage");
         let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
-
         if key.depth {
             if let Some(format) = self.key.depth_format {
                 let z = at(self, slot::Z);
@@ -48,9 +48,14 @@ impl Gen<'_> {
                 });
             }
         }
-        if !key.color {
-            return;
-        }
+    }
+
+    /// Sets the group's colour (as bytes, or packed when no later stage
+    /// reads the channels) from its primitive's planes.
+    pub(super) fn shade_color(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+        let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
+        let px = g.px.expect("carried by the loop for keys with a shading stage");
+        let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
         let w = if !key.flat || key.fog.is_some() {
             let iw = at(self, slot::INV_W);
             let one = self.fconst(1.0);
