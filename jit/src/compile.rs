@@ -45,9 +45,11 @@ pub struct SpanCall {
     pub depth: *mut u8,
     /// The stencil value of pixel `(span.x, span.y)`, or null.
     pub stencil: *mut u8,
-    /// Fragments to process: covered and inside the target.
+    /// Fragments to process: covered and inside the target; no bit at or
+    /// above `4 * groups`.
     pub live: u64,
-    /// Groups of four lanes to visit, from lane 0.
+    /// Groups of four lanes addressable from the pointers, from lane 0 (the
+    /// code visits groups until no live lane remains).
     pub groups: u32,
     pub _pad: u32,
     /// The dither bias of lanes `0..4` (the pattern repeats every four pixels).
@@ -141,7 +143,6 @@ struct SpanValues {
     depth: Value,
     stencil: Value,
     live: Value,
-    groups: Value,
     x0: Value,
     /// The planes pointer, the row splatted and the pixel x of the span's
     /// first four lanes, for keys with a shading stage.
@@ -212,10 +213,6 @@ impl<'a> Gen<'a> {
             .b
             .ins()
             .load(types::I64, mem(), call, offset_of!(SpanCall, live) as i32);
-        let groups = self
-            .b
-            .ins()
-            .load(types::I32, mem(), call, offset_of!(SpanCall, groups) as i32);
         let x0 = self
             .b
             .ins()
@@ -227,7 +224,6 @@ impl<'a> Gen<'a> {
             depth,
             stencil,
             live,
-            groups,
             x0,
             planes: None,
         };
@@ -253,32 +249,31 @@ impl<'a> Gen<'a> {
             self.b.switch_to_block(go);
         }
 
-        // for g in 0..groups, with the pixel x of the group's lanes as f32
-        // carried along (exact: below 2^24) for keys with a shading stage.
+        // Groups of four from lane 0 while live lanes remain (the last live
+        // lane is in group `groups - 1`), carrying the first lane, the live
+        // bits from it on and, for keys with a shading stage, the pixel x of
+        // the group's lanes as f32 (exact: below 2^24).
         let head = self.b.create_block();
-        let gi = self.b.append_block_param(head, types::I32);
+        let lane0 = self.b.append_block_param(head, types::I32);
+        let rest = self.b.append_block_param(head, types::I64);
         let zero = self.b.ins().iconst(types::I32, 0);
         let px = sv.planes.map(|(_, _, px0)| {
             let four = self.b.ins().f32const(4.0);
             (px0, self.b.ins().splat(types::F32X4, four))
         });
         let px_head = px.map(|_| self.b.append_block_param(head, types::F32X4));
-        let mut args = vec![zero.into()];
+        let mut args = vec![zero.into(), sv.live.into()];
         if let Some((px0, _)) = px {
             args.push(px0.into());
         }
         self.b.ins().jump(head, &args);
         self.b.switch_to_block(head);
-        let more = self.b.ins().icmp(IntCC::UnsignedLessThan, gi, sv.groups);
         let body = self.b.create_block();
-        self.b.ins().brif(more, body, &[], exit, &[]);
+        self.b.ins().brif(rest, body, &[], exit, &[]);
 
         self.b.switch_to_block(body);
         let next = self.b.create_block();
-        let shift = self.b.ins().ishl_imm_u(gi, 2);
-        let shift64 = self.b.ins().uextend(types::I64, shift);
-        let bits = self.b.ins().ushr(sv.live, shift64);
-        let bits = self.b.ins().ireduce(types::I32, bits);
+        let bits = self.b.ins().ireduce(types::I32, rest);
         let bits = self.b.ins().band_imm_u(bits, 15);
         let work = self.b.create_block();
         self.b.ins().brif(bits, work, &[], next, &[]);
@@ -290,13 +285,14 @@ impl<'a> Gen<'a> {
         self.consts.clear();
         self.fconsts.clear();
         let uniforms = Uniforms::load(self, u, call);
-        let mut group = self.group(&sv, gi, bits);
+        let mut group = self.group(&sv, lane0, bits);
         group.px = px_head;
         self.stages(group, &sv, &uniforms, next);
 
         self.b.switch_to_block(next);
-        let g1 = self.b.ins().iadd_imm_u(gi, 1);
-        let mut args = vec![g1.into()];
+        let lane4 = self.b.ins().iadd_imm_u(lane0, 4);
+        let rest4 = self.b.ins().ushr_imm_u(rest, 4);
+        let mut args = vec![lane4.into(), rest4.into()];
         if let (Some(p), Some((_, four))) = (px_head, px) {
             args.push(self.b.ins().fadd(p, four).into());
         }
@@ -339,13 +335,12 @@ impl<'a> Gen<'a> {
     }
 
     /// The lane mask of group `g` and its span data.
-    fn group(&mut self, sv: &SpanValues, gi: Value, bits: Value) -> Group {
+    fn group(&mut self, sv: &SpanValues, lane0: Value, bits: Value) -> Group {
         let bits_v = self.b.ins().splat(I32X4, bits);
         let lane_bits = self.vconst([1, 2, 4, 8]);
         let sel = self.b.ins().band(bits_v, lane_bits);
         let zero = self.splat(0);
         let live = self.b.ins().icmp(IntCC::Equal, sel, lane_bits);
-        let lane0 = self.b.ins().ishl_imm_u(gi, 2);
         let lane0_p = self.b.ins().uextend(self.ptr, lane0);
         let bpp = self.key.color_format.bytes_per_pixel() as i64;
         let off = self.b.ins().imul_imm_u(lane0_p, bpp);
