@@ -45,9 +45,11 @@ pub struct SpanCall {
     pub depth: *mut u8,
     /// The stencil value of pixel `(span.x, span.y)`, or null.
     pub stencil: *mut u8,
-    /// Fragments to process: covered and inside the target.
+    /// Fragments to process: covered and inside the target; no bit at or
+    /// above `4 * groups`.
     pub live: u64,
-    /// Groups of four lanes to visit, from lane 0.
+    /// Groups of four lanes addressable from the pointers, from lane 0 (the
+    /// code visits groups until no live lane remains).
     pub groups: u32,
     pub _pad: u32,
     /// The dither bias of lanes `0..4` (the pattern repeats every four pixels).
@@ -141,9 +143,9 @@ struct SpanValues {
     depth: Value,
     stencil: Value,
     live: Value,
-    groups: Value,
     x0: Value,
-    /// The planes pointer and the row splatted, for keys with a shading stage.
+    /// The planes pointer, the row splatted and the pixel x of the span's
+    /// first four lanes, for keys with a shading stage.
     planes: Option<(Value, Value, Value)>,
 }
 
@@ -162,6 +164,8 @@ struct Group {
     lane0: Value,
     /// Depth values computed by the shading stage; else read from the span.
     z: Option<Value>,
+    /// The pixel x of the lanes as f32 (keys with a shading stage).
+    px: Option<Value>,
 }
 
 struct Gen<'a> {
@@ -209,10 +213,6 @@ impl<'a> Gen<'a> {
             .b
             .ins()
             .load(types::I64, mem(), call, offset_of!(SpanCall, live) as i32);
-        let groups = self
-            .b
-            .ins()
-            .load(types::I32, mem(), call, offset_of!(SpanCall, groups) as i32);
         let x0 = self
             .b
             .ins()
@@ -224,7 +224,6 @@ impl<'a> Gen<'a> {
             depth,
             stencil,
             live,
-            groups,
             x0,
             planes: None,
         };
@@ -250,22 +249,31 @@ impl<'a> Gen<'a> {
             self.b.switch_to_block(go);
         }
 
-        // for g in 0..groups
+        // Groups of four from lane 0 while live lanes remain (the last live
+        // lane is in group `groups - 1`), carrying the first lane, the live
+        // bits from it on and, for keys with a shading stage, the pixel x of
+        // the group's lanes as f32 (exact: below 2^24).
         let head = self.b.create_block();
-        let gi = self.b.append_block_param(head, types::I32);
+        let lane0 = self.b.append_block_param(head, types::I32);
+        let rest = self.b.append_block_param(head, types::I64);
         let zero = self.b.ins().iconst(types::I32, 0);
-        self.b.ins().jump(head, &[zero.into()]);
+        let px = sv.planes.map(|(_, _, px0)| {
+            let four = self.b.ins().f32const(4.0);
+            (px0, self.b.ins().splat(types::F32X4, four))
+        });
+        let px_head = px.map(|_| self.b.append_block_param(head, types::F32X4));
+        let mut args = vec![zero.into(), sv.live.into()];
+        if let Some((px0, _)) = px {
+            args.push(px0.into());
+        }
+        self.b.ins().jump(head, &args);
         self.b.switch_to_block(head);
-        let more = self.b.ins().icmp(IntCC::UnsignedLessThan, gi, sv.groups);
         let body = self.b.create_block();
-        self.b.ins().brif(more, body, &[], exit, &[]);
+        self.b.ins().brif(rest, body, &[], exit, &[]);
 
         self.b.switch_to_block(body);
         let next = self.b.create_block();
-        let shift = self.b.ins().ishl_imm_u(gi, 2);
-        let shift64 = self.b.ins().uextend(types::I64, shift);
-        let bits = self.b.ins().ushr(sv.live, shift64);
-        let bits = self.b.ins().ireduce(types::I32, bits);
+        let bits = self.b.ins().ireduce(types::I32, rest);
         let bits = self.b.ins().band_imm_u(bits, 15);
         let work = self.b.create_block();
         self.b.ins().brif(bits, work, &[], next, &[]);
@@ -277,12 +285,18 @@ impl<'a> Gen<'a> {
         self.consts.clear();
         self.fconsts.clear();
         let uniforms = Uniforms::load(self, u, call);
-        let group = self.group(&sv, gi, bits);
+        let mut group = self.group(&sv, lane0, bits);
+        group.px = px_head;
         self.stages(group, &sv, &uniforms, next);
 
         self.b.switch_to_block(next);
-        let g1 = self.b.ins().iadd_imm_u(gi, 1);
-        self.b.ins().jump(head, &[g1.into()]);
+        let lane4 = self.b.ins().iadd_imm_u(lane0, 4);
+        let rest4 = self.b.ins().ushr_imm_u(rest, 4);
+        let mut args = vec![lane4.into(), rest4.into()];
+        if let (Some(p), Some((_, four))) = (px_head, px) {
+            args.push(self.b.ins().fadd(p, four).into());
+        }
+        self.b.ins().jump(head, &args);
 
         self.b.switch_to_block(exit);
         self.b.ins().return_(&[]);
@@ -321,13 +335,12 @@ impl<'a> Gen<'a> {
     }
 
     /// The lane mask of group `g` and its span data.
-    fn group(&mut self, sv: &SpanValues, gi: Value, bits: Value) -> Group {
+    fn group(&mut self, sv: &SpanValues, lane0: Value, bits: Value) -> Group {
         let bits_v = self.b.ins().splat(I32X4, bits);
         let lane_bits = self.vconst([1, 2, 4, 8]);
         let sel = self.b.ins().band(bits_v, lane_bits);
         let zero = self.splat(0);
         let live = self.b.ins().icmp(IntCC::Equal, sel, lane_bits);
-        let lane0 = self.b.ins().ishl_imm_u(gi, 2);
         let lane0_p = self.b.ins().uextend(self.ptr, lane0);
         let bpp = self.key.color_format.bytes_per_pixel() as i64;
         let off = self.b.ins().imul_imm_u(lane0_p, bpp);
@@ -350,6 +363,7 @@ impl<'a> Gen<'a> {
             stencil_p,
             lane0,
             z: None,
+            px: None,
         }
     }
 
@@ -375,9 +389,13 @@ impl<'a> Gen<'a> {
             .any(|s| matches!(s, Stage::Pack { .. } | Stage::Blend(_)));
         let needs_alpha = needs_color || self.key.alpha_test.is_some();
         if let Some(shade) = self.key.shade {
-            self.shade(&mut g, sv, &shade);
+            self.shade_depth(&mut g, sv, &shade);
         }
-        let from_span = !self.key.shade.is_some_and(|s| s.color);
+        // The colour from the planes is made just before the first stage that
+        // reads it, so that groups the scissor, stencil or depth test kill
+        // skip it (the 20k-triangle frame's depth test kills most).
+        let mut colour_due = self.key.shade.filter(|s| s.color);
+        let from_span = colour_due.is_none();
         if needs_color && from_span {
             for c in 0..3 {
                 g.rgba[c] = self.span_channel(sv, g.lane0, c);
@@ -387,6 +405,10 @@ impl<'a> Gen<'a> {
             g.rgba[3] = self.span_channel(sv, g.lane0, 3);
         }
         for stage in stages.as_slice() {
+            if let (Some(shade), Stage::AlphaTest(_) | Stage::Blend(_) | Stage::Pack { .. }) = (colour_due, stage) {
+                self.shade_color(&mut g, sv, &shade);
+                colour_due = None;
+            }
             match *stage {
                 Stage::Shade(_) => {}
                 Stage::Scissor => {
@@ -426,19 +448,23 @@ impl<'a> Gen<'a> {
                 }
                 Stage::DepthTest { depth, stencil } => {
                     let Some(format) = self.key.depth_format else { continue };
-                    let max = self.splat(i64::from(format.max_value()));
+                    // Depth from the planes is already at most the format's largest value.
                     let z = match g.z {
                         Some(z) => z,
                         None => {
                             let lane0_p = self.b.ins().uextend(self.ptr, g.lane0);
                             let zoff = self.b.ins().imul_imm_u(lane0_p, 4);
                             let zp = self.b.ins().iadd(sv.span, zoff);
-                            self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32)
+                            let z = self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32);
+                            let max = self.splat(i64::from(format.max_value()));
+                            self.b.ins().umin(z, max)
                         }
                     };
-                    let z = self.b.ins().umin(z, max);
                     let stored = self.load_depth(format, g.depth_p);
-                    let pass = self.compare(depth.func, z, stored);
+                    // 16- and 24-bit values are non-negative as i32, where x86
+                    // compares in one instruction (unsigned takes three).
+                    let signed = format != DepthFormat::D32;
+                    let pass = self.compare_as(depth.func, z, stored, signed);
                     let pass = self.b.ins().band(pass, g.live);
                     if depth.write {
                         let out = self.b.ins().bitselect(pass, z, stored);
@@ -463,7 +489,10 @@ impl<'a> Gen<'a> {
                     g.rgba = self.blend(&blend, g.rgba, d, u);
                 }
                 Stage::Pack { dither } => {
-                    g.packed = Some(self.pack(g.rgba, dither.then_some(u.dither)));
+                    // The shading stage may have packed the colour already.
+                    if g.packed.is_none() {
+                        g.packed = Some(self.pack(g.rgba, dither.then_some(u.dither)));
+                    }
                 }
                 Stage::LogicOp(op) => {
                     let dst = self.load_dst(&mut g);
@@ -499,15 +528,36 @@ impl<'a> Gen<'a> {
 
     /// Lanes where `incoming <func> stored` holds (unsigned), as a lane mask.
     fn compare(&mut self, func: CompareFunc, incoming: Value, stored: Value) -> Value {
+        self.compare_as(func, incoming, stored, false)
+    }
+
+    /// [`Self::compare`], as signed integers when `signed` (for lanes known
+    /// to be below `2^31`, where both orders agree).
+    fn compare_as(&mut self, func: CompareFunc, incoming: Value, stored: Value, signed: bool) -> Value {
+        let (lt, le, gt, ge) = if signed {
+            (
+                IntCC::SignedLessThan,
+                IntCC::SignedLessThanOrEqual,
+                IntCC::SignedGreaterThan,
+                IntCC::SignedGreaterThanOrEqual,
+            )
+        } else {
+            (
+                IntCC::UnsignedLessThan,
+                IntCC::UnsignedLessThanOrEqual,
+                IntCC::UnsignedGreaterThan,
+                IntCC::UnsignedGreaterThanOrEqual,
+            )
+        };
         let cc = match func {
             CompareFunc::Never => return self.splat(0),
             CompareFunc::Always => return self.splat(-1),
-            CompareFunc::Less => IntCC::UnsignedLessThan,
+            CompareFunc::Less => lt,
             CompareFunc::Equal => IntCC::Equal,
-            CompareFunc::Lequal => IntCC::UnsignedLessThanOrEqual,
-            CompareFunc::Greater => IntCC::UnsignedGreaterThan,
+            CompareFunc::Lequal => le,
+            CompareFunc::Greater => gt,
             CompareFunc::Notequal => IntCC::NotEqual,
-            CompareFunc::Gequal => IntCC::UnsignedGreaterThanOrEqual,
+            CompareFunc::Gequal => ge,
         };
         self.b.ins().icmp(cc, incoming, stored)
     }

@@ -4,8 +4,8 @@
 //! multiply-adds exactly where it has them), so the bits equal the
 //! interpreter's.
 
-use super::{mem, Gen, Group, SpanCall, SpanValues, I32X4};
-use crate::key::{DepthFormat, ShadeKey};
+use super::{le, mem, Gen, Group, SpanCall, SpanValues, I32X4};
+use crate::key::{ColorFormat, DepthFormat, ShadeKey};
 use crate::shade::{exp2_coeffs, slot, FogMode, FogUniforms, Planes};
 use crate::uniforms::FragmentUniforms;
 use cranelift_codegen::ir::condcodes::FloatCC;
@@ -15,7 +15,6 @@ use std::mem::offset_of;
 const F32X4: cranelift_codegen::ir::Type = types::F32X4;
 
 impl Gen<'_> {
-    /// Sets the group's colour (as bytes) and depth from its primitive's planes.
     /// The span's planes pointer, its row splatted and the x of its first
     /// four pixels as f32, made once a span.
     pub(super) fn planes_and_row(&mut self, call: Value, x0: Value) -> (Value, Value, Value) {
@@ -34,14 +33,12 @@ impl Gen<'_> {
         (planes, row, self.b.ins().fcvt_from_sint(F32X4, x))
     }
 
-    pub(super) fn shade(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
-        let (planes, row, px0) = sv.planes.expect("loaded for keys with a shading stage");
-        // Pixel x of each lane: (span.x + 0..4) + lane0 as f32, exact (below 2^24).
-        let lane0 = self.b.ins().fcvt_from_sint(types::F32, g.lane0);
-        let lane0 = self.b.ins().splat(F32X4, lane0);
-        let px = self.b.ins().fadd(px0, lane0);
+    /// Sets the group's depth from its primitive's planes (keys whose shading
+    /// stage computes depth).
+    pub(super) fn shade_depth(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+        let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
+        let px = g.px.expect("carried by the loop for keys with a shading stage");
         let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
-
         if key.depth {
             if let Some(format) = self.key.depth_format {
                 let z = at(self, slot::Z);
@@ -51,9 +48,14 @@ impl Gen<'_> {
                 });
             }
         }
-        if !key.color {
-            return;
-        }
+    }
+
+    /// Sets the group's colour (as bytes, or packed when no later stage
+    /// reads the channels) from its primitive's planes.
+    pub(super) fn shade_color(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+        let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
+        let px = g.px.expect("carried by the loop for keys with a shading stage");
+        let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
         let w = if !key.flat || key.fog.is_some() {
             let iw = at(self, slot::INV_W);
             let one = self.fconst(1.0);
@@ -89,7 +91,77 @@ impl Gen<'_> {
                 *ck = self.b.ins().fadd(a, b);
             }
         }
-        g.rgba = c.map(|v| self.unorm_lanes_small(v, 255));
+        if self.packs_from_shade() {
+            // Straight to the packed pixels: no later stage reads the channels.
+            g.packed = Some(self.unorm8_packed(c));
+        } else {
+            g.rgba = c.map(|v| self.unorm_lanes_small(v, 255));
+        }
+    }
+
+    /// Whether the shading stage may hand over the packed colour instead of
+    /// the four channels: no later stage reads them (no alpha test, no
+    /// blend) and the format holds one byte a channel.
+    fn packs_from_shade(&self) -> bool {
+        let k = &self.key;
+        k.alpha_test.is_none()
+            && (k.blend.is_none() || k.logic_op.is_some())
+            && matches!(
+                k.color_format,
+                ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8
+            )
+    }
+
+    /// The four channels as unorm8 bytes packed in the format's order (as
+    /// [`Self::unorm_lanes_small`] then `Gen::pack`): `v · 255`, lanes above 255
+    /// (and +∞) set to it, rounded half to even, converted; the saturating
+    /// narrowings then make negatives and NaN (converted to `i32::MIN`) 0, and
+    /// one byte shuffle interleaves the channels. 16 instructions a group of
+    /// four where the channel by channel path takes 30.
+    fn unorm8_packed(&mut self, c: [Value; 4]) -> Value {
+        let [r, g, b, a] = c.map(|v| {
+            let m = self.fconst(255.0);
+            let t = self.b.ins().fmul(v, m);
+            let t = self.min_const(m, t);
+            let t = self.b.ins().nearest(t);
+            self.int_lanes(t)
+        });
+        let rg = self.b.ins().snarrow(r, g);
+        let ba = self.b.ins().snarrow(b, a);
+        // Bytes r0..r3 g0..g3 b0..b3 a0..a3.
+        let planar = self.b.ins().unarrow(rg, ba);
+        let (c0, c2) = if self.key.color_format == ColorFormat::Bgra8 {
+            (8, 0)
+        } else {
+            (0, 8)
+        };
+        // Index 16 takes a byte of the zero vector (RGB8 stores no alpha).
+        let has_alpha = self.key.color_format.has_alpha();
+        let mut mask = [0u8; 16];
+        for i in 0..4u8 {
+            let alpha = if has_alpha { 12 + i } else { 16 };
+            mask[4 * i as usize..4 * i as usize + 4].copy_from_slice(&[c0 + i, 4 + i, c2 + i, alpha]);
+        }
+        let m = self.b.func.dfg.immediates.push(mask.to_vec().into());
+        let other = if has_alpha { planar } else { self.vconst_bytes([0; 16]) };
+        let bytes = self.b.ins().shuffle(planar, other, m);
+        self.b.ins().bitcast(I32X4, le(), bytes)
+    }
+
+    /// `min(m, t)` with NaN kept (`m < t ? m : t`), one `minps` on x86-64.
+    fn min_const(&mut self, m: Value, t: Value) -> Value {
+        let over = self.b.ins().fcmp(FloatCC::LessThan, m, t);
+        let over = self.b.ins().bitcast(F32X4, MemFlagsData::new(), over);
+        self.b.ins().bitselect(over, m, t)
+    }
+
+    /// Rounded f32 lanes to i32 (`i32::MIN` for NaN and out of range on x86-64).
+    fn int_lanes(&mut self, r: Value) -> Value {
+        if self.x86 {
+            self.b.ins().x86_cvtt2dq(I32X4, r)
+        } else {
+            self.b.ins().fcvt_to_sint_sat(I32X4, r)
+        }
     }
 
     /// Plane `k` at the lanes' pixels: `fma(dady, row, fma(dadx, px, a0))`,
@@ -144,21 +216,15 @@ impl Gen<'_> {
 
     /// [`Self::unorm_lanes`] for `max < 2^24` in fewer instructions (the
     /// same values: rounding is monotonic, 0 and `max` are exact): `v · max`,
-    /// lanes at or above `max` set to it (a compare, false for NaN), rounded
+    /// lanes above `max` set to it (one `minps`, NaN kept), rounded
     /// half to even, converted (x86's conversion gives `i32::MIN` for NaN
     /// and negative overflow), negatives to 0.
     fn unorm_lanes_small(&mut self, v: Value, max: u32) -> Value {
         let m = self.fconst(max as f32);
         let t = self.b.ins().fmul(v, m);
-        let over = self.b.ins().fcmp(FloatCC::GreaterThanOrEqual, t, m);
-        let over = self.b.ins().bitcast(F32X4, MemFlagsData::new(), over);
-        let t = self.b.ins().bitselect(over, m, t);
+        let t = self.min_const(m, t);
         let r = self.b.ins().nearest(t);
-        let i = if self.x86 {
-            self.b.ins().x86_cvtt2dq(I32X4, r)
-        } else {
-            self.b.ins().fcvt_to_sint_sat(I32X4, r)
-        };
+        let i = self.int_lanes(r);
         let zero = self.splat(0);
         self.b.ins().smax(i, zero)
     }
