@@ -6,7 +6,9 @@
 //! commands compiled into display lists; and `glEnable` of a client array,
 //! which Mesa accepts (piglit's line-flat-clip-color relies on it).
 
-use std::ptr::null_mut;
+mod current;
+
+use current::GL_INVALID_OPERATION;
 use OSMesa::consts::*;
 use OSMesa::*;
 
@@ -18,9 +20,6 @@ const GL_CURRENT_INDEX: u32 = 0x0B01;
 const GL_EDGE_FLAG: u32 = 0x0B43;
 const GL_CURRENT_BIT: u32 = 0x1;
 const GL_COMPILE: u32 = 0x1300;
-const GL_INVALID_OPERATION: u32 = 0x502;
-const GL_PROJECTION: u32 = 0x1701;
-const GL_MODELVIEW: u32 = 0x1700;
 const GL_TEXTURE_ENV: u32 = 0x2300;
 const GL_TEXTURE_ENV_MODE: u32 = 0x2200;
 const W: usize = 8;
@@ -28,15 +27,7 @@ const W: usize = 8;
 /// A context current on this thread drawing into `buf` (W x W RGBA bytes),
 /// pixels as units.
 fn current(buf: &mut [u8]) -> OSMesaContext {
-    let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
-    assert!(!ctx.is_null());
-    // SAFETY: `buf` holds W * W RGBA pixels and outlives the test's drawing.
-    let ok = unsafe { OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, W as i32, W as i32) };
-    assert_eq!(ok, GL_TRUE);
-    glMatrixMode(GL_PROJECTION);
-    glOrtho(0.0, W as f64, 0.0, W as f64, -1.0, 1.0);
-    glMatrixMode(GL_MODELVIEW);
-    ctx
+    current::current_in_pixels(buf, W as i32, W as i32)
 }
 
 fn green_at(buf: &[u8], x: usize, y: usize) -> bool {

@@ -1,9 +1,16 @@
 //! Fog, secondary colour and fog coordinates through the C ABI: state,
 //! queries, errors, the attribute stack, display lists, arrays and pixels.
 
-use std::ptr::null_mut;
+mod current;
+
+use current::{GL_INVALID_ENUM, GL_INVALID_VALUE};
 use OSMesa::consts::*;
 use OSMesa::*;
+
+/// A context current on this thread, 8 x 8 pixels as units.
+fn current(buf: &mut [u8]) -> OSMesaContext {
+    current::current_in_pixels(buf, 8, 8)
+}
 
 const GL_QUADS: u32 = 7;
 const GL_FOG: u32 = 0x0B60;
@@ -27,22 +34,6 @@ const GL_EXP2: u32 = 0x0801;
 const GL_FOG_BIT: u32 = 0x80;
 const GL_ENABLE_BIT: u32 = 0x2000;
 const GL_COMPILE: u32 = 0x1300;
-const GL_INVALID_ENUM: u32 = 0x500;
-const GL_INVALID_VALUE: u32 = 0x501;
-
-fn current(buf: &mut [u8]) -> OSMesaContext {
-    let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, null_mut());
-    assert!(!ctx.is_null());
-    // SAFETY: `buf` holds 8 x 8 RGBA pixels and outlives the test's drawing.
-    assert_eq!(
-        unsafe { OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 8, 8) },
-        GL_TRUE
-    );
-    glMatrixMode(0x1701);
-    glOrtho(0.0, 8.0, 0.0, 8.0, -1.0, 1.0);
-    glMatrixMode(0x1700);
-    ctx
-}
 
 fn float(pname: u32) -> f32 {
     let mut v = [f32::NAN; 4];

@@ -1,4 +1,5 @@
-//! The set-up of the in-process C ABI tests (`abi.rs`, `lighting.rs`): a
+//! The set-up of the in-process C ABI tests (`abi.rs`, `lighting.rs`,
+//! `fog.rs`, `beginend.rs`): a
 //! context current on the test's thread (each test runs on its own thread,
 //! so has its own current context) and the GL error codes they check.
 #![allow(dead_code)]
