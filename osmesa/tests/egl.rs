@@ -702,3 +702,91 @@ fn osmesa_and_egl_contexts_share_the_thread_slot() {
     assert_eq!(eglDestroyContext(d, ctx), EGL_TRUE);
     assert_eq!(eglDestroySurface(d, s), EGL_TRUE);
 }
+
+#[test]
+fn the_one_device_leads_to_the_one_display() {
+    // MuJoCo's `MUJOCO_GL=egl` way in: devices, then the device's display.
+    let (d, _g) = display();
+    let ext = eglQueryString(null_mut(), EGL_EXTENSIONS);
+    // SAFETY: a NUL-terminated static string.
+    let ext = unsafe { CStr::from_ptr(ext) }.to_str().unwrap().to_string();
+    for e in [
+        "EGL_EXT_device_base",
+        "EGL_EXT_device_enumeration",
+        "EGL_EXT_device_query",
+        "EGL_EXT_platform_device",
+    ] {
+        assert!(ext.split(' ').any(|x| x == e), "{e} in {ext}");
+    }
+    let mut n = -1;
+    // SAFETY (each call): outputs NULL or writable with room for what is asked.
+    unsafe {
+        assert_eq!(eglQueryDevicesEXT(0, null_mut(), &mut n), EGL_TRUE);
+        assert_eq!(n, 1);
+        let mut devices = [null_mut(); 4];
+        n = -1;
+        assert_eq!(eglQueryDevicesEXT(4, devices.as_mut_ptr(), &mut n), EGL_TRUE);
+        assert_eq!((n, devices[1]), (1, null_mut()));
+        let device = devices[0];
+        assert!(!device.is_null());
+        fails(
+            eglQueryDevicesEXT(4, devices.as_mut_ptr(), null_mut()),
+            EGL_FALSE,
+            EGL_BAD_PARAMETER,
+        );
+        fails(
+            eglQueryDevicesEXT(0, devices.as_mut_ptr(), &mut n),
+            EGL_FALSE,
+            EGL_BAD_PARAMETER,
+        );
+
+        let s = eglQueryDeviceStringEXT(device, EGL_EXTENSIONS);
+        assert_eq!(CStr::from_ptr(s).to_str(), Ok("EGL_MESA_device_software"));
+        fails(eglQueryDeviceStringEXT(device, EGL_VENDOR), null(), EGL_BAD_PARAMETER);
+        fails(eglQueryDeviceStringEXT(d, EGL_EXTENSIONS), null(), EGL_BAD_DEVICE_EXT);
+        let mut v: EGLAttrib = -7;
+        fails(
+            eglQueryDeviceAttribEXT(device, EGL_DEVICE_EXT, &mut v),
+            EGL_FALSE,
+            EGL_BAD_ATTRIBUTE,
+        );
+        fails(
+            eglQueryDeviceAttribEXT(null_mut(), EGL_DEVICE_EXT, &mut v),
+            EGL_FALSE,
+            EGL_BAD_DEVICE_EXT,
+        );
+
+        let p = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, null());
+        assert_eq!(p, d, "the device's display is the display");
+        fails(
+            eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, d, null()),
+            null_mut(),
+            EGL_BAD_PARAMETER,
+        );
+        fails(
+            eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, null_mut(), null()),
+            null_mut(),
+            EGL_BAD_PARAMETER,
+        );
+        assert_eq!(eglQueryDisplayAttribEXT(d, EGL_DEVICE_EXT, &mut v), EGL_TRUE);
+        assert_eq!(v, device as EGLAttrib);
+        fails(
+            eglQueryDisplayAttribEXT(d, EGL_VENDOR, &mut v),
+            EGL_FALSE,
+            EGL_BAD_ATTRIBUTE,
+        );
+        fails(
+            eglQueryDisplayAttribEXT(device, EGL_DEVICE_EXT, &mut v),
+            EGL_FALSE,
+            EGL_BAD_DISPLAY,
+        );
+        assert!(eglGetProcAddress(c"eglQueryDevicesEXT".as_ptr()).is_some());
+    }
+    // A surfaceless context on it draws.
+    let ctx = context(d, config(d, 24, 8), &[]);
+    assert_eq!(eglMakeCurrent(d, null_mut(), null_mut(), ctx), EGL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT);
+    assert_eq!(glGetError(), 0);
+    assert_eq!(eglMakeCurrent(d, null_mut(), null_mut(), null_mut()), EGL_TRUE);
+    assert_eq!(eglDestroyContext(d, ctx), EGL_TRUE);
+}

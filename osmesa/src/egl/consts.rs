@@ -136,3 +136,8 @@ pub const EGL_OPENGL_API: EGLenum = 0x30A2;
 
 // Platforms.
 pub const EGL_PLATFORM_SURFACELESS_MESA: EGLenum = 0x31DD;
+pub const EGL_PLATFORM_DEVICE_EXT: EGLenum = 0x313F;
+
+// Devices (EGL_EXT_device_base).
+pub const EGL_BAD_DEVICE_EXT: EGLint = 0x322B;
+pub const EGL_DEVICE_EXT: EGLint = 0x322C;

@@ -6,7 +6,8 @@ use super::*;
 use std::ffi::{c_char, CStr};
 
 /// `eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS)`.
-const CLIENT_EXTENSIONS: &CStr = c"EGL_EXT_client_extensions EGL_EXT_platform_base EGL_MESA_platform_surfaceless";
+const CLIENT_EXTENSIONS: &CStr = c"EGL_EXT_client_extensions EGL_EXT_device_base EGL_EXT_device_enumeration \
+    EGL_EXT_device_query EGL_EXT_platform_base EGL_EXT_platform_device EGL_MESA_platform_surfaceless";
 /// The display's extensions.
 const DISPLAY_EXTENSIONS: &CStr = c"EGL_KHR_create_context EGL_KHR_get_all_proc_addresses EGL_KHR_surfaceless_context";
 const VENDOR: &CStr = c"softgl";
@@ -32,9 +33,15 @@ pub extern "C" fn eglGetDisplay(display_id: EGLNativeDisplayType) -> EGLDisplay 
 }
 
 /// The display for `platform`: `EGL_PLATFORM_SURFACELESS_MESA` with
-/// `EGL_DEFAULT_DISPLAY` and no attributes.
+/// `EGL_DEFAULT_DISPLAY`, or `EGL_PLATFORM_DEVICE_EXT` with the device, and
+/// no attributes.
 fn platform_display(platform: EGLenum, native: *mut c_void, attribs: &[(EGLint, i64)]) -> EglResult<EGLDisplay> {
-    if platform != EGL_PLATFORM_SURFACELESS_MESA || !native.is_null() {
+    let known = match platform {
+        EGL_PLATFORM_SURFACELESS_MESA => native.is_null(),
+        EGL_PLATFORM_DEVICE_EXT => native == device_handle(),
+        _ => false,
+    };
+    if !known {
         return Err(EGL_BAD_PARAMETER);
     }
     if !attribs.is_empty() {
@@ -262,6 +269,10 @@ fn egl_proc(name: &str) -> Option<*const c_void> {
         "eglMakeCurrent" => eglMakeCurrent as *const c_void,
         "eglQueryAPI" => eglQueryAPI as *const c_void,
         "eglQueryContext" => eglQueryContext as *const c_void,
+        "eglQueryDeviceAttribEXT" => eglQueryDeviceAttribEXT as *const c_void,
+        "eglQueryDevicesEXT" => eglQueryDevicesEXT as *const c_void,
+        "eglQueryDeviceStringEXT" => eglQueryDeviceStringEXT as *const c_void,
+        "eglQueryDisplayAttribEXT" => eglQueryDisplayAttribEXT as *const c_void,
         "eglQueryString" => eglQueryString as *const c_void,
         "eglQuerySurface" => eglQuerySurface as *const c_void,
         "eglReleaseTexImage" => eglReleaseTexImage as *const c_void,

@@ -2,9 +2,10 @@
 //! pbuffers and contexts are softgl's, for programs that left OSMesa for EGL
 //! (piglit through waffle, PyOpenGL with `PYOPENGL_PLATFORM=egl`).
 //!
-//! - One display (`eglGetDisplay(EGL_DEFAULT_DISPLAY)` and
+//! - One display (`eglGetDisplay(EGL_DEFAULT_DISPLAY)`,
 //!   `eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY)`
-//!   are the same handle), six configs (RGBA8 × depth 0/16/24 × stencil 0/8,
+//!   and `eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device)` of the one
+//!   device `eglQueryDevicesEXT` lists are the same handle), six configs (RGBA8 × depth 0/16/24 × stencil 0/8,
 //!   pbuffers and desktop OpenGL only), pbuffer surfaces whose buffers softgl
 //!   owns, desktop GL contexts up to the version `glGetString(GL_VERSION)` reports.
 //! - An EGL context *is* an OSMesa context ([`crate::state::OsContext`]):
@@ -24,6 +25,7 @@
 mod config;
 mod consts;
 mod context;
+mod device;
 mod display;
 mod glx;
 mod stubs;
@@ -32,6 +34,7 @@ mod surface;
 pub use config::*;
 pub use consts::*;
 pub use context::*;
+pub use device::*;
 pub use display::*;
 pub use glx::*;
 pub use stubs::*;
