@@ -3,7 +3,8 @@
 //! column (row) the diamond-exit rule lights; across, it is offset by ±width/2;
 //! it is filled with the triangle rule.
 
-use super::{triangle, RasterParams, RasterVertex, SpanSink};
+use super::triangle::triangle_y_up;
+use super::{RasterParams, RasterVertex, SpanSink};
 use crate::geometry::varying::Varyings;
 
 /// The integer width GL rasterizes for `width`: rounded half up, 1 to 255.
@@ -88,6 +89,6 @@ pub fn line(
         offset: None,
         ..*params
     };
-    triangle([&quad[0], &quad[1], &quad[2]], flat, &params, sink);
-    triangle([&quad[0], &quad[2], &quad[3]], flat, &params, sink);
+    triangle_y_up([&quad[0], &quad[1], &quad[2]], flat, &params, sink);
+    triangle_y_up([&quad[0], &quad[2], &quad[3]], flat, &params, sink);
 }

@@ -58,7 +58,32 @@ impl Setup {
 /// Rasterizes a triangle, either winding. `flat` (the provoking vertex's
 /// varyings) replaces the interpolated colours.
 pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams, sink: &mut dyn SpanSink) {
-    let mut p = v.map(|v| (snap(v.x), snap(v.y)));
+    // llvmpipe snaps its top-down y, whose f32 value can round apart from
+    // the bottom-up one (to a tie, or across one); the snapped value is
+    // reflected exactly into GL rows (docs/llvmpipe-facts.md 2).
+    let top = (i64::from(params.height) - 1) * ONE;
+    cover(v.map(|v| (snap(v.x), top - snap(v.y_down))), v, flat, params, sink);
+}
+
+/// [`triangle`] for a wide line's quad, whose corners are made in GL's
+/// bottom-up frame and snapped there.
+pub(super) fn triangle_y_up(
+    v: [&RasterVertex; 3],
+    flat: Option<&Varyings>,
+    params: &RasterParams,
+    sink: &mut dyn SpanSink,
+) {
+    cover(v.map(|v| (snap(v.x), snap(v.y))), v, flat, params, sink);
+}
+
+/// Covers the triangle of the snapped bottom-up positions `p` of `v`.
+fn cover(
+    mut p: [(i64, i64); 3],
+    v: [&RasterVertex; 3],
+    flat: Option<&Varyings>,
+    params: &RasterParams,
+    sink: &mut dyn SpanSink,
+) {
     let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
     if area == 0 || params.bounds.is_empty() {
         return;
