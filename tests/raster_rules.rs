@@ -201,6 +201,42 @@ fn vertices_snap_to_nearest_subpixel_with_ties_to_even() {
     }
 }
 
+/// llvmpipe snaps its top-down window y, which can round apart from the
+/// bottom-up one (docs/llvmpipe-facts.md 2). Two triangles of the
+/// conformance scene `random_20k_depth`, with llvmpipe's counts and the
+/// pixel each disputes (measured with Mesa 22.3.6's OSMesa, 2026-11-23).
+#[test]
+fn vertices_snap_in_llvmpipes_top_down_frame() {
+    let cases = [
+        // (148.8652 - 0.5) * 256 = 37981.49 bottom-up, but top-down
+        // (875.134765625 - 0.5) * 256 = 223906.5 rounds to even: (64, 147) is out.
+        (
+            [(47.370697, 142.39249), (69.0798, 148.8652), (67.26863, 166.61145)],
+            199,
+            (64, 147),
+            false,
+        ),
+        // Clipped at x = 1024; the clip vertex's y snaps apart: (1012, 801) is in.
+        (
+            [(997.6679, 818.7948), (995.8139, 801.3328), (1039.3273, 801.76874)],
+            333,
+            (1012, 801),
+            true,
+        ),
+    ];
+    for (tri, count, (x, y), in_) in cases {
+        let mut gl = window_ctx(1024, 1024);
+        count_with_stencil(&mut gl);
+        draw(&mut gl, PrimitiveMode::Triangles, &tri);
+        assert_eq!(lit(&gl).len(), count, "{tri:?}");
+        assert_eq!(
+            gl.framebuffer().stencil_at(x, y) == Some(1),
+            in_,
+            "{tri:?} at ({x}, {y})"
+        );
+    }
+}
+
 #[test]
 fn quads_split_along_v0_v2_and_flat_shading_takes_the_last_vertex() {
     // llvmpipe: red 255 at v0 and v2, 0 at v1 and v3: the diagonal x == y is all 255.
