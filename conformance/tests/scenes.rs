@@ -12,15 +12,7 @@ fn at_least_forty_scenes_with_unique_names_in_every_group() {
     names.sort();
     names.dedup();
     assert_eq!(names.len(), all.len(), "scene names repeat");
-    for g in [
-        Group::Stage,
-        Group::Combination,
-        Group::Primitive,
-        Group::Stiff,
-        Group::Timing,
-        Group::Fog,
-        Group::Lighting,
-    ] {
+    for g in Group::ALL {
         assert!(all.iter().any(|s| s.group == g), "no scene in {g:?}");
     }
     for s in &all {

@@ -430,17 +430,8 @@ fn markdown(
         let cells: Vec<String> = names.iter().map(|n| cell(s, n)).collect();
         let _ = writeln!(o, "| {} | {} |", s.scene, cells.join(" | "));
     }
-    let groups = [
-        Group::Stage,
-        Group::Combination,
-        Group::Primitive,
-        Group::Stiff,
-        Group::Timing,
-        Group::Fog,
-        Group::Lighting,
-    ];
     let _ = writeln!(o, "\n## Per scene and back end\n");
-    for g in groups {
+    for g in Group::ALL {
         let _ = writeln!(o, "### {}\n", g.name());
         for s in results.iter().filter(|s| s.group == g) {
             let t = &s.tolerance;

@@ -95,6 +95,17 @@ pub enum Group {
 }
 
 impl Group {
+    /// Every group, in the report's order.
+    pub const ALL: [Group; 7] = [
+        Group::Stage,
+        Group::Combination,
+        Group::Primitive,
+        Group::Stiff,
+        Group::Timing,
+        Group::Fog,
+        Group::Lighting,
+    ];
+
     pub fn name(self) -> &'static str {
         match self {
             Group::Stage => "stages alone",
