@@ -273,3 +273,119 @@ fn level_parameters_report_llvmpipe_sizes() {
     assert_eq!(q1(&mut gl, TexLevelParamName::Width), 0);
     assert_eq!(q1(&mut gl, TexLevelParamName::InternalFormat), 0x1908);
 }
+
+/// Reads back every level of the 2D texture on unit 0 as RGBA bytes.
+fn levels_rgba(gl: &mut Context, target: TexImageTarget, sizes: &[usize]) -> Vec<Vec<u8>> {
+    sizes
+        .iter()
+        .enumerate()
+        .map(|(level, &texels)| {
+            let mut out = vec![0; texels * 4];
+            gl.get_tex_image(
+                target,
+                level as i32,
+                PixelFormat::Rgba,
+                PixelType::UnsignedByte,
+                &packed(1),
+                &mut out,
+            )
+            .unwrap();
+            out
+        })
+        .collect()
+}
+
+/// `glGenerateMipmap` of a 5×3 RGBA8 image: llvmpipe blits each level
+/// bilinearly at `(i + 0.5) / size` (not a box filter), with its 8-bit
+/// lerp. The expected levels are Mesa 22.3.6 llvmpipe's (`probe: mip.c`).
+#[test]
+fn generated_mipmaps_of_an_odd_size_equal_llvmpipes() {
+    #[rustfmt::skip]
+    let base = [
+        238, 63, 28, 233, 228, 10, 104, 229, 222, 147, 141, 56, 156, 125, 189, 215, 91, 9, 212, 231,
+        226, 51, 68, 63, 74, 140, 196, 161, 144, 214, 184, 184, 220, 97, 95, 209, 142, 40, 190, 89,
+        14, 170, 80, 27, 80, 138, 106, 54, 41, 230, 112, 223, 85, 119, 186, 220, 68, 109, 67, 187,
+    ];
+    let mut gl = context();
+    let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &base);
+    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba8, [5, 3, 1], 0, Some(px))
+        .unwrap();
+    gl.generate_mipmap(TextureTarget::D2).unwrap();
+    let levels = levels_rgba(&mut gl, TexImageTarget::D2, &[15, 2, 1]);
+    assert_eq!(levels[1], [112, 118, 164, 137, 201, 83, 119, 179]);
+    assert_eq!(levels[2], [157, 101, 142, 158]);
+    // Level 3 does not exist: the chain ends at 1×1.
+    assert_eq!(
+        gl.get_tex_level_parameter(TexImageTarget::D2, 3, TexLevelParamName::Width),
+        Ok(0)
+    );
+    assert!(gl.textures().sampling(0, TextureTarget::D2).is_some());
+}
+
+/// A 7×1 row: level 1 is 3×1, sampled at 7/6 · (i + 0.5) − 0.5.
+#[test]
+fn generated_mipmaps_of_a_row() {
+    let base = [
+        169, 8, 23, 214, 192, 246, 123, 8, 97, 112, 217, 45, 201, 18, 114, 91, 36, 126, 194, 226, 218, 177, 178, 4,
+        158, 32, 128, 116,
+    ];
+    let mut gl = context();
+    let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &base);
+    gl.tex_parameter(TextureTarget::D2, TexParam::GenerateMipmap(true))
+        .unwrap();
+    // GL_GENERATE_MIPMAP: the upload of the base level builds the chain.
+    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba8, [7, 1, 1], 0, Some(px))
+        .unwrap();
+    let levels = levels_rgba(&mut gl, TexImageTarget::D2, &[7, 3, 1]);
+    assert_eq!(levels[1], [184, 167, 90, 76, 201, 18, 114, 91, 198, 129, 161, 41]);
+    assert_eq!(levels[2], [201, 18, 114, 91]);
+}
+
+/// RGBA4: uploads round to 4 bits ((v·15 + 127) / 255), levels are blitted
+/// from the 8-bit expansion and rounded back to 4 bits (Mesa llvmpipe's values).
+#[test]
+fn rgba4_uploads_and_mipmaps_quantize_like_llvmpipe() {
+    #[rustfmt::skip]
+    let base = [
+        225, 243, 166, 236, 193, 244, 57, 67, 6, 192, 155, 98, 157, 227, 58, 211, 97, 239, 195, 83, 107, 208, 79,
+        150, 31, 238, 77, 189, 243, 5, 45, 151, 254, 196, 209, 155, 69, 39, 180, 162, 196, 148, 216, 100, 62,
+        184, 113, 185, 196, 31, 83, 139, 8, 149, 28, 158, 95, 64, 33, 255, 151, 122, 26, 77,
+    ];
+    let mut gl = context();
+    let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &base);
+    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba4, [4, 4, 1], 0, Some(px))
+        .unwrap();
+    gl.generate_mipmap(TextureTarget::D2).unwrap();
+    let levels = levels_rgba(&mut gl, TexImageTarget::D2, &[16, 4, 1]);
+    #[rustfmt::skip]
+    assert_eq!(levels[0], [
+        221, 238, 170, 238, 187, 238, 51, 68, 0, 187, 153, 102, 153, 221, 51, 204, 102, 238, 187, 85, 102, 204,
+        85, 153, 34, 238, 85, 187, 238, 0, 51, 153, 255, 204, 204, 153, 68, 34, 187, 170, 204, 153, 221, 102, 68,
+        187, 119, 187, 204, 34, 85, 136, 0, 153, 34, 153, 102, 68, 34, 255, 153, 119, 34, 85,
+    ]);
+    assert_eq!(
+        levels[1],
+        [153, 238, 119, 136, 102, 170, 85, 170, 136, 102, 136, 153, 136, 136, 102, 153]
+    );
+    assert_eq!(levels[2], [136, 170, 119, 153]);
+}
+
+/// A 3×3×3 volume reduces to one texel, trilinear at the centre (llvmpipe's value).
+#[test]
+fn generated_mipmaps_of_a_volume() {
+    #[rustfmt::skip]
+    let base = [
+        0, 41, 65, 70, 111, 105, 205, 233, 157, 35, 192, 65, 116, 112, 29, 61, 233, 86, 161, 210, 12, 228, 176,
+        115, 208, 17, 0, 79, 155, 85, 7, 78, 140, 5, 37, 201, 144, 111, 146, 11, 36, 185, 5, 140, 231, 122, 41,
+        231, 231, 21, 193, 161, 168, 218, 149, 152, 243, 219, 36, 76, 101, 142, 8, 209, 179, 39, 39, 144, 190,
+        179, 158, 193, 90, 244, 110, 169, 222, 0, 228, 147, 107, 152, 202, 143, 253, 73, 80, 237, 51, 68, 183,
+        119, 222, 254, 195, 114, 75, 136, 222, 83, 81, 171, 12, 66, 25, 203, 146, 79,
+    ];
+    let mut gl = context();
+    let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &base);
+    gl.tex_image(TexImageTarget::D3, 0, InternalFormat::Rgba8, [3, 3, 3], 0, Some(px))
+        .unwrap();
+    gl.generate_mipmap(TextureTarget::D3).unwrap();
+    let levels = levels_rgba(&mut gl, TexImageTarget::D3, &[27, 1]);
+    assert_eq!(levels[1], [168, 218, 149, 152]);
+}

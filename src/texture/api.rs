@@ -269,15 +269,16 @@ impl Context {
         if let Some(slot) = obj.image_mut(level, target.face()) {
             *slot = Some(img);
         }
-        self.check_gen_mipmap(tt, level)
+        self.check_gen_mipmap(target, level)
     }
 
-    /// Mesa's `check_gen_mipmap`: after the base level changes, with
-    /// `GL_GENERATE_MIPMAP` on, the chain below it is rebuilt.
-    fn check_gen_mipmap(&mut self, target: TexTarget, level: usize) -> GlResult {
-        let p = self.textures.current_mut(target).params;
-        if p.generate_mipmap && level as i32 == p.base_level {
-            super::mipmap::generate(self.textures.current_mut(target));
+    /// Mesa's `check_gen_mipmap`: after the base level of a face changes,
+    /// with `GL_GENERATE_MIPMAP` on, that face's chain below it is rebuilt.
+    fn check_gen_mipmap(&mut self, target: TexImageTarget, level: usize) -> GlResult {
+        let obj = self.textures.current_mut(target.texture_target());
+        if obj.params.generate_mipmap && level as i32 == obj.params.base_level {
+            let face = target.face();
+            super::mipmap::generate(obj, face..face + 1);
         }
         Ok(())
     }
@@ -331,7 +332,7 @@ impl Context {
             if let Some(Some(img)) = obj.image_mut(level, target.face()) {
                 unpack::upload(img, offset.map(|o| o as usize), usize3, &pixels, &layout);
             }
-            gl.check_gen_mipmap(tt, level)
+            gl.check_gen_mipmap(target, level)
         })
     }
 
@@ -384,7 +385,7 @@ impl Context {
             if let Some(slot) = gl.textures.current_mut(tt).image_mut(level, target.face()) {
                 *slot = Some(img);
             }
-            gl.check_gen_mipmap(tt, level)
+            gl.check_gen_mipmap(target, level)
         })
     }
 
@@ -447,7 +448,7 @@ impl Context {
             if let Some(slot) = gl.textures.current_mut(tt).image_mut(level, target.face()) {
                 *slot = Some(img);
             }
-            gl.check_gen_mipmap(tt, level)
+            gl.check_gen_mipmap(target, level)
         })
     }
 
@@ -584,22 +585,30 @@ impl Context {
         })
     }
 
-    /// `glGenerateMipmap` for the active unit's `target`: levels below the base
-    /// level rebuilt from it (`InvalidOperation` without a base image, or a cube
-    /// map whose faces differ).
+    /// `glGenerateMipmap` for the active unit's `target` (Mesa `main/genmipmap.c`):
+    /// nothing when BASE_LEVEL ≥ MAX_LEVEL; `InvalidOperation` for a cube map
+    /// whose base faces differ, or without a base image.
     pub fn generate_mipmap(&mut self, target: TexTarget) -> GlResult {
         self.tex_call(|gl| {
             let obj = gl.textures.current_mut(target);
-            let base = obj.base_image().ok_or(GlError::InvalidOperation)?.clone();
+            if obj.params.base_level >= obj.params.max_level {
+                return Ok(());
+            }
             let base_level = obj.params.base_level as usize;
             if target == TexTarget::Cube {
+                let base = obj.image(base_level, 0).ok_or(GlError::InvalidOperation)?;
                 let same = (1..6).all(|f| {
                     obj.image(base_level, f)
                         .is_some_and(|i| i.size() == base.size() && i.internal == base.internal)
                 });
-                check(same, GlError::InvalidOperation)?;
+                check(same && base.width == base.height, GlError::InvalidOperation)?;
             }
-            super::mipmap::generate(obj);
+            let base = obj.base_image().ok_or(GlError::InvalidOperation)?;
+            if base.width == 0 || base.height == 0 {
+                return Ok(());
+            }
+            let faces = obj.faces();
+            super::mipmap::generate(obj, 0..faces);
             Ok(())
         })
     }

@@ -24,7 +24,7 @@ pub use jit::{
     TexelFormat, Wrap,
 };
 pub use object::{SamplerState, TexImage, TextureObject};
-pub use store::{Sampling, TextureStore};
+pub use store::{quantize_lod_bias, Sampling, TextureStore};
 
 use softgl_jit::CompareFunc;
 

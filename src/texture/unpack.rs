@@ -400,7 +400,7 @@ pub fn texel_channels(img: &TexImage, x: usize, y: usize, z: usize) -> [Option<R
 }
 
 /// Writes quantized channels (`n` of `storage.bits`) as one stored texel.
-fn put_texel(out: &mut [u8], storage: &Storage, n: [u32; 4]) {
+pub(crate) fn put_texel(out: &mut [u8], storage: &Storage, n: [u32; 4]) {
     let base = storage.base;
     // Expand the base format's channels to RGBA (L → LLL1, A → 000A, I → IIII).
     let slot = |c: usize| -> Option<usize> {
