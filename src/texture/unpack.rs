@@ -117,7 +117,8 @@ impl Raw {
             Raw::S(x, b) => x >> (b - bits),
             Raw::F(x) if x < -1.0 => -max,
             Raw::F(x) if x > 1.0 => max,
-            Raw::F(x) => (x * max as f32).round_ties_even() as i32,
+            // `_mesa_lroundevenf` to long, then C's cast to int (1.0 → −2^31 for 32 bits, as Mesa).
+            Raw::F(x) => (x * max as f32).round_ties_even() as i64 as i32,
         }
     }
 
@@ -210,9 +211,22 @@ pub fn route(src: Side, dst: Side, rebase: bool) -> Route {
 /// A destination component's kind.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Dst {
+    /// A channel of an array format (Mesa converts floats with `_mesa_float_to_unorm`).
     Unorm(u32),
+    /// A field of a packed format: floats go through util_format's pack
+    /// functions, `util_iround(clamp(x) · max)` (`util/format/u_format_pack.py`).
+    PackedUnorm(u32),
     Snorm(u32),
     Float,
+}
+
+/// `util_iround(CLAMP(x, 0, 1) * max)`: `(int)(v + 0.5)` in f32.
+fn packed_float_to_unorm(x: f32, bits: u32) -> u32 {
+    if x.is_nan() {
+        return 0;
+    }
+    let max = ((1u64 << bits) - 1) as f32;
+    (x.clamp(0.0, 1.0) * max + 0.5) as u32
 }
 
 /// `raw` converted to `dst` along `route`.
@@ -224,6 +238,10 @@ pub fn convert(raw: Raw, route: Route, dst: Dst) -> Raw {
     };
     match dst {
         Dst::Unorm(b) => Raw::U(mid.to_unorm(b), b),
+        Dst::PackedUnorm(b) => match mid {
+            Raw::F(x) => Raw::U(packed_float_to_unorm(x, b), b),
+            _ => Raw::U(mid.to_unorm(b), b),
+        },
         Dst::Snorm(b) => Raw::S(mid.to_snorm(b), b),
         Dst::Float => Raw::F(mid.to_f32()),
     }
@@ -293,7 +311,7 @@ pub fn store(out: &mut [u8], at: usize, format: PixelFormat, ty: PixelType, swap
         TypeKind::Packed(n, fields) => {
             let mut v = 0u32;
             for (k, &(shift, bits)) in fields.iter().enumerate() {
-                let Raw::U(x, _) = convert(rgba[comps[k]], route, Dst::Unorm(bits)) else {
+                let Raw::U(x, _) = convert(rgba[comps[k]], route, Dst::PackedUnorm(bits)) else {
                     unreachable!("Unorm gives U")
                 };
                 v |= x << shift;
@@ -450,7 +468,12 @@ pub fn store_texel(img: &mut TexImage, (x, y, z): (usize, usize, usize), rgba: [
     } else {
         for c in 0..4 {
             if storage.bits[c] > 0 {
-                let Raw::U(v, _) = convert(rgba[c], route, Dst::Unorm(storage.bits[c])) else {
+                let dst = if storage.is_array() {
+                    Dst::Unorm(storage.bits[c])
+                } else {
+                    Dst::PackedUnorm(storage.bits[c])
+                };
+                let Raw::U(v, _) = convert(rgba[c], route, dst) else {
                     unreachable!("Unorm gives U")
                 };
                 n[c] = v;
@@ -480,7 +503,7 @@ pub fn upload(img: &mut TexImage, offset: [usize; 3], size: [usize; 3], data: &P
 /// Packs `img` into `out` as `format`/`ty` under `layout` (`glGetTexImage`,
 /// Mesa `main/texgetimage.c`): luminance, intensity and alpha textures read
 /// back as (L, 0, 0, 1), (I, 0, 0, 1), (0, 0, 0, A); luminance packed from
-/// an RGB(A) texture is R + G + B, clamped.
+/// an RGB(A) texture is its red (not R + G + B as `glReadPixels` gives).
 pub fn download(img: &TexImage, format: PixelFormat, ty: PixelType, swap: bool, layout: &ClientLayout, out: &mut [u8]) {
     let storage = img.internal.storage();
     let base = storage.base;
@@ -488,9 +511,18 @@ pub fn download(img: &TexImage, format: PixelFormat, ty: PixelType, swap: bool, 
         base,
         BaseFormat::Luminance | BaseFormat::LuminanceAlpha | BaseFormat::Intensity | BaseFormat::Alpha
     );
-    let route = route(Side::texture(&storage), Side::client(format, ty), rebase);
-    let sum_luminance = matches!(format, PixelFormat::Luminance | PixelFormat::LuminanceAlpha)
-        && matches!(base, BaseFormat::Rgb | BaseFormat::Rgba);
+    // Luminance into a type without negative values is clamped: Mesa converts
+    // to an RGBA float image first (`texgetimage.c`, `IMAGE_CLAMP_BIT`);
+    // everything else takes `_mesa_format_convert`'s route.
+    let clamped = !matches!(
+        ty,
+        PixelType::Byte | PixelType::Short | PixelType::Int | PixelType::Float
+    );
+    let route = if clamped && matches!(format, PixelFormat::Luminance | PixelFormat::LuminanceAlpha) {
+        Route::Float
+    } else {
+        route(Side::texture(&storage), Side::client(format, ty), rebase)
+    };
     for z in 0..img.depth as usize {
         for y in 0..img.height as usize {
             for x in 0..img.width as usize {
@@ -502,18 +534,12 @@ pub fn download(img: &TexImage, format: PixelFormat, ty: PixelType, swap: bool, 
                     write_ne(&mut out[at..], v, n, swap);
                     continue;
                 }
-                let mut rgba = [
+                let rgba = [
                     ch[0].unwrap_or(Raw::ZERO),
                     ch[1].unwrap_or(Raw::ZERO),
                     ch[2].unwrap_or(Raw::ZERO),
                     ch[3].unwrap_or(Raw::ONE),
                 ];
-                let mut route = route;
-                if sum_luminance {
-                    let l = (rgba[0].to_f32() + rgba[1].to_f32() + rgba[2].to_f32()).min(1.0);
-                    rgba[0] = Raw::F(l);
-                    route = Route::Float;
-                }
                 store(out, at, format, ty, swap, rgba, route);
             }
         }
