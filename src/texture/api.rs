@@ -231,20 +231,15 @@ impl Context {
         )?;
         let legal = legal_size(tt, level, size, border);
         if let TexImageTarget::Proxy(t) = target {
-            // Proxies: a size the texture cannot have clears the image instead of an error.
-            let img = legal.then(|| {
-                let s = if border == 1 {
-                    strip_border(target.dims(), size, &PixelStore::DEFAULT).0
-                } else {
-                    size
-                };
-                TexImage {
-                    width: s[0] as u32,
-                    height: s[1] as u32,
-                    depth: s[2] as u32,
-                    internal,
-                    texels: Vec::new(),
-                }
+            // Proxies: a size the texture cannot have clears the image instead
+            // of an error; sizes are kept with their border.
+            let img = legal.then(|| TexImage {
+                width: size[0] as u32,
+                height: size[1] as u32,
+                depth: size[2] as u32,
+                border: border as u32,
+                internal,
+                texels: Vec::new(),
             });
             if let Some(slot) = self.textures.proxy_mut(t).image_mut(level, 0) {
                 *slot = img;
@@ -494,7 +489,7 @@ impl Context {
                 TexParam::WrapS(w) => params.wrap[0] = w,
                 TexParam::WrapT(w) => params.wrap[1] = w,
                 TexParam::WrapR(w) => params.wrap[2] = w,
-                TexParam::BorderColor(c) => params.border = c,
+                TexParam::BorderColor(c) => params.border = c.map(|v| v.clamp(0.0, 1.0)),
                 TexParam::MinLod(v) => params.min_lod = v,
                 TexParam::MaxLod(v) => params.max_lod = v,
                 TexParam::BaseLevel(v) => {
@@ -571,7 +566,7 @@ impl Context {
                 TexLevelParamName::Width => img.width as i32,
                 TexLevelParamName::Height => img.height as i32,
                 TexLevelParamName::Depth => img.depth as i32,
-                TexLevelParamName::Border => 0,
+                TexLevelParamName::Border => img.border as i32,
                 TexLevelParamName::InternalFormat => img.internal.reported().to_gl() as i32,
                 TexLevelParamName::RedSize => color(0, &[B::Rgb, B::Rgba]),
                 TexLevelParamName::GreenSize => color(1, &[B::Rgb, B::Rgba]),

@@ -356,6 +356,8 @@ fn depth_float(raw: Raw) -> f32 {
 /// The stored depth (an unsigned value of `bits`) for a client component.
 pub fn depth_to_unorm(raw: Raw, bits: u32) -> u32 {
     match (raw, bits) {
+        // A depth buffer's own value (copies): rescaled as an unsigned normalized value.
+        (Raw::U(x, b), _) if !matches!(b, 8 | 16 | 32) => unorm_to_unorm(x, b, bits),
         // The special cases at the top of `_mesa_unpack_depth_span`.
         (Raw::U(x, 32), 16) => x >> 16,
         (Raw::U(x, 16), 32) => x | (x << 16),
