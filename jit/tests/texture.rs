@@ -88,6 +88,35 @@ const CASES: &[&str] = &[
     "cmb_dot3_rgba env=combine crgb=dot3_rgba srgb1=primary_color cr=0.5 cg=0.875 cb=0.125 ca=0.75 scrgb=2 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
     "cmb_replace_ops env=combine crgb=replace calpha=replace orgb0=one_minus_src_alpha oa0=one_minus_src_alpha s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
     "cmb_modulate_scale env=combine crgb=modulate calpha=add scrgb=4 sca=2 srgb1=constant er=0.75 eg=0.25 eb=0.625 ea=0.3 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
+    // Projection with q varying: lambda changes from quad to quad.
+    "proj_q_varying w=64 h=64 levels=7 min=linear_mipmap_linear q0=1 qx=0.0625 qy=0.03125 s0=0.125 sx=0.125 t0=0.25 ty=0.0625",
+    "proj_q_varying_nearest w=64 h=64 levels=7 min=nearest_mipmap_nearest q0=1 qx=0.0625 qy=0.03125 s0=0.125 sx=0.125 t0=0.25 ty=0.0625",
+    // Stiff cases: huge coordinates (the AoS fixed point overflows), biases
+    // beyond +-16, zero and huge derivatives, 1x1 and 4096x1 textures.
+    "stiff_coords_pos s0=1048576 sx=0.25 t0=-1048576 ty=0.25",
+    "stiff_coords_nearest min=nearest mag=nearest s0=1048576 sx=0.25 t0=-1048576 ty=0.25",
+    "stiff_coords_edge wrap_s=clamp_to_edge wrap_t=clamp_to_border s0=1048576 sx=0.25 t0=-1048576 ty=0.25",
+    "stiff_coords_npot w=5 h=3 s0=1048576 sx=0.25 t0=-1048576 ty=0.25",
+    "stiff_coords_mirror wrap_s=mirrored_repeat wrap_t=mirrored_repeat s0=1048576 sx=0.25 t0=-1048576 ty=0.25",
+    "stiff_bias_pos w=64 h=64 levels=7 min=linear_mipmap_linear bias=100 s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
+    "stiff_bias_neg w=64 h=64 levels=7 min=linear_mipmap_linear mag=nearest bias=-100 s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
+    "stiff_deriv_zero w=64 h=64 levels=7 min=linear_mipmap_linear mag=nearest s0=0.3125 t0=0.6875",
+    "stiff_deriv_huge w=64 h=64 levels=7 min=linear_mipmap_linear s0=0 sx=1048576 t0=0 ty=1048576",
+    "stiff_1x1 w=1 h=1 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
+    "stiff_4096x1 w=4096 h=1 levels=13 min=linear_mipmap_linear s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
+    // Cube maps with different filters (lambda per quad) and on the SoA path.
+    "cube_min_mag target=cube w=16 h=16 min=nearest mag=linear s0=-1 sx=0.125 t0=-0.75 ty=0.0625 r0=0.5 rx=0.03125",
+    "cube_soa_mip target=cube format=rgba16 w=16 h=16 levels=5 min=linear_mipmap_linear mag=nearest s0=-1 sx=0.125 t0=-0.75 ty=0.0625 r0=0.5 rx=0.03125",
+    // More SoA: 16-bit wraps, a 3D border in r, depth with a border, 1D shadow.
+    "soa16_mirror_clamp format=rgba16 wrap_s=mirrored_repeat wrap_t=clamp br=0.5 bg=0.25 s0=-1.5 sx=0.1875 t0=-0.75 ty=0.125",
+    "soa16_nearest_npot format=rgba16 w=5 h=3 min=nearest mag=nearest s0=-0.625 sx=0.0625 t0=-0.25 ty=0.09375",
+    "tgt_3d_border target=3d w=8 h=8 d=8 wrap_r=clamp_to_border br=1 bg=0.5 ba=1 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625 r0=-0.25 rx=0.046875 ry=0.03125",
+    "depth_border format=depth compare=less wrap_s=clamp_to_border wrap_t=clamp br=0.5 r0=0.25 rx=0.03125 s0=-0.25 sx=0.09375 t0=-0.5 ty=0.125",
+    "depth_1d target=1d format=depth w=16 h=1 compare=lequal s0=-0.1875 sx=0.09375 t0=0.125 tx=0.03125 ty=0.03125",
+    "env_blend_a8 format=a8 env=blend cr=0.5 cg=0.25 cb=1 ca=0.75 er=0.125 eg=0.875 eb=0.5 ea=0.25 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
+    "env_add_l8 format=l8 env=add cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
+    "env_decal_l8 format=l8 env=decal cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
+    "env_modulate_depth format=depth depth_mode=alpha env=modulate cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
 ];
 
 /// One scene's description: its name and `key=value` words.
