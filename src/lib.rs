@@ -32,6 +32,7 @@ pub mod lighting;
 pub mod matrix;
 pub mod raster;
 pub mod state;
+pub mod texture;
 
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
 pub use error::{GlError, GlResult};
