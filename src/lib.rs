@@ -50,3 +50,6 @@ pub use softgl_jit::{
     ShadeKey, StencilOp,
 };
 pub use state::{Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};
+pub use texture::unit::{
+    TexCoordName, TexEnvParam, TexEnvParamName, TexGenMode, TexGenParam, TexGenParamName, TexUnit, TextureUnits,
+};

@@ -2,7 +2,7 @@
 //! matrix, for each unit a draw samples, as llvmpipe runs Mesa's
 //! fixed-function vertex program (`build_texture_transform`,
 //! `main/ffvertex_prog.c`) in f32 without fused operations
-//! (`docs/llvmpipe-facts.md` §18):
+//! (`docs/llvmpipe-facts.md` §19):
 //! - `OBJECT_LINEAR`: `DP4(position, object plane)`; `EYE_LINEAR`:
 //!   `DP4(eye position, eye plane)`, the eye position `MUL`/`MAD` by the
 //!   modelview's columns; a `DP4` sums `((w·w' + z·z') + y·y') + x·x'`.
