@@ -309,7 +309,6 @@ pub struct Context {
     pub(crate) current: CurrentAttribs,
     /// Texture units: enables, environment, generation, matrices.
     pub(crate) tex_units: TextureUnits,
-    textures: TextureStore,
     /// The primitive between `begin` and `end`.
     begun: Option<Begun>,
     error: Option<GlError>,
@@ -317,6 +316,8 @@ pub struct Context {
     specialists: SpecialistCache,
     /// Whether `GL_DITHER` dithers (see [`Context::set_ordered_dither`]).
     ordered_dither: bool,
+    /// Texture objects, their bindings per unit, the active unit (`texture/`).
+    pub(crate) textures: crate::texture::TextureStore,
 }
 
 impl Context {
@@ -336,7 +337,6 @@ impl Context {
             projection: MatrixStack::new(matrix::MAX_PROJECTION_DEPTH),
             matrix_mode: MatrixMode::Modelview,
             tex_units: TextureUnits::default(),
-            textures: TextureStore::default(),
             current: CurrentAttribs {
                 color: Vec4::ONE,
                 normal: Vec3::Z,
@@ -351,6 +351,7 @@ impl Context {
             backend: Backend::from_env(),
             specialists: SpecialistCache::from_env(),
             ordered_dither: std::env::var("SOFTGL_DITHER").is_ok_and(|v| v.trim() == "1"),
+            textures: crate::texture::TextureStore::new(),
         }
     }
 
@@ -1076,7 +1077,8 @@ impl Context {
             Backend::Jit => self.specialists.get(&key),
             Backend::Interpreter => None,
         };
-        let r = FragmentStage::new(key, uniforms, &textures.set, self.fb.target(), specialist).and_then(|mut stage| {
+        let set = textures.set();
+        let r = FragmentStage::new(key, uniforms, &set, self.fb.target(), specialist).and_then(|mut stage| {
             geometry.draw(&vertex_stage, mode, count, fetch, &mut stage);
             stage.finish()
         });

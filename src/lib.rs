@@ -53,3 +53,8 @@ pub use state::{Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMo
 pub use texture::unit::{
     TexCoordName, TexEnvParam, TexEnvParamName, TexGenMode, TexGenParam, TexGenParamName, TexUnit, TextureUnits,
 };
+pub use texture::{
+    BaseFormat, CombineFn, CombineSrc, DepthMode, EnvMode, Filter, InternalFormat, MipFilter, Operand, PixelData,
+    PixelFormat, PixelStore, PixelType, Sampling, TexImageTarget, TexLevelParamName, TexParam, TexParamName,
+    TextureStore, TextureTarget, Wrap,
+};

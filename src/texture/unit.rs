@@ -13,7 +13,7 @@ use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::matrix::{MatrixStack, MAX_TEXTURE_DEPTH};
 use crate::state::Capability;
-use crate::texture::TextureStore;
+use crate::texture::{Sampling, TextureStore};
 use glam::Mat4;
 use softgl_jit::texture::{
     effective_combine, BaseFormat, CombineFn, CombineKey, CombineSrc, EnvMode, Operand, TexTarget as TextureTarget,
@@ -202,11 +202,41 @@ impl Default for TextureUnits {
 
 /// The texturing of one draw: each sampling unit's key, its texture and
 /// environment colour, and which units sample (bit `u`).
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct TexturePlan<'a> {
     pub keys: [Option<TexUnitKey>; MAX_UNITS],
-    pub set: TextureSet<'a>,
     pub mask: u8,
+    samplings: [Option<Sampling<'a>>; MAX_UNITS],
+    /// Each unit's quantized `GL_TEXTURE_FILTER_CONTROL` bias.
+    lod_bias: [f32; MAX_UNITS],
+    env_color: [[f32; 4]; MAX_UNITS],
+}
+
+impl Default for TexturePlan<'_> {
+    fn default() -> Self {
+        TexturePlan {
+            keys: [None; MAX_UNITS],
+            mask: 0,
+            samplings: std::array::from_fn(|_| None),
+            lod_bias: [0.0; MAX_UNITS],
+            env_color: [[0.0; 4]; MAX_UNITS],
+        }
+    }
+}
+
+impl TexturePlan<'_> {
+    /// What the fragment stage samples: each unit's texture (its object's
+    /// LOD bias plus the unit's) and environment colour.
+    pub fn set(&self) -> TextureSet<'_> {
+        let mut set = TextureSet {
+            env_color: self.env_color,
+            ..TextureSet::default()
+        };
+        for (u, s) in self.samplings.iter().enumerate() {
+            set.units[u] = s.as_ref().map(|s| s.texture_ref(self.lod_bias[u]));
+        }
+        set
+    }
 }
 
 /// Mesa's `util_quantize_lod_bias`: clamped to ±16, rounded to 1/256.
@@ -245,9 +275,10 @@ impl TextureUnits {
                 .iter()
                 .filter(|&&t| unit.enabled[target_index(t)])
                 .find_map(|&t| store.sampling(u, t));
-            let Some((sampler, base, texture)) = found else {
+            let Some(sampling) = found else {
                 continue;
             };
+            let (sampler, base) = (sampling.key, sampling.base);
             // A depth texture's environment treats it as GL_DEPTH_TEXTURE_MODE says.
             let env_base = match base {
                 BaseFormat::Depth => sampler.depth_mode.base(),
@@ -258,11 +289,9 @@ impl TextureUnits {
                 base,
                 env: effective_combine(unit.env_mode, env_base, unit.combine),
             });
-            plan.set.units[u] = Some(softgl_jit::texture::TextureRef {
-                lod_bias: texture.lod_bias + quantize_lod_bias(unit.lod_bias),
-                ..texture
-            });
-            plan.set.env_color[u] = unit.env_color;
+            plan.samplings[u] = Some(sampling);
+            plan.lod_bias[u] = quantize_lod_bias(unit.lod_bias);
+            plan.env_color[u] = unit.env_color;
             plan.mask |= 1 << u;
         }
         plan
