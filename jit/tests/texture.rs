@@ -1,6 +1,6 @@
 //! The reference sampler and texture environment against llvmpipe's pixels.
 //!
-//! Each line of [`CASES`] is a 16x16 scene: one texture (LCG texels), a
+//! Each line of `tests/llvmpipe/cases.txt` is a 16x16 scene: one texture (LCG texels), a
 //! full-viewport quad whose texture coordinates are affine in the window
 //! position with power-of-two steps (so both sides know them exactly), and
 //! an environment. `tests/llvmpipe/probe.c` rendered them with Mesa 22.3.6
@@ -8,258 +8,18 @@
 //! reference computes every pixel from the same description and must match
 //! byte for byte. `regenerate` (ignored) re-runs the probe.
 
-use softgl_jit::key::CompareFunc;
+#[path = "llvmpipe/cases.rs"]
+mod cases;
+
+use cases::{cases, combine_fn, compare, filter, operand, probe_line, recorded, source, texels, wrap, Case};
 use softgl_jit::shade::unorm8;
 use softgl_jit::texture::{
     effective_combine, environment, sample_quad, BaseFormat, CombineFn, CombineKey, CombineSrc, DepthMode, EnvMode,
     Filter, Image, MipFilter, Operand, SamplerKey, TexTarget, TexUnitKey, TexelFormat, TextureRef, Wrap, MAX_UNITS,
 };
-use std::collections::HashMap;
 
 /// Scene side in pixels (the probe's `N`).
 const N: usize = 16;
-
-/// The scenes: a name, then `key=value` words (defaults in `probe.c`).
-const CASES: &[&str] = &[
-    // Magnified 8x8 RGBA8, 0.375 texels a pixel: the AoS path, 8.8 weights.
-    "mag_linear_repeat format=rgba8 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "mag_nearest_repeat min=nearest mag=nearest s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "mag_linear_edge wrap_s=clamp_to_edge wrap_t=clamp_to_edge s0=-0.25 sx=0.09375 t0=-0.5 ty=0.125",
-    "mag_nearest_edge min=nearest mag=nearest wrap_s=clamp_to_edge wrap_t=clamp_to_edge s0=-0.25 sx=0.09375 t0=-0.5 ty=0.125",
-    // SoA wraps with a border colour.
-    "mag_linear_clamp wrap_s=clamp wrap_t=clamp br=0.25 bg=0.5 bb=1 ba=0.75 s0=-0.25 sx=0.09375 t0=-0.5 ty=0.125",
-    "mag_linear_border wrap_s=clamp_to_border wrap_t=clamp_to_border br=0.25 bg=2 bb=-1 ba=0.75 s0=-0.25 sx=0.09375 t0=-0.5 ty=0.125",
-    "mag_nearest_border min=nearest mag=nearest wrap_s=clamp_to_border wrap_t=repeat br=0.25 bg=0.5 bb=1 ba=0.75 s0=-0.25 sx=0.09375 t0=-0.5 ty=0.125",
-    "mag_nearest_clamp min=nearest mag=nearest wrap_s=clamp wrap_t=clamp br=0.25 s0=-0.25 sx=0.09375 t0=-0.5 ty=0.125",
-    "mag_linear_mirror wrap_s=mirrored_repeat wrap_t=mirrored_repeat s0=-1.5 sx=0.1875 t0=-0.75 ty=0.125",
-    "mag_nearest_mirror min=nearest mag=nearest wrap_s=mirrored_repeat wrap_t=mirrored_repeat s0=-1.5 sx=0.1875 t0=-0.75 ty=0.125",
-    // Non-power-of-two REPEAT (its own arithmetic on both paths).
-    "npot_linear_repeat w=5 h=3 s0=-0.625 sx=0.0625 t0=-0.25 ty=0.09375",
-    "npot_nearest_repeat w=5 h=3 min=nearest mag=nearest s0=-0.625 sx=0.0625 t0=-0.25 ty=0.09375",
-    "npot_linear_mirror w=5 h=3 wrap_s=mirrored_repeat wrap_t=clamp s0=-0.625 sx=0.0625 t0=-0.25 ty=0.09375",
-    // Minification of a mipmapped 64x64: lambda from the quad.
-    "min_trilinear w=64 h=64 levels=7 min=linear_mipmap_linear s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
-    "min_trilinear_aniso w=64 h=64 levels=7 min=linear_mipmap_linear s0=0.0078125 sx=0.09375 tx=0.03125 t0=0.25 ty=0.015625",
-    "min_nearest_nearest w=64 h=64 levels=7 min=nearest_mipmap_nearest s0=0.0078125 sx=0.1484375 t0=0.25 ty=0.015625",
-    "min_linear_nearest w=64 h=64 levels=7 min=linear_mipmap_nearest s0=0.0078125 sx=0.1484375 t0=0.25 ty=0.015625",
-    "min_nearest_linear w=64 h=64 levels=7 min=nearest_mipmap_linear s0=0.0078125 sx=0.1171875 t0=0.25 ty=0.015625",
-    "min_linear_only w=64 h=64 levels=7 min=linear s0=0.0078125 sx=0.1171875 t0=0.25 ty=0.015625",
-    "min_nearest_mag_linear w=64 h=64 levels=7 min=nearest mag=linear s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
-    "min_switch_over w=64 h=64 levels=7 min=nearest_mipmap_nearest mag=linear s0=0.0078125 sx=0.015625 sy=0.0078125 t0=0.25 ty=0.015625",
-    "min_bias w=64 h=64 levels=7 min=linear_mipmap_linear bias=1.25 s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
-    "min_lod_clamps w=64 h=64 levels=7 min=linear_mipmap_linear min_lod=2.5 max_lod=3.25 s0=0.0078125 sx=0.1875 t0=0.25 ty=0.015625",
-    "min_base_level w=64 h=64 levels=7 min=linear_mipmap_linear base=2 max_level=4 s0=0.0078125 sx=0.09375 t0=0.25 ty=0.015625",
-    "min_lod_equal w=64 h=64 levels=7 min=linear_mipmap_linear min_lod=1.5 max_lod=1.5 s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
-    "min_projected w=64 h=64 levels=7 min=linear_mipmap_linear q0=2 s0=0.015625 sx=0.09375 t0=0.5 ty=0.03125",
-    // Base formats on the AoS path, 16-bit and sRGB on the SoA path.
-    "fmt_l8 format=l8 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "fmt_a8 format=a8 env=modulate cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "fmt_i8 format=i8 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "fmt_la8 format=la8 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "fmt_rgb8 format=rgb8 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "fmt_rgba16 format=rgba16 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "fmt_srgba8 format=srgba8 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "fmt_srgba8_mip format=srgba8 w=64 h=64 levels=7 min=linear_mipmap_linear s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
-    // 1D, 3D and cube maps.
-    "tgt_1d target=1d w=16 h=1 levels=5 min=linear_mipmap_linear s0=-0.1875 sx=0.09375 sy=0.03125",
-    "tgt_3d target=3d w=8 h=8 d=8 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625 r0=0.25 rx=0.0078125 ry=0.015625",
-    "tgt_3d_mip target=3d w=16 h=16 d=16 levels=5 min=linear_mipmap_linear s0=0.0078125 sx=0.09375 t0=0.25 ty=0.0390625 r0=0.25 rx=0.03125 ry=0.015625",
-    "tgt_cube target=cube w=8 h=8 s0=-1 sx=0.125 t0=-0.75 ty=0.0625 r0=0.5 rx=0.03125",
-    "tgt_cube_nearest target=cube w=8 h=8 min=nearest mag=nearest s0=-1 sx=0.125 t0=-0.75 ty=0.0625 r0=-0.5 ry=0.0625",
-    "tgt_cube_mip target=cube w=16 h=16 levels=5 min=linear_mipmap_linear s0=-1 sx=0.125 t0=-0.75 ty=0.0625 r0=0.5 rx=0.03125",
-    // Depth textures: compare and DEPTH_TEXTURE_MODE.
-    "depth_compare format=depth compare=lequal r0=0.25 rx=0.03125 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "depth_compare_nearest format=depth compare=greater min=nearest mag=nearest depth_mode=alpha env=modulate cr=0.5 cg=0.5 cb=0.5 ca=1 r0=0.25 rx=0.03125 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "depth_plain format=depth depth_mode=intensity s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    // Legacy environments.
-    "env_modulate env=modulate cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "env_decal env=decal cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "env_blend env=blend cr=0.5 cg=0.25 cb=1 ca=0.75 er=0.125 eg=0.875 eb=0.5 ea=0.25 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "env_blend_i8 format=i8 env=blend cr=0.5 cg=0.25 cb=1 ca=0.75 er=0.125 eg=0.875 eb=0.5 ea=0.25 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "env_add env=add cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "env_add_i8 format=i8 env=add cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "env_decal_rgb8 format=rgb8 env=decal cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "env_replace_la8 format=la8 env=replace cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    // Combine functions, operands and scales.
-    "cmb_add_signed env=combine crgb=add_signed calpha=add_signed scrgb=2 cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "cmb_interpolate env=combine crgb=interpolate calpha=interpolate srgb2=primary_color orgb2=one_minus_src_color sa2=constant ea=0.375 cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "cmb_subtract env=combine crgb=subtract calpha=subtract sca=4 orgb1=one_minus_src_alpha cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "cmb_dot3_rgb env=combine crgb=dot3_rgb calpha=replace scrgb=4 sca=2 srgb1=constant er=0.75 eg=0.25 eb=0.625 ea=0.3 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "cmb_dot3_rgba env=combine crgb=dot3_rgba srgb1=primary_color cr=0.5 cg=0.875 cb=0.125 ca=0.75 scrgb=2 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "cmb_replace_ops env=combine crgb=replace calpha=replace orgb0=one_minus_src_alpha oa0=one_minus_src_alpha s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "cmb_modulate_scale env=combine crgb=modulate calpha=add scrgb=4 sca=2 srgb1=constant er=0.75 eg=0.25 eb=0.625 ea=0.3 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    // Projection with q varying: lambda changes from quad to quad.
-    "proj_q_varying w=64 h=64 levels=7 min=linear_mipmap_linear q0=1 qx=0.0625 qy=0.03125 s0=0.125 sx=0.125 t0=0.25 ty=0.0625",
-    "proj_q_varying_nearest w=64 h=64 levels=7 min=nearest_mipmap_nearest q0=1 qx=0.0625 qy=0.03125 s0=0.125 sx=0.125 t0=0.25 ty=0.0625",
-    // Stiff cases: huge coordinates (the AoS fixed point overflows), biases
-    // beyond +-16, zero and huge derivatives, 1x1 and 4096x1 textures.
-    "stiff_coords_pos s0=1048576 sx=0.25 t0=-1048576 ty=0.25",
-    "stiff_coords_nearest min=nearest mag=nearest s0=1048576 sx=0.25 t0=-1048576 ty=0.25",
-    "stiff_coords_edge wrap_s=clamp_to_edge wrap_t=clamp_to_border s0=1048576 sx=0.25 t0=-1048576 ty=0.25",
-    "stiff_coords_npot w=5 h=3 s0=1048576 sx=0.25 t0=-1048576 ty=0.25",
-    "stiff_coords_mirror wrap_s=mirrored_repeat wrap_t=mirrored_repeat s0=1048576 sx=0.25 t0=-1048576 ty=0.25",
-    "stiff_bias_pos w=64 h=64 levels=7 min=linear_mipmap_linear bias=100 s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
-    "stiff_bias_neg w=64 h=64 levels=7 min=linear_mipmap_linear mag=nearest bias=-100 s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
-    "stiff_deriv_zero w=64 h=64 levels=7 min=linear_mipmap_linear mag=nearest s0=0.3125 t0=0.6875",
-    "stiff_deriv_huge w=64 h=64 levels=7 min=linear_mipmap_linear s0=0 sx=1048576 t0=0 ty=1048576",
-    "stiff_1x1 w=1 h=1 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "stiff_4096x1 w=4096 h=1 levels=13 min=linear_mipmap_linear s0=0.0078125 sx=0.046875 t0=0.25 ty=0.015625",
-    // Cube maps with different filters (lambda per quad) and on the SoA path.
-    "cube_min_mag target=cube w=16 h=16 min=nearest mag=linear s0=-1 sx=0.125 t0=-0.75 ty=0.0625 r0=0.5 rx=0.03125",
-    "cube_soa_mip target=cube format=rgba16 w=16 h=16 levels=5 min=linear_mipmap_linear mag=nearest s0=-1 sx=0.125 t0=-0.75 ty=0.0625 r0=0.5 rx=0.03125",
-    // More SoA: 16-bit wraps, a 3D border in r, depth with a border, 1D shadow.
-    "soa16_mirror_clamp format=rgba16 wrap_s=mirrored_repeat wrap_t=clamp br=0.5 bg=0.25 s0=-1.5 sx=0.1875 t0=-0.75 ty=0.125",
-    "soa16_nearest_npot format=rgba16 w=5 h=3 min=nearest mag=nearest s0=-0.625 sx=0.0625 t0=-0.25 ty=0.09375",
-    "tgt_3d_border target=3d w=8 h=8 d=8 wrap_r=clamp_to_border br=1 bg=0.5 ba=1 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625 r0=-0.25 rx=0.046875 ry=0.03125",
-    "depth_border format=depth compare=less wrap_s=clamp_to_border wrap_t=clamp br=0.5 r0=0.25 rx=0.03125 s0=-0.25 sx=0.09375 t0=-0.5 ty=0.125",
-    "depth_1d target=1d format=depth w=16 h=1 compare=lequal s0=-0.1875 sx=0.09375 t0=0.125 tx=0.03125 ty=0.03125",
-    "env_blend_a8 format=a8 env=blend cr=0.5 cg=0.25 cb=1 ca=0.75 er=0.125 eg=0.875 eb=0.5 ea=0.25 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "env_add_l8 format=l8 env=add cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "env_decal_l8 format=l8 env=decal cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-    "env_modulate_depth format=depth depth_mode=alpha env=modulate cr=0.5 cg=0.25 cb=1 ca=0.75 s0=-0.375 sx=0.046875 t0=0.125 ty=0.0390625",
-];
-
-/// One scene's description: its name and `key=value` words.
-struct Case {
-    name: String,
-    kv: HashMap<String, String>,
-}
-
-impl Case {
-    fn parse(line: &str) -> Case {
-        let mut words = line.split_whitespace();
-        let name = words.next().expect("a case has a name").to_string();
-        let kv = words
-            .map(|w| {
-                let (k, v) = w.split_once('=').expect("key=value");
-                (k.to_string(), v.to_string())
-            })
-            .collect();
-        Case { name, kv }
-    }
-
-    fn s(&self, k: &str, default: &str) -> String {
-        self.kv.get(k).cloned().unwrap_or_else(|| default.to_string())
-    }
-
-    fn f(&self, k: &str, default: f32) -> f32 {
-        self.kv.get(k).map_or(default, |v| v.parse().expect("a number"))
-    }
-
-    fn i(&self, k: &str, default: i32) -> i32 {
-        self.kv.get(k).map_or(default, |v| v.parse().expect("an integer"))
-    }
-}
-
-fn filter(s: &str) -> (Filter, MipFilter) {
-    match s {
-        "nearest" => (Filter::Nearest, MipFilter::None),
-        "linear" => (Filter::Linear, MipFilter::None),
-        "nearest_mipmap_nearest" => (Filter::Nearest, MipFilter::Nearest),
-        "linear_mipmap_nearest" => (Filter::Linear, MipFilter::Nearest),
-        "nearest_mipmap_linear" => (Filter::Nearest, MipFilter::Linear),
-        "linear_mipmap_linear" => (Filter::Linear, MipFilter::Linear),
-        _ => panic!("filter {s}"),
-    }
-}
-
-fn wrap(s: &str) -> Wrap {
-    match s {
-        "repeat" => Wrap::Repeat,
-        "clamp" => Wrap::Clamp,
-        "clamp_to_edge" => Wrap::ClampToEdge,
-        "clamp_to_border" => Wrap::ClampToBorder,
-        "mirrored_repeat" => Wrap::MirroredRepeat,
-        _ => panic!("wrap {s}"),
-    }
-}
-
-fn combine_fn(s: &str) -> CombineFn {
-    match s {
-        "replace" => CombineFn::Replace,
-        "modulate" => CombineFn::Modulate,
-        "add" => CombineFn::Add,
-        "add_signed" => CombineFn::AddSigned,
-        "interpolate" => CombineFn::Interpolate,
-        "subtract" => CombineFn::Subtract,
-        "dot3_rgb" => CombineFn::Dot3Rgb,
-        "dot3_rgba" => CombineFn::Dot3Rgba,
-        _ => panic!("combine {s}"),
-    }
-}
-
-fn source(s: &str) -> CombineSrc {
-    match s {
-        "texture" => CombineSrc::Texture,
-        "constant" => CombineSrc::Constant,
-        "primary_color" => CombineSrc::PrimaryColor,
-        "previous" => CombineSrc::Previous,
-        _ => panic!("source {s}"),
-    }
-}
-
-fn operand(s: &str) -> Operand {
-    match s {
-        "src_color" => Operand::SrcColor,
-        "one_minus_src_color" => Operand::OneMinusSrcColor,
-        "src_alpha" => Operand::SrcAlpha,
-        "one_minus_src_alpha" => Operand::OneMinusSrcAlpha,
-        _ => panic!("operand {s}"),
-    }
-}
-
-fn compare(s: &str) -> CompareFunc {
-    match s {
-        "never" => CompareFunc::Never,
-        "less" => CompareFunc::Less,
-        "equal" => CompareFunc::Equal,
-        "lequal" => CompareFunc::Lequal,
-        "greater" => CompareFunc::Greater,
-        "notequal" => CompareFunc::Notequal,
-        "gequal" => CompareFunc::Gequal,
-        "always" => CompareFunc::Always,
-        _ => panic!("compare {s}"),
-    }
-}
-
-/// The probe's texel generator (`rb` in probe.c).
-struct Lcg(u32);
-
-impl Lcg {
-    fn byte(&mut self) -> u8 {
-        self.0 = self.0.wrapping_mul(1_103_515_245).wrapping_add(12345);
-        (self.0 >> 16) as u8
-    }
-}
-
-/// One image's texels in softgl's storage, as the probe uploads them.
-fn texels(format: &str, seed: u32, n: usize) -> Vec<u8> {
-    let mut g = Lcg(seed);
-    let bytes = match format {
-        "rgba8" | "srgba8" | "depth" => 4,
-        "rgb8" => 3,
-        "la8" => 2,
-        "l8" | "a8" | "i8" => 1,
-        "rgba16" => 8,
-        _ => panic!("format {format}"),
-    };
-    let raw: Vec<u8> = (0..n * bytes).map(|_| g.byte()).collect();
-    let mut out = Vec::with_capacity(n * 8);
-    for t in raw.chunks(bytes) {
-        let px: Vec<u8> = match format {
-            "rgba8" | "srgba8" | "rgba16" => t.to_vec(),
-            "rgb8" => vec![t[0], t[1], t[2], 255],
-            "l8" => vec![t[0], t[0], t[0], 255],
-            "a8" => vec![0, 0, 0, t[0]],
-            "i8" => vec![t[0]; 4],
-            "la8" => vec![t[0], t[0], t[0], t[1]],
-            "depth" => (if t[0] & 1 == 1 { 1.0f32 } else { 0.0 }).to_ne_bytes().to_vec(),
-            _ => unreachable!(),
-        };
-        out.extend(px);
-    }
-    out
-}
 
 /// Everything softgl needs to compute a case: key, images, levels.
 struct Scene {
@@ -443,30 +203,17 @@ fn render(c: &Case, seed: u32) -> Vec<u8> {
     out
 }
 
-fn recorded() -> HashMap<String, Vec<u8>> {
-    let text = include_str!("llvmpipe/probe.txt");
-    text.lines()
-        .filter_map(|l| l.split_once(' '))
-        .map(|(name, hex)| {
-            let bytes = (0..hex.len() / 2)
-                .map(|i| u8::from_str_radix(&hex[2 * i..2 * i + 2], 16).expect("hex"))
-                .collect();
-            (name.to_string(), bytes)
-        })
-        .collect()
-}
-
-/// The line the probe reads for case `i`.
-fn probe_line(i: usize, line: &str) -> String {
-    format!("{line} seed={i}")
-}
-
 #[test]
 fn every_case_matches_llvmpipe_byte_for_byte() {
     let llvmpipe = recorded();
     let mut failures = Vec::new();
-    for (i, line) in CASES.iter().enumerate() {
+    let mut count = 0;
+    for (i, line) in cases() {
         let c = Case::parse(line);
+        if c.kv.get("geom").is_some_and(|g| g == "persp") {
+            continue;
+        }
+        count += 1;
         let want = llvmpipe
             .get(&c.name)
             .unwrap_or_else(|| panic!("{} not recorded", c.name));
@@ -486,13 +233,8 @@ fn every_case_matches_llvmpipe_byte_for_byte() {
             ));
         }
     }
-    assert!(
-        failures.is_empty(),
-        "{} of {} cases differ:\n{}",
-        failures.len(),
-        CASES.len(),
-        failures.join("\n")
-    );
+    assert!(failures.is_empty(), "{} of {count} cases differ:\n{}", failures.len(), failures.join("\n"));
+    assert!(count >= 80, "{count} cases");
 }
 
 /// Re-renders every case with llvmpipe: needs gcc and Mesa's libOSMesa.
@@ -509,7 +251,7 @@ fn regenerate() {
         .status()
         .expect("gcc runs");
     assert!(status.success());
-    let input: String = CASES.iter().enumerate().map(|(i, l)| probe_line(i, l) + "\n").collect();
+    let input: String = cases().map(|(i, l)| probe_line(i, l) + "\n").collect();
     let mut child = std::process::Command::new(&exe)
         .env("LP_NUM_THREADS", "1")
         .stdin(std::process::Stdio::piped())
