@@ -233,7 +233,12 @@ fn every_case_matches_llvmpipe_byte_for_byte() {
             ));
         }
     }
-    assert!(failures.is_empty(), "{} of {count} cases differ:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} of {count} cases differ:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
     assert!(count >= 80, "{count} cases");
 }
 

@@ -193,4 +193,3 @@ pub fn recorded() -> HashMap<String, Vec<u8>> {
 pub fn probe_line(i: usize, line: &str) -> String {
     format!("{line} seed={i}")
 }
-

@@ -169,6 +169,9 @@ static void scene(struct kv *kv, int n, int index) {
     glColor4f(getf(kv, n, "cr", 1), getf(kv, n, "cg", 1), getf(kv, n, "cb", 1), getf(kv, n, "ca", 1));
     glBegin(GL_QUADS);
     for (int v = 0; v < 4; v++) {
+      /* cvary=1: the colour given per vertex (a varying, not Mesa's current-attribute uniform) */
+      if (geti(kv, n, "cvary", 0))
+        glColor4f(getf(kv, n, "cr", 1), getf(kv, n, "cg", 1), getf(kv, n, "cb", 1), getf(kv, n, "ca", 1));
       glTexCoord2f(fl[v][2] * ps, fl[v][3] * pt);
       glVertex3f(fl[v][0], y, fl[v][1]);
     }
