@@ -7,21 +7,16 @@
 #[path = "../jit/tests/llvmpipe/cases.rs"]
 mod cases;
 
-use cases::{cases, combine_fn, compare, filter, operand, raw_texels, recorded, source, wrap, Case};
+use cases::{cases, combine_fn, compare, difference, filter, operand, raw_texels, recorded, source, wrap, Case};
 use softgl::{
-    Backend, Capability, ClearMask, Context, DepthMode, EnvMode, FramebufferDesc, InternalFormat, MatrixMode,
-    PixelData, PixelFormat, PixelStore, PixelType, PrimitiveMode, ReadFormat, TexEnvParam, TexImageTarget, TexParam,
+    Backend, Capability, ClearMask, Context, EnvMode, FramebufferDesc, InternalFormat, MatrixMode, PixelData,
+    PixelFormat, PixelStore, PixelType, PrimitiveMode, ReadFormat, TexEnvParam, TexImageTarget, TexParam,
     TextureTarget,
 };
 
 /// Uploads, configures and draws case `c` (texels seeded by `seed`) as probe.c does.
 fn draw(gl: &mut Context, c: &Case, seed: u32, n: i32) {
-    let target = match c.s("target", "2d").as_str() {
-        "1d" => TextureTarget::D1,
-        "3d" => TextureTarget::D3,
-        "cube" => TextureTarget::Cube,
-        _ => TextureTarget::D2,
-    };
+    let target = cases::target(c);
     let fmt = c.s("format", "rgba8");
     let (internal, format, ty) = match fmt.as_str() {
         "rgba8" => (InternalFormat::Rgba8, PixelFormat::Rgba, PixelType::UnsignedByte),
@@ -101,11 +96,7 @@ fn draw(gl: &mut Context, c: &Case, seed: u32, n: i32) {
         TexParam::MaxLod(c.f("max_lod", 1000.0)),
         TexParam::BaseLevel(c.i("base", 0)),
         TexParam::MaxLevel(c.i("max_level", 1000)),
-        TexParam::DepthMode(match c.s("depth_mode", "luminance").as_str() {
-            "intensity" => DepthMode::Intensity,
-            "alpha" => DepthMode::Alpha,
-            _ => DepthMode::Luminance,
-        }),
+        TexParam::DepthMode(cases::depth_mode(c)),
     ];
     for p in params {
         gl.tex_parameter(target, p).unwrap();
@@ -115,14 +106,7 @@ fn draw(gl: &mut Context, c: &Case, seed: u32, n: i32) {
         gl.tex_parameter(target, TexParam::CompareFunc(compare(f))).unwrap();
     }
     gl.enable(Capability::Texture(target)).unwrap();
-    let mode = match c.s("env", "replace").as_str() {
-        "modulate" => EnvMode::Modulate,
-        "decal" => EnvMode::Decal,
-        "blend" => EnvMode::Blend,
-        "add" => EnvMode::Add,
-        "combine" => EnvMode::Combine,
-        _ => EnvMode::Replace,
-    };
+    let mode = cases::env_mode(c);
     gl.tex_env(TexEnvParam::Mode(mode)).unwrap();
     let ec = [c.f("er", 0.0), c.f("eg", 0.0), c.f("eb", 0.0), c.f("ea", 0.0)];
     gl.tex_env(TexEnvParam::Color(ec)).unwrap();
@@ -225,28 +209,11 @@ fn every_scene_matches_llvmpipe_on_both_back_ends() {
             gl.viewport(0, 0, n, n).unwrap();
             draw(&mut gl, &c, i as u32, n);
             let got = gl.read_pixels(0, 0, n, n, ReadFormat::Rgba8).unwrap();
-            let px = (n * n) as usize;
-            let diff: Vec<usize> = (0..px)
-                .filter(|&p| got[4 * p..4 * p + 4] != want[4 * p..4 * p + 4])
-                .collect();
+            let d = difference(&format!("{backend:?} {}", c.name), &got, want, n as usize);
             count += 1;
-            let one_lsb = diff
-                .iter()
-                .all(|&p| (0..4).all(|k| got[4 * p + k].abs_diff(want[4 * p + k]) <= 1));
             let budget = KNOWN.iter().find(|k| k.0 == c.name).map_or(0, |k| k.1);
-            if diff.len() <= budget && one_lsb {
-                continue;
-            }
-            if let Some(&p) = diff.first() {
-                report.push(format!(
-                    "{backend:?} {}: {} of {px} pixels differ, first at ({}, {}): softgl {:?} llvmpipe {:?}",
-                    c.name,
-                    diff.len(),
-                    p % n as usize,
-                    p / n as usize,
-                    &got[4 * p..4 * p + 4],
-                    &want[4 * p..4 * p + 4]
-                ));
+            if d.pixels > budget || !d.within_one {
+                report.extend(d.report);
             }
         }
     }

@@ -11,7 +11,9 @@
 #[path = "llvmpipe/cases.rs"]
 mod cases;
 
-use cases::{cases, combine_fn, compare, filter, operand, probe_line, recorded, source, texels, wrap, Case};
+use cases::{
+    cases, combine_fn, compare, difference, filter, operand, probe_line, recorded, source, texels, wrap, Case,
+};
 use softgl_jit::shade::unorm8;
 use softgl_jit::texture::{
     effective_combine, environment, sample_quad, BaseFormat, CombineFn, CombineKey, CombineSrc, DepthMode, EnvMode,
@@ -30,12 +32,7 @@ struct Scene {
 }
 
 fn scene(c: &Case, seed: u32) -> Scene {
-    let target = match c.s("target", "2d").as_str() {
-        "1d" => TexTarget::D1,
-        "3d" => TexTarget::D3,
-        "cube" => TexTarget::Cube,
-        _ => TexTarget::D2,
-    };
+    let target = cases::target(c);
     let fmt = c.s("format", "rgba8");
     let (w, h, d) = (c.i("w", 8) as u32, c.i("h", 8) as u32, c.i("d", 1) as u32);
     let levels = c.i("levels", 1) as u32;
@@ -67,11 +64,7 @@ fn scene(c: &Case, seed: u32) -> Scene {
         "depth" => BaseFormat::Depth,
         _ => BaseFormat::Rgba,
     };
-    let depth_mode = match c.s("depth_mode", "luminance").as_str() {
-        "intensity" => DepthMode::Intensity,
-        "alpha" => DepthMode::Alpha,
-        _ => DepthMode::Luminance,
-    };
+    let depth_mode = cases::depth_mode(c);
     let dims = match target {
         TexTarget::D1 => 1,
         TexTarget::D2 | TexTarget::Cube => 2,
@@ -92,14 +85,7 @@ fn scene(c: &Case, seed: u32) -> Scene {
         compare: c.kv.get("compare").map(|f| compare(f)),
         depth_mode,
     };
-    let mode = match c.s("env", "replace").as_str() {
-        "modulate" => EnvMode::Modulate,
-        "decal" => EnvMode::Decal,
-        "blend" => EnvMode::Blend,
-        "add" => EnvMode::Add,
-        "combine" => EnvMode::Combine,
-        _ => EnvMode::Replace,
-    };
+    let mode = cases::env_mode(c);
     let d = CombineKey::DEFAULT;
     let names = ["0", "1", "2"];
     let combine = CombineKey {
@@ -218,19 +204,8 @@ fn every_case_matches_llvmpipe_byte_for_byte() {
             .get(&c.name)
             .unwrap_or_else(|| panic!("{} not recorded", c.name));
         let got = render(&c, i as u32);
-        let diff: Vec<usize> = (0..N * N)
-            .filter(|&p| got[4 * p..4 * p + 4] != want[4 * p..4 * p + 4])
-            .collect();
-        if let Some(&p) = diff.first() {
-            failures.push(format!(
-                "{}: {} pixels differ, first at ({}, {}): softgl {:?} llvmpipe {:?}",
-                c.name,
-                diff.len(),
-                p % N,
-                p / N,
-                &got[4 * p..4 * p + 4],
-                &want[4 * p..4 * p + 4]
-            ));
+        if let Some(r) = difference(&c.name, &got, want, N).report {
+            failures.push(r);
         }
     }
     assert!(

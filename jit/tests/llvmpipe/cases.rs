@@ -193,3 +193,71 @@ pub fn recorded() -> HashMap<String, Vec<u8>> {
 pub fn probe_line(i: usize, line: &str) -> String {
     format!("{line} seed={i}")
 }
+
+/// How softgl's image `got` of scene `name` (`size`² RGBA pixels) differs
+/// from llvmpipe's `want`: the differing pixels, whether each is within 1
+/// in every channel, and a line describing the first.
+pub struct Difference {
+    pub pixels: usize,
+    pub within_one: bool,
+    pub report: Option<String>,
+}
+
+pub fn difference(name: &str, got: &[u8], want: &[u8], size: usize) -> Difference {
+    let diff: Vec<usize> = (0..size * size)
+        .filter(|&p| got[4 * p..4 * p + 4] != want[4 * p..4 * p + 4])
+        .collect();
+    let within_one = diff
+        .iter()
+        .all(|&p| (0..4).all(|k| got[4 * p + k].abs_diff(want[4 * p + k]) <= 1));
+    let report = diff.first().map(|&p| {
+        format!(
+            "{name}: {} of {} pixels differ, first at ({}, {}): softgl {:?} llvmpipe {:?}",
+            diff.len(),
+            size * size,
+            p % size,
+            p / size,
+            &got[4 * p..4 * p + 4],
+            &want[4 * p..4 * p + 4]
+        )
+    });
+    Difference {
+        pixels: diff.len(),
+        within_one,
+        report,
+    }
+}
+
+/// The case's texture target.
+pub fn target(c: &Case) -> softgl_jit::texture::TexTarget {
+    use softgl_jit::texture::TexTarget;
+    match c.s("target", "2d").as_str() {
+        "1d" => TexTarget::D1,
+        "3d" => TexTarget::D3,
+        "cube" => TexTarget::Cube,
+        _ => TexTarget::D2,
+    }
+}
+
+/// The case's `GL_DEPTH_TEXTURE_MODE`.
+pub fn depth_mode(c: &Case) -> softgl_jit::texture::DepthMode {
+    use softgl_jit::texture::DepthMode;
+    match c.s("depth_mode", "luminance").as_str() {
+        "intensity" => DepthMode::Intensity,
+        "alpha" => DepthMode::Alpha,
+        _ => DepthMode::Luminance,
+    }
+}
+
+/// The case's `GL_TEXTURE_ENV_MODE`.
+pub fn env_mode(c: &Case) -> softgl_jit::texture::EnvMode {
+    use softgl_jit::texture::EnvMode;
+    match c.s("env", "replace").as_str() {
+        "modulate" => EnvMode::Modulate,
+        "decal" => EnvMode::Decal,
+        "blend" => EnvMode::Blend,
+        "add" => EnvMode::Add,
+        "combine" => EnvMode::Combine,
+        _ => EnvMode::Replace,
+    }
+}
