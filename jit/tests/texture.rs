@@ -641,3 +641,49 @@ fn units_chain_through_previous_and_the_crossbar_reads_zero_for_a_disabled_unit(
     units[2] = Some(unit(crossbar(0)));
     assert_eq!(environment(&units, &samples, [0.25; 4], &env), [0.75; 4]);
 }
+
+#[test]
+fn sample_with_three_quad_pixels_equals_sample_quad_off_cube_maps() {
+    use softgl_jit::texture::sample;
+    // A minified 2D mipmapped texture: λ from the quad, so the quad matters.
+    let c = Case::parse("q w=64 h=64 levels=7 min=linear_mipmap_linear");
+    let sc = scene(&c, 3);
+    let images: Vec<Image<'_>> = sc
+        .images
+        .iter()
+        .map(|(t, [w, h, d])| Image {
+            texels: t,
+            width: *w,
+            height: *h,
+            depth: *d,
+        })
+        .collect();
+    let tex = TextureRef {
+        images: &images,
+        base_level: 0,
+        max_level: sc.max_level,
+        min_lod: -1000.0,
+        max_lod: 1000.0,
+        lod_bias: 0.0,
+        border: [0.0; 4],
+    };
+    let unit = sc.units[0].expect("unit 0 is on");
+    let quad = [
+        [0.1, 0.2, 0.0, 1.0],
+        [0.17, 0.21, 0.0, 1.0],
+        [0.12, 0.29, 0.0, 1.0],
+        [0.19, 0.3, 0.0, 1.0],
+    ];
+    for lane in 0..4 {
+        let three = sample(&unit, &tex, quad[lane], [quad[0], quad[1], quad[2]]);
+        assert_eq!(three, sample_quad(&unit, &tex, &quad, lane), "lane {lane}");
+    }
+    // λ ≈ log2(0.09·64) ≈ 2.5: between levels 2 and 3, so a different quad changes the result.
+    let other = [
+        [0.1, 0.2, 0.0, 1.0],
+        [0.4, 0.2, 0.0, 1.0],
+        [0.1, 0.5, 0.0, 1.0],
+        [0.4, 0.5, 0.0, 1.0],
+    ];
+    assert_ne!(sample_quad(&unit, &tex, &quad, 0), sample_quad(&unit, &tex, &other, 0));
+}
