@@ -1,7 +1,7 @@
 //! The texture objects of a context, the default texture of each target,
 //! the proxy images, and which object each unit has bound to each target.
 
-use super::jit::{BaseFormat, Image, SamplerKey, TexTarget, TextureRef, Wrap, MAX_UNITS};
+use super::jit::{quantized_lod_bias, BaseFormat, Image, SamplerKey, TexTarget, TextureRef, Wrap, MAX_UNITS};
 use super::object::TextureObject;
 use std::collections::HashMap;
 
@@ -191,17 +191,10 @@ impl TextureStore {
             // As gallium's sampler state holds them (`main/texparam.c`): no negative minimum.
             min_lod: p.min_lod.max(0.0),
             max_lod: p.max_lod,
-            lod_bias: quantize_lod_bias(p.lod_bias),
+            lod_bias: quantized_lod_bias(p.lod_bias),
             border: border_for_base(p.border, storage.base),
         })
     }
-}
-
-/// A LOD bias as gallium's sampler state holds it (`util/u_math.h`
-/// `util_quantize_lod_bias`: clamped to ±16, rounded to 1/256). Mesa
-/// quantizes the object's bias and the unit's (`LodBiasQuantized`) apart.
-pub fn quantize_lod_bias(bias: f32) -> f32 {
-    (bias.clamp(-16.0, 16.0) * 256.0).round() / 256.0
 }
 
 /// The border colour as the sampler sees it for a base format (Mesa
@@ -228,7 +221,7 @@ pub struct Sampling<'a> {
     pub max_level: u32,
     pub min_lod: f32,
     pub max_lod: f32,
-    /// The object's GL_TEXTURE_LOD_BIAS, quantized ([`quantize_lod_bias`]); the
+    /// The object's GL_TEXTURE_LOD_BIAS, quantized ([`quantized_lod_bias`]); the
     /// unit's is added by [`Sampling::texture_ref`].
     pub lod_bias: f32,
     pub border: [f32; 4],
@@ -236,7 +229,7 @@ pub struct Sampling<'a> {
 
 impl Sampling<'_> {
     /// The sampler's view, with the unit's LOD bias (`GL_TEXTURE_FILTER_CONTROL`,
-    /// quantized by the caller with [`quantize_lod_bias`]) added.
+    /// quantized by the caller with [`quantized_lod_bias`]) added.
     pub fn texture_ref(&self, unit_lod_bias: f32) -> TextureRef<'_> {
         TextureRef {
             images: &self.images,

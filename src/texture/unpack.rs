@@ -374,8 +374,34 @@ pub fn depth_to_unorm(raw: Raw, bits: u32) -> u32 {
     }
 }
 
-/// A stored depth as a float (`util/format/u_format_zs.c`: 16 bits in f32, 24 and 32 in f64).
-pub fn depth_unorm_to_float(z: u32, bits: u32) -> f32 {
+/// A stored depth as llvmpipe's sampler reads it, what `Depth32F` texels
+/// hold (`lp_build_unsigned_norm_to_float`, §16): up to 24 bits `z · f32(1/max)`,
+/// 32 bits through the top 23 bits as a mantissa.
+pub fn depth_sampled(z: u32, bits: u32) -> f32 {
+    if bits == 32 {
+        let m = f32::from_bits((z >> 9) | 0x3f80_0000) - 1.0;
+        return m * (8_388_608.0f64 / 8_388_607.0) as f32;
+    }
+    z as f32 * (1.0 / ((1u64 << bits) - 1) as f64) as f32
+}
+
+/// The stored depth back from [`depth_sampled`] (for `glGetTexImage`): the
+/// value nearest `f · max` among those the sampler reads as `f`. Exact for 16
+/// bits; for 24 bits neighbours can share an f32, then one of them is
+/// returned; 32 bits keep their top 23.
+pub fn depth_unsampled(f: f32, bits: u32) -> u32 {
+    let max = ((1u64 << bits) - 1) as f64;
+    let guess = (f64::from(f) * max).round() as i64;
+    let candidates = (guess - 3..=guess + 3).filter(|&z| (0..=max as i64).contains(&z));
+    candidates
+        .filter(|&z| depth_sampled(z as u32, bits) == f)
+        .min_by_key(|&z| (z - guess).abs())
+        .unwrap_or(guess.clamp(0, max as i64)) as u32
+}
+
+/// A stored depth as Mesa's `glGetTexImage` reads it (`util/format/u_format_zs.c`:
+/// 16 bits in f32, 24 and 32 in f64).
+fn depth_readback(z: u32, bits: u32) -> f32 {
     match bits {
         16 => z as f32 * (1.0 / 65535.0) as f32,
         24 => (f64::from(z) * (1.0 / 16777215.0)) as f32,
@@ -455,7 +481,7 @@ pub(crate) fn put_texel(out: &mut [u8], storage: &Storage, n: [u32; 4]) {
             }
         }
         TexelFormat::Depth32F => {
-            out[..4].copy_from_slice(&depth_unorm_to_float(n[0], storage.bits[0]).to_ne_bytes());
+            out[..4].copy_from_slice(&depth_sampled(n[0], storage.bits[0]).to_ne_bytes());
         }
     }
 }
@@ -582,7 +608,8 @@ pub fn download(img: &TexImage, format: PixelFormat, ty: PixelType, swap: bool, 
                 let ch = texel_channels(img, x, y, z);
                 if base == BaseFormat::Depth {
                     let Some(Raw::F(d)) = ch[0] else { continue };
-                    let (v, n) = pack_depth(d, ty);
+                    let bits = storage.bits[0];
+                    let (v, n) = pack_depth(depth_readback(depth_unsampled(d, bits), bits), ty);
                     write_ne(&mut out[at..], v, n, swap);
                     continue;
                 }
