@@ -231,14 +231,22 @@ fn completeness_needs_every_level_the_filter_samples() {
     assert!(gl.textures().sampling(0, TextureTarget::D2).is_none());
     upload_rgba(&mut gl, 2, [1, 1], 3);
     let s = gl.textures().sampling(0, TextureTarget::D2).expect("complete");
-    assert_eq!((s.base_level, s.max_level, s.images.len()), (0, 2, 3));
+    let view = s.texture_ref(0.0);
+    assert_eq!((view.base_level, view.max_level, view.images.len()), (0, 2, 3));
     assert_eq!(s.images[1].texels, [2; 8]);
     assert_eq!(s.key.wrap, [Wrap::Repeat; 3]);
     assert_eq!(s.base, BaseFormat::Rgba);
     // MAX_LEVEL 1 needs levels 0 and 1 only.
     gl.tex_parameter(TextureTarget::D2, TexParam::MaxLevel(1)).unwrap();
     upload_rgba(&mut gl, 2, [2, 2], 3);
-    assert_eq!(gl.textures().sampling(0, TextureTarget::D2).unwrap().max_level, 1);
+    assert_eq!(
+        gl.textures()
+            .sampling(0, TextureTarget::D2)
+            .unwrap()
+            .texture_ref(0.0)
+            .max_level,
+        1
+    );
     // A level of another internal format makes it incomplete.
     let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &[0; 8]);
     gl.tex_image(TexImageTarget::D2, 1, InternalFormat::Rgb8, [2, 1, 1], 0, Some(px))
@@ -247,7 +255,14 @@ fn completeness_needs_every_level_the_filter_samples() {
     // Without mipmaps only the base level counts.
     gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Linear, MipFilter::None))
         .unwrap();
-    assert_eq!(gl.textures().sampling(0, TextureTarget::D2).unwrap().max_level, 1);
+    assert_eq!(
+        gl.textures()
+            .sampling(0, TextureTarget::D2)
+            .unwrap()
+            .texture_ref(0.0)
+            .max_level,
+        1
+    );
     // BASE_LEVEL above MAX_LEVEL: incomplete.
     gl.tex_parameter(TextureTarget::D2, TexParam::BaseLevel(2)).unwrap();
     assert!(gl.textures().sampling(0, TextureTarget::D2).is_none());
@@ -1111,4 +1126,63 @@ fn copies_read_the_framebuffer() {
     let z = gl.framebuffer().depth_at(0, 0).unwrap();
     let want = (f64::from(z) / 16777215.0) as f32;
     assert_eq!(texels(&gl, 0), want.to_ne_bytes());
+}
+
+/// What the draw gets: the object's LOD bias quantized to 1/256 plus the
+/// unit's, MIN_LOD no lower than 0, the border colour as the base format
+/// sees it (luminance: (L, L, L, 1)), wraps the target lacks as REPEAT,
+/// compare only for depth formats.
+#[test]
+fn the_sampling_view_is_gallium_s_sampler_state() {
+    let mut gl = context();
+    let t = TextureTarget::D1;
+    let px = data(PixelFormat::Luminance, PixelType::UnsignedByte, packed(1), &[7, 9]);
+    gl.tex_image(
+        TexImageTarget::D1,
+        0,
+        InternalFormat::Luminance8,
+        [2, 1, 1],
+        0,
+        Some(px),
+    )
+    .unwrap();
+    for p in [
+        TexParam::MinFilter(Filter::Linear, MipFilter::None),
+        TexParam::WrapS(Wrap::ClampToBorder),
+        TexParam::WrapT(Wrap::Clamp),
+        TexParam::LodBias(0.3),
+        TexParam::MinLod(-5.0),
+        TexParam::MaxLod(3.5),
+        TexParam::BorderColor([0.2, 0.4, 0.6, 0.8]),
+        TexParam::CompareMode(true),
+    ] {
+        gl.tex_parameter(t, p).unwrap();
+    }
+    let s = gl.textures().sampling(0, t).unwrap();
+    assert_eq!(s.key.wrap, [Wrap::ClampToBorder, Wrap::Repeat, Wrap::Repeat]);
+    assert_eq!(s.key.compare, None, "not a depth texture");
+    assert_eq!(s.base, BaseFormat::Luminance);
+    let view = s.texture_ref(0.5);
+    // 0.3 · 256 = 76.8 → 77.
+    assert_eq!(view.lod_bias, 77.0 / 256.0 + 0.5);
+    assert_eq!((view.min_lod, view.max_lod), (0.0, 3.5));
+    assert_eq!(view.border, [0.2, 0.2, 0.2, 1.0]);
+    assert_eq!(view.images[0].texels, [7, 7, 7, 255, 9, 9, 9, 255]);
+    // A depth texture compares.
+    let d = 0.25f32.to_ne_bytes();
+    let px = data(PixelFormat::DepthComponent, PixelType::Float, packed(1), &d);
+    gl.tex_image(
+        TexImageTarget::D1,
+        0,
+        InternalFormat::DepthComponent16,
+        [1, 1, 1],
+        0,
+        Some(px),
+    )
+    .unwrap();
+    let s = gl.textures().sampling(0, t).unwrap();
+    assert_eq!(s.key.compare, Some(softgl::CompareFunc::Lequal));
+    // 0.25 · 65535 = 16383.75 → 16383 (truncated), read as 16383 · f32(1/65535).
+    let z = 16383.0f32 * (1.0 / 65535.0f64) as f32;
+    assert_eq!(s.images[0].texels, z.to_ne_bytes());
 }

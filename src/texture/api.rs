@@ -206,65 +206,55 @@ impl Context {
         border: i32,
         pixels: Option<PixelData<'_>>,
     ) -> GlResult {
-        self.tex_call(|gl| gl.tex_image_checked(target, level, internal, size, border, pixels))
-    }
-
-    fn tex_image_checked(
-        &mut self,
-        target: TexImageTarget,
-        level: i32,
-        internal: InternalFormat,
-        size: [i32; 3],
-        border: i32,
-        pixels: Option<PixelData<'_>>,
-    ) -> GlResult {
-        let tt = target.texture_target();
-        let level = level_index(tt, level)?;
-        check(matches!(border, 0 | 1), GlError::InvalidValue)?;
-        check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
-        if let Some(p) = &pixels {
-            check_format_type(internal, p.format, p.ty)?;
-        }
-        check(
-            !(internal.base() == BaseFormat::Depth && tt == TexTarget::D3),
-            GlError::InvalidOperation,
-        )?;
-        let legal = legal_size(tt, level, size, border);
-        if let TexImageTarget::Proxy(t) = target {
-            // Proxies: a size the texture cannot have clears the image instead
-            // of an error; sizes are kept with their border.
-            let img = legal.then(|| TexImage {
-                width: size[0] as u32,
-                height: size[1] as u32,
-                depth: size[2] as u32,
-                border: border as u32,
-                internal,
-                texels: Vec::new(),
-            });
-            if let Some(slot) = self.textures.proxy_mut(t).image_mut(level, 0) {
-                *slot = img;
+        self.tex_call(|gl| {
+            let tt = target.texture_target();
+            let level = level_index(tt, level)?;
+            check(matches!(border, 0 | 1), GlError::InvalidValue)?;
+            check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
+            if let Some(p) = &pixels {
+                check_format_type(internal, p.format, p.ty)?;
             }
-            return Ok(());
-        }
-        check(legal, GlError::InvalidValue)?;
-        let dims = target.dims();
-        let store = pixels.as_ref().map_or(PixelStore::DEFAULT, |p| p.store);
-        let (size, store) = if border == 1 {
-            strip_border(dims, size, &store)
-        } else {
-            (size, store)
-        };
-        let usize3 = size.map(|s| s as usize);
-        let mut img = TexImage::new(internal, size.map(|s| s as u32));
-        if let Some(p) = pixels.filter(|_| !usize3.contains(&0)) {
-            let layout = client_layout(&p, &store, dims, usize3)?;
-            unpack::upload(&mut img, [0; 3], usize3, &PixelData { store, ..p }, &layout);
-        }
-        let obj = self.textures.current_mut(tt);
-        if let Some(slot) = obj.image_mut(level, target.face()) {
-            *slot = Some(img);
-        }
-        self.check_gen_mipmap(target, level)
+            check(
+                !(internal.base() == BaseFormat::Depth && tt == TexTarget::D3),
+                GlError::InvalidOperation,
+            )?;
+            let legal = legal_size(tt, level, size, border);
+            if let TexImageTarget::Proxy(t) = target {
+                // Proxies: a size the texture cannot have clears the image instead
+                // of an error; sizes are kept with their border.
+                let img = legal.then(|| TexImage {
+                    width: size[0] as u32,
+                    height: size[1] as u32,
+                    depth: size[2] as u32,
+                    border: border as u32,
+                    internal,
+                    texels: Vec::new(),
+                });
+                if let Some(slot) = gl.textures.proxy_mut(t).image_mut(level, 0) {
+                    *slot = img;
+                }
+                return Ok(());
+            }
+            check(legal, GlError::InvalidValue)?;
+            let dims = target.dims();
+            let store = pixels.as_ref().map_or(PixelStore::DEFAULT, |p| p.store);
+            let (size, store) = if border == 1 {
+                strip_border(dims, size, &store)
+            } else {
+                (size, store)
+            };
+            let usize3 = size.map(|s| s as usize);
+            let mut img = TexImage::new(internal, size.map(|s| s as u32));
+            if let Some(p) = pixels.filter(|_| !usize3.contains(&0)) {
+                let layout = client_layout(&p, &store, dims, usize3)?;
+                unpack::upload(&mut img, [0; 3], usize3, &PixelData { store, ..p }, &layout);
+            }
+            let obj = gl.textures.current_mut(tt);
+            if let Some(slot) = obj.image_mut(level, target.face()) {
+                *slot = Some(img);
+            }
+            gl.check_gen_mipmap(target, level)
+        })
     }
 
     /// Mesa's `check_gen_mipmap`: after the base level of a face changes,

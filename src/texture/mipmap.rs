@@ -132,48 +132,61 @@ fn requantize(v: u32, bits: u32) -> u32 {
     }
 }
 
+/// Neighbours and weight along one axis.
+type Axis<W> = (usize, usize, W);
+
+/// Channel `c` of the trilinear sample at `a` (x, then y, then z, as
+/// llvmpipe's `lp_build_lerp_3d`) with `lerp`.
+fn trilinear<T: Copy, W: Copy>(
+    v: &[[T; 4]],
+    sw: usize,
+    sh: usize,
+    c: usize,
+    a: [Axis<W>; 3],
+    lerp: fn(W, T, T) -> T,
+) -> T {
+    let [(x0, x1, fx), (y0, y1, fy), (z0, z1, fz)] = a;
+    let p = |x: usize, y: usize, z: usize| v[(z * sh + y) * sw + x][c];
+    let plane = |z| {
+        lerp(
+            fy,
+            lerp(fx, p(x0, y0, z), p(x1, y0, z)),
+            lerp(fx, p(x0, y1, z), p(x1, y1, z)),
+        )
+    };
+    lerp(fz, plane(z0), plane(z1))
+}
+
 /// `src` blitted down to `size`.
 fn downsample(src: &TexImage, size: [u32; 3]) -> TexImage {
     let mut dst = TexImage::new(src.internal, size);
     let storage = src.internal.storage();
     let texels = read(src, &storage);
     let [sw, sh, sd] = src.size();
-    let idx = |x: usize, y: usize, z: usize| (z * sh as usize + y) * sw as usize + x;
     for z in 0..size[2] as usize {
         for y in 0..size[1] as usize {
             for x in 0..size[0] as usize {
                 let mut n = [0u32; 4];
                 match &texels {
                     Texels::Bytes(v) => {
-                        let (x0, x1, fx) = aos_coord(x, size[0], sw);
-                        let (y0, y1, fy) = aos_coord(y, size[1], sh);
-                        let (z0, z1, fz) = aos_coord(z, size[2], sd);
+                        let a = [
+                            aos_coord(x, size[0], sw),
+                            aos_coord(y, size[1], sh),
+                            aos_coord(z, size[2], sd),
+                        ];
                         for c in 0..4 {
-                            let p = |x, y, z| v[idx(x, y, z)][c];
-                            let plane = |z| {
-                                lerp8(
-                                    fy,
-                                    lerp8(fx, p(x0, y0, z), p(x1, y0, z)),
-                                    lerp8(fx, p(x0, y1, z), p(x1, y1, z)),
-                                )
-                            };
-                            n[c] = requantize(u32::from(lerp8(fz, plane(z0), plane(z1))), storage.bits[c]);
+                            let t = trilinear(v, sw as usize, sh as usize, c, a, lerp8);
+                            n[c] = requantize(u32::from(t), storage.bits[c]);
                         }
                     }
                     Texels::Floats(v) => {
-                        let (x0, x1, fx) = float_coord(x, size[0], sw);
-                        let (y0, y1, fy) = float_coord(y, size[1], sh);
-                        let (z0, z1, fz) = float_coord(z, size[2], sd);
+                        let a = [
+                            float_coord(x, size[0], sw),
+                            float_coord(y, size[1], sh),
+                            float_coord(z, size[2], sd),
+                        ];
                         for c in 0..4 {
-                            let p = |x, y, z| v[idx(x, y, z)][c];
-                            let plane = |z| {
-                                lerp(
-                                    fy,
-                                    lerp(fx, p(x0, y0, z), p(x1, y0, z)),
-                                    lerp(fx, p(x0, y1, z), p(x1, y1, z)),
-                                )
-                            };
-                            let f = lerp(fz, plane(z0), plane(z1));
+                            let f = trilinear(v, sw as usize, sh as usize, c, a, lerp);
                             n[c] = match (storage.texel_format(), storage.bits[c]) {
                                 (_, 0) => 0,
                                 (TexelFormat::Srgba8, _) if c < 3 => linear_to_srgb(f),

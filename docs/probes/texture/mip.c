@@ -47,5 +47,21 @@ int main(){
   run("cube_rgba8_4",GL_TEXTURE_CUBE_MAP,GL_RGBA8,4,4,1,0);
   run("param_rgba8_4x4",GL_TEXTURE_2D,GL_RGBA8,4,4,1,1);
   run("rgb5_4x4",GL_TEXTURE_2D,GL_RGB5,4,4,1,0);
+
+  run("rgba4_16",GL_TEXTURE_2D,GL_RGBA4,16,16,1,0);
+  run("rgb5_16",GL_TEXTURE_2D,GL_RGB5,16,16,1,0);
+  run("rgb5a1_16",GL_TEXTURE_2D,GL_RGB5_A1,16,16,1,0);
+  run("r3g3b2_16",GL_TEXTURE_2D,GL_R3_G3_B2,16,16,1,0);
+  run("rgb4_16",GL_TEXTURE_2D,GL_RGB4,16,16,1,0);
+  run("l4a4_16",GL_TEXTURE_2D,GL_LUMINANCE4_ALPHA4,16,16,1,0);
+  run("srgba8_16",GL_TEXTURE_2D,GL_SRGB8_ALPHA8,16,16,1,0);
+  run("srgb8_16",GL_TEXTURE_2D,GL_SRGB8,16,16,1,0);
+  run("rgba16_16",GL_TEXTURE_2D,GL_RGBA16,16,16,1,0);
+  run("rgb10a2_16",GL_TEXTURE_2D,GL_RGB10_A2,16,16,1,0);
+  run("d3_rgba8_4x4x2",GL_TEXTURE_3D,GL_RGBA8,4,4,2,0);
+  run("d3_rgba8_3x3x3",GL_TEXTURE_3D,GL_RGBA8,3,3,3,0);
+  run("d3_rgba8_5x4x6",GL_TEXTURE_3D,GL_RGBA8,5,4,6,0);
+  run("rgba8_13x11",GL_TEXTURE_2D,GL_RGBA8,13,11,1,0);
+  run("rgba8_100x3",GL_TEXTURE_2D,GL_RGBA8,100,3,1,0);
   return 0;
 }
