@@ -166,18 +166,17 @@ fn downsample(src: &TexImage, size: [u32; 3]) -> TexImage {
     for z in 0..size[2] as usize {
         for y in 0..size[1] as usize {
             for x in 0..size[0] as usize {
-                let mut n = [0u32; 4];
-                match &texels {
+                let n: [u32; 4] = match &texels {
                     Texels::Bytes(v) => {
                         let a = [
                             aos_coord(x, size[0], sw),
                             aos_coord(y, size[1], sh),
                             aos_coord(z, size[2], sd),
                         ];
-                        for c in 0..4 {
+                        std::array::from_fn(|c| {
                             let t = trilinear(v, sw as usize, sh as usize, c, a, lerp8);
-                            n[c] = requantize(u32::from(t), storage.bits[c]);
-                        }
+                            requantize(u32::from(t), storage.bits[c])
+                        })
                     }
                     Texels::Floats(v) => {
                         let a = [
@@ -185,16 +184,16 @@ fn downsample(src: &TexImage, size: [u32; 3]) -> TexImage {
                             float_coord(y, size[1], sh),
                             float_coord(z, size[2], sd),
                         ];
-                        for c in 0..4 {
+                        std::array::from_fn(|c| {
                             let f = trilinear(v, sw as usize, sh as usize, c, a, lerp);
-                            n[c] = match (storage.texel_format(), storage.bits[c]) {
+                            match (storage.texel_format(), storage.bits[c]) {
                                 (_, 0) => 0,
                                 (TexelFormat::Srgba8, _) if c < 3 => linear_to_srgb(f),
                                 (_, b) => float_to_unorm(f, b),
-                            };
-                        }
+                            }
+                        })
                     }
-                }
+                };
                 let at = dst.offset(x, y, z);
                 put_texel(&mut dst.texels[at..], &storage, n);
             }
