@@ -310,6 +310,30 @@ fn levels_rgba(gl: &mut Context, target: TexImageTarget, sizes: &[usize]) -> Vec
         .collect()
 }
 
+/// Uploads `base` (RGBA bytes) as level 0 of `target`, builds the mipmaps
+/// (`glGenerateMipmap`, or `GL_GENERATE_MIPMAP` set before the upload) and
+/// reads back the levels of `sizes` texels.
+fn mipmaps(
+    target: TexImageTarget,
+    internal: InternalFormat,
+    size: [i32; 3],
+    base: &[u8],
+    by_param: bool,
+    sizes: &[usize],
+) -> Vec<Vec<u8>> {
+    let mut gl = context();
+    let tt = target.texture_target();
+    if by_param {
+        gl.tex_parameter(tt, TexParam::GenerateMipmap(true)).unwrap();
+    }
+    let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), base);
+    gl.tex_image(target, 0, internal, size, 0, Some(px)).unwrap();
+    if !by_param {
+        gl.generate_mipmap(tt).unwrap();
+    }
+    levels_rgba(&mut gl, target, sizes)
+}
+
 /// `glGenerateMipmap` of a 5×3 RGBA8 image: llvmpipe blits each level
 /// bilinearly at `(i + 0.5) / size` (not a box filter), with its 8-bit
 /// lerp. The expected levels are Mesa 22.3.6 llvmpipe's (`probe: mip.c`).
@@ -321,20 +345,18 @@ fn generated_mipmaps_of_an_odd_size_equal_llvmpipes() {
         226, 51, 68, 63, 74, 140, 196, 161, 144, 214, 184, 184, 220, 97, 95, 209, 142, 40, 190, 89,
         14, 170, 80, 27, 80, 138, 106, 54, 41, 230, 112, 223, 85, 119, 186, 220, 68, 109, 67, 187,
     ];
-    let mut gl = context();
-    let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &base);
-    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba8, [5, 3, 1], 0, Some(px))
-        .unwrap();
-    gl.generate_mipmap(TextureTarget::D2).unwrap();
-    let levels = levels_rgba(&mut gl, TexImageTarget::D2, &[15, 2, 1]);
+    // The fourth level read back is level 3, which does not exist: the chain ends at 1×1.
+    let levels = mipmaps(
+        TexImageTarget::D2,
+        InternalFormat::Rgba8,
+        [5, 3, 1],
+        &base,
+        false,
+        &[15, 2, 1, 1],
+    );
     assert_eq!(levels[1], [112, 118, 164, 137, 201, 83, 119, 179]);
     assert_eq!(levels[2], [157, 101, 142, 158]);
-    // Level 3 does not exist: the chain ends at 1×1.
-    assert_eq!(
-        gl.get_tex_level_parameter(TexImageTarget::D2, 3, TexLevelParamName::Width),
-        Ok(0)
-    );
-    assert!(gl.textures().sampling(0, TextureTarget::D2).is_some());
+    assert_eq!(levels[3], [0; 4]);
 }
 
 /// A 7×1 row: level 1 is 3×1, sampled at 7/6 · (i + 0.5) − 0.5.
@@ -344,14 +366,15 @@ fn generated_mipmaps_of_a_row() {
         169, 8, 23, 214, 192, 246, 123, 8, 97, 112, 217, 45, 201, 18, 114, 91, 36, 126, 194, 226, 218, 177, 178, 4,
         158, 32, 128, 116,
     ];
-    let mut gl = context();
-    let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &base);
-    gl.tex_parameter(TextureTarget::D2, TexParam::GenerateMipmap(true))
-        .unwrap();
     // GL_GENERATE_MIPMAP: the upload of the base level builds the chain.
-    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba8, [7, 1, 1], 0, Some(px))
-        .unwrap();
-    let levels = levels_rgba(&mut gl, TexImageTarget::D2, &[7, 3, 1]);
+    let levels = mipmaps(
+        TexImageTarget::D2,
+        InternalFormat::Rgba8,
+        [7, 1, 1],
+        &base,
+        true,
+        &[7, 3, 1],
+    );
     assert_eq!(levels[1], [184, 167, 90, 76, 201, 18, 114, 91, 198, 129, 161, 41]);
     assert_eq!(levels[2], [201, 18, 114, 91]);
 }
@@ -366,12 +389,14 @@ fn rgba4_uploads_and_mipmaps_quantize_like_llvmpipe() {
         150, 31, 238, 77, 189, 243, 5, 45, 151, 254, 196, 209, 155, 69, 39, 180, 162, 196, 148, 216, 100, 62,
         184, 113, 185, 196, 31, 83, 139, 8, 149, 28, 158, 95, 64, 33, 255, 151, 122, 26, 77,
     ];
-    let mut gl = context();
-    let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &base);
-    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba4, [4, 4, 1], 0, Some(px))
-        .unwrap();
-    gl.generate_mipmap(TextureTarget::D2).unwrap();
-    let levels = levels_rgba(&mut gl, TexImageTarget::D2, &[16, 4, 1]);
+    let levels = mipmaps(
+        TexImageTarget::D2,
+        InternalFormat::Rgba4,
+        [4, 4, 1],
+        &base,
+        false,
+        &[16, 4, 1],
+    );
     #[rustfmt::skip]
     assert_eq!(levels[0], [
         221, 238, 170, 238, 187, 238, 51, 68, 0, 187, 153, 102, 153, 221, 51, 204, 102, 238, 187, 85, 102, 204,
@@ -396,12 +421,14 @@ fn generated_mipmaps_of_a_volume() {
         179, 158, 193, 90, 244, 110, 169, 222, 0, 228, 147, 107, 152, 202, 143, 253, 73, 80, 237, 51, 68, 183,
         119, 222, 254, 195, 114, 75, 136, 222, 83, 81, 171, 12, 66, 25, 203, 146, 79,
     ];
-    let mut gl = context();
-    let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &base);
-    gl.tex_image(TexImageTarget::D3, 0, InternalFormat::Rgba8, [3, 3, 3], 0, Some(px))
-        .unwrap();
-    gl.generate_mipmap(TextureTarget::D3).unwrap();
-    let levels = levels_rgba(&mut gl, TexImageTarget::D3, &[27, 1]);
+    let levels = mipmaps(
+        TexImageTarget::D3,
+        InternalFormat::Rgba8,
+        [3, 3, 3],
+        &base,
+        false,
+        &[27, 1],
+    );
     assert_eq!(levels[1], [168, 218, 149, 152]);
 }
 
