@@ -252,7 +252,7 @@ fn completeness_needs_every_level_the_filter_samples() {
     gl.tex_image(TexImageTarget::D2, 1, InternalFormat::Rgb8, [2, 1, 1], 0, Some(px))
         .unwrap();
     assert!(gl.textures().sampling(0, TextureTarget::D2).is_none());
-    // Without mipmaps only the base level counts.
+    // Without mipmaps only the base level counts, and only it is handed to the sampler.
     gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Linear, MipFilter::None))
         .unwrap();
     assert_eq!(
@@ -261,7 +261,7 @@ fn completeness_needs_every_level_the_filter_samples() {
             .unwrap()
             .texture_ref(0.0)
             .max_level,
-        1
+        0
     );
     // BASE_LEVEL above MAX_LEVEL: incomplete.
     gl.tex_parameter(TextureTarget::D2, TexParam::BaseLevel(2)).unwrap();
@@ -1212,4 +1212,107 @@ fn the_sampling_view_is_gallium_s_sampler_state() {
     // 0.25 · 65535 = 16383.75 → 16383 (truncated), read as 16383 · f32(1/65535).
     let z = 16383.0f32 * (1.0 / 65535.0f64) as f32;
     assert_eq!(s.images[0].texels, z.to_ne_bytes());
+}
+
+/// 3D uploads: IMAGE_HEIGHT sets the rows between images and SKIP_IMAGES
+/// skips whole images (GL 1.5 §3.8.1); a sub-image writes a box; a copy
+/// writes one slice.
+#[test]
+fn volumes_honour_image_height_and_skip_images() {
+    let mut gl = context();
+    // Alpha bytes, rows of 2, images of 3 rows (one unused), one image skipped.
+    let store = PixelStore {
+        image_height: 3,
+        skip_images: 1,
+        alignment: 1,
+        ..PixelStore::default()
+    };
+    let bytes: Vec<u8> = (0..18).collect();
+    let px = data(PixelFormat::Alpha, PixelType::UnsignedByte, store, &bytes);
+    gl.tex_image(TexImageTarget::D3, 0, InternalFormat::Alpha8, [2, 2, 2], 0, Some(px))
+        .unwrap();
+    let a = |gl: &Context| -> Vec<u8> {
+        let img = gl.textures().bound(0, TextureTarget::D3).image(0, 0).unwrap();
+        img.texels.chunks(4).map(|t| t[3]).collect()
+    };
+    // Image 1 starts at byte 6, image 2 at byte 12.
+    assert_eq!(a(&gl), [6, 7, 8, 9, 12, 13, 14, 15]);
+    // One byte short of the last texel.
+    let px = data(PixelFormat::Alpha, PixelType::UnsignedByte, store, &bytes[..15]);
+    assert_eq!(
+        gl.tex_image(TexImageTarget::D3, 0, InternalFormat::Alpha8, [2, 2, 2], 0, Some(px)),
+        Err(GlError::InvalidOperation)
+    );
+    // A 1×2×2 box at x = 1.
+    let px = data(
+        PixelFormat::Alpha,
+        PixelType::UnsignedByte,
+        packed(1),
+        &[100, 101, 102, 103],
+    );
+    gl.tex_sub_image(TexImageTarget::D3, 0, [1, 0, 0], [1, 2, 2], px)
+        .unwrap();
+    assert_eq!(a(&gl), [6, 100, 8, 101, 12, 102, 14, 103]);
+    // Slice 1, texel (0, 1) from the framebuffer's alpha (cleared to 0.8 → 204).
+    gl.clear_color(0.2, 0.4, 0.6, 0.8).unwrap();
+    gl.clear(softgl::ClearMask::COLOR).unwrap();
+    gl.copy_tex_sub_image(TexImageTarget::D3, 0, [0, 1, 1], [0, 0], [1, 1])
+        .unwrap();
+    assert_eq!(a(&gl), [6, 100, 8, 101, 12, 102, 204, 103]);
+}
+
+/// A cube map is complete when its six faces have base images of one size
+/// and format (and, mipmapped, every level of every face).
+#[test]
+fn cube_maps_need_six_matching_faces() {
+    let mut gl = context();
+    gl.tex_parameter(
+        TextureTarget::Cube,
+        TexParam::MinFilter(Filter::Linear, MipFilter::None),
+    )
+    .unwrap();
+    for f in 0..6 {
+        assert!(gl.textures().sampling(0, TextureTarget::Cube).is_none());
+        let bytes = [f * 10; 16];
+        let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &bytes);
+        let internal = if f == 5 {
+            InternalFormat::Rgb8
+        } else {
+            InternalFormat::Rgba8
+        };
+        gl.tex_image(TexImageTarget::CubeFace(f), 0, internal, [2, 2, 1], 0, Some(px))
+            .unwrap();
+    }
+    assert!(
+        gl.textures().sampling(0, TextureTarget::Cube).is_none(),
+        "face 5 differs in format"
+    );
+    let px = data(PixelFormat::Rgba, PixelType::UnsignedByte, packed(1), &[50; 16]);
+    gl.tex_image(
+        TexImageTarget::CubeFace(5),
+        0,
+        InternalFormat::Rgba8,
+        [2, 2, 1],
+        0,
+        Some(px),
+    )
+    .unwrap();
+    let s = gl.textures().sampling(0, TextureTarget::Cube).expect("complete");
+    assert_eq!(s.images.len(), 6);
+    assert_eq!(s.images[3].texels, [30; 16], "face −Y");
+    // Mipmapped: generate_mipmap fills level 1 of every face.
+    gl.tex_parameter(
+        TextureTarget::Cube,
+        TexParam::MinFilter(Filter::Linear, MipFilter::Linear),
+    )
+    .unwrap();
+    assert!(gl.textures().sampling(0, TextureTarget::Cube).is_none());
+    gl.generate_mipmap(TextureTarget::Cube).unwrap();
+    let s = gl.textures().sampling(0, TextureTarget::Cube).expect("complete");
+    assert_eq!(s.images.len(), 12);
+    assert_eq!(
+        s.images[6 + 2].texels,
+        [20; 4],
+        "level 1, face +Y: the average of equal texels"
+    );
 }

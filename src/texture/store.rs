@@ -1,7 +1,9 @@
 //! The texture objects of a context, the default texture of each target,
 //! the proxy images, and which object each unit has bound to each target.
 
-use super::jit::{quantized_lod_bias, BaseFormat, Image, SamplerKey, TexTarget, TextureRef, Wrap, MAX_UNITS};
+use super::jit::{
+    quantized_lod_bias, BaseFormat, Image, MipFilter, SamplerKey, TexTarget, TextureRef, Wrap, MAX_UNITS,
+};
 use super::object::TextureObject;
 use std::collections::HashMap;
 
@@ -151,6 +153,12 @@ impl TextureStore {
     pub fn sampling(&self, unit: usize, target: TexTarget) -> Option<Sampling<'_>> {
         let obj = self.bound(unit, target);
         let last = obj.complete()?;
+        // Without mipmapping only the base level is sampled (and the others need not be complete).
+        let last = if obj.params.mip == MipFilter::None {
+            obj.params.base_level as usize
+        } else {
+            last
+        };
         let base = obj.base_image()?;
         let p = &obj.params;
         let storage = base.internal.storage();
