@@ -15,7 +15,6 @@ use assemble::{assemble, Primitive, QuadSplit};
 use batch::{VertexBatch, VertexStage};
 use clip::{clip_polygon, clip_polygon_user, clip_segment, guard_levels, outcode, ClipVertex, PolyVertex, UserPlanes};
 use glam::{Vec3, Vec4};
-use softgl_jit::texture::MAX_UNITS;
 use varying::{copy_slots, VaryingLayout, Varyings};
 
 pub use crate::state::PrimitiveMode;
@@ -39,10 +38,9 @@ pub struct InVertex {
     pub edge: bool,
     /// Which of the draw's per-vertex materials lights this vertex
     /// ([`batch::VertexStage::vertex_materials`]); 0 when they do not vary.
+    /// (Texture coordinates are not here: a draw fetches them apart, for
+    /// the units it samples only, [`batch::TexFetch`].)
     pub material: u16,
-    /// Texture coordinates `(s, t, r, q)` per unit (read only for the units
-    /// the draw samples).
-    pub tex: [Vec4; MAX_UNITS],
 }
 
 impl InVertex {
@@ -56,7 +54,6 @@ impl InVertex {
             normal: Vec3::Z,
             edge: true,
             material: 0,
-            tex: [Vec4::W; MAX_UNITS],
         }
     }
 }
