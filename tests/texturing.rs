@@ -601,3 +601,25 @@ fn regenerate() {
     assert!(out.status.success());
     std::fs::write(dir.join("texgen.txt"), out.stdout).expect("write texgen.txt");
 }
+
+#[test]
+fn non_finite_coordinates_still_draw() {
+    for (s, q) in [
+        (f32::INFINITY, 1.0),
+        (f32::NAN, 1.0),
+        (1e30, 1.0),
+        (0.5, 0.0),
+        (-1e6, 1e-30),
+    ] {
+        let mut gl = strip_on(0);
+        gl.begin(PrimitiveMode::Quads).unwrap();
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            gl.tex_coord4(s, 0.5, 0.0, q);
+            gl.vertex2(x, y);
+        }
+        gl.end().unwrap();
+        // The quad covers the window whatever its coordinates, and samples
+        // texel 0 (red) everywhere: measured with llvmpipe for each case.
+        assert_eq!(common::count(&gl, RED), 64, "s = {s}, q = {q}");
+    }
+}

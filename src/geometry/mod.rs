@@ -289,7 +289,7 @@ impl<'s> Geometry<'s> {
     }
 
     fn point(&self, v: &ClipVertex, sink: &mut dyn SpanSink) {
-        if !v.is_finite(self.layout.len()) || outcode(v.pos, 1.0) != 0 || self.user.code(v.pos) != 0 {
+        if !v.is_finite(self.layout.finite_len()) || outcode(v.pos, 1.0) != 0 || self.user.code(v.pos) != 0 {
             return;
         }
         if let Some(rv) = self.project(v) {
@@ -299,7 +299,8 @@ impl<'s> Geometry<'s> {
 
     fn line(&self, a: &ClipVertex, b: &ClipVertex, flat: Option<Varyings>, sink: &mut dyn SpanSink) {
         let n = self.layout.len();
-        if !(a.is_finite(n) && b.is_finite(n)) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
+        let f = self.layout.finite_len();
+        if !(a.is_finite(f) && b.is_finite(f)) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
             return;
         }
         if self.user.code(a.pos) & self.user.code(b.pos) != 0 {
@@ -327,7 +328,8 @@ impl<'s> Geometry<'s> {
 
     fn polygon(&self, poly: [PolyVertex; 3], mut flat: Option<Varyings>, sink: &mut dyn SpanSink) {
         let n = self.layout.len();
-        if poly.iter().any(|(v, _)| !v.is_finite(n)) {
+        let f = self.layout.finite_len();
+        if poly.iter().any(|(v, _)| !v.is_finite(f)) {
             return;
         }
         let codes = poly.map(|(v, _)| outcode(v.pos, 1.0));

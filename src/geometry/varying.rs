@@ -57,6 +57,14 @@ impl VaryingLayout {
         self.parts().iter().filter(|p| p.0).map(|p| p.1).sum()
     }
 
+    /// The slots a vertex's primitive is dropped for when not finite: the
+    /// colours and the fog coordinate. Texture coordinates may be anything
+    /// (infinite, NaN): llvmpipe draws such primitives (measured: a quad
+    /// with `glTexCoord4f(inf, …)` or `q = 0` covers its pixels).
+    pub fn finite_len(&self) -> usize {
+        self.base_len()
+    }
+
     /// f32 slots in use.
     pub fn len(&self) -> usize {
         self.base_len() + 4 * self.tex.count_ones() as usize
