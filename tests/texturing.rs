@@ -410,6 +410,14 @@ const SCENES: &[(&str, usize)] = &[
         0,
     ),
     ("fine_plain tm_scale=8 rot=50", 0),
+    // The grid through the near plane: coordinates clipped with the colours.
+    ("near_clip tz=-1.2 rot=35 tm_scale=4", 0),
+    (
+        "near_clip_sphere gen_s=sphere gen_t=sphere tz=-1.2 rot=35 tm_scale=4",
+        0,
+    ),
+    // Client arrays, the coordinates of unit 2 through glClientActiveTexture.
+    ("arrays arrays=1 unit=2 gen_t=obj ot=0,0.5,0.5,0.5 rot=20 tm_scale=4", 0),
 ];
 
 /// Scene side in pixels (`N` of texgen.c).
@@ -485,7 +493,7 @@ fn replay(line: &str) -> Context {
     gl.scale(sc, sc, 1.0).unwrap();
     gl.matrix_mode(MatrixMode::Modelview).unwrap();
     gl.load_identity().unwrap();
-    gl.translate(0.0, 0.0, -2.5).unwrap();
+    gl.translate(0.0, 0.0, f("tz", -2.5)).unwrap();
     gl.rotate(f("rot", 0.0), 1.0, 0.5, 0.25).unwrap();
     gl.enable(Capability::Normalize).unwrap();
     gl.enable(Capability::DepthTest).unwrap();
@@ -520,6 +528,25 @@ fn replay(line: &str) -> Context {
                 }
                 gl.end().unwrap();
             }
+        }
+        _ if f("arrays", 0.0) != 0.0 => {
+            let (mut pos, mut nrm, mut tc) = (Vec::new(), Vec::new(), Vec::new());
+            for (i, j) in (0..8).flat_map(|j| (0..8).map(move |i| (i, j))) {
+                for (di, dj) in [(0, 0), (1, 0), (1, 1), (0, 0), (1, 1), (0, 1)] {
+                    let (x, y) = (-1.0 + (i + di) as f32 / 4.0, -1.0 + (j + dj) as f32 / 4.0);
+                    pos.extend([x, y, (x * x - y * y) / 4.0]);
+                    nrm.extend([-x / 2.0, y / 2.0, 1.0]);
+                    tc.extend([(x + 1.0) / 2.0, (y + 1.0) / 2.0]);
+                }
+            }
+            gl.client_active_texture(unit).unwrap();
+            let unit = gl.tex_units().client_active();
+            let arrays = VertexArrays {
+                normal: Some(softgl::AttribArray::new(3, &nrm)),
+                ..VertexArrays::positions(3, &pos).with_tex_coords(unit, 2, &tc)
+            };
+            gl.draw_arrays(PrimitiveMode::Triangles, 0, pos.len() / 3, &arrays)
+                .unwrap();
         }
         _ => {
             gl.begin(PrimitiveMode::Triangles).unwrap();
