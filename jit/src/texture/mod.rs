@@ -12,11 +12,15 @@
 //! calls them per fragment, and compiled code must compute the same bits (or
 //! call them back through `jit/src/callout.rs`).
 
+pub mod arith;
+pub mod cube;
 mod env;
+pub mod filter;
+pub mod lod;
 mod sample;
 
-pub use env::environment;
-pub use sample::sample;
+pub use env::{combine, environment};
+pub use sample::{sample, sample_quad, uses_aos};
 
 /// `GL_MAX_TEXTURE_UNITS`.
 pub const MAX_UNITS: usize = 8;
