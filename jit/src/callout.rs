@@ -1,6 +1,6 @@
 //! The one boundary from compiled code back into Rust: [`texture_group`]
 //! hands a group of four fragments' texture sampling to the reference
-//! sampler (`crate::texture::sample`), for the units the specialist does not
+//! sampler (`crate::texture::sample_quad`), for the units the specialist does not
 //! sample natively.
 //!
 //! Compiled code reaches the draw's textures only through a [`TexView`],
@@ -38,16 +38,18 @@ impl<'a> TexView<'a> {
 }
 
 /// What compiled code hands [`texture_group`] for one group of four lanes:
-/// the units to sample and their coordinates at the lanes and at their
-/// quads' pixels, computed from the planes exactly as
-/// `crate::shade::tex_coords` does; the samples come back in `samples`.
+/// the units to sample and their coordinates at the pixels of the lanes'
+/// quads, computed from the planes exactly as `crate::shade::tex_coords`
+/// does; the samples come back in `samples`.
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug)]
 pub struct TexCall {
     /// `coords[u][p][c][lane]`: unit `u`'s coordinate `c` (s, t, r, q) at
-    /// point `p` of each lane: 0 the fragment itself, 1..4 the top-left,
-    /// top-right and bottom-left pixels of its 2×2 quad.
+    /// pixel `p` of each lane's 2×2 quad: top-left, top-right, bottom-left,
+    /// bottom-right.
     pub coords: [[[[f32; 4]; 4]; 4]; MAX_UNITS],
+    /// Which pixel of its quad each lane is (0..4, the order of `coords`).
+    pub quad_pixel: [u32; 4],
     /// `samples[u][channel][lane]`: unit `u`'s filtered RGBA, for the units
     /// of `units` and the lanes of `live` (the rest is left as it is).
     pub samples: [[[f32; 4]; 4]; MAX_UNITS],
@@ -60,8 +62,8 @@ pub struct TexCall {
 }
 
 /// The samples of a group: for each unit of `call.units` the key enables
-/// and each live lane, the reference sampler (`crate::texture::sample`) at
-/// the lane's coordinates, or 0 when the set has no texture for the unit
+/// and each live lane, the reference sampler (`crate::texture::sample_quad`)
+/// at the lane's quad, or 0 when the set has no texture for the unit
 /// (as `crate::shade::texture` leaves it). Does nothing when `call` or its
 /// view is null.
 ///
@@ -88,9 +90,9 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
             continue;
         };
         for lane in (0..4).filter(|l| call.live & (1 << l) != 0) {
-            let point = |p: usize| std::array::from_fn(|c| call.coords[u][p][c][lane]);
+            let quad = std::array::from_fn(|p| std::array::from_fn(|c| call.coords[u][p][c][lane]));
             let texel = tex.as_ref().map_or([0.0; 4], |tex| {
-                crate::texture::sample(key, tex, point(0), [point(1), point(2), point(3)])
+                crate::texture::sample_quad(key, tex, &quad, call.quad_pixel[lane] as usize)
             });
             for (c, v) in texel.into_iter().enumerate() {
                 call.samples[u][c][lane] = v;

@@ -56,7 +56,7 @@ impl Gen<'_> {
         let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
         let px = g.px.expect("carried by the loop for keys with a shading stage");
         let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
-        let w = if !key.flat || key.fog.is_some() || key.textured() {
+        let w = if !key.flat || key.fog.is_some() {
             let iw = at(self, slot::INV_W);
             let one = self.fconst(1.0);
             Some(self.b.ins().fdiv(one, iw))
@@ -71,8 +71,8 @@ impl Gen<'_> {
             }
         };
         let mut c = [0, 1, 2, 3].map(|k| colour(self, slot::COLOR + k));
-        if let (true, Some(w)) = (key.textured(), w) {
-            c = self.texture(g, sv, key, w, c);
+        if key.textured() {
+            c = self.texture(g, sv, key, c);
         }
         if key.color_sum {
             for (k, ck) in c.iter_mut().take(3).enumerate() {

@@ -22,12 +22,12 @@ type Rgba = [Value; 4];
 
 impl Gen<'_> {
     /// The colour after the texture environment of `key`'s units over
-    /// `primary` (`crate::shade::texture`), `w` the lanes' w.
-    pub(super) fn texture(&mut self, g: &Group, sv: &SpanValues, key: &ShadeKey, w: Value, primary: Rgba) -> Rgba {
+    /// `primary` (`crate::shade::texture`).
+    pub(super) fn texture(&mut self, g: &Group, sv: &SpanValues, key: &ShadeKey, primary: Rgba) -> Rgba {
         let units: u32 = (0..MAX_UNITS).filter(|&u| key.tex[u].is_some()).map(|u| 1 << u).sum();
         let slot = self.tex_slot();
         let args = self.b.ins().stack_addr(self.ptr, slot, 0);
-        self.store_coords(g, sv, (args, units), w);
+        self.store_coords(g, sv, (args, units));
         let view = self
             .b
             .ins()
@@ -36,27 +36,29 @@ impl Gen<'_> {
         self.environment(key, view, &samples, primary)
     }
 
-    /// Stores the coordinates of the units of `units` at the lanes and at
-    /// their quads' top-left, top-right and bottom-left pixels in the
-    /// group's [`TexCall`].
-    fn store_coords(&mut self, g: &Group, sv: &SpanValues, (args, units): (Value, u32), w: Value) {
+    /// Stores the coordinates of the units of `units` at the four pixels of
+    /// each lane's quad (top-left, top-right, bottom-left, bottom-right) and
+    /// the lane's place in its quad in the group's [`TexCall`].
+    fn store_coords(&mut self, g: &Group, sv: &SpanValues, (args, units): (Value, u32)) {
         let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
         let px = g.px.expect("carried by the loop for keys with a shading stage");
         let one = self.fconst(1.0);
-        let (qx, qy) = (self.even(px), self.even(row));
+        let (qx, x_odd) = self.even(px);
+        let (qy, y_odd) = self.even(row);
+        let below = self.b.ins().ishl_imm_u(y_odd, 1);
+        let place = self.b.ins().bor(x_odd, below);
+        self.b
+            .ins()
+            .store(mem(), place, args, offset_of!(TexCall, quad_pixel) as i32);
         let qx1 = self.b.ins().fadd(qx, one);
         let qy1 = self.b.ins().fadd(qy, one);
-        for (p, (x, y)) in [(px, row), (qx, qy), (qx1, qy), (qx, qy1)].into_iter().enumerate() {
-            let wp = if p == 0 {
-                w
-            } else {
-                let iw = self.plane(planes, slot::INV_W, x, y);
-                self.b.ins().fdiv(one, iw)
-            };
+        for (p, (x, y)) in [(qx, qy), (qx1, qy), (qx, qy1), (qx1, qy1)].into_iter().enumerate() {
+            let iw = self.plane(planes, slot::INV_W, x, y);
+            let w = self.b.ins().fdiv(one, iw);
             for u in (0..MAX_UNITS).filter(|u| units & (1 << u) != 0) {
                 for c in 0..4 {
                     let v = self.plane(planes, slot::tex(u) + c, x, y);
-                    let v = self.b.ins().fmul(v, wp);
+                    let v = self.b.ins().fmul(v, w);
                     let off = offset_of!(TexCall, coords) + (((u * 4 + p) * 4 + c) * 16);
                     self.b.ins().store(mem(), v, args, off as i32);
                 }
@@ -244,13 +246,14 @@ impl Gen<'_> {
         s
     }
 
-    /// `v - (v & 1)` of lanes holding non-negative integers (`crate::shade::quad_origin`).
-    fn even(&mut self, v: Value) -> Value {
+    /// `v - (v & 1)` of lanes holding non-negative integers
+    /// (`crate::shade::quad_origin`), and `v & 1` as integer lanes.
+    fn even(&mut self, v: Value) -> (Value, Value) {
         let i = self.int_lanes(v);
         let one = self.splat(1);
         let odd = self.b.ins().band(i, one);
-        let odd = self.b.ins().fcvt_from_sint(F32X4, odd);
-        self.b.ins().fsub(v, odd)
+        let oddf = self.b.ins().fcvt_from_sint(F32X4, odd);
+        (self.b.ins().fsub(v, oddf), odd)
     }
 }
 
