@@ -166,5 +166,25 @@ fn texels(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, texels);
+/// Compile time of textured keys: one trilinear unit; two units (trilinear
+/// and bilinear, the second MODULATE over the first).
+fn compile(c: &mut Criterion) {
+    let one = key(Filter::Linear, MipFilter::Linear);
+    let mut two = one;
+    if let Some(shade) = two.shade.as_mut() {
+        let mut second = shade.tex[0].expect("unit 0 is on");
+        second.sampler.mip = MipFilter::None;
+        second.sampler.wrap = [Wrap::ClampToEdge; 3];
+        shade.tex[1] = Some(second);
+    }
+    let mut group = c.benchmark_group("compile");
+    for (name, key) in [("textured_1_unit", one), ("textured_2_units", two)] {
+        group.bench_function(name, |b| {
+            b.iter(|| black_box(Specialist::compile(&key).expect("compiles")))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, compile, texels);
 criterion_main!(benches);

@@ -29,8 +29,11 @@ use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use std::mem::offset_of;
 
+mod sample;
 mod shade;
 mod texture;
+
+pub use sample::native_unit;
 
 const I32X4: Type = types::I32X4;
 

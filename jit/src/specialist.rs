@@ -133,12 +133,14 @@ impl Specialist {
     ) -> Result<(), FragmentError> {
         check_key(&self.key, target)?;
         check_planes(&self.key, spans, planes)?;
-        let view = self
-            .key
-            .shade
-            .as_ref()
-            .filter(|s| s.textured())
-            .map(|s| TexView::new(&s.tex, textures));
+        let view = match self.key.shade.as_ref().filter(|s| s.textured()) {
+            Some(shade) => match TexView::new(&shade.tex, textures) {
+                Some(view) => Some(view),
+                // A natively sampled unit without a texture it can read.
+                None => return crate::interp::run_with_planes(&self.key, uniforms, textures, spans, planes, target),
+            },
+            None => None,
+        };
         let tex = view
             .as_ref()
             .map_or(std::ptr::null(), |v| (v as *const TexView<'_>).cast());
