@@ -86,9 +86,26 @@ pub enum CompileError {
 /// 309 µs and 440 with it; the register allocator is most of what is left).
 /// The IR verifier runs only in debug builds (it adds 30-60%).
 pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
+    isa_with(false)
+}
+
+/// [`host_isa`] with Cranelift's single-pass register allocator, for keys
+/// with texture units: their functions are 3-10 times larger (per-lane
+/// texel gathers), and the backtracking allocator took 1.9-2.5 ms of CPU for
+/// one or two trilinear units under load where the single-pass one takes
+/// 0.7-0.9 ms (the untextured shaded key: 159 vs 79 µs in the same run;
+/// `jit/benches/texels.rs`, group `compile`, for quiet figures).
+pub fn textured_host_isa() -> Result<OwnedTargetIsa, CompileError> {
+    isa_with(true)
+}
+
+fn isa_with(single_pass: bool) -> Result<OwnedTargetIsa, CompileError> {
     let mut flags = settings::builder();
     let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
     set(&mut flags, "opt_level", "none")?;
+    if single_pass {
+        set(&mut flags, "regalloc_algorithm", "single_pass")?;
+    }
     set(
         &mut flags,
         "enable_verifier",

@@ -1,7 +1,7 @@
 //! Native sampling of the paths real programs spend their time in: 2D
 //! `Rgba8` textures (every unorm8 base format is stored expanded to RGBA)
-//! with equal minification and magnification filters, NEAREST or LINEAR,
-//! any mipmap filter, REPEAT or CLAMP_TO_EDGE. These take llvmpipe's 8-bit
+//! with every minification filter (NEAREST, LINEAR and the four mipmap
+//! filters) and magnification filter, REPEAT or CLAMP_TO_EDGE. These take llvmpipe's 8-bit
 //! AoS path; each step is the reference's (`crate::texture::sample_quad`,
 //! `lod`, `filter::aos`) operation on four lanes, with x86's conversions
 //! (`crate::texture::arith`), so the bits equal the interpreter's.
@@ -10,7 +10,7 @@
 //! [`UnitView`](crate::callout::UnitView) at run time, never from the key;
 //! per lane, since the lanes of a group can lie in quads of different levels.
 
-use super::{mem, Gen, I32X4};
+use super::{le, mem, Gen, I32X4};
 use crate::callout::{LevelView, TexView, UnitView};
 use crate::texture::{Filter, MipFilter, SamplerKey, TexTarget, TexUnitKey, TexelFormat, Wrap, MAX_LEVELS};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
@@ -25,7 +25,6 @@ pub fn native_unit(unit: &TexUnitKey) -> bool {
     s.target == TexTarget::D2
         && s.format == TexelFormat::Rgba8
         && s.compare.is_none()
-        && s.min == s.mag
         && s.wrap[..2]
             .iter()
             .all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge))
@@ -47,57 +46,72 @@ impl Gen<'_> {
             (offset_of!(TexView<'static>, units) + u * size_of::<UnitView>()) as i64,
         );
         let first = self.unit_i32(unit, offset_of!(UnitView, first));
-        let texels = match (key.mip, c.quad) {
-            (MipFilter::None, _) | (_, None) => self.fetch_level(unit, key, first, c.at),
-            (mip, Some(quad)) => {
-                let (ipart, fpart) = self.lambda(unit, mip, quad);
-                let last = self.unit_i32(unit, offset_of!(UnitView, last));
-                let l0 = self.b.ins().iadd(ipart, first);
-                match mip {
-                    MipFilter::Nearest => {
-                        let l = self.b.ins().smax(l0, first);
-                        let l = self.b.ins().smin(l, last);
-                        self.fetch_level(unit, key, l, c.at)
-                    }
-                    _ => {
-                        let fpart = fpart.expect("λ's fraction for a linear mipmap filter");
-                        let below = self.b.ins().icmp(IntCC::SignedLessThan, l0, first);
-                        let above = self.b.ins().icmp(IntCC::SignedGreaterThanOrEqual, l0, last);
-                        let one = self.splat(1);
-                        let l1 = self.b.ins().iadd(l0, one);
-                        let level0 = self.b.ins().bitselect(above, last, l0);
-                        let level0 = self.b.ins().bitselect(below, first, level0);
-                        let level1 = self.b.ins().bitselect(above, last, l1);
-                        let level1 = self.b.ins().bitselect(below, first, level1);
-                        let ends = self.b.ins().bor(below, above);
-                        // The 8-bit weight `trunc(fpart·256)`, 0 at the chain's ends and
-                        // where it is not positive (NaN converts to i32::MIN); 256
-                        // (fpart rounded to 1) is 0 as the reference's `as u8` makes it.
-                        let k = self.fconst(256.0);
-                        let w = self.b.ins().fmul(fpart, k);
-                        let w = self.int_lanes(w);
-                        let zero = self.splat(0);
-                        let w = self.b.ins().smax(w, zero);
-                        let ff = self.splat(255);
-                        let w = self.b.ins().band(w, ff);
-                        let w = self.b.ins().bitselect(ends, zero, w);
-                        let c0 = self.fetch_level(unit, key, level0, c.at);
-                        let c1 = self.fetch_level(unit, key, level1, c.at);
-                        std::array::from_fn(|ch| self.lerp8(w, c0[ch], c1[ch]))
-                    }
-                }
+        let Some(quad) = c.quad else {
+            // No λ: one filter, level `first`.
+            let texels = self.fetch_level(unit, key, (key.min, first), c.at);
+            return self.texels_to_float(texels);
+        };
+        let (ipart, fpart, minified) = self.lambda(unit, key.mip, quad);
+        let last = self.unit_i32(unit, offset_of!(UnitView, last));
+        let l0 = self.b.ins().iadd(ipart, first);
+        let min = match key.mip {
+            MipFilter::None => self.fetch_level(unit, key, (key.min, first), c.at),
+            MipFilter::Nearest => {
+                let l = self.b.ins().smax(l0, first);
+                let l = self.b.ins().smin(l, last);
+                self.fetch_level(unit, key, (key.min, l), c.at)
+            }
+            MipFilter::Linear => {
+                let fpart = fpart.expect("λ's fraction for a linear mipmap filter");
+                let below = self.b.ins().icmp(IntCC::SignedLessThan, l0, first);
+                let above = self.b.ins().icmp(IntCC::SignedGreaterThanOrEqual, l0, last);
+                let one = self.splat(1);
+                let l1 = self.b.ins().iadd(l0, one);
+                let level0 = self.b.ins().bitselect(above, last, l0);
+                let level0 = self.b.ins().bitselect(below, first, level0);
+                let level1 = self.b.ins().bitselect(above, last, l1);
+                let level1 = self.b.ins().bitselect(below, first, level1);
+                let ends = self.b.ins().bor(below, above);
+                // The 8-bit weight `trunc(fpart·256)`, 0 at the chain's ends and
+                // where it is not positive (NaN converts to i32::MIN); 256
+                // (fpart rounded to 1) is 0 as the reference's `as u8` makes it.
+                let k = self.fconst(256.0);
+                let w = self.b.ins().fmul(fpart, k);
+                let w = self.int_lanes(w);
+                let zero = self.splat(0);
+                let w = self.b.ins().smax(w, zero);
+                let ff = self.splat(255);
+                let w = self.b.ins().band(w, ff);
+                let w = self.b.ins().bitselect(ends, zero, w);
+                let c0 = self.fetch_level(unit, key, (key.min, level0), c.at);
+                let c1 = self.fetch_level(unit, key, (key.min, level1), c.at);
+                self.lerp_texels(w, c0, c1)
             }
         };
+        let texels = if key.min == key.mag {
+            // Magnified lanes have λ ≤ 0: the same filter at level `first`,
+            // where the mipmap filter lands with weight 0.
+            min
+        } else {
+            // Magnified lanes: the magnification filter at level `first` (`lod::filter`).
+            let mag = self.fetch_level(unit, key, (key.mag, first), c.at);
+            self.b.ins().bitselect(minified, min, mag)
+        };
+        self.texels_to_float(texels)
+    }
+
+    /// Packed RGBA8 lanes to four float channels (`arith::unorm8_to_float`).
+    fn texels_to_float(&mut self, texels: Value) -> [Value; 4] {
         let k = self.fconst((1.0f64 / 255.0) as f32);
-        texels.map(|v| {
+        self.channels(texels).map(|v| {
             let f = self.b.ins().fcvt_from_sint(F32X4, v);
             self.b.ins().fmul(f, k)
         })
     }
 
-    /// λ's integer part and (linear mipmap filter) fraction
-    /// (`crate::texture::lod::{rho_quad, select}` for two dimensions).
-    fn lambda(&mut self, unit: Value, mip: MipFilter, quad: [[Value; 2]; 3]) -> (Value, Option<Value>) {
+    /// λ's integer part, (linear mipmap filter) fraction, and the lanes it
+    /// minifies (`crate::texture::lod::{rho_quad, select}` for two dimensions).
+    fn lambda(&mut self, unit: Value, mip: MipFilter, quad: [[Value; 2]; 3]) -> (Value, Option<Value>, Value) {
         let [tl, tr, bl] = quad;
         let size = [0, 1].map(|a| self.unit_f32(unit, offset_of!(UnitView, base_size) + 16 * a));
         let sq = |s: &mut Self, d: Value, size: Value| {
@@ -140,11 +154,13 @@ impl Gen<'_> {
         let lod = self.b.ins().bitselect(apply, clamped, lod);
         let equal = self.unit_fmask(unit, offset_of!(UnitView, min_max_equal));
         let lod = self.b.ins().bitselect(equal, min_lod, lod);
+        let zero = self.fconst(0.0);
+        let minified = self.b.ins().fcmp(FloatCC::GreaterThan, lod, zero);
         match mip {
             MipFilter::Linear => {
                 let f = self.b.ins().floor(lod);
                 let fpart = self.b.ins().fsub(lod, f);
-                (self.int_lanes(f), Some(fpart))
+                (self.int_lanes(f), Some(fpart), minified)
             }
             _ => {
                 let r = self.b.ins().nearest(lod);
@@ -156,15 +172,25 @@ impl Gen<'_> {
                 let from_exp = self.b.ins().sshr_imm_u(from_exp, 1);
                 let only = self.unit_i32(unit, offset_of!(UnitView, exponent_only));
                 let equal = self.unit_i32(unit, offset_of!(UnitView, min_max_equal));
-                let not_equal = self.b.ins().band_not(only, equal);
-                (self.b.ins().bitselect(not_equal, from_exp, ipart), None)
+                let only = self.b.ins().band_not(only, equal);
+                // There minified is ρ > 1.
+                let one = self.fconst(1.0);
+                let above = self.b.ins().fcmp(FloatCC::GreaterThan, rho, one);
+                let minified = self.b.ins().bitselect(only, above, minified);
+                (self.b.ins().bitselect(only, from_exp, ipart), None, minified)
             }
         }
     }
 
-    /// The RGBA bytes (`i32x4` a channel) of each lane's level `level`,
-    /// filtered at `at` (`crate::texture::filter::aos`, two dimensions).
-    fn fetch_level(&mut self, unit: Value, key: &SamplerKey, level: Value, at: [Value; 2]) -> [Value; 4] {
+    /// The packed RGBA8 of each lane's level `level`, filtered with `filter`
+    /// at `at` (`crate::texture::filter::aos`, two dimensions).
+    fn fetch_level(
+        &mut self,
+        unit: Value,
+        key: &SamplerKey,
+        (filter, level): (Filter, Value),
+        at: [Value; 2],
+    ) -> Value {
         // Each lane's level: its texels and sizes.
         let mut ptrs = [level; 4];
         let mut size = [self.splat(0); 2];
@@ -191,40 +217,41 @@ impl Gen<'_> {
             }
         }
         let pot = [0, 1].map(|a| self.unit_i32(unit, offset_of!(UnitView, pot) + 16 * a));
-        let fetch = |s: &mut Self, x: Value, y: Value| s.fetch(&ptrs, size, x, y);
-        match key.min {
+        let one = self.splat(1);
+        // Coordinates are clamped to the level (they already are: the clamp
+        // only guarantees it), rows made once.
+        let wm = self.b.ins().isub(size[0], one);
+        let hm = self.b.ins().isub(size[1], one);
+        let column = |s: &mut Self, x: Value| s.b.ins().umin(x, wm);
+        let row = |s: &mut Self, y: Value| {
+            let y = s.b.ins().umin(y, hm);
+            s.b.ins().imul(y, size[0])
+        };
+        match filter {
             Filter::Nearest => {
                 let x = self.nearest_axis(at[0], size[0], pot[0], key.wrap[0]);
                 let y = self.nearest_axis(at[1], size[1], pot[1], key.wrap[1]);
-                let t = fetch(self, x, y);
-                self.channels(t)
+                let x = column(self, x);
+                let y = row(self, y);
+                self.fetch(&ptrs, x, y)
             }
             Filter::Linear => {
                 let (x0, x1, wx) = self.linear_axis(at[0], size[0], pot[0], key.wrap[0]);
                 let (y0, y1, wy) = self.linear_axis(at[1], size[1], pot[1], key.wrap[1]);
-                let t = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)].map(|(x, y)| {
-                    let t = fetch(self, x, y);
-                    self.channels(t)
-                });
-                std::array::from_fn(|ch| {
-                    let row0 = self.lerp8(wx, t[0][ch], t[1][ch]);
-                    let row1 = self.lerp8(wx, t[2][ch], t[3][ch]);
-                    self.lerp8(wy, row0, row1)
-                })
+                let [x0, x1] = [x0, x1].map(|x| column(self, x));
+                let [y0, y1] = [y0, y1].map(|y| row(self, y));
+                let t = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)].map(|(x, y)| self.fetch(&ptrs, x, y));
+                let r0 = self.lerp_texels(wx, t[0], t[1]);
+                let r1 = self.lerp_texels(wx, t[2], t[3]);
+                self.lerp_texels(wy, r0, r1)
             }
         }
     }
 
-    /// The packed texels at `(x, y)` of each lane's level; coordinates are
-    /// clamped to the level (they already are: the clamp only guarantees it).
-    fn fetch(&mut self, ptrs: &[Value; 4], size: [Value; 2], x: Value, y: Value) -> Value {
-        let one = self.splat(1);
-        let wm = self.b.ins().isub(size[0], one);
-        let hm = self.b.ins().isub(size[1], one);
-        let x = self.b.ins().umin(x, wm);
-        let y = self.b.ins().umin(y, hm);
-        let row = self.b.ins().imul(y, size[0]);
-        let index = self.b.ins().iadd(row, x);
+    /// The packed texels at column `x` of row offset `y` (`row · width`) of
+    /// each lane's level.
+    fn fetch(&mut self, ptrs: &[Value; 4], x: Value, y: Value) -> Value {
+        let index = self.b.ins().iadd(y, x);
         let mut out = self.splat(0);
         for (lane, &p) in ptrs.iter().enumerate() {
             let i = self.b.ins().extractlane(index, lane as u8);
@@ -235,6 +262,57 @@ impl Gen<'_> {
             out = self.b.ins().insertlane(out, t, lane as u8);
         }
         out
+    }
+
+    /// The 8-bit lerp of packed RGBA8 lanes `a` to `b` with each lane's
+    /// weight `w` (0..=255) in every channel (`arith::lerp8`), as llvmpipe
+    /// computes it: on 16-bit lanes, `pmulhrsw(w, (b − a) << 7)` is
+    /// `(w·(b − a) + 128) >> 8`.
+    fn lerp_texels(&mut self, w: Value, a: Value, b: Value) -> Value {
+        let wb = self.b.ins().bitcast(types::I8X16, le(), w);
+        let half = |s: &mut Self, v: Value, high: bool| {
+            let bytes = s.b.ins().bitcast(types::I8X16, le(), v);
+            if high {
+                s.b.ins().uwiden_high(bytes)
+            } else {
+                s.b.ins().uwiden_low(bytes)
+            }
+        };
+        let mut out = [w; 2];
+        for (h, o) in out.iter_mut().enumerate() {
+            // Lane 2h's weight in its four channels, then lane 2h + 1's (byte
+            // 1 of each lane is zero: the weight is below 256).
+            let (l0, l1) = (8 * h as u8, 8 * h as u8 + 4);
+            let mask = [
+                l0,
+                l0 + 1,
+                l0,
+                l0 + 1,
+                l0,
+                l0 + 1,
+                l0,
+                l0 + 1,
+                l1,
+                l1 + 1,
+                l1,
+                l1 + 1,
+                l1,
+                l1 + 1,
+                l1,
+                l1 + 1,
+            ];
+            let m = self.b.func.dfg.immediates.push(mask.to_vec().into());
+            let ws = self.b.ins().shuffle(wb, wb, m);
+            let ws = self.b.ins().bitcast(types::I16X8, le(), ws);
+            let a16 = half(self, a, h == 1);
+            let b16 = half(self, b, h == 1);
+            let d = self.b.ins().isub(b16, a16);
+            let d = self.b.ins().ishl_imm_u(d, 7);
+            let step = self.b.ins().sqmul_round_sat(ws, d);
+            *o = self.b.ins().iadd(a16, step);
+        }
+        let bytes = self.b.ins().unarrow(out[0], out[1]);
+        self.b.ins().bitcast(I32X4, le(), bytes)
     }
 
     /// Packed RGBA8 lanes to four channel lanes.
@@ -251,16 +329,6 @@ impl Gen<'_> {
         }
         ch[3] = self.b.ins().ushr_imm_u(t, 24);
         ch
-    }
-
-    /// `a + ((w·(b − a) + 128) >> 8)` (`crate::texture::arith::lerp8`).
-    fn lerp8(&mut self, w: Value, a: Value, b: Value) -> Value {
-        let d = self.b.ins().isub(b, a);
-        let p = self.b.ins().imul(w, d);
-        let half = self.splat(128);
-        let p = self.b.ins().iadd(p, half);
-        let p = self.b.ins().sshr_imm_u(p, 8);
-        self.b.ins().iadd(a, p)
     }
 
     /// The nearest texel along an axis (`filter::aos_nearest_axis`).

@@ -12,7 +12,8 @@ use super::{mem, Gen, Group, SpanCall, SpanValues};
 use crate::callout::{texture_group, TexCall, TexView};
 use crate::key::ShadeKey;
 use crate::shade::slot;
-use crate::texture::{CombineFn, CombineKey, CombineSrc, MipFilter, Operand, TexUnitKey, MAX_UNITS};
+use crate::texture::lod::needs_lod;
+use crate::texture::{CombineFn, CombineKey, CombineSrc, Operand, TexUnitKey, MAX_UNITS};
 use cranelift_codegen::ir::{types, AbiParam, InstBuilder, Signature, StackSlot, StackSlotData, StackSlotKind, Value};
 use std::mem::{offset_of, size_of};
 
@@ -49,11 +50,11 @@ impl Gen<'_> {
                 .tex
                 .iter()
                 .flatten()
-                .any(|t| native_unit(t) && t.sampler.mip != MipFilter::None);
+                .any(|t| native_unit(t) && needs_lod(&t.sampler));
             let points = self.native_points(g, sv, lod);
             for (u, unit) in key.tex.iter().enumerate() {
                 if let Some(unit) = unit.as_ref().filter(|t| native_unit(t)) {
-                    let c = self.project(sv, u, &points, unit.sampler.mip != MipFilter::None);
+                    let c = self.project(sv, u, &points, needs_lod(&unit.sampler));
                     samples[u] = Some(self.sample_native(u, &unit.sampler, view, &c));
                 }
             }
