@@ -129,39 +129,28 @@ fn texels(c: &mut Criterion) {
     ] {
         let key = key(filter, mip);
         let specialist = Specialist::compile(&key).expect("the bench key compiles");
-        group.bench_function(format!("{name}/jit"), |b| {
-            b.iter(|| {
-                let mut t = Target::new(
-                    SIZE,
-                    SIZE,
-                    ColorFormat::Rgba8,
-                    &mut color,
-                    SIZE as usize * 4,
-                    None,
-                    None,
-                )
-                .expect("buffer sized for the target");
-                specialist
-                    .run_with_planes(&u, &set, black_box(&spans), &planes, &mut t)
+        for backend in ["jit", "interpreter"] {
+            group.bench_function(format!("{name}/{backend}"), |b| {
+                b.iter(|| {
+                    let mut t = Target::new(
+                        SIZE,
+                        SIZE,
+                        ColorFormat::Rgba8,
+                        &mut color,
+                        SIZE as usize * 4,
+                        None,
+                        None,
+                    )
+                    .expect("buffer sized for the target");
+                    let spans = black_box(&spans);
+                    match backend {
+                        "jit" => specialist.run_with_planes(&u, &set, spans, &planes, &mut t),
+                        _ => interp::run_with_planes(&key, &u, &set, spans, &planes, &mut t),
+                    }
                     .expect("the key names the buffers");
-            })
-        });
-        group.bench_function(format!("{name}/interpreter"), |b| {
-            b.iter(|| {
-                let mut t = Target::new(
-                    SIZE,
-                    SIZE,
-                    ColorFormat::Rgba8,
-                    &mut color,
-                    SIZE as usize * 4,
-                    None,
-                    None,
-                )
-                .expect("buffer sized for the target");
-                interp::run_with_planes(&key, &u, &set, black_box(&spans), &planes, &mut t)
-                    .expect("the key names the buffers");
-            })
-        });
+                })
+            });
+        }
     }
     group.finish();
 }
