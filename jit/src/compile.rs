@@ -208,6 +208,8 @@ struct Gen<'a> {
     fconsts: Vec<(u32, Value)>,
     /// The stack slot of the texture callout's arguments, once made.
     tex_slot: Option<cranelift_codegen::ir::StackSlot>,
+    /// The stack slot of the native sampler's per-lane gathers, once made.
+    lane_slot: Option<cranelift_codegen::ir::StackSlot>,
 }
 
 impl<'a> Gen<'a> {
@@ -221,6 +223,7 @@ impl<'a> Gen<'a> {
             x86: false,
             fconsts: Vec::new(),
             tex_slot: None,
+            lane_slot: None,
         }
     }
 
