@@ -196,9 +196,8 @@ impl Gen<'_> {
 
     /// One unit's combine (`crate::texture::env::combine`).
     fn combine(&mut self, k: &CombineKey, source: &mut impl FnMut(&mut Self, CombineSrc) -> Rgba) -> Rgba {
-        let dot3 = matches!(k.rgb, CombineFn::Dot3Rgb | CombineFn::Dot3Rgba);
-        let rgb_shift = if dot3 { 1 } else { k.scale_rgb };
-        let alpha_shift = if k.rgb == CombineFn::Dot3Rgba { 1 } else { k.scale_alpha };
+        // Both scales apply to every function, DOT3 included.
+        let (rgb_shift, alpha_shift) = (k.scale_rgb, k.scale_alpha);
         // The operands a function reads, in the channels it reads.
         let mut args = |s: &mut Self, f: CombineFn, srcs: [CombineSrc; 3], ops: [Operand; 3], channels: &[usize]| {
             let mut a = [[None; 4]; 3];
@@ -286,9 +285,10 @@ impl Gen<'_> {
                 CombineFn::Modulate => self.b.ins().fmul(x, y),
                 CombineFn::Add => self.b.ins().fadd(x, y),
                 CombineFn::AddSigned => {
-                    let v = self.b.ins().fadd(x, y);
+                    // `(x + -0.5) + y`, the order NIR's algebraic pass leaves.
                     let h = self.fconst(-0.5);
-                    self.b.ins().fadd(v, h)
+                    let v = self.b.ins().fadd(x, h);
+                    self.b.ins().fadd(v, y)
                 }
                 CombineFn::Interpolate => {
                     let z = arg(2, ch);

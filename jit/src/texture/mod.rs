@@ -8,9 +8,14 @@
 //! arrives per draw as a [`TextureRef`] in a [`TextureSet`] and is never part
 //! of the key.
 //!
-//! [`sample`] and [`environment`] are the reference: [`crate::shade::fragment`]
-//! calls them per fragment, and compiled code must compute the same bits (or
-//! call them back through `jit/src/callout.rs`).
+//! [`sample_quad`] (the fragment's 2×2 quad, exact for every target; [`sample`]
+//! takes three of its pixels and is exact except for cube maps with per-pixel
+//! λ) and [`environment`] are the reference: [`crate::shade::fragment`] calls
+//! them per fragment, and compiled code must compute the same bits (or call
+//! them back through `jit/src/callout.rs`). [`uses_aos`] says which of
+//! llvmpipe's two filtering paths a sampler takes; [`filter`], [`lod`],
+//! [`cube`] and [`arith`] hold their steps (`docs/llvmpipe-facts.md` §16, §17).
+//! `jit/tests/texture.rs` checks all of it against llvmpipe's pixels.
 
 pub mod arith;
 pub mod cube;
@@ -290,6 +295,14 @@ pub fn effective_combine(mode: EnvMode, base: BaseFormat, combine: CombineKey) -
     k
 }
 
+/// Mesa's `util_quantize_lod_bias` of a `GL_TEXTURE_LOD_BIAS`: clamped to
+/// ±16 and rounded to 1/256 (`roundf`, half away from zero). The object's
+/// and the unit's biases are each quantized, then summed
+/// (`st_convert_sampler`): that sum is [`TextureRef::lod_bias`].
+pub fn quantized_lod_bias(bias: f32) -> f32 {
+    (bias.clamp(-16.0, 16.0) * 256.0).round() / 256.0
+}
+
 /// One enabled, complete unit as the key sees it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct TexUnitKey {
@@ -330,7 +343,8 @@ pub struct TextureRef<'a> {
     pub max_level: u32,
     pub min_lod: f32,
     pub max_lod: f32,
-    /// `GL_TEXTURE_LOD_BIAS` of the object plus the unit's (`glTexEnv` `GL_TEXTURE_FILTER_CONTROL`).
+    /// `GL_TEXTURE_LOD_BIAS` of the object plus the unit's (`glTexEnv`
+    /// `GL_TEXTURE_FILTER_CONTROL`), each through [`quantized_lod_bias`].
     pub lod_bias: f32,
     pub border: [f32; 4],
 }
