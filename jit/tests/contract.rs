@@ -322,20 +322,8 @@ proptest! {
             fog: FogUniforms::new(start, end, density, color.map(|c| f32::from(c) / 255.0)),
             ..u
         };
-        let mut interp_buf = Buffers::random(&key, &mut rng);
-        let mut spans = spans(&interp_buf, &key, &mut rng);
-        let planes: Vec<Planes> = (0..1 + rng.below(3)).map(|_| planes(&mut rng)).collect();
-        for s in &mut spans {
-            s.planes = rng.below(planes.len() as u64) as u32;
-        }
-        let mut jit_buf = interp_buf.clone();
-        let specialist = Specialist::compile(&key).expect("a valid key compiles");
-        interp::run_with_planes(&key, &u, &TextureSet::default(), &spans, &planes, &mut interp_buf.target()).expect("the key names the buffers");
-        specialist.run_with_planes(&u, &TextureSet::default(), &spans, &planes, &mut jit_buf.target()).expect("the key names the buffers");
-        prop_assert_eq!(&jit_buf.color, &interp_buf.color, "color differs");
-        prop_assert_eq!(&jit_buf.depth16, &interp_buf.depth16, "depth differs");
-        prop_assert_eq!(&jit_buf.depth32, &interp_buf.depth32, "depth differs");
-        prop_assert_eq!(&jit_buf.stencil, &interp_buf.stencil, "stencil differs");
+        let (jit_buf, interp_buf) = run_both(&key, &u, &TextureSet::default(), &mut rng, planes);
+        prop_assert_eq!(&jit_buf, &interp_buf, "buffers differ");
     }
 }
 
@@ -815,6 +803,32 @@ proptest! {
     }
 }
 
+/// Random buffers, spans over them and planes from `make_planes` (one to
+/// three primitives), run through the specialist of `key` and through the
+/// interpreter: the buffers after each, JIT first.
+fn run_both(
+    key: &FragmentKey,
+    u: &FragmentUniforms,
+    textures: &TextureSet<'_>,
+    rng: &mut Rng,
+    make_planes: fn(&mut Rng) -> Planes,
+) -> (Buffers, Buffers) {
+    let mut interp_buf = Buffers::random(key, rng);
+    let mut spans = spans(&interp_buf, key, rng);
+    let planes: Vec<Planes> = (0..1 + rng.below(3)).map(|_| make_planes(rng)).collect();
+    for s in &mut spans {
+        s.planes = rng.below(planes.len() as u64) as u32;
+    }
+    let mut jit_buf = interp_buf.clone();
+    let specialist = Specialist::compile(key).expect("a valid key compiles");
+    interp::run_with_planes(key, u, textures, &spans, &planes, &mut interp_buf.target())
+        .expect("the key names the buffers");
+    specialist
+        .run_with_planes(u, textures, &spans, &planes, &mut jit_buf.target())
+        .expect("the key names the buffers");
+    (jit_buf, interp_buf)
+}
+
 /// A unit the specialist samples natively.
 fn native_unit_key() -> impl Strategy<Value = TexUnitKey> {
     let wrap = || select(&[Wrap::Repeat, Wrap::ClampToEdge][..]);
@@ -864,19 +878,7 @@ fn textured_case(
         textures.units[unit] = o.as_ref().map(|o| o.texture_ref(&images[unit]));
         textures.env_color[unit] = [0, 1, 2, 3].map(|_| f32::from(rng.byte()) / 255.0);
     }
-    let mut interp_buf = Buffers::random(&key, &mut rng);
-    let mut spans = spans(&interp_buf, &key, &mut rng);
-    let planes: Vec<Planes> = (0..1 + rng.below(3)).map(|_| textured_planes(&mut rng)).collect();
-    for s in &mut spans {
-        s.planes = rng.below(planes.len() as u64) as u32;
-    }
-    let mut jit_buf = interp_buf.clone();
-    let specialist = Specialist::compile(&key).expect("a valid key compiles");
-    interp::run_with_planes(&key, &u, &textures, &spans, &planes, &mut interp_buf.target())
-        .expect("the key names the buffers");
-    specialist
-        .run_with_planes(&u, &textures, &spans, &planes, &mut jit_buf.target())
-        .expect("the key names the buffers");
+    let (jit_buf, interp_buf) = run_both(&key, &u, &textures, &mut rng, textured_planes);
     prop_assert_eq!(&jit_buf, &interp_buf, "buffers differ");
     Ok(())
 }
