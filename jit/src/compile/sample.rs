@@ -264,9 +264,13 @@ impl Gen<'_> {
                 let [x0, x1] = [x0, x1].map(|x| column(self, x));
                 let [y0, y1] = [y0, y1].map(|y| row(self, y));
                 let t = self.fetch(&[(x0, y0), (x1, y0), (x0, y1), (x1, y1)]);
-                let r0 = self.lerp_texels(wx, t[0], t[1]);
-                let r1 = self.lerp_texels(wx, t[2], t[3]);
-                self.lerp_texels(wy, r0, r1)
+                // The three lerps on widened texels, narrowed once.
+                let t = [t[0], t[1], t[2], t[3]].map(|t| self.widen(t));
+                let (wx, wy) = (self.wide_weight(wx), self.wide_weight(wy));
+                let r0 = self.lerp_wide(wx, t[0], t[1]);
+                let r1 = self.lerp_wide(wx, t[2], t[3]);
+                let r = self.lerp_wide(wy, r0, r1);
+                self.narrow(r)
             }
         }
     }
@@ -339,54 +343,54 @@ impl Gen<'_> {
     }
 
     /// The 8-bit lerp of packed RGBA8 lanes `a` to `b` with each lane's
-    /// weight `w` (0..=255) in every channel (`arith::lerp8`), as llvmpipe
-    /// computes it: on 16-bit lanes, `pmulhrsw(w, (b − a) << 7)` is
-    /// `(w·(b − a) + 128) >> 8`.
+    /// weight `w` (0..=255) in every channel ([`Self::lerp_wide`]).
     fn lerp_texels(&mut self, w: Value, a: Value, b: Value) -> Value {
+        let w = self.wide_weight(w);
+        let (a, b) = (self.widen(a), self.widen(b));
+        let r = self.lerp_wide(w, a, b);
+        self.narrow(r)
+    }
+
+    /// Packed RGBA8 lanes as two `i16x8` halves (lanes 0–1, lanes 2–3).
+    fn widen(&mut self, t: Value) -> [Value; 2] {
+        let bytes = self.b.ins().bitcast(types::I8X16, le(), t);
+        [self.b.ins().uwiden_low(bytes), self.b.ins().uwiden_high(bytes)]
+    }
+
+    /// The halves of [`Self::widen`] packed again (every value is a byte).
+    fn narrow(&mut self, h: [Value; 2]) -> Value {
+        let bytes = self.b.ins().unarrow(h[0], h[1]);
+        self.b.ins().bitcast(I32X4, le(), bytes)
+    }
+
+    /// Each lane's weight (0..=255) in its four channels, in the halves'
+    /// layout: lane 2h's, then lane 2h + 1's (byte 1 of each `i32` lane is
+    /// zero: the weight is below 256).
+    fn wide_weight(&mut self, w: Value) -> [Value; 2] {
         let wb = self.b.ins().bitcast(types::I8X16, le(), w);
-        let half = |s: &mut Self, v: Value, high: bool| {
-            let bytes = s.b.ins().bitcast(types::I8X16, le(), v);
-            if high {
-                s.b.ins().uwiden_high(bytes)
-            } else {
-                s.b.ins().uwiden_low(bytes)
+        [0u8, 1].map(|h| {
+            let (l0, l1) = (8 * h, 8 * h + 4);
+            let mut mask = [0u8; 16];
+            for (i, m) in mask.iter_mut().enumerate() {
+                let l = if i < 8 { l0 } else { l1 };
+                *m = l + (i as u8 & 1);
             }
-        };
-        let mut out = [w; 2];
-        for (h, o) in out.iter_mut().enumerate() {
-            // Lane 2h's weight in its four channels, then lane 2h + 1's (byte
-            // 1 of each lane is zero: the weight is below 256).
-            let (l0, l1) = (8 * h as u8, 8 * h as u8 + 4);
-            let mask = [
-                l0,
-                l0 + 1,
-                l0,
-                l0 + 1,
-                l0,
-                l0 + 1,
-                l0,
-                l0 + 1,
-                l1,
-                l1 + 1,
-                l1,
-                l1 + 1,
-                l1,
-                l1 + 1,
-                l1,
-                l1 + 1,
-            ];
             let m = self.b.func.dfg.immediates.push(mask.to_vec().into());
             let ws = self.b.ins().shuffle(wb, wb, m);
-            let ws = self.b.ins().bitcast(types::I16X8, le(), ws);
-            let a16 = half(self, a, h == 1);
-            let b16 = half(self, b, h == 1);
-            let d = self.b.ins().isub(b16, a16);
+            self.b.ins().bitcast(types::I16X8, le(), ws)
+        })
+    }
+
+    /// The 8-bit lerp on widened texels (`arith::lerp8`), as llvmpipe
+    /// computes it: on 16-bit lanes, `pmulhrsw(w, (b − a) << 7)` is
+    /// `(w·(b − a) + 128) >> 8`.
+    fn lerp_wide(&mut self, w: [Value; 2], a: [Value; 2], b: [Value; 2]) -> [Value; 2] {
+        std::array::from_fn(|h| {
+            let d = self.b.ins().isub(b[h], a[h]);
             let d = self.b.ins().ishl_imm_u(d, 7);
-            let step = self.b.ins().sqmul_round_sat(ws, d);
-            *o = self.b.ins().iadd(a16, step);
-        }
-        let bytes = self.b.ins().unarrow(out[0], out[1]);
-        self.b.ins().bitcast(I32X4, le(), bytes)
+            let step = self.b.ins().sqmul_round_sat(w[h], d);
+            self.b.ins().iadd(a[h], step)
+        })
     }
 
     /// Packed RGBA8 lanes to four channel lanes.
