@@ -156,7 +156,8 @@ fn texels(c: &mut Criterion) {
 }
 
 /// Compile time of textured keys: one trilinear unit; two units (trilinear
-/// and bilinear, the second MODULATE over the first).
+/// and bilinear, the second MODULATE over the first); and the shaded key
+/// without texturing, for scale.
 fn compile(c: &mut Criterion) {
     let one = key(Filter::Linear, MipFilter::Linear);
     let mut two = one;
@@ -166,8 +167,17 @@ fn compile(c: &mut Criterion) {
         second.sampler.wrap = [Wrap::ClampToEdge; 3];
         shade.tex[1] = Some(second);
     }
+    // For scale, in the same run: the same key without its unit.
+    let mut untextured = one;
+    if let Some(shade) = untextured.shade.as_mut() {
+        shade.tex = [None; MAX_UNITS];
+    }
     let mut group = c.benchmark_group("compile");
-    for (name, key) in [("textured_1_unit", one), ("textured_2_units", two)] {
+    for (name, key) in [
+        ("untextured", untextured),
+        ("textured_1_unit", one),
+        ("textured_2_units", two),
+    ] {
         group.bench_function(name, |b| {
             b.iter(|| black_box(Specialist::compile(&key).expect("compiles")))
         });
