@@ -882,3 +882,131 @@ fn textured_case(
     prop_assert_eq!(&jit_buf, &interp_buf, "buffers differ");
     Ok(())
 }
+
+/// A one-unit 2D RGBA8 key with these filters and wrap, REPLACE.
+fn one_unit_key(min: Filter, mip: MipFilter, mag: Filter, wrap: Wrap) -> FragmentKey {
+    let unit = TexUnitKey {
+        sampler: SamplerKey {
+            target: TexTarget::D2,
+            format: TexelFormat::Rgba8,
+            min,
+            mip,
+            mag,
+            wrap: [wrap; 3],
+            compare: None,
+            depth_mode: DepthMode::Luminance,
+        },
+        base: BaseFormat::Rgba,
+        env: effective_combine(EnvMode::Replace, BaseFormat::Rgba, CombineKey::DEFAULT),
+    };
+    let mut tex = [None; MAX_UNITS];
+    tex[0] = Some(unit);
+    FragmentKey {
+        shade: Some(ShadeKey {
+            color: true,
+            tex,
+            ..ShadeKey::default()
+        }),
+        ..FragmentKey::new(ColorFormat::Rgba8, None, false)
+    }
+}
+
+/// Runs `key` over one full 16×2 span pair with `planes` and texture `levels`
+/// (square sides, RGBA8 bytes) on both back ends; the JIT's pixels, after
+/// checking they equal the interpreter's.
+fn run_one_unit(key: &FragmentKey, planes: Planes, levels: &[(u32, u32, Vec<u8>)]) -> Vec<u8> {
+    let images: Vec<Image<'_>> = levels
+        .iter()
+        .map(|(w, h, texels)| Image {
+            texels,
+            width: *w,
+            height: *h,
+            depth: 1,
+        })
+        .collect();
+    let mut set = TextureSet::default();
+    set.units[0] = Some(TextureRef {
+        images: &images,
+        base_level: 0,
+        max_level: levels.len() as u32 - 1,
+        min_lod: -1000.0,
+        max_lod: 1000.0,
+        lod_bias: 0.0,
+        border: [0.0; 4],
+    });
+    let spans: Vec<FragmentSpan> = (0..2)
+        .map(|y| {
+            let mut s = FragmentSpan::new(0, y);
+            for i in 0..16 {
+                s.set(i, [0; 4], 0);
+            }
+            s
+        })
+        .collect();
+    let run = |jit: bool| {
+        let mut color = vec![0u8; 16 * 2 * 4];
+        let mut target = Target::new(16, 2, ColorFormat::Rgba8, &mut color, 64, None, None).unwrap();
+        let u = FragmentUniforms::default();
+        if jit {
+            let s = Specialist::compile(key).unwrap();
+            s.run_with_planes(&u, &set, &spans, &[planes], &mut target).unwrap();
+        } else {
+            interp::run_with_planes(key, &u, &set, &spans, &[planes], &mut target).unwrap();
+        }
+        color
+    };
+    let jit = run(true);
+    assert_eq!(jit, run(false), "JIT and interpreter differ");
+    jit
+}
+
+/// Planes with w = 1, white, and unit 0's s and t from `(a0, dadx, dady)`.
+fn st_planes(s: (f32, f32, f32), t: (f32, f32, f32)) -> Planes {
+    use softgl_jit::shade::slot;
+    let mut p = Planes::default();
+    p.constant(slot::INV_W, 1.0);
+    for c in 0..4 {
+        p.constant(slot::COLOR + c, 1.0);
+    }
+    p.set(slot::tex(0), s.0, s.1, s.2);
+    p.set(slot::tex(0) + 1, t.0, t.1, t.2);
+    p.constant(slot::tex(0) + 3, 1.0);
+    p
+}
+
+/// λ on the tie of its rounding: ds/dx·32 = dt/dx·32 = 1 gives ρ² = 2; with
+/// no bias and no LOD clamp llvmpipe takes λ's integer part from ρ²'s
+/// exponent, `(128 − 126) >> 1 = 1`, where rounding `log2(2)/2 = 0.5` half to
+/// even would give 0: every fragment reads level 1 (green).
+#[test]
+fn lod_on_the_rounding_tie_reads_level_1_on_both_back_ends() {
+    let key = one_unit_key(Filter::Nearest, MipFilter::Nearest, Filter::Nearest, Wrap::Repeat);
+    let fill = |side: u32, rgba: [u8; 4]| (side, side, rgba.repeat((side * side) as usize));
+    let levels = [
+        fill(32, [255, 0, 0, 255]),
+        fill(16, [0, 255, 0, 255]),
+        fill(8, [0, 0, 255, 255]),
+        fill(4, [0, 0, 255, 255]),
+        fill(2, [0, 0, 255, 255]),
+        fill(1, [0, 0, 255, 255]),
+    ];
+    let d = 1.0 / 32.0;
+    let color = run_one_unit(&key, st_planes((0.25, d, 0.0), (0.5, d, 0.0)), &levels);
+    assert!(color.chunks(4).all(|p| p == [0, 255, 0, 255]), "{color:?}");
+}
+
+/// REPEAT of a non-power-of-two texture far from the origin: llvmpipe wraps
+/// from the fraction of s (its weights keep their 8 bits there) where a
+/// power-of-two texture would scale s first.
+#[test]
+fn npot_repeat_far_from_the_origin_matches() {
+    let mut rng = softgl_jit::rng::Rng::new(77);
+    let texels: Vec<u8> = (0..3 * 5 * 4).map(|_| rng.next_u64() as u8).collect();
+    for filter in [Filter::Nearest, Filter::Linear] {
+        let key = one_unit_key(filter, MipFilter::None, filter, Wrap::Repeat);
+        let planes = st_planes((100_000.3, 0.37, 0.01), (-30_000.2, 0.013, 0.29));
+        let color = run_one_unit(&key, planes, &[(3, 5, texels.clone())]);
+        // Every fragment is one of the texels (NEAREST) or between them.
+        assert!(color.chunks(4).any(|p| p != [0, 0, 0, 0]));
+    }
+}
