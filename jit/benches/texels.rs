@@ -9,14 +9,9 @@
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use softgl_jit::shade::slot;
-use softgl_jit::texture::{
-    effective_combine, BaseFormat, CombineKey, DepthMode, EnvMode, Filter, Image, MipFilter, SamplerKey, TexTarget,
-    TexUnitKey, TexelFormat, TextureRef, TextureSet, Wrap, MAX_UNITS,
-};
+use softgl_jit::texture::{EnvMode, Filter, Image, MipFilter, TextureRef, TextureSet, Wrap, MAX_UNITS};
 use softgl_jit::SPAN_MAX;
-use softgl_jit::{
-    interp, ColorFormat, FragmentKey, FragmentSpan, FragmentUniforms, Planes, ShadeKey, Specialist, Target,
-};
+use softgl_jit::{interp, ColorFormat, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -24,32 +19,12 @@ const SIZE: u32 = 256;
 const TEX: u32 = 256;
 const MINIFY: f32 = 1.37;
 
+#[path = "../tests/support/mod.rs"]
+mod support;
+
 /// The key of one textured unit with `min`/`mag` and mip filter `mip`.
 fn key(filter: Filter, mip: MipFilter) -> FragmentKey {
-    let unit = TexUnitKey {
-        sampler: SamplerKey {
-            target: TexTarget::D2,
-            format: TexelFormat::Rgba8,
-            min: filter,
-            mip,
-            mag: filter,
-            wrap: [Wrap::Repeat; 3],
-            compare: None,
-            depth_mode: DepthMode::Luminance,
-        },
-        base: BaseFormat::Rgba,
-        env: effective_combine(EnvMode::Modulate, BaseFormat::Rgba, CombineKey::DEFAULT),
-    };
-    let mut tex = [None; MAX_UNITS];
-    tex[0] = Some(unit);
-    FragmentKey {
-        shade: Some(ShadeKey {
-            color: true,
-            tex,
-            ..ShadeKey::default()
-        }),
-        ..FragmentKey::new(ColorFormat::Rgba8, None, false)
-    }
+    support::one_unit_key(filter, mip, filter, Wrap::Repeat, EnvMode::Modulate)
 }
 
 /// The texture's levels, 256² down to 1², with a seeded pattern.

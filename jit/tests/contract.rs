@@ -7,6 +7,8 @@
 //! values are drawn from small pools half the time, so that equal depths, equal
 //! stencil values, references and wrap-around edges actually occur.
 
+mod support;
+
 use proptest::prelude::*;
 use proptest::sample::select;
 use softgl_jit::interp;
@@ -885,30 +887,7 @@ fn textured_case(
 
 /// A one-unit 2D RGBA8 key with these filters and wrap, REPLACE.
 fn one_unit_key(min: Filter, mip: MipFilter, mag: Filter, wrap: Wrap) -> FragmentKey {
-    let unit = TexUnitKey {
-        sampler: SamplerKey {
-            target: TexTarget::D2,
-            format: TexelFormat::Rgba8,
-            min,
-            mip,
-            mag,
-            wrap: [wrap; 3],
-            compare: None,
-            depth_mode: DepthMode::Luminance,
-        },
-        base: BaseFormat::Rgba,
-        env: effective_combine(EnvMode::Replace, BaseFormat::Rgba, CombineKey::DEFAULT),
-    };
-    let mut tex = [None; MAX_UNITS];
-    tex[0] = Some(unit);
-    FragmentKey {
-        shade: Some(ShadeKey {
-            color: true,
-            tex,
-            ..ShadeKey::default()
-        }),
-        ..FragmentKey::new(ColorFormat::Rgba8, None, false)
-    }
+    support::one_unit_key(min, mip, mag, wrap, EnvMode::Replace)
 }
 
 /// Runs `key` over one full 16×2 span pair with `planes` and texture `levels`
