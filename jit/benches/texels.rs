@@ -9,7 +9,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use softgl_jit::shade::slot;
-use softgl_jit::texture::{EnvMode, Filter, Image, MipFilter, TextureRef, TextureSet, Wrap, MAX_UNITS};
+use softgl_jit::texture::{EnvMode, Filter, MipFilter, TextureSet, Wrap, MAX_UNITS};
 use softgl_jit::SPAN_MAX;
 use softgl_jit::{interp, ColorFormat, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target};
 use std::hint::black_box;
@@ -28,12 +28,12 @@ fn key(filter: Filter, mip: MipFilter) -> FragmentKey {
 }
 
 /// The texture's levels, 256² down to 1², with a seeded pattern.
-fn levels() -> Vec<(Vec<u8>, u32)> {
+fn levels() -> Vec<(u32, u32, Vec<u8>)> {
     let mut rng = softgl_jit::rng::Rng::new(0x7e11);
     (0..=TEX.trailing_zeros())
         .map(|l| {
             let s = TEX >> l;
-            ((0..s * s * 4).map(|_| rng.next_u64() as u8).collect(), s)
+            (s, s, (0..s * s * 4).map(|_| rng.next_u64() as u8).collect())
         })
         .collect()
 }
@@ -70,25 +70,9 @@ fn spans() -> Vec<FragmentSpan> {
 
 fn texels(c: &mut Criterion) {
     let levels = levels();
-    let images: Vec<Image<'_>> = levels
-        .iter()
-        .map(|(texels, s)| Image {
-            texels,
-            width: *s,
-            height: *s,
-            depth: 1,
-        })
-        .collect();
+    let images = support::images(&levels);
     let mut set = TextureSet::default();
-    set.units[0] = Some(TextureRef {
-        images: &images,
-        base_level: 0,
-        max_level: TEX.trailing_zeros(),
-        min_lod: -1000.0,
-        max_lod: 1000.0,
-        lod_bias: 0.0,
-        border: [0.0; 4],
-    });
+    set.units[0] = Some(support::whole_chain(&images));
     let planes = [planes()];
     let spans = spans();
     let u = FragmentUniforms::default();

@@ -894,25 +894,9 @@ fn one_unit_key(min: Filter, mip: MipFilter, mag: Filter, wrap: Wrap) -> Fragmen
 /// (square sides, RGBA8 bytes) on both back ends; the JIT's pixels, after
 /// checking they equal the interpreter's.
 fn run_one_unit(key: &FragmentKey, planes: Planes, levels: &[(u32, u32, Vec<u8>)]) -> Vec<u8> {
-    let images: Vec<Image<'_>> = levels
-        .iter()
-        .map(|(w, h, texels)| Image {
-            texels,
-            width: *w,
-            height: *h,
-            depth: 1,
-        })
-        .collect();
+    let images = support::images(levels);
     let mut set = TextureSet::default();
-    set.units[0] = Some(TextureRef {
-        images: &images,
-        base_level: 0,
-        max_level: levels.len() as u32 - 1,
-        min_lod: -1000.0,
-        max_lod: 1000.0,
-        lod_bias: 0.0,
-        border: [0.0; 4],
-    });
+    set.units[0] = Some(support::whole_chain(&images));
     let spans: Vec<FragmentSpan> = (0..2)
         .map(|y| {
             let mut s = FragmentSpan::new(0, y);

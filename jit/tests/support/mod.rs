@@ -2,8 +2,8 @@
 //! (`#[path]`-included by `jit/benches/texels.rs`).
 
 use softgl_jit::texture::{
-    effective_combine, BaseFormat, CombineKey, DepthMode, EnvMode, Filter, MipFilter, SamplerKey, TexTarget,
-    TexUnitKey, TexelFormat, Wrap, MAX_UNITS,
+    effective_combine, BaseFormat, CombineKey, DepthMode, EnvMode, Filter, Image, MipFilter, SamplerKey, TexTarget,
+    TexUnitKey, TexelFormat, TextureRef, Wrap, MAX_UNITS,
 };
 use softgl_jit::{ColorFormat, FragmentKey, ShadeKey};
 
@@ -33,5 +33,32 @@ pub fn one_unit_key(min: Filter, mip: MipFilter, mag: Filter, wrap: Wrap, mode: 
             ..ShadeKey::default()
         }),
         ..FragmentKey::new(ColorFormat::Rgba8, None, false)
+    }
+}
+
+/// The images of `levels` (width, height, RGBA8 texels), depth 1.
+pub fn images(levels: &[(u32, u32, Vec<u8>)]) -> Vec<Image<'_>> {
+    levels
+        .iter()
+        .map(|(width, height, texels)| Image {
+            texels,
+            width: *width,
+            height: *height,
+            depth: 1,
+        })
+        .collect()
+}
+
+/// A texture sampling every one of `images` as its chain from level 0, no
+/// LOD clamp or bias, black border.
+pub fn whole_chain<'a>(images: &'a [Image<'a>]) -> TextureRef<'a> {
+    TextureRef {
+        images,
+        base_level: 0,
+        max_level: images.len() as u32 - 1,
+        min_lod: -1000.0,
+        max_lod: 1000.0,
+        lod_bias: 0.0,
+        border: [0.0; 4],
     }
 }
