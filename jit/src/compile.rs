@@ -29,7 +29,11 @@ use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use std::mem::offset_of;
 
+mod sample;
 mod shade;
+mod texture;
+
+pub use sample::native_unit;
 
 const I32X4: Type = types::I32X4;
 
@@ -59,6 +63,8 @@ pub struct SpanCall {
     /// The span's row in llvmpipe's top-down frame, for the planes.
     pub row: f32,
     pub _pad2: u32,
+    /// The draw's textures (keys with texture units), or null.
+    pub tex: *const crate::callout::TexView<'static>,
 }
 
 /// The signature of a compiled specialist.
@@ -80,9 +86,26 @@ pub enum CompileError {
 /// 309 µs and 440 with it; the register allocator is most of what is left).
 /// The IR verifier runs only in debug builds (it adds 30-60%).
 pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
+    isa_with(false)
+}
+
+/// [`host_isa`] with Cranelift's single-pass register allocator, for keys
+/// with texture units: their functions are 3-10 times larger (per-lane
+/// texel gathers), and the backtracking allocator took 1.9-2.5 ms of CPU for
+/// one or two trilinear units under load where the single-pass one takes
+/// 0.7-0.9 ms (the untextured shaded key: 159 vs 79 µs in the same run;
+/// `jit/benches/texels.rs`, group `compile`, for quiet figures).
+pub fn textured_host_isa() -> Result<OwnedTargetIsa, CompileError> {
+    isa_with(true)
+}
+
+fn isa_with(single_pass: bool) -> Result<OwnedTargetIsa, CompileError> {
     let mut flags = settings::builder();
     let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
     set(&mut flags, "opt_level", "none")?;
+    if single_pass {
+        set(&mut flags, "regalloc_algorithm", "single_pass")?;
+    }
     set(
         &mut flags,
         "enable_verifier",
@@ -136,6 +159,8 @@ enum Factor {
 
 /// Per-span values loaded once in the entry block.
 struct SpanValues {
+    /// The `SpanCall` pointer.
+    call: Value,
     /// The uniforms pointer.
     u: Value,
     span: Value,
@@ -181,6 +206,10 @@ struct Gen<'a> {
     x86: bool,
     /// Splatted f32 constants of the current group, by their bits.
     fconsts: Vec<(u32, Value)>,
+    /// The stack slot of the texture callout's arguments, once made.
+    tex_slot: Option<cranelift_codegen::ir::StackSlot>,
+    /// The stack slot of the native sampler's per-lane gathers, once made.
+    lane_slot: Option<cranelift_codegen::ir::StackSlot>,
 }
 
 impl<'a> Gen<'a> {
@@ -193,6 +222,8 @@ impl<'a> Gen<'a> {
             inverses: Vec::new(),
             x86: false,
             fconsts: Vec::new(),
+            tex_slot: None,
+            lane_slot: None,
         }
     }
 
@@ -218,6 +249,7 @@ impl<'a> Gen<'a> {
             .ins()
             .load(types::I32, mem(), span, offset_of!(FragmentSpan, x) as i32);
         let sv = SpanValues {
+            call,
             u,
             span,
             color,

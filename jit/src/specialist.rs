@@ -1,5 +1,6 @@
 //! A compiled specialist and the one place softgl calls into generated code.
 
+use crate::callout::TexView;
 use crate::compile::{self, CompileError, SpanCall, SpanFn};
 use crate::interp::{check_key, check_planes, owned_mask, row_of, FragmentError};
 use crate::key::FragmentKey;
@@ -26,10 +27,17 @@ pub enum SpecialistError {
     Panic(String),
 }
 
-/// The host ISA, made once per process.
-fn isa() -> Result<&'static OwnedTargetIsa, SpecialistError> {
+/// The host ISA for `key`, made once per process ([`compile::host_isa`],
+/// or [`compile::textured_host_isa`] for keys with texture units).
+fn isa(key: &FragmentKey) -> Result<&'static OwnedTargetIsa, SpecialistError> {
     static ISA: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
-    ISA.get_or_init(|| compile::host_isa().map_err(|e| e.to_string()))
+    static TEXTURED: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
+    let (cell, make): (_, fn() -> Result<OwnedTargetIsa, CompileError>) = if key.shade.is_some_and(|s| s.textured()) {
+        (&TEXTURED, compile::textured_host_isa)
+    } else {
+        (&ISA, compile::host_isa)
+    };
+    cell.get_or_init(|| make().map_err(|e| e.to_string()))
         .as_ref()
         .map_err(|e| SpecialistError::Compile(CompileError::Isa(e.clone())))
 }
@@ -59,7 +67,7 @@ impl Specialist {
     /// Compiles `key`. A panic inside Cranelift is caught and returned as an error.
     pub fn compile(key: &FragmentKey) -> Result<Specialist, SpecialistError> {
         key.validate()?;
-        let isa = isa()?;
+        let isa = isa(key)?;
         catch_unwind(AssertUnwindSafe(|| Self::compile_with(key, isa))).unwrap_or_else(|p| {
             let msg = p
                 .downcast_ref::<&str>()
@@ -130,22 +138,34 @@ impl Specialist {
         planes: &[Planes],
         target: &mut Target<'_>,
     ) -> Result<(), FragmentError> {
-        if self.key.shade.is_some_and(|s| s.textured()) {
-            // Texturing is not compiled yet: the reference runs the key.
-            return crate::interp::run_with_planes(&self.key, uniforms, textures, spans, planes, target);
-        }
         check_key(&self.key, target)?;
         check_planes(&self.key, spans, planes)?;
+        let view = match self.key.shade.as_ref().filter(|s| s.textured()) {
+            Some(shade) => match TexView::new(&shade.tex, textures) {
+                Some(view) => Some(view),
+                // A natively sampled unit without a texture it can read.
+                None => return crate::interp::run_with_planes(&self.key, uniforms, textures, spans, planes, target),
+            },
+            None => None,
+        };
+        let tex = view
+            .as_ref()
+            .map_or(std::ptr::null(), |v| (v as *const TexView<'_>).cast());
         for span in spans {
             let p = planes
                 .get(span.planes as usize)
                 .map_or(std::ptr::null(), |p| p as *const Planes);
-            self.run_span(uniforms, (span, p), target);
+            self.run_span((uniforms, tex), (span, p), target);
         }
         Ok(())
     }
 
-    fn run_span(&self, u: &FragmentUniforms, (span, planes): (&FragmentSpan, *const Planes), t: &mut Target<'_>) {
+    fn run_span(
+        &self,
+        (u, tex): (&FragmentUniforms, *const TexView<'static>),
+        (span, planes): (&FragmentSpan, *const Planes),
+        t: &mut Target<'_>,
+    ) {
         let live = owned_mask(span, t.width(), t.height());
         if live == 0 {
             return;
@@ -169,6 +189,7 @@ impl Specialist {
             planes,
             row: row_of(span.y, t.height()),
             _pad2: 0,
+            tex,
         };
         let bpp = self.key.color_format.bytes_per_pixel();
         let color_at = t.color_offset(span.x, span.y);
@@ -237,7 +258,10 @@ impl Specialist {
         // through these references (and the planes, non-null whenever the key has a
         // shading stage: `check_planes`), and reads and writes `4 * call.groups` pixels
         // from each non-null buffer pointer (and no buffer the key does not use):
-        // `run_span` made each pointer from a slice of at least that many pixels.
+        // `run_span` made each pointer from a slice of at least that many pixels. Keys
+        // with texture units read `call.tex`, the `TexView` `run_with_planes` made for
+        // them and keeps alive across the call, and pass it to `callout::texture_group`
+        // with a stack slot of their own.
         unsafe { (self.func)(call, u) }
     }
 }

@@ -1,0 +1,64 @@
+//! Keys shared by the contract tests and the texel bench
+//! (`#[path]`-included by `jit/benches/texels.rs`).
+
+use softgl_jit::texture::{
+    effective_combine, BaseFormat, CombineKey, DepthMode, EnvMode, Filter, Image, MipFilter, SamplerKey, TexTarget,
+    TexUnitKey, TexelFormat, TextureRef, Wrap, MAX_UNITS,
+};
+use softgl_jit::{ColorFormat, FragmentKey, ShadeKey};
+
+/// A key with one 2D RGBA8 unit (RGBA base, environment `mode`) with these
+/// filters and wrap, shading an RGBA8 buffer's colour.
+pub fn one_unit_key(min: Filter, mip: MipFilter, mag: Filter, wrap: Wrap, mode: EnvMode) -> FragmentKey {
+    let unit = TexUnitKey {
+        sampler: SamplerKey {
+            target: TexTarget::D2,
+            format: TexelFormat::Rgba8,
+            min,
+            mip,
+            mag,
+            wrap: [wrap; 3],
+            compare: None,
+            depth_mode: DepthMode::Luminance,
+        },
+        base: BaseFormat::Rgba,
+        env: effective_combine(mode, BaseFormat::Rgba, CombineKey::DEFAULT),
+    };
+    let mut tex = [None; MAX_UNITS];
+    tex[0] = Some(unit);
+    FragmentKey {
+        shade: Some(ShadeKey {
+            color: true,
+            tex,
+            ..ShadeKey::default()
+        }),
+        ..FragmentKey::new(ColorFormat::Rgba8, None, false)
+    }
+}
+
+/// The images of `levels` (width, height, RGBA8 texels), depth 1.
+pub fn images(levels: &[(u32, u32, Vec<u8>)]) -> Vec<Image<'_>> {
+    levels
+        .iter()
+        .map(|(width, height, texels)| Image {
+            texels,
+            width: *width,
+            height: *height,
+            depth: 1,
+        })
+        .collect()
+}
+
+/// A texture sampling every one of `images` as its chain from level 0, no
+/// LOD clamp or bias, black border.
+pub fn whole_chain<'a>(images: &'a [Image<'a>]) -> TextureRef<'a> {
+    TextureRef {
+        images,
+        base_level: 0,
+        max_level: images.len() as u32 - 1,
+        min_lod: -1000.0,
+        max_lod: 1000.0,
+        lod_bias: 0.0,
+        border: [0.0; 4],
+    }
+}
