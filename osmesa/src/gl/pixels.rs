@@ -46,6 +46,98 @@ fn pixel_store(pname: GLenum, param: i32) {
     })
 }
 
+/// Where an image of client pixels lies in the caller's memory, as the pack
+/// or unpack state lays it out (GL 1.5 §3.6.4): bytes from one row to the
+/// next and from one image to the next, the first pixel's offset, and the
+/// bytes from the pointer to the end of the last pixel (all the caller's
+/// buffer must hold).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Layout {
+    pub row_stride: usize,
+    pub image_stride: usize,
+    pub start: usize,
+    pub len: usize,
+}
+
+impl Layout {
+    /// The layout of `size` (width, height, depth) pixels of `pixel_bytes`
+    /// bytes each, made of elements of `elem_bytes` (the alignment pads rows
+    /// only when an element is smaller than it; GL's `k`). An empty image
+    /// occupies nothing. `None` when the sizes overflow: no buffer holds them.
+    pub fn new(pixel_bytes: usize, elem_bytes: usize, size: [i32; 3], s: &PixelStore) -> Option<Layout> {
+        let [w, h, d] = size.map(|v| usize::try_from(v).unwrap_or(0));
+        let row_pixels = if s.row_length > 0 { s.row_length as usize } else { w };
+        let rows = if s.image_height > 0 { s.image_height as usize } else { h };
+        let align = s.alignment.max(1) as usize;
+        let row_bytes = row_pixels.checked_mul(pixel_bytes)?;
+        let row_stride = if elem_bytes >= align {
+            row_bytes
+        } else {
+            row_bytes.div_ceil(align).checked_mul(align)?
+        };
+        let image_stride = rows.checked_mul(row_stride)?;
+        let start = (s.skip_images.max(0) as usize)
+            .checked_mul(image_stride)?
+            .checked_add((s.skip_rows.max(0) as usize).checked_mul(row_stride)?)?
+            .checked_add((s.skip_pixels.max(0) as usize).checked_mul(pixel_bytes)?)?;
+        let len = if w == 0 || h == 0 || d == 0 {
+            0
+        } else {
+            image_stride
+                .checked_mul(d - 1)?
+                .checked_add(row_stride.checked_mul(h - 1)?)?
+                .checked_add(w.checked_mul(pixel_bytes)?)?
+                .checked_add(start)?
+        };
+        (len <= isize::MAX as usize).then_some(Layout {
+            row_stride,
+            image_stride,
+            start,
+            len,
+        })
+    }
+}
+
+/// Bytes of one pixel of `format` and `ty` in client memory, and of the
+/// element the alignment counts in (a component; the whole pixel for the
+/// packed types), checked in Mesa's order (`_mesa_error_check_format_and_type`):
+/// a packed type whose components are not the format's is
+/// `GL_INVALID_OPERATION`, whatever the format; any other unknown type or
+/// format `GL_INVALID_ENUM` (`GL_BITMAP` too: no texture or colour format takes it).
+pub(super) fn pixel_size(format: GLenum, ty: GLenum) -> GlResult<(usize, usize)> {
+    let packed = match ty {
+        0x8032 | 0x8362 => Some((1, [GL_RGB, GL_RGB])), // UNSIGNED_BYTE_3_3_2, _2_3_3_REV
+        0x8363 | 0x8364 => Some((2, [GL_RGB, GL_RGB])), // UNSIGNED_SHORT_5_6_5, _REV
+        // UNSIGNED_SHORT_4_4_4_4, _5_5_5_1, _4_4_4_4_REV, _1_5_5_5_REV
+        0x8033 | 0x8034 | 0x8365 | 0x8366 => Some((2, [GL_RGBA, GL_BGRA])),
+        // UNSIGNED_INT_8_8_8_8, _10_10_10_2, _8_8_8_8_REV, _2_10_10_10_REV
+        0x8035 | 0x8036 | 0x8367 | 0x8368 => Some((4, [GL_RGBA, GL_BGRA])),
+        _ => None,
+    };
+    if let Some((bytes, formats)) = packed {
+        return if formats.contains(&format) {
+            Ok((bytes, bytes))
+        } else {
+            Err(GlError::InvalidOperation)
+        };
+    }
+    let size = match ty {
+        GL_UNSIGNED_BYTE | GL_BYTE => 1,
+        GL_UNSIGNED_SHORT | GL_SHORT => 2,
+        GL_UNSIGNED_INT | GL_INT | GL_FLOAT => 4,
+        _ => return Err(GlError::InvalidEnum),
+    };
+    let comps = match format {
+        GL_RGBA | GL_BGRA => 4,
+        GL_RGB | GL_BGR => 3,
+        GL_LUMINANCE_ALPHA => 2,
+        GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE | GL_DEPTH_COMPONENT | GL_COLOR_INDEX
+        | GL_STENCIL_INDEX => 1,
+        _ => return Err(GlError::InvalidEnum),
+    };
+    Ok((comps * size, size))
+}
+
 /// What `glReadPixels` reads per pixel.
 #[derive(Clone, Copy)]
 enum Source {
@@ -207,27 +299,13 @@ unsafe fn read_pixels(
         Source::Color(c) => c.len(),
         Source::Depth | Source::Stencil => 1,
     };
-    let row_pixels = if pack.row_length > 0 { pack.row_length } else { w } as usize;
     let pixel_bytes = comps * size;
-    let align = pack.alignment as usize;
-    // Checked: a layout whose size overflows cannot fit any buffer.
-    let layout = || -> Option<(usize, usize, usize)> {
-        let row_bytes = row_pixels.checked_mul(pixel_bytes)?;
-        let stride = if size >= align {
-            row_bytes
-        } else {
-            row_bytes.div_ceil(align).checked_mul(align)?
-        };
-        let start = (pack.skip_rows as usize)
-            .checked_mul(stride)?
-            .checked_add((pack.skip_pixels as usize).checked_mul(pixel_bytes)?)?;
-        let len = stride
-            .checked_mul(h as usize - 1)?
-            .checked_add((w as usize).checked_mul(pixel_bytes)?)?
-            .checked_add(start)?;
-        (len <= isize::MAX as usize).then_some((stride, start, len))
-    };
-    let (stride, start, len) = layout().ok_or(GlError::InvalidValue)?;
+    let Layout {
+        row_stride: stride,
+        start,
+        len,
+        ..
+    } = Layout::new(pixel_bytes, size, [w, h, 1], pack).ok_or(GlError::InvalidValue)?;
     // SAFETY: GL's contract: `pixels` holds the image as the pack state lays it out,
     // which is exactly `len` bytes from `pixels`.
     let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
@@ -268,5 +346,76 @@ exports! {
             // SAFETY: GL's contract on `pixels`, passed on.
             unsafe { read_pixels(gl, &pack, (x, y, width, height), format, ty, pixels) }
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const STORE: PixelStore = PixelStore::DEFAULT;
+
+    #[test]
+    fn rows_pad_to_the_alignment_only_for_smaller_elements() {
+        // 3 RGB bytes x 5 = 15 bytes a row, padded to 16 (alignment 4).
+        let l = Layout::new(3, 1, [5, 2, 1], &STORE).unwrap();
+        assert_eq!((l.row_stride, l.start, l.len), (16, 0, 16 + 15));
+        // Floats are 4 bytes: alignment 4 adds nothing; alignment 8 does.
+        let l = Layout::new(12, 4, [5, 2, 1], &STORE).unwrap();
+        assert_eq!(l.row_stride, 60);
+        let eight = PixelStore { alignment: 8, ..STORE };
+        assert_eq!(Layout::new(12, 4, [5, 2, 1], &eight).unwrap().row_stride, 64);
+        // A packed 5-6-5 pixel is one 2-byte element: 3 pixels, 6 bytes, padded to 8.
+        assert_eq!(Layout::new(2, 2, [3, 1, 1], &STORE).unwrap().row_stride, 8);
+    }
+
+    #[test]
+    fn skips_row_length_and_image_height_move_the_end() {
+        let s = PixelStore {
+            row_length: 10,
+            skip_pixels: 2,
+            skip_rows: 3,
+            image_height: 6,
+            skip_images: 1,
+            alignment: 1,
+            ..STORE
+        };
+        let l = Layout::new(4, 1, [4, 5, 2], &s).unwrap();
+        assert_eq!((l.row_stride, l.image_stride), (40, 240));
+        assert_eq!(l.start, 240 + 3 * 40 + 2 * 4);
+        // Last pixel: image 1, row 4, pixel 3, from the start.
+        assert_eq!(l.len, l.start + 240 + 4 * 40 + 4 * 4);
+    }
+
+    #[test]
+    fn empty_and_overflowing_images() {
+        assert_eq!(Layout::new(4, 1, [0, 5, 1], &STORE).unwrap().len, 0);
+        assert_eq!(Layout::new(4, 1, [5, 5, 0], &STORE).unwrap().len, 0);
+        let huge = PixelStore {
+            row_length: i32::MAX,
+            image_height: i32::MAX,
+            ..STORE
+        };
+        assert_eq!(Layout::new(16, 4, [2, 2, i32::MAX], &huge), None);
+    }
+
+    #[test]
+    fn pixel_sizes_and_mesas_error_order() {
+        assert_eq!(pixel_size(GL_RGBA, GL_UNSIGNED_BYTE), Ok((4, 1)));
+        assert_eq!(pixel_size(GL_BGR, GL_SHORT), Ok((6, 2)));
+        assert_eq!(pixel_size(GL_LUMINANCE_ALPHA, GL_FLOAT), Ok((8, 4)));
+        assert_eq!(pixel_size(GL_RGB, GL_UNSIGNED_SHORT_5_6_5), Ok((2, 2)));
+        assert_eq!(pixel_size(GL_BGRA, 0x8367), Ok((4, 4)));
+        assert_eq!(pixel_size(GL_RGB, 0x8032), Ok((1, 1)));
+        // A packed type with the wrong components, even an unknown format.
+        assert_eq!(
+            pixel_size(GL_RGBA, GL_UNSIGNED_SHORT_5_6_5),
+            Err(GlError::InvalidOperation)
+        );
+        assert_eq!(pixel_size(0x1234, 0x8033), Err(GlError::InvalidOperation));
+        assert_eq!(pixel_size(GL_RGBA, 0x1A00), Err(GlError::InvalidEnum)); // GL_BITMAP
+        assert_eq!(pixel_size(GL_RGBA, GL_DOUBLE), Err(GlError::InvalidEnum));
+        assert_eq!(pixel_size(0x8049, GL_UNSIGNED_BYTE), Err(GlError::InvalidEnum));
+        // GL_INTENSITY
     }
 }
