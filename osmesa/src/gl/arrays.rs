@@ -261,7 +261,7 @@ exports! {
     /// # Safety
     /// `ptr` stays valid while drawing reads it (GL's contract).
     [unsafe] fn glTexCoordPointer(size: i32, ty: GLenum, stride: i32, ptr: *const c_void) {
-        pointer(|o| &mut o.tex_coord, &[1, 2, 3, 4], size, ty, &ALL_TYPES, stride, ptr)
+        pointer(|o| &mut o.tex_coords[o.client_active], &[1, 2, 3, 4], size, ty, &ALL_TYPES, stride, ptr)
     }
     /// # Safety
     /// `ptr` stays valid while drawing reads it (GL's contract).
@@ -349,7 +349,7 @@ exports! {
             };
             let color = read(&os.color, true).map(|v| pad(v, os.color.size));
             let normal = read(&os.normal, true);
-            let tex = read(&os.tex_coord, false).map(|v| pad(v, os.tex_coord.size));
+            let tex = read(os.tex_coord(), false).map(|v| pad(v, os.tex_coord().size));
             let edge_flag = read(&os.edge_flag, false).map(|v| v[0] != 0.0);
             let vertex = read(&os.vertex, false).map(|v| pad(v, os.vertex.size));
             let cmd: Cmd = std::sync::Arc::new(move |_: &mut GlState, gl: &mut Context| {
@@ -382,7 +382,7 @@ exports! {
                 GL_VERTEX_ARRAY_POINTER => os.vertex.ptr,
                 GL_COLOR_ARRAY_POINTER => os.color.ptr,
                 GL_NORMAL_ARRAY_POINTER => os.normal.ptr,
-                GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord.ptr,
+                GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord().ptr,
                 GL_EDGE_FLAG_ARRAY_POINTER => os.edge_flag.ptr,
                 0x845D => os.secondary.ptr, // GL_SECONDARY_COLOR_ARRAY_POINTER
                 0x8456 => os.fog_coord.ptr, // GL_FOG_COORD_ARRAY_POINTER
@@ -428,7 +428,8 @@ exports! {
                     at += bytes;
                 }
             };
-            set(&mut os.tex_coord, t, GL_FLOAT, t > 0, t as usize * f);
+            let unit = os.client_active;
+            set(&mut os.tex_coords[unit], t, GL_FLOAT, t > 0, t as usize * f);
             let (cs, ct) = c.unwrap_or((4, GL_FLOAT));
             set(&mut os.color, cs, ct, c.is_some(), c_bytes);
             set(&mut os.normal, 3, GL_FLOAT, n, 3 * f);

@@ -236,7 +236,7 @@ exports! {
                 (os.pack, os.unpack) = (s.pack, s.unpack);
             }
             if s.mask & CLIENT_VERTEX_ARRAY_BIT != 0 {
-                [os.vertex, os.color, os.normal, os.tex_coord, os.secondary, os.fog_coord, os.edge_flag] = s.arrays;
+                os.set_arrays(s.arrays);
             }
             Ok(())
         })

@@ -76,7 +76,7 @@ pub(super) fn is_enabled(os: &GlState, gl: &Context, cap: GLenum) -> GlResult<bo
         GL_VERTEX_ARRAY => os.vertex.enabled,
         GL_COLOR_ARRAY => os.color.enabled,
         GL_NORMAL_ARRAY => os.normal.enabled,
-        GL_TEXTURE_COORD_ARRAY => os.tex_coord.enabled,
+        GL_TEXTURE_COORD_ARRAY => os.tex_coord().enabled,
         super::fog::GL_SECONDARY_COLOR_ARRAY => os.secondary.enabled,
         super::fog::GL_FOG_COORD_ARRAY => os.fog_coord.enabled,
         GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY => false,
@@ -230,7 +230,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         GL_VERTEX_ARRAY => Val::B(vec![os.vertex.enabled]),
         GL_COLOR_ARRAY => Val::B(vec![os.color.enabled]),
         GL_NORMAL_ARRAY => Val::B(vec![os.normal.enabled]),
-        GL_TEXTURE_COORD_ARRAY => Val::B(vec![os.tex_coord.enabled]),
+        GL_TEXTURE_COORD_ARRAY => Val::B(vec![os.tex_coord().enabled]),
         0x807A => i(os.vertex.size), // VERTEX_ARRAY_SIZE
         0x807B => e(os.vertex.ty),
         0x807C => i(os.vertex.stride),
@@ -239,9 +239,9 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x8083 => i(os.color.stride),
         0x807E => e(os.normal.ty), // NORMAL_ARRAY_TYPE
         0x807F => i(os.normal.stride),
-        0x8088 => i(os.tex_coord.size), // TEXTURE_COORD_ARRAY_SIZE
-        0x8089 => e(os.tex_coord.ty),
-        0x808A => i(os.tex_coord.stride),
+        0x8088 => i(os.tex_coord().size), // TEXTURE_COORD_ARRAY_SIZE
+        0x8089 => e(os.tex_coord().ty),
+        0x808A => i(os.tex_coord().stride),
         GL_EDGE_FLAG_ARRAY => Val::B(vec![os.edge_flag.enabled]),
         0x808C => i(os.edge_flag.stride),               // EDGE_FLAG_ARRAY_STRIDE
         0x0B01 => f(gl.current().index),                // CURRENT_INDEX
