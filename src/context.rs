@@ -957,6 +957,7 @@ impl Context {
             color_sum: layout.secondary,
             fog: layout.fog.then_some(self.state.fog.mode),
             depth: key.depth.is_some() && key.depth_format != Some(DepthFormat::D32),
+            ..ShadeKey::default()
         });
         (key, layout)
     }
