@@ -36,31 +36,8 @@ impl ClientArray {
 // where the context is current, under GL's contract for client arrays.
 unsafe impl Send for ClientArray {}
 
-/// `glPixelStore` state for one direction (pack or unpack).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PixelStore {
-    pub swap_bytes: bool,
-    pub lsb_first: bool,
-    pub row_length: i32,
-    pub skip_rows: i32,
-    pub skip_pixels: i32,
-    pub alignment: i32,
-    pub image_height: i32,
-    pub skip_images: i32,
-}
-
-impl PixelStore {
-    pub const DEFAULT: PixelStore = PixelStore {
-        swap_bytes: false,
-        lsb_first: false,
-        row_length: 0,
-        skip_rows: 0,
-        skip_pixels: 0,
-        alignment: 4,
-        image_height: 0,
-        skip_images: 0,
-    };
-}
+/// `glPixelStore` state for one direction (pack or unpack): softgl's.
+pub use softgl::texture::PixelStore;
 
 /// `glHint` targets, in the order of [`GlState::hints`].
 pub const HINTS: [GLenum; 7] = [

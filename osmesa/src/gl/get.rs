@@ -130,7 +130,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     if let Some(h) = HINTS.iter().position(|&t| t == pname) {
         return Ok(e(os.hints[h]));
     }
-    if let Some(v) = super::fog::value(os, gl, pname) {
+    if let Some(v) = super::fog::value(os, gl, pname).or_else(|| super::texture::value(os, gl, pname)) {
         return Ok(v);
     }
     let b = s.blend_func;
@@ -170,10 +170,8 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D35 | 0x0D3B => i(super::attrib::MAX_DEPTH as i64),    // MAX_(CLIENT_)ATTRIB_STACK_DEPTH
         0x0BB0 => i(super::attrib::depths(os).0 as i64),          // ATTRIB_STACK_DEPTH
         0x0BB1 => i(super::attrib::depths(os).1 as i64),          // CLIENT_ATTRIB_STACK_DEPTH
-        // MAX_TEXTURE_SIZE: Mesa's llvmpipe limit; glTexImage is not in softgl yet.
-        0x0D33 => i(16384),
-        0x0D50 => i(8),             // SUBPIXEL_BITS
-        0x0D52 => i(color_bits(0)), // RED_BITS
+        0x0D50 => i(8),                                           // SUBPIXEL_BITS
+        0x0D52 => i(color_bits(0)),                               // RED_BITS
         0x0D53 => i(color_bits(1)),
         0x0D54 => i(color_bits(2)),
         0x0D55 => i(color_bits(3)),
@@ -230,7 +228,6 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         GL_VERTEX_ARRAY => Val::B(vec![os.vertex.enabled]),
         GL_COLOR_ARRAY => Val::B(vec![os.color.enabled]),
         GL_NORMAL_ARRAY => Val::B(vec![os.normal.enabled]),
-        GL_TEXTURE_COORD_ARRAY => Val::B(vec![os.tex_coord().enabled]),
         0x807A => i(os.vertex.size), // VERTEX_ARRAY_SIZE
         0x807B => e(os.vertex.ty),
         0x807C => i(os.vertex.stride),
@@ -239,9 +236,6 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x8083 => i(os.color.stride),
         0x807E => e(os.normal.ty), // NORMAL_ARRAY_TYPE
         0x807F => i(os.normal.stride),
-        0x8088 => i(os.tex_coord().size), // TEXTURE_COORD_ARRAY_SIZE
-        0x8089 => e(os.tex_coord().ty),
-        0x808A => i(os.tex_coord().stride),
         GL_EDGE_FLAG_ARRAY => Val::B(vec![os.edge_flag.enabled]),
         0x808C => i(os.edge_flag.stride),               // EDGE_FLAG_ARRAY_STRIDE
         0x0B01 => f(gl.current().index),                // CURRENT_INDEX

@@ -1,8 +1,11 @@
 //! `glPixelStore` and `glReadPixels`.
 
+use super::enums::decode;
 use super::now;
 use crate::consts::*;
 use crate::gl_state::PixelStore;
+use softgl::texture::unpack::ClientLayout;
+use softgl::texture::{PixelFormat, PixelType};
 use softgl::{Context, GlError, GlResult};
 use std::ffi::c_void;
 
@@ -44,58 +47,6 @@ fn pixel_store(pname: GLenum, param: i32) {
         }
         Ok(())
     })
-}
-
-/// Where an image of client pixels lies in the caller's memory, as the pack
-/// or unpack state lays it out (GL 1.5 §3.6.4): bytes from one row to the
-/// next and from one image to the next, the first pixel's offset, and the
-/// bytes from the pointer to the end of the last pixel (all the caller's
-/// buffer must hold).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) struct Layout {
-    pub row_stride: usize,
-    pub image_stride: usize,
-    pub start: usize,
-    pub len: usize,
-}
-
-impl Layout {
-    /// The layout of `size` (width, height, depth) pixels of `pixel_bytes`
-    /// bytes each, made of elements of `elem_bytes` (the alignment pads rows
-    /// only when an element is smaller than it; GL's `k`). An empty image
-    /// occupies nothing. `None` when the sizes overflow: no buffer holds them.
-    pub fn new(pixel_bytes: usize, elem_bytes: usize, size: [i32; 3], s: &PixelStore) -> Option<Layout> {
-        let [w, h, d] = size.map(|v| usize::try_from(v).unwrap_or(0));
-        let row_pixels = if s.row_length > 0 { s.row_length as usize } else { w };
-        let rows = if s.image_height > 0 { s.image_height as usize } else { h };
-        let align = s.alignment.max(1) as usize;
-        let row_bytes = row_pixels.checked_mul(pixel_bytes)?;
-        let row_stride = if elem_bytes >= align {
-            row_bytes
-        } else {
-            row_bytes.div_ceil(align).checked_mul(align)?
-        };
-        let image_stride = rows.checked_mul(row_stride)?;
-        let start = (s.skip_images.max(0) as usize)
-            .checked_mul(image_stride)?
-            .checked_add((s.skip_rows.max(0) as usize).checked_mul(row_stride)?)?
-            .checked_add((s.skip_pixels.max(0) as usize).checked_mul(pixel_bytes)?)?;
-        let len = if w == 0 || h == 0 || d == 0 {
-            0
-        } else {
-            image_stride
-                .checked_mul(d - 1)?
-                .checked_add(row_stride.checked_mul(h - 1)?)?
-                .checked_add(w.checked_mul(pixel_bytes)?)?
-                .checked_add(start)?
-        };
-        (len <= isize::MAX as usize).then_some(Layout {
-            row_stride,
-            image_stride,
-            start,
-            len,
-        })
-    }
 }
 
 /// Bytes of one pixel of `format` and `ty` in client memory, and of the
@@ -300,20 +251,24 @@ unsafe fn read_pixels(
         Source::Depth | Source::Stencil => 1,
     };
     let pixel_bytes = comps * size;
-    let Layout {
+    // The layout of a format with as many components (stencil: one).
+    let like = decode::<PixelFormat>(format).unwrap_or(PixelFormat::Red);
+    let like_ty = decode::<PixelType>(ty)?;
+    let (w, h) = (w as usize, h as usize);
+    let ClientLayout {
         row_stride: stride,
         start,
         len,
         ..
-    } = Layout::new(pixel_bytes, size, [w, h, 1], pack).ok_or(GlError::InvalidValue)?;
+    } = ClientLayout::new(like, like_ty, pack, 2, [w, h, 1]).ok_or(GlError::InvalidValue)?;
     // SAFETY: GL's contract: `pixels` holds the image as the pack state lays it out,
     // which is exactly `len` bytes from `pixels`.
     let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
     let stencil = matches!(src, Source::Stencil);
     let depth_bits = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
     let mut vals = Vec::with_capacity(4);
-    for j in 0..h as usize {
-        for i in 0..w as usize {
+    for j in 0..h {
+        for i in 0..w {
             if read_pixel(gl, src, i64::from(x) + i as i64, i64::from(y) + j as i64, &mut vals).is_none() {
                 continue;
             }
@@ -352,52 +307,6 @@ exports! {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    const STORE: PixelStore = PixelStore::DEFAULT;
-
-    #[test]
-    fn rows_pad_to_the_alignment_only_for_smaller_elements() {
-        // 3 RGB bytes x 5 = 15 bytes a row, padded to 16 (alignment 4).
-        let l = Layout::new(3, 1, [5, 2, 1], &STORE).unwrap();
-        assert_eq!((l.row_stride, l.start, l.len), (16, 0, 16 + 15));
-        // Floats are 4 bytes: alignment 4 adds nothing; alignment 8 does.
-        let l = Layout::new(12, 4, [5, 2, 1], &STORE).unwrap();
-        assert_eq!(l.row_stride, 60);
-        let eight = PixelStore { alignment: 8, ..STORE };
-        assert_eq!(Layout::new(12, 4, [5, 2, 1], &eight).unwrap().row_stride, 64);
-        // A packed 5-6-5 pixel is one 2-byte element: 3 pixels, 6 bytes, padded to 8.
-        assert_eq!(Layout::new(2, 2, [3, 1, 1], &STORE).unwrap().row_stride, 8);
-    }
-
-    #[test]
-    fn skips_row_length_and_image_height_move_the_end() {
-        let s = PixelStore {
-            row_length: 10,
-            skip_pixels: 2,
-            skip_rows: 3,
-            image_height: 6,
-            skip_images: 1,
-            alignment: 1,
-            ..STORE
-        };
-        let l = Layout::new(4, 1, [4, 5, 2], &s).unwrap();
-        assert_eq!((l.row_stride, l.image_stride), (40, 240));
-        assert_eq!(l.start, 240 + 3 * 40 + 2 * 4);
-        // Last pixel: image 1, row 4, pixel 3, from the start.
-        assert_eq!(l.len, l.start + 240 + 4 * 40 + 4 * 4);
-    }
-
-    #[test]
-    fn empty_and_overflowing_images() {
-        assert_eq!(Layout::new(4, 1, [0, 5, 1], &STORE).unwrap().len, 0);
-        assert_eq!(Layout::new(4, 1, [5, 5, 0], &STORE).unwrap().len, 0);
-        let huge = PixelStore {
-            row_length: i32::MAX,
-            image_height: i32::MAX,
-            ..STORE
-        };
-        assert_eq!(Layout::new(16, 4, [2, 2, i32::MAX], &huge), None);
-    }
 
     #[test]
     fn pixel_sizes_and_mesas_error_order() {
