@@ -6,6 +6,8 @@
 
 use crate::consts::*;
 use softgl::state::RasterState;
+use softgl::texture::unit::TexUnit;
+use softgl::texture::{TexParam, TextureTarget};
 use softgl::{Context, CurrentAttribs, MatrixMode};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -72,6 +74,21 @@ pub struct SavedAttrib {
     pub matrix_mode: MatrixMode,
     pub hints: [GLenum; 7],
     pub inert_caps: Vec<GLenum>,
+    /// For `GL_TEXTURE_BIT` and `GL_ENABLE_BIT`.
+    pub textures: Option<SavedTextures>,
+}
+
+/// The texture state `glPushAttrib` saved: every unit (enables,
+/// environment, coordinate generation), its bindings, the active unit and,
+/// for `GL_TEXTURE_BIT`, the parameters of every bound texture object.
+#[derive(Clone)]
+pub struct SavedTextures {
+    pub active: usize,
+    pub units: [TexUnit; MAX_UNITS],
+    /// Per unit, the name bound to each target of `gl::texture::TARGETS`.
+    pub bindings: [[u32; 4]; MAX_UNITS],
+    /// The bound objects (each once) with their parameters.
+    pub objects: Vec<(TextureTarget, u32, Vec<TexParam>)>,
 }
 
 /// The client arrays and the client active texture unit, as
@@ -196,5 +213,16 @@ impl GlState {
             0x8457 => &mut self.fog_coord, // GL_FOG_COORD_ARRAY
             _ => return None,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn as_many_units_as_softgl() {
+        let gl = Context::new(softgl::FramebufferDesc::rgba8_d24s8(1, 1)).unwrap();
+        assert_eq!(gl.tex_units().units.len(), MAX_UNITS);
     }
 }

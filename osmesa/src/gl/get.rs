@@ -130,7 +130,10 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     if let Some(h) = HINTS.iter().position(|&t| t == pname) {
         return Ok(e(os.hints[h]));
     }
-    if let Some(v) = super::fog::value(os, gl, pname).or_else(|| super::texture::value(os, gl, pname)) {
+    if let Some(v) = super::fog::value(os, gl, pname)
+        .or_else(|| super::texture::value(os, gl, pname))
+        .or_else(|| super::texunit::value(gl, pname))
+    {
         return Ok(v);
     }
     let b = s.blend_func;
@@ -144,13 +147,6 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0B91 => i(s.clear_stencil),                                            // STENCIL_CLEAR_VALUE
         0x0B00 => Val::N(gl.current().color.to_array().iter().map(|&c| f64::from(c)).collect()), // CURRENT_COLOR
         0x0B02 => Val::F(gl.current().normal.to_array().iter().map(|&c| f64::from(c)).collect()), // CURRENT_NORMAL
-        0x0B03 => Val::F(
-            gl.current().tex_coords[gl.active_texture_unit()]
-                .to_array()
-                .iter()
-                .map(|&c| f64::from(c))
-                .collect(),
-        ), // CURRENT_TEXTURE_COORDS
         0x0BA6 => matrix(gl, MatrixMode::Modelview),                             // MODELVIEW_MATRIX
         0x0BA7 => matrix(gl, MatrixMode::Projection),                            // PROJECTION_MATRIX
         0x0BA8 => matrix(gl, MatrixMode::Texture),                               // TEXTURE_MATRIX

@@ -3,8 +3,7 @@
 //! library) and records `GL_INVALID_OPERATION` when it runs: compiled into a
 //! display list like the command it stands for, or at once for the commands
 //! GL never compiles (queries, `glRenderMode`, client arrays). None reads
-//! or writes through its pointers, so none is `unsafe`. (The texture
-//! environment and coordinate generation stubs go with the texture units.)
+//! or writes through its pointers, so none is `unsafe`.
 //! The README lists them by group.
 
 use super::{missing, missing_now};
@@ -12,66 +11,6 @@ use crate::consts::*;
 use std::ffi::c_void;
 
 exports! {
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexEnvf(_target: GLenum, _pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexEnvfv(_target: GLenum, _pname: GLenum, _params: *const f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexEnvfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGenf(_coord: GLenum, _pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGenfv(_coord: GLenum, _pname: GLenum, _params: *const f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexGenfv(_coord: GLenum, _pname: GLenum, _params: *mut f32) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexEnvi(_target: GLenum, _pname: GLenum, _param: i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexEnviv(_target: GLenum, _pname: GLenum, _params: *const i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexEnviv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGeni(_coord: GLenum, _pname: GLenum, _param: i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGeniv(_coord: GLenum, _pname: GLenum, _params: *const i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexGeniv(_coord: GLenum, _pname: GLenum, _params: *mut i32) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGend(_coord: GLenum, _pname: GLenum, _param: f64) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGendv(_coord: GLenum, _pname: GLenum, _params: *const f64) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexGendv(_coord: GLenum, _pname: GLenum, _params: *mut f64) {
-        missing_now()
-    }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glPixelTransferf(_pname: GLenum, _param: f32) {
         missing()

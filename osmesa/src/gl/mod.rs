@@ -34,6 +34,7 @@ mod missing;
 mod pixels;
 mod state;
 mod texture;
+mod texunit;
 
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
@@ -47,6 +48,7 @@ pub use missing::*;
 pub use pixels::*;
 pub use state::*;
 pub use texture::*;
+pub use texunit::*;
 
 /// Every `gl*` export of this library: each module's `exports!` table.
 fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)> {
@@ -64,6 +66,8 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         pixels::table,
         state::table,
         texture::table,
+        texunit::table,
+        texunit::multi_table,
     ]
     .into_iter()
     .flat_map(|t| t())

@@ -9,7 +9,7 @@ use super::immediate::read;
 use super::texture::{color, floats, ints, values, write, Value};
 use super::{checked, now, outside};
 use crate::consts::*;
-use crate::gl_state::{GlState, MAX_UNITS};
+use crate::gl_state::MAX_UNITS;
 use softgl::texture::unit::{TexCoordName, TexEnvParam, TexEnvParamName, TexGenParam, TexGenParamName};
 use softgl::texture::{CombineFn, CombineSrc, EnvMode, Operand};
 use softgl::{Context, GlEnum, GlError, GlResult};
@@ -208,7 +208,15 @@ fn multi_tex_coord(target: GLenum, v: [f32; 4]) {
 
 /// `n` coordinates padded to (s, t, r, q) with GL's 0, 0, 1.
 fn pad<const N: usize>(c: [f32; N]) -> [f32; 4] {
-    std::array::from_fn(|k| if k < N { c[k] } else if k == 3 { 1.0 } else { 0.0 })
+    std::array::from_fn(|k| {
+        if k < N {
+            c[k]
+        } else if k == 3 {
+            1.0
+        } else {
+            0.0
+        }
+    })
 }
 
 /// `glMultiTexCoord{1,2,3,4}{s,i,f,d}[v][ARB]`.
