@@ -59,6 +59,9 @@ const GL_TEXTURE_MATRIX: u32 = 0x0BA8;
 const GL_TEXTURE: u32 = 0x1702;
 const GL_MODELVIEW: u32 = 0x1700;
 const GL_TEXTURE_BIT: u32 = 0x40000;
+const GL_TRANSFORM_BIT: u32 = 0x1000;
+const GL_TEXTURE_STACK_DEPTH: u32 = 0x0BA5;
+const GL_MATRIX_MODE: u32 = 0x0BA0;
 const GL_ENABLE_BIT: u32 = 0x2000;
 const GL_CLIENT_VERTEX_ARRAY_BIT: u32 = 0x2;
 const GL_RGBA8: i32 = 0x8058;
@@ -546,6 +549,17 @@ fn units_matrices_and_current_coordinates() {
     assert_eq!(floats4(GL_TEXTURE_MATRIX), [2.0, 0.0, 0.0, 0.0]);
     glActiveTexture(GL_TEXTURE0);
     assert_eq!(floats4(GL_TEXTURE_MATRIX), [1.0, 0.0, 0.0, 0.0]);
+    glPushMatrix();
+    assert_eq!(int(GL_TEXTURE_STACK_DEPTH), 2);
+    glActiveTexture(GL_TEXTURE0 + 7);
+    assert_eq!(int(GL_TEXTURE_STACK_DEPTH), 1, "a stack per unit");
+    glActiveTexture(GL_TEXTURE0);
+    glPopMatrix();
+    // GL_TRANSFORM_BIT keeps the matrix mode (not the matrices).
+    glPushAttrib(GL_TRANSFORM_BIT);
+    glMatrixMode(GL_MODELVIEW);
+    glPopAttrib();
+    assert_eq!(int(GL_MATRIX_MODE) as u32, GL_TEXTURE);
     glMultiTexCoord4d(GL_TEXTURE0 + 8, 1.0, 1.0, 1.0, 1.0);
     assert_eq!(glGetError(), GL_INVALID_ENUM);
     glActiveTexture(GL_TEXTURE0 + 8);

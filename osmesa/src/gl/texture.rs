@@ -167,26 +167,24 @@ fn tex_parameter(target_enum: GLenum, pname: GLenum, v: [f64; 4], ints: bool) {
 /// `p` is null or holds the values `pname` takes.
 unsafe fn tex_parameter_v<T: Copy + Into<f64>>(target: GLenum, pname: GLenum, p: *const T, ints: bool) {
     // SAFETY: passed on.
-    match unsafe { values(p, param_count(pname)) } {
-        Some(v) => tex_parameter(target, pname, v, ints),
-        None => checked(|_| Err(GlError::InvalidValue)),
-    }
+    unsafe { with_values(p, param_count(pname), |v| tex_parameter(target, pname, v, ints)) }
 }
 
-/// Reads up to 4 values through `p` into doubles; `None` for a null pointer.
+/// Reads up to 4 values through `p` into doubles and hands them to `f`; a
+/// null pointer is `GL_INVALID_VALUE` (recorded as `f`'s call would be).
 ///
 /// # Safety
 /// `p` is null or points to `n` readable values.
-pub(super) unsafe fn values<T: Copy + Into<f64>>(p: *const T, n: usize) -> Option<[f64; 4]> {
+pub(super) unsafe fn with_values<T: Copy + Into<f64>>(p: *const T, n: usize, f: impl FnOnce([f64; 4])) {
     if p.is_null() {
-        return None;
+        return checked(|_| Err(GlError::InvalidValue));
     }
     let mut v = [0.0; 4];
     for (k, out) in v.iter_mut().enumerate().take(n.min(4)) {
         // SAFETY: `n` readable values (the caller's contract).
         *out = unsafe { p.add(k).read_unaligned() }.into();
     }
-    Some(v)
+    f(v)
 }
 
 /// The values of a query, converted to the caller's type and written.

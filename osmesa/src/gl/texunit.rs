@@ -6,7 +6,7 @@
 use super::enums::decode;
 use super::get::Val;
 use super::immediate::read;
-use super::texture::{color, floats, ints, values, write, Value};
+use super::texture::{color, floats, ints, with_values, write, Value};
 use super::{checked, now, outside};
 use crate::consts::*;
 use crate::gl_state::MAX_UNITS;
@@ -122,10 +122,7 @@ fn tex_env(target: GLenum, pname: GLenum, v: [f64; 4], ints: bool) {
 /// `p` is null or holds the values `pname` takes.
 unsafe fn tex_env_v<T: Copy + Into<f64>>(target: GLenum, pname: GLenum, p: *const T, ints: bool) {
     // SAFETY: passed on.
-    match unsafe { values(p, env_count(pname)) } {
-        Some(v) => tex_env(target, pname, v, ints),
-        None => checked(|_| Err(GlError::InvalidValue)),
-    }
+    unsafe { with_values(p, env_count(pname), |v| tex_env(target, pname, v, ints)) }
 }
 
 fn get_tex_env<T: Copy>(target: GLenum, pname: GLenum, out: *mut T, conv: fn(Value) -> Vec<T>) {
@@ -177,10 +174,7 @@ fn tex_gen(c: GLenum, pname: GLenum, v: [f64; 4], vector: bool) {
 /// `p` is null or holds the values `pname` takes.
 unsafe fn tex_gen_v<T: Copy + Into<f64>>(c: GLenum, pname: GLenum, p: *const T) {
     // SAFETY: passed on.
-    match unsafe { values(p, gen_count(pname)) } {
-        Some(v) => tex_gen(c, pname, v, true),
-        None => checked(|_| Err(GlError::InvalidValue)),
-    }
+    unsafe { with_values(p, gen_count(pname), |v| tex_gen(c, pname, v, true)) }
 }
 
 fn get_tex_gen<T: Copy>(c: GLenum, pname: GLenum, out: *mut T, conv: fn(Value) -> Vec<T>) {
