@@ -241,6 +241,7 @@ fn uploads_honour_the_unpack_state_and_read_back() {
     let expect: Vec<u8> = [0, 3, 6, 12, 15, 18].iter().flat_map(|&o| rgba(&rgb[o..])).collect();
     assert_eq!(read_rgba(0), expect);
     assert_eq!(level_int(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT), GL_RGB as i32);
+    assert_eq!((level_int(GL_TEXTURE_2D, 0, 0x88F1), glGetError()), (0, GL_NO_ERROR)); // STENCIL_SIZE
 
     // A 2 x 2 sub-image read from a 5-pixel-wide buffer, 1 pixel in and 1 row
     // up, luminance bytes at alignment 1; the buffer ends at its last pixel.
