@@ -283,6 +283,7 @@ fn level_parameters_report_llvmpipe_sizes() {
     assert_eq!(q(&mut gl, TexLevelParamName::RedSize), 5);
     assert_eq!(q(&mut gl, TexLevelParamName::AlphaSize), 1);
     assert_eq!(q(&mut gl, TexLevelParamName::LuminanceSize), 0);
+    assert_eq!(q(&mut gl, TexLevelParamName::StencilSize), 0);
     // A missing level: zeros, internal format GL_RGBA.
     let q1 = |gl: &mut Context, n| gl.get_tex_level_parameter(TexImageTarget::D2, 1, n).unwrap();
     assert_eq!(q1(&mut gl, TexLevelParamName::Width), 0);

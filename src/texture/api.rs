@@ -565,7 +565,7 @@ impl Context {
                 TexLevelParamName::LuminanceSize => color(0, &[B::Luminance, B::LuminanceAlpha]),
                 TexLevelParamName::IntensitySize => color(0, &[B::Intensity]),
                 TexLevelParamName::DepthSize => color(0, &[B::Depth]),
-                TexLevelParamName::Compressed => 0,
+                TexLevelParamName::StencilSize | TexLevelParamName::Compressed => 0,
             })
         })
     }

@@ -235,6 +235,9 @@ pub enum TexLevelParamName {
     LuminanceSize,
     IntensitySize,
     DepthSize,
+    /// `GL_TEXTURE_STENCIL_SIZE` (GL 3.0; Mesa answers it in any context, piglit's
+    /// `sized-texture-format-channels` asks): 0, no texture has stencil.
+    StencilSize,
     Compressed,
 }
 
