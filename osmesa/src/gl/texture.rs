@@ -38,7 +38,6 @@ pub const MAX_3D_SIZE: i32 = MAX_3D_TEXTURE_SIZE as i32;
 
 const GL_COMPARE_R_TO_TEXTURE: GLenum = 0x884E;
 const GL_TEXTURE_COMPRESSED_IMAGE_SIZE: GLenum = 0x86A0;
-const GL_TEXTURE_STENCIL_SIZE: GLenum = 0x88F1;
 const GL_TEXTURE_BORDER_COLOR: GLenum = 0x1004;
 
 // ----- enumerants -----
@@ -244,14 +243,6 @@ fn get_level_parameter(target: GLenum, level: i32, pname: GLenum) -> GlResult<i3
                 // No compressed format exists in softgl: no image has a compressed size.
                 if pname == GL_TEXTURE_COMPRESSED_IMAGE_SIZE {
                     return Err(GlError::InvalidOperation);
-                }
-                // GL 3.0's stencil size, which Mesa answers in compatibility
-                // contexts (piglit's sized-texture-format-channels asks): no
-                // texture of softgl has stencil.
-                if pname == GL_TEXTURE_STENCIL_SIZE {
-                    return gl
-                        .get_tex_level_parameter(t, level, TexLevelParamName::Width)
-                        .map(|_| 0);
                 }
                 gl.get_tex_level_parameter(t, level, decode(pname)?)
             });
