@@ -1,16 +1,18 @@
-//! Texturing: texture objects, images and their parameters, the texture
-//! environment, coordinate generation, the active units and the
-//! multitexture coordinates (GL 1.0–1.4 and the `ARB`/`EXT` names programs
-//! and GLU look up).
+//! Texturing: texture objects, images and their parameters, the active
+//! unit and the `glGet` values of textures (GL 1.0–1.4 and the `ARB`/`EXT`
+//! names programs and GLU look up); the units' environment, coordinate
+//! generation and multitexture coordinates are in `texunit.rs`.
 //!
 //! The client's pixels are sized before they are read: `format`, `type` and
 //! the unpack state (alignment, row length, skips, image height) give the
-//! bytes from the pointer to the image's last pixel ([`Layout`]), and only
-//! those are handed to softgl as [`PixelData`]. Compiled into a display list,
-//! an upload copies them at once, with the unpack state of that moment (GL
-//! 1.5 §5.4); proxy uploads are never compiled. Errors are checked in Mesa's
-//! order where this layer sees them first (target, level, border, sizes,
-//! format and type, internal format), the rest by softgl.
+//! bytes from the pointer to the image's last pixel (softgl's
+//! [`ClientLayout`]), and only those are handed to softgl as [`PixelData`].
+//! Compiled into a display list, an upload copies them at once, with the
+//! unpack state of that moment (GL 1.5 §5.4); proxy uploads are never
+//! compiled. Errors are checked in Mesa's order where this layer sees them
+//! first (target, level, border, sizes, format and type, internal format),
+//! the rest by softgl. Index formats are refused (`GL_INVALID_OPERATION`)
+//! where Mesa converts them through its (default, all-zero) pixel maps.
 
 use super::enums::decode;
 use super::get::Val;
