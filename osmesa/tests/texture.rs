@@ -293,6 +293,40 @@ fn uploads_honour_the_unpack_state_and_read_back() {
     };
     assert_eq!((glGetError(), read_rgba(0)), (GL_NO_ERROR, vec![255, 0, 0, 255]));
 
+    // Colour indices pass GL's default pixel maps (one entry, 0): all zero,
+    // as in Mesa; stencil indices are no texture's.
+    let idx = [3u8, 200, 0, 0, 7, 9, 0, 0];
+    // SAFETY: 2 x 2 index bytes, rows padded to 4 bytes (alignment 4).
+    unsafe {
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA8,
+            2,
+            2,
+            0,
+            GL_COLOR_INDEX,
+            GL_UNSIGNED_BYTE,
+            idx.as_ptr().cast(),
+        )
+    };
+    assert_eq!((glGetError(), read_rgba(0)), (GL_NO_ERROR, vec![0; 16]));
+    // SAFETY: as above.
+    unsafe {
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA8,
+            2,
+            2,
+            0,
+            GL_STENCIL_INDEX,
+            GL_UNSIGNED_BYTE,
+            idx.as_ptr().cast(),
+        )
+    };
+    assert_eq!(glGetError(), GL_INVALID_OPERATION);
+
     // glGetTexImage with the pack state: BGRA floats, 2 pixels in of a 3-pixel row.
     upload_rgba(2, 2, &QUADRANTS);
     glPixelStorei(GL_PACK_ROW_LENGTH, 3);

@@ -11,8 +11,8 @@
 //! unpack state of that moment (GL 1.5 §5.4); proxy uploads are never
 //! compiled. Errors are checked in Mesa's order where this layer sees them
 //! first (target, level, border, sizes, format and type, internal format),
-//! the rest by softgl. Index formats are refused (`GL_INVALID_OPERATION`)
-//! where Mesa converts them through its (default, all-zero) pixel maps.
+//! the rest by softgl. Colour indices become (0, 0, 0, 0) through GL's
+//! default pixel maps, as in Mesa.
 
 use super::enums::decode;
 use super::get::Val;
@@ -264,15 +264,31 @@ struct Client {
     ty: PixelType,
     /// Bytes from the pointer to the end of the image's last pixel.
     len: usize,
+    /// Colour indices (`GL_COLOR_INDEX`), which GL's default pixel maps
+    /// (`glPixelMap` is not in softgl) turn into (0, 0, 0, 0): `format` and
+    /// `ty` then describe the zeros handed to softgl, and nothing is read.
+    index: bool,
 }
 
 /// Checks `format` and `ty` and sizes the `dims`-dimensional image `size`
-/// under `store`. Index formats exist for `glDrawPixels` but no texture
-/// takes them: `GL_INVALID_OPERATION`, as Mesa's "incompatible format" check.
+/// under `store`. Stencil indices are no texture's: `GL_INVALID_OPERATION`
+/// (Mesa's "incompatible format"); colour indices are read as zeros.
 fn client(format: GLenum, ty: GLenum, dims: u32, size: [i32; 3], store: &PixelStore) -> GlResult<Client> {
-    pixel_size(format, ty)?;
-    if matches!(format, GL_COLOR_INDEX | GL_STENCIL_INDEX) {
-        return Err(GlError::InvalidOperation);
+    const GL_BITMAP: GLenum = 0x1A00;
+    if !(format == GL_COLOR_INDEX && ty == GL_BITMAP) {
+        pixel_size(format, ty)?;
+    }
+    match format {
+        GL_STENCIL_INDEX => return Err(GlError::InvalidOperation),
+        GL_COLOR_INDEX => {
+            return Ok(Client {
+                format: PixelFormat::Rgba,
+                ty: PixelType::UnsignedByte,
+                len: 0,
+                index: true,
+            })
+        }
+        _ => {}
     }
     let (format, ty) = (decode::<PixelFormat>(format)?, decode::<PixelType>(ty)?);
     let size = size.map(|s| usize::try_from(s).unwrap_or(0));
@@ -281,7 +297,17 @@ fn client(format: GLenum, ty: GLenum, dims: u32, size: [i32; 3], store: &PixelSt
         format,
         ty,
         len: layout.len,
+        index: false,
     })
+}
+
+/// The RGBA bytes colour indices become (all 0) for an image of `size`,
+/// tight under the default unpack state; `None` past the largest image
+/// softgl keeps (the upload then fails on its size).
+fn index_zeros(size: [i32; 3]) -> Option<Vec<u8>> {
+    let n: usize = size.iter().map(|&s| usize::try_from(s).unwrap_or(0)).product();
+    let max = (MAX_SIZE as usize).pow(2);
+    (n <= max).then(|| vec![0; n * 4])
 }
 
 /// The checks Mesa makes before the format and type (`texture_error_check`):
@@ -315,6 +341,16 @@ unsafe fn upload(
         let store = os.unpack;
         let checked = pre.and_then(|()| client(format, ty, dims, size, &store));
         let run = move |gl: &mut Context, c: Client, bytes: Option<&[u8]>| {
+            let zeros = if c.index && bytes.is_some() {
+                index_zeros(size)
+            } else {
+                None
+            };
+            let (bytes, store) = match &zeros {
+                Some(z) => (Some(&z[..]), PixelStore::DEFAULT),
+                None if c.index => (None, store),
+                None => (bytes, store),
+            };
             let data = bytes.map(|bytes| PixelData {
                 format: c.format,
                 ty: c.ty,
@@ -452,6 +488,10 @@ unsafe fn get_tex_image(target: GLenum, level: i32, format: GLenum, ty: GLenum, 
         .map(|n| gl.get_tex_level_parameter(t, level, n).unwrap_or(0));
         let pack = os.pack;
         let c = client(format, ty, t.dims(), size, &pack)?;
+        if c.index {
+            // Indices are written only by an index texture, which softgl has not.
+            return Err(GlError::InvalidOperation);
+        }
         if pixels.is_null() {
             // Nothing to write into (Mesa: not an error without a buffer object).
             return Ok(());

@@ -120,6 +120,13 @@ static void errors(void) {
   printf("internal format 5: 0x%x\n", glGetError());
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, px);
   printf("rgba from depth: 0x%x\n", glGetError());
+  /* Colour indices through the default pixel maps (one entry, 0). */
+  unsigned char idx[8] = {3, 200, 0, 0, 7, 9, 0, 0}, back[16];
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 2, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, idx);
+  memset(back, 0x77, sizeof back);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
+  printf("rgba from index: 0x%x texel %d %d %d %d, %d\n", glGetError(), back[0], back[1], back[2], back[3], back[15]);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 60, 0, 8, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
   printf("subimage outside: 0x%x\n", glGetError());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_REPEAT);
