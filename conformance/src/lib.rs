@@ -21,3 +21,4 @@ pub mod piglit;
 pub mod report;
 pub mod run;
 pub mod scenes;
+pub mod texnames;

@@ -62,7 +62,7 @@ pub fn scenes() -> Vec<Scene> {
 
 /// A perspective view (near 2, far 30) looking down -z, depth test on,
 /// lighting on with GL's default light model.
-fn lit_view(r: &mut Rec) {
+pub(super) fn lit_view(r: &mut Rec) {
     r.matrix_mode(MatrixMode::Projection)
         .load_identity()
         .frustum(-1.0, 1.0, -1.0, 1.0, 2.0, 30.0)
@@ -75,6 +75,19 @@ fn lit_view(r: &mut Rec) {
 /// GLU's `gluSphere` (`GLU_SMOOTH` normals, quad strips from the south
 /// pole up) centred at `c`, its normals scaled by `normal_scale`.
 fn sphere(r: &mut Rec, c: [f32; 3], radius: f32, (slices, stacks): (u32, u32), normal_scale: f32) {
+    sphere_with(r, c, radius, (slices, stacks), normal_scale, false);
+}
+
+/// [`sphere`], with GLU's texture coordinates (`gluQuadricTexture`: s =
+/// slice / slices, t = stack / stacks) when `tex`.
+pub(super) fn sphere_with(
+    r: &mut Rec,
+    c: [f32; 3],
+    radius: f32,
+    (slices, stacks): (u32, u32),
+    normal_scale: f32,
+    tex: bool,
+) {
     use std::f32::consts::PI;
     let point = |i: u32, j: u32| {
         let (theta, phi) = (2.0 * PI * i as f32 / slices as f32, PI * j as f32 / stacks as f32);
@@ -86,6 +99,9 @@ fn sphere(r: &mut Rec, c: [f32; 3], radius: f32, (slices, stacks): (u32, u32), n
         for i in 0..=slices {
             for jj in [j, j + 1] {
                 let n = point(i % slices, jj);
+                if tex {
+                    r.tex_coord(i as f32 / slices as f32, jj as f32 / stacks as f32);
+                }
                 r.normal(n[0] * normal_scale, n[1] * normal_scale, n[2] * normal_scale);
                 r.vertex(c[0] + radius * n[0], c[1] + radius * n[1], c[2] + radius * n[2]);
             }
@@ -95,7 +111,7 @@ fn sphere(r: &mut Rec, c: [f32; 3], radius: f32, (slices, stacks): (u32, u32), n
 }
 
 /// A white material with a tinted specular and `shininess`.
-fn material(r: &mut Rec, diffuse: [f32; 4], shininess: f32) {
+pub(super) fn material(r: &mut Rec, diffuse: [f32; 4], shininess: f32) {
     r.material(Face::FrontAndBack, MaterialParam::Ambient([0.2, 0.2, 0.25, 1.0]))
         .material(Face::FrontAndBack, MaterialParam::Diffuse(diffuse))
         .material(Face::FrontAndBack, MaterialParam::Specular([0.9, 0.9, 0.7, 1.0]))
@@ -103,7 +119,7 @@ fn material(r: &mut Rec, diffuse: [f32; 4], shininess: f32) {
 }
 
 /// Light `i` on: directional from `dir` (w = 0) or positional, white.
-fn light(r: &mut Rec, i: u8, position: [f32; 4], diffuse: [f32; 4]) {
+pub(super) fn light(r: &mut Rec, i: u8, position: [f32; 4], diffuse: [f32; 4]) {
     r.enable(Capability::Light(i))
         .light(u32::from(i), LightParam::Position(position))
         .light(u32::from(i), LightParam::Diffuse(diffuse))

@@ -5,11 +5,13 @@
 
 mod combos;
 mod fog;
+pub mod glu;
 mod lighting;
 pub mod oracle;
 mod primitives;
 mod stages;
 mod stiff;
+mod texture;
 mod timing;
 
 use crate::call::Rec;
@@ -92,11 +94,13 @@ pub enum Group {
     Fog,
     /// Lighting, materials and user clip planes (issue 11).
     Lighting,
+    /// Texturing (issue 12).
+    Texture,
 }
 
 impl Group {
     /// Every group, in the report's order.
-    pub const ALL: [Group; 7] = [
+    pub const ALL: [Group; 8] = [
         Group::Stage,
         Group::Combination,
         Group::Primitive,
@@ -104,6 +108,7 @@ impl Group {
         Group::Timing,
         Group::Fog,
         Group::Lighting,
+        Group::Texture,
     ];
 
     pub fn name(self) -> &'static str {
@@ -115,6 +120,7 @@ impl Group {
             Group::Timing => "timing",
             Group::Fog => "fog and colour sum",
             Group::Lighting => "lighting and clip planes",
+            Group::Texture => "texturing",
         }
     }
 }
@@ -298,6 +304,7 @@ pub fn all() -> Vec<Scene> {
     v.extend(stiff::scenes());
     v.extend(fog::scenes());
     v.extend(lighting::scenes());
+    v.extend(texture::scenes());
     v.extend(timing::scenes());
     v
 }

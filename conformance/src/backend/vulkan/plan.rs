@@ -447,6 +447,20 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
             | Call::Material(..)
             | Call::ColorMaterial(..)
             | Call::ClipPlane(..) => {}
+            Call::TexEnable(crate::texnames::TexCapability::Texture(t), true) => {
+                return Err(format!(
+                    "texturing ({t:?}): this back end's pipelines have no samplers and no texture environment"
+                ));
+            }
+            // Without a texture enabled (refused above) these change no pixel.
+            Call::TexEnable(..)
+            | Call::ActiveTexture(_)
+            | Call::BindTexture(..)
+            | Call::TexImage { .. }
+            | Call::TexParameter(..)
+            | Call::TexEnv(_)
+            | Call::TexGen(..)
+            | Call::TexCoord(..) => {}
             Call::Vertex(v) => {
                 let color = st.color;
                 st.batch.push((*v, color));
