@@ -45,3 +45,90 @@ fn an_unwritable_path_is_reported() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("cannot write /nonexistent-dir/x/demo.png"), "{err}");
 }
+
+/// A scratch directory of this test process.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("softgl-cli-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// `softgl render` on `obj` in `dir`; its exit status and stderr.
+fn render_err(dir: &std::path::Path, obj: &str) -> (bool, String) {
+    let out = softgl(&[
+        "render",
+        dir.join(obj).to_str().unwrap(),
+        "-o",
+        dir.join("out.png").to_str().unwrap(),
+        "--size",
+        "16x16",
+    ]);
+    (out.status.success(), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+#[test]
+fn render_reports_missing_and_malformed_files_by_name() {
+    let dir = scratch("render-errors");
+    let write = |name: &str, text: &[u8]| std::fs::write(dir.join(name), text).unwrap();
+    let (ok, err) = render_err(&dir, "absent.obj");
+    assert!(!ok);
+    assert!(err.contains("cannot read") && err.contains("absent.obj"), "{err}");
+
+    write("bad_vertex.obj", b"v 1.0 zero 2.0\nf 1 1 1\n");
+    let (ok, err) = render_err(&dir, "bad_vertex.obj");
+    assert!(!ok);
+    assert!(
+        err.contains("bad_vertex.obj is not a valid OBJ file: position parse error"),
+        "{err}"
+    );
+
+    write("bad_face.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    let (ok, err) = render_err(&dir, "bad_face.obj");
+    assert!(!ok);
+    assert!(err.contains("face vertex index out of bounds"), "{err}");
+
+    write(
+        "no_mtl.obj",
+        b"mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n",
+    );
+    let (ok, err) = render_err(&dir, "no_mtl.obj");
+    assert!(!ok);
+    assert!(
+        err.contains("cannot load the material library") && err.contains("gone.mtl"),
+        "{err}"
+    );
+
+    write("no_tex.mtl", b"newmtl m\nKd 1 1 1\nmap_Kd gone.png\n");
+    write(
+        "no_tex.obj",
+        b"mtllib no_tex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n",
+    );
+    let (ok, err) = render_err(&dir, "no_tex.obj");
+    assert!(!ok);
+    assert!(
+        err.contains("cannot load the texture") && err.contains("gone.png"),
+        "{err}"
+    );
+
+    write("bad.png", b"not a png at all");
+    write("bad_tex.mtl", b"newmtl m\nmap_Kd bad.png\n");
+    write(
+        "bad_tex.obj",
+        b"mtllib bad_tex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n",
+    );
+    let (ok, err) = render_err(&dir, "bad_tex.obj");
+    assert!(!ok);
+    assert!(
+        err.contains("cannot load the texture") && err.contains("bad.png"),
+        "{err}"
+    );
+
+    write("empty.obj", b"# nothing\nv 0 0 0\n");
+    let (ok, err) = render_err(&dir, "empty.obj");
+    assert!(!ok);
+    assert!(err.contains("empty.obj has no triangles to draw"), "{err}");
+
+    assert!(!err.contains("panicked"));
+    assert!(!dir.join("out.png").exists(), "no image is written on an error");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -106,7 +106,11 @@ fn checker(w: usize, h: usize, cell: usize, c0: [u8; 4], c1: [u8; 4]) -> Vec<u8>
     let mut v = Vec::with_capacity(w * h * 4);
     for y in 0..h {
         for x in 0..w {
-            v.extend_from_slice(if (x / cell + y / cell).is_multiple_of(2) { &c0 } else { &c1 });
+            v.extend_from_slice(if (x / cell + y / cell).is_multiple_of(2) {
+                &c0
+            } else {
+                &c1
+            });
         }
     }
     v
