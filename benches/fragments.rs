@@ -12,6 +12,7 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
 use softgl_jit::shade::slot;
+use softgl_jit::TextureSet;
 use softgl_jit::{
     BlendFactor, BlendKey, ColorFormat, CompareFunc, DepthFormat, DepthKey, DepthTarget, FogMode, FogUniforms,
     FragmentKey, FragmentSpan, FragmentUniforms, LogicOp, Planes, ShadeKey, Specialist, StencilKey, StencilOp, Target,
@@ -60,7 +61,8 @@ impl Backend for Interpreter {
         (spans, planes): (&[FragmentSpan], &[Planes]),
         target: &mut Target<'_>,
     ) {
-        softgl_jit::interp::run_with_planes(key, u, spans, planes, target).expect("scene keys match their buffers");
+        softgl_jit::interp::run_with_planes(key, u, &TextureSet::default(), spans, planes, target)
+            .expect("scene keys match their buffers");
     }
 }
 
@@ -82,7 +84,7 @@ impl Backend for Jit {
         (spans, planes): (&[FragmentSpan], &[Planes]),
         target: &mut Target<'_>,
     ) {
-        s.run_with_planes(u, spans, planes, target)
+        s.run_with_planes(u, &TextureSet::default(), spans, planes, target)
             .expect("scene keys match their buffers");
     }
 }

@@ -253,6 +253,8 @@ pub struct Context {
     specialists: SpecialistCache,
     /// Whether `GL_DITHER` dithers (see [`Context::set_ordered_dither`]).
     ordered_dither: bool,
+    /// Texture objects, their bindings per unit, the active unit (`texture/`).
+    pub(crate) textures: crate::texture::TextureStore,
 }
 
 impl Context {
@@ -286,6 +288,7 @@ impl Context {
             backend: Backend::from_env(),
             specialists: SpecialistCache::from_env(),
             ordered_dither: std::env::var("SOFTGL_DITHER").is_ok_and(|v| v.trim() == "1"),
+            textures: crate::texture::TextureStore::new(),
         }
     }
 
@@ -957,6 +960,7 @@ impl Context {
             color_sum: layout.secondary,
             fog: layout.fog.then_some(self.state.fog.mode),
             depth: key.depth.is_some() && key.depth_format != Some(DepthFormat::D32),
+            ..ShadeKey::default()
         });
         (key, layout)
     }

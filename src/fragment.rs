@@ -2,7 +2,9 @@
 //! to the back end for the draw's key.
 
 use crate::raster::SpanSink;
-use softgl_jit::{interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target};
+use softgl_jit::{
+    interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target, TextureSet,
+};
 
 /// Spans handed to the back end at once.
 const BATCH: usize = 32;
@@ -82,9 +84,17 @@ impl<'t> FragmentStage<'t> {
             return;
         }
         let spans = &self.batch[..self.count];
+        let textures = TextureSet::default();
         let r = match self.specialist {
-            Some(s) => s.run_with_planes(&self.uniforms, spans, &self.planes, &mut self.target),
-            None => interp::run_with_planes(&self.key, &self.uniforms, spans, &self.planes, &mut self.target),
+            Some(s) => s.run_with_planes(&self.uniforms, &textures, spans, &self.planes, &mut self.target),
+            None => interp::run_with_planes(
+                &self.key,
+                &self.uniforms,
+                &textures,
+                spans,
+                &self.planes,
+                &mut self.target,
+            ),
         };
         if let Err(e) = r {
             self.error.get_or_insert(e);

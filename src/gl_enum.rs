@@ -228,6 +228,166 @@ gl_enums! {
     }
 }
 
+// Textures (`texture/`).
+use crate::texture::{
+    DepthMode, Filter, InternalFormat, PixelFormat, PixelType, TexLevelParamName, TexParamName, TextureTarget, Wrap,
+};
+
+gl_enums! {
+    TextureTarget {
+        D1 = GL_TEXTURE_1D 0x0DE0,
+        D2 = GL_TEXTURE_2D 0x0DE1,
+        D3 = GL_TEXTURE_3D 0x806F,
+        Cube = GL_TEXTURE_CUBE_MAP 0x8513,
+    }
+    Filter {
+        Nearest = GL_NEAREST 0x2600,
+        Linear = GL_LINEAR 0x2601,
+    }
+    Wrap {
+        Clamp = GL_CLAMP 0x2900,
+        Repeat = GL_REPEAT 0x2901,
+        ClampToBorder = GL_CLAMP_TO_BORDER 0x812D,
+        ClampToEdge = GL_CLAMP_TO_EDGE 0x812F,
+        MirroredRepeat = GL_MIRRORED_REPEAT 0x8370,
+    }
+    DepthMode {
+        Alpha = GL_ALPHA 0x1906,
+        Luminance = GL_LUMINANCE 0x1909,
+        Intensity = GL_INTENSITY 0x8049,
+    }
+    PixelFormat {
+        DepthComponent = GL_DEPTH_COMPONENT 0x1902,
+        Red = GL_RED 0x1903,
+        Green = GL_GREEN 0x1904,
+        Blue = GL_BLUE 0x1905,
+        Alpha = GL_ALPHA 0x1906,
+        Rgb = GL_RGB 0x1907,
+        Rgba = GL_RGBA 0x1908,
+        Luminance = GL_LUMINANCE 0x1909,
+        LuminanceAlpha = GL_LUMINANCE_ALPHA 0x190A,
+        Bgr = GL_BGR 0x80E0,
+        Bgra = GL_BGRA 0x80E1,
+    }
+    PixelType {
+        Byte = GL_BYTE 0x1400,
+        UnsignedByte = GL_UNSIGNED_BYTE 0x1401,
+        Short = GL_SHORT 0x1402,
+        UnsignedShort = GL_UNSIGNED_SHORT 0x1403,
+        Int = GL_INT 0x1404,
+        UnsignedInt = GL_UNSIGNED_INT 0x1405,
+        Float = GL_FLOAT 0x1406,
+        UnsignedByte332 = GL_UNSIGNED_BYTE_3_3_2 0x8032,
+        UnsignedShort4444 = GL_UNSIGNED_SHORT_4_4_4_4 0x8033,
+        UnsignedShort5551 = GL_UNSIGNED_SHORT_5_5_5_1 0x8034,
+        UnsignedInt8888 = GL_UNSIGNED_INT_8_8_8_8 0x8035,
+        UnsignedInt1010102 = GL_UNSIGNED_INT_10_10_10_2 0x8036,
+        UnsignedByte233Rev = GL_UNSIGNED_BYTE_2_3_3_REV 0x8362,
+        UnsignedShort565 = GL_UNSIGNED_SHORT_5_6_5 0x8363,
+        UnsignedShort565Rev = GL_UNSIGNED_SHORT_5_6_5_REV 0x8364,
+        UnsignedShort4444Rev = GL_UNSIGNED_SHORT_4_4_4_4_REV 0x8365,
+        UnsignedShort1555Rev = GL_UNSIGNED_SHORT_1_5_5_5_REV 0x8366,
+        UnsignedInt8888Rev = GL_UNSIGNED_INT_8_8_8_8_REV 0x8367,
+        UnsignedInt2101010Rev = GL_UNSIGNED_INT_2_10_10_10_REV 0x8368,
+    }
+    InternalFormat {
+        One = GL_1 0x0001,
+        Two = GL_2 0x0002,
+        Three = GL_3 0x0003,
+        Four = GL_4 0x0004,
+        DepthComponent = GL_DEPTH_COMPONENT 0x1902,
+        Alpha = GL_ALPHA 0x1906,
+        Rgb = GL_RGB 0x1907,
+        Rgba = GL_RGBA 0x1908,
+        Luminance = GL_LUMINANCE 0x1909,
+        LuminanceAlpha = GL_LUMINANCE_ALPHA 0x190A,
+        R3G3B2 = GL_R3_G3_B2 0x2A10,
+        Alpha4 = GL_ALPHA4 0x803B,
+        Alpha8 = GL_ALPHA8 0x803C,
+        Alpha12 = GL_ALPHA12 0x803D,
+        Alpha16 = GL_ALPHA16 0x803E,
+        Luminance4 = GL_LUMINANCE4 0x803F,
+        Luminance8 = GL_LUMINANCE8 0x8040,
+        Luminance12 = GL_LUMINANCE12 0x8041,
+        Luminance16 = GL_LUMINANCE16 0x8042,
+        Luminance4Alpha4 = GL_LUMINANCE4_ALPHA4 0x8043,
+        Luminance6Alpha2 = GL_LUMINANCE6_ALPHA2 0x8044,
+        Luminance8Alpha8 = GL_LUMINANCE8_ALPHA8 0x8045,
+        Luminance12Alpha4 = GL_LUMINANCE12_ALPHA4 0x8046,
+        Luminance12Alpha12 = GL_LUMINANCE12_ALPHA12 0x8047,
+        Luminance16Alpha16 = GL_LUMINANCE16_ALPHA16 0x8048,
+        Intensity = GL_INTENSITY 0x8049,
+        Intensity4 = GL_INTENSITY4 0x804A,
+        Intensity8 = GL_INTENSITY8 0x804B,
+        Intensity12 = GL_INTENSITY12 0x804C,
+        Intensity16 = GL_INTENSITY16 0x804D,
+        Rgb4 = GL_RGB4 0x804F,
+        Rgb5 = GL_RGB5 0x8050,
+        Rgb8 = GL_RGB8 0x8051,
+        Rgb10 = GL_RGB10 0x8052,
+        Rgb12 = GL_RGB12 0x8053,
+        Rgb16 = GL_RGB16 0x8054,
+        Rgba2 = GL_RGBA2 0x8055,
+        Rgba4 = GL_RGBA4 0x8056,
+        Rgb5A1 = GL_RGB5_A1 0x8057,
+        Rgba8 = GL_RGBA8 0x8058,
+        Rgb10A2 = GL_RGB10_A2 0x8059,
+        Rgba12 = GL_RGBA12 0x805A,
+        Rgba16 = GL_RGBA16 0x805B,
+        DepthComponent16 = GL_DEPTH_COMPONENT16 0x81A5,
+        DepthComponent24 = GL_DEPTH_COMPONENT24 0x81A6,
+        DepthComponent32 = GL_DEPTH_COMPONENT32 0x81A7,
+        CompressedAlpha = GL_COMPRESSED_ALPHA 0x84E9,
+        CompressedLuminance = GL_COMPRESSED_LUMINANCE 0x84EA,
+        CompressedLuminanceAlpha = GL_COMPRESSED_LUMINANCE_ALPHA 0x84EB,
+        CompressedIntensity = GL_COMPRESSED_INTENSITY 0x84EC,
+        CompressedRgb = GL_COMPRESSED_RGB 0x84ED,
+        CompressedRgba = GL_COMPRESSED_RGBA 0x84EE,
+        Srgb = GL_SRGB 0x8C40,
+        Srgb8 = GL_SRGB8 0x8C41,
+        SrgbAlpha = GL_SRGB_ALPHA 0x8C42,
+        Srgb8Alpha8 = GL_SRGB8_ALPHA8 0x8C43,
+        SluminanceAlpha = GL_SLUMINANCE_ALPHA 0x8C44,
+        Sluminance8Alpha8 = GL_SLUMINANCE8_ALPHA8 0x8C45,
+        Sluminance = GL_SLUMINANCE 0x8C46,
+        Sluminance8 = GL_SLUMINANCE8 0x8C47,
+    }
+    TexParamName {
+        BorderColor = GL_TEXTURE_BORDER_COLOR 0x1004,
+        MagFilter = GL_TEXTURE_MAG_FILTER 0x2800,
+        MinFilter = GL_TEXTURE_MIN_FILTER 0x2801,
+        WrapS = GL_TEXTURE_WRAP_S 0x2802,
+        WrapT = GL_TEXTURE_WRAP_T 0x2803,
+        Priority = GL_TEXTURE_PRIORITY 0x8066,
+        Resident = GL_TEXTURE_RESIDENT 0x8067,
+        WrapR = GL_TEXTURE_WRAP_R 0x8072,
+        MinLod = GL_TEXTURE_MIN_LOD 0x813A,
+        MaxLod = GL_TEXTURE_MAX_LOD 0x813B,
+        BaseLevel = GL_TEXTURE_BASE_LEVEL 0x813C,
+        MaxLevel = GL_TEXTURE_MAX_LEVEL 0x813D,
+        GenerateMipmap = GL_GENERATE_MIPMAP 0x8191,
+        LodBias = GL_TEXTURE_LOD_BIAS 0x8501,
+        DepthMode = GL_DEPTH_TEXTURE_MODE 0x884B,
+        CompareMode = GL_TEXTURE_COMPARE_MODE 0x884C,
+        CompareFunc = GL_TEXTURE_COMPARE_FUNC 0x884D,
+    }
+    TexLevelParamName {
+        Width = GL_TEXTURE_WIDTH 0x1000,
+        Height = GL_TEXTURE_HEIGHT 0x1001,
+        InternalFormat = GL_TEXTURE_INTERNAL_FORMAT 0x1003,
+        Border = GL_TEXTURE_BORDER 0x1005,
+        RedSize = GL_TEXTURE_RED_SIZE 0x805C,
+        GreenSize = GL_TEXTURE_GREEN_SIZE 0x805D,
+        BlueSize = GL_TEXTURE_BLUE_SIZE 0x805E,
+        AlphaSize = GL_TEXTURE_ALPHA_SIZE 0x805F,
+        LuminanceSize = GL_TEXTURE_LUMINANCE_SIZE 0x8060,
+        IntensitySize = GL_TEXTURE_INTENSITY_SIZE 0x8061,
+        Depth = GL_TEXTURE_DEPTH 0x8071,
+        Compressed = GL_TEXTURE_COMPRESSED 0x86A1,
+        DepthSize = GL_TEXTURE_DEPTH_SIZE 0x884A,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -287,5 +447,21 @@ mod tests {
         assert_eq!(Capability::from_gl(0x0B50), Some(Capability::Lighting));
         assert_eq!(Capability::from_gl(0x4008), None, "GL_LIGHT8 does not exist");
         assert_eq!(Capability::from_gl(0x3006), None, "GL_CLIP_PLANE6 does not exist");
+    }
+
+    #[test]
+    fn texture_enums_round_trip() {
+        let counts = [
+            round_trip::<TextureTarget>(),
+            round_trip::<Filter>(),
+            round_trip::<Wrap>(),
+            round_trip::<DepthMode>(),
+            round_trip::<PixelFormat>(),
+            round_trip::<PixelType>(),
+            round_trip::<InternalFormat>(),
+            round_trip::<TexParamName>(),
+            round_trip::<TexLevelParamName>(),
+        ];
+        assert_eq!(counts, [4, 2, 5, 3, 11, 19, 60, 17, 13]);
     }
 }

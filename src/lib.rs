@@ -32,6 +32,7 @@ pub mod lighting;
 pub mod matrix;
 pub mod raster;
 pub mod state;
+pub mod texture;
 
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
 pub use error::{GlError, GlResult};
@@ -49,3 +50,8 @@ pub use softgl_jit::{
     ShadeKey, StencilOp,
 };
 pub use state::{Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};
+pub use texture::{
+    BaseFormat, CombineFn, CombineSrc, DepthMode, EnvMode, Filter, InternalFormat, MipFilter, Operand, PixelData,
+    PixelFormat, PixelStore, PixelType, Sampling, TexImageTarget, TexLevelParamName, TexParam, TexParamName,
+    TextureStore, TextureTarget, Wrap,
+};

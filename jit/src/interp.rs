@@ -11,6 +11,7 @@ use crate::pixel;
 use crate::shade::{self, Planes};
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::target::Target;
+use crate::texture::TextureSet;
 use crate::uniforms::FragmentUniforms;
 
 /// Why a batch could not run.
@@ -44,14 +45,15 @@ pub fn run(
     spans: &[FragmentSpan],
     target: &mut Target<'_>,
 ) -> Result<(), FragmentError> {
-    run_with_planes(key, uniforms, spans, &[], target)
+    run_with_planes(key, uniforms, &TextureSet::default(), spans, &[], target)
 }
 
 /// [`run`] for keys with a shading stage: span `s` is of the primitive
-/// whose planes are `planes[s.planes]`.
+/// whose planes are `planes[s.planes]`; textured units sample `textures`.
 pub fn run_with_planes(
     key: &FragmentKey,
     uniforms: &FragmentUniforms,
+    textures: &TextureSet<'_>,
     spans: &[FragmentSpan],
     planes: &[Planes],
     target: &mut Target<'_>,
@@ -61,7 +63,7 @@ pub fn run_with_planes(
     let stages = key.stages();
     for span in spans {
         let p = planes.get(span.planes as usize).copied().unwrap_or_default();
-        run_span(key, stages.as_slice(), uniforms, (span, &p), target);
+        run_span(key, stages.as_slice(), (uniforms, textures), (span, &p), target);
     }
     Ok(())
 }
@@ -96,7 +98,7 @@ pub fn owned_mask(span: &FragmentSpan, width: u32, height: u32) -> u64 {
 fn run_span(
     key: &FragmentKey,
     stages: &[Stage],
-    u: &FragmentUniforms,
+    (u, textures): (&FragmentUniforms, &TextureSet<'_>),
     (span, planes): (&FragmentSpan, &Planes),
     t: &mut Target<'_>,
 ) {
@@ -121,7 +123,7 @@ fn run_span(
                 let max = key.depth_format.map_or(0, |f| f.max_value());
                 for i in lanes(live) {
                     let px = (x0 + i as u32) as f32;
-                    let (c, d) = shade::fragment(&shade, planes, (px, row), &u.fog, max);
+                    let (c, d) = shade::fragment(&shade, planes, (px, row), &u.fog, max, textures);
                     if let Some(c) = c {
                         rgba[i] = c;
                     }

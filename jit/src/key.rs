@@ -372,8 +372,8 @@ impl BlendKey {
 /// [`FragmentKey::new`] and the `with_*` methods; [`FragmentKey::validate`] says
 /// whether a hand-built key is consistent with its buffers.
 ///
-/// Texture, color sum and fog stages will take their place before `scissor` in
-/// [`FragmentKey::stages`] when those issues land.
+/// Texturing, colour sum and fog are part of the shading stage ([`ShadeKey`]),
+/// the first of [`FragmentKey::stages`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct FragmentKey {
     pub color_format: ColorFormat,
@@ -412,6 +412,17 @@ pub struct ShadeKey {
     pub fog: Option<crate::shade::FogMode>,
     /// Depth from the Z plane (16- and 24-bit buffers); else from the span.
     pub depth: bool,
+    /// The enabled, complete texture units (all `None`: untextured). Their
+    /// environment runs on the primary colour before the colour sum and fog,
+    /// so texturing needs `color`.
+    pub tex: [Option<crate::texture::TexUnitKey>; crate::texture::MAX_UNITS],
+}
+
+impl ShadeKey {
+    /// Whether any texture unit is on.
+    pub fn textured(&self) -> bool {
+        self.tex.iter().any(Option::is_some)
+    }
 }
 
 /// A key that does not fit the buffers it names.
@@ -539,8 +550,12 @@ pub const MAX_STAGES: usize = 9;
 
 /// One per-fragment stage with the part of the key it needs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "a stage list is built once per draw and read by value; boxing would cost Copy"
+)]
 pub enum Stage {
-    /// Interpolate colour and depth from the planes, colour sum, fog.
+    /// Interpolate colour and depth from the planes, texture, colour sum, fog.
     Shade(ShadeKey),
     /// Kill fragments outside the scissor box.
     Scissor,

@@ -18,6 +18,7 @@ pub mod span;
 #[allow(unsafe_code)]
 pub mod specialist;
 pub mod target;
+pub mod texture;
 pub mod uniforms;
 
 pub use cache::{CacheStats, SpecialistCache};
@@ -30,4 +31,5 @@ pub use shade::{FogMode, FogUniforms, Planes};
 pub use span::{FragmentSpan, SPAN_MAX};
 pub use specialist::{Specialist, SpecialistError};
 pub use target::{DepthTarget, Target, TargetError};
+pub use texture::TextureSet;
 pub use uniforms::FragmentUniforms;

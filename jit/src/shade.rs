@@ -170,17 +170,24 @@ mod tests {
 }
 
 /// Plane slots of [`Planes`]: 1/w, the primary colour over w (RGBA), the
-/// secondary colour over w (RGB), the fog coordinate over w, window depth.
+/// secondary colour over w (RGB), the fog coordinate over w, window depth,
+/// and texture unit `u`'s s, t, r, q over w at `TEX0 + 4 * u ..`.
 pub mod slot {
     pub const INV_W: usize = 0;
     pub const COLOR: usize = 1;
     pub const SECONDARY: usize = 5;
     pub const FOG: usize = 8;
     pub const Z: usize = 9;
+    pub const TEX0: usize = 10;
+
+    /// The first of texture unit `u`'s four slots (s, t, r, q over w).
+    pub const fn tex(u: usize) -> usize {
+        TEX0 + 4 * u
+    }
 }
 
 /// Plane slots in a [`Planes`].
-pub const PLANES: usize = 10;
+pub const PLANES: usize = slot::TEX0 + 4 * crate::texture::MAX_UNITS;
 
 /// The attribute planes of one primitive in llvmpipe's frame (x right, y
 /// down from the top row, pixel centres at integer coordinates): attribute
@@ -188,10 +195,19 @@ pub const PLANES: usize = 10;
 /// (`docs/llvmpipe-facts.md` §11). `#[repr(C)]`: compiled code reads it, each
 /// coefficient stored four times so that one aligned vector load splats it.
 #[repr(C, align(16))]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Planes {
     /// `[a0, dadx, dady]` of slot `k`, each repeated in four lanes.
     pub coeffs: [[[f32; 4]; 3]; PLANES],
+}
+
+impl Default for Planes {
+    /// Every plane zero.
+    fn default() -> Planes {
+        Planes {
+            coeffs: [[[0.0; 4]; 3]; PLANES],
+        }
+    }
 }
 
 impl Planes {
@@ -237,13 +253,17 @@ pub fn unorm_depth(z: f32, max: u32) -> u32 {
 }
 
 /// The colour and depth of the fragment at `(px, row)` of `planes`, as the
-/// shading stage of `key` makes them (`None` for what the key leaves to the span).
+/// shading stage of `key` makes them (`None` for what the key leaves to the
+/// span): the primary colour, the texture environment of the key's units
+/// over it (sampling `textures`), then colour sum and fog, the order of
+/// Mesa's fixed-function fragment shader (`emit_instructions`).
 pub fn fragment(
     key: &crate::key::ShadeKey,
     planes: &Planes,
     (px, row): (f32, f32),
     fog_u: &FogUniforms,
     depth_max: u32,
+    textures: &crate::texture::TextureSet<'_>,
 ) -> (Option<[u8; 4]>, Option<u32>) {
     let z = key.depth.then(|| unorm_depth(planes.at(slot::Z, px, row), depth_max));
     if !key.color {
@@ -258,8 +278,49 @@ pub fn fragment(
             v * w
         }
     };
-    let primary = [0, 1, 2, 3].map(|c| colour(slot::COLOR + c));
+    let mut primary = [0, 1, 2, 3].map(|c| colour(slot::COLOR + c));
+    if key.textured() {
+        primary = texture(key, planes, (px, row), textures, primary);
+    }
     let secondary = key.color_sum.then(|| [0, 1, 2].map(|c| colour(slot::SECONDARY + c)));
     let fog = key.fog.map(|m| (m, planes.at(slot::FOG, px, row) * w, fog_u));
     (Some(shade(primary, secondary, fog).map(unorm8)), z)
+}
+
+/// Unit `u`'s texture coordinates (s, t, r, q) at pixel `(px, row)`:
+/// perspective-correct, each plane's value times w.
+pub fn tex_coords(planes: &Planes, u: usize, (px, row): (f32, f32)) -> [f32; 4] {
+    let w = 1.0 / planes.at(slot::INV_W, px, row);
+    std::array::from_fn(|c| planes.at(slot::tex(u) + c, px, row) * w)
+}
+
+/// The top-left pixel of the 2×2 quad holding `(px, row)` in llvmpipe's
+/// frame: quads start at even columns and even rows of the top-down frame.
+#[inline]
+pub fn quad_origin((px, row): (f32, f32)) -> (f32, f32) {
+    (px - (px as u32 & 1) as f32, row - (row as u32 & 1) as f32)
+}
+
+/// The texture environment of `key`'s units over `primary` at `(px, row)`:
+/// each enabled unit sampled at its coordinates there (and at its quad's
+/// top-left, top-right and bottom-left pixels, for λ).
+pub fn texture(
+    key: &crate::key::ShadeKey,
+    planes: &Planes,
+    (px, row): (f32, f32),
+    textures: &crate::texture::TextureSet<'_>,
+    primary: [f32; 4],
+) -> [f32; 4] {
+    use crate::texture::{sample, MAX_UNITS};
+    let (qx, qy) = quad_origin((px, row));
+    let mut samples = [[0.0; 4]; MAX_UNITS];
+    for (u, unit) in key.tex.iter().enumerate() {
+        let (Some(unit), Some(tex)) = (unit, &textures.units[u]) else {
+            continue;
+        };
+        let at = tex_coords(planes, u, (px, row));
+        let quad = [(qx, qy), (qx + 1.0, qy), (qx, qy + 1.0)].map(|p| tex_coords(planes, u, p));
+        samples[u] = sample(unit, tex, at, quad);
+    }
+    crate::texture::environment(&key.tex, &samples, primary, &textures.env_color)
 }

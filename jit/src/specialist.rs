@@ -7,6 +7,7 @@ use crate::pixel;
 use crate::shade::Planes;
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::target::{DepthTarget, Target};
+use crate::texture::TextureSet;
 use crate::uniforms::FragmentUniforms;
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_jit::{JITBuilder, JITModule};
@@ -116,7 +117,7 @@ impl Specialist {
         spans: &[FragmentSpan],
         target: &mut Target<'_>,
     ) -> Result<(), FragmentError> {
-        self.run_with_planes(uniforms, spans, &[], target)
+        self.run_with_planes(uniforms, &TextureSet::default(), spans, &[], target)
     }
 
     /// [`Self::run`] for keys with a shading stage: the same result as
@@ -124,10 +125,15 @@ impl Specialist {
     pub fn run_with_planes(
         &self,
         uniforms: &FragmentUniforms,
+        textures: &TextureSet<'_>,
         spans: &[FragmentSpan],
         planes: &[Planes],
         target: &mut Target<'_>,
     ) -> Result<(), FragmentError> {
+        if self.key.shade.is_some_and(|s| s.textured()) {
+            // Texturing is not compiled yet: the reference runs the key.
+            return crate::interp::run_with_planes(&self.key, uniforms, textures, spans, planes, target);
+        }
         check_key(&self.key, target)?;
         check_planes(&self.key, spans, planes)?;
         for span in spans {

@@ -14,7 +14,7 @@ use softgl_jit::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, DepthTarget,
     FragmentKey, FragmentSpan, FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target, SPAN_MAX,
 };
-use softgl_jit::{FogMode, FogUniforms, Planes, ShadeKey};
+use softgl_jit::{FogMode, FogUniforms, Planes, ShadeKey, TextureSet};
 
 const COLOR_FORMATS: [ColorFormat; 4] = [
     ColorFormat::Rgba8,
@@ -262,6 +262,7 @@ fn shade_key() -> impl Strategy<Value = ShadeKey> {
         color_sum,
         fog,
         depth,
+        tex: Default::default(),
     })
 }
 
@@ -325,8 +326,8 @@ proptest! {
         }
         let mut jit_buf = interp_buf.clone();
         let specialist = Specialist::compile(&key).expect("a valid key compiles");
-        interp::run_with_planes(&key, &u, &spans, &planes, &mut interp_buf.target()).expect("the key names the buffers");
-        specialist.run_with_planes(&u, &spans, &planes, &mut jit_buf.target()).expect("the key names the buffers");
+        interp::run_with_planes(&key, &u, &TextureSet::default(), &spans, &planes, &mut interp_buf.target()).expect("the key names the buffers");
+        specialist.run_with_planes(&u, &TextureSet::default(), &spans, &planes, &mut jit_buf.target()).expect("the key names the buffers");
         prop_assert_eq!(&jit_buf.color, &interp_buf.color, "color differs");
         prop_assert_eq!(&jit_buf.depth16, &interp_buf.depth16, "depth differs");
         prop_assert_eq!(&jit_buf.depth32, &interp_buf.depth32, "depth differs");
@@ -353,6 +354,7 @@ fn a_span_without_its_planes_is_an_error() {
         interp::run_with_planes(
             &key,
             &FragmentUniforms::default(),
+            &TextureSet::default(),
             std::slice::from_ref(&span),
             &planes,
             &mut target
@@ -363,6 +365,7 @@ fn a_span_without_its_planes_is_an_error() {
     assert_eq!(
         s.run_with_planes(
             &FragmentUniforms::default(),
+            &TextureSet::default(),
             std::slice::from_ref(&span),
             &planes,
             &mut target
@@ -411,9 +414,10 @@ fn a_fogged_fragment_by_hand() {
         let spans = std::slice::from_ref(&span);
         if jit {
             let s = Specialist::compile(&key).unwrap();
-            s.run_with_planes(&u, spans, &[p], &mut target).unwrap();
+            s.run_with_planes(&u, &TextureSet::default(), spans, &[p], &mut target)
+                .unwrap();
         } else {
-            interp::run_with_planes(&key, &u, spans, &[p], &mut target).unwrap();
+            interp::run_with_planes(&key, &u, &TextureSet::default(), spans, &[p], &mut target).unwrap();
         }
         color
     };

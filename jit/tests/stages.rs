@@ -17,7 +17,7 @@ use softgl_jit::{
     FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, KeyError, LogicOp, Specialist, Stage, StencilKey,
     StencilOp, Target, SPAN_MAX,
 };
-use softgl_jit::{FogMode, FogUniforms, Planes, ShadeKey};
+use softgl_jit::{FogMode, FogUniforms, Planes, ShadeKey, TextureSet};
 
 // ---------------------------------------------------------------------------
 // Fixtures: owned buffers, spans, and the memory layout as the docs state it.
@@ -148,9 +148,9 @@ impl Fb {
     fn run_planes(&mut self, key: &FragmentKey, u: &FragmentUniforms, spans: &[FragmentSpan], planes: &[Planes]) {
         let mut jit = self.clone();
         let specialist = Specialist::compile(key).expect("a valid key compiles");
-        self.run_with(|t| run_with_planes(key, u, spans, planes, t))
+        self.run_with(|t| run_with_planes(key, u, &TextureSet::default(), spans, planes, t))
             .expect("the key names the buffers");
-        jit.run_with(|t| specialist.run_with_planes(u, spans, planes, t))
+        jit.run_with(|t| specialist.run_with_planes(u, &TextureSet::default(), spans, planes, t))
             .expect("the key names the buffers");
         assert!(jit == *self, "JIT and interpreter buffers differ for {key:?}");
     }

@@ -1,0 +1,339 @@
+//! Texturing as a fragment stage: the types the key, the uniforms and the
+//! texture store share, and the reference sampler and texture environment
+//! (`docs/llvmpipe-facts.md` §16 sampling, §17 environment).
+//!
+//! A unit that is enabled and complete contributes a [`TexUnitKey`] to
+//! [`ShadeKey::tex`](crate::key::ShadeKey::tex): everything about it that
+//! changes code. What it samples (images, sizes, LOD values, border colour)
+//! arrives per draw as a [`TextureRef`] in a [`TextureSet`] and is never part
+//! of the key.
+//!
+//! [`sample`] and [`environment`] are the reference: [`crate::shade::fragment`]
+//! calls them per fragment, and compiled code must compute the same bits (or
+//! call them back through `jit/src/callout.rs`).
+
+mod env;
+mod sample;
+
+pub use env::environment;
+pub use sample::sample;
+
+/// `GL_MAX_TEXTURE_UNITS`.
+pub const MAX_UNITS: usize = 8;
+/// Levels of a 4096 texture (`GL_MAX_TEXTURE_SIZE`; Mesa/llvmpipe report 16384, softgl caps at 4096).
+pub const MAX_LEVELS: usize = 13;
+/// Levels of a 256 3D texture (`GL_MAX_3D_TEXTURE_SIZE`).
+pub const MAX_3D_LEVELS: usize = 9;
+
+/// A texture target.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TexTarget {
+    D1,
+    D2,
+    D3,
+    Cube,
+}
+
+/// How texels are stored (chosen at upload for sampling speed).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TexelFormat {
+    /// 4 bytes R, G, B, A unorm8: every base format expanded to RGBA at upload
+    /// (L→LLL1, A→000A, I→IIII, LA→LLLA, RGB→RGB1).
+    Rgba8,
+    /// As `Rgba8`, RGB sRGB-encoded (decoded to linear when sampled, where llvmpipe decodes).
+    Srgba8,
+    /// 4 × `u16` unorm, native endian (formats llvmpipe keeps at 16 bits; its float SoA path).
+    Rgba16,
+    /// 1 × `f32` depth in `[0, 1]`, native endian.
+    Depth32F,
+}
+
+impl TexelFormat {
+    /// Bytes one texel takes.
+    pub const fn bytes_per_texel(self) -> usize {
+        match self {
+            TexelFormat::Rgba8 | TexelFormat::Srgba8 | TexelFormat::Depth32F => 4,
+            TexelFormat::Rgba16 => 8,
+        }
+    }
+}
+
+/// The GL base internal format: decides the texture environment (GL 1.5 tables 3.22, 3.23).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BaseFormat {
+    Alpha,
+    Luminance,
+    LuminanceAlpha,
+    Intensity,
+    Rgb,
+    Rgba,
+    Depth,
+}
+
+/// A minification or magnification filter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Filter {
+    Nearest,
+    Linear,
+}
+
+/// How minification chooses between mipmap levels (`None`: level `base_level` only).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MipFilter {
+    None,
+    Nearest,
+    Linear,
+}
+
+/// A wrap mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Wrap {
+    Repeat,
+    Clamp,
+    ClampToEdge,
+    ClampToBorder,
+    MirroredRepeat,
+}
+
+/// `GL_DEPTH_TEXTURE_MODE`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DepthMode {
+    Luminance,
+    Intensity,
+    Alpha,
+}
+
+impl DepthMode {
+    /// The base format a depth texture takes in the texture environment
+    /// (Mesa `texstate.c`, `update_tex_combine`).
+    pub const fn base(self) -> BaseFormat {
+        match self {
+            DepthMode::Luminance => BaseFormat::Luminance,
+            DepthMode::Intensity => BaseFormat::Intensity,
+            DepthMode::Alpha => BaseFormat::Alpha,
+        }
+    }
+}
+
+/// Everything about a unit's sampling that changes code.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct SamplerKey {
+    pub target: TexTarget,
+    pub format: TexelFormat,
+    pub min: Filter,
+    pub mip: MipFilter,
+    pub mag: Filter,
+    /// s, t, r; dimensions the target lacks are `Wrap::Repeat`.
+    pub wrap: [Wrap; 3],
+    /// `GL_COMPARE_R_TO_TEXTURE` with this function (depth formats only).
+    pub compare: Option<crate::key::CompareFunc>,
+    pub depth_mode: DepthMode,
+}
+
+/// A combine function (`GL_COMBINE_RGB`, `GL_COMBINE_ALPHA`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CombineFn {
+    Replace,
+    Modulate,
+    Add,
+    AddSigned,
+    Interpolate,
+    Subtract,
+    Dot3Rgb,
+    Dot3Rgba,
+}
+
+/// A combine source (`GL_SOURCEn_RGB`, `GL_SOURCEn_ALPHA`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CombineSrc {
+    /// This unit's texture.
+    Texture,
+    /// Unit `n`'s texture (`GL_TEXTUREn`, ARB_texture_env_crossbar).
+    TextureUnit(u8),
+    /// `GL_TEXTURE_ENV_COLOR`.
+    Constant,
+    /// The interpolated primary colour.
+    PrimaryColor,
+    /// The previous unit's result (the primary colour for unit 0).
+    Previous,
+}
+
+/// A combine operand (`GL_OPERANDn_RGB`, `GL_OPERANDn_ALPHA`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Operand {
+    SrcColor,
+    OneMinusSrcColor,
+    SrcAlpha,
+    OneMinusSrcAlpha,
+}
+
+/// The texture environment as a combine (legacy modes are translated per
+/// base format by [`effective_combine`], as Mesa's `texstate.c` does).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct CombineKey {
+    pub rgb: CombineFn,
+    pub alpha: CombineFn,
+    pub src_rgb: [CombineSrc; 3],
+    pub op_rgb: [Operand; 3],
+    pub src_alpha: [CombineSrc; 3],
+    /// `SrcAlpha` or `OneMinusSrcAlpha` only.
+    pub op_alpha: [Operand; 3],
+    /// 1, 2 or 4.
+    pub scale_rgb: u8,
+    /// 1, 2 or 4.
+    pub scale_alpha: u8,
+}
+
+impl CombineKey {
+    /// GL's initial combine state (and Mesa's `default_combine_state`):
+    /// MODULATE of texture and previous, third source the constant colour.
+    pub const DEFAULT: CombineKey = CombineKey {
+        rgb: CombineFn::Modulate,
+        alpha: CombineFn::Modulate,
+        src_rgb: [CombineSrc::Texture, CombineSrc::Previous, CombineSrc::Constant],
+        op_rgb: [Operand::SrcColor, Operand::SrcColor, Operand::SrcAlpha],
+        src_alpha: [CombineSrc::Texture, CombineSrc::Previous, CombineSrc::Constant],
+        op_alpha: [Operand::SrcAlpha, Operand::SrcAlpha, Operand::SrcAlpha],
+        scale_rgb: 1,
+        scale_alpha: 1,
+    };
+}
+
+impl Default for CombineKey {
+    fn default() -> CombineKey {
+        CombineKey::DEFAULT
+    }
+}
+
+/// `glTexEnv` `GL_TEXTURE_ENV_MODE`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum EnvMode {
+    Modulate,
+    Replace,
+    Decal,
+    Blend,
+    Add,
+    Combine,
+}
+
+/// The combine a legacy mode makes of a texture of base format `base`, as
+/// Mesa's `calculate_derived_texenv` (`texstate.c`) builds it: sources and
+/// operands from [`CombineKey::DEFAULT`], changed per format and mode, and a
+/// function whose first source is `Previous` becomes `Replace` (which passes
+/// the previous colour through). `Combine` returns `combine` unchanged. For
+/// depth textures pass `DepthMode::base()` (Mesa substitutes
+/// `GL_DEPTH_TEXTURE_MODE`); `Depth` itself is taken as its default, luminance.
+pub fn effective_combine(mode: EnvMode, base: BaseFormat, combine: CombineKey) -> CombineKey {
+    use BaseFormat as B;
+    use CombineFn as F;
+    use CombineSrc as S;
+    let base = if base == B::Depth { B::Luminance } else { base };
+    let mut k = CombineKey::DEFAULT;
+    match base {
+        B::Alpha => k.src_rgb[0] = S::Previous,
+        B::Luminance | B::Rgb => k.src_alpha[0] = S::Previous,
+        B::LuminanceAlpha | B::Intensity | B::Rgba | B::Depth => {}
+    }
+    let (rgb, alpha) = match mode {
+        EnvMode::Combine => return combine,
+        EnvMode::Replace | EnvMode::Modulate => {
+            let f = if mode == EnvMode::Replace {
+                F::Replace
+            } else {
+                F::Modulate
+            };
+            (if base == B::Alpha { F::Replace } else { f }, f)
+        }
+        EnvMode::Decal => {
+            k.src_alpha[0] = S::Previous;
+            let mut rgb = F::Interpolate;
+            match base {
+                B::Alpha | B::Luminance | B::LuminanceAlpha | B::Intensity => k.src_rgb[0] = S::Previous,
+                B::Rgb => rgb = F::Replace,
+                B::Rgba => k.src_rgb[2] = S::Texture,
+                B::Depth => {}
+            }
+            (rgb, F::Replace)
+        }
+        EnvMode::Blend => {
+            let mut alpha = F::Modulate;
+            if base == B::Alpha {
+                (F::Replace, alpha)
+            } else {
+                if base == B::Intensity {
+                    alpha = F::Interpolate;
+                    k.src_alpha[0] = S::Constant;
+                    k.op_alpha[2] = Operand::SrcAlpha;
+                }
+                k.src_rgb[2] = S::Texture;
+                k.src_alpha[2] = S::Texture;
+                k.src_rgb[0] = S::Constant;
+                k.op_rgb[2] = Operand::SrcColor;
+                (F::Interpolate, alpha)
+            }
+        }
+        EnvMode::Add => (
+            if base == B::Alpha { F::Replace } else { F::Add },
+            if base == B::Intensity { F::Add } else { F::Modulate },
+        ),
+    };
+    k.rgb = if k.src_rgb[0] != S::Previous { rgb } else { F::Replace };
+    k.alpha = if k.src_alpha[0] != S::Previous {
+        alpha
+    } else {
+        F::Replace
+    };
+    k
+}
+
+/// One enabled, complete unit as the key sees it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct TexUnitKey {
+    pub sampler: SamplerKey,
+    pub base: BaseFormat,
+    pub env: CombineKey,
+}
+
+/// One mip level (one face of one level for cube maps); texels tightly
+/// packed in [`TexelFormat`], rows bottom-up as GL uploads them.
+#[derive(Clone, Copy, Debug)]
+pub struct Image<'a> {
+    pub texels: &'a [u8],
+    pub width: u32,
+    pub height: u32,
+    pub depth: u32,
+}
+
+impl Image<'_> {
+    /// An image with no texels (levels outside the sampled range).
+    pub const EMPTY: Image<'static> = Image {
+        texels: &[],
+        width: 0,
+        height: 0,
+        depth: 0,
+    };
+}
+
+/// What a unit samples beyond its key: never part of the key, changing it compiles nothing.
+#[derive(Clone, Copy, Debug)]
+pub struct TextureRef<'a> {
+    /// Level `l` (relative to level 0 of the object) at `images[l]`; cube
+    /// maps: `images[l * 6 + face]` (faces +X, −X, +Y, −Y, +Z, −Z). Levels
+    /// outside `base_level..=max_level` may be empty.
+    pub images: &'a [Image<'a>],
+    pub base_level: u32,
+    /// Last level sampled: min(`GL_TEXTURE_MAX_LEVEL`, the last level of the complete chain).
+    pub max_level: u32,
+    pub min_lod: f32,
+    pub max_lod: f32,
+    /// `GL_TEXTURE_LOD_BIAS` of the object plus the unit's (`glTexEnv` `GL_TEXTURE_FILTER_CONTROL`).
+    pub lod_bias: f32,
+    pub border: [f32; 4],
+}
+
+/// Per draw: every unit's texture and `GL_TEXTURE_ENV_COLOR`. `Default`: no textures.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct TextureSet<'a> {
+    pub units: [Option<TextureRef<'a>>; MAX_UNITS],
+    pub env_color: [[f32; 4]; MAX_UNITS],
+}

@@ -1,0 +1,615 @@
+//! The texture calls of [`Context`]: objects and bindings, image
+//! specification and readback, parameters. Checks and their order follow
+//! Mesa 22.3.6 (`main/teximage.c`, `main/texobj.c`, `main/texparam.c`,
+//! `main/texgetimage.c`).
+
+use super::format::{InternalFormat, PixelFormat, PixelType};
+use super::jit::{BaseFormat, TexTarget, MAX_UNITS};
+use super::object::TexImage;
+use super::unpack::{self, ClientLayout, Raw, Route};
+use super::{max_levels, PixelData, PixelStore, TexImageTarget, TexLevelParamName, TexParam, TexParamName};
+use crate::context::Context;
+use crate::error::{GlError, GlResult};
+use crate::gl_enum::GlEnum;
+
+/// `GL_MAX_TEXTURE_SIZE` (and the cube map size); 3D textures: [`MAX_3D_TEXTURE_SIZE`].
+pub const MAX_TEXTURE_SIZE: u32 = 1 << (super::jit::MAX_LEVELS - 1);
+/// `GL_MAX_3D_TEXTURE_SIZE`.
+pub const MAX_3D_TEXTURE_SIZE: u32 = 1 << (super::jit::MAX_3D_LEVELS - 1);
+
+fn check(ok: bool, e: GlError) -> GlResult {
+    if ok {
+        Ok(())
+    } else {
+        Err(e)
+    }
+}
+
+/// `InvalidOperation` unless `format` can carry texels of `internal` and
+/// takes `ty` (Mesa's `_mesa_error_check_format_and_type` and
+/// `texture_formats_agree`). The C ABI calls it for uploads without data too.
+pub fn check_format_type(internal: InternalFormat, format: PixelFormat, ty: PixelType) -> GlResult {
+    check(format.accepts(ty), GlError::InvalidOperation)?;
+    check(
+        (internal.base() == BaseFormat::Depth) == format.is_depth(),
+        GlError::InvalidOperation,
+    )
+}
+
+/// Whether `size` (border included) is legal for `level` of `target`
+/// (`_mesa_legal_texture_dimensions`; every size, not only powers of two).
+fn legal_size(target: TexTarget, level: usize, size: [i32; 3], border: i32) -> bool {
+    let max = match target {
+        TexTarget::D3 => MAX_3D_TEXTURE_SIZE,
+        _ => MAX_TEXTURE_SIZE,
+    } as i32
+        >> level;
+    let side = |s: i32| s >= 2 * border && s <= 2 * border + max;
+    match target {
+        TexTarget::D1 => side(size[0]) && size[1] == 1 && size[2] == 1,
+        TexTarget::D2 => side(size[0]) && side(size[1]) && size[2] == 1,
+        TexTarget::Cube => side(size[0]) && size[0] == size[1] && size[2] == 1,
+        TexTarget::D3 => side(size[0]) && side(size[1]) && side(size[2]),
+    }
+}
+
+/// The size with the border stripped, and the unpack state skipping it
+/// (Mesa's `strip_texture_border`: llvmpipe keeps no borders).
+fn strip_border(dims: u32, size: [i32; 3], store: &PixelStore) -> ([i32; 3], PixelStore) {
+    let mut s = *store;
+    let mut size = size;
+    if s.row_length == 0 {
+        s.row_length = size[0];
+    }
+    if s.image_height == 0 {
+        s.image_height = size[1];
+    }
+    s.skip_pixels += 1;
+    size[0] -= 2;
+    if dims >= 2 && size[1] >= 3 {
+        s.skip_rows += 1;
+        size[1] -= 2;
+    }
+    if dims == 3 && size[2] >= 3 {
+        s.skip_images += 1;
+        size[2] -= 2;
+    }
+    (size, s)
+}
+
+/// The layout of `pixels` for a `size` image, checking that its bytes hold it.
+fn client_layout(pixels: &PixelData<'_>, store: &PixelStore, dims: u32, size: [usize; 3]) -> GlResult<ClientLayout> {
+    let layout = ClientLayout::new(pixels.format, pixels.ty, store, dims, size).ok_or(GlError::InvalidOperation)?;
+    check(pixels.bytes.len() >= layout.len, GlError::InvalidOperation)?;
+    Ok(layout)
+}
+
+fn level_index(target: TexTarget, level: i32) -> GlResult<usize> {
+    usize::try_from(level)
+        .ok()
+        .filter(|&l| l < max_levels(target))
+        .ok_or(GlError::InvalidValue)
+}
+
+/// The framebuffer's pixels of a rectangle as client pixels (RGBA ubyte, or
+/// the stored depth), the way Mesa's copies read them; pixels outside the
+/// framebuffer are `None`.
+fn read_source(gl: &Context, depth: bool, x: i32, y: i32) -> Option<[Raw; 4]> {
+    let fb = gl.framebuffer();
+    let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
+    if depth {
+        let bits = fb.depth_format()?.max_value().count_ones();
+        let z = fb.depth_at(x, y)?;
+        Some([Raw::U(z, bits), Raw::ZERO, Raw::ZERO, Raw::ONE])
+    } else {
+        Some(fb.pixel(x, y)?.map(|c| Raw::U(u32::from(c), 8)))
+    }
+}
+
+impl Context {
+    /// Records `r`'s error GL-style and passes `r` on; every texture call
+    /// starts by refusing to run between `begin` and `end`.
+    fn tex_call<T>(&mut self, f: impl FnOnce(&mut Context) -> GlResult<T>) -> GlResult<T> {
+        let r = if self.inside_begin() {
+            Err(GlError::InvalidOperation)
+        } else {
+            f(self)
+        };
+        if let Err(e) = r {
+            self.record_error(e);
+        }
+        r
+    }
+
+    /// The texture objects and bindings.
+    pub fn textures(&self) -> &super::TextureStore {
+        &self.textures
+    }
+
+    /// `glActiveTexture(GL_TEXTURE0 + unit)`; `InvalidEnum` past the last unit.
+    pub fn active_texture(&mut self, unit: u32) -> GlResult {
+        self.tex_call(|gl| {
+            check((unit as usize) < MAX_UNITS, GlError::InvalidEnum)?;
+            gl.textures.set_active_unit(unit as usize);
+            Ok(())
+        })
+    }
+
+    /// The active texture unit.
+    pub fn active_texture_unit(&self) -> usize {
+        self.textures.active_unit()
+    }
+
+    /// `glGenTextures`: `n` names never used before.
+    pub fn gen_textures(&mut self, n: i32) -> GlResult<Vec<u32>> {
+        self.tex_call(|gl| {
+            let n = usize::try_from(n).map_err(|_| GlError::InvalidValue)?;
+            Ok(gl.textures.gen(n))
+        })
+    }
+
+    /// `glBindTexture` on the active unit: name 0 is the target's default
+    /// texture; a new name creates an object; an object of another target is
+    /// `InvalidOperation`.
+    pub fn bind_texture(&mut self, target: TexTarget, name: u32) -> GlResult {
+        self.tex_call(|gl| check(gl.textures.bind(target, name), GlError::InvalidOperation))
+    }
+
+    /// `glDeleteTextures`: bindings of deleted objects revert to 0; unknown names are ignored.
+    pub fn delete_textures(&mut self, names: &[u32]) {
+        let _ = self.tex_call(|gl| {
+            gl.textures.delete(names);
+            Ok(())
+        });
+    }
+
+    /// `glIsTexture`: a name with an object (generated names count once bound).
+    pub fn is_texture(&self, name: u32) -> bool {
+        !self.inside_begin() && self.textures.is_texture(name)
+    }
+
+    /// The name bound to `target` on `unit` (`GL_TEXTURE_BINDING_*`).
+    pub fn texture_binding(&self, unit: usize, target: TexTarget) -> u32 {
+        self.textures.binding(unit, target)
+    }
+
+    /// `glPrioritizeTextures`: priorities clamped to [0, 1]; names without
+    /// objects (and 0) are skipped.
+    pub fn prioritize_textures(&mut self, names: &[u32], priorities: &[f32]) {
+        let _ = self.tex_call(|gl| {
+            for (&name, &p) in names.iter().zip(priorities) {
+                if let Some(obj) = gl.textures.object_mut(name) {
+                    obj.params.priority = p.clamp(0.0, 1.0);
+                }
+            }
+            Ok(())
+        });
+    }
+
+    /// `glAreTexturesResident`: every texture is resident; a name without an
+    /// object (or 0) is `InvalidValue`.
+    pub fn are_textures_resident(&mut self, names: &[u32]) -> GlResult<Vec<bool>> {
+        self.tex_call(|gl| {
+            check(names.iter().all(|&n| gl.textures.exists(n)), GlError::InvalidValue)?;
+            Ok(vec![true; names.len()])
+        })
+    }
+
+    /// `glTexImage1D/2D/3D` (sizes `[w, 1, 1]`, `[w, h, 1]`, `[w, h, d]`).
+    /// `pixels: None` allocates the image without data (texels read as 0).
+    pub fn tex_image(
+        &mut self,
+        target: TexImageTarget,
+        level: i32,
+        internal: InternalFormat,
+        size: [i32; 3],
+        border: i32,
+        pixels: Option<PixelData<'_>>,
+    ) -> GlResult {
+        self.tex_call(|gl| gl.tex_image_checked(target, level, internal, size, border, pixels))
+    }
+
+    fn tex_image_checked(
+        &mut self,
+        target: TexImageTarget,
+        level: i32,
+        internal: InternalFormat,
+        size: [i32; 3],
+        border: i32,
+        pixels: Option<PixelData<'_>>,
+    ) -> GlResult {
+        let tt = target.texture_target();
+        let level = level_index(tt, level)?;
+        check(matches!(border, 0 | 1), GlError::InvalidValue)?;
+        check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
+        if let Some(p) = &pixels {
+            check_format_type(internal, p.format, p.ty)?;
+        }
+        check(
+            !(internal.base() == BaseFormat::Depth && tt == TexTarget::D3),
+            GlError::InvalidOperation,
+        )?;
+        let legal = legal_size(tt, level, size, border);
+        if let TexImageTarget::Proxy(t) = target {
+            // Proxies: a size the texture cannot have clears the image instead of an error.
+            let img = legal.then(|| {
+                let s = if border == 1 {
+                    strip_border(target.dims(), size, &PixelStore::DEFAULT).0
+                } else {
+                    size
+                };
+                TexImage {
+                    width: s[0] as u32,
+                    height: s[1] as u32,
+                    depth: s[2] as u32,
+                    internal,
+                    texels: Vec::new(),
+                }
+            });
+            if let Some(slot) = self.textures.proxy_mut(t).image_mut(level, 0) {
+                *slot = img;
+            }
+            return Ok(());
+        }
+        check(legal, GlError::InvalidValue)?;
+        let dims = target.dims();
+        let store = pixels.as_ref().map_or(PixelStore::DEFAULT, |p| p.store);
+        let (size, store) = if border == 1 {
+            strip_border(dims, size, &store)
+        } else {
+            (size, store)
+        };
+        let usize3 = size.map(|s| s as usize);
+        let mut img = TexImage::new(internal, size.map(|s| s as u32));
+        if let Some(p) = pixels.filter(|_| !usize3.contains(&0)) {
+            let layout = client_layout(&p, &store, dims, usize3)?;
+            unpack::upload(&mut img, [0; 3], usize3, &PixelData { store, ..p }, &layout);
+        }
+        let obj = self.textures.current_mut(tt);
+        if let Some(slot) = obj.image_mut(level, target.face()) {
+            *slot = Some(img);
+        }
+        self.check_gen_mipmap(target, level)
+    }
+
+    /// Mesa's `check_gen_mipmap`: after the base level of a face changes,
+    /// with `GL_GENERATE_MIPMAP` on, that face's chain below it is rebuilt.
+    fn check_gen_mipmap(&mut self, target: TexImageTarget, level: usize) -> GlResult {
+        let obj = self.textures.current_mut(target.texture_target());
+        if obj.params.generate_mipmap && level as i32 == obj.params.base_level {
+            let face = target.face();
+            super::mipmap::generate(obj, face..face + 1);
+        }
+        Ok(())
+    }
+
+    /// The image of the bound texture a sub-image call writes (`InvalidOperation` when missing).
+    fn existing_image(&self, target: TexImageTarget, level: usize) -> GlResult<&TexImage> {
+        let obj = self
+            .textures
+            .bound(self.textures.active_unit(), target.texture_target());
+        obj.image(level, target.face()).ok_or(GlError::InvalidOperation)
+    }
+
+    /// Checks a sub-image region against the image (`error_check_subtexture_dimensions`);
+    /// dimensions the target lacks must be offset 0, size 1.
+    fn check_region(img: &TexImage, dims: u32, offset: [i32; 3], size: [i32; 3]) -> GlResult {
+        let img_size = img.size();
+        for d in 0..3 {
+            let (o, s) = (i64::from(offset[d]), i64::from(size[d]));
+            if d as u32 >= dims {
+                check(o == 0 && s == 1, GlError::InvalidValue)?;
+                continue;
+            }
+            check(o >= 0 && o + s <= i64::from(img_size[d]), GlError::InvalidValue)?;
+        }
+        Ok(())
+    }
+
+    /// `glTexSubImage1D/2D/3D`.
+    pub fn tex_sub_image(
+        &mut self,
+        target: TexImageTarget,
+        level: i32,
+        offset: [i32; 3],
+        size: [i32; 3],
+        pixels: PixelData<'_>,
+    ) -> GlResult {
+        self.tex_call(|gl| {
+            check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
+            let tt = target.texture_target();
+            let level = level_index(tt, level)?;
+            check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
+            let img = gl.existing_image(target, level)?;
+            check_format_type(img.internal, pixels.format, pixels.ty)?;
+            Context::check_region(img, target.dims(), offset, size)?;
+            let usize3 = size.map(|s| s as usize);
+            if usize3.contains(&0) {
+                return Ok(());
+            }
+            let layout = client_layout(&pixels, &pixels.store, target.dims(), usize3)?;
+            let obj = gl.textures.current_mut(tt);
+            if let Some(Some(img)) = obj.image_mut(level, target.face()) {
+                unpack::upload(img, offset.map(|o| o as usize), usize3, &pixels, &layout);
+            }
+            gl.check_gen_mipmap(target, level)
+        })
+    }
+
+    /// `glCopyTexImage1D/2D`: the image from the framebuffer rectangle at
+    /// `xy` (`size` `[w, 1]` for 1D). Colour formats read the colour buffer
+    /// (luminance and intensity take red), depth formats the depth buffer.
+    pub fn copy_tex_image(
+        &mut self,
+        target: TexImageTarget,
+        level: i32,
+        internal: InternalFormat,
+        xy: [i32; 2],
+        size: [i32; 2],
+        border: i32,
+    ) -> GlResult {
+        self.tex_call(|gl| {
+            check(
+                matches!(
+                    target,
+                    TexImageTarget::D1 | TexImageTarget::D2 | TexImageTarget::CubeFace(_)
+                ),
+                GlError::InvalidEnum,
+            )?;
+            let tt = target.texture_target();
+            let level = level_index(tt, level)?;
+            check(matches!(border, 0 | 1), GlError::InvalidValue)?;
+            check(
+                !matches!(
+                    internal,
+                    InternalFormat::One | InternalFormat::Two | InternalFormat::Three | InternalFormat::Four
+                ),
+                GlError::InvalidEnum,
+            )?;
+            let depth = internal.base() == BaseFormat::Depth;
+            check(
+                !depth || gl.framebuffer().depth_format().is_some(),
+                GlError::InvalidOperation,
+            )?;
+            check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
+            let full = [size[0], if target.dims() == 1 { 1 } else { size[1] }, 1];
+            check(legal_size(tt, level, full, border), GlError::InvalidValue)?;
+            let (stripped, xy) = if border == 1 {
+                let dy = i32::from(target.dims() == 2 && full[1] >= 3);
+                ([full[0] - 2, full[1] - 2 * dy, 1], [xy[0] + 1, xy[1] + dy])
+            } else {
+                (full, xy)
+            };
+            let mut img = TexImage::new(internal, stripped.map(|s| s as u32));
+            gl.copy_into(&mut img, [0, 0], xy, [stripped[0], stripped[1]], depth);
+            if let Some(slot) = gl.textures.current_mut(tt).image_mut(level, target.face()) {
+                *slot = Some(img);
+            }
+            gl.check_gen_mipmap(target, level)
+        })
+    }
+
+    /// Copies the framebuffer rectangle at `xy` into `img` at `offset`
+    /// (slice `offset[2]` for 3D); pixels outside the framebuffer are left as they are.
+    fn copy_into(&self, img: &mut TexImage, offset: [usize; 2], xy: [i32; 2], size: [i32; 2], depth: bool) {
+        self.copy_into_slice(img, [offset[0], offset[1], 0], xy, size, depth);
+    }
+
+    fn copy_into_slice(&self, img: &mut TexImage, offset: [usize; 3], xy: [i32; 2], size: [i32; 2], depth: bool) {
+        for j in 0..size[1].max(0) {
+            for i in 0..size[0].max(0) {
+                let (x, y) = (i64::from(xy[0]) + i64::from(i), i64::from(xy[1]) + i64::from(j));
+                let (Ok(x), Ok(y)) = (i32::try_from(x), i32::try_from(y)) else {
+                    continue;
+                };
+                if let Some(rgba) = read_source(self, depth, x, y) {
+                    let at = (offset[0] + i as usize, offset[1] + j as usize, offset[2]);
+                    unpack::store_texel(img, at, rgba, Route::Direct);
+                }
+            }
+        }
+    }
+
+    /// `glCopyTexSubImage1D/2D/3D`: `offset` `[x, 0, 0]` for 1D, `[x, y, 0]`
+    /// for 2D and cube faces, `[x, y, z]` for 3D (one slice).
+    pub fn copy_tex_sub_image(
+        &mut self,
+        target: TexImageTarget,
+        level: i32,
+        offset: [i32; 3],
+        xy: [i32; 2],
+        size: [i32; 2],
+    ) -> GlResult {
+        self.tex_call(|gl| {
+            check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
+            let tt = target.texture_target();
+            let level = level_index(tt, level)?;
+            let img = gl.existing_image(target, level)?;
+            check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
+            let dims = target.dims();
+            let region = [size[0], if dims == 1 { 1 } else { size[1] }, 1];
+            let off = [
+                offset[0],
+                if dims == 1 { 0 } else { offset[1] },
+                if dims == 3 { offset[2] } else { 0 },
+            ];
+            for d in 0..dims as usize {
+                let (o, s) = (i64::from(off[d]), i64::from(region[d]));
+                check(o >= 0 && o + s <= i64::from(img.size()[d]), GlError::InvalidValue)?;
+            }
+            let depth = img.internal.base() == BaseFormat::Depth;
+            check(
+                !depth || gl.framebuffer().depth_format().is_some(),
+                GlError::InvalidOperation,
+            )?;
+            let mut img = img.clone();
+            let at = off.map(|o| o as usize);
+            gl.copy_into_slice(&mut img, at, xy, [region[0], region[1]], depth);
+            if let Some(slot) = gl.textures.current_mut(tt).image_mut(level, target.face()) {
+                *slot = Some(img);
+            }
+            gl.check_gen_mipmap(target, level)
+        })
+    }
+
+    /// `glGetTexImage` of the bound texture into `out`, laid out by `pack`.
+    /// A level without an image writes nothing.
+    pub fn get_tex_image(
+        &mut self,
+        target: TexImageTarget,
+        level: i32,
+        format: PixelFormat,
+        ty: PixelType,
+        pack: &PixelStore,
+        out: &mut [u8],
+    ) -> GlResult {
+        self.tex_call(|gl| {
+            check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
+            let tt = target.texture_target();
+            let level = level_index(tt, level)?;
+            check(format.accepts(ty), GlError::InvalidOperation)?;
+            let obj = gl.textures.bound(gl.textures.active_unit(), tt);
+            let Some(img) = obj.image(level, target.face()) else {
+                return Ok(());
+            };
+            check(
+                (img.internal.base() == BaseFormat::Depth) == format.is_depth(),
+                GlError::InvalidOperation,
+            )?;
+            let size = img.size().map(|s| s as usize);
+            let layout = ClientLayout::new(format, ty, pack, target.dims(), size).ok_or(GlError::InvalidOperation)?;
+            check(out.len() >= layout.len, GlError::InvalidOperation)?;
+            unpack::download(img, format, ty, pack.swap_bytes, &layout, out);
+            Ok(())
+        })
+    }
+
+    /// `glTexParameter` on the active unit's `target`.
+    pub fn tex_parameter(&mut self, target: TexTarget, p: TexParam) -> GlResult {
+        self.tex_call(|gl| {
+            let params = &mut gl.textures.current_mut(target).params;
+            match p {
+                TexParam::MinFilter(f, m) => (params.min, params.mip) = (f, m),
+                TexParam::MagFilter(f) => params.mag = f,
+                TexParam::WrapS(w) => params.wrap[0] = w,
+                TexParam::WrapT(w) => params.wrap[1] = w,
+                TexParam::WrapR(w) => params.wrap[2] = w,
+                TexParam::BorderColor(c) => params.border = c,
+                TexParam::MinLod(v) => params.min_lod = v,
+                TexParam::MaxLod(v) => params.max_lod = v,
+                TexParam::BaseLevel(v) => {
+                    check(v >= 0, GlError::InvalidValue)?;
+                    params.base_level = v;
+                }
+                TexParam::MaxLevel(v) => {
+                    check(v >= 0, GlError::InvalidValue)?;
+                    params.max_level = v;
+                }
+                TexParam::LodBias(v) => params.lod_bias = v,
+                TexParam::Priority(v) => params.priority = v.clamp(0.0, 1.0),
+                TexParam::GenerateMipmap(on) => params.generate_mipmap = on,
+                TexParam::CompareMode(on) => params.compare = on,
+                TexParam::CompareFunc(f) => params.compare_func = f,
+                TexParam::DepthMode(m) => params.depth_mode = m,
+                TexParam::Resident(_) => return Err(GlError::InvalidEnum),
+            }
+            Ok(())
+        })
+    }
+
+    /// `glGetTexParameter` of the active unit's `target`.
+    pub fn get_tex_parameter(&mut self, target: TexTarget, name: TexParamName) -> GlResult<TexParam> {
+        self.tex_call(|gl| {
+            let p = gl.textures.bound(gl.textures.active_unit(), target).params;
+            Ok(match name {
+                TexParamName::MinFilter => TexParam::MinFilter(p.min, p.mip),
+                TexParamName::MagFilter => TexParam::MagFilter(p.mag),
+                TexParamName::WrapS => TexParam::WrapS(p.wrap[0]),
+                TexParamName::WrapT => TexParam::WrapT(p.wrap[1]),
+                TexParamName::WrapR => TexParam::WrapR(p.wrap[2]),
+                TexParamName::BorderColor => TexParam::BorderColor(p.border),
+                TexParamName::MinLod => TexParam::MinLod(p.min_lod),
+                TexParamName::MaxLod => TexParam::MaxLod(p.max_lod),
+                TexParamName::BaseLevel => TexParam::BaseLevel(p.base_level),
+                TexParamName::MaxLevel => TexParam::MaxLevel(p.max_level),
+                TexParamName::LodBias => TexParam::LodBias(p.lod_bias),
+                TexParamName::Priority => TexParam::Priority(p.priority),
+                TexParamName::GenerateMipmap => TexParam::GenerateMipmap(p.generate_mipmap),
+                TexParamName::CompareMode => TexParam::CompareMode(p.compare),
+                TexParamName::CompareFunc => TexParam::CompareFunc(p.compare_func),
+                TexParamName::DepthMode => TexParam::DepthMode(p.depth_mode),
+                TexParamName::Resident => TexParam::Resident(true),
+            })
+        })
+    }
+
+    /// `glGetTexLevelParameteriv`. A level without an image reports 0, and
+    /// `GL_RGBA` as its internal format (Mesa's dummy image).
+    pub fn get_tex_level_parameter(
+        &mut self,
+        target: TexImageTarget,
+        level: i32,
+        name: TexLevelParamName,
+    ) -> GlResult<i32> {
+        self.tex_call(|gl| {
+            let tt = target.texture_target();
+            let level = level_index(tt, level)?;
+            let obj = match target {
+                TexImageTarget::Proxy(t) => gl.textures.proxy(t),
+                _ => gl.textures.bound(gl.textures.active_unit(), tt),
+            };
+            let Some(img) = obj.image(level, target.face()) else {
+                return Ok(match name {
+                    TexLevelParamName::InternalFormat => InternalFormat::Rgba.to_gl() as i32,
+                    _ => 0,
+                });
+            };
+            let s = img.internal.storage();
+            let color = |c: usize, bases: &[BaseFormat]| if bases.contains(&s.base) { s.bits[c] as i32 } else { 0 };
+            use BaseFormat as B;
+            Ok(match name {
+                TexLevelParamName::Width => img.width as i32,
+                TexLevelParamName::Height => img.height as i32,
+                TexLevelParamName::Depth => img.depth as i32,
+                TexLevelParamName::Border => 0,
+                TexLevelParamName::InternalFormat => img.internal.reported().to_gl() as i32,
+                TexLevelParamName::RedSize => color(0, &[B::Rgb, B::Rgba]),
+                TexLevelParamName::GreenSize => color(1, &[B::Rgb, B::Rgba]),
+                TexLevelParamName::BlueSize => color(2, &[B::Rgb, B::Rgba]),
+                TexLevelParamName::AlphaSize => color(3, &[B::Alpha, B::LuminanceAlpha, B::Rgba]),
+                TexLevelParamName::LuminanceSize => color(0, &[B::Luminance, B::LuminanceAlpha]),
+                TexLevelParamName::IntensitySize => color(0, &[B::Intensity]),
+                TexLevelParamName::DepthSize => color(0, &[B::Depth]),
+                TexLevelParamName::Compressed => 0,
+            })
+        })
+    }
+
+    /// `glGenerateMipmap` for the active unit's `target` (Mesa `main/genmipmap.c`):
+    /// nothing when BASE_LEVEL ≥ MAX_LEVEL; `InvalidOperation` for a cube map
+    /// whose base faces differ, or without a base image.
+    pub fn generate_mipmap(&mut self, target: TexTarget) -> GlResult {
+        self.tex_call(|gl| {
+            let obj = gl.textures.current_mut(target);
+            if obj.params.base_level >= obj.params.max_level {
+                return Ok(());
+            }
+            let base_level = obj.params.base_level as usize;
+            if target == TexTarget::Cube {
+                let base = obj.image(base_level, 0).ok_or(GlError::InvalidOperation)?;
+                let same = (1..6).all(|f| {
+                    obj.image(base_level, f)
+                        .is_some_and(|i| i.size() == base.size() && i.internal == base.internal)
+                });
+                check(same && base.width == base.height, GlError::InvalidOperation)?;
+            }
+            let base = obj.base_image().ok_or(GlError::InvalidOperation)?;
+            if base.width == 0 || base.height == 0 {
+                return Ok(());
+            }
+            let faces = obj.faces();
+            super::mipmap::generate(obj, 0..faces);
+            Ok(())
+        })
+    }
+}

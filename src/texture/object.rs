@@ -1,0 +1,188 @@
+//! A texture object: its images (per level and face), its sampler
+//! parameters, and GL's completeness rules (Mesa `main/texobj.c`
+//! `_mesa_test_texture_completeness`).
+
+use super::format::InternalFormat;
+use super::jit::{BaseFormat, DepthMode, Filter, MipFilter, TexTarget, TexelFormat, Wrap};
+use super::{faces, max_levels};
+use softgl_jit::CompareFunc;
+
+/// One image: a level of a target, or one face of a cube map level. Texels
+/// tightly packed in the internal format's [`TexelFormat`], rows bottom-up.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TexImage {
+    pub width: u32,
+    pub height: u32,
+    pub depth: u32,
+    pub internal: InternalFormat,
+    pub texels: Vec<u8>,
+}
+
+impl TexImage {
+    /// An image of zeros (texels are undefined in GL until uploaded).
+    pub fn new(internal: InternalFormat, size: [u32; 3]) -> TexImage {
+        let n = size.iter().map(|&s| s as usize).product::<usize>();
+        TexImage {
+            width: size[0],
+            height: size[1],
+            depth: size[2],
+            internal,
+            texels: vec![0; n * internal.storage().texel_format().bytes_per_texel()],
+        }
+    }
+
+    pub fn texel_format(&self) -> TexelFormat {
+        self.internal.storage().texel_format()
+    }
+
+    pub fn size(&self) -> [u32; 3] {
+        [self.width, self.height, self.depth]
+    }
+
+    /// Byte offset of texel `(x, y, z)`.
+    pub fn offset(&self, x: usize, y: usize, z: usize) -> usize {
+        ((z * self.height as usize + y) * self.width as usize + x) * self.texel_format().bytes_per_texel()
+    }
+}
+
+/// The sampler parameters of a texture object (`glTexParameter`), GL's initial values by default.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SamplerState {
+    pub min: Filter,
+    pub mip: MipFilter,
+    pub mag: Filter,
+    /// s, t, r.
+    pub wrap: [Wrap; 3],
+    /// As set (Mesa keeps it unclamped: ARB_texture_float is supported).
+    pub border: [f32; 4],
+    pub min_lod: f32,
+    pub max_lod: f32,
+    pub base_level: i32,
+    pub max_level: i32,
+    pub lod_bias: f32,
+    pub priority: f32,
+    pub generate_mipmap: bool,
+    pub compare: bool,
+    pub compare_func: CompareFunc,
+    pub depth_mode: DepthMode,
+}
+
+impl Default for SamplerState {
+    fn default() -> Self {
+        SamplerState {
+            min: Filter::Nearest,
+            mip: MipFilter::Linear,
+            mag: Filter::Linear,
+            wrap: [Wrap::Repeat; 3],
+            border: [0.0; 4],
+            min_lod: -1000.0,
+            max_lod: 1000.0,
+            base_level: 0,
+            max_level: 1000,
+            lod_bias: 0.0,
+            priority: 1.0,
+            generate_mipmap: false,
+            compare: false,
+            compare_func: CompareFunc::Lequal,
+            depth_mode: DepthMode::Luminance,
+        }
+    }
+}
+
+/// A texture object (named, or a target's default texture 0).
+#[derive(Clone, Debug, PartialEq)]
+pub struct TextureObject {
+    pub target: TexTarget,
+    /// Level `l`, face `f` at `l * faces + f`.
+    pub images: Vec<Option<TexImage>>,
+    pub params: SamplerState,
+}
+
+impl TextureObject {
+    pub fn new(target: TexTarget) -> TextureObject {
+        TextureObject {
+            target,
+            images: vec![None; max_levels(target) * faces(target)],
+            params: SamplerState::default(),
+        }
+    }
+
+    pub fn faces(&self) -> usize {
+        faces(self.target)
+    }
+
+    pub fn image(&self, level: usize, face: usize) -> Option<&TexImage> {
+        self.images.get(level * self.faces() + face)?.as_ref()
+    }
+
+    pub fn image_mut(&mut self, level: usize, face: usize) -> Option<&mut Option<TexImage>> {
+        let faces = self.faces();
+        self.images.get_mut(level * faces + face)
+    }
+
+    /// The image at the base level (face 0).
+    pub fn base_image(&self) -> Option<&TexImage> {
+        usize::try_from(self.params.base_level)
+            .ok()
+            .and_then(|b| self.image(b, 0))
+    }
+
+    /// The last level the chain from the base level can reach:
+    /// `min(MAX_LEVEL, base + log2(largest side), levels − 1)` (Mesa's `_MaxLevel`).
+    pub fn last_level(&self) -> Option<usize> {
+        let base = usize::try_from(self.params.base_level).ok()?;
+        let img = self.base_image()?;
+        let side = match self.target {
+            TexTarget::D1 => img.width,
+            TexTarget::D2 | TexTarget::Cube => img.width.max(img.height),
+            TexTarget::D3 => img.width.max(img.height).max(img.depth),
+        };
+        let log2 = side.max(1).ilog2() as usize;
+        let max_level = usize::try_from(self.params.max_level).ok()?;
+        Some(max_level.min(base + log2).min(max_levels(self.target) - 1))
+    }
+
+    /// Whether the texture can be sampled with its own parameters; the last
+    /// level sampled when it can.
+    pub fn complete(&self) -> Option<usize> {
+        let base = usize::try_from(self.params.base_level).ok()?;
+        if base >= max_levels(self.target) || self.params.max_level < self.params.base_level {
+            return None;
+        }
+        let img = self.base_image()?;
+        if img.width == 0 || img.height == 0 || img.depth == 0 {
+            return None;
+        }
+        let last = self.last_level()?;
+        let same = |i: &TexImage, size: [u32; 3]| i.internal == img.internal && i.size() == size;
+        if (1..self.faces()).any(|f| !self.image(base, f).is_some_and(|i| same(i, img.size()))) {
+            return None;
+        }
+        if self.params.mip != MipFilter::None {
+            let mut size = img.size();
+            for level in base + 1..=last {
+                size = next_size(self.target, size);
+                if (0..self.faces()).any(|f| !self.image(level, f).is_some_and(|i| same(i, size))) {
+                    return None;
+                }
+            }
+        }
+        Some(last)
+    }
+
+    /// The base format of the base image (Rgba for a texture without one).
+    pub fn base_format(&self) -> BaseFormat {
+        self.base_image().map_or(BaseFormat::Rgba, |i| i.internal.base())
+    }
+}
+
+/// The size of the next mipmap level: each side halved (rounding down) down to 1;
+/// 1D keeps height and depth 1, 2D and cube maps keep depth 1.
+pub fn next_size(target: TexTarget, size: [u32; 3]) -> [u32; 3] {
+    let half = |s: u32| (s / 2).max(1);
+    match target {
+        TexTarget::D1 => [half(size[0]), 1, 1],
+        TexTarget::D2 | TexTarget::Cube => [half(size[0]), half(size[1]), 1],
+        TexTarget::D3 => [half(size[0]), half(size[1]), half(size[2])],
+    }
+}

@@ -1,0 +1,251 @@
+//! The texture objects of a context, the default texture of each target,
+//! the proxy images, and which object each unit has bound to each target.
+
+use super::jit::{BaseFormat, Image, SamplerKey, TexTarget, TextureRef, Wrap, MAX_UNITS};
+use super::object::TextureObject;
+use std::collections::HashMap;
+
+const TARGETS: [TexTarget; 4] = [TexTarget::D1, TexTarget::D2, TexTarget::D3, TexTarget::Cube];
+
+fn index(target: TexTarget) -> usize {
+    match target {
+        TexTarget::D1 => 0,
+        TexTarget::D2 => 1,
+        TexTarget::D3 => 2,
+        TexTarget::Cube => 3,
+    }
+}
+
+/// Every texture object of a context and the bindings of its units.
+#[derive(Clone, Debug)]
+pub struct TextureStore {
+    /// Named objects; `None` for a name `gen_textures` returned that was never bound.
+    named: HashMap<u32, Option<TextureObject>>,
+    /// The largest name ever used: `gen_textures` continues after it (Mesa's
+    /// `_mesa_HashFindFreeKeyBlock` without name reuse).
+    max_name: u32,
+    defaults: [TextureObject; 4],
+    /// Proxy images: sizes and formats only, no texels.
+    pub(crate) proxies: [TextureObject; 4],
+    bindings: [[u32; 4]; MAX_UNITS],
+    active: usize,
+}
+
+impl Default for TextureStore {
+    fn default() -> Self {
+        TextureStore::new()
+    }
+}
+
+impl TextureStore {
+    pub fn new() -> TextureStore {
+        TextureStore {
+            named: HashMap::new(),
+            max_name: 0,
+            defaults: TARGETS.map(TextureObject::new),
+            proxies: TARGETS.map(TextureObject::new),
+            bindings: [[0; 4]; MAX_UNITS],
+            active: 0,
+        }
+    }
+
+    /// The active texture unit (`glActiveTexture`).
+    pub fn active_unit(&self) -> usize {
+        self.active
+    }
+
+    pub(crate) fn set_active_unit(&mut self, unit: usize) {
+        self.active = unit.min(MAX_UNITS - 1);
+    }
+
+    /// `n` new names (`glGenTextures`), reserved but without objects until bound.
+    pub(crate) fn gen(&mut self, n: usize) -> Vec<u32> {
+        let names: Vec<u32> = (1..=n as u32).map(|i| self.max_name + i).collect();
+        for &name in &names {
+            self.named.insert(name, None);
+        }
+        self.max_name += n as u32;
+        names
+    }
+
+    /// Binds `name` to `target` on the active unit, creating its object on
+    /// first bind; `false` when the object exists with another target.
+    pub(crate) fn bind(&mut self, target: TexTarget, name: u32) -> bool {
+        if name != 0 {
+            let slot = self.named.entry(name).or_insert(None);
+            match slot {
+                Some(obj) if obj.target != target => return false,
+                Some(_) => {}
+                None => *slot = Some(TextureObject::new(target)),
+            }
+            self.max_name = self.max_name.max(name);
+        }
+        self.bindings[self.active][index(target)] = name;
+        true
+    }
+
+    /// Deletes named objects, unbinding them from every unit (they revert to 0).
+    pub(crate) fn delete(&mut self, names: &[u32]) {
+        for &name in names {
+            if name == 0 || self.named.remove(&name).is_none() {
+                continue;
+            }
+            for unit in &mut self.bindings {
+                for b in unit.iter_mut().filter(|b| **b == name) {
+                    *b = 0;
+                }
+            }
+        }
+    }
+
+    /// Whether `name` names an object (generated names count once bound).
+    pub fn is_texture(&self, name: u32) -> bool {
+        matches!(self.named.get(&name), Some(Some(_)))
+    }
+
+    /// Whether `name` was generated or bound (`glAreTexturesResident` and
+    /// `glPrioritizeTextures` accept exactly these).
+    pub(crate) fn exists(&self, name: u32) -> bool {
+        name != 0 && self.named.contains_key(&name)
+    }
+
+    /// The object `name` (`None` for a name without an object).
+    pub fn object(&self, name: u32) -> Option<&TextureObject> {
+        self.named.get(&name)?.as_ref()
+    }
+
+    pub(crate) fn object_mut(&mut self, name: u32) -> Option<&mut TextureObject> {
+        self.named.get_mut(&name)?.as_mut()
+    }
+
+    /// The name bound to `target` on `unit`.
+    pub fn binding(&self, unit: usize, target: TexTarget) -> u32 {
+        self.bindings.get(unit).map_or(0, |b| b[index(target)])
+    }
+
+    /// The object bound to `target` on `unit` (the default texture for 0).
+    pub fn bound(&self, unit: usize, target: TexTarget) -> &TextureObject {
+        let name = self.binding(unit, target);
+        self.object(name).unwrap_or(&self.defaults[index(target)])
+    }
+
+    /// The object bound to `target` on the active unit.
+    pub(crate) fn current_mut(&mut self, target: TexTarget) -> &mut TextureObject {
+        let name = self.binding(self.active, target);
+        match self.named.get_mut(&name) {
+            Some(Some(obj)) => obj,
+            _ => &mut self.defaults[index(target)],
+        }
+    }
+
+    pub(crate) fn proxy(&self, target: TexTarget) -> &TextureObject {
+        &self.proxies[index(target)]
+    }
+
+    pub(crate) fn proxy_mut(&mut self, target: TexTarget) -> &mut TextureObject {
+        &mut self.proxies[index(target)]
+    }
+
+    /// What the draw needs of `target` on `unit`: `None` when the bound
+    /// texture is incomplete.
+    pub fn sampling(&self, unit: usize, target: TexTarget) -> Option<Sampling<'_>> {
+        let obj = self.bound(unit, target);
+        let last = obj.complete()?;
+        let base = obj.base_image()?;
+        let p = &obj.params;
+        let storage = base.internal.storage();
+        let wrap = match target {
+            TexTarget::D1 => [p.wrap[0], Wrap::Repeat, Wrap::Repeat],
+            TexTarget::D2 | TexTarget::Cube => [p.wrap[0], p.wrap[1], Wrap::Repeat],
+            TexTarget::D3 => p.wrap,
+        };
+        let key = SamplerKey {
+            target,
+            format: storage.texel_format(),
+            min: p.min,
+            mip: p.mip,
+            mag: p.mag,
+            wrap,
+            compare: (p.compare && storage.base == BaseFormat::Depth).then_some(p.compare_func),
+            depth_mode: p.depth_mode,
+        };
+        let faces = obj.faces();
+        let images = obj.images[..(last + 1) * faces]
+            .iter()
+            .map(|i| match i {
+                Some(i) => Image {
+                    texels: &i.texels,
+                    width: i.width,
+                    height: i.height,
+                    depth: i.depth,
+                },
+                None => Image::EMPTY,
+            })
+            .collect();
+        Some(Sampling {
+            key,
+            base: storage.base,
+            images,
+            base_level: p.base_level as u32,
+            max_level: last as u32,
+            // As gallium's sampler state holds them (`main/texparam.c`): no negative minimum.
+            min_lod: p.min_lod.max(0.0),
+            max_lod: p.max_lod,
+            lod_bias: quantize_lod_bias(p.lod_bias),
+            border: border_for_base(p.border, storage.base),
+        })
+    }
+}
+
+/// A LOD bias as gallium's sampler state holds it (`util/u_math.h`
+/// `util_quantize_lod_bias`: clamped to ±16, rounded to 1/256). Mesa
+/// quantizes the object's bias and the unit's (`LodBiasQuantized`) apart.
+pub fn quantize_lod_bias(bias: f32) -> f32 {
+    (bias.clamp(-16.0, 16.0) * 256.0).round() / 256.0
+}
+
+/// The border colour as the sampler sees it for a base format (Mesa
+/// `state_tracker/st_format.c` `st_translate_color`).
+pub fn border_for_base(c: [f32; 4], base: BaseFormat) -> [f32; 4] {
+    match base {
+        BaseFormat::Alpha => [0.0, 0.0, 0.0, c[3]],
+        BaseFormat::Luminance => [c[0], c[0], c[0], 1.0],
+        BaseFormat::LuminanceAlpha => [c[0], c[0], c[0], c[3]],
+        BaseFormat::Intensity => [c[0]; 4],
+        BaseFormat::Rgb => [c[0], c[1], c[2], 1.0],
+        BaseFormat::Rgba | BaseFormat::Depth => c,
+    }
+}
+
+/// A complete unit's texture for one draw: the key parts and views of its texels.
+#[derive(Clone, Debug)]
+pub struct Sampling<'a> {
+    pub key: SamplerKey,
+    pub base: BaseFormat,
+    /// Level `l`, face `f` at `l * faces + f`, up to `max_level`; missing levels are empty.
+    pub images: Vec<Image<'a>>,
+    pub base_level: u32,
+    pub max_level: u32,
+    pub min_lod: f32,
+    pub max_lod: f32,
+    /// The object's GL_TEXTURE_LOD_BIAS, quantized ([`quantize_lod_bias`]); the
+    /// unit's is added by [`Sampling::texture_ref`].
+    pub lod_bias: f32,
+    pub border: [f32; 4],
+}
+
+impl Sampling<'_> {
+    /// The sampler's view, with the unit's LOD bias (`GL_TEXTURE_FILTER_CONTROL`,
+    /// quantized by the caller with [`quantize_lod_bias`]) added.
+    pub fn texture_ref(&self, unit_lod_bias: f32) -> TextureRef<'_> {
+        TextureRef {
+            images: &self.images,
+            base_level: self.base_level,
+            max_level: self.max_level,
+            min_lod: self.min_lod,
+            max_lod: self.max_lod,
+            lod_bias: self.lod_bias + unit_lod_bias,
+            border: self.border,
+        }
+    }
+}
