@@ -224,12 +224,7 @@ impl Rec {
         size: [i32; 3],
         texels: &[u8],
     ) -> &mut Self {
-        let components = match format {
-            PixelFormat::Rgba => 4,
-            PixelFormat::Rgb => 3,
-            PixelFormat::LuminanceAlpha => 2,
-            PixelFormat::Luminance | PixelFormat::Alpha | PixelFormat::DepthComponent => 1,
-        };
+        let components = format.components().len();
         let row = size[0] as usize * components;
         let padded = row.div_ceil(4) * 4;
         let mut pixels = Vec::with_capacity(padded * texels.len() / row.max(1));

@@ -1,140 +1,14 @@
-//! The texturing names of issue 12's contract (`/work/issue12-contract.md`),
-//! standing in until softgl's texture API (branches `store`, `pipe`) is
-//! merged: then this file becomes one `pub use softgl::{...}` line and the
-//! scenes do not change. Each type's GL value is in [`ToGl`].
+//! The texturing names of issue 12's contract (`/work/issue12-contract.md`):
+//! softgl's (store's) texture objects and uploads, re-exported; the texture
+//! unit names (pipe's `TexEnvParam`, `TexCoordName`, `TexGenMode`,
+//! `TexGenParam`) standing in until pipe's branch is merged, when they become
+//! re-exports too. GL values: softgl's [`softgl::GlEnum`] where it has them,
+//! [`ToGl`] for the rest.
 
-/// `GL_TEXTURE_1D`, `_2D`, `_3D`, `_CUBE_MAP`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum TextureTarget {
-    D1,
-    D2,
-    D3,
-    Cube,
-}
-
-/// Where an image goes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum TexImageTarget {
-    D1,
-    D2,
-    D3,
-    /// 0..6: +X −X +Y −Y +Z −Z.
-    CubeFace(u8),
-    Proxy(TextureTarget),
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum InternalFormat {
-    Alpha,
-    Luminance,
-    LuminanceAlpha,
-    Intensity,
-    Rgb,
-    Rgba,
-    DepthComponent,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum PixelFormat {
-    Rgba,
-    Rgb,
-    Luminance,
-    LuminanceAlpha,
-    Alpha,
-    DepthComponent,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum PixelType {
-    UnsignedByte,
-    Float,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Filter {
-    Nearest,
-    Linear,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum MipFilter {
-    None,
-    Nearest,
-    Linear,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Wrap {
-    Repeat,
-    Clamp,
-    ClampToEdge,
-    ClampToBorder,
-    MirroredRepeat,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum DepthMode {
-    Luminance,
-    Intensity,
-    Alpha,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum TexParam {
-    MinFilter(Filter, MipFilter),
-    MagFilter(Filter),
-    WrapS(Wrap),
-    WrapT(Wrap),
-    WrapR(Wrap),
-    BorderColor([f32; 4]),
-    MinLod(f32),
-    MaxLod(f32),
-    BaseLevel(i32),
-    MaxLevel(i32),
-    LodBias(f32),
-    CompareMode(bool),
-    CompareFunc(softgl::CompareFunc),
-    DepthMode(DepthMode),
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum EnvMode {
-    Modulate,
-    Replace,
-    Decal,
-    Blend,
-    Add,
-    Combine,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CombineFn {
-    Replace,
-    Modulate,
-    Add,
-    AddSigned,
-    Interpolate,
-    Subtract,
-    Dot3Rgb,
-    Dot3Rgba,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CombineSrc {
-    Texture,
-    TextureUnit(u8),
-    Constant,
-    PrimaryColor,
-    Previous,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Operand {
-    SrcColor,
-    OneMinusSrcColor,
-    SrcAlpha,
-    OneMinusSrcAlpha,
-}
+pub use softgl::{
+    CombineFn, CombineSrc, DepthMode, EnvMode, Filter, InternalFormat, MipFilter, Operand, PixelFormat, PixelType,
+    TexImageTarget, TexParam, TextureTarget, Wrap,
+};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TexEnvParam {
@@ -186,90 +60,6 @@ pub enum TexCapability {
 /// The GL value of a name (`softgl::GlEnum::to_gl` once softgl has them).
 pub trait ToGl {
     fn to_gl(self) -> u32;
-}
-
-impl ToGl for TextureTarget {
-    fn to_gl(self) -> u32 {
-        match self {
-            TextureTarget::D1 => 0x0DE0,
-            TextureTarget::D2 => 0x0DE1,
-            TextureTarget::D3 => 0x806F,
-            TextureTarget::Cube => 0x8513,
-        }
-    }
-}
-
-impl ToGl for TexImageTarget {
-    fn to_gl(self) -> u32 {
-        match self {
-            TexImageTarget::D1 => 0x0DE0,
-            TexImageTarget::D2 => 0x0DE1,
-            TexImageTarget::D3 => 0x806F,
-            TexImageTarget::CubeFace(f) => 0x8515 + u32::from(f),
-            TexImageTarget::Proxy(TextureTarget::D1) => 0x8063,
-            TexImageTarget::Proxy(TextureTarget::D2) => 0x8064,
-            TexImageTarget::Proxy(TextureTarget::D3) => 0x8070,
-            TexImageTarget::Proxy(TextureTarget::Cube) => 0x851B,
-        }
-    }
-}
-
-impl ToGl for InternalFormat {
-    fn to_gl(self) -> u32 {
-        match self {
-            InternalFormat::Alpha => 0x1906,
-            InternalFormat::Luminance => 0x1909,
-            InternalFormat::LuminanceAlpha => 0x190A,
-            InternalFormat::Intensity => 0x8049,
-            InternalFormat::Rgb => 0x1907,
-            InternalFormat::Rgba => 0x1908,
-            InternalFormat::DepthComponent => 0x1902,
-        }
-    }
-}
-
-impl ToGl for PixelFormat {
-    fn to_gl(self) -> u32 {
-        match self {
-            PixelFormat::Rgba => 0x1908,
-            PixelFormat::Rgb => 0x1907,
-            PixelFormat::Luminance => 0x1909,
-            PixelFormat::LuminanceAlpha => 0x190A,
-            PixelFormat::Alpha => 0x1906,
-            PixelFormat::DepthComponent => 0x1902,
-        }
-    }
-}
-
-impl ToGl for PixelType {
-    fn to_gl(self) -> u32 {
-        match self {
-            PixelType::UnsignedByte => 0x1401,
-            PixelType::Float => 0x1406,
-        }
-    }
-}
-
-impl ToGl for Wrap {
-    fn to_gl(self) -> u32 {
-        match self {
-            Wrap::Repeat => 0x2901,
-            Wrap::Clamp => 0x2900,
-            Wrap::ClampToEdge => 0x812F,
-            Wrap::ClampToBorder => 0x812D,
-            Wrap::MirroredRepeat => 0x8370,
-        }
-    }
-}
-
-impl ToGl for DepthMode {
-    fn to_gl(self) -> u32 {
-        match self {
-            DepthMode::Luminance => 0x1909,
-            DepthMode::Intensity => 0x8049,
-            DepthMode::Alpha => 0x1906,
-        }
-    }
 }
 
 impl ToGl for EnvMode {
@@ -349,7 +139,7 @@ impl ToGl for TexGenMode {
 impl ToGl for TexCapability {
     fn to_gl(self) -> u32 {
         match self {
-            TexCapability::Texture(t) => t.to_gl(),
+            TexCapability::Texture(t) => softgl::GlEnum::to_gl(t),
             // GL_TEXTURE_GEN_S..Q
             TexCapability::TexGen(c) => 0x0C60 + c.to_gl() - 0x2000,
         }

@@ -422,6 +422,10 @@ impl Context<'_> {
                         TexParam::CompareMode(on) => int(0x884C, if *on { 0x884E } else { 0 }),
                         TexParam::CompareFunc(f) => int(0x884D, f.to_gl()),
                         TexParam::DepthMode(m) => int(0x884B, m.to_gl()),
+                        TexParam::Priority(v) => (g.glTexParameterf)(t, 0x8066, *v),
+                        TexParam::GenerateMipmap(on) => int(0x8191, u32::from(*on)),
+                        // Query only: GL_INVALID_ENUM in Mesa too.
+                        TexParam::Resident(_) => int(0x8067, 1),
                     }
                 }
                 Call::TexEnv(p) => {

@@ -157,16 +157,31 @@ pub fn replay(gl: &mut Context, c: &Call) -> GlResult {
         Call::Material(f, p) => gl.material(*f, *p),
         Call::ColorMaterial(f, m) => gl.color_material(*f, *m),
         Call::ClipPlane(i, p) => gl.clip_plane(*i, *p),
-        // softgl's texture API (issue 12) is not merged yet: GL's answer for
-        // an entry point it does not have.
-        Call::TexEnable(..)
-        | Call::ActiveTexture(_)
-        | Call::BindTexture(..)
-        | Call::TexImage { .. }
-        | Call::TexParameter(..)
-        | Call::TexEnv(_)
-        | Call::TexGen(..)
-        | Call::TexCoord(..) => Err(softgl::GlError::InvalidOperation),
+        Call::ActiveTexture(u) => gl.active_texture(*u),
+        Call::BindTexture(t, name) => gl.bind_texture(*t, *name),
+        Call::TexImage {
+            target,
+            level,
+            internal,
+            size,
+            format,
+            ty,
+            pixels,
+        } => {
+            let data = softgl::PixelData {
+                format: *format,
+                ty: *ty,
+                store: softgl::PixelStore::default(),
+                bytes: pixels,
+            };
+            gl.tex_image(*target, *level, *internal, *size, 0, Some(data))
+        }
+        Call::TexParameter(t, p) => gl.tex_parameter(*t, *p),
+        // softgl's texture units (issue 12, pipe) are not merged yet: GL's
+        // answer for an entry point it does not have.
+        Call::TexEnable(..) | Call::TexEnv(_) | Call::TexGen(..) | Call::TexCoord(..) => {
+            Err(softgl::GlError::InvalidOperation)
+        }
         Call::DrawArrays {
             mode,
             positions,
