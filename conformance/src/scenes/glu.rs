@@ -5,7 +5,10 @@
 //! halved level by level by `halveImage_ubyte` (2x2 average rounded up from
 //! .5; a one-texel-wide image averages pairs, truncated). The scenes upload
 //! these levels themselves, so every back end gets the same texels; GLU's own
-//! path is tested by the OSMesa C clients.
+//! path is tested by the OSMesa C clients. Checked 2026-11-23 against Debian's
+//! libGLU 9.0.2 (`gluBuild2DMipmaps` on Mesa, then `glGetTexImage` of every
+//! level): byte-identical for RGBA images of 200x90, 4096x1, 1x100, 37x13,
+//! 100x60 and 3x5.
 
 /// One level: width, height, texels (`components` bytes each, rows tight).
 pub type Level = (usize, usize, Vec<u8>);
