@@ -19,7 +19,11 @@ use crate::matrix::{self, MatrixMode, MatrixStack};
 use crate::state::{
     Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, RasterState, ShadeModel, WindowRect,
 };
+use crate::texture::texgen::TexCoordStage;
+use crate::texture::unit::{TexturePlan, TextureUnits};
+use crate::texture::TextureStore;
 use glam::{Mat4, Vec3, Vec4};
+use softgl_jit::texture::MAX_UNITS;
 use softgl_jit::{
     BlendEquation, BlendFactor, BlendKey, CacheStats, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
     ShadeKey, SpecialistCache, Stage, StencilOp,
@@ -90,6 +94,8 @@ pub struct VertexArrays<'a> {
     pub fog_coord: Option<AttribArray<'a>>,
     /// `glEdgeFlagPointer`: 1 component, 0 for a non-boundary edge.
     pub edge_flag: Option<AttribArray<'a>>,
+    /// `glTexCoordPointer` per unit (`glClientActiveTexture`): 1 to 4 components.
+    pub tex_coords: [Option<AttribArray<'a>>; MAX_UNITS],
 }
 
 impl<'a> VertexArrays<'a> {
@@ -102,6 +108,7 @@ impl<'a> VertexArrays<'a> {
             secondary: None,
             fog_coord: None,
             edge_flag: None,
+            tex_coords: [None; MAX_UNITS],
         }
     }
 
@@ -111,6 +118,12 @@ impl<'a> VertexArrays<'a> {
             color: Some(AttribArray::new(color_size, color)),
             ..VertexArrays::positions(pos_size, pos)
         }
+    }
+
+    /// The same arrays with unit `unit`'s texture coordinates (`size` floats each).
+    pub fn with_tex_coords(mut self, unit: usize, size: usize, coords: &'a [f32]) -> VertexArrays<'a> {
+        self.tex_coords[unit] = Some(AttribArray::new(size, coords));
+        self
     }
 
     /// The same arrays with per-vertex normals (3 floats each).
@@ -138,6 +151,10 @@ impl<'a> VertexArrays<'a> {
         if let Some(n) = &self.normal {
             n.check(3..=3)?;
             len = len.min(n.len());
+        }
+        for t in self.tex_coords.iter().flatten() {
+            t.check(1..=4)?;
+            len = len.min(t.len());
         }
         Ok(len)
     }
@@ -174,8 +191,16 @@ impl Indices<'_> {
     }
 }
 
-/// Vertex `i` of `arrays`, attributes without an array taking `current`'s.
-fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVertex {
+/// Vertex `i` of `arrays`, attributes without an array taking `current`'s;
+/// texture coordinates only for the units in `units` (bit `u`), the draw's
+/// sampling units.
+fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs, units: u8) -> InVertex {
+    let mut tex = [Vec4::W; MAX_UNITS];
+    for (u, t) in tex.iter_mut().enumerate() {
+        if units & (1 << u) != 0 {
+            *t = arrays.tex_coords[u].map_or(current.tex_coords[u], |a| a.get(i, Vec4::W));
+        }
+    }
     InVertex {
         pos: arrays.position.get(i, Vec4::W),
         color: arrays.color.map_or(current.color, |c| c.get(i, Vec4::W)),
@@ -188,6 +213,7 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVer
             .edge_flag
             .map_or(current.edge_flag, |e| e.get(i, Vec4::ONE).x != 0.0),
         material: 0,
+        tex,
     }
 }
 
@@ -197,7 +223,8 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVer
 pub struct CurrentAttribs {
     pub color: Vec4,
     pub normal: Vec3,
-    pub tex_coord: Vec4,
+    /// `glMultiTexCoord` per unit (`glTexCoord`: unit 0).
+    pub tex_coords: [Vec4; MAX_UNITS],
     /// RGB and 1 (GL 1.4's initial `(0, 0, 0, 1)`).
     pub secondary: Vec4,
     pub fog_coord: f32,
@@ -218,8 +245,43 @@ impl CurrentAttribs {
             normal: self.normal,
             edge: self.edge_flag,
             material: 0,
+            tex: self.tex_coords,
         }
     }
+}
+
+/// The fragment key, the varying layout and the textures of a draw made now
+/// with `state` into `fb`: the key's shading stage interpolates what the
+/// layout carries; texture units take part only when a stage reads the
+/// fragment colour. (A function of the fields, so that the draw can borrow
+/// the textures while it compiles a specialist.)
+fn plan<'a>(
+    state: &RasterState,
+    fb: &Framebuffer,
+    ordered_dither: bool,
+    (units, store): (&TextureUnits, &'a TextureStore),
+) -> (FragmentKey, VaryingLayout, TexturePlan<'a>) {
+    let mut key = state.fragment_key(fb, ordered_dither);
+    let reads_color = key
+        .stages()
+        .as_slice()
+        .iter()
+        .any(|s| matches!(s, Stage::Pack { .. } | Stage::AlphaTest(_)));
+    let mut layout = state.varying_layout(reads_color);
+    let textures = match reads_color {
+        true => units.plan(store),
+        false => TexturePlan::default(),
+    };
+    layout.tex = textures.mask;
+    key.shade = Some(ShadeKey {
+        color: layout.color,
+        flat: layout.color && state.shade_model == ShadeModel::Flat,
+        color_sum: layout.secondary,
+        fog: layout.fog.then_some(state.fog.mode),
+        depth: key.depth.is_some() && key.depth_format != Some(DepthFormat::D32),
+        tex: textures.keys,
+    });
+    (key, layout, textures)
 }
 
 /// A primitive between `begin` and `end`.
@@ -243,9 +305,10 @@ pub struct Context {
     state: RasterState,
     modelview: MatrixStack,
     projection: MatrixStack,
-    texture: MatrixStack,
     matrix_mode: MatrixMode,
-    current: CurrentAttribs,
+    pub(crate) current: CurrentAttribs,
+    /// Texture units: enables, environment, generation, matrices.
+    pub(crate) tex_units: TextureUnits,
     /// The primitive between `begin` and `end`.
     begun: Option<Begun>,
     error: Option<GlError>,
@@ -272,12 +335,12 @@ impl Context {
             fb,
             modelview: MatrixStack::new(matrix::MAX_MODELVIEW_DEPTH),
             projection: MatrixStack::new(matrix::MAX_PROJECTION_DEPTH),
-            texture: MatrixStack::new(matrix::MAX_TEXTURE_DEPTH),
             matrix_mode: MatrixMode::Modelview,
+            tex_units: TextureUnits::default(),
             current: CurrentAttribs {
                 color: Vec4::ONE,
                 normal: Vec3::Z,
-                tex_coord: Vec4::W,
+                tex_coords: [Vec4::W; MAX_UNITS],
                 secondary: Vec4::W,
                 fog_coord: 0.0,
                 index: 1.0,
@@ -371,7 +434,7 @@ impl Context {
     }
 
     /// Records `r`'s error (if none is pending) and passes `r` on.
-    fn record<T>(&mut self, r: GlResult<T>) -> GlResult<T> {
+    pub(crate) fn record<T>(&mut self, r: GlResult<T>) -> GlResult<T> {
         if let Err(e) = &r {
             self.error.get_or_insert(*e);
         }
@@ -379,7 +442,7 @@ impl Context {
     }
 
     /// Most calls are errors between `begin` and `end`.
-    fn outside(&mut self) -> GlResult {
+    pub(crate) fn outside(&mut self) -> GlResult {
         let r = if self.begun.is_some() {
             Err(GlError::InvalidOperation)
         } else {
@@ -408,9 +471,15 @@ impl Context {
     pub fn enable(&mut self, cap: Capability) -> GlResult {
         self.outside()?;
         self.record(if cap.valid() { Ok(()) } else { Err(GlError::InvalidEnum) })?;
+        if let Some(f) = self.texture_flag_mut(cap) {
+            *f = true;
+            return Ok(());
+        }
         let color = self.current.color;
         self.set(|s| {
-            *s.flag_mut(cap) = true;
+            if let Some(f) = s.flag_mut(cap) {
+                *f = true;
+            }
             if cap == Capability::ColorMaterial {
                 s.lighting.track_color(color);
             }
@@ -420,11 +489,20 @@ impl Context {
     pub fn disable(&mut self, cap: Capability) -> GlResult {
         self.outside()?;
         self.record(if cap.valid() { Ok(()) } else { Err(GlError::InvalidEnum) })?;
-        self.set(|s| *s.flag_mut(cap) = false)
+        if let Some(f) = self.texture_flag_mut(cap) {
+            *f = false;
+            return Ok(());
+        }
+        self.set(|s| {
+            if let Some(f) = s.flag_mut(cap) {
+                *f = false;
+            }
+        })
     }
 
+    /// `glIsEnabled`; texture capabilities are the active unit's.
     pub fn is_enabled(&self, cap: Capability) -> bool {
-        self.state.flag(cap)
+        self.texture_flag(cap).unwrap_or_else(|| self.state.flag(cap))
     }
 
     // ----- clearing, viewport -----
@@ -498,30 +576,31 @@ impl Context {
     }
 
     fn stack(&mut self) -> &mut MatrixStack {
+        let unit = self.active_texture_unit();
         match self.matrix_mode {
             MatrixMode::Modelview => &mut self.modelview,
             MatrixMode::Projection => &mut self.projection,
-            MatrixMode::Texture => &mut self.texture,
+            MatrixMode::Texture => self.tex_units.matrix_stack_mut(unit),
         }
     }
 
-    /// The top of `mode`'s stack.
-    pub fn matrix(&self, mode: MatrixMode) -> Mat4 {
-        *match mode {
+    /// `mode`'s stack; `Texture` is the active unit's.
+    fn stack_of(&self, mode: MatrixMode) -> &MatrixStack {
+        match mode {
             MatrixMode::Modelview => &self.modelview,
             MatrixMode::Projection => &self.projection,
-            MatrixMode::Texture => &self.texture,
+            MatrixMode::Texture => self.tex_units.matrix_stack(self.active_texture_unit()),
         }
-        .top()
     }
 
-    /// The depth of `mode`'s stack.
+    /// The top of `mode`'s stack (`Texture`: the active unit's).
+    pub fn matrix(&self, mode: MatrixMode) -> Mat4 {
+        *self.stack_of(mode).top()
+    }
+
+    /// The depth of `mode`'s stack (`Texture`: the active unit's).
     pub fn matrix_depth(&self, mode: MatrixMode) -> usize {
-        match mode {
-            MatrixMode::Modelview => self.modelview.depth(),
-            MatrixMode::Projection => self.projection.depth(),
-            MatrixMode::Texture => self.texture.depth(),
-        }
+        self.stack_of(mode).depth()
     }
 
     pub fn push_matrix(&mut self) -> GlResult {
@@ -752,7 +831,8 @@ impl Context {
         if materials.is_empty() || !self.state.lighting.enabled {
             return Vec::new();
         }
-        let base = LightSetup::new(&self.state.lighting, self.modelview.top());
+        let eye_coords = self.tex_units.need_eye_coords(self.draw_plan().1.tex);
+        let base = LightSetup::with_eye_coords(&self.state.lighting, self.modelview.top(), eye_coords);
         materials
             .iter()
             .map(|m| base.with_materials(&self.state.lighting, m, shininess_varies))
@@ -900,9 +980,9 @@ impl Context {
         &self.state.fog
     }
 
-    /// `glTexCoord4f`: kept as current state for texturing.
+    /// `glTexCoord4f`: unit 0's current texture coordinates.
     pub fn tex_coord4(&mut self, s: f32, t: f32, r: f32, q: f32) {
-        self.current.tex_coord = Vec4::new(s, t, r, q);
+        self.tex_coord([s, t, r, q]);
     }
 
     pub fn tex_coord2(&mut self, s: f32, t: f32) {
@@ -923,11 +1003,11 @@ impl Context {
         let len = self.record(arrays.check())?;
         let end = first.checked_add(count).filter(|&e| e <= len);
         self.require(end.is_some())?;
-        let current = self.current;
+        let (current, units) = (self.current, self.tex_units.enabled_mask());
         let source = DrawSource::Arrays {
             per_vertex_color: arrays.color.is_some(),
         };
-        self.draw((mode, source), count, &|i| fetch(arrays, first + i, &current))
+        self.draw((mode, source), count, &|i| fetch(arrays, first + i, &current, units))
     }
 
     /// `glDrawElements`: the vertices of `arrays` that `indices` name, in order.
@@ -936,9 +1016,11 @@ impl Context {
         self.outside()?;
         let len = self.record(arrays.check())?;
         self.require(indices.iter().all(|i| i < len))?;
-        let current = self.current;
+        let (current, units) = (self.current, self.tex_units.enabled_mask());
         let source = (mode, DrawSource::Elements);
-        self.draw(source, indices.len(), &|k| fetch(arrays, indices.get(k), &current))
+        self.draw(source, indices.len(), &|k| {
+            fetch(arrays, indices.get(k), &current, units)
+        })
     }
 
     // ----- drawing -----
@@ -947,22 +1029,16 @@ impl Context {
     /// both decided from the current state: the key's shading stage
     /// interpolates what the layout carries.
     pub fn draw_plan(&self) -> (FragmentKey, VaryingLayout) {
-        let mut key = self.state.fragment_key(&self.fb, self.ordered_dither);
-        let reads_color = key
-            .stages()
-            .as_slice()
-            .iter()
-            .any(|s| matches!(s, Stage::Pack { .. } | Stage::AlphaTest(_)));
-        let layout = self.state.varying_layout(reads_color);
-        key.shade = Some(ShadeKey {
-            color: layout.color,
-            flat: layout.color && self.state.shade_model == ShadeModel::Flat,
-            color_sum: layout.secondary,
-            fog: layout.fog.then_some(self.state.fog.mode),
-            depth: key.depth.is_some() && key.depth_format != Some(DepthFormat::D32),
-            ..ShadeKey::default()
-        });
+        let (key, layout, _) = self.draw_plan_textured();
         (key, layout)
+    }
+
+    /// [`Context::draw_plan`] with the textures the draw samples: the units
+    /// with an enabled target whose texture is complete, when a stage reads
+    /// the fragment colour.
+    fn draw_plan_textured(&self) -> (FragmentKey, VaryingLayout, TexturePlan<'_>) {
+        let textures = (&self.tex_units, &self.textures);
+        plan(&self.state, &self.fb, self.ordered_dither, textures)
     }
 
     fn draw(&mut self, mode: (PrimitiveMode, DrawSource), count: usize, fetch: &dyn Fn(usize) -> InVertex) -> GlResult {
@@ -977,27 +1053,32 @@ impl Context {
         fetch: &dyn Fn(usize) -> InVertex,
         vertex_materials: &[LightSetup],
     ) -> GlResult {
-        let (key, layout) = self.draw_plan();
+        let textures = (&self.tex_units, &self.textures);
+        let (key, layout, textures) = plan(&self.state, &self.fb, self.ordered_dither, textures);
         let uniforms = self.state.fragment_uniforms();
         let reads_depth = key.depth.is_some();
-        let mut vertex_stage = VertexStage::new(*self.projection.top() * *self.modelview.top(), layout);
+        let mv = self.modelview.top();
+        let mut vertex_stage = VertexStage::new(*self.projection.top() * *mv, layout);
         if self.state.fog.coord_src == FogCoordSrc::FragmentDepth {
-            vertex_stage.fog = FogSource::EyeDepth {
-                row: self.modelview.top().row(2),
-            };
+            vertex_stage.fog = FogSource::EyeDepth { row: mv.row(2) };
         }
         let lit = layout.color || layout.secondary;
-        if self.state.lighting.enabled && lit {
-            vertex_stage.lighting = Some(LightSetup::new(&self.state.lighting, self.modelview.top()));
+        let lighting = &self.state.lighting;
+        let eye_coords = self.tex_units.need_eye_coords(layout.tex);
+        if lighting.enabled && lit {
+            vertex_stage.lighting = Some(LightSetup::with_eye_coords(lighting, mv, eye_coords));
             vertex_stage.vertex_materials = vertex_materials;
         }
+        let tex_coords = TexCoordStage::new(&self.tex_units, &layout, mv, lighting);
+        vertex_stage.tex_coords = tex_coords.as_ref();
         let mut geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
         geometry.set_user_planes(self.projection.top());
         let specialist = match self.backend {
             Backend::Jit => self.specialists.get(&key),
             Backend::Interpreter => None,
         };
-        let r = FragmentStage::new(key, uniforms, self.fb.target(), specialist).and_then(|mut stage| {
+        let set = textures.set();
+        let r = FragmentStage::new(key, uniforms, &set, self.fb.target(), specialist).and_then(|mut stage| {
             geometry.draw(&vertex_stage, mode, count, fetch, &mut stage);
             stage.finish()
         });

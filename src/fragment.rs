@@ -2,9 +2,8 @@
 //! to the back end for the draw's key.
 
 use crate::raster::SpanSink;
-use softgl_jit::{
-    interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target, TextureSet,
-};
+use softgl_jit::texture::TextureSet;
+use softgl_jit::{interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target};
 
 /// Spans handed to the back end at once.
 const BATCH: usize = 32;
@@ -42,6 +41,8 @@ pub struct FragmentStage<'t> {
     specialist: Option<&'t Specialist>,
     key: FragmentKey,
     uniforms: FragmentUniforms,
+    /// The textures the key's units sample.
+    textures: TextureSet<'t>,
     target: Target<'t>,
     /// Spans `..count` are the batch's; the storage is reused.
     batch: Vec<FragmentSpan>,
@@ -50,17 +51,22 @@ pub struct FragmentStage<'t> {
     /// a shading stage, or one leaving them to the span).
     span_color: bool,
     span_z: bool,
-    /// The planes of the batch's primitives; the last is the current one's.
+    /// The planes of the batch's primitives, `..planes_len`; the last is the
+    /// current one's. The storage is reused: a primitive writes the slots it
+    /// uses over whatever an earlier one left.
     planes: Vec<Planes>,
+    planes_len: usize,
     error: Option<FragmentError>,
 }
 
 impl<'t> FragmentStage<'t> {
-    /// A stage for `key`, checked against `target` once here. `specialist`, if
-    /// given, must have been compiled for `key`; without one the interpreter runs.
+    /// A stage for `key`, checked against `target` once here, sampling
+    /// `textures`. `specialist`, if given, must have been compiled for `key`;
+    /// without one the interpreter runs.
     pub fn new(
         key: FragmentKey,
         uniforms: FragmentUniforms,
+        textures: &TextureSet<'t>,
         target: Target<'t>,
         specialist: Option<&'t Specialist>,
     ) -> Result<Self, FragmentError> {
@@ -72,9 +78,11 @@ impl<'t> FragmentStage<'t> {
             count: 0,
             key,
             uniforms,
+            textures: *textures,
             target,
             batch: Vec::with_capacity(BATCH),
             planes: Vec::with_capacity(BATCH),
+            planes_len: 0,
             error: None,
         })
     }
@@ -84,15 +92,15 @@ impl<'t> FragmentStage<'t> {
             return;
         }
         let spans = &self.batch[..self.count];
-        let textures = TextureSet::default();
+        let planes = &self.planes[..self.planes_len];
         let r = match self.specialist {
-            Some(s) => s.run_with_planes(&self.uniforms, &textures, spans, &self.planes, &mut self.target),
+            Some(s) => s.run_with_planes(&self.uniforms, &self.textures, spans, planes, &mut self.target),
             None => interp::run_with_planes(
                 &self.key,
                 &self.uniforms,
-                &textures,
+                &self.textures,
                 spans,
-                &self.planes,
+                planes,
                 &mut self.target,
             ),
         };
@@ -101,8 +109,10 @@ impl<'t> FragmentStage<'t> {
         }
         self.count = 0;
         // The current primitive's planes stay, as planes 0, for its next spans.
-        let last = self.planes.len().saturating_sub(1);
-        self.planes.drain(..last);
+        if self.planes_len > 0 {
+            self.planes.swap(0, self.planes_len - 1);
+            self.planes_len = 1;
+        }
     }
 
     /// Runs what is left and reports the first error, if any.
@@ -123,7 +133,7 @@ impl SpanSink for FragmentStage<'_> {
         // Only what the stages read is copied: with planes, the header.
         let s = &mut self.batch[self.count];
         (s.x, s.y, s.len, s.mask) = (span.x, span.y, span.len, span.mask);
-        s.planes = self.planes.len().saturating_sub(1) as u32;
+        s.planes = self.planes_len.saturating_sub(1) as u32;
         if self.span_color {
             (s.r, s.g, s.b, s.a) = (span.r, span.g, span.b, span.a);
         }
@@ -136,10 +146,14 @@ impl SpanSink for FragmentStage<'_> {
         }
     }
 
-    fn planes(&mut self, planes: &Planes) {
-        if self.planes.len() == BATCH {
+    fn planes_mut(&mut self) -> Option<&mut Planes> {
+        if self.planes_len == BATCH {
             self.flush();
         }
-        self.planes.push(*planes);
+        if self.planes_len == self.planes.len() {
+            self.planes.push(Planes::default());
+        }
+        self.planes_len += 1;
+        Some(&mut self.planes[self.planes_len - 1])
     }
 }

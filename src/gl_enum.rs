@@ -11,6 +11,8 @@ use crate::fog::{FogCoordSrc, FogMode};
 use crate::lighting::{ColorControl, ColorMaterialMode, LightParamName, MaterialParamName};
 use crate::matrix::MatrixMode;
 use crate::state::{Capability, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};
+use crate::texture::unit::{TexCoordName, TexGenMode};
+use softgl_jit::texture::{CombineFn, CombineSrc, EnvMode, Operand};
 use softgl_jit::{BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilOp};
 
 /// A softgl type that stands for a set of GL enumerants.
@@ -32,14 +34,14 @@ pub trait GlEnum: Copy + Eq + std::fmt::Debug + 'static {
 }
 
 macro_rules! gl_enums {
-    ($($ty:ident { $($variant:ident $(($arg:literal))? = $name:ident $value:literal,)* })*) => {
+    ($($ty:ident { $($variant:ident $(($($arg:tt)+))? = $name:ident $value:literal,)* })*) => {
         $(
             impl GlEnum for $ty {
                 const TABLE: &'static [(Self, &'static str, u32)] =
-                    &[$(($ty::$variant $(($arg))?, stringify!($name), $value)),*];
+                    &[$(($ty::$variant $(($($arg)+))?, stringify!($name), $value)),*];
                 fn to_gl(self) -> u32 {
                     match self {
-                        $($ty::$variant $(($arg))? => $value,)*
+                        $($ty::$variant $(($($arg)+))? => $value,)*
                         // Still exhaustive over the variants: a tuple variant
                         // (`Light(8)`) outside its listed values has no GL value.
                         $(#[allow(unreachable_patterns)] $ty::$variant { .. } => 0,)*
@@ -47,7 +49,7 @@ macro_rules! gl_enums {
                 }
                 fn from_gl(value: u32) -> Option<Self> {
                     match value {
-                        $($value => Some($ty::$variant $(($arg))?),)*
+                        $($value => Some($ty::$variant $(($($arg)+))?),)*
                         _ => None,
                     }
                 }
@@ -186,6 +188,14 @@ gl_enums! {
         Light(5) = GL_LIGHT5 0x4005,
         Light(6) = GL_LIGHT6 0x4006,
         Light(7) = GL_LIGHT7 0x4007,
+        TexGen(TexCoordName::S) = GL_TEXTURE_GEN_S 0x0C60,
+        TexGen(TexCoordName::T) = GL_TEXTURE_GEN_T 0x0C61,
+        TexGen(TexCoordName::R) = GL_TEXTURE_GEN_R 0x0C62,
+        TexGen(TexCoordName::Q) = GL_TEXTURE_GEN_Q 0x0C63,
+        Texture(TextureTarget::D1) = GL_TEXTURE_1D 0x0DE0,
+        Texture(TextureTarget::D2) = GL_TEXTURE_2D 0x0DE1,
+        Texture(TextureTarget::D3) = GL_TEXTURE_3D 0x806F,
+        Texture(TextureTarget::Cube) = GL_TEXTURE_CUBE_MAP 0x8513,
     }
     ColorControl {
         SingleColor = GL_SINGLE_COLOR 0x81F9,
@@ -225,6 +235,58 @@ gl_enums! {
     FogCoordSrc {
         FogCoord = GL_FOG_COORD 0x8451,
         FragmentDepth = GL_FRAGMENT_DEPTH 0x8452,
+    }
+    // Texture units (`crate::texture::unit`).
+    TexCoordName {
+        S = GL_S 0x2000,
+        T = GL_T 0x2001,
+        R = GL_R 0x2002,
+        Q = GL_Q 0x2003,
+    }
+    TexGenMode {
+        EyeLinear = GL_EYE_LINEAR 0x2400,
+        ObjectLinear = GL_OBJECT_LINEAR 0x2401,
+        SphereMap = GL_SPHERE_MAP 0x2402,
+        NormalMap = GL_NORMAL_MAP 0x8511,
+        ReflectionMap = GL_REFLECTION_MAP 0x8512,
+    }
+    EnvMode {
+        Add = GL_ADD 0x0104,
+        Blend = GL_BLEND 0x0BE2,
+        Modulate = GL_MODULATE 0x2100,
+        Decal = GL_DECAL 0x2101,
+        Replace = GL_REPLACE 0x1E01,
+        Combine = GL_COMBINE 0x8570,
+    }
+    CombineFn {
+        Add = GL_ADD 0x0104,
+        Replace = GL_REPLACE 0x1E01,
+        Modulate = GL_MODULATE 0x2100,
+        Subtract = GL_SUBTRACT 0x84E7,
+        AddSigned = GL_ADD_SIGNED 0x8574,
+        Interpolate = GL_INTERPOLATE 0x8575,
+        Dot3Rgb = GL_DOT3_RGB 0x86AE,
+        Dot3Rgba = GL_DOT3_RGBA 0x86AF,
+    }
+    CombineSrc {
+        Texture = GL_TEXTURE 0x1702,
+        TextureUnit(0) = GL_TEXTURE0 0x84C0,
+        TextureUnit(1) = GL_TEXTURE1 0x84C1,
+        TextureUnit(2) = GL_TEXTURE2 0x84C2,
+        TextureUnit(3) = GL_TEXTURE3 0x84C3,
+        TextureUnit(4) = GL_TEXTURE4 0x84C4,
+        TextureUnit(5) = GL_TEXTURE5 0x84C5,
+        TextureUnit(6) = GL_TEXTURE6 0x84C6,
+        TextureUnit(7) = GL_TEXTURE7 0x84C7,
+        Constant = GL_CONSTANT 0x8576,
+        PrimaryColor = GL_PRIMARY_COLOR 0x8577,
+        Previous = GL_PREVIOUS 0x8578,
+    }
+    Operand {
+        SrcColor = GL_SRC_COLOR 0x0300,
+        OneMinusSrcColor = GL_ONE_MINUS_SRC_COLOR 0x0301,
+        SrcAlpha = GL_SRC_ALPHA 0x0302,
+        OneMinusSrcAlpha = GL_ONE_MINUS_SRC_ALPHA 0x0303,
     }
 }
 
@@ -430,10 +492,19 @@ mod tests {
             round_trip::<MaterialParamName>(),
             round_trip::<FogMode>(),
             round_trip::<FogCoordSrc>(),
+            round_trip::<TexCoordName>(),
+            round_trip::<TexGenMode>(),
+            round_trip::<EnvMode>(),
+            round_trip::<CombineFn>(),
+            round_trip::<CombineSrc>(),
+            round_trip::<Operand>(),
         ];
         // Every variant of each type (to_gl's exhaustive match already
         // refuses a table without one).
-        assert_eq!(counts, [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 31, 2, 5, 10, 5, 3, 2]);
+        assert_eq!(
+            counts,
+            [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 39, 2, 5, 10, 5, 3, 2, 4, 5, 6, 8, 12, 4]
+        );
     }
 
     #[test]

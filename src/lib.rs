@@ -50,6 +50,9 @@ pub use softgl_jit::{
     ShadeKey, StencilOp,
 };
 pub use state::{Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};
+pub use texture::unit::{
+    TexCoordName, TexEnvParam, TexEnvParamName, TexGenMode, TexGenParam, TexGenParamName, TexUnit, TextureUnits,
+};
 pub use texture::{
     BaseFormat, CombineFn, CombineSrc, DepthMode, EnvMode, Filter, InternalFormat, MipFilter, Operand, PixelData,
     PixelFormat, PixelStore, PixelType, Sampling, TexImageTarget, TexLevelParamName, TexParam, TexParamName,

@@ -4,6 +4,8 @@
 use crate::fog::FogState;
 use crate::framebuffer::{float_to_unorm, Framebuffer};
 use crate::geometry::varying::VaryingLayout;
+use crate::texture::unit::TexCoordName;
+use softgl_jit::texture::TexTarget as TextureTarget;
 use softgl_jit::{
     BlendFactor, BlendKey, ColorMask, CompareFunc, DepthKey, FragmentKey, FragmentUniforms, LogicOp, StencilKey,
     StencilOp,
@@ -35,6 +37,10 @@ pub enum Capability {
     RescaleNormal,
     /// `GL_CLIP_PLANEi`, `i < 6`.
     ClipPlane(u8),
+    /// `GL_TEXTURE_1D`, `2D`, `3D`, `CUBE_MAP` of the active texture unit.
+    Texture(TextureTarget),
+    /// `GL_TEXTURE_GEN_S` … `Q` of the active texture unit.
+    TexGen(TexCoordName),
 }
 
 impl Capability {
@@ -273,9 +279,11 @@ impl RasterState {
         }
     }
 
-    /// The enable flag behind `cap` (which must be [`Capability::valid`]).
-    pub fn flag_mut(&mut self, cap: Capability) -> &mut bool {
-        match cap {
+    /// The enable flag behind `cap` (which must be [`Capability::valid`]);
+    /// `None` for the texture capabilities, which are per texture unit
+    /// (`crate::texture::unit`).
+    pub fn flag_mut(&mut self, cap: Capability) -> Option<&mut bool> {
+        Some(match cap {
             Capability::AlphaTest => &mut self.alpha_test,
             Capability::Blend => &mut self.blend,
             Capability::ColorLogicOp => &mut self.color_logic_op,
@@ -295,7 +303,8 @@ impl RasterState {
             Capability::Normalize => &mut self.lighting.normalize,
             Capability::RescaleNormal => &mut self.lighting.rescale_normal,
             Capability::ClipPlane(i) => &mut self.lighting.clip_enabled[usize::from(i)],
-        }
+            Capability::Texture(_) | Capability::TexGen(_) => return None,
+        })
     }
 
     /// Whether `cap` is enabled.
@@ -320,6 +329,8 @@ impl RasterState {
             Capability::Normalize => self.lighting.normalize,
             Capability::RescaleNormal => self.lighting.rescale_normal,
             Capability::ClipPlane(i) => self.lighting.clip_enabled.get(usize::from(i)) == Some(&true),
+            // Per texture unit: the context answers for the active one.
+            Capability::Texture(_) | Capability::TexGen(_) => false,
         }
     }
 
@@ -377,6 +388,8 @@ impl RasterState {
             secondary: reads_color && (self.color_sum || separate),
             back_secondary: reads_color && two_side && separate,
             fog: reads_color && self.fog.enabled,
+            // Decided with the textures (`crate::texture::unit`).
+            tex: 0,
         }
     }
 

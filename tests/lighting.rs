@@ -53,6 +53,7 @@ fn lighting_adds_varyings_only_for_what_it_produces() {
             secondary: true,
             back_secondary: true,
             fog: false,
+            tex: 0,
         }
     );
     // The same state with lighting off carries the colour alone again.

@@ -302,8 +302,8 @@ pub fn quad_origin((px, row): (f32, f32)) -> (f32, f32) {
 }
 
 /// The texture environment of `key`'s units over `primary` at `(px, row)`:
-/// each enabled unit sampled at its coordinates there (and at its quad's
-/// top-left, top-right and bottom-left pixels, for λ).
+/// each enabled unit sampled at its coordinates at the four pixels of the
+/// fragment's quad (λ and cube-map derivatives need them).
 pub fn texture(
     key: &crate::key::ShadeKey,
     planes: &Planes,
@@ -311,16 +311,17 @@ pub fn texture(
     textures: &crate::texture::TextureSet<'_>,
     primary: [f32; 4],
 ) -> [f32; 4] {
-    use crate::texture::{sample, MAX_UNITS};
+    use crate::texture::{sample_quad, MAX_UNITS};
     let (qx, qy) = quad_origin((px, row));
+    let lane = usize::from(px != qx) + 2 * usize::from(row != qy);
+    let pixels = [(qx, qy), (qx + 1.0, qy), (qx, qy + 1.0), (qx + 1.0, qy + 1.0)];
     let mut samples = [[0.0; 4]; MAX_UNITS];
     for (u, unit) in key.tex.iter().enumerate() {
         let (Some(unit), Some(tex)) = (unit, &textures.units[u]) else {
             continue;
         };
-        let at = tex_coords(planes, u, (px, row));
-        let quad = [(qx, qy), (qx + 1.0, qy), (qx, qy + 1.0)].map(|p| tex_coords(planes, u, p));
-        samples[u] = sample(unit, tex, at, quad);
+        let quad = pixels.map(|p| tex_coords(planes, u, p));
+        samples[u] = sample_quad(unit, tex, &quad, lane);
     }
     crate::texture::environment(&key.tex, &samples, primary, &textures.env_color)
 }

@@ -93,12 +93,14 @@ fn unknown_and_destroyed_handles_are_refused() {
 fn unimplemented_functions_record_invalid_operation() {
     let mut buf = vec![0u8; 8 * 8 * 4];
     let ctx = current(&mut buf, 8, 8);
-    glEnable(GL_TEXTURE_2D);
+    // GL_LINE_STIPPLE: a capability softgl does not implement yet.
+    const STIPPLE: u32 = 0x0B24;
+    glEnable(STIPPLE);
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
-    assert_eq!(glIsEnabled(GL_TEXTURE_2D), GL_FALSE);
-    glDisable(GL_TEXTURE_2D); // disabling what is off is fine
+    assert_eq!(glIsEnabled(STIPPLE), GL_FALSE);
+    glDisable(STIPPLE); // disabling what is off is fine
     assert_eq!(glGetError(), GL_NO_ERROR);
-    glEnable(GL_TEXTURE_2D);
+    glEnable(STIPPLE);
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     glTexImage2D(
         GL_TEXTURE_2D,

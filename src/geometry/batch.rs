@@ -5,12 +5,14 @@
 //! [`VertexBatch::transform`] is the one place a vertex's varyings are filled,
 //! as the draw's [`VertexStage`] says: colours copied (and clamped) or lit
 //! (front and back, primary and secondary, [`super::lighting`]), the fog
-//! coordinate taken from the eye-space depth or from `glFogCoord`.
+//! coordinate taken from the eye-space depth or from `glFogCoord`, the
+//! texture coordinates generated and transformed ([`crate::texture::texgen`]).
 
 use super::clip::ClipVertex;
 use super::lighting::{LightInput, LightSetup};
 use super::varying::{VaryingLayout, MAX_VARYINGS};
 use super::InVertex;
+use crate::texture::texgen::TexCoordStage;
 use glam::{Mat4, Vec4};
 
 /// Vertices transformed at once.
@@ -43,6 +45,9 @@ pub struct VertexStage<'a> {
     /// `glEnd`, which Mesa keeps as vertex attributes): when not empty, a
     /// vertex is lit by `vertex_materials[v.material]` instead of `lighting`.
     pub vertex_materials: &'a [LightSetup],
+    /// The texture coordinates of the units `layout` carries (`None` when
+    /// it carries none: no texture work at all).
+    pub tex_coords: Option<&'a TexCoordStage>,
 }
 
 impl VertexStage<'_> {
@@ -54,6 +59,7 @@ impl VertexStage<'_> {
             fog: FogSource::FogCoord,
             lighting: None,
             vertex_materials: &[],
+            tex_coords: None,
         }
     }
 
@@ -97,6 +103,9 @@ impl VertexStage<'_> {
                 },
                 FogSource::FogCoord => v.fog_coord.abs(),
             };
+        }
+        if let Some(t) = self.tex_coords {
+            t.fill(v, &mut out.v);
         }
         out
     }

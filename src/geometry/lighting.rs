@@ -37,11 +37,11 @@ pub struct LitColors {
     pub back_secondary: [f32; 4],
 }
 
-type V3 = [f32; 3];
+pub type V3 = [f32; 3];
 
 /// NIR's scalarized `fdot3`: `(a.z·b.z + a.y·b.y) + a.x·b.x`.
 #[inline(always)]
-fn dp3(a: V3, b: V3) -> f32 {
+pub fn dp3(a: V3, b: V3) -> f32 {
     a[2] * b[2] + a[1] * b[1] + a[0] * b[0]
 }
 
@@ -63,13 +63,13 @@ fn normalize_c(v: V3) -> V3 {
 /// gallivm's `lp_build_rsqrt`: `1 / sqrt(|x|)`, both IEEE (the fast
 /// `rsqrtps` path is compiled out); `prog_to_nir` adds the `fabs`.
 #[inline(always)]
-fn rsq(x: f32) -> f32 {
+pub fn rsq(x: f32) -> f32 {
     1.0 / x.abs().sqrt()
 }
 
 /// The program's `emit_normalize_vec3`: `DP3`, `RSQ`, `MUL`.
 #[inline(always)]
-fn normalize_vp(v: V3) -> V3 {
+pub fn normalize_vp(v: V3) -> V3 {
     normalize_len(v).0
 }
 
@@ -292,15 +292,69 @@ enum NormalFix {
     Rescale(f32),
 }
 
+/// The program's `get_transformed_normal` (`main/ffvertex_prog.c`): in eye
+/// space the rows of the inverse transpose of the modelview, then
+/// `GL_NORMALIZE` or `GL_RESCALE_NORMAL` as the state says. Lighting and
+/// texture coordinate generation share it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NormalTransform {
+    eye_space: bool,
+    /// Rows of the inverse transpose of the modelview's upper 3x3.
+    rows: [V3; 3],
+    fix: NormalFix,
+}
+
+impl NormalTransform {
+    /// Normals for `state` under the modelview `mv`, brought to eye space
+    /// when `eye_space` (Mesa's `_NeedEyeCoords`), else left in object space.
+    pub fn new(state: &LightingState, mv: &Mat4, eye_space: bool) -> NormalTransform {
+        let inv = crate::inverse::inverse(mv).to_cols_array();
+        // Row r of the inverse transpose is column r of the inverse.
+        let rows = [0, 1, 2].map(|r| [inv[4 * r], inv[4 * r + 1], inv[4 * r + 2]]);
+        let fix = if state.normalize {
+            NormalFix::Normalize
+        } else if eye_space && state.rescale_normal {
+            // update_modelview_scale: 1/sqrt of the inverse's third row.
+            let scale = if length_preserving(mv) {
+                1.0
+            } else {
+                let mut f = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
+                if f < 1e-12 {
+                    f = 1.0;
+                }
+                1.0 / f.sqrt()
+            };
+            NormalFix::Rescale(scale)
+        } else {
+            NormalFix::None
+        };
+        NormalTransform { eye_space, rows, fix }
+    }
+
+    /// The normal `n` in the space chosen, fixed up as the state says.
+    #[inline(always)]
+    pub fn apply(&self, n: Vec3) -> V3 {
+        let n = n.to_array();
+        let n = if self.eye_space {
+            self.rows.map(|row| dp3(n, row))
+        } else {
+            n
+        };
+        match self.fix {
+            NormalFix::None => n,
+            NormalFix::Normalize => normalize_vp(n),
+            NormalFix::Rescale(s) => n.map(|c| c * s),
+        }
+    }
+}
+
 /// Everything one draw's lighting needs, derived once from the state.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightSetup {
     /// Mesa's `_NeedEyeCoords`: light in eye space; else in object space.
     eye_space: bool,
     modelview: Mat4,
-    /// Rows of the inverse transpose of the modelview's upper 3x3.
-    normal_rows: [V3; 3],
-    normal_fix: NormalFix,
+    normal: NormalTransform,
     /// The enabled lights, in index order: the first `count`.
     lights: [LightConst; MAX_LIGHTS],
     count: usize,
@@ -322,6 +376,13 @@ pub use crate::inverse::length_preserving;
 impl LightSetup {
     /// The constants for drawing with `state` under the modelview `mv`.
     pub fn new(state: &LightingState, mv: &Mat4) -> LightSetup {
+        LightSetup::with_eye_coords(state, mv, false)
+    }
+
+    /// [`LightSetup::new`] in eye space when `force_eye`: Mesa lights in eye
+    /// space whenever `_NeedEyeCoords` is set, which texture coordinate
+    /// generation needing eye coordinates also sets (`_mesa_update_tnl_spaces`).
+    pub fn with_eye_coords(state: &LightingState, mv: &Mat4, force_eye: bool) -> LightSetup {
         let enabled: Vec<(usize, &crate::lighting::Light)> =
             state.lights.iter().enumerate().filter(|(_, l)| l.enabled).collect();
         let positional = enabled.iter().any(|(_, l)| l.position[3] != 0.0);
@@ -329,27 +390,8 @@ impl LightSetup {
         let separate = state.color_control == ColorControl::SeparateSpecular;
         // main/light.c: _mesa_update_lighting and _mesa_update_tnl_spaces.
         let need_vertices = positional || spot || separate || state.local_viewer;
-        let eye_space = need_vertices || !length_preserving(mv);
+        let eye_space = force_eye || need_vertices || !length_preserving(mv);
         let inv = crate::inverse::inverse(mv).to_cols_array();
-        // Row r of the inverse transpose is column r of the inverse.
-        let normal_rows = [0, 1, 2].map(|r| [inv[4 * r], inv[4 * r + 1], inv[4 * r + 2]]);
-        let normal_fix = if state.normalize {
-            NormalFix::Normalize
-        } else if eye_space && state.rescale_normal {
-            // update_modelview_scale: 1/sqrt of the inverse's third row.
-            let scale = if length_preserving(mv) {
-                1.0
-            } else {
-                let mut f = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
-                if f < 1e-12 {
-                    f = 1.0;
-                }
-                1.0 / f.sqrt()
-            };
-            NormalFix::Rescale(scale)
-        } else {
-            NormalFix::None
-        };
         let mvc = mv.to_cols_array();
         // compute_light_positions: _EyeZDir is (0, 0, 1) in eye space, the
         // modelview's third row (TRANSFORM_NORMAL of (0, 0, 1)) in object space.
@@ -396,8 +438,7 @@ impl LightSetup {
         let mut setup = LightSetup {
             eye_space,
             modelview: *mv,
-            normal_rows,
-            normal_fix,
+            normal: NormalTransform::new(state, mv, eye_space),
             lights: [LightConst::default(); MAX_LIGHTS],
             count: list.len(),
             sides: [Side::from_material(&state.materials[0], FromColor::default()); 2],
@@ -485,17 +526,7 @@ impl LightSetup {
     /// The normal in the lighting space, fixed up as the state says.
     #[inline(always)]
     fn normal(&self, n: Vec3) -> V3 {
-        let n = n.to_array();
-        let n = if self.eye_space {
-            self.normal_rows.map(|row| dp3(n, row))
-        } else {
-            n
-        };
-        match self.normal_fix {
-            NormalFix::None => n,
-            NormalFix::Normalize => normalize_vp(n),
-            NormalFix::Rescale(s) => n.map(|c| c * s),
-        }
+        self.normal.apply(n)
     }
 
     /// The eye position the program computes for lighting (positional

@@ -15,6 +15,7 @@ use assemble::{assemble, Primitive, QuadSplit};
 use batch::{VertexBatch, VertexStage};
 use clip::{clip_polygon, clip_polygon_user, clip_segment, guard_levels, outcode, ClipVertex, PolyVertex, UserPlanes};
 use glam::{Vec3, Vec4};
+use softgl_jit::texture::MAX_UNITS;
 use varying::{copy_slots, VaryingLayout, Varyings};
 
 pub use crate::state::PrimitiveMode;
@@ -39,6 +40,9 @@ pub struct InVertex {
     /// Which of the draw's per-vertex materials lights this vertex
     /// ([`batch::VertexStage::vertex_materials`]); 0 when they do not vary.
     pub material: u16,
+    /// Texture coordinates `(s, t, r, q)` per unit (read only for the units
+    /// the draw samples).
+    pub tex: [Vec4; MAX_UNITS],
 }
 
 impl InVertex {
@@ -52,6 +56,7 @@ impl InVertex {
             normal: Vec3::Z,
             edge: true,
             material: 0,
+            tex: [Vec4::W; MAX_UNITS],
         }
     }
 }

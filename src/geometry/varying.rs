@@ -6,7 +6,8 @@
 //! an attribute no fragment stage reads is neither computed, clipped, set up
 //! nor interpolated. Slots are packed in a fixed order — primary colour,
 //! back primary colour, secondary colour, back secondary colour, fog
-//! coordinate — each present only when its flag is on.
+//! coordinate, then the texture coordinates `(s, t, r, q)` of each unit the
+//! draw samples, in unit order — each present only when its flag is on.
 
 /// Which varyings a draw carries, decided once per state change from the same
 /// state that builds the `FragmentKey`.
@@ -22,10 +23,13 @@ pub struct VaryingLayout {
     pub back_secondary: bool,
     /// Fog coordinate: eye distance `|z_eye|` or `|glFogCoord|`.
     pub fog: bool,
+    /// Bit `u` set: the texture coordinates of unit `u` (4 slots), carried
+    /// only for a unit with an enabled, complete texture.
+    pub tex: u8,
 }
 
-/// Most f32 slots a vertex carries.
-pub const MAX_VARYINGS: usize = 32;
+/// Most f32 slots a vertex carries: 17 for colours and fog, 4 per texture unit.
+pub const MAX_VARYINGS: usize = 17 + 4 * softgl_jit::texture::MAX_UNITS;
 
 /// The attribute values of one vertex; the first `layout.len()` slots are meaningful.
 pub type Varyings = [f32; MAX_VARYINGS];
@@ -48,14 +52,37 @@ impl VaryingLayout {
         parts[k].0.then(|| parts[..k].iter().filter(|p| p.0).map(|p| p.1).sum())
     }
 
+    /// Slots of the colours and the fog coordinate (those before the texture coordinates).
+    fn base_len(&self) -> usize {
+        self.parts().iter().filter(|p| p.0).map(|p| p.1).sum()
+    }
+
     /// f32 slots in use.
     pub fn len(&self) -> usize {
-        self.parts().iter().filter(|p| p.0).map(|p| p.1).sum()
+        self.base_len() + 4 * self.tex.count_ones() as usize
     }
 
     /// Whether the vertices carry nothing but their position.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
+    }
+
+    /// Offset of texture unit `unit`'s 4 slots `(s, t, r, q)`, if carried.
+    pub fn tex(&self, unit: usize) -> Option<usize> {
+        if unit >= 8 || self.tex & (1 << unit) == 0 {
+            return None;
+        }
+        let below = self.tex & ((1u16 << unit) - 1) as u8;
+        Some(self.base_len() + 4 * below.count_ones() as usize)
+    }
+
+    /// The units carried, with the offset of each one's slots, in unit order.
+    pub fn tex_units(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        let base = self.base_len();
+        (0..8)
+            .filter(|&u| self.tex & (1 << u) != 0)
+            .enumerate()
+            .map(move |(k, u)| (u, base + 4 * k))
     }
 
     /// Offset of the primary colour's 4 slots, if active.
@@ -102,6 +129,7 @@ mod tests {
             secondary: true,
             back_secondary: true,
             fog: true,
+            tex: 0,
         };
         assert_eq!(all.len(), 17);
         assert_eq!(
@@ -126,5 +154,31 @@ mod tests {
         };
         assert_eq!((fog_only.len(), fog_only.color(), fog_only.fog()), (1, None, Some(0)));
         assert!(VaryingLayout::default().is_empty());
+    }
+
+    #[test]
+    fn texture_units_follow_the_fog_coordinate_in_unit_order() {
+        let l = VaryingLayout {
+            color: true,
+            fog: true,
+            tex: 0b1000_0101,
+            ..VaryingLayout::default()
+        };
+        assert_eq!(l.len(), 5 + 12);
+        assert_eq!(
+            (l.tex(0), l.tex(1), l.tex(2), l.tex(7)),
+            (Some(5), None, Some(9), Some(13))
+        );
+        assert_eq!(l.tex_units().collect::<Vec<_>>(), [(0, 5), (2, 9), (7, 13)]);
+        let all = VaryingLayout {
+            color: true,
+            back_color: true,
+            secondary: true,
+            back_secondary: true,
+            fog: true,
+            tex: 0xff,
+        };
+        assert_eq!((all.len(), all.tex(7)), (MAX_VARYINGS, Some(MAX_VARYINGS - 4)));
+        assert_eq!(VaryingLayout::default().tex(3), None);
     }
 }

@@ -43,8 +43,24 @@ pub struct RasterVertex {
 /// Receives the spans a primitive covers, after its planes.
 pub trait SpanSink {
     fn span(&mut self, span: &FragmentSpan);
-    /// The planes of the spans that follow (until the next call).
-    fn planes(&mut self, _planes: &Planes) {}
+    /// Where the planes of the spans that follow (until the next call) go,
+    /// or `None` when the sink reads no planes. The storage may hold an
+    /// earlier primitive's planes: the rasterizer writes only the slots of
+    /// its varying layout, the only ones the fragment stage reads, so that
+    /// a primitive costs the slots it uses (`Planes` has 42 of them, 2 KB),
+    /// not a copy of all of them.
+    fn planes_mut(&mut self) -> Option<&mut Planes> {
+        None
+    }
+}
+
+/// Runs `fill` on the sink's planes for the next primitive (on scratch
+/// planes when the sink takes none).
+pub(crate) fn with_planes<R>(sink: &mut dyn SpanSink, fill: impl FnOnce(&mut Planes) -> R) -> R {
+    match sink.planes_mut() {
+        Some(planes) => fill(planes),
+        None => fill(&mut Planes::default()),
+    }
 }
 
 impl<F: FnMut(&FragmentSpan)> SpanSink for F {
@@ -93,9 +109,12 @@ pub fn color_to_unorm8(c: f32) -> u8 {
 
 /// The planes of a point (or anything else constant): each varying of `v`
 /// and depth `z` as a constant, 1/w as 1, so that the fragment stage's
-/// perspective division leaves the values exact.
-pub fn constant_planes(v: &Varyings, z: f32, params: &RasterParams) -> Planes {
-    let mut p = Planes::default();
+/// perspective division leaves the values exact. Texture coordinates are
+/// the values llvmpipe's fragment shader reads at a point: its planes hold
+/// `a·(1/w)` and it multiplies by `1/(1/w)` (`point_persp_coeff`,
+/// `lp_setup_point.c`; `lp_bld_interp.c`), so `inv_w` is the vertex's 1/w.
+/// Only the slots of the layout are written into `p`.
+pub fn constant_planes(p: &mut Planes, v: &Varyings, z: f32, inv_w: f32, params: &RasterParams) {
     p.constant(slot::INV_W, 1.0);
     let l = params.layout;
     for (at, to, n) in [
@@ -109,8 +128,13 @@ pub fn constant_planes(v: &Varyings, z: f32, params: &RasterParams) -> Planes {
             }
         }
     }
+    let w = 1.0 / inv_w;
+    for (unit, o) in l.tex_units() {
+        for c in 0..4 {
+            p.constant(slot::tex(unit) + c, v[o + c] * inv_w * w);
+        }
+    }
     p.constant(slot::Z, z);
-    p
 }
 
 /// Converts window depth to buffer units (clamped to `[0, 1]`).

@@ -1,7 +1,8 @@
 //! Points: squares of an integer size around the snapped position.
 
 use super::{
-    constant_planes, depth_value, emit_row, floor_div, snap, FillSlot, RasterParams, RasterVertex, SpanSink, ONE,
+    constant_planes, depth_value, emit_row, floor_div, snap, with_planes, FillSlot, RasterParams, RasterVertex,
+    SpanSink, ONE,
 };
 use softgl_jit::FragmentSpan;
 
@@ -34,7 +35,7 @@ pub fn point(v: &RasterVertex, size: f32, params: &RasterParams, sink: &mut dyn 
     if x0 > x1 || y0 > y1 {
         return;
     }
-    sink.planes(&constant_planes(&v.v, v.z as f32, params));
+    with_planes(sink, |p| constant_planes(p, &v.v, v.z as f32, v.inv_w, params));
     // 32-bit depth is the span's (computed in f64, as for triangles).
     let z = depth_value(v.z, params.depth);
     let mut span = FragmentSpan::new(0, 0);

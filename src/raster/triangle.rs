@@ -1,6 +1,6 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 
-use super::{ceil_div, emit_row, floor_div, snap, FillSlot, RasterParams, RasterVertex, SpanSink, ONE};
+use super::{ceil_div, emit_row, floor_div, snap, with_planes, FillSlot, RasterParams, RasterVertex, SpanSink, ONE};
 use crate::geometry::varying::Varyings;
 use softgl_jit::interp::row_of;
 use softgl_jit::shade::{slot, Planes};
@@ -119,8 +119,7 @@ fn cover(
         return;
     }
 
-    let (planes, per_fragment_z) = setup_planes(v, flat, params);
-    sink.planes(&planes);
+    let per_fragment_z = with_planes(sink, |planes| setup_planes(v, flat, params, planes));
     let mut span = FragmentSpan::new(0, 0);
     for py in py0..=py1 {
         let sy = py * ONE;
@@ -145,8 +144,8 @@ fn cover(
         }
         let row = row_of(py as u32, params.height);
         let mut fill_z = |x: u32, s: &mut FragmentSpan, i: usize| {
-            if let Some(format) = per_fragment_z {
-                let z = planes.at(slot::Z, x as f32, row);
+            if let Some((format, z)) = per_fragment_z {
+                let z = z.dady.mul_add(row, z.dadx.mul_add(x as f32, z.a0));
                 s.z[i] = crate::framebuffer::depth_to_unorm(f64::from(z), format);
             }
         };
@@ -159,16 +158,19 @@ fn cover(
     }
 }
 
-/// The planes of a triangle's attributes for the fragment stage, set up in
-/// llvmpipe's order: colours (the flat ones constant), the secondary colour
-/// and the fog coordinate over w, 1/w, depth (with polygon offset). Also the
-/// depth format whose values the rasterizer computes per fragment itself
-/// (32-bit depth, which the shading stage leaves to the span).
+/// Writes the planes of a triangle's attributes for the fragment stage into
+/// `planes`, set up in llvmpipe's order: colours (the flat ones constant), the
+/// secondary colour, the fog coordinate and the texture coordinates over w,
+/// 1/w, depth (with polygon offset). Only the slots the layout uses are
+/// written. Returns the depth format and plane of the depth values the
+/// rasterizer computes per fragment itself (32-bit depth, which the shading
+/// stage leaves to the span).
 fn setup_planes(
     v: [&RasterVertex; 3],
     flat: Option<&Varyings>,
     params: &RasterParams,
-) -> (Planes, Option<DepthFormat>) {
+    planes: &mut Planes,
+) -> Option<(DepthFormat, Plane)> {
     // llvmpipe orders the vertices by the sign of the snapped area in its
     // y-down frame, and swaps the first two when it is negative.
     let mut v = v;
@@ -178,7 +180,6 @@ fn setup_planes(
         v.swap(0, 1);
     }
     let setup = Setup::new(v.map(|v| (v.x, v.y_down)));
-    let mut planes = Planes::default();
     let mut put = |k: usize, p: Plane| planes.set(k, p.a0, p.dadx, p.dady);
     let layout = params.layout;
     let over_w = |k: usize| setup.plane(v.map(|v| v.v[k] * v.inv_w));
@@ -204,6 +205,11 @@ fn setup_planes(
     if let Some(o) = layout.fog() {
         put(slot::FOG, over_w(o));
     }
+    for (unit, o) in layout.tex_units() {
+        for c in 0..4 {
+            put(slot::tex(unit) + c, over_w(o + c));
+        }
+    }
     let mut per_fragment_z = None;
     if let Some(f) = params.depth {
         let mut z = v.map(|v| v.z as f32);
@@ -212,12 +218,13 @@ fn setup_planes(
             let o = offset(factor, units, slope.dadx, slope.dady, f);
             z = z.map(|z| (z + o).clamp(0.0, 1.0));
         }
-        put(slot::Z, setup.plane(z));
+        let plane = setup.plane(z);
+        put(slot::Z, plane);
         if f == DepthFormat::D32 {
-            per_fragment_z = Some(f);
+            per_fragment_z = Some((f, plane));
         }
     }
-    (planes, per_fragment_z)
+    per_fragment_z
 }
 
 /// Polygon offset in window depth, as llvmpipe computes it in f32:

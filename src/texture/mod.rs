@@ -1,7 +1,9 @@
 //! Textures: objects and their bindings per unit ([`store`]), images and
 //! completeness ([`object`]), formats and their llvmpipe storage
 //! ([`format`]), pixel transfer ([`unpack`]), mipmap generation
-//! ([`mipmap`]) and the `Context` calls ([`api`]).
+//! ([`mipmap`]) and the `Context` calls ([`api`]); texture units (enables,
+//! environment, coordinate generation, matrices: [`unit`]) and the texture
+//! coordinates of the vertex stage ([`texgen`]).
 //!
 //! Texels are converted once, at upload, to the precision Mesa 22.3.6 stores
 //! on llvmpipe and laid out in a [`TexelFormat`] the sampler reads fast
@@ -13,6 +15,8 @@ pub mod format;
 pub mod mipmap;
 pub mod object;
 pub mod store;
+pub mod texgen;
+pub mod unit;
 pub mod unpack;
 
 pub(crate) use softgl_jit::texture as jit;

@@ -39,10 +39,9 @@ pub fn environment(
 
 /// One unit's combine with its sources read through `source`.
 pub fn combine(k: &CombineKey, source: impl Fn(CombineSrc) -> [f32; 4]) -> [f32; 4] {
-    let dot3 = matches!(k.rgb, CombineFn::Dot3Rgb | CombineFn::Dot3Rgba);
-    // DOT3_RGB ignores the RGB scale, DOT3_RGBA both scales (`emit_texenv`).
-    let rgb_shift = if dot3 { 1 } else { k.scale_rgb };
-    let alpha_shift = if k.rgb == CombineFn::Dot3Rgba { 1 } else { k.scale_alpha };
+    // Both scales apply to every function, DOT3 included: `emit_texenv`
+    // drops them only for the EXT_texture_env_dot3 modes.
+    let (rgb_shift, alpha_shift) = (k.scale_rgb, k.scale_alpha);
     let rgb_arg = |i: usize| operand(k.op_rgb[i], source(k.src_rgb[i]));
     let rgb = function(k.rgb, [rgb_arg(0), rgb_arg(1), rgb_arg(2)]);
     let alpha = if k.rgb == CombineFn::Dot3Rgba {
@@ -98,7 +97,8 @@ fn function(f: CombineFn, a: [[f32; 4]; 3]) -> [f32; 4] {
         CombineFn::Replace => a[0],
         CombineFn::Modulate => per(|x, y, _| x * y),
         CombineFn::Add => per(|x, y, _| x + y),
-        CombineFn::AddSigned => per(|x, y, _| (x + y) + -0.5),
+        // `(a + b) + #c` becomes `(a + #c) + b` (nir_opt_algebraic.py).
+        CombineFn::AddSigned => per(|x, y, _| (x + -0.5) + y),
         CombineFn::Interpolate => per(|x, y, z| x * z + y * (1.0 - z)),
         CombineFn::Subtract => per(|x, y, _| x - y),
         CombineFn::Dot3Rgb | CombineFn::Dot3Rgba => {

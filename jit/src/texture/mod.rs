@@ -12,11 +12,15 @@
 //! calls them per fragment, and compiled code must compute the same bits (or
 //! call them back through `jit/src/callout.rs`).
 
+pub mod arith;
+pub mod cube;
 mod env;
+pub mod filter;
+pub mod lod;
 mod sample;
 
-pub use env::environment;
-pub use sample::sample;
+pub use env::{combine, environment};
+pub use sample::{sample, sample_quad, uses_aos};
 
 /// `GL_MAX_TEXTURE_UNITS`.
 pub const MAX_UNITS: usize = 8;
@@ -286,6 +290,14 @@ pub fn effective_combine(mode: EnvMode, base: BaseFormat, combine: CombineKey) -
     k
 }
 
+/// Mesa's `util_quantize_lod_bias` of a `GL_TEXTURE_LOD_BIAS`: clamped to
+/// ±16 and rounded to 1/256 (`roundf`, half away from zero). The object's
+/// and the unit's biases are each quantized, then summed
+/// (`st_convert_sampler`): that sum is [`TextureRef::lod_bias`].
+pub fn quantized_lod_bias(bias: f32) -> f32 {
+    (bias.clamp(-16.0, 16.0) * 256.0).round() / 256.0
+}
+
 /// One enabled, complete unit as the key sees it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct TexUnitKey {
@@ -326,7 +338,8 @@ pub struct TextureRef<'a> {
     pub max_level: u32,
     pub min_lod: f32,
     pub max_lod: f32,
-    /// `GL_TEXTURE_LOD_BIAS` of the object plus the unit's (`glTexEnv` `GL_TEXTURE_FILTER_CONTROL`).
+    /// `GL_TEXTURE_LOD_BIAS` of the object plus the unit's (`glTexEnv`
+    /// `GL_TEXTURE_FILTER_CONTROL`), each through [`quantized_lod_bias`].
     pub lod_bias: f32,
     pub border: [f32; 4],
 }

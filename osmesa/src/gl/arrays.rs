@@ -177,6 +177,7 @@ fn draw(
             normal: f.normal.as_ref().map(|n| AttribArray::new(3, n)),
             secondary: f.secondary.as_ref().map(|c| AttribArray::new(3, c)),
             fog_coord: f.fog_coord.as_ref().map(|c| AttribArray::new(1, c)),
+            tex_coords: Default::default(),
         };
         // The context records its own errors (inside begin/end, …).
         let _ = if indexed {

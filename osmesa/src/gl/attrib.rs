@@ -83,7 +83,9 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         let c = s.current;
         gl.color4(c.color.x, c.color.y, c.color.z, c.color.w);
         gl.normal3(c.normal.x, c.normal.y, c.normal.z);
-        gl.tex_coord4(c.tex_coord.x, c.tex_coord.y, c.tex_coord.z, c.tex_coord.w);
+        for (unit, t) in c.tex_coords.iter().enumerate() {
+            gl.multi_tex_coord(unit as u32, t.to_array())?;
+        }
         gl.index(c.index);
         gl.edge_flag(c.edge_flag);
         gl.secondary_color3(c.secondary.x, c.secondary.y, c.secondary.z);

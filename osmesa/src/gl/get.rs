@@ -145,8 +145,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0B00 => Val::N(gl.current().color.to_array().iter().map(|&c| f64::from(c)).collect()), // CURRENT_COLOR
         0x0B02 => Val::F(gl.current().normal.to_array().iter().map(|&c| f64::from(c)).collect()), // CURRENT_NORMAL
         0x0B03 => Val::F(
-            gl.current()
-                .tex_coord
+            gl.current().tex_coords[gl.active_texture_unit()]
                 .to_array()
                 .iter()
                 .map(|&c| f64::from(c))

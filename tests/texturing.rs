@@ -1,0 +1,215 @@
+//! Texturing through the Rust API: what a draw carries for enabled,
+//! disabled and incomplete units, exact pixels of magnified NEAREST textures
+//! under REPLACE and MODULATE, coordinates from `glTexGen` and the texture
+//! matrix, and the errors of the unit calls. Expected values are worked out
+//! by hand next to each assertion.
+
+mod common;
+
+use softgl::geometry::varying::VaryingLayout;
+use softgl::texture::{
+    CombineFn, CombineSrc, EnvMode, Filter, InternalFormat, MipFilter, Operand, PixelData, PixelFormat, PixelStore,
+    PixelType, TexImageTarget, TexParam, TextureTarget, Wrap,
+};
+use softgl::{
+    Capability, Context, FramebufferDesc, GlError, MatrixMode, PrimitiveMode, TexCoordName, TexEnvParam,
+    TexEnvParamName, TexGenMode, TexGenParam, TexGenParamName,
+};
+
+const RED: [u8; 4] = [255, 0, 0, 255];
+const GREEN: [u8; 4] = [0, 255, 0, 255];
+const BLUE: [u8; 4] = [0, 0, 255, 255];
+const WHITE: [u8; 4] = [255, 255, 255, 255];
+
+fn context() -> Context {
+    Context::new(FramebufferDesc::rgba8_d24s8(8, 8)).unwrap()
+}
+
+/// Uploads `texels` (RGBA8, rows bottom-up) as a `w`×`h` 2D texture on the
+/// active unit's bound texture, NEAREST both ways, wrap `wrap`.
+fn texture_2d(gl: &mut Context, w: i32, h: i32, texels: &[[u8; 4]], wrap: Wrap) {
+    let bytes: Vec<u8> = texels.iter().flatten().copied().collect();
+    let pixels = PixelData {
+        format: PixelFormat::Rgba,
+        ty: PixelType::UnsignedByte,
+        store: PixelStore::DEFAULT,
+        bytes: &bytes,
+    };
+    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba8, [w, h, 1], 0, Some(pixels))
+        .unwrap();
+    let t = TextureTarget::D2;
+    gl.tex_parameter(t, TexParam::MinFilter(Filter::Nearest, MipFilter::None))
+        .unwrap();
+    gl.tex_parameter(t, TexParam::MagFilter(Filter::Nearest)).unwrap();
+    gl.tex_parameter(t, TexParam::WrapS(wrap)).unwrap();
+    gl.tex_parameter(t, TexParam::WrapT(wrap)).unwrap();
+}
+
+/// The 2×2 texture red, green (bottom row), blue, white (top row).
+fn checker(gl: &mut Context) {
+    texture_2d(gl, 2, 2, &[RED, GREEN, BLUE, WHITE], Wrap::ClampToEdge);
+}
+
+#[test]
+fn a_disabled_or_incomplete_unit_adds_nothing_to_the_draw() {
+    let mut gl = context();
+    let plain = VaryingLayout {
+        color: true,
+        ..VaryingLayout::default()
+    };
+    let untextured = |gl: &Context| {
+        let (key, layout) = gl.draw_plan();
+        assert_eq!(layout, plain);
+        assert_eq!(key.shade.unwrap().tex, [None; 8]);
+    };
+    untextured(&gl);
+    // Enabled, but the default texture has no image: incomplete.
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    untextured(&gl);
+    // An image but the default minification filter wants mipmaps: still incomplete.
+    let texels = [WHITE; 4];
+    let bytes: Vec<u8> = texels.iter().flatten().copied().collect();
+    let pixels = PixelData {
+        format: PixelFormat::Rgba,
+        ty: PixelType::UnsignedByte,
+        store: PixelStore::DEFAULT,
+        bytes: &bytes,
+    };
+    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba8, [2, 2, 1], 0, Some(pixels))
+        .unwrap();
+    untextured(&gl);
+    // Complete: unit 0 carries 4 slots after the colour, and has a key.
+    gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Linear, MipFilter::None))
+        .unwrap();
+    let (key, layout) = gl.draw_plan();
+    assert_eq!(layout, VaryingLayout { tex: 1, ..plain });
+    assert_eq!((layout.len(), layout.tex(0)), (8, Some(4)));
+    let unit = key.shade.unwrap().tex[0].expect("unit 0 samples");
+    assert_eq!(
+        (unit.sampler.target, unit.sampler.min),
+        (TextureTarget::D2, Filter::Linear)
+    );
+    assert_eq!(key.shade.unwrap().tex[1..], [None; 7]);
+    // Texture generation enabled on a unit that samples nothing changes nothing.
+    gl.active_texture(3).unwrap();
+    gl.enable(Capability::TexGen(TexCoordName::S)).unwrap();
+    assert_eq!(gl.draw_plan().1, VaryingLayout { tex: 1, ..plain });
+    // Disabled again: nothing.
+    gl.active_texture(0).unwrap();
+    gl.disable(Capability::Texture(TextureTarget::D2)).unwrap();
+    untextured(&gl);
+    // No stage reads the colour (colour mask off, no alpha test): nothing either.
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    gl.color_mask(false, false, false, false).unwrap();
+    let (key, layout) = gl.draw_plan();
+    assert_eq!(layout.tex, 0);
+    assert!(key.shade.is_none_or(|s| s.tex == [None; 8]));
+}
+
+#[test]
+fn the_first_complete_enabled_target_is_sampled() {
+    let mut gl = context();
+    checker(&mut gl);
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    // An enabled cube map outranks 2D, but an incomplete one is passed over
+    // (Mesa's update_ff_texture_state).
+    gl.enable(Capability::Texture(TextureTarget::Cube)).unwrap();
+    let unit = gl.draw_plan().0.shade.unwrap().tex[0].unwrap();
+    assert_eq!(unit.sampler.target, TextureTarget::D2);
+    assert!(gl.is_enabled(Capability::Texture(TextureTarget::Cube)));
+    // Enables are per unit: unit 1 has none.
+    gl.active_texture(1).unwrap();
+    assert!(!gl.is_enabled(Capability::Texture(TextureTarget::D2)));
+}
+
+#[test]
+fn unit_calls_reject_what_gl_rejects() {
+    let mut gl = context();
+    assert_eq!(gl.tex_env(TexEnvParam::RgbScale(3.0)), Err(GlError::InvalidValue));
+    assert_eq!(
+        gl.tex_env(TexEnvParam::CombineAlpha(CombineFn::Dot3Rgb)),
+        Err(GlError::InvalidEnum)
+    );
+    assert_eq!(
+        gl.tex_env(TexEnvParam::OperandAlpha(0, Operand::SrcColor)),
+        Err(GlError::InvalidEnum)
+    );
+    assert_eq!(
+        gl.tex_env(TexEnvParam::SrcRgb(3, CombineSrc::Texture)),
+        Err(GlError::InvalidEnum)
+    );
+    assert_eq!(
+        gl.tex_gen(TexCoordName::R, TexGenParam::Mode(TexGenMode::SphereMap)),
+        Err(GlError::InvalidEnum)
+    );
+    assert_eq!(
+        gl.tex_gen(TexCoordName::Q, TexGenParam::Mode(TexGenMode::NormalMap)),
+        Err(GlError::InvalidEnum)
+    );
+    assert_eq!(gl.multi_tex_coord(8, [0.0; 4]), Err(GlError::InvalidEnum));
+    assert_eq!(gl.client_active_texture(8), Err(GlError::InvalidEnum));
+    assert_eq!(gl.get_error(), Some(GlError::InvalidValue), "the first error is kept");
+    // Nothing changed.
+    assert_eq!(
+        gl.get_tex_env(TexEnvParamName::RgbScale),
+        Ok(TexEnvParam::RgbScale(1.0))
+    );
+    assert_eq!(
+        gl.get_tex_gen(TexCoordName::R, TexGenParamName::Mode),
+        Ok(TexGenParam::Mode(TexGenMode::EyeLinear))
+    );
+    // The colour is kept clamped, the unit's LOD bias as given.
+    gl.tex_env(TexEnvParam::Color([2.0, -1.0, 0.5, 1.0])).unwrap();
+    gl.tex_env(TexEnvParam::LodBias(-0.3)).unwrap();
+    assert_eq!(
+        gl.get_tex_env(TexEnvParamName::Color),
+        Ok(TexEnvParam::Color([1.0, 0.0, 0.5, 1.0]))
+    );
+    assert_eq!(gl.get_tex_env(TexEnvParamName::LodBias), Ok(TexEnvParam::LodBias(-0.3)));
+    // Inside begin/end only the coordinates may change.
+    gl.begin(PrimitiveMode::Points).unwrap();
+    assert_eq!(
+        gl.tex_env(TexEnvParam::Mode(EnvMode::Add)),
+        Err(GlError::InvalidOperation)
+    );
+    assert_eq!(gl.multi_tex_coord(2, [1.0, 2.0, 3.0, 4.0]), Ok(()));
+    gl.end().unwrap();
+    assert_eq!(gl.current().tex_coords[2], glam::Vec4::new(1.0, 2.0, 3.0, 4.0));
+    // The texture matrix stack is 10 deep, per unit.
+    gl.matrix_mode(MatrixMode::Texture).unwrap();
+    for _ in 1..10 {
+        gl.push_matrix().unwrap();
+    }
+    assert_eq!(gl.push_matrix(), Err(GlError::StackOverflow));
+    assert_eq!(gl.matrix_depth(MatrixMode::Texture), 10);
+    gl.active_texture(1).unwrap();
+    assert_eq!(gl.matrix_depth(MatrixMode::Texture), 1);
+    gl.client_active_texture(5).unwrap();
+    assert_eq!(gl.tex_units().client_active(), 5);
+}
+
+#[test]
+fn a_complete_texture_reaches_the_fragment_stage() {
+    let mut gl = context();
+    texture_2d(&mut gl, 2, 2, &[WHITE; 4], Wrap::Repeat);
+    gl.color3(0.2, 0.4, 0.6);
+    let quad = |gl: &mut Context| {
+        gl.begin(PrimitiveMode::Quads).unwrap();
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            gl.vertex2(x, y);
+        }
+        gl.end().unwrap();
+    };
+    // Disabled: the colour, 0.2·255 = 51, 0.4·255 = 102, 0.6·255 = 153.
+    quad(&mut gl);
+    assert_eq!(gl.framebuffer().pixel(3, 3), Some([51, 102, 153, 255]));
+    // REPLACE with a white RGBA texture: white everywhere.
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    gl.tex_env(TexEnvParam::Mode(EnvMode::Replace)).unwrap();
+    quad(&mut gl);
+    assert_eq!(common::count(&gl, WHITE), 64);
+    // MODULATE by white: the colour again.
+    gl.tex_env(TexEnvParam::Mode(EnvMode::Modulate)).unwrap();
+    quad(&mut gl);
+    assert_eq!(common::count(&gl, [51, 102, 153, 255]), 64);
+}
