@@ -1,13 +1,13 @@
 //! The one GL-shaped interface: a scene is recorded once as a list of
 //! [`Call`]s, and every back end replays that list its own way.
 
-use crate::texnames::{
-    InternalFormat, PixelFormat, PixelType, TexCapability, TexCoordName, TexEnvParam, TexGenParam, TexImageTarget,
-    TexParam, TextureTarget,
-};
 use softgl::{
     BlendEquation, BlendFactor, Capability, ClearMask, ColorMaterialMode, CompareFunc, Face, FogParam, FrontFace,
     LightModelParam, LightParam, LogicOp, MaterialParam, MatrixMode, PolygonMode, PrimitiveMode, ShadeModel, StencilOp,
+};
+use softgl::{
+    InternalFormat, PixelFormat, PixelType, TexCoordName, TexEnvParam, TexGenParam, TexImageTarget, TexParam,
+    TextureTarget,
 };
 
 /// One GL 1.x call, with GL's arguments.
@@ -75,9 +75,6 @@ pub enum Call {
     ColorMaterial(Face, ColorMaterialMode),
     /// `glClipPlane(GL_CLIP_PLANE0 + index, equation)`.
     ClipPlane(u32, [f64; 4]),
-    /// `glEnable`/`glDisable` of `GL_TEXTURE_*` and `GL_TEXTURE_GEN_*` on the
-    /// active unit.
-    TexEnable(TexCapability, bool),
     /// `glActiveTexture(GL_TEXTURE0 + unit)`.
     ActiveTexture(u32),
     /// `glBindTexture` on the active unit; the scene picks the names (GL

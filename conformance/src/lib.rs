@@ -21,4 +21,3 @@ pub mod piglit;
 pub mod report;
 pub mod run;
 pub mod scenes;
-pub mod texnames;

@@ -56,13 +56,6 @@ fn texture_scenes_make_no_gl_error_on_softgl() {
         let rec = s.record(false);
         let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(rec.width, rec.height)).expect("context");
         for (i, c) in rec.calls.iter().enumerate() {
-            // Until pipe's texture units are merged softgl refuses their calls.
-            if matches!(
-                c,
-                Call::TexEnable(..) | Call::TexEnv(_) | Call::TexGen(..) | Call::TexCoord(..)
-            ) {
-                continue;
-            }
             let r = replay(&mut gl, c);
             assert!(r.is_ok(), "{}: call {i} {c:?}: {r:?}", s.name);
         }

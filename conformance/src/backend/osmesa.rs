@@ -5,10 +5,9 @@
 use super::{Outcome, Timing};
 use crate::call::{clear_bits, Call};
 use crate::scenes::Recording;
-use crate::texnames::{
-    mag_filter_gl, min_filter_gl, TexEnvParam, TexGenParam, TexImageTarget, TexParam, TextureTarget, ToGl,
-};
+use softgl::texture::min_filter_to_gl;
 use softgl::{ColorFormat, FogParam, GlEnum, LightModelParam, LightParam, MaterialParam};
+use softgl::{MipFilter, TexEnvParam, TexGenParam, TexImageTarget, TexParam, TextureTarget};
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::time::Instant;
 
@@ -367,13 +366,6 @@ impl Context<'_> {
                 }
                 Call::ColorMaterial(face, mode) => (g.glColorMaterial)(face.to_gl(), mode.to_gl()),
                 Call::ClipPlane(i, p) => (g.glClipPlane)(0x3000 + i, p.as_ptr()), // GL_CLIP_PLANE0 + i
-                Call::TexEnable(cap, on) => {
-                    if *on {
-                        (g.glEnable)(cap.to_gl())
-                    } else {
-                        (g.glDisable)(cap.to_gl())
-                    }
-                }
                 Call::ActiveTexture(u) => (g.glActiveTexture)(GL_TEXTURE0 + u),
                 Call::BindTexture(t, name) => (g.glBindTexture)(t.to_gl(), *name),
                 Call::TexImage {
@@ -407,8 +399,8 @@ impl Context<'_> {
                     let t = target.to_gl();
                     let int = |pname: u32, v: u32| (g.glTexParameteri)(t, pname, v as i32);
                     match p {
-                        TexParam::MinFilter(f, m) => int(0x2801, min_filter_gl(*f, *m)),
-                        TexParam::MagFilter(f) => int(0x2800, mag_filter_gl(*f)),
+                        TexParam::MinFilter(f, m) => int(0x2801, min_filter_to_gl(*f, *m)),
+                        TexParam::MagFilter(f) => int(0x2800, min_filter_to_gl(*f, MipFilter::None)),
                         TexParam::WrapS(w) => int(0x2802, w.to_gl()),
                         TexParam::WrapT(w) => int(0x2803, w.to_gl()),
                         TexParam::WrapR(w) => int(0x8072, w.to_gl()),

@@ -177,11 +177,13 @@ pub fn replay(gl: &mut Context, c: &Call) -> GlResult {
             gl.tex_image(*target, *level, *internal, *size, 0, Some(data))
         }
         Call::TexParameter(t, p) => gl.tex_parameter(*t, *p),
-        // softgl's texture units (issue 12, pipe) are not merged yet: GL's
-        // answer for an entry point it does not have.
-        Call::TexEnable(..) | Call::TexEnv(_) | Call::TexGen(..) | Call::TexCoord(..) => {
-            Err(softgl::GlError::InvalidOperation)
+        Call::TexEnv(p) => gl.tex_env(*p),
+        Call::TexGen(c, p) => gl.tex_gen(*c, *p),
+        Call::TexCoord(0, c) => {
+            gl.tex_coord(*c);
+            Ok(())
         }
+        Call::TexCoord(u, c) => gl.multi_tex_coord(*u, *c),
         Call::DrawArrays {
             mode,
             positions,

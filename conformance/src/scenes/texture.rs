@@ -13,75 +13,124 @@
 
 use super::glu::{self, Level};
 use super::lighting::{light, lit_view, material, sphere_with};
-use super::{panels, Group, Scene, Size, Tolerance};
+use super::{panels, Group, Near, Scene, Size, Tolerance};
 use crate::call::{Call, Rec};
-use crate::texnames::{
-    CombineFn, CombineSrc, DepthMode, EnvMode, Filter, InternalFormat, MipFilter, Operand, PixelFormat, PixelType,
-    TexCapability, TexCoordName, TexEnvParam, TexGenMode, TexGenParam, TexImageTarget, TexParam, TextureTarget, Wrap,
+use softgl::{
+    Capability, CombineFn, CombineSrc, CompareFunc, DepthMode, EnvMode, Filter, InternalFormat, MatrixMode, MipFilter,
+    Operand, PixelFormat, PixelType, PrimitiveMode, TexCoordName, TexEnvParam, TexGenMode, TexGenParam, TexImageTarget,
+    TexParam, TextureTarget, Wrap,
 };
-use softgl::{Capability, CompareFunc, MatrixMode, PrimitiveMode};
 
 const G: Group = Group::Texture;
 const T2: TextureTarget = TextureTarget::D2;
 
-/// Not measured yet: softgl's texturing (issue 12's `store`, `pipe`,
-/// `sample` and `jitx` branches) is being merged. Exact until measured, so a
-/// difference shows.
-const PENDING: Tolerance = Tolerance {
-    reason: "not measured yet: softgl's texture path is being merged (issue 12); exact until then",
+/// Measured 2026-11-23 (scenes branch with store, pipe and sample merged):
+/// identical to llvmpipe at 96x96 and 256x256, softgl's interpreter and JIT alike.
+const E: Tolerance = Tolerance {
+    reason: "softgl samples and combines as llvmpipe's gallivm does (docs/llvmpipe-facts.md §16, §17): \
+             identical at both sizes",
     ..Tolerance::EXACT
 };
 
+/// Measured 2026-11-23: colours 1 LSB off llvmpipe's on `test` pixels at
+/// 96x96 and `report` at 256x256, none further (softpipe: thousands).
+const fn lsb(test: usize, report: usize) -> Tolerance {
+    Tolerance {
+        channel: 1,
+        near: Near { test, report },
+        share_over: 0.0,
+        coverage: 0,
+        reason: "1 LSB on the pixels counted, from the interpolated colour or coordinate's last f32 bit \
+                 (docs/llvmpipe-facts.md 11); softpipe is off on 10-100x as many",
+    }
+}
+
+/// Measured 2026-11-23: NEAREST texel choices flip against llvmpipe's on
+/// `share` of the pixels at most (the larger of the two sizes' shares), and
+/// `near` pixels are 1 LSB off. Each such pixel's texture coordinate lands
+/// within an f32 ulp of a texel edge (at the horizon of a receding plane, or
+/// exactly on an edge where a quad's coordinates put integer texel edges on
+/// pixel centres): softgl's interpolated, perspective-divided coordinate
+/// there is not llvmpipe's to the last bit (open: issue 12, the coordinate
+/// set-up of pipe and sample).
+const fn edge_ties(test: usize, report: usize, share: f64) -> Tolerance {
+    Tolerance {
+        channel: 1,
+        near: Near { test, report },
+        share_over: share,
+        coverage: 0,
+        reason: "NEAREST texel choices (or depth compares) flip on the pixels counted, where the texture \
+                 coordinate lies within an f32 ulp of a texel edge and softgl's interpolated coordinate is \
+                 not llvmpipe's to the last bit (open: issue 12)",
+    }
+}
+
 pub fn scenes() -> Vec<Scene> {
     use Filter::{Linear as L, Nearest as N};
-    let mins: [(&'static str, Filter, MipFilter); 6] = [
-        ("tex_min_nearest", N, MipFilter::None),
-        ("tex_min_linear", L, MipFilter::None),
-        ("tex_min_nearest_mipmap_nearest", N, MipFilter::Nearest),
-        ("tex_min_linear_mipmap_nearest", L, MipFilter::Nearest),
-        ("tex_min_nearest_mipmap_linear", N, MipFilter::Linear),
-        ("tex_min_linear_mipmap_linear", L, MipFilter::Linear),
+    // Measured: 98 of 9216 and 164 of 65536 pixels over (1 at 1 LSB) for
+    // NEAREST; 16/58 (+1) and 16/65 (+19) for the NEAREST mipmap filters.
+    let mins: [(&'static str, Filter, MipFilter, Tolerance); 6] = [
+        ("tex_min_nearest", N, MipFilter::None, edge_ties(0, 1, 0.0107)),
+        ("tex_min_linear", L, MipFilter::None, lsb(2, 16)),
+        (
+            "tex_min_nearest_mipmap_nearest",
+            N,
+            MipFilter::Nearest,
+            edge_ties(0, 1, 0.0018),
+        ),
+        ("tex_min_linear_mipmap_nearest", L, MipFilter::Nearest, lsb(0, 1)),
+        (
+            "tex_min_nearest_mipmap_linear",
+            N,
+            MipFilter::Linear,
+            edge_ties(0, 19, 0.0018),
+        ),
+        ("tex_min_linear_mipmap_linear", L, MipFilter::Linear, lsb(0, 30)),
     ];
     let mut v: Vec<Scene> = mins
         .into_iter()
-        .map(|(name, f, m)| Scene::new(name, G, PENDING, min_scene(f, m)))
+        .map(|(name, f, m, t)| Scene::new(name, G, t, min_scene(f, m)))
         .collect();
     v.extend([
-        Scene::new("tex_mag_nearest", G, PENDING, |r, s| magnified(r, s, N)),
-        Scene::new("tex_mag_linear", G, PENDING, |r, s| magnified(r, s, L)),
-        Scene::new("tex_wrap_repeat", G, PENDING, |r, s| wrapped(r, s, Wrap::Repeat)),
-        Scene::new("tex_wrap_clamp", G, PENDING, |r, s| wrapped(r, s, Wrap::Clamp)),
-        Scene::new("tex_wrap_clamp_to_edge", G, PENDING, |r, s| {
-            wrapped(r, s, Wrap::ClampToEdge)
+        Scene::new("tex_mag_nearest", G, E, |r, s| magnified(r, s, N)),
+        Scene::new("tex_mag_linear", G, E, |r, s| magnified(r, s, L)),
+        Scene::new("tex_wrap_repeat", G, edge_ties(0, 0, 0.0295), |r, s| {
+            wrapped(r, s, Wrap::Repeat)
         }),
-        Scene::new("tex_wrap_clamp_to_border", G, PENDING, |r, s| {
+        Scene::new("tex_wrap_clamp", G, lsb(16, 0), |r, s| wrapped(r, s, Wrap::Clamp)),
+        Scene::new("tex_wrap_clamp_to_edge", G, E, |r, s| wrapped(r, s, Wrap::ClampToEdge)),
+        Scene::new("tex_wrap_clamp_to_border", G, edge_ties(1, 0, 0.0036), |r, s| {
             wrapped(r, s, Wrap::ClampToBorder)
         }),
-        Scene::new("tex_wrap_mirrored_repeat", G, PENDING, |r, s| {
+        Scene::new("tex_wrap_mirrored_repeat", G, E, |r, s| {
             wrapped(r, s, Wrap::MirroredRepeat)
         }),
-        Scene::new("tex_env_modulate", G, PENDING, |r, s| {
+        Scene::new("tex_env_modulate", G, lsb(355, 1101), |r, s| {
             env_spheres(r, s, EnvMode::Modulate)
         }),
-        Scene::new("tex_env_replace", G, PENDING, |r, s| {
+        Scene::new("tex_env_replace", G, lsb(285, 954), |r, s| {
             env_spheres(r, s, EnvMode::Replace)
         }),
-        Scene::new("tex_env_decal", G, PENDING, |r, s| env_spheres(r, s, EnvMode::Decal)),
-        Scene::new("tex_env_blend", G, PENDING, |r, s| env_spheres(r, s, EnvMode::Blend)),
-        Scene::new("tex_env_add", G, PENDING, |r, s| env_spheres(r, s, EnvMode::Add)),
-        Scene::new("tex_combine_functions", G, PENDING, combine_functions),
-        Scene::new("tex_combine_dot3_bump", G, PENDING, dot3_bump),
-        Scene::new("tex_1d", G, PENDING, tex_1d),
-        Scene::new("tex_3d", G, PENDING, tex_3d),
-        Scene::new("tex_cube_map", G, PENDING, cube_map),
-        Scene::new("tex_texgen_sphere_map", G, PENDING, sphere_map),
-        Scene::new("tex_shadow_map_compare", G, PENDING, shadow_map),
-        Scene::new("tex_build2dmipmaps_npot", G, PENDING, npot_mipmaps),
-        Scene::new("tex_1x1", G, PENDING, one_by_one),
-        Scene::new("tex_4096x1", G, PENDING, wide),
-        Scene::new("tex_coords_1e6", G, PENDING, coords_1e6),
-        Scene::new("tex_lod_bias_100", G, PENDING, lod_bias),
-        Scene::new("tex_derivatives_0_and_1e30", G, PENDING, derivatives),
+        Scene::new("tex_env_decal", G, lsb(1078, 2569), |r, s| {
+            env_spheres(r, s, EnvMode::Decal)
+        }),
+        Scene::new("tex_env_blend", G, lsb(355, 1105), |r, s| {
+            env_spheres(r, s, EnvMode::Blend)
+        }),
+        Scene::new("tex_env_add", G, lsb(414, 1253), |r, s| env_spheres(r, s, EnvMode::Add)),
+        Scene::new("tex_combine_functions", G, E, combine_functions),
+        Scene::new("tex_combine_dot3_bump", G, E, dot3_bump),
+        Scene::new("tex_1d", G, edge_ties(0, 14, 0.00066), tex_1d),
+        Scene::new("tex_3d", G, E, tex_3d),
+        Scene::new("tex_cube_map", G, lsb(4, 42), cube_map),
+        Scene::new("tex_texgen_sphere_map", G, lsb(1, 7), sphere_map),
+        Scene::new("tex_shadow_map_compare", G, edge_ties(0, 0, 0.00033), shadow_map),
+        Scene::new("tex_build2dmipmaps_npot", G, lsb(0, 8), npot_mipmaps),
+        Scene::new("tex_1x1", G, E, one_by_one),
+        Scene::new("tex_4096x1", G, lsb(0, 13), wide),
+        Scene::new("tex_coords_1e6", G, E, coords_1e6),
+        Scene::new("tex_lod_bias_100", G, edge_ties(0, 9, 0.002), lod_bias),
+        Scene::new("tex_derivatives_0_and_1e30", G, E, derivatives),
     ]);
     v
 }
@@ -202,10 +251,10 @@ fn tex_reset(r: &mut Rec) {
     for unit in [1, 0] {
         r.call(Call::ActiveTexture(unit));
         for t in [TextureTarget::D1, T2, TextureTarget::D3, TextureTarget::Cube] {
-            r.call(Call::TexEnable(TexCapability::Texture(t), false));
+            r.disable(Capability::Texture(t));
         }
         for c in [TexCoordName::S, TexCoordName::T, TexCoordName::R, TexCoordName::Q] {
-            r.call(Call::TexEnable(TexCapability::TexGen(c), false));
+            r.disable(Capability::TexGen(c));
         }
         r.tex_env(TexEnvParam::Mode(EnvMode::Modulate))
             .tex_env(TexEnvParam::LodBias(0.0));
@@ -230,7 +279,7 @@ fn upload_2d(r: &mut Rec, levels: &[Level]) {
 fn texture_2d(r: &mut Rec, name: u32, levels: &[Level], min: (Filter, MipFilter), mag: Filter, wrap: Wrap) {
     params(r, T2, name, min, mag, wrap);
     upload_2d(r, levels);
-    r.call(Call::TexEnable(TexCapability::Texture(T2), true));
+    r.enable(Capability::Texture(T2));
 }
 
 fn env_mode(r: &mut Rec, m: EnvMode) -> &mut Rec {
@@ -394,7 +443,7 @@ fn env_spheres(r: &mut Rec, _s: Size, mode: EnvMode) {
             [16, 16, 1],
             &channels(&texels, comps),
         );
-        r.call(Call::TexEnable(TexCapability::Texture(T2), true));
+        r.enable(Capability::Texture(T2));
         let (x, y) = (-3.0 + 3.0 * (i % 3) as f32, 1.6 - 3.2 * (i / 3) as f32);
         sphere_with(r, [x, y, -9.0], 1.4, (20, 14), 1.0, true);
     }
@@ -707,7 +756,7 @@ fn tex_1d(r: &mut Rec, _s: Size) {
         n /= 2;
         l += 1;
     }
-    r.call(Call::TexEnable(TexCapability::Texture(t1), true));
+    r.enable(Capability::Texture(t1));
     env_mode(r, EnvMode::Modulate);
     receding_plane(r, [1.0, 0.9, 0.8, 1.0]);
     // The sky band: s over the width, at z = -2.
@@ -795,7 +844,7 @@ fn tex_3d(r: &mut Rec, s: Size) {
                 v,
             );
         }
-        r.call(Call::TexEnable(TexCapability::Texture(t3), true));
+        r.enable(Capability::Texture(t3));
         env_mode(r, EnvMode::Replace);
         tex_rect(r, inset(p[i], 2.0), 0.0, coords[i]);
     }
@@ -839,14 +888,14 @@ fn cube_map(r: &mut Rec, _s: Size) {
             &texels,
         );
     }
-    r.call(Call::TexEnable(TexCapability::Texture(tc), true));
+    r.enable(Capability::Texture(tc));
     env_mode(r, EnvMode::Modulate);
     // Left: (s, t, r) = the normal, set per vertex.
     cube_sphere(r, [-2.2, 0.0, -9.0], 2.0);
     // Right: generated from the eye-space normal.
     for c in [TexCoordName::S, TexCoordName::T, TexCoordName::R] {
         r.call(Call::TexGen(c, TexGenParam::Mode(TexGenMode::NormalMap)))
-            .call(Call::TexEnable(TexCapability::TexGen(c), true));
+            .enable(Capability::TexGen(c));
     }
     cube_sphere(r, [2.2, 0.0, -9.0], 2.0);
 }
@@ -892,7 +941,7 @@ fn sphere_map(r: &mut Rec, _s: Size) {
     env_mode(r, EnvMode::Modulate);
     for c in [TexCoordName::S, TexCoordName::T] {
         r.call(Call::TexGen(c, TexGenParam::Mode(TexGenMode::SphereMap)))
-            .call(Call::TexEnable(TexCapability::TexGen(c), true));
+            .enable(Capability::TexGen(c));
     }
     sphere_with(r, [-2.2, 0.0, -9.0], 2.0, (24, 16), 1.0, false);
     sphere_with(r, [2.2, 0.0, -7.0], 1.5, (9, 6), 1.0, false);
@@ -947,7 +996,7 @@ fn shadow_map(r: &mut Rec, s: Size) {
                 ty: PixelType::Float,
                 pixels: depth.clone(),
             })
-            .call(Call::TexEnable(TexCapability::Texture(T2), true));
+            .enable(Capability::Texture(T2));
         let [x0, y0, x1, y1] = inset(p[i], 2.0);
         r.begin(PrimitiveMode::TriangleStrip);
         for (x, y, sc, tc, rc, c) in [

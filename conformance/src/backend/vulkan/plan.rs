@@ -303,7 +303,11 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
             Call::Enable(cap) => {
                 if matches!(
                     cap,
-                    Capability::Fog | Capability::ColorSum | Capability::Lighting | Capability::ClipPlane(_)
+                    Capability::Fog
+                        | Capability::ColorSum
+                        | Capability::Lighting
+                        | Capability::ClipPlane(_)
+                        | Capability::Texture(_)
                 ) {
                     return Err(format!(
                         "{cap:?}: a fixed-function fragment stage this back end's pipelines do not have"
@@ -447,14 +451,8 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
             | Call::Material(..)
             | Call::ColorMaterial(..)
             | Call::ClipPlane(..) => {}
-            Call::TexEnable(crate::texnames::TexCapability::Texture(t), true) => {
-                return Err(format!(
-                    "texturing ({t:?}): this back end's pipelines have no samplers and no texture environment"
-                ));
-            }
             // Without a texture enabled (refused above) these change no pixel.
-            Call::TexEnable(..)
-            | Call::ActiveTexture(_)
+            Call::ActiveTexture(_)
             | Call::BindTexture(..)
             | Call::TexImage { .. }
             | Call::TexParameter(..)
