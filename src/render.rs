@@ -9,8 +9,9 @@
 use glam::{Mat4, Vec3};
 use indicatif::{ProgressBar, ProgressStyle};
 use softgl::{
-    Capability, ClearMask, Context, Face, FramebufferDesc, LightModelParam, LightParam, MaterialParam, MatrixMode,
-    PrimitiveMode,
+    Capability, ClearMask, Context, EnvMode, Face, Filter, FramebufferDesc, InternalFormat, LightModelParam,
+    LightParam, MaterialParam, MatrixMode, MipFilter, PixelData, PixelFormat, PixelStore, PixelType, PrimitiveMode,
+    TexEnvParam, TexImageTarget, TexParam, TextureTarget,
 };
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
@@ -250,6 +251,46 @@ fn camera(model: &Model, aspect: f32) -> (Mat4, [f64; 6]) {
     )
 }
 
+/// `GL_MAX_TEXTURE_SIZE`: larger images are scaled down to fit.
+const MAX_TEXTURE: u32 = 4096;
+
+/// Uploads `img` as a new 2D texture with its mipmaps (trilinear, REPEAT)
+/// and returns its name. Rows are flipped: an image's first row is its top,
+/// GL's first row (t = 0) the bottom, which is where OBJ's v = 0 is.
+fn upload(gl: &mut Context, img: &image::RgbaImage) -> Result<u32, RenderError> {
+    let (w, h) = img.dimensions();
+    let scale = (MAX_TEXTURE as f32 / w.max(h) as f32).min(1.0);
+    let img = if scale < 1.0 {
+        let size = |v: u32| ((v as f32 * scale) as u32).clamp(1, MAX_TEXTURE);
+        image::imageops::resize(img, size(w), size(h), image::imageops::FilterType::Triangle)
+    } else {
+        img.clone()
+    };
+    let flipped = image::imageops::flip_vertical(&img);
+    let (w, h) = flipped.dimensions();
+    let name = gl.gen_textures(1)?[0];
+    let t = TextureTarget::D2;
+    gl.bind_texture(t, name)?;
+    let pixels = PixelData {
+        format: PixelFormat::Rgba,
+        ty: PixelType::UnsignedByte,
+        store: PixelStore::default(),
+        bytes: flipped.as_raw(),
+    };
+    gl.tex_image(
+        TexImageTarget::D2,
+        0,
+        InternalFormat::Rgba8,
+        [w as i32, h as i32, 1],
+        0,
+        Some(pixels),
+    )?;
+    gl.generate_mipmap(t)?;
+    gl.tex_parameter(t, TexParam::MinFilter(Filter::Linear, MipFilter::Linear))?;
+    gl.tex_parameter(t, TexParam::MagFilter(Filter::Linear))?;
+    Ok(name)
+}
+
 /// Renders `model` at `width` x `height`.
 pub fn render(model: &Model, width: u32, height: u32) -> Result<image::RgbaImage, RenderError> {
     let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(width, height))?;
@@ -285,14 +326,32 @@ pub fn render(model: &Model, width: u32, height: u32) -> Result<image::RgbaImage
         shininess: 0.0,
         texture: None,
     };
+    let mut names = Vec::with_capacity(model.materials.len());
+    for m in &model.materials {
+        names.push(m.texture.as_ref().map(|img| upload(&mut gl, img)).transpose()?);
+    }
+    // The texture modulates the lit colour.
+    gl.tex_env(TexEnvParam::Mode(EnvMode::Modulate))?;
     for mesh in &model.meshes {
         let m = mesh.material.and_then(|i| model.materials.get(i)).unwrap_or(&default);
+        let texture = mesh.material.and_then(|i| names.get(i).copied().flatten());
+        let texcoords = mesh.texcoords.as_deref().filter(|_| texture.is_some());
+        match texture {
+            Some(name) if texcoords.is_some() => {
+                gl.bind_texture(TextureTarget::D2, name)?;
+                gl.enable(Capability::Texture(TextureTarget::D2))?;
+            }
+            _ => gl.disable(Capability::Texture(TextureTarget::D2))?,
+        }
         gl.material(Face::FrontAndBack, MaterialParam::Ambient(m.ambient))?;
         gl.material(Face::FrontAndBack, MaterialParam::Diffuse(m.diffuse))?;
         gl.material(Face::FrontAndBack, MaterialParam::Specular(m.specular))?;
         gl.material(Face::FrontAndBack, MaterialParam::Shininess(m.shininess))?;
         gl.begin(PrimitiveMode::Triangles)?;
-        for (p, n) in mesh.positions.iter().zip(&mesh.normals) {
+        for (i, (p, n)) in mesh.positions.iter().zip(&mesh.normals).enumerate() {
+            if let Some(st) = texcoords.and_then(|t| t.get(i)) {
+                gl.tex_coord([st[0], st[1], 0.0, 1.0]);
+            }
             gl.normal3(n[0], n[1], n[2]);
             gl.vertex3(p[0], p[1], p[2]);
         }

@@ -132,3 +132,40 @@ fn render_reports_missing_and_malformed_files_by_name() {
     assert!(!dir.join("out.png").exists(), "no image is written on an error");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn render_draws_the_textured_tile_framed_and_lit() {
+    let dir = scratch("render-tile");
+    let path = dir.join("tile.png");
+    let model = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/models/tile.obj");
+    let out = softgl(&["render", model, "-o", path.to_str().unwrap(), "--size", "160x120"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("(160x120): 2 triangles, 1 textured meshes"), "{stdout}");
+    let img = image::open(&path).unwrap().to_rgba8();
+    assert_eq!(img.dimensions(), (160, 120));
+    let px = |x: u32, y: u32| img.get_pixel(x, y).0;
+    // The clear colour (38, 43, 51) wherever the tile is not.
+    let background = [38, 43, 51, 255];
+    for (x, y) in [(0, 0), (159, 0), (0, 119), (159, 119), (5, 60), (154, 60)] {
+        assert_eq!(px(x, y), background, "({x}, {y})");
+    }
+    // tile.png (4x4): green (30, 200, 40) in the middle 2x2, a red (220, 30, 30)
+    // border, a blue (30, 40, 220) top row. The camera looks at the centre of
+    // the bounding box, so the middle of the image is the middle of the
+    // texture. The tile is lit (MODULATE): each texel's colour scaled by the
+    // light, so the checks are on which channel dominates, with margins.
+    let dominant = |p: [u8; 4], c: usize| (0..3).all(|k| k == c || u32::from(p[c]) > 2 * u32::from(p[k]) + 40);
+    assert!(dominant(px(80, 60), 1), "centre {:?}", px(80, 60));
+    // Along the middle row, the tile starts with the red border.
+    let left = (0..160).find(|&x| px(x, 60) != background).expect("the tile is drawn");
+    assert!((20..70).contains(&left), "left edge at {left}");
+    assert!(dominant(px(left + 2, 60), 0), "left border {:?}", px(left + 2, 60));
+    // Down the middle column the blue top row shows first (image rows are
+    // flipped on upload: the PNG's top row is at v = 1, the top of the tile);
+    // LINEAR with REPEAT blends it with the red bottom row right at the edge.
+    let top = (0..120).find(|&y| px(80, y) != background).expect("the tile is drawn");
+    assert!((0..10).any(|d| dominant(px(80, top + d), 2)), "no blue below row {top}");
+    assert!(!(0..10).any(|d| dominant(px(80, top + d), 1)), "green at the top edge");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
