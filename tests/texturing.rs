@@ -13,7 +13,7 @@ use softgl::texture::{
 };
 use softgl::{
     Capability, Context, FramebufferDesc, GlError, MatrixMode, PrimitiveMode, TexCoordName, TexEnvParam,
-    TexEnvParamName, TexGenMode, TexGenParam, TexGenParamName,
+    TexEnvParamName, TexGenMode, TexGenParam, TexGenParamName, VertexArrays,
 };
 
 const RED: [u8; 4] = [255, 0, 0, 255];
@@ -48,6 +48,32 @@ fn texture_2d(gl: &mut Context, w: i32, h: i32, texels: &[[u8; 4]], wrap: Wrap) 
 /// The 2×2 texture red, green (bottom row), blue, white (top row).
 fn checker(gl: &mut Context) {
     texture_2d(gl, 2, 2, &[RED, GREEN, BLUE, WHITE], Wrap::ClampToEdge);
+}
+
+/// A quad over the whole 8×8 window with texture coordinates (0, 0)–(1, 1)
+/// on unit 0, counter-clockwise from the bottom left.
+fn textured_quad(gl: &mut Context) {
+    gl.begin(PrimitiveMode::Quads).unwrap();
+    for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+        gl.tex_coord2((x + 1.0) / 2.0, (y + 1.0) / 2.0);
+        gl.vertex2(x, y);
+    }
+    gl.end().unwrap();
+}
+
+/// The four 4×4 quadrants' colours: bottom left, bottom right, top left, top right.
+fn quadrants(gl: &Context) -> [[u8; 4]; 4] {
+    let fb = gl.framebuffer();
+    let q = [(0, 0), (4, 0), (0, 4), (4, 4)].map(|(x0, y0)| {
+        let c = fb.pixel(x0, y0).unwrap();
+        for y in y0..y0 + 4 {
+            for x in x0..x0 + 4 {
+                assert_eq!(fb.pixel(x, y), Some(c), "pixel ({x}, {y}) differs within its quadrant");
+            }
+        }
+        c
+    });
+    q
 }
 
 #[test]
@@ -120,6 +146,128 @@ fn the_first_complete_enabled_target_is_sampled() {
     // Enables are per unit: unit 1 has none.
     gl.active_texture(1).unwrap();
     assert!(!gl.is_enabled(Capability::Texture(TextureTarget::D2)));
+}
+
+#[test]
+fn nearest_magnification_replaces_with_the_texels() {
+    let mut gl = context();
+    checker(&mut gl);
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    gl.tex_env(TexEnvParam::Mode(EnvMode::Replace)).unwrap();
+    gl.color3(0.2, 0.4, 0.6);
+    textured_quad(&mut gl);
+    // Pixel x has s = (x + 0.5)/8: texel column 0 for x < 4, 1 from x = 4 on; rows alike.
+    assert_eq!(quadrants(&gl), [RED, GREEN, BLUE, WHITE]);
+}
+
+#[test]
+fn modulate_multiplies_the_colour_by_the_texels() {
+    let mut gl = context();
+    checker(&mut gl);
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    // MODULATE is the default environment.
+    assert_eq!(
+        gl.get_tex_env(TexEnvParamName::Mode),
+        Ok(TexEnvParam::Mode(EnvMode::Modulate))
+    );
+    gl.color4(0.2, 0.4, 0.6, 1.0);
+    textured_quad(&mut gl);
+    // 0.2·255 = 51, 0.4·255 = 102, 0.6·255 = 153; a texel channel of 255 keeps
+    // the colour's, one of 0 zeroes it.
+    assert_eq!(
+        quadrants(&gl),
+        [[51, 0, 0, 255], [0, 102, 0, 255], [0, 0, 153, 255], [51, 102, 153, 255]]
+    );
+}
+
+/// A 4×1 texture red, green, blue, white: s in [k/4, (k+1)/4) samples texel k.
+fn strip(gl: &mut Context) {
+    texture_2d(gl, 4, 1, &[RED, GREEN, BLUE, WHITE], Wrap::Repeat);
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    gl.tex_env(TexEnvParam::Mode(EnvMode::Replace)).unwrap();
+}
+
+/// A quad over the window with texture coordinates (0, 0) everywhere.
+fn quad_without_coordinates(gl: &mut Context) {
+    let pos = [-1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, 1.0];
+    let zeros = [0.0f32; 8];
+    let arrays = VertexArrays::positions(2, &pos).with_tex_coords(0, 2, &zeros);
+    gl.draw_arrays(PrimitiveMode::Quads, 0, 4, &arrays).unwrap();
+}
+
+/// The texels of the bottom row, left to right.
+fn row(gl: &Context) -> Vec<[u8; 4]> {
+    (0..8).map(|x| gl.framebuffer().pixel(x, 0).unwrap()).collect()
+}
+
+#[test]
+fn object_linear_texgen_replaces_the_given_coordinates() {
+    let mut gl = context();
+    strip(&mut gl);
+    // s = 0.5·x + 0.5 over x in [-1, 1]: pixel x has s = (x + 0.5)/8, texel floor(4s) = x/2.
+    gl.tex_gen(TexCoordName::S, TexGenParam::Mode(TexGenMode::ObjectLinear))
+        .unwrap();
+    gl.tex_gen(TexCoordName::S, TexGenParam::ObjectPlane([0.5, 0.0, 0.0, 0.5]))
+        .unwrap();
+    gl.enable(Capability::TexGen(TexCoordName::S)).unwrap();
+    quad_without_coordinates(&mut gl);
+    assert_eq!(row(&gl), [RED, RED, GREEN, GREEN, BLUE, BLUE, WHITE, WHITE]);
+}
+
+#[test]
+fn an_eye_plane_is_kept_in_the_eye_coordinates_of_its_modelview() {
+    let mut gl = context();
+    strip(&mut gl);
+    gl.tex_gen(TexCoordName::S, TexGenParam::Mode(TexGenMode::EyeLinear))
+        .unwrap();
+    // Given under a translation by -1 in x: the plane (0.25, 0, 0, 0.25) times the
+    // inverse translation (+1) is (0.25, 0, 0, 0.5) in eye coordinates.
+    gl.translate(-1.0, 0.0, 0.0).unwrap();
+    gl.tex_gen(TexCoordName::S, TexGenParam::EyePlane([0.25, 0.0, 0.0, 0.25]))
+        .unwrap();
+    assert_eq!(
+        gl.get_tex_gen(TexCoordName::S, TexGenParamName::EyePlane),
+        Ok(TexGenParam::EyePlane([0.25, 0.0, 0.0, 0.5]))
+    );
+    gl.load_identity().unwrap();
+    gl.enable(Capability::TexGen(TexCoordName::S)).unwrap();
+    quad_without_coordinates(&mut gl);
+    // s = 0.25·x + 0.5 in [0.25, 0.75]: pixel x has s = (x + 0.5)/16 + 0.25, texel 1 then 2.
+    assert_eq!(row(&gl), [GREEN, GREEN, GREEN, GREEN, BLUE, BLUE, BLUE, BLUE]);
+}
+
+#[test]
+fn the_texture_matrix_transforms_the_coordinates() {
+    let mut gl = context();
+    strip(&mut gl);
+    gl.matrix_mode(MatrixMode::Texture).unwrap();
+    // s' = s/2 + 0.5: the right half of the strip spread over the window.
+    gl.translate(0.5, 0.0, 0.0).unwrap();
+    gl.scale(0.5, 1.0, 1.0).unwrap();
+    gl.matrix_mode(MatrixMode::Modelview).unwrap();
+    textured_quad(&mut gl);
+    // Pixel x: s = (x + 0.5)/8, s' = (x + 0.5)/16 + 0.5, texel 2 for x < 4, 3 after.
+    assert_eq!(row(&gl), [BLUE, BLUE, BLUE, BLUE, WHITE, WHITE, WHITE, WHITE]);
+    // Unit 1's matrix is its own.
+    gl.active_texture(1).unwrap();
+    assert_eq!(gl.matrix(MatrixMode::Texture), glam::Mat4::IDENTITY);
+}
+
+#[test]
+fn a_second_unit_reads_its_own_coordinates() {
+    let mut gl = context();
+    gl.active_texture(1).unwrap();
+    strip(&mut gl);
+    gl.begin(PrimitiveMode::Quads).unwrap();
+    for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+        // Unit 0's coordinates run the other way and are not read.
+        gl.tex_coord2((1.0 - x) / 2.0, 0.0);
+        gl.multi_tex_coord(1, [(x + 1.0) / 2.0, 0.0, 0.0, 1.0]).unwrap();
+        gl.vertex2(x, y);
+    }
+    gl.end().unwrap();
+    assert_eq!(row(&gl), [RED, RED, GREEN, GREEN, BLUE, BLUE, WHITE, WHITE]);
+    assert_eq!(gl.draw_plan().1.tex, 0b10);
 }
 
 #[test]

@@ -6,6 +6,8 @@
 
 use crate::consts::*;
 use softgl::state::RasterState;
+use softgl::texture::unit::TexUnit;
+use softgl::texture::{TexParam, TextureTarget};
 use softgl::{Context, CurrentAttribs, MatrixMode};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -36,40 +38,22 @@ impl ClientArray {
 // where the context is current, under GL's contract for client arrays.
 unsafe impl Send for ClientArray {}
 
-/// `glPixelStore` state for one direction (pack or unpack).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PixelStore {
-    pub swap_bytes: bool,
-    pub lsb_first: bool,
-    pub row_length: i32,
-    pub skip_rows: i32,
-    pub skip_pixels: i32,
-    pub alignment: i32,
-    pub image_height: i32,
-    pub skip_images: i32,
-}
-
-impl PixelStore {
-    pub const DEFAULT: PixelStore = PixelStore {
-        swap_bytes: false,
-        lsb_first: false,
-        row_length: 0,
-        skip_rows: 0,
-        skip_pixels: 0,
-        alignment: 4,
-        image_height: 0,
-        skip_images: 0,
-    };
-}
+/// `glPixelStore` state for one direction (pack or unpack): softgl's.
+pub use softgl::texture::PixelStore;
 
 /// `glHint` targets, in the order of [`GlState::hints`].
-pub const HINTS: [GLenum; 5] = [
+pub const HINTS: [GLenum; 7] = [
     GL_PERSPECTIVE_CORRECTION_HINT,
     GL_POINT_SMOOTH_HINT,
     GL_LINE_SMOOTH_HINT,
     GL_POLYGON_SMOOTH_HINT,
     GL_FOG_HINT,
+    GL_TEXTURE_COMPRESSION_HINT,
+    GL_GENERATE_MIPMAP_HINT,
 ];
+
+/// Texture units, each with its texture coordinate array.
+pub const MAX_UNITS: usize = 8;
 
 /// A command of a display list: a GL call with its arguments.
 pub type Cmd = Arc<dyn Fn(&mut GlState, &mut Context) + Send + Sync>;
@@ -88,8 +72,37 @@ pub struct SavedAttrib {
     pub state: RasterState,
     pub current: CurrentAttribs,
     pub matrix_mode: MatrixMode,
-    pub hints: [GLenum; 5],
+    pub hints: [GLenum; 7],
     pub inert_caps: Vec<GLenum>,
+    /// For `GL_TEXTURE_BIT` and `GL_ENABLE_BIT`.
+    pub textures: Option<SavedTextures>,
+}
+
+/// The texture state `glPushAttrib` saved: every unit (enables,
+/// environment, coordinate generation), its bindings, the active unit and,
+/// for `GL_TEXTURE_BIT`, the parameters of every bound texture object.
+#[derive(Clone)]
+pub struct SavedTextures {
+    pub active: usize,
+    pub units: [TexUnit; MAX_UNITS],
+    /// Per unit, the name bound to each target of `gl::texture::TARGETS`.
+    pub bindings: [[u32; 4]; MAX_UNITS],
+    /// The bound objects (each once) with their parameters.
+    pub objects: Vec<(TextureTarget, u32, Vec<TexParam>)>,
+}
+
+/// The client arrays and the client active texture unit, as
+/// `GL_CLIENT_VERTEX_ARRAY_BIT` saves them.
+#[derive(Clone, Copy)]
+pub struct ClientArrays {
+    pub vertex: ClientArray,
+    pub color: ClientArray,
+    pub normal: ClientArray,
+    pub tex_coords: [ClientArray; MAX_UNITS],
+    pub secondary: ClientArray,
+    pub fog_coord: ClientArray,
+    pub edge_flag: ClientArray,
+    pub client_active: usize,
 }
 
 /// The state one `glPushClientAttrib` saved.
@@ -98,7 +111,7 @@ pub struct SavedClient {
     pub mask: u32,
     pub pack: PixelStore,
     pub unpack: PixelStore,
-    pub arrays: [ClientArray; 7],
+    pub arrays: ClientArrays,
 }
 
 /// The GL state of one context that `softgl::Context` does not hold.
@@ -106,7 +119,11 @@ pub struct GlState {
     pub vertex: ClientArray,
     pub color: ClientArray,
     pub normal: ClientArray,
-    pub tex_coord: ClientArray,
+    /// Each unit's `glTexCoordPointer`.
+    pub tex_coords: [ClientArray; MAX_UNITS],
+    /// `glClientActiveTexture`: the unit `glTexCoordPointer` and the
+    /// `GL_TEXTURE_COORD_ARRAY` enable name.
+    pub client_active: usize,
     pub secondary: ClientArray,
     pub fog_coord: ClientArray,
     /// `glEdgeFlagPointer`: `GLboolean`s.
@@ -114,7 +131,7 @@ pub struct GlState {
     pub pack: PixelStore,
     pub unpack: PixelStore,
     /// `glHint` modes, in the order of [`HINTS`].
-    pub hints: [GLenum; 5],
+    pub hints: [GLenum; 7],
     /// Capabilities accepted but without effect until lighting lands
     /// (`GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_COLOR_MATERIAL`, `GL_AUTO_NORMAL`).
     pub inert_caps: Vec<GLenum>,
@@ -135,7 +152,8 @@ impl Default for GlState {
             vertex: ClientArray::new(4),
             color: ClientArray::new(4),
             normal: ClientArray::new(3),
-            tex_coord: ClientArray::new(4),
+            tex_coords: [ClientArray::new(4); MAX_UNITS],
+            client_active: 0,
             secondary: ClientArray::new(3),
             fog_coord: ClientArray::new(1),
             edge_flag: ClientArray {
@@ -144,7 +162,7 @@ impl Default for GlState {
             },
             pack: PixelStore::DEFAULT,
             unpack: PixelStore::DEFAULT,
-            hints: [GL_DONT_CARE; 5],
+            hints: [GL_DONT_CARE; 7],
             inert_caps: Vec::new(),
             attrib_stack: Vec::new(),
             client_attrib_stack: Vec::new(),
@@ -157,17 +175,30 @@ impl Default for GlState {
 }
 
 impl GlState {
-    /// The client arrays, in `glPushClientAttrib`'s order.
-    pub fn arrays(&self) -> [ClientArray; 7] {
-        [
-            self.vertex,
-            self.color,
-            self.normal,
-            self.tex_coord,
-            self.secondary,
-            self.fog_coord,
-            self.edge_flag,
-        ]
+    /// The client arrays, as `glPushClientAttrib` saves them.
+    pub fn arrays(&self) -> ClientArrays {
+        ClientArrays {
+            vertex: self.vertex,
+            color: self.color,
+            normal: self.normal,
+            tex_coords: self.tex_coords,
+            secondary: self.secondary,
+            fog_coord: self.fog_coord,
+            edge_flag: self.edge_flag,
+            client_active: self.client_active,
+        }
+    }
+
+    /// Puts back what [`GlState::arrays`] saved.
+    pub fn set_arrays(&mut self, a: ClientArrays) {
+        (self.vertex, self.color, self.normal) = (a.vertex, a.color, a.normal);
+        (self.tex_coords, self.client_active) = (a.tex_coords, a.client_active);
+        (self.secondary, self.fog_coord, self.edge_flag) = (a.secondary, a.fog_coord, a.edge_flag);
+    }
+
+    /// The client active unit's texture coordinate array.
+    pub fn tex_coord(&self) -> &ClientArray {
+        &self.tex_coords[self.client_active]
     }
 
     /// The client array `glEnableClientState` names, if softgl has it.
@@ -176,11 +207,22 @@ impl GlState {
             GL_VERTEX_ARRAY => &mut self.vertex,
             GL_COLOR_ARRAY => &mut self.color,
             GL_NORMAL_ARRAY => &mut self.normal,
-            GL_TEXTURE_COORD_ARRAY => &mut self.tex_coord,
+            GL_TEXTURE_COORD_ARRAY => &mut self.tex_coords[self.client_active],
             GL_EDGE_FLAG_ARRAY => &mut self.edge_flag,
             0x845E => &mut self.secondary, // GL_SECONDARY_COLOR_ARRAY
             0x8457 => &mut self.fog_coord, // GL_FOG_COORD_ARRAY
             _ => return None,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn as_many_units_as_softgl() {
+        let gl = Context::new(softgl::FramebufferDesc::rgba8_d24s8(1, 1)).unwrap();
+        assert_eq!(gl.tex_units().units.len(), MAX_UNITS);
     }
 }

@@ -20,8 +20,6 @@ const GL_CURRENT_INDEX: u32 = 0x0B01;
 const GL_EDGE_FLAG: u32 = 0x0B43;
 const GL_CURRENT_BIT: u32 = 0x1;
 const GL_COMPILE: u32 = 0x1300;
-const GL_TEXTURE_ENV: u32 = 0x2300;
-const GL_TEXTURE_ENV_MODE: u32 = 0x2200;
 const W: usize = 8;
 
 /// A context current on this thread drawing into `buf` (W x W RGBA bytes),
@@ -171,8 +169,8 @@ fn unimplemented_commands_are_compiled_and_fail_when_the_list_runs() {
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     // A query is never compiled: its error comes at once.
     glNewList(list, GL_COMPILE);
-    let mut mode = 0.0f32;
-    glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &mut mode);
+    let mut map = [0.0f32; 1];
+    glGetPixelMapfv(0x0C70, map.as_mut_ptr()); // GL_PIXEL_MAP_I_TO_I
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     glEndList();
     glCallList(list);

@@ -102,6 +102,34 @@ assert depth[0] == 0xFFFFFF, hex(depth[0])  # cleared to 1.0, stencil 0 in the h
 w, h, fmt, cbuf = osmesa.OSMesaGetColorBuffer(ctx)
 assert (w, h, fmt) == (W, H, osmesa.OSMESA_RGBA) and cbuf.value == ctypes.addressof(buf)
 
+# A textured quad: a 2x2 RGBA texture (red, green / blue, white), NEAREST,
+# GL_REPLACE, over the whole window; each quadrant is one texel, exactly.
+tex = int(GL.glGenTextures(1))
+GL.glBindTexture(GL.GL_TEXTURE_2D, tex)
+texels = (ctypes.c_ubyte * 16)(255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255)
+GL.glTexImage2D(GL.GL_TEXTURE_2D, 0, GL.GL_RGBA, 2, 2, 0, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE, texels)
+GL.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MIN_FILTER, GL.GL_NEAREST)
+GL.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MAG_FILTER, GL.GL_NEAREST)
+GL.glTexEnvi(GL.GL_TEXTURE_ENV, GL.GL_TEXTURE_ENV_MODE, GL.GL_REPLACE)
+GL.glEnable(GL.GL_TEXTURE_2D)
+GL.glBegin(GL.GL_QUADS)
+for s, t in ((0, 0), (1, 0), (1, 1), (0, 1)):
+    GL.glTexCoord2f(s, t)
+    GL.glVertex2f(s * W, t * H)
+GL.glEnd()
+GL.glDisable(GL.GL_TEXTURE_2D)
+GL.glFinish()
+data = bytes(buf)
+assert pixel(3, 3) == (255, 0, 0, 255), pixel(3, 3)
+assert pixel(28, 3) == (0, 255, 0, 255), pixel(28, 3)
+assert pixel(3, 20) == (0, 0, 255, 255), pixel(3, 20)
+assert pixel(28, 20) == (255, 255, 255, 255), pixel(28, 20)
+assert GL.glGetTexLevelParameteriv(GL.GL_TEXTURE_2D, 0, GL.GL_TEXTURE_WIDTH) == 2
+assert GL.glIsTexture(tex)
+GL.glDeleteTextures([tex])
+assert not GL.glIsTexture(tex)
+assert GL.glGetError() == GL.GL_NO_ERROR
+
 osmesa.OSMesaDestroyContext(ctx)
 print("ok")
 sys.exit(0)

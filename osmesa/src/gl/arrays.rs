@@ -1,13 +1,13 @@
 //! Client vertex arrays: the pointers, `glDrawArrays`, `glDrawElements`,
 //! `glArrayElement`. The caller's arrays are read into f32 arrays for softgl
-//! at each draw (positions, colours, normals); texture coordinates are
-//! accepted and, without texturing, have no effect on the image; edge flags
+//! at each draw (positions, colours, normals, each unit's texture
+//! coordinates, …); edge flags
 //! (`glEdgeFlagPointer`) pick the edges polygon mode `GL_LINE`/`GL_POINT` draws.
 
 use super::enums::decode;
 use super::{now, outside, run_or_record};
 use crate::consts::*;
-use crate::gl_state::{ClientArray, Cmd, GlState};
+use crate::gl_state::{ClientArray, Cmd, GlState, MAX_UNITS};
 use softgl::{AttribArray, Context, GlError, GlResult, Indices, PrimitiveMode, VertexArrays};
 use std::ffi::c_void;
 
@@ -98,6 +98,8 @@ struct Fetched {
     normal: Option<Vec<f32>>,
     secondary: Option<Vec<f32>>,
     fog_coord: Option<Vec<f32>>,
+    /// Each unit's coordinates: size and values.
+    tex_coords: [Option<(usize, Vec<f32>)>; MAX_UNITS],
 }
 
 /// Reads the vertices `indices` names; `None` without a vertex array (GL then draws nothing).
@@ -113,6 +115,9 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
     let fog_coord = (os.fog_coord.enabled && !os.fog_coord.ptr.is_null()).then_some(&os.fog_coord);
     let (mut pos, mut col, mut nrm) = (Vec::new(), Vec::new(), Vec::new());
     let (mut sec, mut fog, mut edges) = (Vec::new(), Vec::new(), Vec::new());
+    let tex: [Option<&ClientArray>; MAX_UNITS] =
+        std::array::from_fn(|u| Some(&os.tex_coords[u]).filter(|a| a.enabled && !a.ptr.is_null()));
+    let mut coords: [Vec<f32>; MAX_UNITS] = Default::default();
     let mut count = 0;
     for i in indices {
         // SAFETY: the enabled arrays hold every element the draw names (GL's contract).
@@ -133,6 +138,11 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
             if let Some(c) = fog_coord {
                 fetch(c, i, false, &mut fog);
             }
+            for (a, out) in tex.iter().zip(coords.iter_mut()) {
+                if let Some(a) = a {
+                    fetch(a, i, false, out);
+                }
+            }
         }
         count += 1;
     }
@@ -146,6 +156,7 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
         normal: normal.map(|_| nrm),
         secondary: secondary.map(|_| sec),
         fog_coord: fog_coord.map(|_| fog),
+        tex_coords: std::array::from_fn(|u| tex[u].map(|a| (a.size as usize, std::mem::take(&mut coords[u])))),
     }))
 }
 
@@ -177,7 +188,7 @@ fn draw(
             normal: f.normal.as_ref().map(|n| AttribArray::new(3, n)),
             secondary: f.secondary.as_ref().map(|c| AttribArray::new(3, c)),
             fog_coord: f.fog_coord.as_ref().map(|c| AttribArray::new(1, c)),
-            tex_coords: Default::default(),
+            tex_coords: std::array::from_fn(|u| f.tex_coords[u].as_ref().map(|(size, c)| AttribArray::new(*size, c))),
         };
         // The context records its own errors (inside begin/end, …).
         let _ = if indexed {
@@ -262,7 +273,7 @@ exports! {
     /// # Safety
     /// `ptr` stays valid while drawing reads it (GL's contract).
     [unsafe] fn glTexCoordPointer(size: i32, ty: GLenum, stride: i32, ptr: *const c_void) {
-        pointer(|o| &mut o.tex_coord, &[1, 2, 3, 4], size, ty, &ALL_TYPES, stride, ptr)
+        pointer(|o| &mut o.tex_coords[o.client_active], &[1, 2, 3, 4], size, ty, &ALL_TYPES, stride, ptr)
     }
     /// # Safety
     /// `ptr` stays valid while drawing reads it (GL's contract).
@@ -350,7 +361,7 @@ exports! {
             };
             let color = read(&os.color, true).map(|v| pad(v, os.color.size));
             let normal = read(&os.normal, true);
-            let tex = read(&os.tex_coord, false).map(|v| pad(v, os.tex_coord.size));
+            let tex: Vec<Option<[f32; 4]>> = os.tex_coords.iter().map(|a| read(a, false).map(|v| pad(v, a.size))).collect();
             let edge_flag = read(&os.edge_flag, false).map(|v| v[0] != 0.0);
             let vertex = read(&os.vertex, false).map(|v| pad(v, os.vertex.size));
             let cmd: Cmd = std::sync::Arc::new(move |_: &mut GlState, gl: &mut Context| {
@@ -360,8 +371,10 @@ exports! {
                 if let Some(n) = &normal {
                     gl.normal3(n[0], n[1], n[2]);
                 }
-                if let Some([s, t, r, q]) = tex {
-                    gl.tex_coord4(s, t, r, q);
+                for (unit, c) in tex.iter().enumerate() {
+                    if let Some(c) = c {
+                        let _ = gl.multi_tex_coord(unit as u32, *c);
+                    }
                 }
                 if let Some(e) = edge_flag {
                     gl.edge_flag(e);
@@ -383,7 +396,7 @@ exports! {
                 GL_VERTEX_ARRAY_POINTER => os.vertex.ptr,
                 GL_COLOR_ARRAY_POINTER => os.color.ptr,
                 GL_NORMAL_ARRAY_POINTER => os.normal.ptr,
-                GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord.ptr,
+                GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord().ptr,
                 GL_EDGE_FLAG_ARRAY_POINTER => os.edge_flag.ptr,
                 0x845D => os.secondary.ptr, // GL_SECONDARY_COLOR_ARRAY_POINTER
                 0x8456 => os.fog_coord.ptr, // GL_FOG_COORD_ARRAY_POINTER
@@ -429,7 +442,8 @@ exports! {
                     at += bytes;
                 }
             };
-            set(&mut os.tex_coord, t, GL_FLOAT, t > 0, t as usize * f);
+            let unit = os.client_active;
+            set(&mut os.tex_coords[unit], t, GL_FLOAT, t > 0, t as usize * f);
             let (cs, ct) = c.unwrap_or((4, GL_FLOAT));
             set(&mut os.color, cs, ct, c.is_some(), c_bytes);
             set(&mut os.normal, 3, GL_FLOAT, n, 3 * f);

@@ -1,12 +1,15 @@
 //! The attribute stacks: `glPushAttrib`/`glPopAttrib` and the client ones.
 //! A push saves the whole state; a pop restores the groups its mask named,
 //! through the context's own setters. Groups without state in softgl yet
-//! (lighting values, textures, …) save nothing.
+//! (pixel maps, stipple, …) save nothing.
 
+use super::texture::TARGETS;
 use super::{now, rec};
 use crate::consts::*;
-use crate::gl_state::{GlState, SavedAttrib, SavedClient};
+use crate::gl_state::{GlState, SavedAttrib, SavedClient, SavedTextures, MAX_UNITS};
 use softgl::lighting::LightingState;
+use softgl::texture::TexParamName;
+use softgl::GlEnum;
 use softgl::{Capability, Context, Face, GlError, GlResult};
 
 /// `GL_MAX_ATTRIB_STACK_DEPTH` and `GL_MAX_CLIENT_ATTRIB_STACK_DEPTH` (Mesa's 16).
@@ -26,6 +29,7 @@ const ENABLE_BIT: u32 = 0x2000;
 const COLOR_BIT: u32 = 0x4000;
 const HINT_BIT: u32 = 0x8000;
 const EVAL_BIT: u32 = 0x10000;
+const TEXTURE_BIT: u32 = 0x40000;
 const SCISSOR_BIT: u32 = 0x80000;
 const CLIENT_PIXEL_STORE_BIT: u32 = 0x1;
 const CLIENT_VERTEX_ARRAY_BIT: u32 = 0x2;
@@ -74,6 +78,72 @@ fn restore_lighting(gl: &mut Context, m: u32, saved: &LightingState) -> GlResult
         l.clip_enabled = saved.clip_enabled;
     }
     gl.restore_lighting(l)
+}
+
+/// Saves the texture state of `GL_TEXTURE_BIT` (with the bound objects'
+/// parameters) or `GL_ENABLE_BIT` (the units alone).
+fn save_textures(gl: &mut Context, mask: u32) -> GlResult<SavedTextures> {
+    let active = gl.active_texture_unit();
+    let bindings: [[u32; 4]; MAX_UNITS] = std::array::from_fn(|u| TARGETS.map(|t| gl.texture_binding(u, t.0)));
+    let mut objects: Vec<(softgl::TextureTarget, u32, Vec<softgl::TexParam>)> = Vec::new();
+    if mask & TEXTURE_BIT != 0 {
+        for (u, names) in bindings.iter().enumerate() {
+            gl.active_texture(u as u32)?;
+            for (&(target, ..), &name) in TARGETS.iter().zip(names) {
+                if objects.iter().any(|o| o.0 == target && o.1 == name) {
+                    continue;
+                }
+                let params = TexParamName::TABLE
+                    .iter()
+                    .filter(|p| p.0 != TexParamName::Resident)
+                    .map(|p| gl.get_tex_parameter(target, p.0))
+                    .collect::<GlResult<Vec<_>>>()?;
+                objects.push((target, name, params));
+            }
+        }
+        gl.active_texture(active as u32)?;
+    }
+    Ok(SavedTextures {
+        active,
+        units: gl.tex_units().units,
+        bindings,
+        objects,
+    })
+}
+
+/// Restores `GL_TEXTURE_BIT` (everything saved: objects' parameters,
+/// bindings, units, the active unit) or, with `GL_ENABLE_BIT` alone, the
+/// units' target and coordinate generation enables.
+fn restore_textures(gl: &mut Context, m: u32, s: &SavedTextures) -> GlResult {
+    if m & TEXTURE_BIT != 0 {
+        // Each object's parameters, bound on unit 0 for the time it takes.
+        gl.active_texture(0)?;
+        for (target, name, params) in &s.objects {
+            gl.bind_texture(*target, *name)?;
+            for &p in params {
+                gl.tex_parameter(*target, p)?;
+            }
+        }
+        for (u, names) in s.bindings.iter().enumerate() {
+            gl.active_texture(u as u32)?;
+            for (&(target, ..), &name) in TARGETS.iter().zip(names) {
+                gl.bind_texture(target, name)?;
+            }
+            gl.restore_tex_unit(u, s.units[u])?;
+        }
+        return gl.active_texture(s.active as u32);
+    }
+    if m & ENABLE_BIT != 0 {
+        for (u, saved) in s.units.iter().enumerate() {
+            let mut unit = gl.tex_units().units[u];
+            unit.enabled = saved.enabled;
+            for (g, was) in unit.gen.iter_mut().zip(&saved.gen) {
+                g.enabled = was.enabled;
+            }
+            gl.restore_tex_unit(u, unit)?;
+        }
+    }
+    Ok(())
 }
 
 /// Restores the groups of `s.mask`.
@@ -181,6 +251,9 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
     if m & HINT_BIT != 0 {
         os.hints = s.hints;
     }
+    if let Some(t) = &s.textures {
+        restore_textures(gl, m, t)?;
+    }
     Ok(())
 }
 
@@ -193,8 +266,13 @@ exports! {
             if os.attrib_stack.len() >= MAX_DEPTH {
                 return Err(GlError::StackOverflow);
             }
+            let textures = match mask & (TEXTURE_BIT | ENABLE_BIT) {
+                0 => None,
+                _ => Some(save_textures(gl, mask)?),
+            };
             let saved = SavedAttrib {
                 mask,
+                textures,
                 state: gl.state().clone(),
                 current: *gl.current(),
                 matrix_mode: gl.current_matrix_mode(),
@@ -238,7 +316,7 @@ exports! {
                 (os.pack, os.unpack) = (s.pack, s.unpack);
             }
             if s.mask & CLIENT_VERTEX_ARRAY_BIT != 0 {
-                [os.vertex, os.color, os.normal, os.tex_coord, os.secondary, os.fog_coord, os.edge_flag] = s.arrays;
+                os.set_arrays(s.arrays);
             }
             Ok(())
         })

@@ -27,21 +27,9 @@ pub fn cap(v: GLenum) -> GlResult<Cap> {
     match v {
         // AUTO_NORMAL (evaluators are not in softgl)
         0x0D80 => Ok(Cap::Inert(v)),
-        // TEXTURE_1D/2D/3D, FOG, LINE/POLYGON_STIPPLE,
-        // POINT/LINE/POLYGON_SMOOTH, TEXTURE_GEN_S..Q,
+        // LINE/POLYGON_STIPPLE, POINT/LINE/POLYGON_SMOOTH,
         // MAP1_*, MAP2_*, INDEX_LOGIC_OP
-        0x0DE0
-        | 0x0DE1
-        | 0x806F
-        | 0x0B24
-        | 0x0B42
-        | 0x0B10
-        | 0x0B20
-        | 0x0B41
-        | 0x0C60..=0x0C63
-        | 0x0D90..=0x0D98
-        | 0x0DB0..=0x0DB8
-        | 0x0BF1 => Ok(Cap::Missing),
+        0x0B24 | 0x0B42 | 0x0B10 | 0x0B20 | 0x0B41 | 0x0D90..=0x0D98 | 0x0DB0..=0x0DB8 | 0x0BF1 => Ok(Cap::Missing),
         _ => Err(GlError::InvalidEnum),
     }
 }

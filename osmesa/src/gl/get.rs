@@ -76,7 +76,7 @@ pub(super) fn is_enabled(os: &GlState, gl: &Context, cap: GLenum) -> GlResult<bo
         GL_VERTEX_ARRAY => os.vertex.enabled,
         GL_COLOR_ARRAY => os.color.enabled,
         GL_NORMAL_ARRAY => os.normal.enabled,
-        GL_TEXTURE_COORD_ARRAY => os.tex_coord.enabled,
+        GL_TEXTURE_COORD_ARRAY => os.tex_coord().enabled,
         super::fog::GL_SECONDARY_COLOR_ARRAY => os.secondary.enabled,
         super::fog::GL_FOG_COORD_ARRAY => os.fog_coord.enabled,
         GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY => false,
@@ -130,7 +130,10 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     if let Some(h) = HINTS.iter().position(|&t| t == pname) {
         return Ok(e(os.hints[h]));
     }
-    if let Some(v) = super::fog::value(os, gl, pname) {
+    if let Some(v) = super::fog::value(os, gl, pname)
+        .or_else(|| super::texture::value(os, gl, pname))
+        .or_else(|| super::texunit::value(gl, pname))
+    {
         return Ok(v);
     }
     let b = s.blend_func;
@@ -144,13 +147,6 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0B91 => i(s.clear_stencil),                                            // STENCIL_CLEAR_VALUE
         0x0B00 => Val::N(gl.current().color.to_array().iter().map(|&c| f64::from(c)).collect()), // CURRENT_COLOR
         0x0B02 => Val::F(gl.current().normal.to_array().iter().map(|&c| f64::from(c)).collect()), // CURRENT_NORMAL
-        0x0B03 => Val::F(
-            gl.current().tex_coords[gl.active_texture_unit()]
-                .to_array()
-                .iter()
-                .map(|&c| f64::from(c))
-                .collect(),
-        ), // CURRENT_TEXTURE_COORDS
         0x0BA6 => matrix(gl, MatrixMode::Modelview),                             // MODELVIEW_MATRIX
         0x0BA7 => matrix(gl, MatrixMode::Projection),                            // PROJECTION_MATRIX
         0x0BA8 => matrix(gl, MatrixMode::Texture),                               // TEXTURE_MATRIX
@@ -169,10 +165,8 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D35 | 0x0D3B => i(super::attrib::MAX_DEPTH as i64),    // MAX_(CLIENT_)ATTRIB_STACK_DEPTH
         0x0BB0 => i(super::attrib::depths(os).0 as i64),          // ATTRIB_STACK_DEPTH
         0x0BB1 => i(super::attrib::depths(os).1 as i64),          // CLIENT_ATTRIB_STACK_DEPTH
-        // MAX_TEXTURE_SIZE: Mesa's llvmpipe limit; glTexImage is not in softgl yet.
-        0x0D33 => i(16384),
-        0x0D50 => i(8),             // SUBPIXEL_BITS
-        0x0D52 => i(color_bits(0)), // RED_BITS
+        0x0D50 => i(8),                                           // SUBPIXEL_BITS
+        0x0D52 => i(color_bits(0)),                               // RED_BITS
         0x0D53 => i(color_bits(1)),
         0x0D54 => i(color_bits(2)),
         0x0D55 => i(color_bits(3)),
@@ -229,7 +223,6 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         GL_VERTEX_ARRAY => Val::B(vec![os.vertex.enabled]),
         GL_COLOR_ARRAY => Val::B(vec![os.color.enabled]),
         GL_NORMAL_ARRAY => Val::B(vec![os.normal.enabled]),
-        GL_TEXTURE_COORD_ARRAY => Val::B(vec![os.tex_coord.enabled]),
         0x807A => i(os.vertex.size), // VERTEX_ARRAY_SIZE
         0x807B => e(os.vertex.ty),
         0x807C => i(os.vertex.stride),
@@ -238,9 +231,6 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x8083 => i(os.color.stride),
         0x807E => e(os.normal.ty), // NORMAL_ARRAY_TYPE
         0x807F => i(os.normal.stride),
-        0x8088 => i(os.tex_coord.size), // TEXTURE_COORD_ARRAY_SIZE
-        0x8089 => e(os.tex_coord.ty),
-        0x808A => i(os.tex_coord.stride),
         GL_EDGE_FLAG_ARRAY => Val::B(vec![os.edge_flag.enabled]),
         0x808C => i(os.edge_flag.stride),               // EDGE_FLAG_ARRAY_STRIDE
         0x0B01 => f(gl.current().index),                // CURRENT_INDEX

@@ -86,7 +86,7 @@ fn normal(x: f32, y: f32, z: f32) {
 
 fn tex_coord(s: f32, t: f32, r: f32, q: f32) {
     rec(move |_, gl| {
-        gl.tex_coord4(s, t, r, q);
+        gl.tex_coord([s, t, r, q]);
         Ok(())
     })
 }

@@ -2,9 +2,8 @@
 //! exported (so that GLU and PyOpenGL resolve it here, not in another GL
 //! library) and records `GL_INVALID_OPERATION` when it runs: compiled into a
 //! display list like the command it stands for, or at once for the commands
-//! GL never compiles (queries, texture names, `glRenderMode`, client
-//! arrays). None reads its pointers, so
-//! none is `unsafe` but the two texture queries that write a 0.
+//! GL never compiles (queries, `glRenderMode`, client arrays). None reads
+//! or writes through its pointers, so none is `unsafe`.
 //! The README lists them by group.
 
 use super::{missing, missing_now};
@@ -12,186 +11,13 @@ use crate::consts::*;
 use std::ffi::c_void;
 
 exports! {
-    /// Texturing (not in softgl yet): writes 0 (GLU's proxy-texture probes
-    /// read the value) and records `GL_INVALID_OPERATION`.
-    ///
-    /// # Safety
-    /// `params` is null or writable.
-    [unsafe] fn glGetTexLevelParameteriv(_target: GLenum, _level: i32, _pname: GLenum, params: *mut i32) {
-        if !params.is_null() {
-            // SAFETY: writable by GL's contract.
-            unsafe { *params = 0 };
-        }
-        missing_now()
-    }
-    /// As `glGetTexLevelParameteriv`.
-    ///
-    /// # Safety
-    /// `params` is null or writable.
-    [unsafe] fn glGetTexLevelParameterfv(_target: GLenum, _level: i32, _pname: GLenum, params: *mut f32) {
-        if !params.is_null() {
-            // SAFETY: writable by GL's contract.
-            unsafe { *params = 0.0 };
-        }
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): writes no names, records `GL_INVALID_OPERATION`.
-    [] fn glGenTextures(_n: i32, _textures: *mut u32) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexParameterf(_target: GLenum, _pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexParameterfv(_target: GLenum, _pname: GLenum, _params: *const f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexParameterfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexEnvf(_target: GLenum, _pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexEnvfv(_target: GLenum, _pname: GLenum, _params: *const f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexEnvfv(_target: GLenum, _pname: GLenum, _params: *mut f32) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGenf(_coord: GLenum, _pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGenfv(_coord: GLenum, _pname: GLenum, _params: *const f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexGenfv(_coord: GLenum, _pname: GLenum, _params: *mut f32) {
-        missing_now()
-    }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glPixelTransferf(_pname: GLenum, _param: f32) {
         missing()
     }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexParameteri(_target: GLenum, _pname: GLenum, _param: i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexParameteriv(_target: GLenum, _pname: GLenum, _params: *const i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexParameteriv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexEnvi(_target: GLenum, _pname: GLenum, _param: i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexEnviv(_target: GLenum, _pname: GLenum, _params: *const i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexEnviv(_target: GLenum, _pname: GLenum, _params: *mut i32) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGeni(_coord: GLenum, _pname: GLenum, _param: i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGeniv(_coord: GLenum, _pname: GLenum, _params: *const i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexGeniv(_coord: GLenum, _pname: GLenum, _params: *mut i32) {
-        missing_now()
-    }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glPixelTransferi(_pname: GLenum, _param: i32) {
         missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGend(_coord: GLenum, _pname: GLenum, _param: f64) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexGendv(_coord: GLenum, _pname: GLenum, _params: *const f64) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexGendv(_coord: GLenum, _pname: GLenum, _params: *mut f64) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexImage1D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexImage2D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _height: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexImage3D(_target: GLenum, _level: i32, _internal_format: i32, _width: i32, _height: i32, _depth: i32, _border: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexSubImage1D(_target: GLenum, _level: i32, _xoffset: i32, _width: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glTexSubImage2D(_target: GLenum, _level: i32, _xoffset: i32, _yoffset: i32, _width: i32, _height: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glCopyTexImage1D(_target: GLenum, _level: i32, _internal_format: GLenum, _x: i32, _y: i32, _width: i32, _border: i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glCopyTexImage2D(_target: GLenum, _level: i32, _internal_format: GLenum, _x: i32, _y: i32, _width: i32, _height: i32, _border: i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glCopyTexSubImage1D(_target: GLenum, _level: i32, _xoffset: i32, _x: i32, _y: i32, _width: i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glCopyTexSubImage2D(_target: GLenum, _level: i32, _xoffset: i32, _yoffset: i32, _x: i32, _y: i32, _width: i32, _height: i32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetTexImage(_target: GLenum, _level: i32, _format: GLenum, _ty: GLenum, _pixels: *mut c_void) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glBindTexture(_target: GLenum, _texture: u32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glDeleteTextures(_n: i32, _textures: *const u32) {
-        missing_now()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIsTexture(_texture: u32) -> u8 {
-        missing_now();
-        GL_FALSE
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPrioritizeTextures(_n: i32, _textures: *const u32, _priorities: *const f32) {
-        missing()
-    }
-    /// Texturing (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glAreTexturesResident(_n: i32, _textures: *const u32, _residences: *mut u8) -> u8 {
-        missing_now();
-        GL_FALSE
     }
     /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glLineStipple(_factor: i32, _pattern: u16) {

@@ -33,6 +33,8 @@ mod lists;
 mod missing;
 mod pixels;
 mod state;
+mod texture;
+mod texunit;
 
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
@@ -45,6 +47,8 @@ pub use lists::*;
 pub use missing::*;
 pub use pixels::*;
 pub use state::*;
+pub use texture::*;
+pub use texunit::*;
 
 /// Every `gl*` export of this library: each module's `exports!` table.
 fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)> {
@@ -61,6 +65,9 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         missing::table,
         pixels::table,
         state::table,
+        texture::table,
+        texunit::table,
+        texunit::multi_table,
     ]
     .into_iter()
     .flat_map(|t| t())

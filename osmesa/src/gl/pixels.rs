@@ -1,8 +1,11 @@
 //! `glPixelStore` and `glReadPixels`.
 
+use super::enums::decode;
 use super::now;
 use crate::consts::*;
 use crate::gl_state::PixelStore;
+use softgl::texture::unpack::ClientLayout;
+use softgl::texture::{PixelFormat, PixelType};
 use softgl::{Context, GlError, GlResult};
 use std::ffi::c_void;
 
@@ -44,6 +47,46 @@ fn pixel_store(pname: GLenum, param: i32) {
         }
         Ok(())
     })
+}
+
+/// Bytes of one pixel of `format` and `ty` in client memory, and of the
+/// element the alignment counts in (a component; the whole pixel for the
+/// packed types), checked in Mesa's order (`_mesa_error_check_format_and_type`):
+/// a packed type whose components are not the format's is
+/// `GL_INVALID_OPERATION`, whatever the format; any other unknown type or
+/// format `GL_INVALID_ENUM` (`GL_BITMAP` too: no texture or colour format takes it).
+pub(super) fn pixel_size(format: GLenum, ty: GLenum) -> GlResult<(usize, usize)> {
+    let packed = match ty {
+        0x8032 | 0x8362 => Some((1, [GL_RGB, GL_RGB])), // UNSIGNED_BYTE_3_3_2, _2_3_3_REV
+        0x8363 | 0x8364 => Some((2, [GL_RGB, GL_RGB])), // UNSIGNED_SHORT_5_6_5, _REV
+        // UNSIGNED_SHORT_4_4_4_4, _5_5_5_1, _4_4_4_4_REV, _1_5_5_5_REV
+        0x8033 | 0x8034 | 0x8365 | 0x8366 => Some((2, [GL_RGBA, GL_BGRA])),
+        // UNSIGNED_INT_8_8_8_8, _10_10_10_2, _8_8_8_8_REV, _2_10_10_10_REV
+        0x8035 | 0x8036 | 0x8367 | 0x8368 => Some((4, [GL_RGBA, GL_BGRA])),
+        _ => None,
+    };
+    if let Some((bytes, formats)) = packed {
+        return if formats.contains(&format) {
+            Ok((bytes, bytes))
+        } else {
+            Err(GlError::InvalidOperation)
+        };
+    }
+    let size = match ty {
+        GL_UNSIGNED_BYTE | GL_BYTE => 1,
+        GL_UNSIGNED_SHORT | GL_SHORT => 2,
+        GL_UNSIGNED_INT | GL_INT | GL_FLOAT => 4,
+        _ => return Err(GlError::InvalidEnum),
+    };
+    let comps = match format {
+        GL_RGBA | GL_BGRA => 4,
+        GL_RGB | GL_BGR => 3,
+        GL_LUMINANCE_ALPHA => 2,
+        GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE | GL_DEPTH_COMPONENT | GL_COLOR_INDEX
+        | GL_STENCIL_INDEX => 1,
+        _ => return Err(GlError::InvalidEnum),
+    };
+    Ok((comps * size, size))
 }
 
 /// What `glReadPixels` reads per pixel.
@@ -207,35 +250,25 @@ unsafe fn read_pixels(
         Source::Color(c) => c.len(),
         Source::Depth | Source::Stencil => 1,
     };
-    let row_pixels = if pack.row_length > 0 { pack.row_length } else { w } as usize;
     let pixel_bytes = comps * size;
-    let align = pack.alignment as usize;
-    // Checked: a layout whose size overflows cannot fit any buffer.
-    let layout = || -> Option<(usize, usize, usize)> {
-        let row_bytes = row_pixels.checked_mul(pixel_bytes)?;
-        let stride = if size >= align {
-            row_bytes
-        } else {
-            row_bytes.div_ceil(align).checked_mul(align)?
-        };
-        let start = (pack.skip_rows as usize)
-            .checked_mul(stride)?
-            .checked_add((pack.skip_pixels as usize).checked_mul(pixel_bytes)?)?;
-        let len = stride
-            .checked_mul(h as usize - 1)?
-            .checked_add((w as usize).checked_mul(pixel_bytes)?)?
-            .checked_add(start)?;
-        (len <= isize::MAX as usize).then_some((stride, start, len))
-    };
-    let (stride, start, len) = layout().ok_or(GlError::InvalidValue)?;
+    // The layout of a format with as many components (stencil: one).
+    let like = decode::<PixelFormat>(format).unwrap_or(PixelFormat::Red);
+    let like_ty = decode::<PixelType>(ty)?;
+    let (w, h) = (w as usize, h as usize);
+    let ClientLayout {
+        row_stride: stride,
+        start,
+        len,
+        ..
+    } = ClientLayout::new(like, like_ty, pack, 2, [w, h, 1]).ok_or(GlError::InvalidValue)?;
     // SAFETY: GL's contract: `pixels` holds the image as the pack state lays it out,
     // which is exactly `len` bytes from `pixels`.
     let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
     let stencil = matches!(src, Source::Stencil);
     let depth_bits = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
     let mut vals = Vec::with_capacity(4);
-    for j in 0..h as usize {
-        for i in 0..w as usize {
+    for j in 0..h {
+        for i in 0..w {
             if read_pixel(gl, src, i64::from(x) + i as i64, i64::from(y) + j as i64, &mut vals).is_none() {
                 continue;
             }
@@ -268,5 +301,30 @@ exports! {
             // SAFETY: GL's contract on `pixels`, passed on.
             unsafe { read_pixels(gl, &pack, (x, y, width, height), format, ty, pixels) }
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pixel_sizes_and_mesas_error_order() {
+        assert_eq!(pixel_size(GL_RGBA, GL_UNSIGNED_BYTE), Ok((4, 1)));
+        assert_eq!(pixel_size(GL_BGR, GL_SHORT), Ok((6, 2)));
+        assert_eq!(pixel_size(GL_LUMINANCE_ALPHA, GL_FLOAT), Ok((8, 4)));
+        assert_eq!(pixel_size(GL_RGB, GL_UNSIGNED_SHORT_5_6_5), Ok((2, 2)));
+        assert_eq!(pixel_size(GL_BGRA, 0x8367), Ok((4, 4)));
+        assert_eq!(pixel_size(GL_RGB, 0x8032), Ok((1, 1)));
+        // A packed type with the wrong components, even an unknown format.
+        assert_eq!(
+            pixel_size(GL_RGBA, GL_UNSIGNED_SHORT_5_6_5),
+            Err(GlError::InvalidOperation)
+        );
+        assert_eq!(pixel_size(0x1234, 0x8033), Err(GlError::InvalidOperation));
+        assert_eq!(pixel_size(GL_RGBA, 0x1A00), Err(GlError::InvalidEnum)); // GL_BITMAP
+        assert_eq!(pixel_size(GL_RGBA, GL_DOUBLE), Err(GlError::InvalidEnum));
+        assert_eq!(pixel_size(0x8049, GL_UNSIGNED_BYTE), Err(GlError::InvalidEnum));
+        // GL_INTENSITY
     }
 }

@@ -1,6 +1,6 @@
 /* GLU on OSMesa: gluPerspective, gluLookAt and the quadrics in every draw
- * style, flat colours (no lighting yet), depth-tested; gluBuild2DMipmaps
- * must fail cleanly through glTexImage2D's error. */
+ * style, flat colours, depth-tested; gluBuild2DMipmaps uploads its levels
+ * (tests/c/textured.c draws with them). */
 #include "common.h"
 #include <GL/glu.h>
 
@@ -61,7 +61,6 @@ int main(int argc, char **argv) {
   gluDeleteQuadric(q);
   printf("error after quadrics 0x%x\n", glGetError());
 
-  /* Textures are not in softgl yet: glTexImage2D records GL_INVALID_OPERATION. */
   static unsigned char tex[8 * 8 * 3];
   for (int i = 0; i < (int)sizeof tex; i++) tex[i] = (unsigned char)(i * 7);
   GLint r = gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGB, 8, 8, GL_RGB, GL_UNSIGNED_BYTE, tex);
