@@ -361,3 +361,246 @@ fn a_complete_texture_reaches_the_fragment_stage() {
     quad(&mut gl);
     assert_eq!(common::count(&gl, [51, 102, 153, 255]), 64);
 }
+
+/// Texture coordinate scenes rendered by Mesa 22.3.6 llvmpipe
+/// (`tests/llvmpipe/texgen.c`, which documents the keys) into
+/// `tests/llvmpipe/texgen.txt`; [`replay`] draws the same through softgl.
+/// Each is a bumpy grid textured NEAREST with a 16×16 random texture, so a
+/// pixel's colour names the texel its coordinates fall in. The budget after
+/// the name is the number of pixels allowed to differ (0: identical).
+const SCENES: &[(&str, usize)] = &[
+    ("plain rot=20", 0),
+    ("obj gen_s=obj gen_t=obj os=0.5,0.25,0,0.5 ot=0,0.5,0.5,0.5 rot=20", 0),
+    (
+        "eye gen_s=eye gen_t=eye es=0.5,0,0.25,0.5 et=0,0.5,0,0.5 spec=30 rot=20",
+        0,
+    ),
+    (
+        "eye_q gen_s=eye gen_q=eye es=1,0,0,0.5 eq=0,0,-0.5,0 spec=-15 rot=35",
+        0,
+    ),
+    ("sphere gen_s=sphere gen_t=sphere rot=25", 0),
+    ("sphere_lit gen_s=sphere gen_t=sphere rot=25 light=1 env=modulate", 0),
+    ("reflect gen_s=reflect gen_t=reflect gen_r=reflect rot=40", 0),
+    ("normal gen_s=normal gen_t=normal rot=40", 0),
+    ("matrix tm_rot=30 tm_scale=1.5 tm_tx=0.25 rot=10", 0),
+    ("matrix_gen gen_s=obj os=0.25,0.5,0,0 tm_rot=-20 tm_scale=2 rot=10", 0),
+    ("unit3 unit=3 gen_t=eye et=0,1,0,0 rot=15", 0),
+    ("points prim=points gen_s=sphere gen_t=sphere rot=25", 0),
+    (
+        "lines prim=lines gen_s=obj gen_t=eye os=0.5,0,0,0.5 et=0,0.5,0,0.5 rot=25",
+        0,
+    ),
+    // Eight times finer: 128 texel columns across the grid, so that a
+    // coordinate an ulp off shows wherever it lands on a texel boundary.
+    (
+        "fine_sphere gen_s=sphere gen_t=sphere tm_scale=8 rot=25 light=1 env=modulate",
+        0,
+    ),
+    (
+        "fine_eye gen_s=eye gen_t=eye es=0.5,0,0.25,0.5 et=0,0.5,0,0.5 spec=30 tm_scale=8 rot=20",
+        0,
+    ),
+    (
+        "fine_reflect gen_s=reflect gen_t=reflect tm_rot=10 tm_scale=8 rot=40",
+        0,
+    ),
+    ("fine_plain tm_scale=8 rot=50", 0),
+];
+
+/// Scene side in pixels (`N` of texgen.c).
+const SCENE_N: u32 = 32;
+
+/// The `key=value` words of a scene line.
+fn scene_keys(line: &str) -> std::collections::HashMap<&str, &str> {
+    line.split_whitespace()
+        .skip(1)
+        .filter_map(|w| w.split_once('='))
+        .collect()
+}
+
+/// Draws the scene `line` into a new context, as texgen.c does.
+fn replay(line: &str) -> Context {
+    let k = scene_keys(line);
+    let f = |key: &str, def: f32| k.get(key).map_or(def, |v| v.parse().unwrap());
+    let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(SCENE_N, SCENE_N)).unwrap();
+    let unit = f("unit", 0.0) as u32;
+    gl.active_texture(unit).unwrap();
+    // texgen.c's LCG, alpha 255.
+    let mut rnd: u32 = 12345;
+    let mut texels = [[0u8; 4]; 256];
+    for t in texels.iter_mut() {
+        for c in t.iter_mut() {
+            rnd = rnd.wrapping_mul(1_103_515_245).wrapping_add(12345);
+            *c = (rnd >> 16) as u8;
+        }
+        t[3] = 255;
+    }
+    texture_2d(&mut gl, 16, 16, &texels, Wrap::Repeat);
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    let env = match k.get("env") {
+        Some(&"modulate") => EnvMode::Modulate,
+        _ => EnvMode::Replace,
+    };
+    gl.tex_env(TexEnvParam::Mode(env)).unwrap();
+    gl.matrix_mode(MatrixMode::Projection).unwrap();
+    gl.frustum(-0.5, 0.5, -0.5, 0.5, 1.0, 10.0).unwrap();
+    gl.matrix_mode(MatrixMode::Modelview).unwrap();
+    gl.translate(0.25, 0.0, -1.0).unwrap();
+    gl.rotate(f("spec", 0.0), 0.0, 1.0, 0.0).unwrap();
+    for (c, name) in TexCoordName::ALL.into_iter().zip(["s", "t", "r", "q"]) {
+        let Some(mode) = k.get(format!("gen_{name}").as_str()) else {
+            continue;
+        };
+        let mode = match *mode {
+            "obj" => TexGenMode::ObjectLinear,
+            "eye" => TexGenMode::EyeLinear,
+            "sphere" => TexGenMode::SphereMap,
+            "reflect" => TexGenMode::ReflectionMap,
+            _ => TexGenMode::NormalMap,
+        };
+        gl.tex_gen(c, TexGenParam::Mode(mode)).unwrap();
+        let plane = |key: String| {
+            k.get(key.as_str()).map(|v| {
+                let p: Vec<f32> = v.split(',').map(|x| x.parse().unwrap()).collect();
+                [p[0], p[1], p[2], p[3]]
+            })
+        };
+        if let Some(p) = plane(format!("o{name}")) {
+            gl.tex_gen(c, TexGenParam::ObjectPlane(p)).unwrap();
+        }
+        if let Some(p) = plane(format!("e{name}")) {
+            gl.tex_gen(c, TexGenParam::EyePlane(p)).unwrap();
+        }
+        gl.enable(Capability::TexGen(c)).unwrap();
+    }
+    gl.matrix_mode(MatrixMode::Texture).unwrap();
+    gl.translate(f("tm_tx", 0.0), 0.0, 0.0).unwrap();
+    gl.rotate(f("tm_rot", 0.0), 0.0, 0.0, 1.0).unwrap();
+    let sc = f("tm_scale", 1.0);
+    gl.scale(sc, sc, 1.0).unwrap();
+    gl.matrix_mode(MatrixMode::Modelview).unwrap();
+    gl.load_identity().unwrap();
+    gl.translate(0.0, 0.0, -2.5).unwrap();
+    gl.rotate(f("rot", 0.0), 1.0, 0.5, 0.25).unwrap();
+    gl.enable(Capability::Normalize).unwrap();
+    gl.enable(Capability::DepthTest).unwrap();
+    if f("light", 0.0) != 0.0 {
+        gl.enable(Capability::Lighting).unwrap();
+        gl.enable(Capability::Light(0)).unwrap();
+    }
+    gl.color4(0.75, 0.5, 1.0, 1.0);
+    gl.point_size(2.0).unwrap();
+    let vertex = |gl: &mut Context, i: i32, j: i32| {
+        let (x, y) = (-1.0 + i as f32 / 4.0, -1.0 + j as f32 / 4.0);
+        gl.normal3(-x / 2.0, y / 2.0, 1.0);
+        gl.multi_tex_coord(unit, [(x + 1.0) / 2.0, (y + 1.0) / 2.0, 0.0, 1.0])
+            .unwrap();
+        gl.vertex3(x, y, (x * x - y * y) / 4.0);
+    };
+    match k.get("prim").copied().unwrap_or("tris") {
+        "points" => {
+            gl.begin(PrimitiveMode::Points).unwrap();
+            for j in 0..=8 {
+                for i in 0..=8 {
+                    vertex(&mut gl, i, j);
+                }
+            }
+            gl.end().unwrap();
+        }
+        "lines" => {
+            for j in 0..=8 {
+                gl.begin(PrimitiveMode::LineStrip).unwrap();
+                for i in 0..=8 {
+                    vertex(&mut gl, i, j);
+                }
+                gl.end().unwrap();
+            }
+        }
+        _ => {
+            gl.begin(PrimitiveMode::Triangles).unwrap();
+            for j in 0..8 {
+                for i in 0..8 {
+                    for (di, dj) in [(0, 0), (1, 0), (1, 1), (0, 0), (1, 1), (0, 1)] {
+                        vertex(&mut gl, i + di, j + dj);
+                    }
+                }
+            }
+            gl.end().unwrap();
+        }
+    }
+    gl
+}
+
+/// llvmpipe's pixels of each scene (RGBA bytes, bottom row first), by name.
+fn llvmpipe_scenes() -> std::collections::HashMap<String, Vec<u8>> {
+    include_str!("llvmpipe/texgen.txt")
+        .lines()
+        .filter_map(|l| l.split_once(' '))
+        .map(|(name, hex)| {
+            let bytes = (0..hex.len() / 2)
+                .map(|i| u8::from_str_radix(&hex[2 * i..2 * i + 2], 16).expect("hex"))
+                .collect();
+            (name.to_string(), bytes)
+        })
+        .collect()
+}
+
+#[test]
+fn texture_coordinates_match_llvmpipe() {
+    let reference = llvmpipe_scenes();
+    let mut report = Vec::new();
+    for &(line, budget) in SCENES {
+        let name = line.split_whitespace().next().unwrap();
+        let want = reference
+            .get(name)
+            .unwrap_or_else(|| panic!("{name} missing from texgen.txt"));
+        let gl = replay(line);
+        let got = gl.framebuffer().color_bytes();
+        assert_eq!(got.len(), want.len());
+        let differ = got.chunks(4).zip(want.chunks(4)).filter(|(a, b)| a != b).count();
+        // Every scene must draw: a blank image would pass trivially.
+        let drawn = want.chunks(4).filter(|p| p[3] != 0).count();
+        assert!(drawn > 100, "{name}: llvmpipe drew only {drawn} pixels");
+        report.push(format!(
+            "{name}: {differ} of {drawn} drawn pixels differ (budget {budget})"
+        ));
+        if differ > budget {
+            panic!("{}", report.join("\n"));
+        }
+    }
+    println!("{}", report.join("\n"));
+}
+
+/// Re-renders every scene with llvmpipe: needs gcc and Mesa's libOSMesa.
+#[test]
+#[ignore]
+fn regenerate() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/llvmpipe");
+    let exe = std::env::temp_dir().join("softgl-texgen-probe");
+    let status = std::process::Command::new("gcc")
+        .args(["-O1", "-o"])
+        .arg(&exe)
+        .arg(dir.join("texgen.c"))
+        .arg("-lOSMesa")
+        .status()
+        .expect("gcc runs");
+    assert!(status.success());
+    let input: String = SCENES.iter().map(|(l, _)| format!("{l}\n")).collect();
+    let mut child = std::process::Command::new(&exe)
+        .env("LP_NUM_THREADS", "1")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("the probe runs");
+    use std::io::Write;
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(input.as_bytes())
+        .expect("write");
+    let out = child.wait_with_output().expect("the probe finishes");
+    assert!(out.status.success());
+    std::fs::write(dir.join("texgen.txt"), out.stdout).expect("write texgen.txt");
+}
