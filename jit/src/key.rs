@@ -99,8 +99,10 @@ impl CompareFunc {
         CompareFunc::Always,
     ];
 
-    /// `incoming <func> stored`, the way every GL test reads.
-    pub fn test<T: Ord>(self, incoming: T, stored: T) -> bool {
+    /// `incoming <func> stored`, the way every GL test reads. On floats the
+    /// comparisons are ordered except NOTEQUAL (NaN passes only NOTEQUAL), as
+    /// llvmpipe's depth-texture compare (`lp_build_sample_comparefunc`).
+    pub fn test<T: PartialOrd>(self, incoming: T, stored: T) -> bool {
         match self {
             CompareFunc::Never => false,
             CompareFunc::Less => incoming < stored,

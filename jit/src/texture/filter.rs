@@ -88,6 +88,30 @@ pub fn simple_wrap(w: Wrap) -> bool {
     matches!(w, Wrap::Repeat | Wrap::ClampToEdge)
 }
 
+/// The (bi-, tri-)linear blend of the texels `t(i, j, k)` (i along s, j
+/// along t, k along r) with weights `w`, in llvmpipe's order: along s within
+/// each row, then t, then r (`lp_build_lerp_2d`, `lp_build_lerp_3d`).
+fn blend<W: Copy, T: Copy>(
+    dims: usize,
+    w: [W; 3],
+    t: impl Fn(usize, usize, usize) -> T,
+    lerp: impl Fn(W, T, T) -> T,
+) -> T {
+    let slice = |k: usize| {
+        let row0 = lerp(w[0], t(0, 0, k), t(1, 0, k));
+        if dims == 1 {
+            return row0;
+        }
+        let row1 = lerp(w[0], t(0, 1, k), t(1, 1, k));
+        lerp(w[1], row0, row1)
+    };
+    if dims == 3 {
+        lerp(w[2], slice(0), slice(1))
+    } else {
+        slice(0)
+    }
+}
+
 // ---------------------------------------------------------------- AoS ----
 
 /// Nearest texel along one axis (`lp_build_sample_wrap_nearest_int`).
@@ -146,20 +170,7 @@ pub fn aos(level: &Level<'_>, filter: Filter, dims: usize, coord: [f32; 3], wrap
                 w[a] = wa;
             }
             let t = |i: usize, j: usize, k: usize| level.bytes(x[0][i], x[1][j], x[2][k]);
-            let lerp_px = |w: u8, a: [u8; 4], b: [u8; 4]| std::array::from_fn(|c| lerp8(w, a[c], b[c]));
-            let slice = |k: usize| {
-                let row0 = lerp_px(w[0], t(0, 0, k), t(1, 0, k));
-                if dims == 1 {
-                    return row0;
-                }
-                let row1 = lerp_px(w[0], t(0, 1, k), t(1, 1, k));
-                lerp_px(w[1], row0, row1)
-            };
-            if dims == 3 {
-                lerp_px(w[2], slice(0), slice(1))
-            } else {
-                slice(0)
-            }
+            blend(dims, w, t, |w, a, b| std::array::from_fn(|c| lerp8(w, a[c], b[c])))
         }
     }
 }
@@ -254,16 +265,7 @@ pub struct SoaState {
 
 /// `p <func> d` with ordered comparisons except NOTEQUAL (`lp_build_sample_comparefunc`).
 pub fn compare(func: CompareFunc, p: f32, d: f32) -> bool {
-    match func {
-        CompareFunc::Never => false,
-        CompareFunc::Less => p < d,
-        CompareFunc::Equal => p == d,
-        CompareFunc::Lequal => p <= d,
-        CompareFunc::Greater => p > d,
-        CompareFunc::Notequal => p != d,
-        CompareFunc::Gequal => p >= d,
-        CompareFunc::Always => true,
-    }
+    func.test(p, d)
 }
 
 /// One level sampled on the SoA path. With a depth compare, every channel
@@ -315,20 +317,7 @@ pub fn soa(level: &Level<'_>, filter: Filter, dims: usize, coord: [f32; 3], st: 
                 let row1 = masklerp(w[0], pass(0, 1), pass(1, 1));
                 return [lerp(w[1], row0, row1); 4];
             }
-            let lerp_px = |w: f32, a: [f32; 4], b: [f32; 4]| std::array::from_fn(|c| lerp(w, a[c], b[c]));
-            let slice = |k: usize| {
-                let row0 = lerp_px(w[0], t(0, 0, k), t(1, 0, k));
-                if dims == 1 {
-                    return row0;
-                }
-                let row1 = lerp_px(w[0], t(0, 1, k), t(1, 1, k));
-                lerp_px(w[1], row0, row1)
-            };
-            if dims == 3 {
-                lerp_px(w[2], slice(0), slice(1))
-            } else {
-                slice(0)
-            }
+            blend(dims, w, t, |w, a, b| std::array::from_fn(|c| lerp(w, a[c], b[c])))
         }
     }
 }

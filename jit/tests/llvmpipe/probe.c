@@ -1,7 +1,7 @@
-/* Texture probe against Mesa's llvmpipe (OSMesa): one 16x16 scene per input
- * line, written as "name hex" (the RGBA bytes of the colour buffer, bottom
- * row first). jit/tests/texture.rs writes the lines (key=value words, see
- * `Case::line`) and records this program's output in probe.txt:
+/* Texture probe against Mesa's llvmpipe (OSMesa): one scene per input line
+ * of cases.txt (a name, then key=value words; 16x16 unless size=), written as
+ * "name hex" (the RGBA bytes of the colour buffer, bottom row first).
+ * jit/tests/texture.rs feeds it the cases and records its output in probe.txt:
  *
  *   gcc -O1 -o /tmp/probe jit/tests/llvmpipe/probe.c -lOSMesa
  *   cargo test -p softgl-jit --test texture -- --ignored regenerate
@@ -17,8 +17,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define N 16
-static unsigned char buf[N * N * 4];
+#define MAXN 64
+static unsigned char buf[MAXN * MAXN * 4];
+static int N = 16;
 
 static unsigned rnd;
 static unsigned char rb(void) { rnd = rnd * 1103515245u + 12345u; return (unsigned char)(rnd >> 16); }
@@ -153,9 +154,36 @@ static void scene(struct kv *kv, int n, int index) {
 
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  if (!strcmp(get(kv, n, "geom", "flat"), "persp")) {
+    /* A floor receding from z = -1.5 to z = -30 under glFrustum: texture
+     * coordinates (0,0)..(ps,pt) at its corners. */
+    glMatrixMode(GL_PROJECTION);
+    glFrustum(-0.5, 0.5, -0.5, 0.5, 1, 30);
+    glMatrixMode(GL_MODELVIEW);
+    float ps = getf(kv, n, "ps", 8), pt = getf(kv, n, "pt", 16), y = getf(kv, n, "py", -1);
+    static const float fl[4][4] = {{-4, -1.5f, 0, 0}, {4, -1.5f, 1, 0}, {4, -30, 1, 1}, {-4, -30, 0, 1}};
+    glColor4f(getf(kv, n, "cr", 1), getf(kv, n, "cg", 1), getf(kv, n, "cb", 1), getf(kv, n, "ca", 1));
+    glBegin(GL_QUADS);
+    for (int v = 0; v < 4; v++) {
+      /* cvary=1: the colour given per vertex (a varying, not Mesa's current-attribute uniform) */
+      if (geti(kv, n, "cvary", 0))
+        glColor4f(getf(kv, n, "cr", 1), getf(kv, n, "cg", 1), getf(kv, n, "cb", 1), getf(kv, n, "ca", 1));
+      glTexCoord2f(fl[v][2] * ps, fl[v][3] * pt);
+      glVertex3f(fl[v][0], y, fl[v][1]);
+    }
+    glEnd();
+    glFinish();
+    glDisable(target);
+    glDeleteTextures(1, &tex);
+    return;
+  }
   glColor4f(getf(kv, n, "cr", 1), getf(kv, n, "cg", 1), getf(kv, n, "cb", 1), getf(kv, n, "ca", 1));
   static const char *c0[] = {"s0", "t0", "r0", "q0"}, *cx[] = {"sx", "tx", "rx", "qx"}, *cy[] = {"sy", "ty", "ry", "qy"};
-  static const float corner[4][2] = {{0, 0}, {N, 0}, {N, N}, {0, N}};
+  const float corner[4][2] = {{0, 0}, {(float)N, 0}, {(float)N, (float)N}, {0, (float)N}};
   glBegin(GL_QUADS);
   for (int v = 0; v < 4; v++) {
     float tc[4];
@@ -173,8 +201,7 @@ static void scene(struct kv *kv, int n, int index) {
 
 int main(void) {
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-  if (!ctx || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, N, N)) return 1;
-  glViewport(0, 0, N, N);
+  if (!ctx) return 1;
   char line[4096];
   int index = 0;
   while (fgets(line, sizeof line, stdin)) {
@@ -189,6 +216,9 @@ int main(void) {
       snprintf(kv[n].val, sizeof kv[n].val, "%s", eq + 1);
       n++;
     }
+    N = geti(kv, n, "size", 16);
+    if (N > MAXN || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, N, N)) return 1;
+    glViewport(0, 0, N, N);
     scene(kv, n, geti(kv, n, "seed", index));
     printf("%s ", name);
     for (int i = 0; i < N * N * 4; i++) printf("%02x", buf[i]);
