@@ -30,6 +30,7 @@ use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use std::mem::offset_of;
 
 mod shade;
+mod texture;
 
 const I32X4: Type = types::I32X4;
 
@@ -59,6 +60,8 @@ pub struct SpanCall {
     /// The span's row in llvmpipe's top-down frame, for the planes.
     pub row: f32,
     pub _pad2: u32,
+    /// The draw's textures (keys with texture units), or null.
+    pub tex: *const crate::callout::TexView<'static>,
 }
 
 /// The signature of a compiled specialist.
@@ -136,6 +139,8 @@ enum Factor {
 
 /// Per-span values loaded once in the entry block.
 struct SpanValues {
+    /// The `SpanCall` pointer.
+    call: Value,
     /// The uniforms pointer.
     u: Value,
     span: Value,
@@ -181,6 +186,8 @@ struct Gen<'a> {
     x86: bool,
     /// Splatted f32 constants of the current group, by their bits.
     fconsts: Vec<(u32, Value)>,
+    /// The stack slot of the texture callout's arguments, once made.
+    tex_slot: Option<cranelift_codegen::ir::StackSlot>,
 }
 
 impl<'a> Gen<'a> {
@@ -193,6 +200,7 @@ impl<'a> Gen<'a> {
             inverses: Vec::new(),
             x86: false,
             fconsts: Vec::new(),
+            tex_slot: None,
         }
     }
 
@@ -218,6 +226,7 @@ impl<'a> Gen<'a> {
             .ins()
             .load(types::I32, mem(), span, offset_of!(FragmentSpan, x) as i32);
         let sv = SpanValues {
+            call,
             u,
             span,
             color,

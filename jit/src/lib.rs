@@ -8,6 +8,8 @@
 #![deny(unsafe_code)]
 
 pub mod cache;
+#[allow(unsafe_code)]
+pub mod callout;
 pub mod compile;
 pub mod interp;
 pub mod key;

@@ -1,5 +1,6 @@
 //! A compiled specialist and the one place softgl calls into generated code.
 
+use crate::callout::TexView;
 use crate::compile::{self, CompileError, SpanCall, SpanFn};
 use crate::interp::{check_key, check_planes, owned_mask, row_of, FragmentError};
 use crate::key::FragmentKey;
@@ -130,22 +131,32 @@ impl Specialist {
         planes: &[Planes],
         target: &mut Target<'_>,
     ) -> Result<(), FragmentError> {
-        if self.key.shade.is_some_and(|s| s.textured()) {
-            // Texturing is not compiled yet: the reference runs the key.
-            return crate::interp::run_with_planes(&self.key, uniforms, textures, spans, planes, target);
-        }
         check_key(&self.key, target)?;
         check_planes(&self.key, spans, planes)?;
+        let view = self
+            .key
+            .shade
+            .as_ref()
+            .filter(|s| s.textured())
+            .map(|s| TexView::new(&s.tex, textures));
+        let tex = view
+            .as_ref()
+            .map_or(std::ptr::null(), |v| (v as *const TexView<'_>).cast());
         for span in spans {
             let p = planes
                 .get(span.planes as usize)
                 .map_or(std::ptr::null(), |p| p as *const Planes);
-            self.run_span(uniforms, (span, p), target);
+            self.run_span((uniforms, tex), (span, p), target);
         }
         Ok(())
     }
 
-    fn run_span(&self, u: &FragmentUniforms, (span, planes): (&FragmentSpan, *const Planes), t: &mut Target<'_>) {
+    fn run_span(
+        &self,
+        (u, tex): (&FragmentUniforms, *const TexView<'static>),
+        (span, planes): (&FragmentSpan, *const Planes),
+        t: &mut Target<'_>,
+    ) {
         let live = owned_mask(span, t.width(), t.height());
         if live == 0 {
             return;
@@ -169,6 +180,7 @@ impl Specialist {
             planes,
             row: row_of(span.y, t.height()),
             _pad2: 0,
+            tex,
         };
         let bpp = self.key.color_format.bytes_per_pixel();
         let color_at = t.color_offset(span.x, span.y);
@@ -237,7 +249,10 @@ impl Specialist {
         // through these references (and the planes, non-null whenever the key has a
         // shading stage: `check_planes`), and reads and writes `4 * call.groups` pixels
         // from each non-null buffer pointer (and no buffer the key does not use):
-        // `run_span` made each pointer from a slice of at least that many pixels.
+        // `run_span` made each pointer from a slice of at least that many pixels. Keys
+        // with texture units read `call.tex`, the `TexView` `run_with_planes` made for
+        // them and keeps alive across the call, and pass it to `callout::texture_group`
+        // with a stack slot of their own.
         unsafe { (self.func)(call, u) }
     }
 }

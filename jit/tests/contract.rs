@@ -10,6 +10,10 @@
 use proptest::prelude::*;
 use proptest::sample::select;
 use softgl_jit::interp;
+use softgl_jit::texture::{
+    effective_combine, BaseFormat, CombineFn, CombineKey, CombineSrc, DepthMode, EnvMode, Filter, Image, MipFilter,
+    Operand, SamplerKey, TexTarget, TexUnitKey, TexelFormat, TextureRef, Wrap, MAX_UNITS,
+};
 use softgl_jit::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, DepthTarget,
     FragmentKey, FragmentSpan, FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target, SPAN_MAX,
@@ -425,4 +429,386 @@ fn a_fogged_fragment_by_hand() {
     let interp = run(false);
     assert_eq!(&interp[..4], &[128, 128, 51, 153]);
     assert_eq!(run(true), interp);
+}
+
+/// Texture targets, half the time 2D (the target compiled natively).
+fn tex_target() -> impl Strategy<Value = TexTarget> {
+    select(
+        &[
+            TexTarget::D2,
+            TexTarget::D2,
+            TexTarget::D2,
+            TexTarget::D1,
+            TexTarget::D3,
+            TexTarget::Cube,
+        ][..],
+    )
+}
+
+/// Texel formats, half the time RGBA8 (the format compiled natively).
+fn texel_format() -> impl Strategy<Value = TexelFormat> {
+    select(
+        &[
+            TexelFormat::Rgba8,
+            TexelFormat::Rgba8,
+            TexelFormat::Rgba8,
+            TexelFormat::Srgba8,
+            TexelFormat::Rgba16,
+            TexelFormat::Depth32F,
+        ][..],
+    )
+}
+
+/// Wrap modes, mostly REPEAT and CLAMP_TO_EDGE (the modes compiled natively).
+fn wrap() -> impl Strategy<Value = Wrap> {
+    select(
+        &[
+            Wrap::Repeat,
+            Wrap::Repeat,
+            Wrap::ClampToEdge,
+            Wrap::ClampToEdge,
+            Wrap::Clamp,
+            Wrap::ClampToBorder,
+            Wrap::MirroredRepeat,
+        ][..],
+    )
+}
+
+fn sampler_key() -> impl Strategy<Value = SamplerKey> {
+    let filter = || select(&[Filter::Nearest, Filter::Linear][..]);
+    (
+        tex_target(),
+        texel_format(),
+        (
+            filter(),
+            select(&[MipFilter::None, MipFilter::Nearest, MipFilter::Linear][..]),
+            filter(),
+        ),
+        [wrap(), wrap(), wrap()],
+        prop::option::of(compare()),
+        select(&[DepthMode::Luminance, DepthMode::Intensity, DepthMode::Alpha][..]),
+    )
+        .prop_map(|(target, format, (min, mip, mag), mut wrap, compare, depth_mode)| {
+            let dims = match target {
+                TexTarget::D1 => 1,
+                TexTarget::D2 | TexTarget::Cube => 2,
+                TexTarget::D3 => 3,
+            };
+            for w in wrap.iter_mut().skip(dims) {
+                *w = Wrap::Repeat;
+            }
+            SamplerKey {
+                target,
+                format,
+                min,
+                mip,
+                mag,
+                wrap,
+                compare: compare.filter(|_| format == TexelFormat::Depth32F),
+                depth_mode,
+            }
+        })
+}
+
+fn combine_src() -> impl Strategy<Value = CombineSrc> {
+    prop_oneof![
+        Just(CombineSrc::Texture),
+        (0u8..MAX_UNITS as u8).prop_map(CombineSrc::TextureUnit),
+        Just(CombineSrc::Constant),
+        Just(CombineSrc::PrimaryColor),
+        Just(CombineSrc::Previous),
+    ]
+}
+
+fn combine_key() -> impl Strategy<Value = CombineKey> {
+    let func = || {
+        select(
+            &[
+                CombineFn::Replace,
+                CombineFn::Modulate,
+                CombineFn::Add,
+                CombineFn::AddSigned,
+                CombineFn::Interpolate,
+                CombineFn::Subtract,
+                CombineFn::Dot3Rgb,
+                CombineFn::Dot3Rgba,
+            ][..],
+        )
+    };
+    let op = || {
+        select(
+            &[
+                Operand::SrcColor,
+                Operand::OneMinusSrcColor,
+                Operand::SrcAlpha,
+                Operand::OneMinusSrcAlpha,
+            ][..],
+        )
+    };
+    let alpha_op = || select(&[Operand::SrcAlpha, Operand::OneMinusSrcAlpha][..]);
+    let scale = || select(&[1u8, 2, 4][..]);
+    (
+        func(),
+        func().prop_filter("DOT3 is an RGB function", |f| {
+            !matches!(f, CombineFn::Dot3Rgb | CombineFn::Dot3Rgba)
+        }),
+        [combine_src(), combine_src(), combine_src()],
+        [op(), op(), op()],
+        [combine_src(), combine_src(), combine_src()],
+        [alpha_op(), alpha_op(), alpha_op()],
+        scale(),
+        scale(),
+    )
+        .prop_map(
+            |(rgb, alpha, src_rgb, op_rgb, src_alpha, op_alpha, scale_rgb, scale_alpha)| CombineKey {
+                rgb,
+                alpha,
+                src_rgb,
+                op_rgb,
+                src_alpha,
+                op_alpha,
+                scale_rgb,
+                scale_alpha,
+            },
+        )
+}
+
+fn tex_unit_key() -> impl Strategy<Value = TexUnitKey> {
+    let base = select(
+        &[
+            BaseFormat::Alpha,
+            BaseFormat::Luminance,
+            BaseFormat::LuminanceAlpha,
+            BaseFormat::Intensity,
+            BaseFormat::Rgb,
+            BaseFormat::Rgba,
+        ][..],
+    );
+    let mode = select(
+        &[
+            EnvMode::Modulate,
+            EnvMode::Replace,
+            EnvMode::Decal,
+            EnvMode::Blend,
+            EnvMode::Add,
+            EnvMode::Combine,
+        ][..],
+    );
+    (sampler_key(), base, mode, combine_key()).prop_map(|(sampler, base, mode, combine)| {
+        let base = if sampler.format == TexelFormat::Depth32F {
+            BaseFormat::Depth
+        } else {
+            base
+        };
+        let env_base = if base == BaseFormat::Depth {
+            sampler.depth_mode.base()
+        } else {
+            base
+        };
+        TexUnitKey {
+            sampler,
+            base,
+            env: effective_combine(mode, env_base, combine),
+        }
+    })
+}
+
+/// Texture units: unit 0 nearly always, unit 1 half the time, the others rarely.
+fn tex_units() -> impl Strategy<Value = [Option<TexUnitKey>; MAX_UNITS]> {
+    let unit = |p: f64| prop::option::weighted(p, tex_unit_key());
+    (
+        unit(0.9),
+        unit(0.5),
+        unit(0.1),
+        unit(0.1),
+        unit(0.05),
+        unit(0.05),
+        unit(0.05),
+        unit(0.1),
+    )
+        .prop_map(|(a, b, c, d, e, f, g, h)| [a, b, c, d, e, f, g, h])
+}
+
+/// One unit's texture, owned: every level of its chain (some outside the
+/// sampled range left empty) and its sampling values.
+struct OwnedTexture {
+    levels: Vec<(Vec<u8>, [u32; 3])>,
+    base_level: u32,
+    max_level: u32,
+    lods: [f32; 3],
+    border: [f32; 4],
+}
+
+impl OwnedTexture {
+    /// A random texture for `key`: sizes 1..=64 (3D 1..=8, cube faces square).
+    fn random(key: &SamplerKey, rng: &mut Rng) -> OwnedTexture {
+        let mut size = |max: u64| 1 + rng.below(max) as u32;
+        let dims = match key.target {
+            TexTarget::D1 => [size(64), 1, 1],
+            TexTarget::D2 => [size(64), size(64), 1],
+            TexTarget::D3 => [size(8), size(8), size(8)],
+            TexTarget::Cube => {
+                let s = size(32);
+                [s, s, 1]
+            }
+        };
+        let count = 32 - dims.iter().max().expect("three sizes").leading_zeros();
+        let base_level = rng.below(u64::from(count)) as u32;
+        let max_level = base_level + rng.below(u64::from(count - base_level)) as u32;
+        let faces = if key.target == TexTarget::Cube { 6 } else { 1 };
+        let bpp = key.format.bytes_per_texel();
+        let mut levels = Vec::new();
+        for l in 0..count {
+            let d = dims.map(|s| (s >> l).max(1));
+            for _ in 0..faces {
+                let sampled = (base_level..=max_level).contains(&l);
+                if !sampled && rng.below(2) == 0 {
+                    levels.push((Vec::new(), [0; 3]));
+                    continue;
+                }
+                let n = (d[0] * d[1] * d[2]) as usize;
+                let texels = match key.format {
+                    TexelFormat::Depth32F => (0..n)
+                        .flat_map(|_| {
+                            const POOL: [f32; 4] = [0.0, 0.25, 0.5, 1.0];
+                            let v = if rng.below(2) == 0 {
+                                POOL[rng.below(4) as usize]
+                            } else {
+                                rng.below(1 << 24) as f32 / (1 << 24) as f32
+                            };
+                            v.to_ne_bytes()
+                        })
+                        .collect(),
+                    _ => (0..n * bpp).map(|_| rng.byte()).collect(),
+                };
+                levels.push((texels, d));
+            }
+        }
+        const LODS: [f32; 9] = [-1000.0, -100.0, -1.0, 0.0, 0.5, 1.0, 2.5, 100.0, 1000.0];
+        let lod = |rng: &mut Rng| LODS[rng.below(LODS.len() as u64) as usize];
+        let (a, b) = (lod(rng), lod(rng));
+        let bias = if rng.below(2) == 0 { 0.0 } else { lod(rng) / 4.0 };
+        OwnedTexture {
+            levels,
+            base_level,
+            max_level,
+            lods: [a.min(b), a.max(b), bias],
+            border: [0, 1, 2, 3].map(|_| f32::from(rng.byte()) / 255.0),
+        }
+    }
+
+    fn images(&self) -> Vec<Image<'_>> {
+        self.levels
+            .iter()
+            .map(|(texels, [width, height, depth])| Image {
+                texels,
+                width: *width,
+                height: *height,
+                depth: *depth,
+            })
+            .collect()
+    }
+
+    fn texture_ref<'a>(&self, images: &'a [Image<'a>]) -> TextureRef<'a> {
+        TextureRef {
+            images,
+            base_level: self.base_level,
+            max_level: self.max_level,
+            min_lod: self.lods[0],
+            max_lod: self.lods[1],
+            lod_bias: self.lods[2],
+            border: self.border,
+        }
+    }
+}
+
+/// A texture coordinate plane value: a quarter of the time from a pool of
+/// stiff values (NaN, ±1e6, ±∞, zero, edges), else within a few repeats.
+fn tex_float(rng: &mut Rng, scale: f32) -> f32 {
+    const POOL: [f32; 10] = [
+        f32::NAN,
+        1e6,
+        -1e6,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        0.0,
+        0.5,
+        1.0,
+        -1.0,
+        1e30,
+    ];
+    if rng.below(4) == 0 {
+        return POOL[rng.below(POOL.len() as u64) as usize];
+    }
+    (rng.below(20001) as f32 / 5000.0 - 2.0) * scale
+}
+
+/// Planes with texture coordinates: 1/w mostly 1 and gently sloped,
+/// coordinates from [`tex_float`] with slopes from magnification to strong
+/// minification, q mostly 1.
+fn textured_planes(rng: &mut Rng) -> Planes {
+    let mut p = planes(rng);
+    if rng.below(4) != 0 {
+        p.set(
+            softgl_jit::shade::slot::INV_W,
+            1.0,
+            tex_float(rng, 1e-3),
+            tex_float(rng, 1e-3),
+        );
+    }
+    for u in 0..MAX_UNITS {
+        for c in 0..4 {
+            let k = softgl_jit::shade::slot::tex(u) + c;
+            if c == 3 && rng.below(4) != 0 {
+                p.constant(k, 1.0);
+                continue;
+            }
+            let slope = [1e-3, 1e-2, 0.1, 1.0][rng.below(4) as usize];
+            p.set(k, tex_float(rng, 1.0), tex_float(rng, slope), tex_float(rng, slope));
+        }
+    }
+    p
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// Textured keys: random units (targets, formats, filters, wraps,
+    /// environments), random textures and texture coordinates.
+    #[test]
+    fn textured_jit_equals_interpreter(
+        key in key(),
+        shade in shade_key(),
+        tex in tex_units(),
+        u in uniforms(),
+        seed in any::<u64>(),
+    ) {
+        let key = FragmentKey { shade: Some(ShadeKey { color: true, tex, ..shade }), ..key };
+        let mut rng = Rng(softgl_jit::rng::Rng::new((seed ^ (seed >> 32)) as u32));
+        // A unit of the key without a texture in the set now and then.
+        let owned: Vec<Option<OwnedTexture>> = tex
+            .iter()
+            .map(|t| t.as_ref().filter(|_| rng.below(20) != 0).map(|t| OwnedTexture::random(&t.sampler, &mut rng)))
+            .collect();
+        let images: Vec<Vec<Image<'_>>> = owned.iter().map(|o| o.as_ref().map_or_else(Vec::new, OwnedTexture::images)).collect();
+        let mut textures = TextureSet::default();
+        for (unit, o) in owned.iter().enumerate() {
+            textures.units[unit] = o.as_ref().map(|o| o.texture_ref(&images[unit]));
+            textures.env_color[unit] = [0, 1, 2, 3].map(|_| f32::from(rng.byte()) / 255.0);
+        }
+        let mut interp_buf = Buffers::random(&key, &mut rng);
+        let mut spans = spans(&interp_buf, &key, &mut rng);
+        let planes: Vec<Planes> = (0..1 + rng.below(3)).map(|_| textured_planes(&mut rng)).collect();
+        for s in &mut spans {
+            s.planes = rng.below(planes.len() as u64) as u32;
+        }
+        let mut jit_buf = interp_buf.clone();
+        let specialist = Specialist::compile(&key).expect("a valid key compiles");
+        interp::run_with_planes(&key, &u, &textures, &spans, &planes, &mut interp_buf.target()).expect("the key names the buffers");
+        specialist.run_with_planes(&u, &textures, &spans, &planes, &mut jit_buf.target()).expect("the key names the buffers");
+        prop_assert_eq!(&jit_buf.color, &interp_buf.color, "color differs");
+        prop_assert_eq!(&jit_buf.depth16, &interp_buf.depth16, "depth differs");
+        prop_assert_eq!(&jit_buf.depth32, &interp_buf.depth32, "depth differs");
+        prop_assert_eq!(&jit_buf.stencil, &interp_buf.stencil, "stencil differs");
+    }
 }

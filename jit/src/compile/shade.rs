@@ -71,6 +71,9 @@ impl Gen<'_> {
             }
         };
         let mut c = [0, 1, 2, 3].map(|k| colour(self, slot::COLOR + k));
+        if key.textured() {
+            c = self.texture(g, sv, key, c);
+        }
         if key.color_sum {
             for (k, ck) in c.iter_mut().take(3).enumerate() {
                 let s = colour(self, slot::SECONDARY + k);
@@ -149,14 +152,14 @@ impl Gen<'_> {
     }
 
     /// `min(m, t)` with NaN kept (`m < t ? m : t`), one `minps` on x86-64.
-    fn min_const(&mut self, m: Value, t: Value) -> Value {
+    pub(super) fn min_const(&mut self, m: Value, t: Value) -> Value {
         let over = self.b.ins().fcmp(FloatCC::LessThan, m, t);
         let over = self.b.ins().bitcast(F32X4, MemFlagsData::new(), over);
         self.b.ins().bitselect(over, m, t)
     }
 
     /// Rounded f32 lanes to i32 (`i32::MIN` for NaN and out of range on x86-64).
-    fn int_lanes(&mut self, r: Value) -> Value {
+    pub(super) fn int_lanes(&mut self, r: Value) -> Value {
         if self.x86 {
             self.b.ins().x86_cvtt2dq(I32X4, r)
         } else {
@@ -166,7 +169,7 @@ impl Gen<'_> {
 
     /// Plane `k` at the lanes' pixels: `fma(dady, row, fma(dadx, px, a0))`,
     /// each coefficient one aligned vector load (`Planes` stores them splatted).
-    fn plane(&mut self, planes: Value, k: usize, px: Value, row: Value) -> Value {
+    pub(super) fn plane(&mut self, planes: Value, k: usize, px: Value, row: Value) -> Value {
         let load = |s: &mut Self, c: usize| {
             let off = offset_of!(Planes, coeffs) + (3 * k + c) * 16;
             s.b.ins().load(F32X4, mem().with_aligned(), planes, off as i32)
@@ -178,7 +181,7 @@ impl Gen<'_> {
         self.b.ins().fma(dady, row, inner)
     }
 
-    fn fconst(&mut self, v: f32) -> Value {
+    pub(super) fn fconst(&mut self, v: f32) -> Value {
         if let Some(&(_, c)) = self.fconsts.iter().find(|(k, _)| *k == v.to_bits()) {
             return c;
         }
@@ -194,7 +197,7 @@ impl Gen<'_> {
     }
 
     /// `clamp(v, 0, 1)`, NaN as 0 (`crate::shade::saturate`).
-    fn saturate(&mut self, v: Value) -> Value {
+    pub(super) fn saturate(&mut self, v: Value) -> Value {
         let ordered = self.b.ins().fcmp(FloatCC::Ordered, v, v);
         let zero = self.fconst(0.0);
         let one = self.fconst(1.0);
@@ -275,7 +278,7 @@ impl Gen<'_> {
     }
 
     /// `bound` in the lanes where `v <cc> bound` (false for NaN), else `v`.
-    fn select_if(&mut self, cc: FloatCC, v: Value, bound: Value) -> Value {
+    pub(super) fn select_if(&mut self, cc: FloatCC, v: Value, bound: Value) -> Value {
         let m = self.b.ins().fcmp(cc, v, bound);
         let m = self.b.ins().bitcast(F32X4, MemFlagsData::new(), m);
         self.b.ins().bitselect(m, bound, v)

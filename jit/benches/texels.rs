@@ -1,0 +1,170 @@
+//! Texels per second of the texture stage, per filter, JIT against the
+//! interpreter: a 256×256 RGBA8 target covered by spans of one primitive
+//! whose texture coordinates map it onto a 256² mipmapped RGBA8 texture,
+//! minified by 1.37 (λ ≈ 0.45, so trilinear blends levels 0 and 1), MODULATE
+//! over a constant colour, REPEAT. Each fragment samples once: texels/s is
+//! fragments/s.
+//!
+//! `cargo bench -p softgl-jit --bench texels`
+
+use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use softgl_jit::shade::slot;
+use softgl_jit::texture::{
+    effective_combine, BaseFormat, CombineKey, DepthMode, EnvMode, Filter, Image, MipFilter, SamplerKey, TexTarget,
+    TexUnitKey, TexelFormat, TextureRef, TextureSet, Wrap, MAX_UNITS,
+};
+use softgl_jit::SPAN_MAX;
+use softgl_jit::{
+    interp, ColorFormat, FragmentKey, FragmentSpan, FragmentUniforms, Planes, ShadeKey, Specialist, Target,
+};
+use std::hint::black_box;
+use std::time::Duration;
+
+const SIZE: u32 = 256;
+const TEX: u32 = 256;
+const MINIFY: f32 = 1.37;
+
+/// The key of one textured unit with `min`/`mag` and mip filter `mip`.
+fn key(filter: Filter, mip: MipFilter) -> FragmentKey {
+    let unit = TexUnitKey {
+        sampler: SamplerKey {
+            target: TexTarget::D2,
+            format: TexelFormat::Rgba8,
+            min: filter,
+            mip,
+            mag: filter,
+            wrap: [Wrap::Repeat; 3],
+            compare: None,
+            depth_mode: DepthMode::Luminance,
+        },
+        base: BaseFormat::Rgba,
+        env: effective_combine(EnvMode::Modulate, BaseFormat::Rgba, CombineKey::DEFAULT),
+    };
+    let mut tex = [None; MAX_UNITS];
+    tex[0] = Some(unit);
+    FragmentKey {
+        shade: Some(ShadeKey {
+            color: true,
+            tex,
+            ..ShadeKey::default()
+        }),
+        ..FragmentKey::new(ColorFormat::Rgba8, None, false)
+    }
+}
+
+/// The texture's levels, 256² down to 1², with a seeded pattern.
+fn levels() -> Vec<(Vec<u8>, u32)> {
+    let mut rng = softgl_jit::rng::Rng::new(0x7e11);
+    (0..=TEX.trailing_zeros())
+        .map(|l| {
+            let s = TEX >> l;
+            ((0..s * s * 4).map(|_| rng.next_u64() as u8).collect(), s)
+        })
+        .collect()
+}
+
+/// One primitive: white, w = 1, s and t growing by `MINIFY / TEX` a pixel.
+fn planes() -> Planes {
+    let mut p = Planes::default();
+    p.constant(slot::INV_W, 1.0);
+    for c in 0..4 {
+        p.constant(slot::COLOR + c, 1.0);
+    }
+    let d = MINIFY / TEX as f32;
+    p.set(slot::tex(0), 0.25 * d, d, 0.0);
+    p.set(slot::tex(0) + 1, 0.25 * d, 0.0, d);
+    p.constant(slot::tex(0) + 2, 0.0);
+    p.constant(slot::tex(0) + 3, 1.0);
+    p
+}
+
+/// Full spans over the whole target.
+fn spans() -> Vec<FragmentSpan> {
+    let mut spans = Vec::new();
+    for y in 0..SIZE {
+        for x in (0..SIZE).step_by(SPAN_MAX) {
+            let mut s = FragmentSpan::new(x, y);
+            for i in 0..SPAN_MAX {
+                s.set(i, [0; 4], 0);
+            }
+            spans.push(s);
+        }
+    }
+    spans
+}
+
+fn texels(c: &mut Criterion) {
+    let levels = levels();
+    let images: Vec<Image<'_>> = levels
+        .iter()
+        .map(|(texels, s)| Image {
+            texels,
+            width: *s,
+            height: *s,
+            depth: 1,
+        })
+        .collect();
+    let mut set = TextureSet::default();
+    set.units[0] = Some(TextureRef {
+        images: &images,
+        base_level: 0,
+        max_level: TEX.trailing_zeros(),
+        min_lod: -1000.0,
+        max_lod: 1000.0,
+        lod_bias: 0.0,
+        border: [0.0; 4],
+    });
+    let planes = [planes()];
+    let spans = spans();
+    let u = FragmentUniforms::default();
+    let mut color = vec![0u8; (SIZE * SIZE * 4) as usize];
+
+    let mut group = c.benchmark_group("texels");
+    group.throughput(Throughput::Elements(u64::from(SIZE * SIZE)));
+    group.sample_size(20).measurement_time(Duration::from_secs(4));
+    for (name, filter, mip) in [
+        ("nearest", Filter::Nearest, MipFilter::None),
+        ("linear", Filter::Linear, MipFilter::None),
+        ("trilinear", Filter::Linear, MipFilter::Linear),
+    ] {
+        let key = key(filter, mip);
+        let specialist = Specialist::compile(&key).expect("the bench key compiles");
+        group.bench_function(format!("{name}/jit"), |b| {
+            b.iter(|| {
+                let mut t = Target::new(
+                    SIZE,
+                    SIZE,
+                    ColorFormat::Rgba8,
+                    &mut color,
+                    SIZE as usize * 4,
+                    None,
+                    None,
+                )
+                .expect("buffer sized for the target");
+                specialist
+                    .run_with_planes(&u, &set, black_box(&spans), &planes, &mut t)
+                    .expect("the key names the buffers");
+            })
+        });
+        group.bench_function(format!("{name}/interpreter"), |b| {
+            b.iter(|| {
+                let mut t = Target::new(
+                    SIZE,
+                    SIZE,
+                    ColorFormat::Rgba8,
+                    &mut color,
+                    SIZE as usize * 4,
+                    None,
+                    None,
+                )
+                .expect("buffer sized for the target");
+                interp::run_with_planes(&key, &u, &set, black_box(&spans), &planes, &mut t)
+                    .expect("the key names the buffers");
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, texels);
+criterion_main!(benches);

@@ -1,0 +1,102 @@
+//! The one boundary from compiled code back into Rust: [`texture_group`]
+//! hands a group of four fragments' texture sampling to the reference
+//! sampler (`crate::texture::sample_quad`), for the units the specialist does not
+//! sample natively.
+//!
+//! Compiled code reaches the draw's textures only through a [`TexView`],
+//! built by the specialist from the [`TextureSet`] at the call boundary and
+//! valid for the whole call; everything in it is read-only.
+
+use crate::texture::{TexUnitKey, TextureSet, MAX_UNITS};
+use std::marker::PhantomData;
+
+/// The draw's textures as compiled code sees them. `#[repr(C)]`: the
+/// generated code reads its fields at their `offset_of!` offsets.
+#[repr(C, align(16))]
+#[derive(Debug)]
+pub struct TexView<'a> {
+    /// `GL_TEXTURE_ENV_COLOR` of each unit, `env_color[u][channel]`
+    /// repeated in four lanes so that one vector load splats it.
+    pub env_color: [[[f32; 4]; 4]; MAX_UNITS],
+    /// The draw's [`TextureSet`], type-erased, for [`texture_group`].
+    set: *const (),
+    /// The texture units of the specialist's key.
+    keys: *const [Option<TexUnitKey>; MAX_UNITS],
+    _borrow: PhantomData<&'a TextureSet<'a>>,
+}
+
+impl<'a> TexView<'a> {
+    /// The view of `set` for a specialist of a key with texture units `keys`.
+    pub fn new(keys: &'a [Option<TexUnitKey>; MAX_UNITS], set: &'a TextureSet<'a>) -> TexView<'a> {
+        TexView {
+            env_color: set.env_color.map(|c| c.map(|v| [v; 4])),
+            set: (set as *const TextureSet<'a>).cast(),
+            keys,
+            _borrow: PhantomData,
+        }
+    }
+}
+
+/// What compiled code hands [`texture_group`] for one group of four lanes:
+/// the units to sample and their coordinates at the pixels of the lanes'
+/// quads, computed from the planes exactly as `crate::shade::tex_coords`
+/// does; the samples come back in `samples`.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug)]
+pub struct TexCall {
+    /// `coords[u][p][c][lane]`: unit `u`'s coordinate `c` (s, t, r, q) at
+    /// pixel `p` of each lane's 2×2 quad: top-left, top-right, bottom-left,
+    /// bottom-right.
+    pub coords: [[[[f32; 4]; 4]; 4]; MAX_UNITS],
+    /// Which pixel of its quad each lane is (0..4, the order of `coords`).
+    pub quad_pixel: [u32; 4],
+    /// `samples[u][channel][lane]`: unit `u`'s filtered RGBA, for the units
+    /// of `units` and the lanes of `live` (the rest is left as it is).
+    pub samples: [[[f32; 4]; 4]; MAX_UNITS],
+    /// The [`TexView`] of the call (`SpanCall::tex`).
+    pub view: *const TexView<'static>,
+    /// Bit `i`: lane `i` is live.
+    pub live: u32,
+    /// Bit `u`: sample unit `u`.
+    pub units: u32,
+}
+
+/// The samples of a group: for each unit of `call.units` the key enables
+/// and each live lane, the reference sampler (`crate::texture::sample_quad`)
+/// at the lane's quad, or 0 when the set has no texture for the unit
+/// (as `crate::shade::texture` leaves it). Does nothing when `call` or its
+/// view is null.
+///
+/// # Safety
+/// `call` is null or points to a `TexCall` that nothing else accesses during
+/// the call, whose `view` is null or the `TexView` the specialist built for
+/// the running call (its referents outlive the call).
+pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
+    // SAFETY: by the contract above `call` is null or a valid, exclusive
+    // `TexCall` (a stack slot of the calling group).
+    let Some(call) = (unsafe { call.as_mut() }) else {
+        return;
+    };
+    // SAFETY: `view` is null or the `TexView` `Specialist::run_with_planes`
+    // built for this call, alive until it returns.
+    let Some(view) = (unsafe { call.view.as_ref() }) else {
+        return;
+    };
+    // SAFETY: `TexView::new` made `keys` and `set` from references that
+    // outlive the view (its `'a`); `set` was a `TextureSet`.
+    let (keys, set) = unsafe { (&*view.keys, &*view.set.cast::<TextureSet<'_>>()) };
+    for (u, (key, tex)) in keys.iter().zip(&set.units).enumerate() {
+        let Some(key) = key.as_ref().filter(|_| call.units & (1 << u) != 0) else {
+            continue;
+        };
+        for lane in (0..4).filter(|l| call.live & (1 << l) != 0) {
+            let quad = std::array::from_fn(|p| std::array::from_fn(|c| call.coords[u][p][c][lane]));
+            let texel = tex.as_ref().map_or([0.0; 4], |tex| {
+                crate::texture::sample_quad(key, tex, &quad, call.quad_pixel[lane] as usize)
+            });
+            for (c, v) in texel.into_iter().enumerate() {
+                call.samples[u][c][lane] = v;
+            }
+        }
+    }
+}
