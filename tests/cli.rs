@@ -69,67 +69,59 @@ fn render_err(dir: &std::path::Path, obj: &str) -> (bool, String) {
 #[test]
 fn render_reports_missing_and_malformed_files_by_name() {
     let dir = scratch("render-errors");
-    let write = |name: &str, text: &[u8]| std::fs::write(dir.join(name), text).unwrap();
-    let (ok, err) = render_err(&dir, "absent.obj");
-    assert!(!ok);
-    assert!(err.contains("cannot read") && err.contains("absent.obj"), "{err}");
-
-    write("bad_vertex.obj", b"v 1.0 zero 2.0\nf 1 1 1\n");
-    let (ok, err) = render_err(&dir, "bad_vertex.obj");
-    assert!(!ok);
-    assert!(
-        err.contains("bad_vertex.obj is not a valid OBJ file: position parse error"),
-        "{err}"
-    );
-
-    write("bad_face.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
-    let (ok, err) = render_err(&dir, "bad_face.obj");
-    assert!(!ok);
-    assert!(err.contains("face vertex index out of bounds"), "{err}");
-
-    write(
-        "no_mtl.obj",
-        b"mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n",
-    );
-    let (ok, err) = render_err(&dir, "no_mtl.obj");
-    assert!(!ok);
-    assert!(
-        err.contains("cannot load the material library") && err.contains("gone.mtl"),
-        "{err}"
-    );
-
-    write("no_tex.mtl", b"newmtl m\nKd 1 1 1\nmap_Kd gone.png\n");
-    write(
-        "no_tex.obj",
-        b"mtllib no_tex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n",
-    );
-    let (ok, err) = render_err(&dir, "no_tex.obj");
-    assert!(!ok);
-    assert!(
-        err.contains("cannot load the texture") && err.contains("gone.png"),
-        "{err}"
-    );
-
-    write("bad.png", b"not a png at all");
-    write("bad_tex.mtl", b"newmtl m\nmap_Kd bad.png\n");
-    write(
-        "bad_tex.obj",
-        b"mtllib bad_tex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n",
-    );
-    let (ok, err) = render_err(&dir, "bad_tex.obj");
-    assert!(!ok);
-    assert!(
-        err.contains("cannot load the texture") && err.contains("bad.png"),
-        "{err}"
-    );
-
-    write("empty.obj", b"# nothing\nv 0 0 0\n");
-    let (ok, err) = render_err(&dir, "empty.obj");
-    assert!(!ok);
-    assert!(err.contains("empty.obj has no triangles to draw"), "{err}");
-
-    assert!(!err.contains("panicked"));
-    assert!(!dir.join("out.png").exists(), "no image is written on an error");
+    const TRI: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n";
+    /// Files written, the OBJ rendered, what stderr must say.
+    type Case<'a> = (&'a [(&'a str, String)], &'a str, &'a [&'a str]);
+    let cases: [Case; 7] = [
+        (&[], "absent.obj", &["cannot read", "absent.obj"]),
+        (
+            &[("bad_vertex.obj", "v 1.0 zero 2.0\nf 1 1 1\n".into())],
+            "bad_vertex.obj",
+            &["bad_vertex.obj is not a valid OBJ file: position parse error"],
+        ),
+        (
+            &[("bad_face.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n".into())],
+            "bad_face.obj",
+            &["face vertex index out of bounds"],
+        ),
+        (
+            &[("no_mtl.obj", format!("mtllib gone.mtl\n{TRI}"))],
+            "no_mtl.obj",
+            &["cannot load the material library", "gone.mtl"],
+        ),
+        (
+            &[
+                ("no_tex.mtl", "newmtl m\nKd 1 1 1\nmap_Kd gone.png\n".into()),
+                ("no_tex.obj", format!("mtllib no_tex.mtl\n{TRI}")),
+            ],
+            "no_tex.obj",
+            &["cannot load the texture", "gone.png"],
+        ),
+        (
+            &[
+                ("bad.png", "not a png at all".into()),
+                ("bad_tex.mtl", "newmtl m\nmap_Kd bad.png\n".into()),
+                ("bad_tex.obj", format!("mtllib bad_tex.mtl\n{TRI}")),
+            ],
+            "bad_tex.obj",
+            &["cannot load the texture", "bad.png"],
+        ),
+        (
+            &[("empty.obj", "# nothing\nv 0 0 0\n".into())],
+            "empty.obj",
+            &["empty.obj has no triangles to draw"],
+        ),
+    ];
+    for (files, obj, says) in cases {
+        for (name, text) in files {
+            std::fs::write(dir.join(name), text).unwrap();
+        }
+        let (ok, err) = render_err(&dir, obj);
+        assert!(!ok, "{obj} rendered");
+        assert!(says.iter().all(|s| err.contains(s)), "{obj}: {err}");
+        assert!(!err.contains("panicked"), "{obj}: {err}");
+        assert!(!dir.join("out.png").exists(), "{obj}: no image is written on an error");
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

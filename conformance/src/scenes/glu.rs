@@ -110,19 +110,17 @@ fn scale(c: usize, (wi, hi): (usize, usize), d: &[u8], (wo, ho): (usize, usize))
             let mut totals = [0f32; 4];
             for (k, total) in totals.iter_mut().enumerate().take(c) {
                 let mut t = 0f32;
+                // One row of the box: its partial first and last texels and those between.
+                let row = |t: &mut f32, y: usize, y_percent: f32| {
+                    *t += px(lowx_int, y, k) * (y_percent * (1.0 - lowx_float));
+                    for l in lowx_int + 1..highx_int {
+                        *t += px(l, y, k) * y_percent;
+                    }
+                    *t += px(highx_int, y, k) * (y_percent * highx_float);
+                };
                 if highy_int > lowy_int && highx_int > lowx_int {
-                    let y_percent = 1.0 - lowy_float;
-                    t += px(lowx_int, lowy_int, k) * (y_percent * (1.0 - lowx_float));
-                    for l in lowx_int + 1..highx_int {
-                        t += px(l, lowy_int, k) * y_percent;
-                    }
-                    t += px(highx_int, lowy_int, k) * (y_percent * highx_float);
-                    let y_percent = highy_float;
-                    t += px(lowx_int, highy_int, k) * (y_percent * (1.0 - lowx_float));
-                    for l in lowx_int + 1..highx_int {
-                        t += px(l, highy_int, k) * y_percent;
-                    }
-                    t += px(highx_int, highy_int, k) * (y_percent * highx_float);
+                    row(&mut t, lowy_int, 1.0 - lowy_float);
+                    row(&mut t, highy_int, highy_float);
                     for m in lowy_int + 1..highy_int {
                         t += px(lowx_int, m, k) * (1.0 - lowx_float) + px(highx_int, m, k) * highx_float;
                     }
@@ -134,12 +132,7 @@ fn scale(c: usize, (wi, hi): (usize, usize), d: &[u8], (wo, ho): (usize, usize))
                     }
                     t += px(lowx_int, highy_int, k) * (x_percent * highy_float);
                 } else if highx_int > lowx_int {
-                    let y_percent = highy_float - lowy_float;
-                    t += px(lowx_int, lowy_int, k) * ((1.0 - lowx_float) * y_percent);
-                    for l in lowx_int + 1..highx_int {
-                        t += px(l, lowy_int, k) * y_percent;
-                    }
-                    t += px(highx_int, lowy_int, k) * (y_percent * highx_float);
+                    row(&mut t, lowy_int, highy_float - lowy_float);
                 } else {
                     t += px(lowx_int, lowy_int, k) * ((highy_float - lowy_float) * (highx_float - lowx_float));
                 }
@@ -156,23 +149,24 @@ fn scale(c: usize, (wi, hi): (usize, usize), d: &[u8], (wo, ho): (usize, usize))
             }
             lowx_int = highx_int;
             lowx_float = highx_float;
-            highx_int += convx_int;
-            highx_float += convx_float;
-            if highx_float > 1.0 {
-                highx_float -= 1.0;
-                highx_int += 1;
-            }
+            step(&mut highx_int, &mut highx_float, (convx_int, convx_float));
         }
         lowy_int = highy_int;
         lowy_float = highy_float;
-        highy_int += convy_int;
-        highy_float += convy_float;
-        if highy_float > 1.0 {
-            highy_float -= 1.0;
-            highy_int += 1;
-        }
+        step(&mut highy_int, &mut highy_float, (convy_int, convy_float));
     }
     out
+}
+
+/// Moves a box edge kept as (whole, fraction) on by `by`, carrying the
+/// fraction past 1 as GLU does (`> 1`, so an edge may sit at fraction 1).
+fn step(int: &mut usize, frac: &mut f32, by: (usize, f32)) {
+    *int += by.0;
+    *frac += by.1;
+    if *frac > 1.0 {
+        *frac -= 1.0;
+        *int += 1;
+    }
 }
 
 #[cfg(test)]

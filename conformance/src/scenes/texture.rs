@@ -12,8 +12,8 @@
 //! so a frame replayed on the same context binds the same objects again.
 
 use super::glu::{self, Level};
-use super::lighting::{light, lit_view, material, sphere_with};
-use super::{panels, Group, Near, Scene, Size, Tolerance};
+use super::lighting::{light, lit_view, material, sphere_with, SphereTex};
+use super::{panels, Group, Scene, Size, Tolerance};
 use crate::call::{Call, Rec};
 use softgl::{
     Capability, CombineFn, CombineSrc, CompareFunc, DepthMode, EnvMode, Filter, InternalFormat, MatrixMode, MipFilter,
@@ -22,6 +22,10 @@ use softgl::{
 };
 
 const G: Group = Group::Texture;
+/// Minification filters (`GL_TEXTURE_MIN_FILTER`).
+const NEAREST: (Filter, MipFilter) = (Filter::Nearest, MipFilter::None);
+const LINEAR: (Filter, MipFilter) = (Filter::Linear, MipFilter::None);
+const TRILINEAR: (Filter, MipFilter) = (Filter::Linear, MipFilter::Linear);
 const T2: TextureTarget = TextureTarget::D2;
 
 /// Measured 2026-11-23 (scenes branch with store, pipe and sample merged):
@@ -35,14 +39,12 @@ const E: Tolerance = Tolerance {
 /// Measured 2026-11-23: colours 1 LSB off llvmpipe's on `test` pixels at
 /// 96x96 and `report` at 256x256, none further (softpipe: thousands).
 const fn lsb(test: usize, report: usize) -> Tolerance {
-    Tolerance {
-        channel: 1,
-        near: Near { test, report },
-        share_over: 0.0,
-        coverage: 0,
-        reason: "1 LSB on the pixels counted, from the interpolated colour or coordinate's last f32 bit \
-                 (docs/llvmpipe-facts.md 11); softpipe is off on 10-100x as many",
-    }
+    Tolerance::lsb(
+        test,
+        report,
+        "1 LSB on the pixels counted, from the interpolated colour or coordinate's last f32 bit \
+         (docs/llvmpipe-facts.md 11); softpipe is off on 10-100x as many",
+    )
 }
 
 /// Measured 2026-11-23: NEAREST texel choices flip against llvmpipe's on
@@ -55,13 +57,14 @@ const fn lsb(test: usize, report: usize) -> Tolerance {
 /// set-up of pipe and sample).
 const fn edge_ties(test: usize, report: usize, share: f64) -> Tolerance {
     Tolerance {
-        channel: 1,
-        near: Near { test, report },
         share_over: share,
-        coverage: 0,
-        reason: "NEAREST texel choices (or depth compares) flip on the pixels counted, where the texture \
-                 coordinate lies within an f32 ulp of a texel edge and softgl's interpolated coordinate is \
-                 not llvmpipe's to the last bit (open: issue 12)",
+        ..Tolerance::lsb(
+            test,
+            report,
+            "NEAREST texel choices (or depth compares) flip on the pixels counted, where the texture \
+             coordinate lies within an f32 ulp of a texel edge and softgl's interpolated coordinate is \
+             not llvmpipe's to the last bit (open: issue 12)",
+        )
     }
 }
 
@@ -364,14 +367,7 @@ fn receding_checker(r: &mut Rec, _s: Size, min: (Filter, MipFilter)) {
 /// texel edge lies on a pixel row, modulated by a smooth colour.
 fn magnified(r: &mut Rec, s: Size, mag: Filter) {
     tex_reset(r);
-    texture_2d(
-        r,
-        1,
-        &[(8, 8, pattern(8, 8))],
-        (Filter::Nearest, MipFilter::None),
-        mag,
-        Wrap::Repeat,
-    );
+    texture_2d(r, 1, &[(8, 8, pattern(8, 8))], NEAREST, mag, Wrap::Repeat);
     env_mode(r, EnvMode::Modulate);
     r.translate(s.wf() / 2.0, s.hf() / 2.0, 0.0)
         .call(Call::Rotate(17.0, [0.0, 0.0, 1.0]));
@@ -427,14 +423,7 @@ fn env_spheres(r: &mut Rec, _s: Size, mode: EnvMode) {
     env_mode(r, mode);
     let texels = pattern(16, 16);
     for (i, (internal, format, comps)) in BASES.into_iter().enumerate() {
-        params(
-            r,
-            T2,
-            i as u32 + 1,
-            (Filter::Linear, MipFilter::None),
-            Filter::Linear,
-            Wrap::Repeat,
-        );
+        params(r, T2, i as u32 + 1, LINEAR, Filter::Linear, Wrap::Repeat);
         r.tex_image(
             TexImageTarget::D2,
             0,
@@ -445,25 +434,22 @@ fn env_spheres(r: &mut Rec, _s: Size, mode: EnvMode) {
         );
         r.enable(Capability::Texture(T2));
         let (x, y) = (-3.0 + 3.0 * (i % 3) as f32, 1.6 - 3.2 * (i / 3) as f32);
-        sphere_with(r, [x, y, -9.0], 1.4, (20, 14), 1.0, true);
+        sphere_with(r, [x, y, -9.0], 1.4, (20, 14), 1.0, SphereTex::Glu);
     }
 }
 
 /// One combine stage on the active unit.
-struct Stage {
-    rgb: CombineFn,
-    alpha: CombineFn,
-    src: [CombineSrc; 3],
-    op_rgb: [Operand; 3],
-    scale: f32,
-}
+/// (RGB function, alpha function, sources 0..2 for both, RGB operands,
+/// RGB scale; the alpha operands are SRC_ALPHA, ONE_MINUS_SRC_ALPHA,
+/// SRC_ALPHA and the alpha scale 2 where the RGB scale is over 1).
+type Stage = (CombineFn, CombineFn, [CombineSrc; 3], [Operand; 3], f32);
 
-fn combine(r: &mut Rec, st: &Stage) {
+fn combine(r: &mut Rec, (rgb, alpha, src, op_rgb, scale): Stage) {
     env_mode(r, EnvMode::Combine)
-        .tex_env(TexEnvParam::CombineRgb(st.rgb))
-        .tex_env(TexEnvParam::CombineAlpha(st.alpha))
-        .tex_env(TexEnvParam::RgbScale(st.scale))
-        .tex_env(TexEnvParam::AlphaScale(if st.scale > 1.0 { 2.0 } else { 1.0 }));
+        .tex_env(TexEnvParam::CombineRgb(rgb))
+        .tex_env(TexEnvParam::CombineAlpha(alpha))
+        .tex_env(TexEnvParam::RgbScale(scale))
+        .tex_env(TexEnvParam::AlphaScale(if scale > 1.0 { 2.0 } else { 1.0 }));
     for n in 0..3u8 {
         let i = usize::from(n);
         let op_alpha = if i == 1 {
@@ -471,9 +457,9 @@ fn combine(r: &mut Rec, st: &Stage) {
         } else {
             Operand::SrcAlpha
         };
-        r.tex_env(TexEnvParam::SrcRgb(n, st.src[i]))
-            .tex_env(TexEnvParam::OperandRgb(n, st.op_rgb[i]))
-            .tex_env(TexEnvParam::SrcAlpha(n, st.src[i]))
+        r.tex_env(TexEnvParam::SrcRgb(n, src[i]))
+            .tex_env(TexEnvParam::OperandRgb(n, op_rgb[i]))
+            .tex_env(TexEnvParam::SrcAlpha(n, src[i]))
             .tex_env(TexEnvParam::OperandAlpha(n, op_alpha));
     }
 }
@@ -482,24 +468,10 @@ fn combine(r: &mut Rec, st: &Stage) {
 /// checker), linear, repeat, enabled.
 fn two_units(r: &mut Rec) {
     r.call(Call::ActiveTexture(0));
-    texture_2d(
-        r,
-        1,
-        &[(8, 8, pattern(8, 8))],
-        (Filter::Linear, MipFilter::None),
-        Filter::Linear,
-        Wrap::Repeat,
-    );
+    texture_2d(r, 1, &[(8, 8, pattern(8, 8))], LINEAR, Filter::Linear, Wrap::Repeat);
     r.call(Call::ActiveTexture(1));
     let c = checker(4, 4, 1, [250, 220, 40, 200], [40, 90, 220, 100]);
-    texture_2d(
-        r,
-        2,
-        &[(4, 4, c)],
-        (Filter::Linear, MipFilter::None),
-        Filter::Linear,
-        Wrap::Repeat,
-    );
+    texture_2d(r, 2, &[(4, 4, c)], LINEAR, Filter::Linear, Wrap::Repeat);
 }
 
 /// Nine panels over two units: unit 0 MODULATE, unit 1 COMBINE with each
@@ -513,76 +485,20 @@ fn combine_functions(r: &mut Rec, s: Size) {
     use Operand::*;
     two_units(r);
     r.tex_env(TexEnvParam::Color([0.3, 0.7, 0.5, 0.6]));
+    #[rustfmt::skip]
     let stages = [
-        (
-            Replace,
-            Replace,
-            [Texture, Previous, Constant],
-            [OneMinusSrcColor, SrcColor, SrcColor],
-            1.0,
-        ),
-        (
-            Modulate,
-            Modulate,
-            [Previous, Texture, Constant],
-            [SrcColor, SrcColor, SrcColor],
-            2.0,
-        ),
-        (
-            Add,
-            Add,
-            [Previous, Texture, Constant],
-            [SrcColor, OneMinusSrcColor, SrcColor],
-            1.0,
-        ),
-        (
-            AddSigned,
-            AddSigned,
-            [Previous, Texture, Constant],
-            [SrcColor, SrcColor, SrcColor],
-            2.0,
-        ),
-        (
-            Interpolate,
-            Interpolate,
-            [Previous, Texture, Constant],
-            [SrcColor, SrcColor, SrcAlpha],
-            1.0,
-        ),
-        (
-            Subtract,
-            Subtract,
-            [Texture, Previous, Constant],
-            [SrcColor, SrcAlpha, SrcColor],
-            4.0,
-        ),
-        (
-            Dot3Rgb,
-            Modulate,
-            [Previous, Texture, Constant],
-            [SrcColor, SrcColor, SrcColor],
-            1.0,
-        ),
-        (
-            Dot3Rgba,
-            Add,
-            [Texture, PrimaryColor, Constant],
-            [SrcColor, OneMinusSrcColor, SrcColor],
-            1.0,
-        ),
+        (Replace, Replace, [Texture, Previous, Constant], [OneMinusSrcColor, SrcColor, SrcColor], 1.0),
+        (Modulate, Modulate, [Previous, Texture, Constant], [SrcColor, SrcColor, SrcColor], 2.0),
+        (Add, Add, [Previous, Texture, Constant], [SrcColor, OneMinusSrcColor, SrcColor], 1.0),
+        (AddSigned, AddSigned, [Previous, Texture, Constant], [SrcColor, SrcColor, SrcColor], 2.0),
+        (Interpolate, Interpolate, [Previous, Texture, Constant], [SrcColor, SrcColor, SrcAlpha], 1.0),
+        (Subtract, Subtract, [Texture, Previous, Constant], [SrcColor, SrcAlpha, SrcColor], 4.0),
+        (Dot3Rgb, Modulate, [Previous, Texture, Constant], [SrcColor, SrcColor, SrcColor], 1.0),
+        (Dot3Rgba, Add, [Texture, PrimaryColor, Constant], [SrcColor, OneMinusSrcColor, SrcColor], 1.0),
     ];
     let p = panels(9, s);
-    for (i, (rgb, alpha, src, op_rgb, scale)) in stages.into_iter().enumerate() {
-        combine(
-            r,
-            &Stage {
-                rgb,
-                alpha,
-                src,
-                op_rgb,
-                scale,
-            },
-        );
+    for (i, stage) in stages.into_iter().enumerate() {
+        combine(r, stage);
         r.call(Call::ActiveTexture(0));
         env_mode(r, EnvMode::Modulate);
         r.call(Call::ActiveTexture(1));
@@ -590,28 +506,15 @@ fn combine_functions(r: &mut Rec, s: Size) {
     }
     // The crossbar: unit 0 interpolates its texture with unit 1's, unit 1
     // subtracts unit 0's from the result.
-    r.call(Call::ActiveTexture(0));
-    combine(
-        r,
-        &Stage {
-            rgb: Interpolate,
-            alpha: Replace,
-            src: [Texture, TextureUnit(1), PrimaryColor],
-            op_rgb: [SrcColor, SrcColor, SrcColor],
-            scale: 1.0,
-        },
-    );
-    r.call(Call::ActiveTexture(1));
-    combine(
-        r,
-        &Stage {
-            rgb: Subtract,
-            alpha: Modulate,
-            src: [Previous, TextureUnit(0), Constant],
-            op_rgb: [SrcColor, OneMinusSrcColor, SrcColor],
-            scale: 2.0,
-        },
-    );
+    #[rustfmt::skip]
+    let crossbar: [Stage; 2] = [
+        (Interpolate, Replace, [Texture, TextureUnit(1), PrimaryColor], [SrcColor; 3], 1.0),
+        (Subtract, Modulate, [Previous, TextureUnit(0), Constant], [SrcColor, OneMinusSrcColor, SrcColor], 2.0),
+    ];
+    for (unit, stage) in crossbar.into_iter().enumerate() {
+        r.call(Call::ActiveTexture(unit as u32));
+        combine(r, stage);
+    }
     two_coord_rect(r, inset(p[8], 2.0));
 }
 
@@ -626,12 +529,17 @@ fn two_coord_rect(r: &mut Rec, [x0, y0, x1, y1]: [f32; 4]) {
         (x1, y1, [1.0, 1.0, 1.0, 0.2], [1.0, 1.0], [1.5, 2.2]),
     ];
     for (x, y, c, t0, t1) in corners {
-        r.color(c[0], c[1], c[2], c[3])
-            .call(Call::TexCoord(0, [t0[0], t0[1], 0.0, 1.0]))
-            .call(Call::TexCoord(1, [t1[0], t1[1], 0.0, 1.0]))
-            .vertex(x, y, 0.0);
+        two_coord_vertex(r, (x, y), c, t0, t1);
     }
     r.end();
+}
+
+/// A vertex at z = 0 with a colour and coordinates for units 0 and 1.
+fn two_coord_vertex(r: &mut Rec, (x, y): (f32, f32), c: [f32; 4], t0: [f32; 2], t1: [f32; 2]) {
+    r.color(c[0], c[1], c[2], c[3])
+        .call(Call::TexCoord(0, [t0[0], t0[1], 0.0, 1.0]))
+        .call(Call::TexCoord(1, [t1[0], t1[1], 0.0, 1.0]))
+        .vertex(x, y, 0.0);
 }
 
 /// DOT3 bump mapping: unit 0 takes the dot product of a normal map (a
@@ -652,49 +560,22 @@ fn dot3_bump(r: &mut Rec, s: Size) {
         }
     }
     r.call(Call::ActiveTexture(0));
-    texture_2d(
-        r,
-        1,
-        &[(n, n, normals)],
-        (Filter::Linear, MipFilter::None),
-        Filter::Linear,
-        Wrap::Repeat,
-    );
+    texture_2d(r, 1, &[(n, n, normals)], LINEAR, Filter::Linear, Wrap::Repeat);
     r.call(Call::ActiveTexture(1));
-    texture_2d(
-        r,
-        2,
-        &[(8, 8, pattern(8, 8))],
-        (Filter::Nearest, MipFilter::None),
-        Filter::Linear,
-        Wrap::Repeat,
-    );
+    texture_2d(r, 2, &[(8, 8, pattern(8, 8))], NEAREST, Filter::Linear, Wrap::Repeat);
     use CombineSrc::*;
     use Operand::SrcColor;
     let halves = [[0.0, 0.0, s.wf() / 2.0, s.hf()], [s.wf() / 2.0, 0.0, s.wf(), s.hf()]];
     for (half, dot) in halves.into_iter().zip([CombineFn::Dot3Rgb, CombineFn::Dot3Rgba]) {
-        r.call(Call::ActiveTexture(0));
-        combine(
-            r,
-            &Stage {
-                rgb: dot,
-                alpha: CombineFn::Replace,
-                src: [Texture, PrimaryColor, Constant],
-                op_rgb: [SrcColor; 3],
-                scale: 1.0,
-            },
-        );
-        r.call(Call::ActiveTexture(1));
-        combine(
-            r,
-            &Stage {
-                rgb: CombineFn::Modulate,
-                alpha: CombineFn::Modulate,
-                src: [Previous, Texture, Constant],
-                op_rgb: [SrcColor; 3],
-                scale: 1.0,
-            },
-        );
+        #[rustfmt::skip]
+        let stages: [Stage; 2] = [
+            (dot, CombineFn::Replace, [Texture, PrimaryColor, Constant], [SrcColor; 3], 1.0),
+            (CombineFn::Modulate, CombineFn::Modulate, [Previous, Texture, Constant], [SrcColor; 3], 1.0),
+        ];
+        for (unit, stage) in stages.into_iter().enumerate() {
+            r.call(Call::ActiveTexture(unit as u32));
+            combine(r, stage);
+        }
         // The light direction, encoded, changing across the quad.
         let [x0, y0, x1, y1] = inset(half, 2.0);
         r.begin(PrimitiveMode::TriangleStrip);
@@ -705,10 +586,7 @@ fn dot3_bump(r: &mut Rec, s: Size) {
             (x1, y1, [0.5, 0.1, 0.8]),
         ] {
             let (st, st1) = ([(x - x0) / 24.0, (y - y0) / 24.0], [(x - x0) / 40.0, (y - y0) / 40.0]);
-            r.color(l[0], l[1], l[2], 1.0)
-                .call(Call::TexCoord(0, [st[0], st[1], 0.0, 1.0]))
-                .call(Call::TexCoord(1, [st1[0], st1[1], 0.0, 1.0]))
-                .vertex(x, y, 0.0);
+            two_coord_vertex(r, (x, y), [l[0], l[1], l[2], 1.0], st, st1);
         }
         r.end();
     }
@@ -720,14 +598,7 @@ fn tex_1d(r: &mut Rec, _s: Size) {
     tex_reset(r);
     receding_view(r);
     let t1 = TextureTarget::D1;
-    params(
-        r,
-        t1,
-        1,
-        (Filter::Linear, MipFilter::Linear),
-        Filter::Nearest,
-        Wrap::MirroredRepeat,
-    );
+    params(r, t1, 1, TRILINEAR, Filter::Nearest, Wrap::MirroredRepeat);
     let mut n = 64usize;
     let mut l = 0;
     loop {
@@ -799,10 +670,10 @@ fn tex_3d(r: &mut Rec, s: Size) {
     }
     let p = panels(4, s);
     let setups = [
-        ((Filter::Nearest, MipFilter::None), Filter::Nearest, Wrap::Repeat),
-        ((Filter::Linear, MipFilter::None), Filter::Linear, Wrap::Repeat),
-        ((Filter::Linear, MipFilter::Linear), Filter::Linear, Wrap::Repeat),
-        ((Filter::Linear, MipFilter::None), Filter::Linear, Wrap::ClampToEdge),
+        (NEAREST, Filter::Nearest, Wrap::Repeat),
+        (LINEAR, Filter::Linear, Wrap::Repeat),
+        (TRILINEAR, Filter::Linear, Wrap::Repeat),
+        (LINEAR, Filter::Linear, Wrap::ClampToEdge),
     ];
     let coords: [[[f32; 4]; 4]; 4] = [
         [
@@ -859,14 +730,7 @@ fn cube_map(r: &mut Rec, _s: Size) {
     light(r, 0, [0.4, 0.6, 1.0, 0.0], [1.0, 1.0, 1.0, 1.0]);
     material(r, [0.9, 0.9, 0.9, 1.0], 16.0);
     let tc = TextureTarget::Cube;
-    params(
-        r,
-        tc,
-        1,
-        (Filter::Linear, MipFilter::None),
-        Filter::Linear,
-        Wrap::ClampToEdge,
-    );
+    params(r, tc, 1, LINEAR, Filter::Linear, Wrap::ClampToEdge);
     let faces = [
         ([230, 60, 60, 255], [90, 10, 10, 255]),
         ([60, 230, 230, 255], [10, 90, 90, 255]),
@@ -891,35 +755,13 @@ fn cube_map(r: &mut Rec, _s: Size) {
     r.enable(Capability::Texture(tc));
     env_mode(r, EnvMode::Modulate);
     // Left: (s, t, r) = the normal, set per vertex.
-    cube_sphere(r, [-2.2, 0.0, -9.0], 2.0);
+    sphere_with(r, [-2.2, 0.0, -9.0], 2.0, (24, 16), 1.0, SphereTex::Normal);
     // Right: generated from the eye-space normal.
     for c in [TexCoordName::S, TexCoordName::T, TexCoordName::R] {
         r.call(Call::TexGen(c, TexGenParam::Mode(TexGenMode::NormalMap)))
             .enable(Capability::TexGen(c));
     }
-    cube_sphere(r, [2.2, 0.0, -9.0], 2.0);
-}
-
-/// A sphere whose texture coordinate is its normal (for cube maps).
-fn cube_sphere(r: &mut Rec, c: [f32; 3], radius: f32) {
-    use std::f32::consts::PI;
-    let (slices, stacks) = (24u32, 16u32);
-    for j in 0..stacks {
-        r.begin(PrimitiveMode::QuadStrip);
-        for i in 0..=slices {
-            for jj in [j, j + 1] {
-                let (theta, phi) = (
-                    2.0 * PI * (i % slices) as f32 / slices as f32,
-                    PI * jj as f32 / stacks as f32,
-                );
-                let n = [-theta.sin() * phi.sin(), theta.cos() * phi.sin(), phi.cos()];
-                r.call(Call::TexCoord(0, [n[0], n[1], n[2], 1.0]))
-                    .normal(n[0], n[1], n[2])
-                    .vertex(c[0] + radius * n[0], c[1] + radius * n[1], c[2] + radius * n[2]);
-            }
-        }
-        r.end();
-    }
+    sphere_with(r, [2.2, 0.0, -9.0], 2.0, (24, 16), 1.0, SphereTex::Normal);
 }
 
 /// Two lit spheres with `GL_SPHERE_MAP` texgen on s and t, a 64x64
@@ -930,21 +772,14 @@ fn sphere_map(r: &mut Rec, _s: Size) {
     light(r, 0, [0.4, 0.6, 1.0, 0.0], [1.0, 1.0, 1.0, 1.0]);
     material(r, [0.9, 0.85, 0.8, 1.0], 32.0);
     let levels = tinted_pyramid(64, 8);
-    texture_2d(
-        r,
-        1,
-        &levels,
-        (Filter::Linear, MipFilter::Linear),
-        Filter::Linear,
-        Wrap::Repeat,
-    );
+    texture_2d(r, 1, &levels, TRILINEAR, Filter::Linear, Wrap::Repeat);
     env_mode(r, EnvMode::Modulate);
     for c in [TexCoordName::S, TexCoordName::T] {
         r.call(Call::TexGen(c, TexGenParam::Mode(TexGenMode::SphereMap)))
             .enable(Capability::TexGen(c));
     }
-    sphere_with(r, [-2.2, 0.0, -9.0], 2.0, (24, 16), 1.0, false);
-    sphere_with(r, [2.2, 0.0, -7.0], 1.5, (9, 6), 1.0, false);
+    sphere_with(r, [-2.2, 0.0, -9.0], 2.0, (24, 16), 1.0, SphereTex::None);
+    sphere_with(r, [2.2, 0.0, -7.0], 1.5, (9, 6), 1.0, SphereTex::None);
 }
 
 /// A 64x64 depth texture (a disc of depth 0.3, a ramp 0.2..0.9 across the
@@ -1034,14 +869,7 @@ fn npot_mipmaps(r: &mut Rec, _s: Size) {
     }
     receding_view(r);
     let levels = glu::build_2d_mipmaps(4, w, h, &img);
-    texture_2d(
-        r,
-        1,
-        &levels,
-        (Filter::Linear, MipFilter::Linear),
-        Filter::Linear,
-        Wrap::Repeat,
-    );
+    texture_2d(r, 1, &levels, TRILINEAR, Filter::Linear, Wrap::Repeat);
     env_mode(r, EnvMode::Replace);
     receding_plane(r, [1.0; 4]);
 }
@@ -1067,7 +895,7 @@ fn one_by_one(r: &mut Rec, s: Size) {
             r,
             i as u32 + 1,
             &[(1, 1, vec![200, 120, 40, 220])],
-            (Filter::Linear, MipFilter::Linear),
+            TRILINEAR,
             Filter::Linear,
             wrap,
         );
@@ -1096,14 +924,7 @@ fn wide(r: &mut Rec, _s: Size) {
         .collect();
     let levels = glu::build_2d_mipmaps(4, n, 1, &base);
     receding_view(r);
-    texture_2d(
-        r,
-        1,
-        &levels,
-        (Filter::Linear, MipFilter::Linear),
-        Filter::Linear,
-        Wrap::Repeat,
-    );
+    texture_2d(r, 1, &levels, TRILINEAR, Filter::Linear, Wrap::Repeat);
     env_mode(r, EnvMode::Replace);
     receding_plane(r, [1.0; 4]);
     r.tex_parameter(T2, TexParam::MinFilter(Filter::Nearest, MipFilter::None));
@@ -1144,14 +965,7 @@ fn lod_bias(r: &mut Rec, s: Size) {
     tex_reset(r);
     receding_view(r);
     let levels = tinted_pyramid(64, 8);
-    texture_2d(
-        r,
-        1,
-        &levels,
-        (Filter::Linear, MipFilter::Linear),
-        Filter::Nearest,
-        Wrap::Repeat,
-    );
+    texture_2d(r, 1, &levels, TRILINEAR, Filter::Nearest, Wrap::Repeat);
     env_mode(r, EnvMode::Replace);
     r.enable(Capability::ScissorTest);
     let band = s.wf() / 4.0;
