@@ -3,11 +3,9 @@
 
 use softgl::{
     BlendEquation, BlendFactor, Capability, ClearMask, ColorMaterialMode, CompareFunc, Face, FogParam, FrontFace,
-    LightModelParam, LightParam, LogicOp, MaterialParam, MatrixMode, PolygonMode, PrimitiveMode, ShadeModel, StencilOp,
-};
-use softgl::{
-    InternalFormat, PixelFormat, PixelType, TexCoordName, TexEnvParam, TexGenParam, TexImageTarget, TexParam,
-    TextureTarget,
+    InternalFormat, LightModelParam, LightParam, LogicOp, MaterialParam, MatrixMode, PixelFormat, PixelType,
+    PolygonMode, PrimitiveMode, ShadeModel, StencilOp, TexCoordName, TexEnvParam, TexGenParam, TexImageTarget,
+    TexParam, TextureTarget,
 };
 
 /// One GL 1.x call, with GL's arguments.
