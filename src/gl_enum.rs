@@ -447,6 +447,7 @@ gl_enums! {
         Depth = GL_TEXTURE_DEPTH 0x8071,
         Compressed = GL_TEXTURE_COMPRESSED 0x86A1,
         DepthSize = GL_TEXTURE_DEPTH_SIZE 0x884A,
+        StencilSize = GL_TEXTURE_STENCIL_SIZE 0x88F1,
     }
 }
 
@@ -533,6 +534,6 @@ mod tests {
             round_trip::<TexParamName>(),
             round_trip::<TexLevelParamName>(),
         ];
-        assert_eq!(counts, [4, 2, 5, 3, 11, 19, 60, 17, 13]);
+        assert_eq!(counts, [4, 2, 5, 3, 11, 19, 60, 17, 14]);
     }
 }

@@ -7,7 +7,7 @@
 #[path = "../jit/tests/llvmpipe/cases.rs"]
 mod cases;
 
-use cases::{cases, combine_fn, compare, difference, filter, operand, raw_texels, recorded, source, wrap, Case};
+use cases::{cases, compare, difference, filter, raw_texels, recorded, wrap, Case};
 use softgl::{
     Backend, Capability, ClearMask, Context, EnvMode, FramebufferDesc, InternalFormat, MatrixMode, PixelData,
     PixelFormat, PixelStore, PixelType, PrimitiveMode, ReadFormat, TexEnvParam, TexImageTarget, TexParam,
@@ -105,35 +105,34 @@ fn draw(gl: &mut Context, c: &Case, seed: u32, n: i32) {
         gl.tex_parameter(target, TexParam::CompareMode(true)).unwrap();
         gl.tex_parameter(target, TexParam::CompareFunc(compare(f))).unwrap();
     }
-    gl.enable(Capability::Texture(target)).unwrap();
-    let mode = cases::env_mode(c);
-    gl.tex_env(TexEnvParam::Mode(mode)).unwrap();
-    let ec = [c.f("er", 0.0), c.f("eg", 0.0), c.f("eb", 0.0), c.f("ea", 0.0)];
-    gl.tex_env(TexEnvParam::Color(ec)).unwrap();
-    if mode == EnvMode::Combine {
-        gl.tex_env(TexEnvParam::CombineRgb(combine_fn(&c.s("crgb", "modulate"))))
-            .unwrap();
-        gl.tex_env(TexEnvParam::CombineAlpha(combine_fn(&c.s("calpha", "modulate"))))
-            .unwrap();
-        let dsrc = ["texture", "previous", "constant"];
-        let dop = ["src_color", "src_color", "src_alpha"];
-        for i in 0..3u8 {
-            let k = usize::from(i);
-            gl.tex_env(TexEnvParam::SrcRgb(i, source(&c.s(&format!("srgb{i}"), dsrc[k]))))
-                .unwrap();
-            gl.tex_env(TexEnvParam::OperandRgb(i, operand(&c.s(&format!("orgb{i}"), dop[k]))))
-                .unwrap();
-            gl.tex_env(TexEnvParam::SrcAlpha(i, source(&c.s(&format!("sa{i}"), dsrc[k]))))
-                .unwrap();
-            gl.tex_env(TexEnvParam::OperandAlpha(
-                i,
-                operand(&c.s(&format!("oa{i}"), "src_alpha")),
-            ))
-            .unwrap();
+    // The same texture on every unit of the case, each with its environment
+    // (combine state from cases::combine: GL's defaults where the case names none).
+    let n_units = c.i("units", 1) as u32;
+    for u in 0..n_units as usize {
+        gl.active_texture(u as u32).unwrap();
+        gl.bind_texture(target, name).unwrap();
+        if cases::units(c).any(|e| e == u) {
+            gl.enable(Capability::Texture(target)).unwrap();
         }
-        gl.tex_env(TexEnvParam::RgbScale(c.f("scrgb", 1.0))).unwrap();
-        gl.tex_env(TexEnvParam::AlphaScale(c.f("sca", 1.0))).unwrap();
+        let mode = cases::env_mode(c, u);
+        gl.tex_env(TexEnvParam::Mode(mode)).unwrap();
+        gl.tex_env(TexEnvParam::Color(cases::env_color(c, u))).unwrap();
+        if mode == EnvMode::Combine {
+            let k = cases::combine(c, u);
+            gl.tex_env(TexEnvParam::CombineRgb(k.rgb)).unwrap();
+            gl.tex_env(TexEnvParam::CombineAlpha(k.alpha)).unwrap();
+            for i in 0..3u8 {
+                let j = usize::from(i);
+                gl.tex_env(TexEnvParam::SrcRgb(i, k.src_rgb[j])).unwrap();
+                gl.tex_env(TexEnvParam::OperandRgb(i, k.op_rgb[j])).unwrap();
+                gl.tex_env(TexEnvParam::SrcAlpha(i, k.src_alpha[j])).unwrap();
+                gl.tex_env(TexEnvParam::OperandAlpha(i, k.op_alpha[j])).unwrap();
+            }
+            gl.tex_env(TexEnvParam::RgbScale(f32::from(k.scale_rgb))).unwrap();
+            gl.tex_env(TexEnvParam::AlphaScale(f32::from(k.scale_alpha))).unwrap();
+        }
     }
+    gl.active_texture(0).unwrap();
     gl.clear_color(0.0, 0.0, 0.0, 0.0).unwrap();
     gl.clear(ClearMask::COLOR).unwrap();
     for m in [MatrixMode::Projection, MatrixMode::Modelview] {
@@ -172,7 +171,9 @@ fn draw(gl: &mut Context, c: &Case, seed: u32, n: i32) {
         for [x, y] in corner {
             let tc = comps
                 .map(|(a, dx, dy)| c.f(a, if a == "q0" { 1.0 } else { 0.0 }) + x * c.f(dx, 0.0) + y * c.f(dy, 0.0));
-            gl.tex_coord4(tc[0], tc[1], tc[2], tc[3]);
+            for u in 0..n_units {
+                gl.multi_tex_coord(u, tc).unwrap();
+            }
             gl.vertex2(x * 2.0 / n as f32 - 1.0, y * 2.0 / n as f32 - 1.0);
         }
     }

@@ -11,9 +11,7 @@
 #[path = "llvmpipe/cases.rs"]
 mod cases;
 
-use cases::{
-    cases, combine_fn, compare, difference, filter, operand, probe_line, recorded, source, texels, wrap, Case,
-};
+use cases::{cases, compare, difference, filter, probe_line, recorded, texels, wrap, Case};
 use softgl_jit::shade::unorm8;
 use softgl_jit::texture::{
     effective_combine, environment, sample_quad, BaseFormat, CombineFn, CombineKey, CombineSrc, DepthMode, EnvMode,
@@ -25,7 +23,8 @@ const N: usize = 16;
 
 /// Everything softgl needs to compute a case: key, images, levels.
 struct Scene {
-    unit: TexUnitKey,
+    /// The enabled units: the same texture and coordinates, each its environment.
+    units: [Option<TexUnitKey>; MAX_UNITS],
     images: Vec<(Vec<u8>, [u32; 3])>,
     base: u32,
     max_level: u32,
@@ -85,43 +84,19 @@ fn scene(c: &Case, seed: u32) -> Scene {
         compare: c.kv.get("compare").map(|f| compare(f)),
         depth_mode,
     };
-    let mode = cases::env_mode(c);
-    let d = CombineKey::DEFAULT;
-    let names = ["0", "1", "2"];
-    let combine = CombineKey {
-        rgb: combine_fn(&c.s("crgb", "modulate")),
-        alpha: combine_fn(&c.s("calpha", "modulate")),
-        src_rgb: std::array::from_fn(|i| {
-            c.kv.get(&format!("srgb{}", names[i]))
-                .map_or(d.src_rgb[i], |s| source(s))
-        }),
-        op_rgb: std::array::from_fn(|i| {
-            c.kv.get(&format!("orgb{}", names[i]))
-                .map_or(d.op_rgb[i], |s| operand(s))
-        }),
-        src_alpha: std::array::from_fn(|i| {
-            c.kv.get(&format!("sa{}", names[i]))
-                .map_or(d.src_alpha[i], |s| source(s))
-        }),
-        op_alpha: std::array::from_fn(|i| {
-            c.kv.get(&format!("oa{}", names[i]))
-                .map_or(d.op_alpha[i], |s| operand(s))
-        }),
-        scale_rgb: c.f("scrgb", 1.0) as u8,
-        scale_alpha: c.f("sca", 1.0) as u8,
-    };
     let env_base = if base == BaseFormat::Depth {
         depth_mode.base()
     } else {
         base
     };
+    let mut units = [None; MAX_UNITS];
+    for u in cases::units(c) {
+        let env = effective_combine(cases::env_mode(c, u), env_base, cases::combine(c, u));
+        units[u] = Some(TexUnitKey { sampler, base, env });
+    }
     let last = levels.saturating_sub(1);
     Scene {
-        unit: TexUnitKey {
-            sampler,
-            base,
-            env: effective_combine(mode, env_base, combine),
-        },
+        units,
         images,
         base: c.i("base", 0) as u32,
         max_level: (c.i("max_level", 1000) as u32).min(last),
@@ -167,9 +142,7 @@ fn render(c: &Case, seed: u32) -> Vec<u8> {
         border: [c.f("br", 0.0), c.f("bg", 0.0), c.f("bb", 0.0), c.f("ba", 0.0)],
     };
     let primary = [c.f("cr", 1.0), c.f("cg", 1.0), c.f("cb", 1.0), c.f("ca", 1.0)];
-    let env_color = [[c.f("er", 0.0), c.f("eg", 0.0), c.f("eb", 0.0), c.f("ea", 0.0)]; MAX_UNITS];
-    let mut units = [None; MAX_UNITS];
-    units[0] = Some(sc.unit);
+    let env_color: [[f32; 4]; MAX_UNITS] = std::array::from_fn(|u| cases::env_color(c, u));
     let mut out = vec![0u8; N * N * 4];
     for y in 0..N {
         // llvmpipe's quads pair rows of the top-down frame: row = N−1−y.
@@ -181,8 +154,12 @@ fn render(c: &Case, seed: u32) -> Vec<u8> {
             let quad = [at(qx, qrow), at(qx + 1, qrow), at(qx, qrow + 1), at(qx + 1, qrow + 1)];
             let lane = (x - qx) + 2 * (row - qrow);
             let mut samples = [[0.0; 4]; MAX_UNITS];
-            samples[0] = sample_quad(&sc.unit, &tex, &quad, lane);
-            let colour = environment(&units, &samples, primary, &env_color);
+            for (u, unit) in sc.units.iter().enumerate() {
+                if let Some(unit) = unit {
+                    samples[u] = sample_quad(unit, &tex, &quad, lane);
+                }
+            }
+            let colour = environment(&sc.units, &samples, primary, &env_color);
             out[(y * N + x) * 4..][..4].copy_from_slice(&colour.map(unorm8));
         }
     }
@@ -663,4 +640,50 @@ fn units_chain_through_previous_and_the_crossbar_reads_zero_for_a_disabled_unit(
     assert_eq!(environment(&units, &samples, [0.25; 4], &env), [0.25; 4]);
     units[2] = Some(unit(crossbar(0)));
     assert_eq!(environment(&units, &samples, [0.25; 4], &env), [0.75; 4]);
+}
+
+#[test]
+fn sample_with_three_quad_pixels_equals_sample_quad_off_cube_maps() {
+    use softgl_jit::texture::sample;
+    // A minified 2D mipmapped texture: λ from the quad, so the quad matters.
+    let c = Case::parse("q w=64 h=64 levels=7 min=linear_mipmap_linear");
+    let sc = scene(&c, 3);
+    let images: Vec<Image<'_>> = sc
+        .images
+        .iter()
+        .map(|(t, [w, h, d])| Image {
+            texels: t,
+            width: *w,
+            height: *h,
+            depth: *d,
+        })
+        .collect();
+    let tex = TextureRef {
+        images: &images,
+        base_level: 0,
+        max_level: sc.max_level,
+        min_lod: -1000.0,
+        max_lod: 1000.0,
+        lod_bias: 0.0,
+        border: [0.0; 4],
+    };
+    let unit = sc.units[0].expect("unit 0 is on");
+    let quad = [
+        [0.1, 0.2, 0.0, 1.0],
+        [0.17, 0.21, 0.0, 1.0],
+        [0.12, 0.29, 0.0, 1.0],
+        [0.19, 0.3, 0.0, 1.0],
+    ];
+    for lane in 0..4 {
+        let three = sample(&unit, &tex, quad[lane], [quad[0], quad[1], quad[2]]);
+        assert_eq!(three, sample_quad(&unit, &tex, &quad, lane), "lane {lane}");
+    }
+    // λ ≈ log2(0.09·64) ≈ 2.5: between levels 2 and 3, so a different quad changes the result.
+    let other = [
+        [0.1, 0.2, 0.0, 1.0],
+        [0.4, 0.2, 0.0, 1.0],
+        [0.1, 0.5, 0.0, 1.0],
+        [0.4, 0.5, 0.0, 1.0],
+    ];
+    assert_ne!(sample_quad(&unit, &tex, &quad, 0), sample_quad(&unit, &tex, &other, 0));
 }

@@ -206,70 +206,55 @@ impl Context {
         border: i32,
         pixels: Option<PixelData<'_>>,
     ) -> GlResult {
-        self.tex_call(|gl| gl.tex_image_checked(target, level, internal, size, border, pixels))
-    }
-
-    fn tex_image_checked(
-        &mut self,
-        target: TexImageTarget,
-        level: i32,
-        internal: InternalFormat,
-        size: [i32; 3],
-        border: i32,
-        pixels: Option<PixelData<'_>>,
-    ) -> GlResult {
-        let tt = target.texture_target();
-        let level = level_index(tt, level)?;
-        check(matches!(border, 0 | 1), GlError::InvalidValue)?;
-        check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
-        if let Some(p) = &pixels {
-            check_format_type(internal, p.format, p.ty)?;
-        }
-        check(
-            !(internal.base() == BaseFormat::Depth && tt == TexTarget::D3),
-            GlError::InvalidOperation,
-        )?;
-        let legal = legal_size(tt, level, size, border);
-        if let TexImageTarget::Proxy(t) = target {
-            // Proxies: a size the texture cannot have clears the image instead of an error.
-            let img = legal.then(|| {
-                let s = if border == 1 {
-                    strip_border(target.dims(), size, &PixelStore::DEFAULT).0
-                } else {
-                    size
-                };
-                TexImage {
-                    width: s[0] as u32,
-                    height: s[1] as u32,
-                    depth: s[2] as u32,
+        self.tex_call(|gl| {
+            let tt = target.texture_target();
+            let level = level_index(tt, level)?;
+            check(matches!(border, 0 | 1), GlError::InvalidValue)?;
+            check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
+            if let Some(p) = &pixels {
+                check_format_type(internal, p.format, p.ty)?;
+            }
+            check(
+                !(internal.base() == BaseFormat::Depth && tt == TexTarget::D3),
+                GlError::InvalidOperation,
+            )?;
+            let legal = legal_size(tt, level, size, border);
+            if let TexImageTarget::Proxy(t) = target {
+                // Proxies: a size the texture cannot have clears the image instead
+                // of an error; sizes are kept with their border.
+                let img = legal.then(|| TexImage {
+                    width: size[0] as u32,
+                    height: size[1] as u32,
+                    depth: size[2] as u32,
+                    border: border as u32,
                     internal,
                     texels: Vec::new(),
+                });
+                if let Some(slot) = gl.textures.proxy_mut(t).image_mut(level, 0) {
+                    *slot = img;
                 }
-            });
-            if let Some(slot) = self.textures.proxy_mut(t).image_mut(level, 0) {
-                *slot = img;
+                return Ok(());
             }
-            return Ok(());
-        }
-        check(legal, GlError::InvalidValue)?;
-        let dims = target.dims();
-        let store = pixels.as_ref().map_or(PixelStore::DEFAULT, |p| p.store);
-        let (size, store) = if border == 1 {
-            strip_border(dims, size, &store)
-        } else {
-            (size, store)
-        };
-        let usize3 = size.map(|s| s as usize);
-        let mut img = TexImage::new(internal, size.map(|s| s as u32));
-        if let Some(p) = pixels.filter(|_| !usize3.contains(&0)) {
-            let layout = client_layout(&p, &store, dims, usize3)?;
-            unpack::upload(&mut img, [0; 3], usize3, &PixelData { store, ..p }, &layout);
-        }
-        let obj = self.textures.current_mut(tt);
-        if let Some(slot) = obj.image_mut(level, target.face()) {
-            *slot = Some(img);
-        }
-        self.check_gen_mipmap(target, level)
+            check(legal, GlError::InvalidValue)?;
+            let dims = target.dims();
+            let store = pixels.as_ref().map_or(PixelStore::DEFAULT, |p| p.store);
+            let (size, store) = if border == 1 {
+                strip_border(dims, size, &store)
+            } else {
+                (size, store)
+            };
+            let usize3 = size.map(|s| s as usize);
+            let mut img = TexImage::new(internal, size.map(|s| s as u32));
+            if let Some(p) = pixels.filter(|_| !usize3.contains(&0)) {
+                let layout = client_layout(&p, &store, dims, usize3)?;
+                unpack::upload(&mut img, [0; 3], usize3, &PixelData { store, ..p }, &layout);
+            }
+            let obj = gl.textures.current_mut(tt);
+            if let Some(slot) = obj.image_mut(level, target.face()) {
+                *slot = Some(img);
+            }
+            gl.check_gen_mipmap(target, level)
+        })
     }
 
     /// Mesa's `check_gen_mipmap`: after the base level of a face changes,
@@ -494,7 +479,7 @@ impl Context {
                 TexParam::WrapS(w) => params.wrap[0] = w,
                 TexParam::WrapT(w) => params.wrap[1] = w,
                 TexParam::WrapR(w) => params.wrap[2] = w,
-                TexParam::BorderColor(c) => params.border = c,
+                TexParam::BorderColor(c) => params.border = c.map(|v| v.clamp(0.0, 1.0)),
                 TexParam::MinLod(v) => params.min_lod = v,
                 TexParam::MaxLod(v) => params.max_lod = v,
                 TexParam::BaseLevel(v) => {
@@ -571,7 +556,7 @@ impl Context {
                 TexLevelParamName::Width => img.width as i32,
                 TexLevelParamName::Height => img.height as i32,
                 TexLevelParamName::Depth => img.depth as i32,
-                TexLevelParamName::Border => 0,
+                TexLevelParamName::Border => img.border as i32,
                 TexLevelParamName::InternalFormat => img.internal.reported().to_gl() as i32,
                 TexLevelParamName::RedSize => color(0, &[B::Rgb, B::Rgba]),
                 TexLevelParamName::GreenSize => color(1, &[B::Rgb, B::Rgba]),
@@ -580,7 +565,7 @@ impl Context {
                 TexLevelParamName::LuminanceSize => color(0, &[B::Luminance, B::LuminanceAlpha]),
                 TexLevelParamName::IntensitySize => color(0, &[B::Intensity]),
                 TexLevelParamName::DepthSize => color(0, &[B::Depth]),
-                TexLevelParamName::Compressed => 0,
+                TexLevelParamName::StencilSize | TexLevelParamName::Compressed => 0,
             })
         })
     }

@@ -13,6 +13,7 @@ use super::format::{float_to_unorm, unorm_to_float, unorm_to_unorm, Storage};
 use super::jit::TexelFormat;
 use super::object::{next_size, TexImage, TextureObject};
 use super::unpack::put_texel;
+use softgl_jit::texture::arith::{lerp, lerp8, srgb8_to_linear, unorm16_to_float, unorm8_to_float};
 
 /// Rebuilds, for each face in `faces`, the levels below the base level down
 /// to the last level the chain reaches (Mesa's `_mesa_compute_num_levels`),
@@ -38,7 +39,7 @@ pub fn generate(obj: &mut TextureObject, faces: std::ops::Range<usize>) {
 /// The AoS path's neighbours and 8-bit weight for destination texel `i` of
 /// `dst` from a source of `src` texels: `iround(s · src · 256) − 128`, its
 /// integer part (clamped to the edge) and low 8 bits.
-fn aos_coord(i: usize, dst: u32, src: u32) -> (usize, usize, u32) {
+fn aos_coord(i: usize, dst: u32, src: u32) -> (usize, usize, u8) {
     let s = (i as f32 + 0.5) / dst as f32;
     let fixed = (s * (src * 256) as f32).round_ties_even() as i32 - 128;
     let last = src as i32 - 1;
@@ -46,7 +47,7 @@ fn aos_coord(i: usize, dst: u32, src: u32) -> (usize, usize, u32) {
     (
         i0.clamp(0, last) as usize,
         (i0 + 1).clamp(0, last) as usize,
-        (fixed & 255) as u32,
+        (fixed & 255) as u8,
     )
 }
 
@@ -58,32 +59,6 @@ fn float_coord(i: usize, dst: u32, src: u32) -> (usize, usize, f32) {
     let last = src as i32 - 1;
     let i0i = i0 as i32;
     (i0i.clamp(0, last) as usize, (i0i + 1).clamp(0, last) as usize, u - i0)
-}
-
-/// llvmpipe's 8-bit lerp: `a + round_half_up(w · (b − a) / 256)` (`pmulhrsw` on `delta << 7`).
-fn lerp8(w: u32, a: u32, b: u32) -> u32 {
-    let d = b as i32 - a as i32;
-    (a as i32 + ((w as i32 * d + 128) >> 8)) as u32
-}
-
-fn lerpf(w: f32, a: f32, b: f32) -> f32 {
-    a + w * (b - a)
-}
-
-/// llvmpipe's sRGB decode (`gallivm/lp_bld_format_srgb.c` `lp_build_srgb_to_linear`):
-/// `v / (12.6 · 255)` up to 15, else a cubic in `v`.
-pub fn srgb_to_linear(v: u8) -> f32 {
-    let s = f32::from(v);
-    if s <= 15.0 {
-        return s * (1.0 / (12.6 * 255.0)) as f32;
-    }
-    let c = [
-        0.0023f32,
-        (0.0030f64 / 255.0) as f32,
-        (0.6935f64 / (255.0 * 255.0)) as f32,
-        (0.3012f64 / (255.0 * 255.0 * 255.0)) as f32,
-    ];
-    c[0] + s * (c[1] + s * (c[2] + s * c[3]))
 }
 
 /// Linear to an sRGB byte with the exact curve (llvmpipe approximates it
@@ -98,10 +73,11 @@ pub fn linear_to_srgb(l: f32) -> u32 {
     (s * 255.0).round_ties_even() as u32
 }
 
-/// What a level's texel holds, per storage channel, on the path llvmpipe samples it.
+/// What a level's texel holds, per storage channel, on the path llvmpipe
+/// samples it (the reference sampler's arithmetic, `softgl_jit::texture::arith`).
 enum Texels {
     /// Bytes as stored (unorm8 formats of at most 8 bits: AoS).
-    Bytes(Vec<[u32; 4]>),
+    Bytes(Vec<[u8; 4]>),
     Floats(Vec<[f32; 4]>),
 }
 
@@ -109,16 +85,16 @@ fn read(src: &TexImage, storage: &Storage) -> Texels {
     let t = &src.texels;
     let n = t.len() / storage.texel_format().bytes_per_texel();
     match storage.texel_format() {
-        TexelFormat::Rgba8 => Texels::Bytes((0..n).map(|i| [0, 1, 2, 3].map(|c| u32::from(t[4 * i + c]))).collect()),
+        TexelFormat::Rgba8 => Texels::Bytes((0..n).map(|i| [0, 1, 2, 3].map(|c| t[4 * i + c])).collect()),
         TexelFormat::Srgba8 => Texels::Floats(
             (0..n)
                 .map(|i| {
                     [0, 1, 2, 3].map(|c| {
                         let v = t[4 * i + c];
                         if c == 3 {
-                            f32::from(v) * (1.0 / 255.0)
+                            unorm8_to_float(v)
                         } else {
-                            srgb_to_linear(v)
+                            srgb8_to_linear(v)
                         }
                     })
                 })
@@ -130,7 +106,7 @@ fn read(src: &TexImage, storage: &Storage) -> Texels {
                     [0, 1, 2, 3].map(|c| {
                         let v = u32::from(u16::from_ne_bytes([t[8 * i + 2 * c], t[8 * i + 2 * c + 1]]));
                         match storage.bits[c] {
-                            0 | 16 => v as f32 * (1.0 / 65535.0),
+                            0 | 16 => unorm16_to_float(v as u16),
                             b => unorm_to_float(unorm_to_unorm(v, 16, b), b),
                         }
                     })
@@ -156,56 +132,68 @@ fn requantize(v: u32, bits: u32) -> u32 {
     }
 }
 
+/// Neighbours and weight along one axis.
+type Axis<W> = (usize, usize, W);
+
+/// Channel `c` of the trilinear sample at `a` (x, then y, then z, as
+/// llvmpipe's `lp_build_lerp_3d`) with `lerp`.
+fn trilinear<T: Copy, W: Copy>(
+    v: &[[T; 4]],
+    sw: usize,
+    sh: usize,
+    c: usize,
+    a: [Axis<W>; 3],
+    lerp: fn(W, T, T) -> T,
+) -> T {
+    let [(x0, x1, fx), (y0, y1, fy), (z0, z1, fz)] = a;
+    let p = |x: usize, y: usize, z: usize| v[(z * sh + y) * sw + x][c];
+    let plane = |z| {
+        lerp(
+            fy,
+            lerp(fx, p(x0, y0, z), p(x1, y0, z)),
+            lerp(fx, p(x0, y1, z), p(x1, y1, z)),
+        )
+    };
+    lerp(fz, plane(z0), plane(z1))
+}
+
 /// `src` blitted down to `size`.
 fn downsample(src: &TexImage, size: [u32; 3]) -> TexImage {
     let mut dst = TexImage::new(src.internal, size);
     let storage = src.internal.storage();
     let texels = read(src, &storage);
     let [sw, sh, sd] = src.size();
-    let idx = |x: usize, y: usize, z: usize| (z * sh as usize + y) * sw as usize + x;
     for z in 0..size[2] as usize {
         for y in 0..size[1] as usize {
             for x in 0..size[0] as usize {
-                let mut n = [0u32; 4];
-                match &texels {
+                let n: [u32; 4] = match &texels {
                     Texels::Bytes(v) => {
-                        let (x0, x1, fx) = aos_coord(x, size[0], sw);
-                        let (y0, y1, fy) = aos_coord(y, size[1], sh);
-                        let (z0, z1, fz) = aos_coord(z, size[2], sd);
-                        for c in 0..4 {
-                            let p = |x, y, z| v[idx(x, y, z)][c];
-                            let plane = |z| {
-                                lerp8(
-                                    fy,
-                                    lerp8(fx, p(x0, y0, z), p(x1, y0, z)),
-                                    lerp8(fx, p(x0, y1, z), p(x1, y1, z)),
-                                )
-                            };
-                            n[c] = requantize(lerp8(fz, plane(z0), plane(z1)), storage.bits[c]);
-                        }
+                        let a = [
+                            aos_coord(x, size[0], sw),
+                            aos_coord(y, size[1], sh),
+                            aos_coord(z, size[2], sd),
+                        ];
+                        std::array::from_fn(|c| {
+                            let t = trilinear(v, sw as usize, sh as usize, c, a, lerp8);
+                            requantize(u32::from(t), storage.bits[c])
+                        })
                     }
                     Texels::Floats(v) => {
-                        let (x0, x1, fx) = float_coord(x, size[0], sw);
-                        let (y0, y1, fy) = float_coord(y, size[1], sh);
-                        let (z0, z1, fz) = float_coord(z, size[2], sd);
-                        for c in 0..4 {
-                            let p = |x, y, z| v[idx(x, y, z)][c];
-                            let plane = |z| {
-                                lerpf(
-                                    fy,
-                                    lerpf(fx, p(x0, y0, z), p(x1, y0, z)),
-                                    lerpf(fx, p(x0, y1, z), p(x1, y1, z)),
-                                )
-                            };
-                            let f = lerpf(fz, plane(z0), plane(z1));
-                            n[c] = match (storage.texel_format(), storage.bits[c]) {
+                        let a = [
+                            float_coord(x, size[0], sw),
+                            float_coord(y, size[1], sh),
+                            float_coord(z, size[2], sd),
+                        ];
+                        std::array::from_fn(|c| {
+                            let f = trilinear(v, sw as usize, sh as usize, c, a, lerp);
+                            match (storage.texel_format(), storage.bits[c]) {
                                 (_, 0) => 0,
                                 (TexelFormat::Srgba8, _) if c < 3 => linear_to_srgb(f),
                                 (_, b) => float_to_unorm(f, b),
-                            };
-                        }
+                            }
+                        })
                     }
-                }
+                };
                 let at = dst.offset(x, y, z);
                 put_texel(&mut dst.texels[at..], &storage, n);
             }
@@ -230,20 +218,7 @@ mod tests {
     }
 
     #[test]
-    fn the_eight_bit_lerp_rounds_half_up() {
-        assert_eq!(lerp8(128, 0, 1), 1);
-        assert_eq!(lerp8(128, 1, 0), 1);
-        assert_eq!(lerp8(128, 10, 20), 15);
-        assert_eq!(lerp8(0, 7, 200), 7);
-        assert_eq!(lerp8(255, 0, 255), 254);
-    }
-
-    #[test]
-    fn srgb_decode_follows_llvmpipes_polynomial() {
-        assert_eq!(srgb_to_linear(0), 0.0);
-        assert_eq!(srgb_to_linear(15), 15.0 * (1.0 / (12.6 * 255.0)) as f32);
-        // 255: 0.0023 + 0.0030 + 0.6935 + 0.3012 = 1.0 (to f32 rounding).
-        assert!((srgb_to_linear(255) - 1.0).abs() < 1e-6);
+    fn srgb_encode_ends_at_0_and_255() {
         assert_eq!(linear_to_srgb(1.0), 255);
         assert_eq!(linear_to_srgb(0.0), 0);
     }

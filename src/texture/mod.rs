@@ -28,7 +28,7 @@ pub use jit::{
     TexelFormat, Wrap,
 };
 pub use object::{SamplerState, TexImage, TextureObject};
-pub use store::{quantize_lod_bias, Sampling, TextureStore};
+pub use store::{Sampling, TextureStore};
 
 use softgl_jit::CompareFunc;
 
@@ -235,6 +235,9 @@ pub enum TexLevelParamName {
     LuminanceSize,
     IntensitySize,
     DepthSize,
+    /// `GL_TEXTURE_STENCIL_SIZE` (GL 3.0; Mesa answers it in any context, piglit's
+    /// `sized-texture-format-channels` asks): 0, no texture has stencil.
+    StencilSize,
     Compressed,
 }
 

@@ -14,6 +14,9 @@ pub struct TexImage {
     pub width: u32,
     pub height: u32,
     pub depth: u32,
+    /// 0, except for proxy images (Mesa strips borders of real images at
+    /// upload, llvmpipe keeps none, but records a proxy's as asked).
+    pub border: u32,
     pub internal: InternalFormat,
     pub texels: Vec<u8>,
 }
@@ -26,6 +29,7 @@ impl TexImage {
             width: size[0],
             height: size[1],
             depth: size[2],
+            border: 0,
             internal,
             texels: vec![0; n * internal.storage().texel_format().bytes_per_texel()],
         }
@@ -53,7 +57,7 @@ pub struct SamplerState {
     pub mag: Filter,
     /// s, t, r.
     pub wrap: [Wrap; 3],
-    /// As set (Mesa keeps it unclamped: ARB_texture_float is supported).
+    /// Clamped to [0, 1] when set (Mesa's compatibility context lacks ARB_texture_float).
     pub border: [f32; 4],
     pub min_lod: f32,
     pub max_lod: f32,

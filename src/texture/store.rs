@@ -1,7 +1,9 @@
 //! The texture objects of a context, the default texture of each target,
 //! the proxy images, and which object each unit has bound to each target.
 
-use super::jit::{BaseFormat, Image, SamplerKey, TexTarget, TextureRef, Wrap, MAX_UNITS};
+use super::jit::{
+    quantized_lod_bias, BaseFormat, Image, MipFilter, SamplerKey, TexTarget, TextureRef, Wrap, MAX_UNITS,
+};
 use super::object::TextureObject;
 use std::collections::HashMap;
 
@@ -151,6 +153,12 @@ impl TextureStore {
     pub fn sampling(&self, unit: usize, target: TexTarget) -> Option<Sampling<'_>> {
         let obj = self.bound(unit, target);
         let last = obj.complete()?;
+        // Without mipmapping only the base level is sampled (and the others need not be complete).
+        let last = if obj.params.mip == MipFilter::None {
+            obj.params.base_level as usize
+        } else {
+            last
+        };
         let base = obj.base_image()?;
         let p = &obj.params;
         let storage = base.internal.storage();
@@ -186,22 +194,18 @@ impl TextureStore {
             key,
             base: storage.base,
             images,
-            base_level: p.base_level as u32,
-            max_level: last as u32,
-            // As gallium's sampler state holds them (`main/texparam.c`): no negative minimum.
-            min_lod: p.min_lod.max(0.0),
-            max_lod: p.max_lod,
-            lod_bias: quantize_lod_bias(p.lod_bias),
-            border: border_for_base(p.border, storage.base),
+            params: TextureRef {
+                images: &[],
+                base_level: p.base_level as u32,
+                max_level: last as u32,
+                // As gallium's sampler state holds them (`main/texparam.c`): no negative minimum.
+                min_lod: p.min_lod.max(0.0),
+                max_lod: p.max_lod,
+                lod_bias: quantized_lod_bias(p.lod_bias),
+                border: border_for_base(p.border, storage.base),
+            },
         })
     }
-}
-
-/// A LOD bias as gallium's sampler state holds it (`util/u_math.h`
-/// `util_quantize_lod_bias`: clamped to ±16, rounded to 1/256). Mesa
-/// quantizes the object's bias and the unit's (`LodBiasQuantized`) apart.
-pub fn quantize_lod_bias(bias: f32) -> f32 {
-    (bias.clamp(-16.0, 16.0) * 256.0).round() / 256.0
 }
 
 /// The border colour as the sampler sees it for a base format (Mesa
@@ -222,30 +226,21 @@ pub fn border_for_base(c: [f32; 4], base: BaseFormat) -> [f32; 4] {
 pub struct Sampling<'a> {
     pub key: SamplerKey,
     pub base: BaseFormat,
-    /// Level `l`, face `f` at `l * faces + f`, up to `max_level`; missing levels are empty.
+    /// Level `l`, face `f` at `l * faces + f`, up to the last level sampled; missing levels are empty.
     pub images: Vec<Image<'a>>,
-    pub base_level: u32,
-    pub max_level: u32,
-    pub min_lod: f32,
-    pub max_lod: f32,
-    /// The object's GL_TEXTURE_LOD_BIAS, quantized ([`quantize_lod_bias`]); the
-    /// unit's is added by [`Sampling::texture_ref`].
-    pub lod_bias: f32,
-    pub border: [f32; 4],
+    /// The rest of the sampler's view: no images (they are [`Sampling::images`]),
+    /// the object's LOD bias quantized ([`quantized_lod_bias`]).
+    params: TextureRef<'static>,
 }
 
 impl Sampling<'_> {
     /// The sampler's view, with the unit's LOD bias (`GL_TEXTURE_FILTER_CONTROL`,
-    /// quantized by the caller with [`quantize_lod_bias`]) added.
+    /// quantized by the caller with [`quantized_lod_bias`]) added.
     pub fn texture_ref(&self, unit_lod_bias: f32) -> TextureRef<'_> {
         TextureRef {
             images: &self.images,
-            base_level: self.base_level,
-            max_level: self.max_level,
-            min_lod: self.min_lod,
-            max_lod: self.max_lod,
-            lod_bias: self.lod_bias + unit_lod_bias,
-            border: self.border,
+            lod_bias: self.params.lod_bias + unit_lod_bias,
+            ..self.params
         }
     }
 }

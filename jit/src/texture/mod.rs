@@ -8,9 +8,14 @@
 //! arrives per draw as a [`TextureRef`] in a [`TextureSet`] and is never part
 //! of the key.
 //!
-//! [`sample`] and [`environment`] are the reference: [`crate::shade::fragment`]
-//! calls them per fragment, and compiled code must compute the same bits (or
-//! call them back through `jit/src/callout.rs`).
+//! [`sample_quad`] (the fragment's 2×2 quad, exact for every target; [`sample`]
+//! takes three of its pixels and is exact except for cube maps with per-pixel
+//! λ) and [`environment`] are the reference: [`crate::shade::fragment`] calls
+//! them per fragment, and compiled code must compute the same bits (or call
+//! them back through `jit/src/callout.rs`). [`uses_aos`] says which of
+//! llvmpipe's two filtering paths a sampler takes; [`filter`], [`lod`],
+//! [`cube`] and [`arith`] hold their steps (`docs/llvmpipe-facts.md` §16, §17).
+//! `jit/tests/texture.rs` checks all of it against llvmpipe's pixels.
 
 pub mod arith;
 pub mod cube;

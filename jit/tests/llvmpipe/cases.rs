@@ -94,7 +94,10 @@ pub fn source(s: &str) -> CombineSrc {
         "constant" => CombineSrc::Constant,
         "primary_color" => CombineSrc::PrimaryColor,
         "previous" => CombineSrc::Previous,
-        _ => panic!("source {s}"),
+        _ => match s.strip_prefix("texture").and_then(|n| n.parse().ok()) {
+            Some(n) => CombineSrc::TextureUnit(n),
+            None => panic!("source {s}"),
+        },
     }
 }
 
@@ -249,10 +252,24 @@ pub fn depth_mode(c: &Case) -> softgl_jit::texture::DepthMode {
     }
 }
 
-/// The case's `GL_TEXTURE_ENV_MODE`.
-pub fn env_mode(c: &Case) -> softgl_jit::texture::EnvMode {
+/// Unit `u`'s key `name`: `name` for unit 0, `name@u` for the others (probe.c's `K`).
+pub fn key(name: &str, u: usize) -> String {
+    if u == 0 {
+        name.to_string()
+    } else {
+        format!("{name}@{u}")
+    }
+}
+
+/// Texture units the case enables (`units=`, less those `off@u=1`).
+pub fn units(c: &Case) -> impl Iterator<Item = usize> + '_ {
+    (0..c.i("units", 1) as usize).filter(move |&u| c.i(&key("off", u), 0) == 0)
+}
+
+/// Unit `u`'s `GL_TEXTURE_ENV_MODE`.
+pub fn env_mode(c: &Case, u: usize) -> softgl_jit::texture::EnvMode {
     use softgl_jit::texture::EnvMode;
-    match c.s("env", "replace").as_str() {
+    match c.s(&key("env", u), "replace").as_str() {
         "modulate" => EnvMode::Modulate,
         "decal" => EnvMode::Decal,
         "blend" => EnvMode::Blend,
@@ -260,4 +277,25 @@ pub fn env_mode(c: &Case) -> softgl_jit::texture::EnvMode {
         "combine" => EnvMode::Combine,
         _ => EnvMode::Replace,
     }
+}
+
+/// Unit `u`'s combine state (`GL_COMBINE_RGB` …; GL's initial values where the case names none).
+pub fn combine(c: &Case, u: usize) -> softgl_jit::texture::CombineKey {
+    let d = softgl_jit::texture::CombineKey::DEFAULT;
+    let k = |name: &str| key(name, u);
+    softgl_jit::texture::CombineKey {
+        rgb: combine_fn(&c.s(&k("crgb"), "modulate")),
+        alpha: combine_fn(&c.s(&k("calpha"), "modulate")),
+        src_rgb: std::array::from_fn(|i| c.kv.get(&k(&format!("srgb{i}"))).map_or(d.src_rgb[i], |s| source(s))),
+        op_rgb: std::array::from_fn(|i| c.kv.get(&k(&format!("orgb{i}"))).map_or(d.op_rgb[i], |s| operand(s))),
+        src_alpha: std::array::from_fn(|i| c.kv.get(&k(&format!("sa{i}"))).map_or(d.src_alpha[i], |s| source(s))),
+        op_alpha: std::array::from_fn(|i| c.kv.get(&k(&format!("oa{i}"))).map_or(d.op_alpha[i], |s| operand(s))),
+        scale_rgb: c.f(&k("scrgb"), 1.0) as u8,
+        scale_alpha: c.f(&k("sca"), 1.0) as u8,
+    }
+}
+
+/// Unit `u`'s `GL_TEXTURE_ENV_COLOR`.
+pub fn env_color(c: &Case, u: usize) -> [f32; 4] {
+    ["er", "eg", "eb", "ea"].map(|n| c.f(&key(n, u), 0.0))
 }

@@ -40,6 +40,16 @@ static int geti(struct kv *kv, int n, const char *key, int def) {
   return v ? atoi(v) : def;
 }
 
+/* Unit u's key: "name" for unit 0, "name@u" for the others. */
+static const char *K(const char *name, int u) {
+  static char buf[4][48];
+  static int i;
+  i = (i + 1) & 3;
+  if (u) snprintf(buf[i], sizeof buf[i], "%s@%d", name, u);
+  else snprintf(buf[i], sizeof buf[i], "%s", name);
+  return buf[i];
+}
+
 static GLenum genum(const char *s) {
   static const struct { const char *n; GLenum e; } t[] = {
     {"nearest", GL_NEAREST}, {"linear", GL_LINEAR},
@@ -50,7 +60,8 @@ static GLenum genum(const char *s) {
     {"modulate", GL_MODULATE}, {"replace", GL_REPLACE}, {"decal", GL_DECAL}, {"blend", GL_BLEND},
     {"add", GL_ADD}, {"combine", GL_COMBINE}, {"add_signed", GL_ADD_SIGNED}, {"interpolate", GL_INTERPOLATE},
     {"subtract", GL_SUBTRACT}, {"dot3_rgb", GL_DOT3_RGB}, {"dot3_rgba", GL_DOT3_RGBA},
-    {"texture", GL_TEXTURE}, {"constant", GL_CONSTANT}, {"primary_color", GL_PRIMARY_COLOR}, {"previous", GL_PREVIOUS},
+    {"texture", GL_TEXTURE}, {"texture0", GL_TEXTURE0}, {"texture1", GL_TEXTURE1}, {"texture2", GL_TEXTURE2},
+    {"constant", GL_CONSTANT}, {"primary_color", GL_PRIMARY_COLOR}, {"previous", GL_PREVIOUS},
     {"src_color", GL_SRC_COLOR}, {"one_minus_src_color", GL_ONE_MINUS_SRC_COLOR},
     {"src_alpha", GL_SRC_ALPHA}, {"one_minus_src_alpha", GL_ONE_MINUS_SRC_ALPHA},
     {"never", GL_NEVER}, {"less", GL_LESS}, {"equal", GL_EQUAL}, {"lequal", GL_LEQUAL}, {"greater", GL_GREATER},
@@ -130,27 +141,36 @@ static void scene(struct kv *kv, int n, int index) {
     glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, genum(get(kv, n, "compare", "lequal")));
   }
   glTexParameteri(target, GL_DEPTH_TEXTURE_MODE, genum(get(kv, n, "depth_mode", "luminance")));
-  glEnable(target);
-
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, genum(get(kv, n, "env", "replace")));
-  float ec[4] = {getf(kv, n, "er", 0), getf(kv, n, "eg", 0), getf(kv, n, "eb", 0), getf(kv, n, "ea", 0)};
-  glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, ec);
-  if (!strcmp(get(kv, n, "env", "replace"), "combine")) {
-    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, genum(get(kv, n, "crgb", "modulate")));
-    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, genum(get(kv, n, "calpha", "modulate")));
-    static const char *srgb[] = {"srgb0", "srgb1", "srgb2"}, *orgb[] = {"orgb0", "orgb1", "orgb2"};
-    static const char *sa[] = {"sa0", "sa1", "sa2"}, *oa[] = {"oa0", "oa1", "oa2"};
-    static const char *dsrc[] = {"texture", "previous", "constant"};
-    static const char *dorgb[] = {"src_color", "src_color", "src_alpha"};
-    for (int i = 0; i < 3; i++) {
-      glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB + i, genum(get(kv, n, srgb[i], dsrc[i])));
-      glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_RGB + i, genum(get(kv, n, orgb[i], dorgb[i])));
-      glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA + i, genum(get(kv, n, sa[i], dsrc[i])));
-      glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA + i, genum(get(kv, n, oa[i], "src_alpha")));
+  /* units=k: the same texture and coordinates on units 0..k, each with its
+   * own environment (keys name@u); off@u=1 leaves unit u disabled. */
+  int units = geti(kv, n, "units", 1);
+  for (int u = 0; u < units; u++) {
+    glActiveTexture(GL_TEXTURE0 + u);
+    glBindTexture(target, tex);
+    if (geti(kv, n, K("off", u), 0)) glDisable(target);
+    else glEnable(target);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, genum(get(kv, n, K("env", u), "replace")));
+    float ec[4] = {getf(kv, n, K("er", u), 0), getf(kv, n, K("eg", u), 0), getf(kv, n, K("eb", u), 0),
+                   getf(kv, n, K("ea", u), 0)};
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, ec);
+    if (!strcmp(get(kv, n, K("env", u), "replace"), "combine")) {
+      glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, genum(get(kv, n, K("crgb", u), "modulate")));
+      glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, genum(get(kv, n, K("calpha", u), "modulate")));
+      static const char *srgb[] = {"srgb0", "srgb1", "srgb2"}, *orgb[] = {"orgb0", "orgb1", "orgb2"};
+      static const char *sa[] = {"sa0", "sa1", "sa2"}, *oa[] = {"oa0", "oa1", "oa2"};
+      static const char *dsrc[] = {"texture", "previous", "constant"};
+      static const char *dorgb[] = {"src_color", "src_color", "src_alpha"};
+      for (int i = 0; i < 3; i++) {
+        glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB + i, genum(get(kv, n, K(srgb[i], u), dsrc[i])));
+        glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_RGB + i, genum(get(kv, n, K(orgb[i], u), dorgb[i])));
+        glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA + i, genum(get(kv, n, K(sa[i], u), dsrc[i])));
+        glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA + i, genum(get(kv, n, K(oa[i], u), "src_alpha")));
+      }
+      glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, getf(kv, n, K("scrgb", u), 1));
+      glTexEnvf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, getf(kv, n, K("sca", u), 1));
     }
-    glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, getf(kv, n, "scrgb", 1));
-    glTexEnvf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, getf(kv, n, "sca", 1));
   }
+  glActiveTexture(GL_TEXTURE0);
 
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT);
@@ -190,12 +210,15 @@ static void scene(struct kv *kv, int n, int index) {
     for (int c = 0; c < 4; c++)
       tc[c] = getf(kv, n, c0[c], c == 3 ? 1 : 0) + corner[v][0] * getf(kv, n, cx[c], 0) +
               corner[v][1] * getf(kv, n, cy[c], 0);
-    glTexCoord4fv(tc);
+    for (int u = 0; u < units; u++) glMultiTexCoord4fv(GL_TEXTURE0 + u, tc);
     glVertex2f(corner[v][0] * 2.0f / N - 1, corner[v][1] * 2.0f / N - 1);
   }
   glEnd();
   glFinish();
-  glDisable(target);
+  for (int u = units; u--;) {
+    glActiveTexture(GL_TEXTURE0 + u);
+    glDisable(target);
+  }
   glDeleteTextures(1, &tex);
 }
 
