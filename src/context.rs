@@ -8,7 +8,7 @@ use crate::error::{GlError, GlResult};
 use crate::fog::{FogCoordSrc, FogParam, FogState};
 use crate::fragment::{Backend, FragmentStage};
 use crate::framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
-use crate::geometry::batch::{FogSource, VertexStage};
+use crate::geometry::batch::{FogSource, TexFetch, VertexStage};
 use crate::geometry::lighting::LightSetup;
 use crate::geometry::varying::VaryingLayout;
 use crate::geometry::{DrawSource, Geometry, InVertex, MAX_VIEWPORT};
@@ -191,16 +191,8 @@ impl Indices<'_> {
     }
 }
 
-/// Vertex `i` of `arrays`, attributes without an array taking `current`'s;
-/// texture coordinates only for the units in `units` (bit `u`), the draw's
-/// sampling units.
-fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs, units: u8) -> InVertex {
-    let mut tex = [Vec4::W; MAX_UNITS];
-    for (u, t) in tex.iter_mut().enumerate() {
-        if units & (1 << u) != 0 {
-            *t = arrays.tex_coords[u].map_or(current.tex_coords[u], |a| a.get(i, Vec4::W));
-        }
-    }
+/// Vertex `i` of `arrays`, attributes without an array taking `current`'s.
+fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVertex {
     InVertex {
         pos: arrays.position.get(i, Vec4::W),
         color: arrays.color.map_or(current.color, |c| c.get(i, Vec4::W)),
@@ -213,8 +205,12 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs, units: u
             .edge_flag
             .map_or(current.edge_flag, |e| e.get(i, Vec4::ONE).x != 0.0),
         material: 0,
-        tex,
     }
+}
+
+/// Unit `u`'s texture coordinates of vertex `i` of `arrays` (`current`'s without an array).
+fn fetch_tex(arrays: &VertexArrays<'_>, i: usize, u: usize, current: &CurrentAttribs) -> Vec4 {
+    arrays.tex_coords[u].map_or(current.tex_coords[u], |a| a.get(i, Vec4::W))
 }
 
 /// The current vertex attributes (`glColor`, `glNormal`, `glTexCoord`,
@@ -245,7 +241,6 @@ impl CurrentAttribs {
             normal: self.normal,
             edge: self.edge_flag,
             material: 0,
-            tex: self.tex_coords,
         }
     }
 }
@@ -284,6 +279,10 @@ fn plan<'a>(
     (key, layout, textures)
 }
 
+/// How a draw reads its vertices: `fetch(i)` is vertex `i`, `tex(i, u)` its
+/// texture coordinates for unit `u` (asked only for the units it samples).
+type Fetch<'a> = (&'a dyn Fn(usize) -> InVertex, &'a dyn Fn(usize, usize) -> Vec4);
+
 /// A primitive between `begin` and `end`.
 struct Begun {
     mode: PrimitiveMode,
@@ -297,6 +296,10 @@ struct Begun {
     materials: Vec<[Material; 2]>,
     /// Whether one of those calls set the shininess.
     shininess_varies: bool,
+    /// The texture coordinates of each vertex, kept only when a unit has a
+    /// target enabled (`tex_units`, bit `u`: the units a draw may sample).
+    tex: Vec<[Vec4; MAX_UNITS]>,
+    tex_units: u8,
 }
 
 /// A software GL 1.x context with its own framebuffer. `Send`: it owns all its data.
@@ -894,6 +897,8 @@ impl Context {
             per_vertex_color: false,
             materials: Vec::new(),
             shininess_varies: false,
+            tex: Vec::new(),
+            tex_units: self.tex_units.enabled_mask(),
         });
         Ok(())
     }
@@ -907,7 +912,14 @@ impl Context {
             per_vertex_color: b.per_vertex_color,
         };
         let vertex_materials = self.vertex_materials(&b.materials, b.shininess_varies);
-        self.draw_with((b.mode, source), b.verts.len(), &|i| b.verts[i], &vertex_materials)
+        let current = self.current.tex_coords;
+        let tex = |i: usize, u: usize| b.tex.get(i).map_or(current[u], |t| t[u]);
+        self.draw_with(
+            (b.mode, source),
+            b.verts.len(),
+            (&|i| b.verts[i], &tex),
+            &vertex_materials,
+        )
     }
 
     /// `glVertex4f`: outside `begin`/`end` it is ignored, as in GL.
@@ -916,6 +928,9 @@ impl Context {
         if let Some(b) = &mut self.begun {
             let material = b.materials.len().saturating_sub(1) as u16;
             b.verts.push(InVertex { material, ..v });
+            if b.tex_units != 0 {
+                b.tex.push(self.current.tex_coords);
+            }
         }
     }
 
@@ -1003,11 +1018,12 @@ impl Context {
         let len = self.record(arrays.check())?;
         let end = first.checked_add(count).filter(|&e| e <= len);
         self.require(end.is_some())?;
-        let (current, units) = (self.current, self.tex_units.enabled_mask());
+        let current = self.current;
         let source = DrawSource::Arrays {
             per_vertex_color: arrays.color.is_some(),
         };
-        self.draw((mode, source), count, &|i| fetch(arrays, first + i, &current, units))
+        let tex = |i: usize, u: usize| fetch_tex(arrays, first + i, u, &current);
+        self.draw((mode, source), count, (&|i| fetch(arrays, first + i, &current), &tex))
     }
 
     /// `glDrawElements`: the vertices of `arrays` that `indices` name, in order.
@@ -1016,11 +1032,14 @@ impl Context {
         self.outside()?;
         let len = self.record(arrays.check())?;
         self.require(indices.iter().all(|i| i < len))?;
-        let (current, units) = (self.current, self.tex_units.enabled_mask());
+        let current = self.current;
         let source = (mode, DrawSource::Elements);
-        self.draw(source, indices.len(), &|k| {
-            fetch(arrays, indices.get(k), &current, units)
-        })
+        let tex = |k: usize, u: usize| fetch_tex(arrays, indices.get(k), u, &current);
+        self.draw(
+            source,
+            indices.len(),
+            (&|k| fetch(arrays, indices.get(k), &current), &tex),
+        )
     }
 
     // ----- drawing -----
@@ -1041,7 +1060,7 @@ impl Context {
         plan(&self.state, &self.fb, self.ordered_dither, textures)
     }
 
-    fn draw(&mut self, mode: (PrimitiveMode, DrawSource), count: usize, fetch: &dyn Fn(usize) -> InVertex) -> GlResult {
+    fn draw(&mut self, mode: (PrimitiveMode, DrawSource), count: usize, fetch: Fetch<'_>) -> GlResult {
         self.draw_with(mode, count, fetch, &[])
     }
 
@@ -1050,7 +1069,7 @@ impl Context {
         &mut self,
         mode: (PrimitiveMode, DrawSource),
         count: usize,
-        fetch: &dyn Fn(usize) -> InVertex,
+        (fetch, tex): Fetch<'_>,
         vertex_materials: &[LightSetup],
     ) -> GlResult {
         let textures = (&self.tex_units, &self.textures);
@@ -1070,7 +1089,7 @@ impl Context {
             vertex_stage.vertex_materials = vertex_materials;
         }
         let tex_coords = TexCoordStage::new(&self.tex_units, &layout, mv, lighting);
-        vertex_stage.tex_coords = tex_coords.as_ref();
+        vertex_stage.tex_coords = tex_coords.as_ref().map(|t| (t, TexFetch(tex)));
         let mut geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
         geometry.set_user_planes(self.projection.top());
         let specialist = match self.backend {

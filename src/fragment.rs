@@ -2,7 +2,8 @@
 //! to the back end for the draw's key.
 
 use crate::raster::SpanSink;
-use softgl_jit::texture::TextureSet;
+use softgl_jit::shade::slot;
+use softgl_jit::texture::{TextureSet, MAX_UNITS};
 use softgl_jit::{interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target};
 
 /// Spans handed to the back end at once.
@@ -56,6 +57,8 @@ pub struct FragmentStage<'t> {
     /// uses over whatever an earlier one left.
     planes: Vec<Planes>,
     planes_len: usize,
+    /// Bit `u` set when unit `u` samples (its coordinate slots are read).
+    tex_units: u8,
     error: Option<FragmentError>,
 }
 
@@ -83,11 +86,17 @@ impl<'t> FragmentStage<'t> {
             batch: Vec::with_capacity(BATCH),
             planes: Vec::with_capacity(BATCH),
             planes_len: 0,
+            tex_units: key.shade.map_or(0, |s| {
+                (0..MAX_UNITS)
+                    .filter(|&u| s.tex[u].is_some())
+                    .fold(0, |m, u| m | 1 << u)
+            }),
             error: None,
         })
     }
 
-    fn flush(&mut self) {
+    /// Runs the batch's spans.
+    fn run(&mut self) {
         if self.count == 0 {
             return;
         }
@@ -108,11 +117,24 @@ impl<'t> FragmentStage<'t> {
             self.error.get_or_insert(e);
         }
         self.count = 0;
-        // The current primitive's planes stay, as planes 0, for its next spans.
-        if self.planes_len > 0 {
-            self.planes.swap(0, self.planes_len - 1);
-            self.planes_len = 1;
+    }
+
+    /// Runs the batch's spans; the current primitive's planes stay, as
+    /// planes 0, for its next spans. Only the slots the stages read move (the
+    /// colour, fog and depth slots and the sampling units' coordinates: 480
+    /// bytes untextured, not all 2 KB of a `Planes`).
+    fn flush(&mut self) {
+        self.run();
+        if self.planes_len > 1 {
+            let (head, tail) = self.planes.split_at_mut(self.planes_len - 1);
+            let (to, from) = (&mut head[0].coeffs, &tail[0].coeffs);
+            to[..slot::TEX0].copy_from_slice(&from[..slot::TEX0]);
+            for u in (0..MAX_UNITS).filter(|&u| self.tex_units & (1 << u) != 0) {
+                let k = slot::tex(u);
+                to[k..k + 4].copy_from_slice(&from[k..k + 4]);
+            }
         }
+        self.planes_len = self.planes_len.min(1);
     }
 
     /// Runs what is left and reports the first error, if any.
@@ -148,7 +170,9 @@ impl SpanSink for FragmentStage<'_> {
 
     fn planes_mut(&mut self) -> Option<&mut Planes> {
         if self.planes_len == BATCH {
-            self.flush();
+            // A new primitive: no later span reads the batch's planes.
+            self.run();
+            self.planes_len = 0;
         }
         if self.planes_len == self.planes.len() {
             self.planes.push(Planes::default());

@@ -210,6 +210,11 @@ fn every_scene_matches_llvmpipe_on_both_back_ends() {
             gl.viewport(0, 0, n, n).unwrap();
             draw(&mut gl, &c, i as u32, n);
             let got = gl.read_pixels(0, 0, n, n, ReadFormat::Rgba8).unwrap();
+            if backend == Backend::Jit {
+                // The scene ran on a compiled specialist, not on the interpreter fallback.
+                let stats = gl.specialist_stats();
+                assert!(stats.misses >= 1 && stats.failures == 0, "{}: {stats:?}", c.name);
+            }
             let d = difference(&format!("{backend:?} {}", c.name), &got, want, n as usize);
             count += 1;
             let budget = KNOWN.iter().find(|k| k.0 == c.name).map_or(0, |k| k.1);

@@ -25,9 +25,9 @@ fn context() -> Context {
     Context::new(FramebufferDesc::rgba8_d24s8(8, 8)).unwrap()
 }
 
-/// Uploads `texels` (RGBA8, rows bottom-up) as a `w`×`h` 2D texture on the
-/// active unit's bound texture, NEAREST both ways, wrap `wrap`.
-fn texture_2d(gl: &mut Context, w: i32, h: i32, texels: &[[u8; 4]], wrap: Wrap) {
+/// Uploads `texels` (RGBA8, rows bottom-up) as level 0 of a `w`×`h` 2D
+/// texture on the active unit's bound texture.
+fn upload_2d(gl: &mut Context, w: i32, h: i32, texels: &[[u8; 4]]) {
     let bytes: Vec<u8> = texels.iter().flatten().copied().collect();
     let pixels = PixelData {
         format: PixelFormat::Rgba,
@@ -37,6 +37,11 @@ fn texture_2d(gl: &mut Context, w: i32, h: i32, texels: &[[u8; 4]], wrap: Wrap) 
     };
     gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba8, [w, h, 1], 0, Some(pixels))
         .unwrap();
+}
+
+/// [`upload_2d`], filtered NEAREST both ways, wrap `wrap`.
+fn texture_2d(gl: &mut Context, w: i32, h: i32, texels: &[[u8; 4]], wrap: Wrap) {
+    upload_2d(gl, w, h, texels);
     let t = TextureTarget::D2;
     gl.tex_parameter(t, TexParam::MinFilter(Filter::Nearest, MipFilter::None))
         .unwrap();
@@ -48,6 +53,14 @@ fn texture_2d(gl: &mut Context, w: i32, h: i32, texels: &[[u8; 4]], wrap: Wrap) 
 /// The 2×2 texture red, green (bottom row), blue, white (top row).
 fn checker(gl: &mut Context) {
     texture_2d(gl, 2, 2, &[RED, GREEN, BLUE, WHITE], Wrap::ClampToEdge);
+}
+
+/// A context whose unit 0 samples [`checker`].
+fn checker_enabled() -> Context {
+    let mut gl = context();
+    checker(&mut gl);
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    gl
 }
 
 /// A quad over the whole 8×8 window with texture coordinates (0, 0)–(1, 1)
@@ -93,16 +106,7 @@ fn a_disabled_or_incomplete_unit_adds_nothing_to_the_draw() {
     gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
     untextured(&gl);
     // An image but the default minification filter wants mipmaps: still incomplete.
-    let texels = [WHITE; 4];
-    let bytes: Vec<u8> = texels.iter().flatten().copied().collect();
-    let pixels = PixelData {
-        format: PixelFormat::Rgba,
-        ty: PixelType::UnsignedByte,
-        store: PixelStore::DEFAULT,
-        bytes: &bytes,
-    };
-    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba8, [2, 2, 1], 0, Some(pixels))
-        .unwrap();
+    upload_2d(&mut gl, 2, 2, &[WHITE; 4]);
     untextured(&gl);
     // Complete: unit 0 carries 4 slots after the colour, and has a key.
     gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Linear, MipFilter::None))
@@ -134,9 +138,7 @@ fn a_disabled_or_incomplete_unit_adds_nothing_to_the_draw() {
 
 #[test]
 fn the_first_complete_enabled_target_is_sampled() {
-    let mut gl = context();
-    checker(&mut gl);
-    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    let mut gl = checker_enabled();
     // An enabled cube map outranks 2D, but an incomplete one is passed over
     // (Mesa's update_ff_texture_state).
     gl.enable(Capability::Texture(TextureTarget::Cube)).unwrap();
@@ -150,9 +152,7 @@ fn the_first_complete_enabled_target_is_sampled() {
 
 #[test]
 fn nearest_magnification_replaces_with_the_texels() {
-    let mut gl = context();
-    checker(&mut gl);
-    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    let mut gl = checker_enabled();
     gl.tex_env(TexEnvParam::Mode(EnvMode::Replace)).unwrap();
     gl.color3(0.2, 0.4, 0.6);
     textured_quad(&mut gl);
@@ -162,9 +162,7 @@ fn nearest_magnification_replaces_with_the_texels() {
 
 #[test]
 fn modulate_multiplies_the_colour_by_the_texels() {
-    let mut gl = context();
-    checker(&mut gl);
-    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    let mut gl = checker_enabled();
     // MODULATE is the default environment.
     assert_eq!(
         gl.get_tex_env(TexEnvParamName::Mode),
@@ -178,6 +176,14 @@ fn modulate_multiplies_the_colour_by_the_texels() {
         quadrants(&gl),
         [[51, 0, 0, 255], [0, 102, 0, 255], [0, 0, 153, 255], [51, 102, 153, 255]]
     );
+}
+
+/// A context whose unit `unit` (the active one) samples [`strip`] with REPLACE.
+fn strip_on(unit: u32) -> Context {
+    let mut gl = context();
+    gl.active_texture(unit).unwrap();
+    strip(&mut gl);
+    gl
 }
 
 /// A 4×1 texture red, green, blue, white: s in [k/4, (k+1)/4) samples texel k.
@@ -195,6 +201,17 @@ fn quad_without_coordinates(gl: &mut Context) {
     gl.draw_arrays(PrimitiveMode::Quads, 0, 4, &arrays).unwrap();
 }
 
+/// Generates S on the active unit in `mode` (object or eye linear) from `plane`.
+fn generate_s(gl: &mut Context, mode: TexGenMode, plane: [f32; 4]) {
+    gl.tex_gen(TexCoordName::S, TexGenParam::Mode(mode)).unwrap();
+    let plane = match mode {
+        TexGenMode::ObjectLinear => TexGenParam::ObjectPlane(plane),
+        _ => TexGenParam::EyePlane(plane),
+    };
+    gl.tex_gen(TexCoordName::S, plane).unwrap();
+    gl.enable(Capability::TexGen(TexCoordName::S)).unwrap();
+}
+
 /// The texels of the bottom row, left to right.
 fn row(gl: &Context) -> Vec<[u8; 4]> {
     (0..8).map(|x| gl.framebuffer().pixel(x, 0).unwrap()).collect()
@@ -202,35 +219,25 @@ fn row(gl: &Context) -> Vec<[u8; 4]> {
 
 #[test]
 fn object_linear_texgen_replaces_the_given_coordinates() {
-    let mut gl = context();
-    strip(&mut gl);
+    let mut gl = strip_on(0);
     // s = 0.5·x + 0.5 over x in [-1, 1]: pixel x has s = (x + 0.5)/8, texel floor(4s) = x/2.
-    gl.tex_gen(TexCoordName::S, TexGenParam::Mode(TexGenMode::ObjectLinear))
-        .unwrap();
-    gl.tex_gen(TexCoordName::S, TexGenParam::ObjectPlane([0.5, 0.0, 0.0, 0.5]))
-        .unwrap();
-    gl.enable(Capability::TexGen(TexCoordName::S)).unwrap();
+    generate_s(&mut gl, TexGenMode::ObjectLinear, [0.5, 0.0, 0.0, 0.5]);
     quad_without_coordinates(&mut gl);
     assert_eq!(row(&gl), [RED, RED, GREEN, GREEN, BLUE, BLUE, WHITE, WHITE]);
 }
 
 #[test]
 fn an_eye_plane_is_kept_in_the_eye_coordinates_of_its_modelview() {
-    let mut gl = context();
-    strip(&mut gl);
-    gl.tex_gen(TexCoordName::S, TexGenParam::Mode(TexGenMode::EyeLinear))
-        .unwrap();
+    let mut gl = strip_on(0);
     // Given under a translation by -1 in x: the plane (0.25, 0, 0, 0.25) times the
     // inverse translation (+1) is (0.25, 0, 0, 0.5) in eye coordinates.
     gl.translate(-1.0, 0.0, 0.0).unwrap();
-    gl.tex_gen(TexCoordName::S, TexGenParam::EyePlane([0.25, 0.0, 0.0, 0.25]))
-        .unwrap();
+    generate_s(&mut gl, TexGenMode::EyeLinear, [0.25, 0.0, 0.0, 0.25]);
     assert_eq!(
         gl.get_tex_gen(TexCoordName::S, TexGenParamName::EyePlane),
         Ok(TexGenParam::EyePlane([0.25, 0.0, 0.0, 0.5]))
     );
     gl.load_identity().unwrap();
-    gl.enable(Capability::TexGen(TexCoordName::S)).unwrap();
     quad_without_coordinates(&mut gl);
     // s = 0.25·x + 0.5 in [0.25, 0.75]: pixel x has s = (x + 0.5)/16 + 0.25, texel 1 then 2.
     assert_eq!(row(&gl), [GREEN, GREEN, GREEN, GREEN, BLUE, BLUE, BLUE, BLUE]);
@@ -238,8 +245,7 @@ fn an_eye_plane_is_kept_in_the_eye_coordinates_of_its_modelview() {
 
 #[test]
 fn the_texture_matrix_transforms_the_coordinates() {
-    let mut gl = context();
-    strip(&mut gl);
+    let mut gl = strip_on(0);
     gl.matrix_mode(MatrixMode::Texture).unwrap();
     // s' = s/2 + 0.5: the right half of the strip spread over the window.
     gl.translate(0.5, 0.0, 0.0).unwrap();
@@ -255,9 +261,7 @@ fn the_texture_matrix_transforms_the_coordinates() {
 
 #[test]
 fn a_second_unit_reads_its_own_coordinates() {
-    let mut gl = context();
-    gl.active_texture(1).unwrap();
-    strip(&mut gl);
+    let mut gl = strip_on(1);
     gl.begin(PrimitiveMode::Quads).unwrap();
     for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
         // Unit 0's coordinates run the other way and are not read.
@@ -406,6 +410,14 @@ const SCENES: &[(&str, usize)] = &[
         0,
     ),
     ("fine_plain tm_scale=8 rot=50", 0),
+    // The grid through the near plane: coordinates clipped with the colours.
+    ("near_clip tz=-1.2 rot=35 tm_scale=4", 0),
+    (
+        "near_clip_sphere gen_s=sphere gen_t=sphere tz=-1.2 rot=35 tm_scale=4",
+        0,
+    ),
+    // Client arrays, the coordinates of unit 2 through glClientActiveTexture.
+    ("arrays arrays=1 unit=2 gen_t=obj ot=0,0.5,0.5,0.5 rot=20 tm_scale=4", 0),
 ];
 
 /// Scene side in pixels (`N` of texgen.c).
@@ -481,7 +493,7 @@ fn replay(line: &str) -> Context {
     gl.scale(sc, sc, 1.0).unwrap();
     gl.matrix_mode(MatrixMode::Modelview).unwrap();
     gl.load_identity().unwrap();
-    gl.translate(0.0, 0.0, -2.5).unwrap();
+    gl.translate(0.0, 0.0, f("tz", -2.5)).unwrap();
     gl.rotate(f("rot", 0.0), 1.0, 0.5, 0.25).unwrap();
     gl.enable(Capability::Normalize).unwrap();
     gl.enable(Capability::DepthTest).unwrap();
@@ -517,6 +529,25 @@ fn replay(line: &str) -> Context {
                 gl.end().unwrap();
             }
         }
+        _ if f("arrays", 0.0) != 0.0 => {
+            let (mut pos, mut nrm, mut tc) = (Vec::new(), Vec::new(), Vec::new());
+            for (i, j) in (0..8).flat_map(|j| (0..8).map(move |i| (i, j))) {
+                for (di, dj) in [(0, 0), (1, 0), (1, 1), (0, 0), (1, 1), (0, 1)] {
+                    let (x, y) = (-1.0 + (i + di) as f32 / 4.0, -1.0 + (j + dj) as f32 / 4.0);
+                    pos.extend([x, y, (x * x - y * y) / 4.0]);
+                    nrm.extend([-x / 2.0, y / 2.0, 1.0]);
+                    tc.extend([(x + 1.0) / 2.0, (y + 1.0) / 2.0]);
+                }
+            }
+            gl.client_active_texture(unit).unwrap();
+            let unit = gl.tex_units().client_active();
+            let arrays = VertexArrays {
+                normal: Some(softgl::AttribArray::new(3, &nrm)),
+                ..VertexArrays::positions(3, &pos).with_tex_coords(unit, 2, &tc)
+            };
+            gl.draw_arrays(PrimitiveMode::Triangles, 0, pos.len() / 3, &arrays)
+                .unwrap();
+        }
         _ => {
             gl.begin(PrimitiveMode::Triangles).unwrap();
             for j in 0..8 {
@@ -538,10 +569,8 @@ fn llvmpipe_scenes() -> std::collections::HashMap<String, Vec<u8>> {
         .lines()
         .filter_map(|l| l.split_once(' '))
         .map(|(name, hex)| {
-            let bytes = (0..hex.len() / 2)
-                .map(|i| u8::from_str_radix(&hex[2 * i..2 * i + 2], 16).expect("hex"))
-                .collect();
-            (name.to_string(), bytes)
+            let byte = |pair: &[u8]| u8::from_str_radix(std::str::from_utf8(pair).expect("ascii"), 16).expect("hex");
+            (name.to_string(), hex.as_bytes().chunks(2).map(byte).collect())
         })
         .collect()
 }
@@ -577,30 +606,47 @@ fn texture_coordinates_match_llvmpipe() {
 #[ignore]
 fn regenerate() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/llvmpipe");
-    let exe = std::env::temp_dir().join("softgl-texgen-probe");
-    let status = std::process::Command::new("gcc")
-        .args(["-O1", "-o"])
+    let (exe, scenes) = (
+        std::env::temp_dir().join("softgl-texgen-probe"),
+        std::env::temp_dir().join("softgl-texgen-scenes"),
+    );
+    let lines: String = SCENES.iter().map(|(l, _)| format!("{l}\n")).collect();
+    std::fs::write(&scenes, lines).expect("write the scene lines");
+    let mut gcc = std::process::Command::new("gcc");
+    gcc.arg("-O1")
+        .arg("-o")
         .arg(&exe)
         .arg(dir.join("texgen.c"))
-        .arg("-lOSMesa")
-        .status()
-        .expect("gcc runs");
-    assert!(status.success());
-    let input: String = SCENES.iter().map(|(l, _)| format!("{l}\n")).collect();
-    let mut child = std::process::Command::new(&exe)
+        .arg("-lOSMesa");
+    assert!(gcc.status().expect("gcc runs").success());
+    let input = std::fs::File::open(&scenes).expect("the scene lines");
+    let out = std::process::Command::new(&exe)
         .env("LP_NUM_THREADS", "1")
-        .stdin(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::piped())
-        .spawn()
+        .stdin(input)
+        .output()
         .expect("the probe runs");
-    use std::io::Write;
-    child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(input.as_bytes())
-        .expect("write");
-    let out = child.wait_with_output().expect("the probe finishes");
     assert!(out.status.success());
     std::fs::write(dir.join("texgen.txt"), out.stdout).expect("write texgen.txt");
+}
+
+#[test]
+fn non_finite_coordinates_still_draw() {
+    for (s, q) in [
+        (f32::INFINITY, 1.0),
+        (f32::NAN, 1.0),
+        (1e30, 1.0),
+        (0.5, 0.0),
+        (-1e6, 1e-30),
+    ] {
+        let mut gl = strip_on(0);
+        gl.begin(PrimitiveMode::Quads).unwrap();
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            gl.tex_coord4(s, 0.5, 0.0, q);
+            gl.vertex2(x, y);
+        }
+        gl.end().unwrap();
+        // The quad covers the window whatever its coordinates, and samples
+        // texel 0 (red) everywhere: measured with llvmpipe for each case.
+        assert_eq!(common::count(&gl, RED), 64, "s = {s}, q = {q}");
+    }
 }

@@ -45,9 +45,28 @@ pub struct VertexStage<'a> {
     /// `glEnd`, which Mesa keeps as vertex attributes): when not empty, a
     /// vertex is lit by `vertex_materials[v.material]` instead of `lighting`.
     pub vertex_materials: &'a [LightSetup],
-    /// The texture coordinates of the units `layout` carries (`None` when
-    /// it carries none: no texture work at all).
-    pub tex_coords: Option<&'a TexCoordStage>,
+    /// The texture coordinates of the units `layout` carries and where the
+    /// vertices' come from (`None` when it carries none: no texture work at all).
+    pub tex_coords: Option<(&'a TexCoordStage, TexFetch<'a>)>,
+}
+
+/// Texture coordinates `(s, t, r, q)` of vertex `i` for unit `u`, as
+/// `fetch(i, u)`: apart from [`InVertex`] so that an untextured draw neither
+/// fetches nor copies them.
+#[derive(Clone, Copy)]
+pub struct TexFetch<'a>(pub &'a dyn Fn(usize, usize) -> Vec4);
+
+impl std::fmt::Debug for TexFetch<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("TexFetch")
+    }
+}
+
+impl PartialEq for TexFetch<'_> {
+    /// The same function.
+    fn eq(&self, o: &Self) -> bool {
+        std::ptr::addr_eq(self.0, o.0)
+    }
 }
 
 impl VertexStage<'_> {
@@ -63,8 +82,8 @@ impl VertexStage<'_> {
         }
     }
 
-    /// Vertex `v` in clip space with its varyings.
-    pub fn transform(&self, v: &InVertex) -> ClipVertex {
+    /// Vertex `v` (index `i` of the draw) in clip space with its varyings.
+    pub fn transform(&self, i: usize, v: &InVertex) -> ClipVertex {
         let mut out = ClipVertex {
             pos: (self.mvp * v.pos).as_dvec4(),
             v: [0.0; MAX_VARYINGS],
@@ -104,8 +123,8 @@ impl VertexStage<'_> {
                 FogSource::FogCoord => v.fog_coord.abs(),
             };
         }
-        if let Some(t) = self.tex_coords {
-            t.fill(v, &mut out.v);
+        if let Some((t, fetch)) = self.tex_coords {
+            t.fill(v, |u| (fetch.0)(i, u), &mut out.v);
         }
         out
     }
@@ -150,8 +169,8 @@ impl<'a> VertexBatch<'a> {
         }
     }
 
-    fn transform(&self, v: InVertex) -> ClipVertex {
-        self.stage.transform(&v)
+    fn transform(&self, i: usize) -> ClipVertex {
+        self.stage.transform(i, &(self.fetch)(i))
     }
 
     /// Vertex `i` in clip space. Assembly asks for indices that never fall more
@@ -162,7 +181,7 @@ impl<'a> VertexBatch<'a> {
             if let Some(v) = self.first {
                 return v;
             }
-            let v = self.transform((self.fetch)(0));
+            let v = self.transform(0);
             self.first = Some(v);
             return v;
         }
@@ -171,7 +190,7 @@ impl<'a> VertexBatch<'a> {
             let end = (self.base + BATCH).min(self.count);
             self.clip.clear();
             for k in self.base..end {
-                let v = self.transform((self.fetch)(k));
+                let v = self.transform(k);
                 self.clip.push(v);
             }
         }

@@ -15,7 +15,6 @@ use assemble::{assemble, Primitive, QuadSplit};
 use batch::{VertexBatch, VertexStage};
 use clip::{clip_polygon, clip_polygon_user, clip_segment, guard_levels, outcode, ClipVertex, PolyVertex, UserPlanes};
 use glam::{Vec3, Vec4};
-use softgl_jit::texture::MAX_UNITS;
 use varying::{copy_slots, VaryingLayout, Varyings};
 
 pub use crate::state::PrimitiveMode;
@@ -39,10 +38,9 @@ pub struct InVertex {
     pub edge: bool,
     /// Which of the draw's per-vertex materials lights this vertex
     /// ([`batch::VertexStage::vertex_materials`]); 0 when they do not vary.
+    /// (Texture coordinates are not here: a draw fetches them apart, for
+    /// the units it samples only, [`batch::TexFetch`].)
     pub material: u16,
-    /// Texture coordinates `(s, t, r, q)` per unit (read only for the units
-    /// the draw samples).
-    pub tex: [Vec4; MAX_UNITS],
 }
 
 impl InVertex {
@@ -56,7 +54,6 @@ impl InVertex {
             normal: Vec3::Z,
             edge: true,
             material: 0,
-            tex: [Vec4::W; MAX_UNITS],
         }
     }
 }
@@ -292,7 +289,7 @@ impl<'s> Geometry<'s> {
     }
 
     fn point(&self, v: &ClipVertex, sink: &mut dyn SpanSink) {
-        if !v.is_finite(self.layout.len()) || outcode(v.pos, 1.0) != 0 || self.user.code(v.pos) != 0 {
+        if !v.is_finite(self.layout.finite_len()) || outcode(v.pos, 1.0) != 0 || self.user.code(v.pos) != 0 {
             return;
         }
         if let Some(rv) = self.project(v) {
@@ -302,7 +299,8 @@ impl<'s> Geometry<'s> {
 
     fn line(&self, a: &ClipVertex, b: &ClipVertex, flat: Option<Varyings>, sink: &mut dyn SpanSink) {
         let n = self.layout.len();
-        if !(a.is_finite(n) && b.is_finite(n)) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
+        let f = self.layout.finite_len();
+        if !(a.is_finite(f) && b.is_finite(f)) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
             return;
         }
         if self.user.code(a.pos) & self.user.code(b.pos) != 0 {
@@ -330,7 +328,8 @@ impl<'s> Geometry<'s> {
 
     fn polygon(&self, poly: [PolyVertex; 3], mut flat: Option<Varyings>, sink: &mut dyn SpanSink) {
         let n = self.layout.len();
-        if poly.iter().any(|(v, _)| !v.is_finite(n)) {
+        let f = self.layout.finite_len();
+        if poly.iter().any(|(v, _)| !v.is_finite(f)) {
             return;
         }
         let codes = poly.map(|(v, _)| outcode(v.pos, 1.0));

@@ -57,6 +57,14 @@ impl VaryingLayout {
         self.parts().iter().filter(|p| p.0).map(|p| p.1).sum()
     }
 
+    /// The slots a vertex's primitive is dropped for when not finite: the
+    /// colours and the fog coordinate. Texture coordinates may be anything
+    /// (infinite, NaN): llvmpipe draws such primitives (measured: a quad
+    /// with `glTexCoord4f(inf, …)` or `q = 0` covers its pixels).
+    pub fn finite_len(&self) -> usize {
+        self.base_len()
+    }
+
     /// f32 slots in use.
     pub fn len(&self) -> usize {
         self.base_len() + 4 * self.tex.count_ones() as usize
@@ -121,16 +129,19 @@ pub fn copy_slots(dst: &mut Varyings, to: usize, src: &Varyings, from: usize, n:
 mod tests {
     use super::*;
 
+    /// Every varying, every unit.
+    const ALL: VaryingLayout = VaryingLayout {
+        color: true,
+        back_color: true,
+        secondary: true,
+        back_secondary: true,
+        fog: true,
+        tex: 0xff,
+    };
+
     #[test]
     fn offsets_pack_in_order() {
-        let all = VaryingLayout {
-            color: true,
-            back_color: true,
-            secondary: true,
-            back_secondary: true,
-            fog: true,
-            tex: 0,
-        };
+        let all = VaryingLayout { tex: 0, ..ALL };
         assert_eq!(all.len(), 17);
         assert_eq!(
             (
@@ -170,15 +181,7 @@ mod tests {
             (Some(5), None, Some(9), Some(13))
         );
         assert_eq!(l.tex_units().collect::<Vec<_>>(), [(0, 5), (2, 9), (7, 13)]);
-        let all = VaryingLayout {
-            color: true,
-            back_color: true,
-            secondary: true,
-            back_secondary: true,
-            fog: true,
-            tex: 0xff,
-        };
-        assert_eq!((all.len(), all.tex(7)), (MAX_VARYINGS, Some(MAX_VARYINGS - 4)));
+        assert_eq!((ALL.len(), ALL.tex(7)), (MAX_VARYINGS, Some(MAX_VARYINGS - 4)));
         assert_eq!(VaryingLayout::default().tex(3), None);
     }
 }

@@ -102,11 +102,12 @@ impl TexCoordStage {
         Some(stage)
     }
 
-    /// Writes the texture coordinates of `v` into `out`.
-    pub fn fill(&self, v: &InVertex, out: &mut Varyings) {
+    /// Writes the texture coordinates of `v` into `out`, `tex(u)` giving the
+    /// vertex's own coordinates for unit `u`.
+    pub fn fill(&self, v: &InVertex, tex: impl Fn(usize) -> Vec4, out: &mut Varyings) {
         let mut shared = Shared::default();
         for u in &self.units[..self.count] {
-            let mut c = v.tex[u.unit].to_array();
+            let mut c = tex(u.unit).to_array();
             if u.gen.iter().any(Option::is_some) {
                 let sphere = u.gen.iter().flatten().any(|g| g.0 == TexGenMode::SphereMap).then(|| {
                     let r = shared.reflected(self, v);
@@ -186,9 +187,8 @@ mod tests {
         let stage = TexCoordStage::new(units, &layout, mv, &LightingState::default()).unwrap();
         let mut v = InVertex::new(Vec4::from_array(pos), Vec4::ONE);
         v.normal = glam::Vec3::from_array(n);
-        v.tex[u] = Vec4::new(0.25, 0.5, 0.75, 1.0);
         let mut out = [0.0; crate::geometry::varying::MAX_VARYINGS];
-        stage.fill(&v, &mut out);
+        stage.fill(&v, |_| Vec4::new(0.25, 0.5, 0.75, 1.0), &mut out);
         [out[4], out[5], out[6], out[7]]
     }
 

@@ -16,8 +16,8 @@ use crate::state::Capability;
 use crate::texture::{Sampling, TextureStore};
 use glam::Mat4;
 use softgl_jit::texture::{
-    effective_combine, BaseFormat, CombineFn, CombineKey, CombineSrc, EnvMode, Operand, TexTarget as TextureTarget,
-    TexUnitKey, TextureSet, MAX_UNITS,
+    effective_combine, quantized_lod_bias, BaseFormat, CombineFn, CombineKey, CombineSrc, EnvMode, Operand,
+    TexTarget as TextureTarget, TexUnitKey, TextureSet, MAX_UNITS,
 };
 
 /// A texture coordinate (`GL_S`, `GL_T`, `GL_R`, `GL_Q`).
@@ -239,11 +239,6 @@ impl TexturePlan<'_> {
     }
 }
 
-/// Mesa's `util_quantize_lod_bias`: clamped to ±16, rounded to 1/256.
-fn quantize_lod_bias(bias: f32) -> f32 {
-    (bias.clamp(-16.0, 16.0) * 256.0).round() / 256.0
-}
-
 impl TextureUnits {
     /// Unit `unit`'s texture matrix stack.
     pub fn matrix_stack(&self, unit: usize) -> &MatrixStack {
@@ -290,7 +285,7 @@ impl TextureUnits {
                 env: effective_combine(unit.env_mode, env_base, unit.combine),
             });
             plan.samplings[u] = Some(sampling);
-            plan.lod_bias[u] = quantize_lod_bias(unit.lod_bias);
+            plan.lod_bias[u] = quantized_lod_bias(unit.lod_bias);
             plan.env_color[u] = unit.env_color;
             plan.mask |= 1 << u;
         }
@@ -544,17 +539,6 @@ impl Context {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn lod_bias_quantizes_as_mesa() {
-        assert_eq!(quantize_lod_bias(0.3), 77.0 / 256.0);
-        assert_eq!(quantize_lod_bias(-100.0), -16.0);
-        assert_eq!(
-            quantize_lod_bias(1.0 / 512.0),
-            1.0 / 256.0,
-            "half a step rounds away from zero"
-        );
-    }
 
     #[test]
     fn plane_times_matrix_sums_rows_of_columns() {

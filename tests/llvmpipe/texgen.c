@@ -13,8 +13,11 @@
  * fall in. Keys: prim (tris, points, lines), gen_s/t/r/q (obj, eye, sphere,
  * reflect, normal), os/ot/or/oq and es/et/er/eq (planes "a,b,c,d"), rot
  * (degrees of the drawing modelview), spec (degrees of the modelview the eye
- * planes are given under), tm_rot/tm_scale/tm_tx (texture matrix), unit
- * (the unit used), light (1: GL_LIGHT0 on, MODULATE), env (replace, modulate). */
+ * planes are given under), tz (the grid's distance, default -2.5: -1.2
+ * crosses the near plane), tm_rot/tm_scale/tm_tx (texture matrix), unit
+ * (the unit used), light (1: GL_LIGHT0 on, MODULATE), env (replace,
+ * modulate), arrays (1: triangles from client arrays, the coordinates through
+ * glClientActiveTexture and glTexCoordPointer). */
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -116,7 +119,7 @@ static void scene(void) {
   glScalef(sc, sc, 1.0f);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  glTranslatef(0.0f, 0.0f, -2.5f);
+  glTranslatef(0.0f, 0.0f, getf("tz", -2.5f));
   glRotatef(getf("rot", 0), 1.0f, 0.5f, 0.25f);
   glEnable(GL_NORMALIZE);
   glEnable(GL_DEPTH_TEST);
@@ -138,6 +141,27 @@ static void scene(void) {
       for (int i = 0; i <= 8; i++) vertex(i, j, unit);
       glEnd();
     }
+  } else if (getf("arrays", 0) != 0) {
+    static float pos[6 * 64 * 3], nrm[6 * 64 * 3], tc[6 * 64 * 2];
+    int k = 0;
+    for (int j = 0; j < 8; j++)
+      for (int i = 0; i < 8; i++) {
+        int di[6] = {0, 1, 1, 0, 1, 0}, dj[6] = {0, 0, 1, 0, 1, 1};
+        for (int v = 0; v < 6; v++, k++) {
+          float x = -1.0f + (i + di[v]) / 4.0f, y = -1.0f + (j + dj[v]) / 4.0f;
+          pos[3 * k] = x; pos[3 * k + 1] = y; pos[3 * k + 2] = (x * x - y * y) / 4.0f;
+          nrm[3 * k] = -x / 2.0f; nrm[3 * k + 1] = y / 2.0f; nrm[3 * k + 2] = 1.0f;
+          tc[2 * k] = (x + 1.0f) / 2.0f; tc[2 * k + 1] = (y + 1.0f) / 2.0f;
+        }
+      }
+    glVertexPointer(3, GL_FLOAT, 0, pos);
+    glNormalPointer(GL_FLOAT, 0, nrm);
+    glClientActiveTexture(GL_TEXTURE0 + unit);
+    glTexCoordPointer(2, GL_FLOAT, 0, tc);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glDrawArrays(GL_TRIANGLES, 0, k);
   } else {
     glBegin(GL_TRIANGLES);
     for (int j = 0; j < 8; j++)
