@@ -129,42 +129,51 @@ fn texels(c: &mut Criterion) {
     ] {
         let key = key(filter, mip);
         let specialist = Specialist::compile(&key).expect("the bench key compiles");
-        group.bench_function(format!("{name}/jit"), |b| {
-            b.iter(|| {
-                let mut t = Target::new(
-                    SIZE,
-                    SIZE,
-                    ColorFormat::Rgba8,
-                    &mut color,
-                    SIZE as usize * 4,
-                    None,
-                    None,
-                )
-                .expect("buffer sized for the target");
-                specialist
-                    .run_with_planes(&u, &set, black_box(&spans), &planes, &mut t)
+        for backend in ["jit", "interpreter"] {
+            group.bench_function(format!("{name}/{backend}"), |b| {
+                b.iter(|| {
+                    let mut t = Target::new(
+                        SIZE,
+                        SIZE,
+                        ColorFormat::Rgba8,
+                        &mut color,
+                        SIZE as usize * 4,
+                        None,
+                        None,
+                    )
+                    .expect("buffer sized for the target");
+                    let spans = black_box(&spans);
+                    match backend {
+                        "jit" => specialist.run_with_planes(&u, &set, spans, &planes, &mut t),
+                        _ => interp::run_with_planes(&key, &u, &set, spans, &planes, &mut t),
+                    }
                     .expect("the key names the buffers");
-            })
-        });
-        group.bench_function(format!("{name}/interpreter"), |b| {
-            b.iter(|| {
-                let mut t = Target::new(
-                    SIZE,
-                    SIZE,
-                    ColorFormat::Rgba8,
-                    &mut color,
-                    SIZE as usize * 4,
-                    None,
-                    None,
-                )
-                .expect("buffer sized for the target");
-                interp::run_with_planes(&key, &u, &set, black_box(&spans), &planes, &mut t)
-                    .expect("the key names the buffers");
-            })
+                })
+            });
+        }
+    }
+    group.finish();
+}
+
+/// Compile time of textured keys: one trilinear unit; two units (trilinear
+/// and bilinear, the second MODULATE over the first).
+fn compile(c: &mut Criterion) {
+    let one = key(Filter::Linear, MipFilter::Linear);
+    let mut two = one;
+    if let Some(shade) = two.shade.as_mut() {
+        let mut second = shade.tex[0].expect("unit 0 is on");
+        second.sampler.mip = MipFilter::None;
+        second.sampler.wrap = [Wrap::ClampToEdge; 3];
+        shade.tex[1] = Some(second);
+    }
+    let mut group = c.benchmark_group("compile");
+    for (name, key) in [("textured_1_unit", one), ("textured_2_units", two)] {
+        group.bench_function(name, |b| {
+            b.iter(|| black_box(Specialist::compile(&key).expect("compiles")))
         });
     }
     group.finish();
 }
 
-criterion_group!(benches, texels);
+criterion_group!(benches, compile, texels);
 criterion_main!(benches);

@@ -7,7 +7,8 @@
 //! built by the specialist from the [`TextureSet`] at the call boundary and
 //! valid for the whole call; everything in it is read-only.
 
-use crate::texture::{TexUnitKey, TextureSet, MAX_UNITS};
+use crate::texture::lod::LodState;
+use crate::texture::{MipFilter, TexUnitKey, TextureRef, TextureSet, MAX_LEVELS, MAX_UNITS};
 use std::marker::PhantomData;
 
 /// The draw's textures as compiled code sees them. `#[repr(C)]`: the
@@ -18,6 +19,9 @@ pub struct TexView<'a> {
     /// `GL_TEXTURE_ENV_COLOR` of each unit, `env_color[u][channel]`
     /// repeated in four lanes so that one vector load splats it.
     pub env_color: [[[f32; 4]; 4]; MAX_UNITS],
+    /// What generated code samples of the units it samples natively
+    /// (`crate::compile::native_unit`); zero for the others.
+    pub units: [UnitView; MAX_UNITS],
     /// The draw's [`TextureSet`], type-erased, for [`texture_group`].
     set: *const (),
     /// The texture units of the specialist's key.
@@ -25,15 +29,131 @@ pub struct TexView<'a> {
     _borrow: PhantomData<&'a TextureSet<'a>>,
 }
 
+/// One natively sampled unit: the values `crate::texture::sample_quad`
+/// derives from its `TextureRef`, each repeated in four lanes (masks as all
+/// ones or zero), and its levels.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug)]
+pub struct UnitView {
+    /// The base level's width and height as floats (λ is measured in its texels).
+    pub base_size: [[f32; 4]; 2],
+    /// `crate::texture::lod::LodState`'s values and flags.
+    pub min_lod: [f32; 4],
+    pub max_lod: [f32; 4],
+    pub bias: [f32; 4],
+    pub min_max_equal: [i32; 4],
+    pub apply_min: [i32; 4],
+    pub apply_max: [i32; 4],
+    /// No adjustment after log2 (λ's integer part from ρ's exponent).
+    pub exponent_only: [i32; 4],
+    /// The first and last level sampled (`base_level`, `max(max_level, base_level)`).
+    pub first: [i32; 4],
+    pub last: [i32; 4],
+    /// Whether level 0's width and height are powers of two.
+    pub pot: [[i32; 4]; 2],
+    /// Levels `first..=last` (the others zero): every one non-empty, at
+    /// least 1×1, and holding `4 · width · height` bytes.
+    pub levels: [LevelView; MAX_LEVELS],
+}
+
+/// One level of a natively sampled unit.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct LevelView {
+    pub texels: *const u8,
+    pub width: i32,
+    pub height: i32,
+}
+
+impl Default for UnitView {
+    fn default() -> UnitView {
+        UnitView {
+            base_size: [[0.0; 4]; 2],
+            min_lod: [0.0; 4],
+            max_lod: [0.0; 4],
+            bias: [0.0; 4],
+            min_max_equal: [0; 4],
+            apply_min: [0; 4],
+            apply_max: [0; 4],
+            exponent_only: [0; 4],
+            first: [0; 4],
+            last: [0; 4],
+            pot: [[0; 4]; 2],
+            levels: [LevelView {
+                texels: std::ptr::null(),
+                width: 0,
+                height: 0,
+            }; MAX_LEVELS],
+        }
+    }
+}
+
+/// Largest level side the native path takes (its texel offsets stay below 2^31).
+const NATIVE_MAX_SIDE: u32 = 16384;
+
+impl UnitView {
+    /// The view of `tex` for native sampling with `key`, or `None` when a
+    /// level it may read is missing or malformed (the reference reads zeros
+    /// there; the specialist then leaves the whole call to the interpreter).
+    fn new(key: &TexUnitKey, tex: &TextureRef<'_>) -> Option<UnitView> {
+        let first = tex.base_level;
+        let last = tex.max_level.max(first);
+        let image = |l: u32| tex.images.get(l as usize).filter(|im| !im.texels.is_empty());
+        let mut v = UnitView::default();
+        for l in first..=last {
+            let im = image(l)?;
+            let ok = (1..=NATIVE_MAX_SIDE).contains(&im.width)
+                && (1..=NATIVE_MAX_SIDE).contains(&im.height)
+                && im.texels.len() >= 4 * im.width as usize * im.height as usize;
+            if !ok {
+                return None;
+            }
+            *v.levels.get_mut(l as usize)? = LevelView {
+                texels: im.texels.as_ptr(),
+                width: im.width as i32,
+                height: im.height as i32,
+            };
+        }
+        let base = image(first)?;
+        let level0 = image(0).unwrap_or(base);
+        let mask = |b: bool| [-i32::from(b); 4];
+        let s = LodState::new(&key.sampler, tex);
+        v.base_size = [[base.width as f32; 4], [base.height as f32; 4]];
+        v.min_lod = [s.min_lod; 4];
+        v.max_lod = [s.max_lod; 4];
+        v.bias = [s.bias; 4];
+        v.min_max_equal = mask(s.min_max_equal);
+        v.apply_min = mask(s.apply_min);
+        v.apply_max = mask(s.apply_max);
+        v.exponent_only = mask(s.bias == 0.0 && !s.apply_min && !s.apply_max && key.sampler.mip != MipFilter::Linear);
+        v.first = [first as i32; 4];
+        v.last = [last as i32; 4];
+        v.pot = [
+            mask(level0.width.max(1).is_power_of_two()),
+            mask(level0.height.max(1).is_power_of_two()),
+        ];
+        Some(v)
+    }
+}
+
 impl<'a> TexView<'a> {
-    /// The view of `set` for a specialist of a key with texture units `keys`.
-    pub fn new(keys: &'a [Option<TexUnitKey>; MAX_UNITS], set: &'a TextureSet<'a>) -> TexView<'a> {
-        TexView {
+    /// The view of `set` for a specialist of a key with texture units
+    /// `keys`, or `None` when a natively sampled unit has no texture or one
+    /// the native path cannot read ([`UnitView::new`]).
+    pub fn new(keys: &'a [Option<TexUnitKey>; MAX_UNITS], set: &'a TextureSet<'a>) -> Option<TexView<'a>> {
+        let mut units = [UnitView::default(); MAX_UNITS];
+        for ((key, tex), view) in keys.iter().zip(&set.units).zip(&mut units) {
+            if let Some(key) = key.as_ref().filter(|k| crate::compile::native_unit(k)) {
+                *view = UnitView::new(key, tex.as_ref()?)?;
+            }
+        }
+        Some(TexView {
             env_color: set.env_color.map(|c| c.map(|v| [v; 4])),
+            units,
             set: (set as *const TextureSet<'a>).cast(),
             keys,
             _borrow: PhantomData,
-        }
+        })
     }
 }
 

@@ -29,8 +29,11 @@ use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use std::mem::offset_of;
 
+mod sample;
 mod shade;
 mod texture;
+
+pub use sample::native_unit;
 
 const I32X4: Type = types::I32X4;
 
@@ -83,9 +86,26 @@ pub enum CompileError {
 /// 309 µs and 440 with it; the register allocator is most of what is left).
 /// The IR verifier runs only in debug builds (it adds 30-60%).
 pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
+    isa_with(false)
+}
+
+/// [`host_isa`] with Cranelift's single-pass register allocator, for keys
+/// with texture units: their functions are 3-10 times larger (per-lane
+/// texel gathers), and the backtracking allocator took 1.9-2.5 ms of CPU for
+/// one or two trilinear units under load where the single-pass one takes
+/// 0.7-0.9 ms (the untextured shaded key: 159 vs 79 µs in the same run;
+/// `jit/benches/texels.rs`, group `compile`, for quiet figures).
+pub fn textured_host_isa() -> Result<OwnedTargetIsa, CompileError> {
+    isa_with(true)
+}
+
+fn isa_with(single_pass: bool) -> Result<OwnedTargetIsa, CompileError> {
     let mut flags = settings::builder();
     let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
     set(&mut flags, "opt_level", "none")?;
+    if single_pass {
+        set(&mut flags, "regalloc_algorithm", "single_pass")?;
+    }
     set(
         &mut flags,
         "enable_verifier",
@@ -188,6 +208,8 @@ struct Gen<'a> {
     fconsts: Vec<(u32, Value)>,
     /// The stack slot of the texture callout's arguments, once made.
     tex_slot: Option<cranelift_codegen::ir::StackSlot>,
+    /// The stack slot of the native sampler's per-lane gathers, once made.
+    lane_slot: Option<cranelift_codegen::ir::StackSlot>,
 }
 
 impl<'a> Gen<'a> {
@@ -201,6 +223,7 @@ impl<'a> Gen<'a> {
             x86: false,
             fconsts: Vec::new(),
             tex_slot: None,
+            lane_slot: None,
         }
     }
 

@@ -27,10 +27,17 @@ pub enum SpecialistError {
     Panic(String),
 }
 
-/// The host ISA, made once per process.
-fn isa() -> Result<&'static OwnedTargetIsa, SpecialistError> {
+/// The host ISA for `key`, made once per process ([`compile::host_isa`],
+/// or [`compile::textured_host_isa`] for keys with texture units).
+fn isa(key: &FragmentKey) -> Result<&'static OwnedTargetIsa, SpecialistError> {
     static ISA: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
-    ISA.get_or_init(|| compile::host_isa().map_err(|e| e.to_string()))
+    static TEXTURED: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
+    let (cell, make): (_, fn() -> Result<OwnedTargetIsa, CompileError>) = if key.shade.is_some_and(|s| s.textured()) {
+        (&TEXTURED, compile::textured_host_isa)
+    } else {
+        (&ISA, compile::host_isa)
+    };
+    cell.get_or_init(|| make().map_err(|e| e.to_string()))
         .as_ref()
         .map_err(|e| SpecialistError::Compile(CompileError::Isa(e.clone())))
 }
@@ -60,7 +67,7 @@ impl Specialist {
     /// Compiles `key`. A panic inside Cranelift is caught and returned as an error.
     pub fn compile(key: &FragmentKey) -> Result<Specialist, SpecialistError> {
         key.validate()?;
-        let isa = isa()?;
+        let isa = isa(key)?;
         catch_unwind(AssertUnwindSafe(|| Self::compile_with(key, isa))).unwrap_or_else(|p| {
             let msg = p
                 .downcast_ref::<&str>()
@@ -133,12 +140,14 @@ impl Specialist {
     ) -> Result<(), FragmentError> {
         check_key(&self.key, target)?;
         check_planes(&self.key, spans, planes)?;
-        let view = self
-            .key
-            .shade
-            .as_ref()
-            .filter(|s| s.textured())
-            .map(|s| TexView::new(&s.tex, textures));
+        let view = match self.key.shade.as_ref().filter(|s| s.textured()) {
+            Some(shade) => match TexView::new(&shade.tex, textures) {
+                Some(view) => Some(view),
+                // A natively sampled unit without a texture it can read.
+                None => return crate::interp::run_with_planes(&self.key, uniforms, textures, spans, planes, target),
+            },
+            None => None,
+        };
         let tex = view
             .as_ref()
             .map_or(std::ptr::null(), |v| (v as *const TexView<'_>).cast());

@@ -764,7 +764,19 @@ fn textured_planes(rng: &mut Rng) -> Planes {
                 continue;
             }
             let slope = [1e-3, 1e-2, 0.1, 1.0][rng.below(4) as usize];
-            p.set(k, tex_float(rng, 1.0), tex_float(rng, slope), tex_float(rng, slope));
+            // Far from the origin now and then (REPEAT of a non-power-of-two
+            // size wraps from the fraction there), and exact power-of-two
+            // slopes (ρ² on the ties of λ's rounding).
+            let a0 = match rng.below(8) {
+                0 => tex_float(rng, 1.0) + [1e3, -3e4, 1e5][rng.below(3) as usize],
+                _ => tex_float(rng, 1.0),
+            };
+            let mut d = || match rng.below(4) {
+                0 => [1.0, 0.5, 0.25, 1.0 / 16.0, 1.0 / 32.0, 1.0 / 64.0, 3.0 / 64.0][rng.below(7) as usize],
+                _ => tex_float(rng, slope),
+            };
+            let (dx, dy) = (d(), d());
+            p.set(k, a0, dx, dy);
         }
     }
     p
@@ -783,32 +795,88 @@ proptest! {
         u in uniforms(),
         seed in any::<u64>(),
     ) {
-        let key = FragmentKey { shade: Some(ShadeKey { color: true, tex, ..shade }), ..key };
-        let mut rng = Rng(softgl_jit::rng::Rng::new((seed ^ (seed >> 32)) as u32));
-        // A unit of the key without a texture in the set now and then.
-        let owned: Vec<Option<OwnedTexture>> = tex
-            .iter()
-            .map(|t| t.as_ref().filter(|_| rng.below(20) != 0).map(|t| OwnedTexture::random(&t.sampler, &mut rng)))
-            .collect();
-        let images: Vec<Vec<Image<'_>>> = owned.iter().map(|o| o.as_ref().map_or_else(Vec::new, OwnedTexture::images)).collect();
-        let mut textures = TextureSet::default();
-        for (unit, o) in owned.iter().enumerate() {
-            textures.units[unit] = o.as_ref().map(|o| o.texture_ref(&images[unit]));
-            textures.env_color[unit] = [0, 1, 2, 3].map(|_| f32::from(rng.byte()) / 255.0);
-        }
-        let mut interp_buf = Buffers::random(&key, &mut rng);
-        let mut spans = spans(&interp_buf, &key, &mut rng);
-        let planes: Vec<Planes> = (0..1 + rng.below(3)).map(|_| textured_planes(&mut rng)).collect();
-        for s in &mut spans {
-            s.planes = rng.below(planes.len() as u64) as u32;
-        }
-        let mut jit_buf = interp_buf.clone();
-        let specialist = Specialist::compile(&key).expect("a valid key compiles");
-        interp::run_with_planes(&key, &u, &textures, &spans, &planes, &mut interp_buf.target()).expect("the key names the buffers");
-        specialist.run_with_planes(&u, &textures, &spans, &planes, &mut jit_buf.target()).expect("the key names the buffers");
-        prop_assert_eq!(&jit_buf.color, &interp_buf.color, "color differs");
-        prop_assert_eq!(&jit_buf.depth16, &interp_buf.depth16, "depth differs");
-        prop_assert_eq!(&jit_buf.depth32, &interp_buf.depth32, "depth differs");
-        prop_assert_eq!(&jit_buf.stencil, &interp_buf.stencil, "stencil differs");
+        textured_case(key, shade, tex, u, seed)?;
     }
+
+    /// Units the specialist samples natively (2D RGBA8, REPEAT or
+    /// CLAMP_TO_EDGE, any filters), one or two.
+    #[test]
+    fn natively_sampled_jit_equals_interpreter(
+        key in key(),
+        shade in shade_key(),
+        units in (native_unit_key(), prop::option::of(native_unit_key())),
+        u in uniforms(),
+        seed in any::<u64>(),
+    ) {
+        let mut tex = [None; MAX_UNITS];
+        (tex[0], tex[1]) = (Some(units.0), units.1);
+        prop_assert!(tex.iter().flatten().all(softgl_jit::compile::native_unit));
+        textured_case(key, shade, tex, u, seed)?;
+    }
+}
+
+/// A unit the specialist samples natively.
+fn native_unit_key() -> impl Strategy<Value = TexUnitKey> {
+    let wrap = || select(&[Wrap::Repeat, Wrap::ClampToEdge][..]);
+    (tex_unit_key(), [wrap(), wrap()]).prop_map(|(mut unit, [s, t])| {
+        let k = &mut unit.sampler;
+        (k.target, k.format, k.compare) = (TexTarget::D2, TexelFormat::Rgba8, None);
+        k.wrap = [s, t, Wrap::Repeat];
+        if unit.base == BaseFormat::Depth {
+            unit.base = BaseFormat::Rgba;
+        }
+        unit
+    })
+}
+
+/// One textured case: `tex` on `shade` on `key`, textures, spans and planes from `seed`.
+fn textured_case(
+    key: FragmentKey,
+    shade: ShadeKey,
+    tex: [Option<TexUnitKey>; MAX_UNITS],
+    u: FragmentUniforms,
+    seed: u64,
+) -> Result<(), TestCaseError> {
+    let key = FragmentKey {
+        shade: Some(ShadeKey {
+            color: true,
+            tex,
+            ..shade
+        }),
+        ..key
+    };
+    let mut rng = Rng(softgl_jit::rng::Rng::new((seed ^ (seed >> 32)) as u32));
+    // A unit of the key without a texture in the set now and then.
+    let owned: Vec<Option<OwnedTexture>> = tex
+        .iter()
+        .map(|t| {
+            t.as_ref()
+                .filter(|_| rng.below(20) != 0)
+                .map(|t| OwnedTexture::random(&t.sampler, &mut rng))
+        })
+        .collect();
+    let images: Vec<Vec<Image<'_>>> = owned
+        .iter()
+        .map(|o| o.as_ref().map_or_else(Vec::new, OwnedTexture::images))
+        .collect();
+    let mut textures = TextureSet::default();
+    for (unit, o) in owned.iter().enumerate() {
+        textures.units[unit] = o.as_ref().map(|o| o.texture_ref(&images[unit]));
+        textures.env_color[unit] = [0, 1, 2, 3].map(|_| f32::from(rng.byte()) / 255.0);
+    }
+    let mut interp_buf = Buffers::random(&key, &mut rng);
+    let mut spans = spans(&interp_buf, &key, &mut rng);
+    let planes: Vec<Planes> = (0..1 + rng.below(3)).map(|_| textured_planes(&mut rng)).collect();
+    for s in &mut spans {
+        s.planes = rng.below(planes.len() as u64) as u32;
+    }
+    let mut jit_buf = interp_buf.clone();
+    let specialist = Specialist::compile(&key).expect("a valid key compiles");
+    interp::run_with_planes(&key, &u, &textures, &spans, &planes, &mut interp_buf.target())
+        .expect("the key names the buffers");
+    specialist
+        .run_with_planes(&u, &textures, &spans, &planes, &mut jit_buf.target())
+        .expect("the key names the buffers");
+    prop_assert_eq!(&jit_buf, &interp_buf, "buffers differ");
+    Ok(())
 }

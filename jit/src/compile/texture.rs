@@ -7,11 +7,13 @@
 //! `crate::texture::environment` in the same order, so the bits equal the
 //! interpreter's.
 
+use super::sample::{native_unit, Projected};
 use super::{mem, Gen, Group, SpanCall, SpanValues};
 use crate::callout::{texture_group, TexCall, TexView};
 use crate::key::ShadeKey;
 use crate::shade::slot;
-use crate::texture::{CombineFn, CombineKey, CombineSrc, Operand, MAX_UNITS};
+use crate::texture::lod::needs_lod;
+use crate::texture::{CombineFn, CombineKey, CombineSrc, Operand, TexUnitKey, MAX_UNITS};
 use cranelift_codegen::ir::{types, AbiParam, InstBuilder, Signature, StackSlot, StackSlotData, StackSlotKind, Value};
 use std::mem::{offset_of, size_of};
 
@@ -24,16 +26,84 @@ impl Gen<'_> {
     /// The colour after the texture environment of `key`'s units over
     /// `primary` (`crate::shade::texture`).
     pub(super) fn texture(&mut self, g: &Group, sv: &SpanValues, key: &ShadeKey, primary: Rgba) -> Rgba {
-        let units: u32 = (0..MAX_UNITS).filter(|&u| key.tex[u].is_some()).map(|u| 1 << u).sum();
-        let slot = self.tex_slot();
-        let args = self.b.ins().stack_addr(self.ptr, slot, 0);
-        self.store_coords(g, sv, (args, units));
+        let mask = |f: &dyn Fn(&TexUnitKey) -> bool| -> u32 {
+            (0..MAX_UNITS)
+                .filter(|&u| key.tex[u].as_ref().is_some_and(f))
+                .map(|u| 1 << u)
+                .sum()
+        };
+        let native = mask(&native_unit);
+        let called = mask(&|_| true) & !native;
         let view = self
             .b
             .ins()
             .load(self.ptr, mem(), sv.call, offset_of!(SpanCall, tex) as i32);
-        let samples = self.call_sampler(g, (args, units), view);
+        let mut samples = [None; MAX_UNITS];
+        if called != 0 {
+            let slot = self.tex_slot();
+            let args = self.b.ins().stack_addr(self.ptr, slot, 0);
+            self.store_coords(g, sv, (args, called));
+            samples = self.call_sampler(g, (args, called), view);
+        }
+        if native != 0 {
+            let lod = key
+                .tex
+                .iter()
+                .flatten()
+                .any(|t| native_unit(t) && needs_lod(&t.sampler));
+            let points = self.native_points(g, sv, lod);
+            for (u, unit) in key.tex.iter().enumerate() {
+                if let Some(unit) = unit.as_ref().filter(|t| native_unit(t)) {
+                    let c = self.project(sv, u, &points, needs_lod(&unit.sampler));
+                    samples[u] = Some(self.sample_native(u, &unit.sampler, view, &c));
+                }
+            }
+        }
         self.environment(key, view, &samples, primary)
+    }
+
+    /// The lanes' pixels and, with `quad`, the top-left, top-right and
+    /// bottom-left pixels of their quads, each with its w.
+    fn native_points(&mut self, g: &Group, sv: &SpanValues, quad: bool) -> Vec<(Value, Value, Value)> {
+        let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
+        let px = g.px.expect("carried by the loop for keys with a shading stage");
+        let mut pts = vec![(px, row)];
+        if quad {
+            let one = self.fconst(1.0);
+            let (qx, _) = self.even(px);
+            let (qy, _) = self.even(row);
+            let qx1 = self.b.ins().fadd(qx, one);
+            let qy1 = self.b.ins().fadd(qy, one);
+            pts.extend([(qx, qy), (qx1, qy), (qx, qy1)]);
+        }
+        pts.into_iter()
+            .map(|(x, y)| {
+                let one = self.fconst(1.0);
+                let iw = self.plane(planes, slot::INV_W, x, y);
+                (x, y, self.b.ins().fdiv(one, iw))
+            })
+            .collect()
+    }
+
+    /// Unit `u`'s s and t at `points`, projected (`s·(1/q)`, Mesa's TXP).
+    fn project(&mut self, sv: &SpanValues, u: usize, points: &[(Value, Value, Value)], quad: bool) -> Projected {
+        let (planes, _, _) = sv.planes.expect("loaded for keys with a shading stage");
+        let at = |s: &mut Self, (x, y, w): (Value, Value, Value)| {
+            let mut c = [0, 1, 3].map(|k| {
+                let v = s.plane(planes, slot::tex(u) + k, x, y);
+                s.b.ins().fmul(v, w)
+            });
+            let one = s.fconst(1.0);
+            let inv = s.b.ins().fdiv(one, c[2]);
+            for v in &mut c[..2] {
+                *v = s.b.ins().fmul(*v, inv);
+            }
+            [c[0], c[1]]
+        };
+        Projected {
+            at: at(self, points[0]),
+            quad: (quad && points.len() == 4).then(|| [1, 2, 3].map(|p| at(self, points[p]))),
+        }
     }
 
     /// Stores the coordinates of the units of `units` at the four pixels of
@@ -126,9 +196,8 @@ impl Gen<'_> {
 
     /// One unit's combine (`crate::texture::env::combine`).
     fn combine(&mut self, k: &CombineKey, source: &mut impl FnMut(&mut Self, CombineSrc) -> Rgba) -> Rgba {
-        let dot3 = matches!(k.rgb, CombineFn::Dot3Rgb | CombineFn::Dot3Rgba);
-        let rgb_shift = if dot3 { 1 } else { k.scale_rgb };
-        let alpha_shift = if k.rgb == CombineFn::Dot3Rgba { 1 } else { k.scale_alpha };
+        // Both scales apply to every function, DOT3 included.
+        let (rgb_shift, alpha_shift) = (k.scale_rgb, k.scale_alpha);
         // The operands a function reads, in the channels it reads.
         let mut args = |s: &mut Self, f: CombineFn, srcs: [CombineSrc; 3], ops: [Operand; 3], channels: &[usize]| {
             let mut a = [[None; 4]; 3];
@@ -216,9 +285,10 @@ impl Gen<'_> {
                 CombineFn::Modulate => self.b.ins().fmul(x, y),
                 CombineFn::Add => self.b.ins().fadd(x, y),
                 CombineFn::AddSigned => {
-                    let v = self.b.ins().fadd(x, y);
+                    // `(x + -0.5) + y`, the order NIR's algebraic pass leaves.
                     let h = self.fconst(-0.5);
-                    self.b.ins().fadd(v, h)
+                    let v = self.b.ins().fadd(x, h);
+                    self.b.ins().fadd(v, y)
                 }
                 CombineFn::Interpolate => {
                     let z = arg(2, ch);
