@@ -8,6 +8,7 @@ mod current;
 use current::{GL_INVALID_ENUM, GL_INVALID_OPERATION, GL_INVALID_VALUE};
 use std::ffi::c_void;
 use std::ptr::null;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use OSMesa::consts::*;
 use OSMesa::*;
 
@@ -723,5 +724,312 @@ fn a_nearest_texture_covers_its_quadrants() {
     assert_eq!(glGetError(), GL_NO_ERROR);
     assert_eq!(px(&buf, 1, 1), [0, 255, 0, 255]);
     assert_eq!(px(&buf, 6, 6), [0, 0, 255, 255]);
+    OSMesaDestroyContext(ctx);
+}
+
+/// softgl's deterministic generator, so a failure replays.
+struct Rng(softgl::rng::Rng);
+
+impl Rng {
+    fn n(&mut self, k: u64) -> u64 {
+        self.0.next_u64() % k
+    }
+
+    fn pick<T: Copy>(&mut self, v: &[T]) -> T {
+        self.0.pick(v)
+    }
+
+    fn size(&mut self) -> i32 {
+        self.pick(&[-1, 0, 1, 1, 2, 3, 4, 5, 8])
+    }
+
+    fn float(&mut self) -> f32 {
+        self.pick(&[
+            f32::NAN,
+            f32::INFINITY,
+            -1e38,
+            -2.0,
+            -0.5,
+            0.0,
+            0.25,
+            0.5,
+            1.0,
+            3.7,
+            1e6,
+            1e38,
+        ])
+    }
+}
+
+#[test]
+fn random_texture_calls_neither_panic_nor_write_outside_the_buffers() {
+    // Panics on this test's thread (the exports' guards would hide them).
+    static PANICS: AtomicUsize = AtomicUsize::new(0);
+    let me = std::thread::current().name().map(str::to_owned);
+    let previous = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if std::thread::current().name().map(str::to_owned) == me {
+            PANICS.fetch_add(1, Ordering::SeqCst);
+        }
+        previous(info);
+    }));
+    let mut buf = vec![0u8; 8 * 8 * 4];
+    let ctx = current(&mut buf);
+    let mut r = Rng(softgl::rng::Rng::new(0x7E47_0012));
+    // Uploads read from `src`, which holds every layout the sizes and unpack
+    // values below make (at most 11,200 bytes); glGetTexImage writes into
+    // `dst`, whose tail must stay untouched.
+    let src: Vec<u8> = (0..16384u32).map(|k| (k * 37 % 251) as u8).collect();
+    const LEN: usize = 16384;
+    let mut dst = vec![0x5Cu8; LEN + 64];
+    let targets = [
+        GL_TEXTURE_1D,
+        GL_TEXTURE_2D,
+        GL_TEXTURE_3D,
+        GL_TEXTURE_CUBE_MAP,
+        0x8515,
+        0x851A,
+        GL_PROXY_TEXTURE_2D,
+        0x1234,
+    ];
+    let internals = [
+        3,
+        4,
+        GL_RGBA8,
+        GL_LUMINANCE8,
+        0x8049,
+        0x8C43,
+        0x8C41,
+        0x803C,
+        1,
+        0x81A6,
+        0x1234,
+        0,
+    ];
+    let pairs = [
+        (GL_RGBA, GL_UNSIGNED_BYTE),
+        (GL_RGB, GL_UNSIGNED_BYTE),
+        (GL_BGRA, GL_UNSIGNED_BYTE),
+        (GL_LUMINANCE, GL_FLOAT),
+        (GL_LUMINANCE_ALPHA, GL_SHORT),
+        (GL_RGB, GL_UNSIGNED_SHORT_5_6_5),
+        (GL_RGBA, 0x8033),
+        (GL_BGRA, 0x8367),
+        (GL_RGBA, 0x8368),
+        (GL_ALPHA, GL_BYTE),
+        (GL_RED, GL_UNSIGNED_INT),
+    ];
+    let formats = [
+        GL_RGBA,
+        GL_RGB,
+        GL_BGRA,
+        GL_LUMINANCE,
+        GL_LUMINANCE_ALPHA,
+        GL_ALPHA,
+        GL_RED,
+        GL_DEPTH_COMPONENT,
+        GL_COLOR_INDEX,
+        0x1234,
+    ];
+    let types = [
+        GL_UNSIGNED_BYTE,
+        GL_BYTE,
+        GL_SHORT,
+        GL_UNSIGNED_INT,
+        GL_FLOAT,
+        GL_UNSIGNED_SHORT_5_6_5,
+        0x8033,
+        0x8367,
+        0x8368,
+        0x1234,
+    ];
+    let pnames = [
+        GL_TEXTURE_MIN_FILTER,
+        GL_TEXTURE_MAG_FILTER,
+        GL_TEXTURE_WRAP_S,
+        GL_TEXTURE_WRAP_T,
+        0x8072,
+        GL_TEXTURE_MIN_LOD,
+        GL_TEXTURE_MAX_LEVEL,
+        0x813C,
+        0x8501,
+        0x8191,
+        0x884C,
+        0x884B,
+        0x1234,
+    ];
+    let values = [
+        GL_NEAREST,
+        GL_LINEAR,
+        GL_LINEAR_MIPMAP_LINEAR,
+        0x2700,
+        GL_REPEAT,
+        GL_CLAMP_TO_EDGE,
+        0x812D,
+        0x8370,
+        0x2900,
+        0x884E,
+        0,
+        1,
+        7,
+        1000,
+        0x1234,
+    ];
+    let env = [
+        (GL_TEXTURE_ENV_MODE, GL_MODULATE),
+        (GL_TEXTURE_ENV_MODE, GL_DECAL),
+        (GL_TEXTURE_ENV_MODE, 0x0BE2),
+        (GL_TEXTURE_ENV_MODE, 0x0104),
+        (GL_TEXTURE_ENV_MODE, GL_COMBINE),
+        (GL_COMBINE_RGB, GL_DOT3_RGB),
+        (GL_COMBINE_RGB, 0x8575),
+        (GL_SOURCE1_RGB, 0x84C5),
+        (GL_SOURCE1_RGB, 0x8576),
+        (GL_OPERAND2_ALPHA, GL_ONE_MINUS_SRC_ALPHA),
+        (GL_RGB_SCALE, 4),
+        (0x1234, 0),
+    ];
+    let (mut seen, mut uploads) = ([0usize; 2], [0usize; 2]);
+    for step in 0..6000 {
+        let t = r.pick(&targets);
+        match r.n(24) {
+            0..=3 => {
+                for p in [
+                    GL_UNPACK_ROW_LENGTH,
+                    GL_UNPACK_SKIP_ROWS,
+                    GL_UNPACK_SKIP_PIXELS,
+                    GL_UNPACK_IMAGE_HEIGHT,
+                ] {
+                    glPixelStorei(p, r.pick(&[0, 0, 1, 2, 10]));
+                }
+                glPixelStorei(GL_UNPACK_SKIP_IMAGES, r.pick(&[0, 1]));
+                glPixelStorei(GL_UNPACK_ALIGNMENT, r.pick(&[1, 2, 4, 8]));
+                // Mostly valid calls (each argument bad one time in 8), so that
+                // uploads of every kind are made, not only refused.
+                let dims = 1 + r.n(3);
+                let good = [[GL_TEXTURE_1D; 2], [GL_TEXTURE_2D, 0x8517], [GL_TEXTURE_3D; 2]][dims as usize - 1];
+                let t = if r.n(8) == 0 { t } else { r.pick(&good) };
+                let (w, h, d) = (r.size(), r.size(), r.size().min(4));
+                let (level, border) = (r.pick(&[0, 0, 0, 1, 2, -1]), r.pick(&[0, 0, 0, 0, 1, 2]));
+                let i = if r.n(8) == 0 {
+                    r.pick(&internals)
+                } else {
+                    r.pick(&internals[..6])
+                };
+                let (f, ty) = if r.n(8) == 0 {
+                    (r.pick(&formats), r.pick(&types))
+                } else {
+                    r.pick(&pairs)
+                };
+                let p = if r.n(8) == 0 { null() } else { src.as_ptr().cast() };
+                // SAFETY: `src` holds every layout these sizes and unpack values make.
+                unsafe {
+                    match (dims, r.n(3)) {
+                        (1, _) => glTexImage1D(t, level, i, w, border, f, ty, p),
+                        (3, _) => glTexImage3D(t, level, i, w, h, d, border, f, ty, p),
+                        (_, 0) => glTexSubImage2D(t, level, r.size(), r.size(), w, h, f, ty, p),
+                        _ => glTexImage2D(t, level, i, w, h, border, f, ty, p),
+                    }
+                }
+                uploads[usize::from(glGetError() == GL_NO_ERROR)] += 1;
+            }
+            4 => {
+                for p in [
+                    GL_PACK_ROW_LENGTH,
+                    GL_PACK_SKIP_ROWS,
+                    GL_PACK_SKIP_PIXELS,
+                    GL_PACK_IMAGE_HEIGHT,
+                ] {
+                    glPixelStorei(p, r.pick(&[0, 0, 1, 2, 10]));
+                }
+                glPixelStorei(GL_PACK_ALIGNMENT, r.pick(&[1, 2, 4, 8]));
+                // SAFETY: the largest level here (10 x 10 x 6 with borders, 16
+                // bytes a pixel, the pack values above) fits in LEN bytes.
+                unsafe {
+                    glGetTexImage(
+                        t,
+                        r.pick(&[-1, 0, 1]),
+                        r.pick(&formats),
+                        r.pick(&types),
+                        dst.as_mut_ptr().cast(),
+                    )
+                };
+            }
+            5 => glTexParameteri(t, r.pick(&pnames), r.pick(&values) as i32),
+            6 => glTexParameterf(t, r.pick(&pnames), r.float()),
+            7 => {
+                let (p, v) = r.pick(&env);
+                glTexEnvi(r.pick(&[GL_TEXTURE_ENV, GL_TEXTURE_ENV, 0x8500]), p, v as i32);
+            }
+            8 => glTexGeni(
+                r.pick(&[0x2000, GL_T, GL_R, 0x2003, 0x1234]),
+                GL_TEXTURE_GEN_MODE,
+                r.pick(&[0x2400, GL_OBJECT_LINEAR, GL_SPHERE_MAP, 0x8511, 0x8512, 0x1234]) as i32,
+            ),
+            9 => glEnable(r.pick(&[
+                GL_TEXTURE_1D,
+                GL_TEXTURE_2D,
+                GL_TEXTURE_3D,
+                GL_TEXTURE_CUBE_MAP,
+                0x0C60,
+                GL_TEXTURE_GEN_T,
+                0x0C62,
+                0x0C63,
+            ])),
+            10 => glDisable(r.pick(&[GL_TEXTURE_2D, GL_TEXTURE_GEN_T, GL_TEXTURE_CUBE_MAP])),
+            11 => glActiveTexture(GL_TEXTURE0 + r.n(10) as u32),
+            12 => glBindTexture(t, r.n(6) as u32),
+            13 => {
+                let names: Vec<u32> = (0..r.n(3)).map(|_| r.n(6) as u32).collect();
+                // SAFETY: `names` holds the count given.
+                unsafe { glDeleteTextures(names.len() as i32, names.as_ptr()) };
+            }
+            14 => {
+                gen_texture();
+            }
+            15 => glGenerateMipmap(t),
+            16 => glCopyTexImage2D(
+                t,
+                r.pick(&[0, 1, -1]),
+                r.pick(&[GL_RGBA, GL_RGB, 0x1902, 0x1234]),
+                r.size(),
+                r.size(),
+                r.size(),
+                r.size(),
+                r.pick(&[0, 1]),
+            ),
+            17 => glCopyTexSubImage2D(t, 0, r.size(), r.size(), r.size(), r.size(), r.size(), r.size()),
+            18 => glMultiTexCoord4f(GL_TEXTURE0 + r.n(9) as u32, r.float(), r.float(), r.float(), r.float()),
+            19 => glPushAttrib(r.pick(&[GL_TEXTURE_BIT, GL_ENABLE_BIT, GL_TEXTURE_BIT | GL_ENABLE_BIT])),
+            20 => glPopAttrib(),
+            21 => {
+                glMatrixMode(GL_TEXTURE);
+                glScalef(r.float(), r.float(), 1.0);
+                glMatrixMode(GL_MODELVIEW);
+            }
+            22 => {
+                glColor4f(r.float(), 0.5, 0.5, 1.0);
+                quad();
+            }
+            _ => {
+                glFinish();
+                let e = glGetError();
+                assert!(
+                    e == GL_NO_ERROR || (0x500..=0x505).contains(&e),
+                    "step {step}: error {e:#x}"
+                );
+                seen[usize::from(e != GL_NO_ERROR)] += 1;
+            }
+        }
+        assert_eq!(PANICS.load(Ordering::SeqCst), 0, "a panic at step {step}");
+    }
+    glFinish();
+    assert!(
+        dst[LEN..].iter().all(|&b| b == 0x5C),
+        "written past the caller's buffer"
+    );
+    println!("glGetError outcomes {seen:?}, uploads failed and made {uploads:?}");
+    assert!(seen[0] > 10 && seen[1] > 10, "glGetError outcomes {seen:?}");
+    assert!(uploads[1] > 50, "uploads failed and made {uploads:?}");
     OSMesaDestroyContext(ctx);
 }

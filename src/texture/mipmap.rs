@@ -25,7 +25,8 @@ pub fn generate(obj: &mut TextureObject, faces: std::ops::Range<usize>) {
     let Some(last) = obj.last_level() else { return };
     for face in faces {
         for level in base + 1..=last {
-            let Some(src) = obj.image(level - 1, face) else {
+            // An empty level (a 3D image of depth 0) has nothing to filter.
+            let Some(src) = obj.image(level - 1, face).filter(|s| !s.size().contains(&0)) else {
                 break;
             };
             let dst = downsample(src, next_size(obj.target, src.size()));
