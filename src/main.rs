@@ -1,4 +1,7 @@
-//! The `softgl` command: renders the built-in demo scene to a PNG.
+//! The `softgl` command: renders the built-in demo scene, or an OBJ model
+//! with its materials and textures ([`render`]), to a PNG.
+
+mod render;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -21,6 +24,18 @@ enum Command {
     Demo {
         /// Output PNG path.
         #[arg(short, long, default_value = "demo.png")]
+        output: PathBuf,
+        /// Image size as WIDTHxHEIGHT (each 1..=16384).
+        #[arg(long, default_value = "800x600", value_parser = parse_size)]
+        size: (u32, u32),
+    },
+    /// Render a Wavefront OBJ model (with its MTL materials and diffuse
+    /// textures) to a PNG file, framed and lit.
+    Render {
+        /// The .obj file.
+        model: PathBuf,
+        /// Output PNG path.
+        #[arg(short, long)]
         output: PathBuf,
         /// Image size as WIDTHxHEIGHT (each 1..=16384).
         #[arg(long, default_value = "800x600", value_parser = parse_size)]
@@ -61,6 +76,31 @@ fn main() -> ExitCode {
                 return ExitCode::FAILURE;
             }
             println!("wrote {} ({w}x{h})", output.display());
+            ExitCode::SUCCESS
+        }
+        Command::Render {
+            model,
+            output,
+            size: (w, h),
+        } => {
+            let result = render::load(&model).and_then(|m| Ok((render::render(&m, w, h)?, m)));
+            let (image, m) = match result {
+                Ok(r) => r,
+                Err(e) => {
+                    eprintln!("softgl: {e}");
+                    return ExitCode::FAILURE;
+                }
+            };
+            if let Err(e) = image.save_with_format(&output, image::ImageFormat::Png) {
+                eprintln!("softgl: cannot write {}: {e}", output.display());
+                return ExitCode::FAILURE;
+            }
+            println!(
+                "wrote {} ({w}x{h}): {} triangles, {} textured meshes",
+                output.display(),
+                m.triangles(),
+                m.textured_meshes()
+            );
             ExitCode::SUCCESS
         }
     }

@@ -3,7 +3,9 @@
 
 use softgl::{
     BlendEquation, BlendFactor, Capability, ClearMask, ColorMaterialMode, CompareFunc, Face, FogParam, FrontFace,
-    LightModelParam, LightParam, LogicOp, MaterialParam, MatrixMode, PolygonMode, PrimitiveMode, ShadeModel, StencilOp,
+    InternalFormat, LightModelParam, LightParam, LogicOp, MaterialParam, MatrixMode, PixelFormat, PixelType,
+    PolygonMode, PrimitiveMode, ShadeModel, StencilOp, TexCoordName, TexEnvParam, TexGenParam, TexImageTarget,
+    TexParam, TextureTarget,
 };
 
 /// One GL 1.x call, with GL's arguments.
@@ -71,6 +73,30 @@ pub enum Call {
     ColorMaterial(Face, ColorMaterialMode),
     /// `glClipPlane(GL_CLIP_PLANE0 + index, equation)`.
     ClipPlane(u32, [f64; 4]),
+    /// `glActiveTexture(GL_TEXTURE0 + unit)`.
+    ActiveTexture(u32),
+    /// `glBindTexture` on the active unit; the scene picks the names (GL
+    /// makes the object at its first bind).
+    BindTexture(TextureTarget, u32),
+    /// `glTexImage1D/2D/3D` (border 0) at GL's default unpack state: rows
+    /// start on 4-byte boundaries, as [`Rec::tex_image`] lays them out.
+    TexImage {
+        target: TexImageTarget,
+        level: i32,
+        internal: InternalFormat,
+        size: [i32; 3],
+        format: PixelFormat,
+        ty: PixelType,
+        pixels: Vec<u8>,
+    },
+    /// `glTexParameter*` on the active unit's texture of a target.
+    TexParameter(TextureTarget, TexParam),
+    /// `glTexEnv*` on the active unit.
+    TexEnv(TexEnvParam),
+    /// `glTexGen*` on the active unit.
+    TexGen(TexCoordName, TexGenParam),
+    /// `glMultiTexCoord4f(GL_TEXTURE0 + unit, …)` (unit 0 is `glTexCoord4f`).
+    TexCoord(u32, [f32; 4]),
     /// `glDrawArrays` over client arrays of 4-component positions and colours.
     DrawArrays {
         mode: PrimitiveMode,
@@ -170,6 +196,46 @@ impl Rec {
             .vertex(x0, y1, z)
             .vertex(x1, y1, z)
             .end()
+    }
+    /// `glTexCoord2f`.
+    pub fn tex_coord(&mut self, s: f32, t: f32) -> &mut Self {
+        self.call(Call::TexCoord(0, [s, t, 0.0, 1.0]))
+    }
+    pub fn tex_parameter(&mut self, target: TextureTarget, p: TexParam) -> &mut Self {
+        self.call(Call::TexParameter(target, p))
+    }
+    pub fn tex_env(&mut self, p: TexEnvParam) -> &mut Self {
+        self.call(Call::TexEnv(p))
+    }
+    /// `glTexImage*` of unsigned bytes, `components` per texel, `size`
+    /// texels, given tightly packed: rows are padded to GL's default
+    /// 4-byte unpack alignment here.
+    pub fn tex_image(
+        &mut self,
+        target: TexImageTarget,
+        level: i32,
+        internal: InternalFormat,
+        format: PixelFormat,
+        size: [i32; 3],
+        texels: &[u8],
+    ) -> &mut Self {
+        let components = format.components().len();
+        let row = size[0] as usize * components;
+        let padded = row.div_ceil(4) * 4;
+        let mut pixels = Vec::with_capacity(padded * texels.len() / row.max(1));
+        for r in texels.chunks(row.max(1)) {
+            pixels.extend_from_slice(r);
+            pixels.resize(pixels.len() + padded - r.len(), 0);
+        }
+        self.call(Call::TexImage {
+            target,
+            level,
+            internal,
+            size,
+            format,
+            ty: PixelType::UnsignedByte,
+            pixels,
+        })
     }
     /// The colour a scene clears to first, if it sets one (for coverage).
     pub fn background(calls: &[Call]) -> [u8; 4] {

@@ -5,7 +5,8 @@
 //!
 //! - [`call`]: the GL-shaped interface every back end replays;
 //! - [`scenes`]: the scenes, each with its tolerance and the reason (and
-//!   [`scenes::oracle`], the exact answers);
+//!   [`scenes::oracle`], the exact answers; [`scenes::glu`], the mipmaps
+//!   `gluBuild2DMipmaps` makes);
 //! - [`backend`]: softgl in process, the references in child processes;
 //! - [`metrics`]: distances between images;
 //! - [`missing`]: what a check does when a reference is not installed;

@@ -23,7 +23,7 @@ use std::sync::Mutex;
 
 const EXE: &str = env!("CARGO_BIN_EXE_softgl-conformance");
 
-const GROUPS: [(&str, Group); 7] = [
+const GROUPS: [(&str, Group); 8] = [
     ("stages_alone", Group::Stage),
     ("combinations", Group::Combination),
     ("primitives", Group::Primitive),
@@ -31,6 +31,7 @@ const GROUPS: [(&str, Group); 7] = [
     ("timing_scenes_small", Group::Timing),
     ("fog_and_color_sum", Group::Fog),
     ("lighting_and_clip_planes", Group::Lighting),
+    ("texturing", Group::Texture),
 ];
 
 /// The test that probes the references.

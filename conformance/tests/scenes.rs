@@ -47,3 +47,17 @@ fn the_timing_scenes_draw_20k_triangles_at_1024() {
     let vertices = rec.calls.iter().filter(|c| matches!(c, Call::Vertex(_))).count();
     assert!(vertices >= 3 * 20_000, "{vertices} vertices");
 }
+
+#[test]
+fn texture_scenes_make_no_gl_error_on_softgl() {
+    use softgl::{Context, FramebufferDesc};
+    use softgl_conformance::backend::softgl::replay;
+    for s in scenes::all().into_iter().filter(|s| s.group == Group::Texture) {
+        let rec = s.record(false);
+        let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(rec.width, rec.height)).expect("context");
+        for (i, c) in rec.calls.iter().enumerate() {
+            let r = replay(&mut gl, c);
+            assert!(r.is_ok(), "{}: call {i} {c:?}: {r:?}", s.name);
+        }
+    }
+}

@@ -1,13 +1,14 @@
 #!/bin/sh
 # softgl's libOSMesa.so.8 against Mesa's llvmpipe (1 and 2 threads), the same
-# client (osmesa/bench/fill.c), interleaved round by round; prints the median of
+# client (osmesa/bench/fill.c; `tex` is the textured frame of issue 12),
+# interleaved round by round; prints the median of
 # the rounds' medians per case and the ratio softgl / llvmpipe. Not a test.
 #   cargo build --release -p softgl-osmesa && sh osmesa/bench/compare.sh [ROUNDS] [CASES...]
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 lib=${SOFTGL_LIB:-$here/../../target/release/osmesa}
 rounds=${1:-3}; [ $# -gt 0 ] && shift
-cases=${*:-fill depth tris lit}
+cases=${*:-fill depth tris lit tex}
 bin=$(mktemp -d)/fill
 cc -O2 "$here/fill.c" -o "$bin" -lOSMesa -lGLU -lm
 median() { sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }

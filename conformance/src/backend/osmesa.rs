@@ -5,7 +5,9 @@
 use super::{Outcome, Timing};
 use crate::call::{clear_bits, Call};
 use crate::scenes::Recording;
+use softgl::texture::min_filter_to_gl;
 use softgl::{ColorFormat, FogParam, GlEnum, LightModelParam, LightParam, MaterialParam};
+use softgl::{MipFilter, TexEnvParam, TexGenParam, TexImageTarget, TexParam, TextureTarget};
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::time::Instant;
 
@@ -18,6 +20,7 @@ const GL_FLOAT: u32 = 0x1406;
 const GL_VERTEX_ARRAY: u32 = 0x8074;
 const GL_COLOR_ARRAY: u32 = 0x8076;
 const GL_RENDERER: u32 = 0x1F01;
+const GL_TEXTURE0: u32 = 0x84C0;
 
 /// The library name the loader looks for.
 pub const LIBRARY: &str = "libOSMesa.so.8";
@@ -107,6 +110,20 @@ gl_fns! {
     glDrawArrays(u32, i32, i32);
     glFinish();
     glGetString(u32) -> *const u8;
+    glActiveTexture(u32);
+    glBindTexture(u32, u32);
+    glTexImage1D(u32, i32, i32, i32, i32, u32, u32, *const c_void);
+    glTexImage2D(u32, i32, i32, i32, i32, i32, u32, u32, *const c_void);
+    glTexImage3D(u32, i32, i32, i32, i32, i32, i32, u32, u32, *const c_void);
+    glTexParameteri(u32, u32, i32);
+    glTexParameterf(u32, u32, f32);
+    glTexParameterfv(u32, u32, *const f32);
+    glTexEnvi(u32, u32, i32);
+    glTexEnvf(u32, u32, f32);
+    glTexEnvfv(u32, u32, *const f32);
+    glTexGeni(u32, u32, i32);
+    glTexGenfv(u32, u32, *const f32);
+    glMultiTexCoord4f(u32, f32, f32, f32, f32);
 }
 
 type CreateContextExt = unsafe extern "C" fn(u32, i32, i32, i32, Ctx) -> Ctx;
@@ -349,6 +366,87 @@ impl Context<'_> {
                 }
                 Call::ColorMaterial(face, mode) => (g.glColorMaterial)(face.to_gl(), mode.to_gl()),
                 Call::ClipPlane(i, p) => (g.glClipPlane)(0x3000 + i, p.as_ptr()), // GL_CLIP_PLANE0 + i
+                Call::ActiveTexture(u) => (g.glActiveTexture)(GL_TEXTURE0 + u),
+                Call::BindTexture(t, name) => (g.glBindTexture)(t.to_gl(), *name),
+                Call::TexImage {
+                    target,
+                    level,
+                    internal,
+                    size: [w, h, d],
+                    format,
+                    ty,
+                    pixels,
+                } => {
+                    // Read during the call only, while `pixels` is borrowed.
+                    let (t, i, f, ty, p) = (
+                        target.to_gl(),
+                        internal.to_gl() as i32,
+                        format.to_gl(),
+                        ty.to_gl(),
+                        pixels.as_ptr().cast(),
+                    );
+                    match target {
+                        TexImageTarget::D1 | TexImageTarget::Proxy(TextureTarget::D1) => {
+                            (g.glTexImage1D)(t, *level, i, *w, 0, f, ty, p)
+                        }
+                        TexImageTarget::D3 | TexImageTarget::Proxy(TextureTarget::D3) => {
+                            (g.glTexImage3D)(t, *level, i, *w, *h, *d, 0, f, ty, p)
+                        }
+                        _ => (g.glTexImage2D)(t, *level, i, *w, *h, 0, f, ty, p),
+                    }
+                }
+                Call::TexParameter(target, p) => {
+                    let t = target.to_gl();
+                    let int = |pname: u32, v: u32| (g.glTexParameteri)(t, pname, v as i32);
+                    match p {
+                        TexParam::MinFilter(f, m) => int(0x2801, min_filter_to_gl(*f, *m)),
+                        TexParam::MagFilter(f) => int(0x2800, min_filter_to_gl(*f, MipFilter::None)),
+                        TexParam::WrapS(w) => int(0x2802, w.to_gl()),
+                        TexParam::WrapT(w) => int(0x2803, w.to_gl()),
+                        TexParam::WrapR(w) => int(0x8072, w.to_gl()),
+                        TexParam::BorderColor(c) => (g.glTexParameterfv)(t, 0x1004, c.as_ptr()),
+                        TexParam::MinLod(v) => (g.glTexParameterf)(t, 0x813A, *v),
+                        TexParam::MaxLod(v) => (g.glTexParameterf)(t, 0x813B, *v),
+                        TexParam::BaseLevel(v) => (g.glTexParameteri)(t, 0x813C, *v),
+                        TexParam::MaxLevel(v) => (g.glTexParameteri)(t, 0x813D, *v),
+                        TexParam::LodBias(v) => (g.glTexParameterf)(t, 0x8501, *v),
+                        // GL_COMPARE_R_TO_TEXTURE or GL_NONE
+                        TexParam::CompareMode(on) => int(0x884C, if *on { 0x884E } else { 0 }),
+                        TexParam::CompareFunc(f) => int(0x884D, f.to_gl()),
+                        TexParam::DepthMode(m) => int(0x884B, m.to_gl()),
+                        TexParam::Priority(v) => (g.glTexParameterf)(t, 0x8066, *v),
+                        TexParam::GenerateMipmap(on) => int(0x8191, u32::from(*on)),
+                        // Query only: GL_INVALID_ENUM in Mesa too.
+                        TexParam::Resident(_) => int(0x8067, 1),
+                    }
+                }
+                Call::TexEnv(p) => {
+                    const ENV: u32 = 0x2300; // GL_TEXTURE_ENV
+                    let int = |pname: u32, v: u32| (g.glTexEnvi)(ENV, pname, v as i32);
+                    match p {
+                        TexEnvParam::Mode(m) => int(0x2200, m.to_gl()),
+                        TexEnvParam::Color(c) => (g.glTexEnvfv)(ENV, 0x2201, c.as_ptr()),
+                        TexEnvParam::CombineRgb(f) => int(0x8571, f.to_gl()),
+                        TexEnvParam::CombineAlpha(f) => int(0x8572, f.to_gl()),
+                        TexEnvParam::SrcRgb(n, src) => int(0x8580 + u32::from(*n), src.to_gl()),
+                        TexEnvParam::SrcAlpha(n, src) => int(0x8588 + u32::from(*n), src.to_gl()),
+                        TexEnvParam::OperandRgb(n, o) => int(0x8590 + u32::from(*n), o.to_gl()),
+                        TexEnvParam::OperandAlpha(n, o) => int(0x8598 + u32::from(*n), o.to_gl()),
+                        TexEnvParam::RgbScale(v) => (g.glTexEnvf)(ENV, 0x8573, *v),
+                        TexEnvParam::AlphaScale(v) => (g.glTexEnvf)(ENV, 0x0D1C, *v),
+                        // GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS
+                        TexEnvParam::LodBias(v) => (g.glTexEnvf)(0x8500, 0x8501, *v),
+                    }
+                }
+                Call::TexGen(coord, p) => {
+                    let c = coord.to_gl();
+                    match p {
+                        TexGenParam::Mode(m) => (g.glTexGeni)(c, 0x2500, m.to_gl() as i32),
+                        TexGenParam::ObjectPlane(v) => (g.glTexGenfv)(c, 0x2501, v.as_ptr()),
+                        TexGenParam::EyePlane(v) => (g.glTexGenfv)(c, 0x2502, v.as_ptr()),
+                    }
+                }
+                Call::TexCoord(u, [s, t, r, q]) => (g.glMultiTexCoord4f)(GL_TEXTURE0 + u, *s, *t, *r, *q),
                 Call::DrawArrays {
                     mode,
                     positions,

@@ -157,6 +157,33 @@ pub fn replay(gl: &mut Context, c: &Call) -> GlResult {
         Call::Material(f, p) => gl.material(*f, *p),
         Call::ColorMaterial(f, m) => gl.color_material(*f, *m),
         Call::ClipPlane(i, p) => gl.clip_plane(*i, *p),
+        Call::ActiveTexture(u) => gl.active_texture(*u),
+        Call::BindTexture(t, name) => gl.bind_texture(*t, *name),
+        Call::TexImage {
+            target,
+            level,
+            internal,
+            size,
+            format,
+            ty,
+            pixels,
+        } => {
+            let data = softgl::PixelData {
+                format: *format,
+                ty: *ty,
+                store: softgl::PixelStore::default(),
+                bytes: pixels,
+            };
+            gl.tex_image(*target, *level, *internal, *size, 0, Some(data))
+        }
+        Call::TexParameter(t, p) => gl.tex_parameter(*t, *p),
+        Call::TexEnv(p) => gl.tex_env(*p),
+        Call::TexGen(c, p) => gl.tex_gen(*c, *p),
+        Call::TexCoord(0, c) => {
+            gl.tex_coord(*c);
+            Ok(())
+        }
+        Call::TexCoord(u, c) => gl.multi_tex_coord(*u, *c),
         Call::DrawArrays {
             mode,
             positions,

@@ -5,7 +5,7 @@
 //! cases (shininess 0 and 128, spot exponent 128, normals of length 1e-20 and
 //! 1e20 with and without `GL_NORMALIZE`).
 
-use super::{Group, Near, Scene, Size, Tolerance};
+use super::{Group, Scene, Size, Tolerance};
 use crate::call::{Call, Rec};
 use softgl::{
     Capability, ColorControl, ColorMaterialMode, Face, FogMode, FogParam, LightModelParam, LightParam, MaterialParam,
@@ -26,15 +26,13 @@ const E: Tolerance = Tolerance {
 /// 96x96 and `report` at 256x256, none further; softpipe is off on as many or
 /// more (1..5) in each of these scenes.
 const fn lsb(test: usize, report: usize) -> Tolerance {
-    Tolerance {
-        channel: 1,
-        near: Near { test, report },
-        share_over: 0.0,
-        coverage: 0,
-        reason: "1 LSB on the pixels counted, where a lit colour's last f32 bit differs from llvmpipe's \
-                 (cause not identified yet; what softgl copies of Mesa's vertex arithmetic: docs/llvmpipe-facts.md \
-                 §15); softpipe as far or farther",
-    }
+    Tolerance::lsb(
+        test,
+        report,
+        "1 LSB on the pixels counted, where a lit colour's last f32 bit differs from llvmpipe's \
+         (cause not identified yet; what softgl copies of Mesa's vertex arithmetic: docs/llvmpipe-facts.md \
+         §15); softpipe as far or farther",
+    )
 }
 
 pub fn scenes() -> Vec<Scene> {
@@ -62,7 +60,7 @@ pub fn scenes() -> Vec<Scene> {
 
 /// A perspective view (near 2, far 30) looking down -z, depth test on,
 /// lighting on with GL's default light model.
-fn lit_view(r: &mut Rec) {
+pub(super) fn lit_view(r: &mut Rec) {
     r.matrix_mode(MatrixMode::Projection)
         .load_identity()
         .frustum(-1.0, 1.0, -1.0, 1.0, 2.0, 30.0)
@@ -75,6 +73,28 @@ fn lit_view(r: &mut Rec) {
 /// GLU's `gluSphere` (`GLU_SMOOTH` normals, quad strips from the south
 /// pole up) centred at `c`, its normals scaled by `normal_scale`.
 fn sphere(r: &mut Rec, c: [f32; 3], radius: f32, (slices, stacks): (u32, u32), normal_scale: f32) {
+    sphere_with(r, c, radius, (slices, stacks), normal_scale, SphereTex::None);
+}
+
+/// The texture coordinates [`sphere_with`] gives each vertex.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum SphereTex {
+    None,
+    /// GLU's (`gluQuadricTexture`): s = slice / slices, t = stack / stacks.
+    Glu,
+    /// The unit normal as (s, t, r), for cube maps.
+    Normal,
+}
+
+/// [`sphere`], with texture coordinates `tex`.
+pub(super) fn sphere_with(
+    r: &mut Rec,
+    c: [f32; 3],
+    radius: f32,
+    (slices, stacks): (u32, u32),
+    normal_scale: f32,
+    tex: SphereTex,
+) {
     use std::f32::consts::PI;
     let point = |i: u32, j: u32| {
         let (theta, phi) = (2.0 * PI * i as f32 / slices as f32, PI * j as f32 / stacks as f32);
@@ -86,6 +106,15 @@ fn sphere(r: &mut Rec, c: [f32; 3], radius: f32, (slices, stacks): (u32, u32), n
         for i in 0..=slices {
             for jj in [j, j + 1] {
                 let n = point(i % slices, jj);
+                match tex {
+                    SphereTex::None => {}
+                    SphereTex::Glu => {
+                        r.tex_coord(i as f32 / slices as f32, jj as f32 / stacks as f32);
+                    }
+                    SphereTex::Normal => {
+                        r.call(Call::TexCoord(0, [n[0], n[1], n[2], 1.0]));
+                    }
+                }
                 r.normal(n[0] * normal_scale, n[1] * normal_scale, n[2] * normal_scale);
                 r.vertex(c[0] + radius * n[0], c[1] + radius * n[1], c[2] + radius * n[2]);
             }
@@ -95,7 +124,7 @@ fn sphere(r: &mut Rec, c: [f32; 3], radius: f32, (slices, stacks): (u32, u32), n
 }
 
 /// A white material with a tinted specular and `shininess`.
-fn material(r: &mut Rec, diffuse: [f32; 4], shininess: f32) {
+pub(super) fn material(r: &mut Rec, diffuse: [f32; 4], shininess: f32) {
     r.material(Face::FrontAndBack, MaterialParam::Ambient([0.2, 0.2, 0.25, 1.0]))
         .material(Face::FrontAndBack, MaterialParam::Diffuse(diffuse))
         .material(Face::FrontAndBack, MaterialParam::Specular([0.9, 0.9, 0.7, 1.0]))
@@ -103,7 +132,7 @@ fn material(r: &mut Rec, diffuse: [f32; 4], shininess: f32) {
 }
 
 /// Light `i` on: directional from `dir` (w = 0) or positional, white.
-fn light(r: &mut Rec, i: u8, position: [f32; 4], diffuse: [f32; 4]) {
+pub(super) fn light(r: &mut Rec, i: u8, position: [f32; 4], diffuse: [f32; 4]) {
     r.enable(Capability::Light(i))
         .light(u32::from(i), LightParam::Position(position))
         .light(u32::from(i), LightParam::Diffuse(diffuse))

@@ -5,11 +5,13 @@
 
 mod combos;
 mod fog;
+pub mod glu;
 mod lighting;
 pub mod oracle;
 mod primitives;
 mod stages;
 mod stiff;
+mod texture;
 mod timing;
 
 use crate::call::Rec;
@@ -44,13 +46,23 @@ impl Tolerance {
     /// Colours 1 LSB off llvmpipe's on at most `test` pixels at the tests'
     /// size and `report` at the report's (measured), none further.
     pub const fn one_lsb(test: usize, report: usize) -> Tolerance {
+        Tolerance::lsb(
+            test,
+            report,
+            "Colours may differ by 1 LSB on the pixels counted: softgl's f32 attribute setup does not repeat \
+             llvmpipe's step for step (docs/llvmpipe-facts.md 11).",
+        )
+    }
+
+    /// 1 LSB off on at most `test` pixels at the tests' size and `report`
+    /// at the report's (measured), none further, for `reason`.
+    pub const fn lsb(test: usize, report: usize, reason: &'static str) -> Tolerance {
         Tolerance {
             channel: 1,
             near: Near { test, report },
             share_over: 0.0,
             coverage: 0,
-            reason: "Colours may differ by 1 LSB on the pixels counted: softgl's f32 attribute setup does not repeat \
-                     llvmpipe's step for step (docs/llvmpipe-facts.md 11).",
+            reason,
         }
     }
 
@@ -92,11 +104,13 @@ pub enum Group {
     Fog,
     /// Lighting, materials and user clip planes (issue 11).
     Lighting,
+    /// Texturing (issue 12).
+    Texture,
 }
 
 impl Group {
     /// Every group, in the report's order.
-    pub const ALL: [Group; 7] = [
+    pub const ALL: [Group; 8] = [
         Group::Stage,
         Group::Combination,
         Group::Primitive,
@@ -104,6 +118,7 @@ impl Group {
         Group::Timing,
         Group::Fog,
         Group::Lighting,
+        Group::Texture,
     ];
 
     pub fn name(self) -> &'static str {
@@ -115,6 +130,7 @@ impl Group {
             Group::Timing => "timing",
             Group::Fog => "fog and colour sum",
             Group::Lighting => "lighting and clip planes",
+            Group::Texture => "texturing",
         }
     }
 }
@@ -298,6 +314,7 @@ pub fn all() -> Vec<Scene> {
     v.extend(stiff::scenes());
     v.extend(fog::scenes());
     v.extend(lighting::scenes());
+    v.extend(texture::scenes());
     v.extend(timing::scenes());
     v
 }

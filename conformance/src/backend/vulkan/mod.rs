@@ -3,7 +3,9 @@
 //! triangle modes, flat and smooth), depth, stencil, blending, logic ops,
 //! scissor, colour masks, polygon offset as depth bias, and the alpha test as
 //! a `discard` in the fragment shader. Points, lines, polygon modes other
-//! than fill and masked clears are reported as unsupported.
+//! than fill, masked clears, and the fixed-function stages its pipelines do
+//! not have (fog, the colour sum, lighting, clip planes, texturing: no
+//! samplers or texture environment) are reported as unsupported.
 //!
 //! GL's vertex work (matrices, primitive assembly, flat colours, colour
 //! clamping) is done here on the CPU; Vulkan gets GL's clip-space triangles

@@ -303,7 +303,11 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
             Call::Enable(cap) => {
                 if matches!(
                     cap,
-                    Capability::Fog | Capability::ColorSum | Capability::Lighting | Capability::ClipPlane(_)
+                    Capability::Fog
+                        | Capability::ColorSum
+                        | Capability::Lighting
+                        | Capability::ClipPlane(_)
+                        | Capability::Texture(_)
                 ) {
                     return Err(format!(
                         "{cap:?}: a fixed-function fragment stage this back end's pipelines do not have"
@@ -447,6 +451,14 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
             | Call::Material(..)
             | Call::ColorMaterial(..)
             | Call::ClipPlane(..) => {}
+            // Without a texture enabled (refused above) these change no pixel.
+            Call::ActiveTexture(_)
+            | Call::BindTexture(..)
+            | Call::TexImage { .. }
+            | Call::TexParameter(..)
+            | Call::TexEnv(_)
+            | Call::TexGen(..)
+            | Call::TexCoord(..) => {}
             Call::Vertex(v) => {
                 let color = st.color;
                 st.batch.push((*v, color));
