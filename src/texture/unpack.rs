@@ -555,6 +555,11 @@ fn upload_bytes(
             let src = &data.bytes[layout.at(0, y, z)..][..size[0] * n];
             let at = img.offset(offset[0], offset[1] + y, offset[2] + z);
             let dst = &mut img.texels[at..][..size[0] * 4];
+            if data.format == PixelFormat::Rgba && base == BaseFormat::Rgba {
+                // Stored as given: the row is a copy.
+                dst.copy_from_slice(src);
+                continue;
+            }
             for (px, out) in src.chunks_exact(n).zip(dst.chunks_exact_mut(4)) {
                 let mut rgba = [0, 0, 0, 255];
                 for (&slot, &v) in comps.iter().zip(px) {
