@@ -30,6 +30,21 @@ struct Scene {
     max_level: u32,
 }
 
+impl Scene {
+    /// The scene's images as the sampler reads them.
+    fn images(&self) -> Vec<Image<'_>> {
+        self.images
+            .iter()
+            .map(|(t, [w, h, d])| Image {
+                texels: t,
+                width: *w,
+                height: *h,
+                depth: *d,
+            })
+            .collect()
+    }
+}
+
 fn scene(c: &Case, seed: u32) -> Scene {
     let target = cases::target(c);
     let fmt = c.s("format", "rgba8");
@@ -122,16 +137,7 @@ fn coord(c: &Case, x: f64, y: f64) -> [f32; 4] {
 /// softgl's 16x16 image of a case (RGBA bytes, bottom row first).
 fn render(c: &Case, seed: u32) -> Vec<u8> {
     let sc = scene(c, seed);
-    let images: Vec<Image<'_>> = sc
-        .images
-        .iter()
-        .map(|(t, [w, h, d])| Image {
-            texels: t,
-            width: *w,
-            height: *h,
-            depth: *d,
-        })
-        .collect();
+    let images = sc.images();
     let tex = TextureRef {
         images: &images,
         base_level: sc.base,
@@ -648,16 +654,7 @@ fn sample_with_three_quad_pixels_equals_sample_quad_off_cube_maps() {
     // A minified 2D mipmapped texture: λ from the quad, so the quad matters.
     let c = Case::parse("q w=64 h=64 levels=7 min=linear_mipmap_linear");
     let sc = scene(&c, 3);
-    let images: Vec<Image<'_>> = sc
-        .images
-        .iter()
-        .map(|(t, [w, h, d])| Image {
-            texels: t,
-            width: *w,
-            height: *h,
-            depth: *d,
-        })
-        .collect();
+    let images = sc.images();
     let tex = TextureRef {
         images: &images,
         base_level: 0,
