@@ -26,6 +26,7 @@ pub mod fog;
 pub mod fragment;
 pub mod framebuffer;
 pub mod geometry;
+pub(crate) mod immediate;
 pub mod gl_enum;
 pub mod inverse;
 pub mod lighting;
