@@ -1078,7 +1078,8 @@ impl Context {
 
     /// The fragment key and the varying layout a draw made now would use,
     /// both decided from the current state: the key's shading stage
-    /// interpolates what the layout carries.
+    /// interpolates what the layout carries. (The draw itself may then make
+    /// colours that are not per vertex constant, `uniform_colors`, §20.)
     pub fn draw_plan(&self) -> (FragmentKey, VaryingLayout) {
         let (key, layout, _) = self.draw_plan_textured();
         (key, layout)

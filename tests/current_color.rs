@@ -7,9 +7,7 @@
 
 mod common;
 
-use softgl::{
-    Backend, Capability, Context, FramebufferDesc, MatrixMode, PrimitiveMode, ShadeModel, VertexArrays,
-};
+use softgl::{Backend, Capability, Context, FramebufferDesc, MatrixMode, PrimitiveMode, ShadeModel, VertexArrays};
 
 const N: i32 = 32;
 const A: [f32; 4] = [0.3, 0.55, 0.7, 0.9];
@@ -167,7 +165,9 @@ fn every_scene_matches_llvmpipe_on_both_back_ends() {
             let (left, right) = differ(got, &l[name]);
             let most = got.iter().zip(&l[name]).map(|(a, b)| a.abs_diff(*b)).max();
             if left + right > budget || most > Some(1) {
-                report.push(format!("{backend:?} {name}: {left} + {right} pixels differ (budget {budget})"));
+                report.push(format!(
+                    "{backend:?} {name}: {left} + {right} pixels differ (budget {budget})"
+                ));
             }
         }
     }
