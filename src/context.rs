@@ -1109,7 +1109,8 @@ impl Context {
         // planes of the vertices' (equal, clamped) values, read as flat colours.
         // A constant colour summed with a varying secondary one (or the reverse)
         // stays interpolated: the key has one flat flag for both.
-        let uniform = !self.state.lighting.enabled && !varying.color && !(layout.secondary && varying.secondary);
+        let varies = varying.color || (layout.secondary && varying.secondary);
+        let uniform = !self.state.lighting.enabled && !varies;
         if uniform && layout.color {
             layout.uniform_colors = true;
             if let Some(shade) = key.shade.as_mut() {
