@@ -1147,6 +1147,13 @@ impl Context {
         self.record(r.map_err(|_| GlError::InvalidOperation))
     }
 
+    /// `glFlush`/`glFinish`: softgl draws at each call, so there is nothing
+    /// to wait for; like Mesa's flush of the vertices it buffers, it ends
+    /// the immediate-mode vertex format (`docs/llvmpipe-facts.md` §20).
+    pub fn flush(&mut self) -> GlResult {
+        self.outside()
+    }
+
     // ----- reading -----
 
     /// `glReadPixels` into bytes, rows bottom-up.

@@ -20,6 +20,7 @@ const SCENES: &[(&str, usize)] = &[
     ("inside", 0),
     ("again", 0),
     ("flushed", 0),
+    ("finished", 0),
     ("many", 0),
     ("flat", 0),
     ("color_sum", 0),
@@ -83,15 +84,17 @@ fn render(name: &str, backend: Backend) -> Context {
             quad(&mut gl, 0, Some(A));
             quad(&mut gl, 1, Some(B));
         }
-        "again" | "flushed" | "many" => {
+        "again" | "flushed" | "finished" | "many" => {
             color(&mut gl, B);
             quad(&mut gl, 1, None);
             if name == "many" {
                 quad(&mut gl, 1, None);
                 quad(&mut gl, 1, None);
             }
-            if name == "flushed" {
-                gl.load_identity().unwrap();
+            match name {
+                "flushed" => gl.load_identity().unwrap(),
+                "finished" => gl.flush().unwrap(),
+                _ => {}
             }
             color(&mut gl, A);
             quad(&mut gl, 0, None);
@@ -146,7 +149,13 @@ fn the_recording_tells_constant_from_interpolated() {
     // off the constant; so the scenes below can fail.
     let l = llvmpipe();
     assert_eq!(differ(&l["outside"], &l["inside"]), (142, 0));
-    for (constant, name) in [(false, "again"), (true, "flushed"), (true, "many"), (true, "flat")] {
+    for (constant, name) in [
+        (false, "again"),
+        (true, "flushed"),
+        (true, "finished"),
+        (true, "many"),
+        (true, "flat"),
+    ] {
         let want = if constant { (0, 0) } else { (142, 0) };
         assert_eq!(differ(&l[name], &l["outside"]).0, want.0, "{name}");
     }

@@ -88,6 +88,13 @@ static void scene(const char *name) {
     glLoadIdentity();
     glColor4fv(A);
     quad(0, NULL);
+  } else if (!strcmp(name, "finished")) {
+    /* glFinish flushes as well: constant. */
+    glColor4fv(B);
+    quad(1, NULL);
+    glFinish();
+    glColor4fv(A);
+    quad(0, NULL);
   } else if (!strcmp(name, "many")) {
     /* More than 8 vertices buffered: the new colour empties the format. */
     glColor4fv(B);
@@ -127,7 +134,7 @@ static void scene(const char *name) {
 int main(void) {
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
   if (!ctx || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, N, N)) return 1;
-  const char *names[] = {"outside", "inside",         "again",          "flushed",     "many",
+  const char *names[] = {"outside", "inside",         "again",          "flushed",     "finished", "many",
                          "flat",    "color_sum",      "color_sum_mixed", "arrays_current", "arrays_color"};
   for (unsigned i = 0; i < sizeof names / sizeof *names; i++) scene(names[i]);
   OSMesaDestroyContext(ctx);
