@@ -12,6 +12,7 @@ use crate::geometry::batch::{FogSource, TexFetch, VertexStage};
 use crate::geometry::lighting::LightSetup;
 use crate::geometry::varying::VaryingLayout;
 use crate::geometry::{DrawSource, Geometry, InVertex, MAX_VIEWPORT};
+use crate::immediate::{self, VertexFormat};
 use crate::lighting::{
     ColorMaterialMode, LightModelParam, LightParam, LightParamName, Material, MaterialParam, MaterialParamName,
 };
@@ -279,6 +280,26 @@ fn plan<'a>(
     (key, layout, textures)
 }
 
+/// Which colours a draw gives per vertex (Mesa's `_VaryingInputs`,
+/// `docs/llvmpipe-facts.md` §20): a colour array, or a colour in the
+/// `begin`/`end` vertex format. Unlit, the others are the current values,
+/// which llvmpipe reads as constants.
+#[derive(Clone, Copy, Debug)]
+struct Varying {
+    color: bool,
+    secondary: bool,
+}
+
+impl Varying {
+    /// The colour arrays of `arrays`.
+    fn of(arrays: &VertexArrays<'_>) -> Varying {
+        Varying {
+            color: arrays.color.is_some(),
+            secondary: arrays.secondary.is_some(),
+        }
+    }
+}
+
 /// How a draw reads its vertices: `fetch(i)` is vertex `i`, `tex(i, u)` its
 /// texture coordinates for unit `u` (asked only for the units it samples).
 type Fetch<'a> = (&'a dyn Fn(usize) -> InVertex, &'a dyn Fn(usize, usize) -> Vec4);
@@ -287,8 +308,6 @@ type Fetch<'a> = (&'a dyn Fn(usize) -> InVertex, &'a dyn Fn(usize, usize) -> Vec
 struct Begun {
     mode: PrimitiveMode,
     verts: Vec<InVertex>,
-    /// Whether `color4` was called in between (the colour is then per vertex).
-    per_vertex_color: bool,
     /// The materials (front, back) the vertices were given, when `glMaterial`
     /// was called in between (Mesa keeps materials as vertex attributes,
     /// `vbo/vbo_exec_api.c` `_mesa_Materialfv`): the first is the material at
@@ -314,6 +333,8 @@ pub struct Context {
     pub(crate) tex_units: TextureUnits,
     /// The primitive between `begin` and `end`.
     begun: Option<Begun>,
+    /// Which colours `begin`/`end` draws carry per vertex (Mesa's vertex format).
+    format: VertexFormat,
     error: Option<GlError>,
     backend: Backend,
     specialists: SpecialistCache,
@@ -350,6 +371,7 @@ impl Context {
                 edge_flag: true,
             },
             begun: None,
+            format: VertexFormat::default(),
             error: None,
             backend: Backend::from_env(),
             specialists: SpecialistCache::from_env(),
@@ -444,11 +466,14 @@ impl Context {
         r
     }
 
-    /// Most calls are errors between `begin` and `end`.
+    /// Most calls are errors between `begin` and `end`; outside, each is a
+    /// state change or draw, which ends what Mesa's immediate mode buffers
+    /// (`FLUSH_VERTICES`, see [`VertexFormat::flush`]).
     pub(crate) fn outside(&mut self) -> GlResult {
         let r = if self.begun.is_some() {
             Err(GlError::InvalidOperation)
         } else {
+            self.format.flush();
             Ok(())
         };
         self.record(r)
@@ -890,11 +915,13 @@ impl Context {
 
     /// `glBegin`; `InvalidOperation` when already inside `begin`.
     pub fn begin(&mut self, mode: PrimitiveMode) -> GlResult {
-        self.outside()?;
+        if self.begun.is_some() {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        self.format.begin();
         self.begun = Some(Begun {
             mode,
             verts: Vec::new(),
-            per_vertex_color: false,
             materials: Vec::new(),
             shininess_varies: false,
             tex: Vec::new(),
@@ -908,8 +935,13 @@ impl Context {
         let Some(b) = self.begun.take() else {
             return self.record(Err(GlError::InvalidOperation));
         };
+        self.format.end(b.verts.len());
+        let varying = Varying {
+            color: self.format.has(immediate::COLOR),
+            secondary: self.format.has(immediate::SECONDARY),
+        };
         let source = DrawSource::Arrays {
-            per_vertex_color: b.per_vertex_color,
+            per_vertex_color: varying.color,
         };
         let vertex_materials = self.vertex_materials(&b.materials, b.shininess_varies);
         let current = self.current.tex_coords;
@@ -919,6 +951,7 @@ impl Context {
             b.verts.len(),
             (&|i| b.verts[i], &tex),
             &vertex_materials,
+            varying,
         )
     }
 
@@ -928,6 +961,7 @@ impl Context {
         if let Some(b) = &mut self.begun {
             let material = b.materials.len().saturating_sub(1) as u16;
             b.verts.push(InVertex { material, ..v });
+            self.format.vertex();
             if b.tex_units != 0 {
                 b.tex.push(self.current.tex_coords);
             }
@@ -945,9 +979,7 @@ impl Context {
     pub fn color4(&mut self, r: f32, g: f32, b: f32, a: f32) {
         self.current.color = Vec4::new(r, g, b, a);
         self.state.lighting.track_color(self.current.color);
-        if let Some(b) = &mut self.begun {
-            b.per_vertex_color = true;
-        }
+        self.format.attrib(immediate::COLOR, self.begun.is_some());
     }
 
     pub fn color3(&mut self, r: f32, g: f32, b: f32) {
@@ -974,6 +1006,7 @@ impl Context {
     /// `glSecondaryColor3f` (GL 1.4): the current secondary colour, alpha 1.
     pub fn secondary_color3(&mut self, r: f32, g: f32, b: f32) {
         self.current.secondary = Vec4::new(r, g, b, 1.0);
+        self.format.attrib(immediate::SECONDARY, self.begun.is_some());
     }
 
     /// `glFogCoordf` (GL 1.4): the current fog coordinate.
@@ -1019,11 +1052,13 @@ impl Context {
         let end = first.checked_add(count).filter(|&e| e <= len);
         self.require(end.is_some())?;
         let current = self.current;
+        let varying = Varying::of(arrays);
         let source = DrawSource::Arrays {
-            per_vertex_color: arrays.color.is_some(),
+            per_vertex_color: varying.color,
         };
         let tex = |i: usize, u: usize| fetch_tex(arrays, first + i, u, &current);
-        self.draw((mode, source), count, (&|i| fetch(arrays, first + i, &current), &tex))
+        let fetch: Fetch<'_> = (&|i| fetch(arrays, first + i, &current), &tex);
+        self.draw_with((mode, source), count, fetch, &[], varying)
     }
 
     /// `glDrawElements`: the vertices of `arrays` that `indices` name, in order.
@@ -1035,18 +1070,16 @@ impl Context {
         let current = self.current;
         let source = (mode, DrawSource::Elements);
         let tex = |k: usize, u: usize| fetch_tex(arrays, indices.get(k), u, &current);
-        self.draw(
-            source,
-            indices.len(),
-            (&|k| fetch(arrays, indices.get(k), &current), &tex),
-        )
+        let fetch: Fetch<'_> = (&|k| fetch(arrays, indices.get(k), &current), &tex);
+        self.draw_with(source, indices.len(), fetch, &[], Varying::of(arrays))
     }
 
     // ----- drawing -----
 
     /// The fragment key and the varying layout a draw made now would use,
     /// both decided from the current state: the key's shading stage
-    /// interpolates what the layout carries.
+    /// interpolates what the layout carries. (The draw itself may then make
+    /// colours that are not per vertex constant, `uniform_colors`, §20.)
     pub fn draw_plan(&self) -> (FragmentKey, VaryingLayout) {
         let (key, layout, _) = self.draw_plan_textured();
         (key, layout)
@@ -1060,20 +1093,30 @@ impl Context {
         plan(&self.state, &self.fb, self.ordered_dither, textures)
     }
 
-    fn draw(&mut self, mode: (PrimitiveMode, DrawSource), count: usize, fetch: Fetch<'_>) -> GlResult {
-        self.draw_with(mode, count, fetch, &[])
-    }
-
-    /// [`Context::draw`] with the per-vertex materials of `begin`/`end`.
+    /// Draws `count` vertices with the per-vertex materials of `begin`/`end`
+    /// (none for arrays), the colours `varying` says vary per vertex.
     fn draw_with(
         &mut self,
         mode: (PrimitiveMode, DrawSource),
         count: usize,
         (fetch, tex): Fetch<'_>,
         vertex_materials: &[LightSetup],
+        varying: Varying,
     ) -> GlResult {
         let textures = (&self.tex_units, &self.textures);
-        let (key, layout, textures) = plan(&self.state, &self.fb, self.ordered_dither, textures);
+        let (mut key, mut layout, textures) = plan(&self.state, &self.fb, self.ordered_dither, textures);
+        // Unlit colours that do not vary are llvmpipe's uniforms (§20): constant
+        // planes of the vertices' (equal, clamped) values, read as flat colours.
+        // A constant colour summed with a varying secondary one (or the reverse)
+        // stays interpolated: the key has one flat flag for both.
+        let varies = varying.color || (layout.secondary && varying.secondary);
+        let uniform = !self.state.lighting.enabled && !varies;
+        if uniform && layout.color {
+            layout.uniform_colors = true;
+            if let Some(shade) = key.shade.as_mut() {
+                shade.flat = true;
+            }
+        }
         let uniforms = self.state.fragment_uniforms();
         let reads_depth = key.depth.is_some();
         let mv = self.modelview.top();
@@ -1102,6 +1145,13 @@ impl Context {
             stage.finish()
         });
         self.record(r.map_err(|_| GlError::InvalidOperation))
+    }
+
+    /// `glFlush`/`glFinish`: softgl draws at each call, so there is nothing
+    /// to wait for; like Mesa's flush of the vertices it buffers, it ends
+    /// the immediate-mode vertex format (`docs/llvmpipe-facts.md` §20).
+    pub fn flush(&mut self) -> GlResult {
+        self.outside()
     }
 
     // ----- reading -----

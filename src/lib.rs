@@ -27,6 +27,7 @@ pub mod fragment;
 pub mod framebuffer;
 pub mod geometry;
 pub mod gl_enum;
+pub(crate) mod immediate;
 pub mod inverse;
 pub mod lighting;
 pub mod matrix;

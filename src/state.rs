@@ -390,6 +390,8 @@ impl RasterState {
             fog: reads_color && self.fog.enabled,
             // Decided with the textures (`crate::texture::unit`).
             tex: 0,
+            // Decided with the draw's vertex inputs (`Context::draw_with`).
+            uniform_colors: false,
         }
     }
 

@@ -54,6 +54,7 @@ fn lighting_adds_varyings_only_for_what_it_produces() {
             back_secondary: true,
             fog: false,
             tex: 0,
+            uniform_colors: false,
         }
     );
     // The same state with lighting off carries the colour alone again.

@@ -565,14 +565,7 @@ fn replay(line: &str) -> Context {
 
 /// llvmpipe's pixels of each scene (RGBA bytes, bottom row first), by name.
 fn llvmpipe_scenes() -> std::collections::HashMap<String, Vec<u8>> {
-    include_str!("llvmpipe/texgen.txt")
-        .lines()
-        .filter_map(|l| l.split_once(' '))
-        .map(|(name, hex)| {
-            let byte = |pair: &[u8]| u8::from_str_radix(std::str::from_utf8(pair).expect("ascii"), 16).expect("hex");
-            (name.to_string(), hex.as_bytes().chunks(2).map(byte).collect())
-        })
-        .collect()
+    common::hex_scenes(include_str!("llvmpipe/texgen.txt"))
 }
 
 #[test]

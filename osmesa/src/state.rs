@@ -262,6 +262,12 @@ impl OsContext {
     /// and brings the Z24S8 copy of depth and stencil up to date (what
     /// `glFlush`, `glFinish` and a change of current context do).
     pub fn flush(&mut self) {
+        // What Mesa's flush ends of its immediate mode (a context switched
+        // away from between glBegin and glEnd keeps its primitive open).
+        if let Some(gl) = self.gl.as_mut().filter(|gl| !gl.inside_begin()) {
+            // Outside glBegin/glEnd it cannot fail.
+            let _ = gl.flush();
+        }
         self.refresh_depth_view();
         let (Some(b), Some(gl)) = (self.binding, self.gl.as_ref()) else {
             return;

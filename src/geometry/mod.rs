@@ -245,10 +245,10 @@ impl<'s> Geometry<'s> {
             .any(|&front| self.state.polygon_mode(front) != PolygonMode::Fill)
     }
 
-    /// The provoking vertex's varyings under flat shading (the rasterizer
-    /// takes its colours from them), else `None`.
+    /// The provoking vertex's varyings under flat shading or with uniform
+    /// colours (the rasterizer takes its colours from them), else `None`.
     fn flat(&self, v: &ClipVertex) -> Option<Varyings> {
-        (self.state.shade_model == ShadeModel::Flat).then_some(v.v)
+        (self.state.shade_model == ShadeModel::Flat || self.layout.uniform_colors).then_some(v.v)
     }
 
     /// Two-sided selection: for a back face, the back colours (when the

@@ -26,6 +26,10 @@ pub struct VaryingLayout {
     /// Bit `u` set: the texture coordinates of unit `u` (4 slots), carried
     /// only for a unit with an enabled, complete texture.
     pub tex: u8,
+    /// The colours (primary and secondary) are the same at every vertex and
+    /// llvmpipe reads them as constants, not interpolated
+    /// (`docs/llvmpipe-facts.md` §20): set up as constant planes.
+    pub uniform_colors: bool,
 }
 
 /// Most f32 slots a vertex carries: 17 for colours and fog, 4 per texture unit.
@@ -137,6 +141,7 @@ mod tests {
         back_secondary: true,
         fog: true,
         tex: 0xff,
+        uniform_colors: false,
     };
 
     #[test]

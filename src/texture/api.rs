@@ -113,7 +113,7 @@ impl Context {
         let r = if self.inside_begin() {
             Err(GlError::InvalidOperation)
         } else {
-            f(self)
+            self.outside().and_then(|()| f(self))
         };
         if let Err(e) = r {
             self.record_error(e);
