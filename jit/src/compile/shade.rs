@@ -72,7 +72,7 @@ impl Gen<'_> {
         };
         let mut c = [0, 1, 2, 3].map(|k| colour(self, slot::COLOR + k));
         if key.textured() {
-            c = self.texture(g, sv, key, c, w);
+            c = self.texture(g, sv, key, c);
         }
         if key.color_sum {
             for (k, ck) in c.iter_mut().take(3).enumerate() {

@@ -24,16 +24,8 @@ type Rgba = [Value; 4];
 
 impl Gen<'_> {
     /// The colour after the texture environment of `key`'s units over
-    /// `primary` (`crate::shade::texture`); `w` the lanes' w where the
-    /// colour already made it (the same division: it is not made again).
-    pub(super) fn texture(
-        &mut self,
-        g: &Group,
-        sv: &SpanValues,
-        key: &ShadeKey,
-        primary: Rgba,
-        w: Option<Value>,
-    ) -> Rgba {
+    /// `primary` (`crate::shade::texture`).
+    pub(super) fn texture(&mut self, g: &Group, sv: &SpanValues, key: &ShadeKey, primary: Rgba) -> Rgba {
         let mask = |f: &dyn Fn(&TexUnitKey) -> bool| -> u32 {
             (0..MAX_UNITS)
                 .filter(|&u| key.tex[u].as_ref().is_some_and(f))
@@ -59,7 +51,7 @@ impl Gen<'_> {
                 .iter()
                 .flatten()
                 .any(|t| native_unit(t) && needs_lod(&t.sampler));
-            let points = self.native_points(g, sv, lod, w);
+            let points = self.native_points(g, sv, lod);
             for (u, unit) in key.tex.iter().enumerate() {
                 if let Some(unit) = unit.as_ref().filter(|t| native_unit(t)) {
                     let c = self.project(sv, u, &points, needs_lod(&unit.sampler));
@@ -71,15 +63,8 @@ impl Gen<'_> {
     }
 
     /// The lanes' pixels and, with `quad`, the top-left, top-right and
-    /// bottom-left pixels of their quads, each with its w (the lanes' `w`
-    /// when given).
-    fn native_points(
-        &mut self,
-        g: &Group,
-        sv: &SpanValues,
-        quad: bool,
-        w: Option<Value>,
-    ) -> Vec<(Value, Value, Value)> {
+    /// bottom-left pixels of their quads, each with its w.
+    fn native_points(&mut self, g: &Group, sv: &SpanValues, quad: bool) -> Vec<(Value, Value, Value)> {
         let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
         let px = g.px.expect("carried by the loop for keys with a shading stage");
         let mut pts = vec![(px, row)];
@@ -92,11 +77,7 @@ impl Gen<'_> {
             pts.extend([(qx, qy), (qx1, qy), (qx, qy1)]);
         }
         pts.into_iter()
-            .enumerate()
-            .map(|(i, (x, y))| {
-                if let (0, Some(w)) = (i, w) {
-                    return (x, y, w);
-                }
+            .map(|(x, y)| {
                 let one = self.fconst(1.0);
                 let iw = self.plane(planes, slot::INV_W, x, y);
                 (x, y, self.b.ins().fdiv(one, iw))
