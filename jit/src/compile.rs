@@ -85,27 +85,15 @@ pub enum CompileError {
 /// (all-ops key on this 2-core machine: 204 µs and 430 Mfragments/s without it,
 /// 309 µs and 440 with it; the register allocator is most of what is left).
 /// The IR verifier runs only in debug builds (it adds 30-60%).
+/// Keys with texture units take the same (backtracking) register allocator:
+/// the single-pass one compiled the one-trilinear-unit key in 1.8 ms instead
+/// of 2.7 ms but spilled five times as often (479 stack accesses against 89),
+/// and its code sampled at half the rate (`jit/benches/texels.rs`: 8.1 against
+/// 17.1 Mtexels/s in the same loaded run).
 pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
-    isa_with(false)
-}
-
-/// [`host_isa`] with Cranelift's single-pass register allocator, for keys
-/// with texture units: their functions are 3-10 times larger (per-lane
-/// texel gathers), and the backtracking allocator took 1.9-2.5 ms of CPU for
-/// one or two trilinear units under load where the single-pass one takes
-/// 0.7-0.9 ms (the untextured shaded key: 159 vs 79 µs in the same run;
-/// `jit/benches/texels.rs`, group `compile`, for quiet figures).
-pub fn textured_host_isa() -> Result<OwnedTargetIsa, CompileError> {
-    isa_with(true)
-}
-
-fn isa_with(single_pass: bool) -> Result<OwnedTargetIsa, CompileError> {
     let mut flags = settings::builder();
     let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
     set(&mut flags, "opt_level", "none")?;
-    if single_pass {
-        set(&mut flags, "regalloc_algorithm", "single_pass")?;
-    }
     set(
         &mut flags,
         "enable_verifier",
@@ -208,8 +196,6 @@ struct Gen<'a> {
     fconsts: Vec<(u32, Value)>,
     /// The stack slot of the texture callout's arguments, once made.
     tex_slot: Option<cranelift_codegen::ir::StackSlot>,
-    /// The stack slot of the native sampler's per-lane gathers, once made.
-    lane_slot: Option<cranelift_codegen::ir::StackSlot>,
 }
 
 impl<'a> Gen<'a> {
@@ -223,7 +209,6 @@ impl<'a> Gen<'a> {
             x86: false,
             fconsts: Vec::new(),
             tex_slot: None,
-            lane_slot: None,
         }
     }
 

@@ -27,17 +27,10 @@ pub enum SpecialistError {
     Panic(String),
 }
 
-/// The host ISA for `key`, made once per process ([`compile::host_isa`],
-/// or [`compile::textured_host_isa`] for keys with texture units).
-fn isa(key: &FragmentKey) -> Result<&'static OwnedTargetIsa, SpecialistError> {
+/// The host ISA ([`compile::host_isa`]), made once per process.
+fn isa() -> Result<&'static OwnedTargetIsa, SpecialistError> {
     static ISA: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
-    static TEXTURED: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
-    let (cell, make): (_, fn() -> Result<OwnedTargetIsa, CompileError>) = if key.shade.is_some_and(|s| s.textured()) {
-        (&TEXTURED, compile::textured_host_isa)
-    } else {
-        (&ISA, compile::host_isa)
-    };
-    cell.get_or_init(|| make().map_err(|e| e.to_string()))
+    ISA.get_or_init(|| compile::host_isa().map_err(|e| e.to_string()))
         .as_ref()
         .map_err(|e| SpecialistError::Compile(CompileError::Isa(e.clone())))
 }
@@ -67,7 +60,7 @@ impl Specialist {
     /// Compiles `key`. A panic inside Cranelift is caught and returned as an error.
     pub fn compile(key: &FragmentKey) -> Result<Specialist, SpecialistError> {
         key.validate()?;
-        let isa = isa(key)?;
+        let isa = isa()?;
         catch_unwind(AssertUnwindSafe(|| Self::compile_with(key, isa))).unwrap_or_else(|p| {
             let msg = p
                 .downcast_ref::<&str>()

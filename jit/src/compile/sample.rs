@@ -14,26 +14,10 @@ use super::{le, mem, Gen, I32X4};
 use crate::callout::{LevelView, TexView, UnitView};
 use crate::texture::{Filter, MipFilter, SamplerKey, TexTarget, TexUnitKey, TexelFormat, Wrap, MAX_LEVELS};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
-use cranelift_codegen::ir::{types, InstBuilder, MemFlagsData, StackSlotData, StackSlotKind, Value};
+use cranelift_codegen::ir::{types, InstBuilder, MemFlagsData, Value};
 use std::mem::{offset_of, size_of};
 
 const F32X4: cranelift_codegen::ir::Type = types::F32X4;
-
-/// The lane scratch of the texel gathers: byte offsets of its arrays (four
-/// lanes each).
-mod lanes {
-    /// Each lane's level (`i32`).
-    pub const LEVEL: i32 = 0;
-    /// Each lane's level's texels (pointers).
-    pub const PTR: i32 = 16;
-    pub const WIDTH: i32 = 48;
-    pub const HEIGHT: i32 = 64;
-    /// Up to four texel byte offsets per lane, one array each (`u32`).
-    pub const INDEX: i32 = 80;
-    /// The texels fetched there.
-    pub const TEXEL: i32 = 144;
-    pub const SIZE: u32 = 208;
-}
 
 /// Whether generated code samples `unit` itself (else it calls the reference).
 pub fn native_unit(unit: &TexUnitKey) -> bool {
@@ -210,35 +194,33 @@ impl Gen<'_> {
         (filter, level): (Filter, Value),
         at: [Value; 2],
     ) -> Value {
-        // Each lane's level: its texels and sizes, gathered by a loop over
-        // the lanes (one copy of the code: compile time grows with its size).
-        let scratch = self.lane_scratch();
-        self.b.ins().store(mem(), level, scratch, lanes::LEVEL);
-        self.lane_loop(|s, at4, at8| {
-            let l = s.b.ins().uload32(mem(), at4, lanes::LEVEL);
+        // Each lane's level: its texels and sizes, one lane after the other in
+        // straight-line code (a loop's blocks made the single-pass register
+        // allocator spill every vector live across them).
+        let base = offset_of!(UnitView, levels) as i32;
+        let mut ptrs = [level; 4];
+        let mut sizes = [[level; 4]; 2];
+        for (lane, p) in ptrs.iter_mut().enumerate() {
+            let l = self.b.ins().extractlane(level, lane as u8);
             // Levels are within `first..=last` < MAX_LEVELS; the clamp keeps
             // the address inside the view whatever the lane holds.
-            let last = s.b.ins().iconst(types::I32, (MAX_LEVELS - 1) as i64);
-            let l = s.b.ins().ireduce(types::I32, l);
-            let l = s.b.ins().umin(l, last);
-            let l = s.b.ins().uextend(s.ptr, l);
-            let off = s.b.ins().imul_imm_u(l, size_of::<LevelView>() as i64);
-            let lv = s.b.ins().iadd(unit, off);
-            let base = offset_of!(UnitView, levels) as i32;
-            let p =
-                s.b.ins()
-                    .load(s.ptr, mem(), lv, base + offset_of!(LevelView, texels) as i32);
-            s.b.ins().store(mem(), p, at8, lanes::PTR);
-            let w =
-                s.b.ins()
-                    .load(types::I32, mem(), lv, base + offset_of!(LevelView, width) as i32);
-            s.b.ins().store(mem(), w, at4, lanes::WIDTH);
-            let h =
-                s.b.ins()
-                    .load(types::I32, mem(), lv, base + offset_of!(LevelView, height) as i32);
-            s.b.ins().store(mem(), h, at4, lanes::HEIGHT);
-        });
-        let size = [lanes::WIDTH, lanes::HEIGHT].map(|off| self.b.ins().load(I32X4, mem(), scratch, off));
+            let last = self.b.ins().iconst(types::I32, (MAX_LEVELS - 1) as i64);
+            let l = self.b.ins().umin(l, last);
+            let l = self.b.ins().uextend(self.ptr, l);
+            let off = self.b.ins().imul_imm_u(l, size_of::<LevelView>() as i64);
+            let lv = self.b.ins().iadd(unit, off);
+            *p = self
+                .b
+                .ins()
+                .load(self.ptr, mem(), lv, base + offset_of!(LevelView, texels) as i32);
+            for (a, off) in [offset_of!(LevelView, width), offset_of!(LevelView, height)]
+                .into_iter()
+                .enumerate()
+            {
+                sizes[a][lane] = self.b.ins().load(types::I32, mem(), lv, base + off as i32);
+            }
+        }
+        let size = sizes.map(|v| self.lanes_vector(v));
         let pot = [0, 1].map(|a| self.unit_i32(unit, offset_of!(UnitView, pot) + 16 * a));
         let one = self.splat(1);
         // Coordinates are clamped to the level (they already are: the clamp
@@ -256,14 +238,14 @@ impl Gen<'_> {
                 let y = self.nearest_axis(at[1], size[1], pot[1], key.wrap[1]);
                 let x = column(self, x);
                 let y = row(self, y);
-                self.fetch(&[(x, y)])[0]
+                self.fetch(&ptrs, &[(x, y)])[0]
             }
             Filter::Linear => {
                 let (x0, x1, wx) = self.linear_axis(at[0], size[0], pot[0], key.wrap[0]);
                 let (y0, y1, wy) = self.linear_axis(at[1], size[1], pot[1], key.wrap[1]);
                 let [x0, x1] = [x0, x1].map(|x| column(self, x));
                 let [y0, y1] = [y0, y1].map(|y| row(self, y));
-                let t = self.fetch(&[(x0, y0), (x1, y0), (x0, y1), (x1, y1)]);
+                let t = self.fetch(&ptrs, &[(x0, y0), (x1, y0), (x0, y1), (x1, y1)]);
                 // The three lerps on widened texels, narrowed once.
                 let t = [t[0], t[1], t[2], t[3]].map(|t| self.widen(t));
                 let (wx, wy) = (self.wide_weight(wx), self.wide_weight(wy));
@@ -276,70 +258,31 @@ impl Gen<'_> {
     }
 
     /// The packed texels at each `(x, y)`, column and row offset
-    /// (`row · width`), of each lane's level (gathered by [`Self::fetch_level`]
-    /// into the lane scratch), by a loop over the lanes.
-    fn fetch(&mut self, at: &[(Value, Value)]) -> Vec<Value> {
-        let scratch = self.lane_scratch();
-        for (k, &(x, y)) in at.iter().enumerate() {
-            let index = self.b.ins().iadd(y, x);
-            let index = self.b.ins().ishl_imm_u(index, 2);
-            self.b.ins().store(mem(), index, scratch, lanes::INDEX + 16 * k as i32);
-        }
-        let n = at.len();
-        self.lane_loop(|s, at4, at8| {
-            let p = s.b.ins().load(s.ptr, mem(), at8, lanes::PTR);
-            for k in 0..n {
-                let off = s.b.ins().uload32(mem(), at4, lanes::INDEX + 16 * k as i32);
-                let addr = s.b.ins().iadd(p, off);
-                let t = s.b.ins().load(types::I32, mem(), addr, 0);
-                s.b.ins().store(mem(), t, at4, lanes::TEXEL + 16 * k as i32);
-            }
-        });
-        (0..n)
-            .map(|k| self.b.ins().load(I32X4, mem(), scratch, lanes::TEXEL + 16 * k as i32))
+    /// (`row · width`), of each lane's level's texels `ptrs` (from
+    /// [`Self::fetch_level`]), lane after lane.
+    fn fetch(&mut self, ptrs: &[Value; 4], at: &[(Value, Value)]) -> Vec<Value> {
+        at.iter()
+            .map(|&(x, y)| {
+                let index = self.b.ins().iadd(y, x);
+                let index = self.b.ins().ishl_imm_u(index, 2);
+                let texels = std::array::from_fn(|lane| {
+                    let off = self.b.ins().extractlane(index, lane as u8);
+                    let off = self.b.ins().uextend(self.ptr, off);
+                    let addr = self.b.ins().iadd(ptrs[lane], off);
+                    self.b.ins().load(types::I32, mem(), addr, 0)
+                });
+                self.lanes_vector(texels)
+            })
             .collect()
     }
 
-    /// Runs `body` once for each of the four lanes, with the addresses of
-    /// the lane's 4-byte and 8-byte elements in the lane scratch. Values made
-    /// in the body do not dominate what follows: the constant caches are
-    /// restored.
-    fn lane_loop(&mut self, body: impl FnOnce(&mut Self, Value, Value)) {
-        let scratch = self.lane_scratch();
-        let saved = (self.consts.clone(), self.fconsts.clone());
-        let head = self.b.create_block();
-        let lane = self.b.append_block_param(head, self.ptr);
-        let work = self.b.create_block();
-        let exit = self.b.create_block();
-        let zero = self.b.ins().iconst(self.ptr, 0);
-        self.b.ins().jump(head, &[zero.into()]);
-        self.b.switch_to_block(head);
-        let done = self.b.ins().icmp_imm_u(IntCC::UnsignedGreaterThanOrEqual, lane, 4);
-        self.b.ins().brif(done, exit, &[], work, &[]);
-        self.b.switch_to_block(work);
-        let o4 = self.b.ins().ishl_imm_u(lane, 2);
-        let at4 = self.b.ins().iadd(scratch, o4);
-        let o8 = self.b.ins().ishl_imm_u(lane, 3);
-        let at8 = self.b.ins().iadd(scratch, o8);
-        body(self, at4, at8);
-        let next = self.b.ins().iadd_imm_u(lane, 1);
-        self.b.ins().jump(head, &[next.into()]);
-        self.b.switch_to_block(exit);
-        (self.consts, self.fconsts) = saved;
-    }
-
-    /// The address of the function's lane scratch (a stack slot made on first use).
-    fn lane_scratch(&mut self) -> Value {
-        let slot = match self.lane_slot {
-            Some(s) => s,
-            None => {
-                let data = StackSlotData::new(StackSlotKind::ExplicitSlot, lanes::SIZE, 4);
-                let s = self.b.create_sized_stack_slot(data);
-                self.lane_slot = Some(s);
-                s
-            }
-        };
-        self.b.ins().stack_addr(self.ptr, slot, 0)
+    /// Four `i32` values as the lanes of an `i32x4`.
+    fn lanes_vector(&mut self, v: [Value; 4]) -> Value {
+        let mut out = self.b.ins().splat(I32X4, v[0]);
+        for (lane, &x) in v.iter().enumerate().skip(1) {
+            out = self.b.ins().insertlane(out, x, lane as u8);
+        }
+        out
     }
 
     /// The 8-bit lerp of packed RGBA8 lanes `a` to `b` with each lane's
