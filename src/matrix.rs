@@ -126,13 +126,16 @@ pub fn frustum(l: f64, r: f64, b: f64, t: f64, n: f64, f: f64) -> GlResult<Mat4>
     if n <= 0.0 || f <= 0.0 || l == r || b == t || n == f {
         return Err(GlError::InvalidValue);
     }
+    // Mesa casts the arguments to f32 and builds the matrix in f32
+    // (`matrix_frustum`, `main/matrix.c`; `_math_matrix_frustum`, `math/m_matrix.c`).
+    let [l, r, b, t, n, f] = [l, r, b, t, n, f].map(|v| v as f32);
     let m = [
-        [2.0 * n / (r - l), 0.0, 0.0, 0.0],
-        [0.0, 2.0 * n / (t - b), 0.0, 0.0],
+        [(2.0 * n) / (r - l), 0.0, 0.0, 0.0],
+        [0.0, (2.0 * n) / (t - b), 0.0, 0.0],
         [(r + l) / (r - l), (t + b) / (t - b), -(f + n) / (f - n), -1.0],
-        [0.0, 0.0, -2.0 * f * n / (f - n), 0.0],
+        [0.0, 0.0, -(2.0 * f * n) / (f - n), 0.0],
     ];
-    Ok(from_cols_f64(m))
+    Ok(Mat4::from_cols_array_2d(&m))
 }
 
 /// `glOrtho`; `InvalidValue` when a pair is equal.
@@ -140,15 +143,13 @@ pub fn ortho(l: f64, r: f64, b: f64, t: f64, n: f64, f: f64) -> GlResult<Mat4> {
     if l == r || b == t || n == f {
         return Err(GlError::InvalidValue);
     }
+    // In f32 from f32 arguments, as Mesa (`_math_float_ortho`, `math/m_matrix.c`).
+    let [l, r, b, t, n, f] = [l, r, b, t, n, f].map(|v| v as f32);
     let m = [
         [2.0 / (r - l), 0.0, 0.0, 0.0],
         [0.0, 2.0 / (t - b), 0.0, 0.0],
         [0.0, 0.0, -2.0 / (f - n), 0.0],
         [-(r + l) / (r - l), -(t + b) / (t - b), -(f + n) / (f - n), 1.0],
     ];
-    Ok(from_cols_f64(m))
-}
-
-fn from_cols_f64(m: [[f64; 4]; 4]) -> Mat4 {
-    Mat4::from_cols_array_2d(&m.map(|col| col.map(|v| v as f32)))
+    Ok(Mat4::from_cols_array_2d(&m))
 }

@@ -269,14 +269,25 @@ impl<'s> Geometry<'s> {
     }
 
     /// Perspective divide and viewport transform; `None` when not finite.
-    fn project(&self, v: &ClipVertex) -> Option<RasterVertex> {
+    /// A vertex of the draw (`fused`) is mapped by draw's compiled shader,
+    /// `fma(c·(1/w), scale, translate)` (`generate_viewport`, `draw_llvm.c`);
+    /// one the clipper made, in C without fusing (`interp`,
+    /// `draw_pipe_clip.c`) (docs/llvmpipe-facts.md §11).
+    fn project_as(&self, v: &ClipVertex, fused: bool) -> Option<RasterVertex> {
         let p = v.pos.as_vec4();
         let inv_w = 1.0 / p.w;
         let (s, t) = (self.viewport.scale, self.viewport.translate);
-        let x = p.x * inv_w * s[0] + t[0];
-        let y = p.y * inv_w * s[1] + t[1];
-        let y_down = p.y * inv_w * self.viewport.flipped_y.0 + self.viewport.flipped_y.1;
-        let z = p.z * inv_w * s[2] + t[2];
+        let map = |c: f32, s: f32, t: f32| {
+            if fused {
+                (c * inv_w).mul_add(s, t)
+            } else {
+                c * inv_w * s + t
+            }
+        };
+        let x = map(p.x, s[0], t[0]);
+        let y = map(p.y, s[1], t[1]);
+        let y_down = map(p.y, self.viewport.flipped_y.0, self.viewport.flipped_y.1);
+        let z = map(p.z, s[2], t[2]);
         let ok = x.is_finite() && y.is_finite() && z.is_finite() && inv_w.is_finite();
         ok.then(|| RasterVertex {
             x,
@@ -286,6 +297,11 @@ impl<'s> Geometry<'s> {
             inv_w,
             v: v.v,
         })
+    }
+
+    /// [`Self::project_as`] for a vertex of the draw.
+    fn project(&self, v: &ClipVertex) -> Option<RasterVertex> {
+        self.project_as(v, true)
     }
 
     fn point(&self, v: &ClipVertex, sink: &mut dyn SpanSink) {
@@ -306,6 +322,7 @@ impl<'s> Geometry<'s> {
         if self.user.code(a.pos) & self.user.code(b.pos) != 0 {
             return;
         }
+        let (a0, b0) = (*a, *b);
         let (mut a, mut b) = (*a, *b);
         for &g in guard_levels([a, b].iter()) {
             let planes = outcode(a.pos, g) | outcode(b.pos, g);
@@ -321,7 +338,8 @@ impl<'s> Geometry<'s> {
                 (a, b) = clipped;
             }
         }
-        if let (Some(ra), Some(rb)) = (self.project(&a), self.project(&b)) {
+        let drawn = |c: &ClipVertex| c.pos == a0.pos || c.pos == b0.pos;
+        if let (Some(ra), Some(rb)) = (self.project_as(&a, drawn(&a)), self.project_as(&b, drawn(&b))) {
             raster::line(&ra, &rb, self.state.line_width, flat.as_ref(), &self.wide_params, sink);
         }
     }
@@ -356,7 +374,8 @@ impl<'s> Geometry<'s> {
         }
         let mut win: Vec<(RasterVertex, bool)> = Vec::with_capacity(clipped.len());
         for (v, edge) in &clipped {
-            match self.project(v) {
+            let drawn = poly.iter().any(|(o, _)| o.pos == v.pos);
+            match self.project_as(v, drawn) {
                 Some(rv) => win.push((rv, *edge)),
                 None => return,
             }

@@ -43,7 +43,9 @@ pub fn scenes() -> Vec<Scene> {
         Scene::new("triangle_strip_fan", G, E, triangle_strip_fan),
         Scene::new("quads", G, QUAD_DIAGONAL, quads),
         Scene::new("quad_single", G, E, quad_single),
-        Scene::new("quad_strip", G, E, quad_strip),
+        // Measured 2026-11-23: 1 pixel 1 LSB off at 96x96 since softgl's viewport transform is
+        // fused as draw's (docs/llvmpipe-facts.md 11), which made 24 texture scenes exact.
+        Scene::new("quad_strip", G, Tolerance::one_lsb(1, 0), quad_strip),
         Scene::new("polygon", G, Tolerance::one_lsb(1, 3), polygon),
         Scene::new("modes_flat", G, E, modes_flat),
         Scene::new("modes_smooth", G, Tolerance::one_lsb(0, 1), modes_smooth),
