@@ -1046,15 +1046,7 @@ fn random_texture_calls_neither_panic_nor_write_outside_the_buffers() {
                 glColor4f(r.float(), 0.5, 0.5, 1.0);
                 quad();
             }
-            _ => {
-                glFinish();
-                let e = glGetError();
-                assert!(
-                    e == GL_NO_ERROR || (0x500..=0x505).contains(&e),
-                    "step {step}: error {e:#x}"
-                );
-                seen[usize::from(e != GL_NO_ERROR)] += 1;
-            }
+            _ => current::finish_and_count_error(step, &mut seen),
         }
         assert_eq!(PANICS.load(Ordering::SeqCst), 0, "a panic at step {step}");
     }

@@ -37,3 +37,16 @@ pub fn current_in_pixels(buf: &mut [u8], w: i32, h: i32) -> OSMesaContext {
     glMatrixMode(GL_MODELVIEW);
     ctx
 }
+
+/// The check step of the random-call tests: after `glFinish`, the error is
+/// none or one of GL's codes (never anything else); counts it in `seen`
+/// (`[without error, with error]`).
+pub fn finish_and_count_error(step: usize, seen: &mut [usize; 2]) {
+    glFinish();
+    let e = glGetError();
+    assert!(
+        e == GL_NO_ERROR || (0x500..=0x505).contains(&e),
+        "step {step}: error {e:#x}"
+    );
+    seen[usize::from(e != GL_NO_ERROR)] += 1;
+}
