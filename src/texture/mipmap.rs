@@ -52,6 +52,13 @@ fn aos_coord(i: usize, dst: u32, src: u32) -> (usize, usize, u8) {
     )
 }
 
+/// The source coordinates of destination texel `p` in each dimension, by
+/// `coord` ([`aos_coord`] or [`float_coord`]).
+fn coords<T>(coord: fn(usize, u32, u32) -> T, p: [usize; 3], dst: [u32; 3], src: [u32; 3]) -> [T; 3] {
+    let [d, s] = [dst, src];
+    [0, 1, 2].map(|k| coord(p[k], d[k], s[k]))
+}
+
 /// The f32 path's neighbours and weight: `u = s · src − 0.5`.
 fn float_coord(i: usize, dst: u32, src: u32) -> (usize, usize, f32) {
     let s = (i as f32 + 0.5) / dst as f32;
@@ -169,22 +176,14 @@ fn downsample(src: &TexImage, size: [u32; 3]) -> TexImage {
             for x in 0..size[0] as usize {
                 let n: [u32; 4] = match &texels {
                     Texels::Bytes(v) => {
-                        let a = [
-                            aos_coord(x, size[0], sw),
-                            aos_coord(y, size[1], sh),
-                            aos_coord(z, size[2], sd),
-                        ];
+                        let a = coords(aos_coord, [x, y, z], size, [sw, sh, sd]);
                         std::array::from_fn(|c| {
                             let t = trilinear(v, sw as usize, sh as usize, c, a, lerp8);
                             requantize(u32::from(t), storage.bits[c])
                         })
                     }
                     Texels::Floats(v) => {
-                        let a = [
-                            float_coord(x, size[0], sw),
-                            float_coord(y, size[1], sh),
-                            float_coord(z, size[2], sd),
-                        ];
+                        let a = coords(float_coord, [x, y, z], size, [sw, sh, sd]);
                         std::array::from_fn(|c| {
                             let f = trilinear(v, sw as usize, sh as usize, c, a, lerp);
                             match (storage.texel_format(), storage.bits[c]) {
