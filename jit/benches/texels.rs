@@ -86,7 +86,7 @@ fn texels(c: &mut Criterion) {
         ("linear", Filter::Linear, MipFilter::None),
         ("trilinear", Filter::Linear, MipFilter::Linear),
     ] {
-        let key = key(filter, mip);
+        let key = support::bind(&key(filter, mip), &set);
         let specialist = Specialist::compile(&key).expect("the bench key compiles");
         for backend in ["jit", "interpreter"] {
             group.bench_function(format!("{name}/{backend}"), |b| {
@@ -118,7 +118,13 @@ fn texels(c: &mut Criterion) {
 /// and bilinear, the second MODULATE over the first); and the shaded key
 /// without texturing, for scale.
 fn compile(c: &mut Criterion) {
-    let one = key(Filter::Linear, MipFilter::Linear);
+    // The statics of the bench's texture (power-of-two, no LOD clamp or bias).
+    let levels = levels();
+    let images = support::images(&levels);
+    let mut set = TextureSet::default();
+    set.units[0] = Some(support::whole_chain(&images));
+    set.units[1] = set.units[0];
+    let one = support::bind(&key(Filter::Linear, MipFilter::Linear), &set);
     let mut two = one;
     if let Some(shade) = two.shade.as_mut() {
         let mut second = shade.tex[0].expect("unit 0 is on");
@@ -126,6 +132,7 @@ fn compile(c: &mut Criterion) {
         second.sampler.wrap = [Wrap::ClampToEdge; 3];
         shade.tex[1] = Some(second);
     }
+    let two = support::bind(&two, &set);
     // For scale, in the same run: the same key without its unit.
     let mut untextured = one;
     if let Some(shade) = untextured.shade.as_mut() {

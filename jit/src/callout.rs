@@ -8,7 +8,7 @@
 //! valid for the whole call; everything in it is read-only.
 
 use crate::texture::lod::LodState;
-use crate::texture::{MipFilter, TexUnitKey, TextureRef, TextureSet, MAX_LEVELS, MAX_UNITS};
+use crate::texture::{SamplerStatics, TexUnitKey, TextureRef, TextureSet, MAX_LEVELS, MAX_UNITS};
 use std::marker::PhantomData;
 
 /// The draw's textures as compiled code sees them. `#[repr(C)]`: the
@@ -37,20 +37,14 @@ pub struct TexView<'a> {
 pub struct UnitView {
     /// The base level's width and height as floats (λ is measured in its texels).
     pub base_size: [[f32; 4]; 2],
-    /// `crate::texture::lod::LodState`'s values and flags.
+    /// `crate::texture::lod::LodState`'s values (its flags are the key's
+    /// `SamplerStatics`).
     pub min_lod: [f32; 4],
     pub max_lod: [f32; 4],
     pub bias: [f32; 4],
-    pub min_max_equal: [i32; 4],
-    pub apply_min: [i32; 4],
-    pub apply_max: [i32; 4],
-    /// No adjustment after log2 (λ's integer part from ρ's exponent).
-    pub exponent_only: [i32; 4],
     /// The first and last level sampled (`base_level`, `max(max_level, base_level)`).
     pub first: [i32; 4],
     pub last: [i32; 4],
-    /// Whether level 0's width and height are powers of two.
-    pub pot: [[i32; 4]; 2],
     /// Levels `first..=last` (the others zero): every one non-empty, at
     /// least 1×1, and holding `4 · width · height` bytes.
     pub levels: [LevelView; MAX_LEVELS],
@@ -72,13 +66,8 @@ impl Default for UnitView {
             min_lod: [0.0; 4],
             max_lod: [0.0; 4],
             bias: [0.0; 4],
-            min_max_equal: [0; 4],
-            apply_min: [0; 4],
-            apply_max: [0; 4],
-            exponent_only: [0; 4],
             first: [0; 4],
             last: [0; 4],
-            pot: [[0; 4]; 2],
             levels: [LevelView {
                 texels: std::ptr::null(),
                 width: 0,
@@ -94,8 +83,12 @@ const NATIVE_MAX_SIDE: u32 = 16384;
 impl UnitView {
     /// The view of `tex` for native sampling with `key`, or `None` when a
     /// level it may read is missing or malformed (the reference reads zeros
-    /// there; the specialist then leaves the whole call to the interpreter).
+    /// there) or the key's statics are not the texture's: the specialist
+    /// then leaves the whole call to the interpreter.
     fn new(key: &TexUnitKey, tex: &TextureRef<'_>) -> Option<UnitView> {
+        if key.sampler.statics != SamplerStatics::of(&key.sampler, tex) {
+            return None;
+        }
         let first = tex.base_level;
         let last = tex.max_level.max(first);
         let image = |l: u32| tex.images.get(l as usize).filter(|im| !im.texels.is_empty());
@@ -115,23 +108,13 @@ impl UnitView {
             };
         }
         let base = image(first)?;
-        let level0 = image(0).unwrap_or(base);
-        let mask = |b: bool| [-i32::from(b); 4];
         let s = LodState::new(&key.sampler, tex);
         v.base_size = [[base.width as f32; 4], [base.height as f32; 4]];
         v.min_lod = [s.min_lod; 4];
         v.max_lod = [s.max_lod; 4];
         v.bias = [s.bias; 4];
-        v.min_max_equal = mask(s.min_max_equal);
-        v.apply_min = mask(s.apply_min);
-        v.apply_max = mask(s.apply_max);
-        v.exponent_only = mask(s.bias == 0.0 && !s.apply_min && !s.apply_max && key.sampler.mip != MipFilter::Linear);
         v.first = [first as i32; 4];
         v.last = [last as i32; 4];
-        v.pot = [
-            mask(level0.width.max(1).is_power_of_two()),
-            mask(level0.height.max(1).is_power_of_two()),
-        ];
         Some(v)
     }
 }

@@ -33,7 +33,7 @@ mod sample;
 mod shade;
 mod texture;
 
-pub use sample::native_unit;
+pub use sample::{native_sampler, native_unit};
 
 const I32X4: Type = types::I32X4;
 

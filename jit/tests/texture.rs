@@ -15,7 +15,8 @@ use cases::{cases, compare, difference, filter, probe_line, recorded, texels, wr
 use softgl_jit::shade::unorm8;
 use softgl_jit::texture::{
     effective_combine, environment, sample_quad, BaseFormat, CombineFn, CombineKey, CombineSrc, DepthMode, EnvMode,
-    Filter, Image, MipFilter, Operand, SamplerKey, TexTarget, TexUnitKey, TexelFormat, TextureRef, Wrap, MAX_UNITS,
+    Filter, Image, MipFilter, Operand, SamplerKey, SamplerStatics, TexTarget, TexUnitKey, TexelFormat, TextureRef,
+    Wrap, MAX_UNITS,
 };
 
 /// Scene side in pixels (the probe's `N`).
@@ -98,6 +99,7 @@ fn scene(c: &Case, seed: u32) -> Scene {
         wrap: std::array::from_fn(|a| if a < dims { wraps[a] } else { Wrap::Repeat }),
         compare: c.kv.get("compare").map(|f| compare(f)),
         depth_mode,
+        statics: SamplerStatics::default(),
     };
     let env_base = if base == BaseFormat::Depth {
         depth_mode.base()
@@ -252,6 +254,7 @@ fn unit_1d(min: Filter, mag: Filter, wrap: Wrap, format: TexelFormat) -> TexUnit
             wrap: [wrap, Wrap::Repeat, Wrap::Repeat],
             compare: None,
             depth_mode: DepthMode::Luminance,
+            statics: SamplerStatics::default(),
         },
         base: BaseFormat::Rgba,
         env: CombineKey::DEFAULT,

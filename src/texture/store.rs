@@ -2,7 +2,8 @@
 //! the proxy images, and which object each unit has bound to each target.
 
 use super::jit::{
-    quantized_lod_bias, BaseFormat, Image, MipFilter, SamplerKey, TexTarget, TextureRef, Wrap, MAX_UNITS,
+    quantized_lod_bias, BaseFormat, Image, MipFilter, SamplerKey, SamplerStatics, TexTarget, TextureRef, Wrap,
+    MAX_UNITS,
 };
 use super::object::TextureObject;
 use std::collections::HashMap;
@@ -176,6 +177,8 @@ impl TextureStore {
             wrap,
             compare: (p.compare && storage.base == BaseFormat::Depth).then_some(p.compare_func),
             depth_mode: p.depth_mode,
+            // The unit's plan adds them, with the unit's LOD bias.
+            statics: SamplerStatics::default(),
         };
         let faces = obj.faces();
         let images = obj.images[..(last + 1) * faces]

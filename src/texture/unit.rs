@@ -279,13 +279,14 @@ impl TextureUnits {
                 BaseFormat::Depth => sampler.depth_mode.base(),
                 _ => base,
             };
+            let lod_bias = quantized_lod_bias(unit.lod_bias);
             plan.keys[u] = Some(TexUnitKey {
-                sampler,
+                sampler: sampler.with_statics(&sampling.texture_ref(lod_bias)),
                 base,
                 env: effective_combine(unit.env_mode, env_base, unit.combine),
             });
             plan.samplings[u] = Some(sampling);
-            plan.lod_bias[u] = quantized_lod_bias(unit.lod_bias);
+            plan.lod_bias[u] = lod_bias;
             plan.env_color[u] = unit.env_color;
             plan.mask |= 1 << u;
         }

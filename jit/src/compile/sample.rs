@@ -21,7 +21,11 @@ const F32X4: cranelift_codegen::ir::Type = types::F32X4;
 
 /// Whether generated code samples `unit` itself (else it calls the reference).
 pub fn native_unit(unit: &TexUnitKey) -> bool {
-    let s: &SamplerKey = &unit.sampler;
+    native_sampler(&unit.sampler)
+}
+
+/// [`native_unit`] of a unit with sampler `s`.
+pub fn native_sampler(s: &SamplerKey) -> bool {
     s.target == TexTarget::D2
         && s.format == TexelFormat::Rgba8
         && s.compare.is_none()
@@ -51,7 +55,7 @@ impl Gen<'_> {
             let texels = self.fetch_level(unit, key, (key.min, first), c.at);
             return self.texels_to_float(texels);
         };
-        let (ipart, fpart, minified) = self.lambda(unit, key.mip, quad);
+        let (ipart, fpart, minified) = self.lambda(unit, key, quad);
         let last = self.unit_i32(unit, offset_of!(UnitView, last));
         let l0 = self.b.ins().iadd(ipart, first);
         // The levels λ selects (`lod::levels`) and the minification filter there.
@@ -84,9 +88,12 @@ impl Gen<'_> {
                 let ff = self.splat(255);
                 let w = self.b.ins().band(w, ff);
                 let w = self.b.ins().bitselect(ends, zero, w);
-                let c0 = self.fetch_level(unit, key, (key.min, level0), c.at);
-                let c1 = self.fetch_level(unit, key, (key.min, level1), c.at);
-                (level0, self.lerp_texels(w, c0, c1))
+                // Both levels' texels stay widened for the lerp between them.
+                let c0 = self.fetch_level_wide(unit, key, (key.min, level0), c.at);
+                let c1 = self.fetch_level_wide(unit, key, (key.min, level1), c.at);
+                let w = self.wide_weight(w);
+                let r = self.lerp_wide(w, c0, c1);
+                (level0, self.narrow(r))
             }
         };
         let texels = if key.min == key.mag {
@@ -113,53 +120,72 @@ impl Gen<'_> {
     }
 
     /// λ's integer part, (linear mipmap filter) fraction, and the lanes it
-    /// minifies (`crate::texture::lod::{rho_quad, select}` for two dimensions).
-    fn lambda(&mut self, unit: Value, mip: MipFilter, quad: [[Value; 2]; 3]) -> (Value, Option<Value>, Value) {
-        let [tl, tr, bl] = quad;
-        let size = [0, 1].map(|a| self.unit_f32(unit, offset_of!(UnitView, base_size) + 16 * a));
-        let sq = |s: &mut Self, d: Value, size: Value| {
-            let v = s.b.ins().fmul(d, size);
-            s.b.ins().fmul(v, v)
+    /// minifies (`crate::texture::lod::{rho_quad, select}` for two
+    /// dimensions), with the adjustments the key's statics compile in.
+    fn lambda(&mut self, unit: Value, key: &SamplerKey, quad: [[Value; 2]; 3]) -> (Value, Option<Value>, Value) {
+        let st = key.statics;
+        let lod = if st.min_max_equal {
+            // λ is GL_TEXTURE_MIN_LOD: ρ is not needed.
+            self.unit_f32(unit, offset_of!(UnitView, min_lod))
+        } else {
+            let [tl, tr, bl] = quad;
+            let size = [0, 1].map(|a| self.unit_f32(unit, offset_of!(UnitView, base_size) + 16 * a));
+            let sq = |s: &mut Self, d: Value, size: Value| {
+                let v = s.b.ins().fmul(d, size);
+                s.b.ins().fmul(v, v)
+            };
+            let rho = [tr, bl].map(|p| {
+                let ds = self.b.ins().fsub(p[0], tl[0]);
+                let dt = self.b.ins().fsub(p[1], tl[1]);
+                let a = sq(self, ds, size[0]);
+                let b = sq(self, dt, size[1]);
+                self.b.ins().fadd(a, b)
+            });
+            let rho = self.maxps(rho[0], rho[1]);
+            let bits = self.b.ins().bitcast(I32X4, MemFlagsData::new(), rho);
+            let e = self.b.ins().ushr_imm_u(bits, 23);
+            let ff = self.splat(255);
+            let e = self.b.ins().band(e, ff);
+            if st.exponent_only(key.mip) {
+                // No adjustment after log2: `round(log2(√ρ²))` from the exponent
+                // (`lod::ilog2_sqrt`: the field minus 126, halved), minified
+                // where ρ > 1.
+                let bias126 = self.splat(126);
+                let from_exp = self.b.ins().isub(e, bias126);
+                let ipart = self.b.ins().sshr_imm_u(from_exp, 1);
+                let one = self.fconst(1.0);
+                let minified = self.b.ins().fcmp(FloatCC::GreaterThan, rho, one);
+                return (ipart, None, minified);
+            }
+            // fast_log2(ρ²)·0.5, plus the bias and clamps the statics say.
+            let m = self.splat(0x007f_ffff);
+            let mant = self.b.ins().band(bits, m);
+            let one_bits = self.splat(0x3f80_0000);
+            let mant = self.b.ins().bor(mant, one_bits);
+            let mant = self.b.ins().bitcast(F32X4, MemFlagsData::new(), mant);
+            let bias128 = self.splat(128);
+            let ef = self.b.ins().isub(e, bias128);
+            let ef = self.b.ins().fcvt_from_sint(F32X4, ef);
+            let log = self.b.ins().fadd(ef, mant);
+            let half = self.fconst(0.5);
+            let mut lod = self.b.ins().fmul(log, half);
+            if st.bias_non_zero {
+                let bias = self.unit_f32(unit, offset_of!(UnitView, bias));
+                lod = self.b.ins().fadd(lod, bias);
+            }
+            if st.apply_max {
+                let max_lod = self.unit_f32(unit, offset_of!(UnitView, max_lod));
+                lod = self.minps(lod, max_lod);
+            }
+            if st.apply_min {
+                let min_lod = self.unit_f32(unit, offset_of!(UnitView, min_lod));
+                lod = self.maxps(lod, min_lod);
+            }
+            lod
         };
-        let rho = [tr, bl].map(|p| {
-            let ds = self.b.ins().fsub(p[0], tl[0]);
-            let dt = self.b.ins().fsub(p[1], tl[1]);
-            let a = sq(self, ds, size[0]);
-            let b = sq(self, dt, size[1]);
-            self.b.ins().fadd(a, b)
-        });
-        let rho = self.maxps(rho[0], rho[1]);
-        // fast_log2(ρ²)·0.5 + bias, clamped where the state says so.
-        let bits = self.b.ins().bitcast(I32X4, MemFlagsData::new(), rho);
-        let e = self.b.ins().ushr_imm_u(bits, 23);
-        let ff = self.splat(255);
-        let e = self.b.ins().band(e, ff);
-        let m = self.splat(0x007f_ffff);
-        let mant = self.b.ins().band(bits, m);
-        let one_bits = self.splat(0x3f80_0000);
-        let mant = self.b.ins().bor(mant, one_bits);
-        let mant = self.b.ins().bitcast(F32X4, MemFlagsData::new(), mant);
-        let bias128 = self.splat(128);
-        let ef = self.b.ins().isub(e, bias128);
-        let ef = self.b.ins().fcvt_from_sint(F32X4, ef);
-        let log = self.b.ins().fadd(ef, mant);
-        let half = self.fconst(0.5);
-        let lod = self.b.ins().fmul(log, half);
-        let bias = self.unit_f32(unit, offset_of!(UnitView, bias));
-        let lod = self.b.ins().fadd(lod, bias);
-        let max_lod = self.unit_f32(unit, offset_of!(UnitView, max_lod));
-        let clamped = self.minps(lod, max_lod);
-        let apply = self.unit_fmask(unit, offset_of!(UnitView, apply_max));
-        let lod = self.b.ins().bitselect(apply, clamped, lod);
-        let min_lod = self.unit_f32(unit, offset_of!(UnitView, min_lod));
-        let clamped = self.maxps(lod, min_lod);
-        let apply = self.unit_fmask(unit, offset_of!(UnitView, apply_min));
-        let lod = self.b.ins().bitselect(apply, clamped, lod);
-        let equal = self.unit_fmask(unit, offset_of!(UnitView, min_max_equal));
-        let lod = self.b.ins().bitselect(equal, min_lod, lod);
         let zero = self.fconst(0.0);
         let minified = self.b.ins().fcmp(FloatCC::GreaterThan, lod, zero);
-        match mip {
+        match key.mip {
             MipFilter::Linear => {
                 let f = self.b.ins().floor(lod);
                 let fpart = self.b.ins().fsub(lod, f);
@@ -167,33 +193,26 @@ impl Gen<'_> {
             }
             _ => {
                 let r = self.b.ins().nearest(lod);
-                let ipart = self.int_lanes(r);
-                // No adjustment after log2: `round(log2(√ρ²))` from the exponent
-                // (`lod::ilog2_sqrt`: the field minus 126, halved).
-                let bias126 = self.splat(126);
-                let from_exp = self.b.ins().isub(e, bias126);
-                let from_exp = self.b.ins().sshr_imm_u(from_exp, 1);
-                let only = self.unit_i32(unit, offset_of!(UnitView, exponent_only));
-                let equal = self.unit_i32(unit, offset_of!(UnitView, min_max_equal));
-                let only = self.b.ins().band_not(only, equal);
-                // There minified is ρ > 1.
-                let one = self.fconst(1.0);
-                let above = self.b.ins().fcmp(FloatCC::GreaterThan, rho, one);
-                let minified = self.b.ins().bitselect(only, above, minified);
-                (self.b.ins().bitselect(only, from_exp, ipart), None, minified)
+                (self.int_lanes(r), None, minified)
             }
         }
     }
 
     /// The packed RGBA8 of each lane's level `level`, filtered with `filter`
     /// at `at` (`crate::texture::filter::aos`, two dimensions).
-    fn fetch_level(
+    fn fetch_level(&mut self, unit: Value, key: &SamplerKey, filter: (Filter, Value), at: [Value; 2]) -> Value {
+        let t = self.fetch_level_wide(unit, key, filter, at);
+        self.narrow(t)
+    }
+
+    /// [`Self::fetch_level`] as the two halves of [`Self::widen`].
+    fn fetch_level_wide(
         &mut self,
         unit: Value,
         key: &SamplerKey,
         (filter, level): (Filter, Value),
         at: [Value; 2],
-    ) -> Value {
+    ) -> [Value; 2] {
         // Each lane's level: its texels and sizes, one lane after the other in
         // straight-line code (a loop's blocks made the single-pass register
         // allocator spill every vector live across them).
@@ -221,7 +240,7 @@ impl Gen<'_> {
             }
         }
         let size = sizes.map(|v| self.lanes_vector(v));
-        let pot = [0, 1].map(|a| self.unit_i32(unit, offset_of!(UnitView, pot) + 16 * a));
+        let pot = key.statics.pot;
         let one = self.splat(1);
         // Coordinates are clamped to the level (they already are: the clamp
         // only guarantees it), rows made once.
@@ -238,7 +257,8 @@ impl Gen<'_> {
                 let y = self.nearest_axis(at[1], size[1], pot[1], key.wrap[1]);
                 let x = column(self, x);
                 let y = row(self, y);
-                self.fetch(&ptrs, &[(x, y)])[0]
+                let t = self.fetch(&ptrs, &[(x, y)])[0];
+                self.widen(t)
             }
             Filter::Linear => {
                 let (x0, x1, wx) = self.linear_axis(at[0], size[0], pot[0], key.wrap[0]);
@@ -251,8 +271,7 @@ impl Gen<'_> {
                 let (wx, wy) = (self.wide_weight(wx), self.wide_weight(wy));
                 let r0 = self.lerp_wide(wx, t[0], t[1]);
                 let r1 = self.lerp_wide(wx, t[2], t[3]);
-                let r = self.lerp_wide(wy, r0, r1);
-                self.narrow(r)
+                self.lerp_wide(wy, r0, r1)
             }
         }
     }
@@ -283,15 +302,6 @@ impl Gen<'_> {
             out = self.b.ins().insertlane(out, x, lane as u8);
         }
         out
-    }
-
-    /// The 8-bit lerp of packed RGBA8 lanes `a` to `b` with each lane's
-    /// weight `w` (0..=255) in every channel ([`Self::lerp_wide`]).
-    fn lerp_texels(&mut self, w: Value, a: Value, b: Value) -> Value {
-        let w = self.wide_weight(w);
-        let (a, b) = (self.widen(a), self.widen(b));
-        let r = self.lerp_wide(w, a, b);
-        self.narrow(r)
     }
 
     /// Packed RGBA8 lanes as two `i16x8` halves (lanes 0–1, lanes 2–3).
@@ -326,12 +336,19 @@ impl Gen<'_> {
 
     /// The 8-bit lerp on widened texels (`arith::lerp8`), as llvmpipe
     /// computes it: on 16-bit lanes, `pmulhrsw(w, (b − a) << 7)` is
-    /// `(w·(b − a) + 128) >> 8`.
+    /// `(w·(b − a) + 128) >> 8`. Neither factor is ever −32768 (w ≤ 255,
+    /// |b − a| ≤ 255), where `pmulhrsw` and `sqmul_round_sat` differ, so
+    /// x86-64 takes the bare instruction (`sqmul_round_sat` adds a fix-up
+    /// for that case: two instructions per lerp).
     fn lerp_wide(&mut self, w: [Value; 2], a: [Value; 2], b: [Value; 2]) -> [Value; 2] {
         std::array::from_fn(|h| {
             let d = self.b.ins().isub(b[h], a[h]);
             let d = self.b.ins().ishl_imm_u(d, 7);
-            let step = self.b.ins().sqmul_round_sat(w[h], d);
+            let step = if self.x86 {
+                self.b.ins().x86_pmulhrsw(w[h], d)
+            } else {
+                self.b.ins().sqmul_round_sat(w[h], d)
+            };
             self.b.ins().iadd(a[h], step)
         })
     }
@@ -352,27 +369,32 @@ impl Gen<'_> {
         ch
     }
 
-    /// The nearest texel along an axis (`filter::aos_nearest_axis`).
-    fn nearest_axis(&mut self, s: Value, len: Value, pot: Value, wrap: Wrap) -> Value {
+    /// The nearest texel along an axis (`filter::aos_nearest_axis`); `pot`:
+    /// REPEAT of a power-of-two size (the key's statics).
+    fn nearest_axis(&mut self, s: Value, len: Value, pot: bool, wrap: Wrap) -> Value {
         let lf = self.b.ins().fcvt_from_sint(F32X4, len);
         let one = self.splat(1);
         let len1 = self.b.ins().isub(len, one);
-        let v = self.b.ins().fmul(s, lf);
-        let v = self.b.ins().floor(v);
-        let i = self.int_lanes(v);
         match wrap {
+            Wrap::Repeat if pot => {
+                let v = self.b.ins().fmul(s, lf);
+                let v = self.b.ins().floor(v);
+                let i = self.int_lanes(v);
+                self.b.ins().band(i, len1)
+            }
             Wrap::Repeat => {
-                let p = self.b.ins().band(i, len1);
                 let f = self.b.ins().floor(s);
                 let f = self.b.ins().fsub(s, f);
                 let max = self.fconst(1.0 - 1.0 / (1u32 << 24) as f32);
                 // fract_safe: below the bound, else (and NaN) the bound.
                 let f = self.minps(f, max);
                 let v = self.b.ins().fmul(f, lf);
-                let n = self.int_lanes(v);
-                self.b.ins().bitselect(pot, p, n)
+                self.int_lanes(v)
             }
             _ => {
+                let v = self.b.ins().fmul(s, lf);
+                let v = self.b.ins().floor(v);
+                let i = self.int_lanes(v);
                 let zero = self.splat(0);
                 let i = self.b.ins().smax(i, zero);
                 self.b.ins().smin(i, len1)
@@ -381,24 +403,31 @@ impl Gen<'_> {
     }
 
     /// The two texels and the 8-bit weight of the second along an axis
-    /// (`filter::aos_linear_axis`).
-    fn linear_axis(&mut self, s: Value, len: Value, pot: Value, wrap: Wrap) -> (Value, Value, Value) {
+    /// (`filter::aos_linear_axis`); `pot` as in [`Self::nearest_axis`].
+    fn linear_axis(&mut self, s: Value, len: Value, pot: bool, wrap: Wrap) -> (Value, Value, Value) {
         let one = self.splat(1);
         let len1 = self.b.ins().isub(len, one);
         let zero = self.splat(0);
         let ff = self.splat(255);
         let m128 = self.splat(-128);
-        let scaled = self.b.ins().ishl_imm_u(len, 8);
-        let scaled = self.b.ins().fcvt_from_sint(F32X4, scaled);
-        let u = self.b.ins().fmul(s, scaled);
-        let u = self.b.ins().nearest(u);
-        let u = self.int_lanes(u);
-        let u = self.b.ins().iadd(u, m128);
-        let i = self.b.ins().sshr_imm_u(u, 8);
-        let w = self.b.ins().band(u, ff);
+        // `round(v · 256) − 128` split into its texel (>> 8) and weight (& 255).
+        let split = |g: &mut Self, v: Value| {
+            let u = g.b.ins().nearest(v);
+            let u = g.int_lanes(u);
+            let u = g.b.ins().iadd(u, m128);
+            (g.b.ins().sshr_imm_u(u, 8), g.b.ins().band(u, ff))
+        };
         match wrap {
+            Wrap::Repeat if pot => {
+                let scaled = self.b.ins().ishl_imm_u(len, 8);
+                let scaled = self.b.ins().fcvt_from_sint(F32X4, scaled);
+                let u = self.b.ins().fmul(s, scaled);
+                let (i, w) = split(self, u);
+                let x0 = self.b.ins().band(i, len1);
+                let next = self.b.ins().iadd(x0, one);
+                (x0, self.b.ins().band(next, len1), w)
+            }
             Wrap::Repeat => {
-                let x_pot = self.b.ins().band(i, len1);
                 // Not a power of two: from the fraction of s.
                 let lf = self.b.ins().fcvt_from_sint(F32X4, len);
                 let f = self.b.ins().floor(s);
@@ -406,22 +435,19 @@ impl Gen<'_> {
                 let v = self.b.ins().fmul(f, lf);
                 let k = self.fconst(256.0);
                 let v = self.b.ins().fmul(v, k);
-                let v = self.b.ins().nearest(v);
-                let v = self.int_lanes(v);
-                let v = self.b.ins().iadd(v, m128);
-                let hi = self.b.ins().sshr_imm_u(v, 8);
+                let (hi, w) = split(self, v);
                 let negative = self.b.ins().icmp(IntCC::SignedLessThan, hi, zero);
-                let x_npot = self.b.ins().bitselect(negative, len1, hi);
-                let x_npot = self.b.ins().smin(x_npot, len1);
-                let w_npot = self.b.ins().band(v, ff);
-                let x0 = self.b.ins().bitselect(pot, x_pot, x_npot);
-                let w = self.b.ins().bitselect(pot, w, w_npot);
+                let x0 = self.b.ins().bitselect(negative, len1, hi);
+                let x0 = self.b.ins().smin(x0, len1);
                 let last = self.b.ins().icmp(IntCC::Equal, x0, len1);
                 let next = self.b.ins().iadd(x0, one);
-                let x1 = self.b.ins().bitselect(last, zero, next);
-                (x0, x1, w)
+                (x0, self.b.ins().bitselect(last, zero, next), w)
             }
             _ => {
+                let scaled = self.b.ins().ishl_imm_u(len, 8);
+                let scaled = self.b.ins().fcvt_from_sint(F32X4, scaled);
+                let u = self.b.ins().fmul(s, scaled);
+                let (i, w) = split(self, u);
                 let ge0 = self.b.ins().icmp(IntCC::SignedGreaterThanOrEqual, i, zero);
                 let lt = self.b.ins().icmp(IntCC::SignedLessThan, i, len1);
                 let x0 = self.b.ins().bitselect(ge0, i, zero);
@@ -454,10 +480,5 @@ impl Gen<'_> {
 
     fn unit_i32(&mut self, unit: Value, off: usize) -> Value {
         self.b.ins().load(I32X4, mem(), unit, off as i32)
-    }
-
-    /// A mask of the unit view, typed for selecting `f32x4` lanes.
-    fn unit_fmask(&mut self, unit: Value, off: usize) -> Value {
-        self.unit_f32(unit, off)
     }
 }

@@ -137,6 +137,81 @@ pub struct SamplerKey {
     /// `GL_COMPARE_R_TO_TEXTURE` with this function (depth formats only).
     pub compare: Option<crate::key::CompareFunc>,
     pub depth_mode: DepthMode,
+    /// What natively sampled units compile in from the bound texture
+    /// ([`SamplerKey::with_statics`]); the default for the others.
+    pub statics: SamplerStatics,
+}
+
+/// Facts about the bound texture that llvmpipe compiles into its sampler
+/// rather than reading at run time, and so does the native sampler
+/// (`crate::compile::native_unit`): `lp_static_texture_state`'s
+/// `pot_width`/`pot_height` and `lp_static_sampler_state`'s
+/// `min_max_lod_equal`, `apply_min_lod`, `apply_max_lod` and
+/// `lod_bias_non_zero` (`gallivm/lp_bld_sample.c`,
+/// `lp_sampler_static_texture_state` and `lp_sampler_static_sampler_state`).
+/// Sizes, addresses and the LOD values themselves stay uniforms. A key
+/// whose statics disagree with the texture it is drawn with runs on the
+/// interpreter (`crate::callout::TexView::new` refuses it).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SamplerStatics {
+    /// Level 0's width and height are powers of two, on the axes that REPEAT
+    /// (false on the others, where nothing depends on it).
+    pub pot: [bool; 2],
+    /// [`lod::LodState`]'s flags.
+    pub min_max_equal: bool,
+    pub apply_min: bool,
+    pub apply_max: bool,
+    pub bias_non_zero: bool,
+}
+
+impl SamplerStatics {
+    /// The statics of `tex` sampled with `key`.
+    pub fn of(key: &SamplerKey, tex: &TextureRef<'_>) -> SamplerStatics {
+        let pot = sample::pot(tex, key.target);
+        let repeats = |a: usize| key.wrap[a] == Wrap::Repeat && pot[a];
+        let lod = lod::LodState::new(key, tex);
+        SamplerStatics {
+            pot: [repeats(0), repeats(1)],
+            min_max_equal: lod.min_max_equal,
+            apply_min: lod.apply_min,
+            apply_max: lod.apply_max,
+            bias_non_zero: lod.bias != 0.0,
+        }
+    }
+
+    /// λ's integer part comes from ρ's exponent alone: no bias, no clamp, no
+    /// fraction (`lod::select`'s shortcut).
+    pub fn exponent_only(&self, mip: MipFilter) -> bool {
+        !self.bias_non_zero && !self.apply_min && !self.apply_max && mip != MipFilter::Linear
+    }
+}
+
+/// `units` with the statics of the textures of `set` ([`SamplerKey::with_statics`];
+/// a unit without a texture keeps its key).
+pub fn with_statics(units: &[Option<TexUnitKey>; MAX_UNITS], set: &TextureSet<'_>) -> [Option<TexUnitKey>; MAX_UNITS] {
+    std::array::from_fn(|u| {
+        units[u].map(|unit| match &set.units[u] {
+            Some(tex) => TexUnitKey {
+                sampler: unit.sampler.with_statics(tex),
+                ..unit
+            },
+            None => unit,
+        })
+    })
+}
+
+impl SamplerKey {
+    /// This key with the statics of `tex` where the native sampler uses
+    /// them (2D RGBA8 REPEAT/CLAMP_TO_EDGE, `crate::compile::native_unit`),
+    /// the default elsewhere (so that those keys do not multiply).
+    pub fn with_statics(self, tex: &TextureRef<'_>) -> SamplerKey {
+        let statics = if crate::compile::native_sampler(&self) {
+            SamplerStatics::of(&self, tex)
+        } else {
+            SamplerStatics::default()
+        };
+        SamplerKey { statics, ..self }
+    }
 }
 
 /// A combine function (`GL_COMBINE_RGB`, `GL_COMBINE_ALPHA`).
@@ -331,7 +406,9 @@ impl Image<'_> {
     };
 }
 
-/// What a unit samples beyond its key: never part of the key, changing it compiles nothing.
+/// What a unit samples beyond its key: never part of the key, except for
+/// the few facts of [`SamplerStatics`] (so a change of size or LOD range
+/// compiles nothing unless it changes one of those).
 #[derive(Clone, Copy, Debug)]
 pub struct TextureRef<'a> {
     /// Level `l` (relative to level 0 of the object) at `images[l]`; cube

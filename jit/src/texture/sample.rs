@@ -147,7 +147,7 @@ fn base_size(tex: &TextureRef<'_>, target: TexTarget) -> [f32; 3] {
 }
 
 /// Whether level 0's sizes are powers of two (the resource's `width0` …).
-fn pot(tex: &TextureRef<'_>, target: TexTarget) -> [bool; 3] {
+pub(crate) fn pot(tex: &TextureRef<'_>, target: TexTarget) -> [bool; 3] {
     let im = image(tex, target, 0, 0).or_else(|| image(tex, target, tex.base_level, 0));
     im.map_or([true; 3], |im| {
         [im.width, im.height, im.depth].map(|v| v.max(1).is_power_of_two())

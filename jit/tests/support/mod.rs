@@ -2,8 +2,8 @@
 //! (`#[path]`-included by `jit/benches/texels.rs`).
 
 use softgl_jit::texture::{
-    effective_combine, BaseFormat, CombineKey, DepthMode, EnvMode, Filter, Image, MipFilter, SamplerKey, TexTarget,
-    TexUnitKey, TexelFormat, TextureRef, Wrap, MAX_UNITS,
+    effective_combine, BaseFormat, CombineKey, DepthMode, EnvMode, Filter, Image, MipFilter, SamplerKey,
+    SamplerStatics, TexTarget, TexUnitKey, TexelFormat, TextureRef, TextureSet, Wrap, MAX_UNITS,
 };
 use softgl_jit::{ColorFormat, FragmentKey, ShadeKey};
 
@@ -20,6 +20,7 @@ pub fn one_unit_key(min: Filter, mip: MipFilter, mag: Filter, wrap: Wrap, mode: 
             wrap: [wrap; 3],
             compare: None,
             depth_mode: DepthMode::Luminance,
+            statics: SamplerStatics::default(),
         },
         base: BaseFormat::Rgba,
         env: effective_combine(mode, BaseFormat::Rgba, CombineKey::DEFAULT),
@@ -61,4 +62,14 @@ pub fn whole_chain<'a>(images: &'a [Image<'a>]) -> TextureRef<'a> {
         lod_bias: 0.0,
         border: [0.0; 4],
     }
+}
+
+/// `key` with the statics of `set`'s textures (`softgl_jit::texture::with_statics`):
+/// without them a natively sampled unit would run on the interpreter.
+pub fn bind(key: &FragmentKey, set: &TextureSet<'_>) -> FragmentKey {
+    let mut key = *key;
+    if let Some(shade) = key.shade.as_mut() {
+        shade.tex = softgl_jit::texture::with_statics(&shade.tex, set);
+    }
+    key
 }
