@@ -10,7 +10,7 @@
 //! [`UnitView`](crate::callout::UnitView) at run time, never from the key;
 //! per lane, since the lanes of a group can lie in quads of different levels.
 
-use super::{le, mem, Gen, I32X4};
+use super::{le, mem, Gen, Group, I32X4};
 use crate::callout::{LevelView, TexView, UnitView};
 use crate::texture::{Filter, MipFilter, SamplerKey, TexTarget, TexUnitKey, TexelFormat, Wrap, MAX_LEVELS};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
@@ -44,27 +44,40 @@ pub(super) struct Projected {
 impl Gen<'_> {
     /// Unit `u`'s filtered RGBA (`crate::texture::sample_quad`), `view` the
     /// call's [`TexView`].
-    pub(super) fn sample_native(&mut self, u: usize, key: &SamplerKey, view: Value, c: &Projected) -> [Value; 4] {
+    ///
+    /// The texels are fetched from one level per level of the filter, the
+    /// same for the group's four lanes: one look-up of its address and size
+    /// instead of four. A group whose lanes λ puts on different levels (a
+    /// line across a primitive where ⌊λ⌋ changes) takes the reference
+    /// sampler through the callout instead, on the same coordinates.
+    pub(super) fn sample_native(
+        &mut self,
+        g: &Group,
+        (u, key): (usize, &SamplerKey),
+        view: Value,
+        c: &Projected,
+    ) -> [Value; 4] {
         let unit = self.b.ins().iadd_imm_u(
             view,
             (offset_of!(TexView<'static>, units) + u * size_of::<UnitView>()) as i64,
         );
         let first = self.unit_i32(unit, offset_of!(UnitView, first));
+        let first_s = self.b.ins().extractlane(first, 0);
         let Some(quad) = c.quad else {
             // No λ: one filter, level `first`.
-            let texels = self.fetch_level(unit, key, (key.min, first), c.at);
+            let texels = self.fetch_level(unit, key, (key.min, first_s), c.at);
             return self.texels_to_float(texels);
         };
         let (ipart, fpart, minified) = self.lambda(unit, key, quad);
         let last = self.unit_i32(unit, offset_of!(UnitView, last));
         let l0 = self.b.ins().iadd(ipart, first);
-        // The levels λ selects (`lod::levels`) and the minification filter there.
-        let (level0, min) = match key.mip {
-            MipFilter::None => (first, self.fetch_level(unit, key, (key.min, first), c.at)),
+        // The levels λ selects (`lod::levels`): each lane's first, and for a
+        // linear mipmap filter its second and the 8-bit weight between them.
+        let (level0, second) = match key.mip {
+            MipFilter::None => (first, None),
             MipFilter::Nearest => {
                 let l = self.b.ins().smax(l0, first);
-                let l = self.b.ins().smin(l, last);
-                (l, self.fetch_level(unit, key, (key.min, l), c.at))
+                (self.b.ins().smin(l, last), None)
             }
             MipFilter::Linear => {
                 let fpart = fpart.expect("λ's fraction for a linear mipmap filter");
@@ -88,26 +101,59 @@ impl Gen<'_> {
                 let ff = self.splat(255);
                 let w = self.b.ins().band(w, ff);
                 let w = self.b.ins().bitselect(ends, zero, w);
-                // Both levels' texels stay widened for the lerp between them.
-                let c0 = self.fetch_level_wide(unit, key, (key.min, level0), c.at);
-                let c1 = self.fetch_level_wide(unit, key, (key.min, level1), c.at);
-                let w = self.wide_weight(w);
-                let r = self.lerp_wide(w, c0, c1);
-                (level0, self.narrow(r))
+                (level0, Some((level1, w)))
             }
         };
-        let texels = if key.min == key.mag {
-            // Magnified lanes sample the same filter: the minified path with
-            // its mipmap filter is theirs too (`lod::filter`).
-            min
-        } else {
-            // Magnified lanes: the magnification filter at the first level λ
-            // selects (the base level, except where ρ is NaN on the
-            // exponent-only path: the last).
-            let mag = self.fetch_level(unit, key, (key.mag, level0), c.at);
-            self.b.ins().bitselect(minified, min, mag)
+        let level0_s = self.b.ins().extractlane(level0, 0);
+        let fetch = |s: &mut Self| {
+            let min = match second {
+                None => s.fetch_level(unit, key, (key.min, level0_s), c.at),
+                Some((level1, w)) => {
+                    // Both levels' texels stay widened for the lerp between them.
+                    let level1_s = s.b.ins().extractlane(level1, 0);
+                    let c0 = s.fetch_level_wide(unit, key, (key.min, level0_s), c.at);
+                    let c1 = s.fetch_level_wide(unit, key, (key.min, level1_s), c.at);
+                    let w = s.wide_weight(w);
+                    let r = s.lerp_wide(w, c0, c1);
+                    s.narrow(r)
+                }
+            };
+            let texels = if key.min == key.mag {
+                // Magnified lanes sample the same filter: the minified path with
+                // its mipmap filter is theirs too (`lod::filter`).
+                min
+            } else {
+                // Magnified lanes: the magnification filter at the first level λ
+                // selects (the base level, except where ρ is NaN on the
+                // exponent-only path: the last).
+                let mag = s.fetch_level(unit, key, (key.mag, level0_s), c.at);
+                s.b.ins().bitselect(minified, min, mag)
+            };
+            s.texels_to_float(texels)
         };
-        self.texels_to_float(texels)
+        if key.mip == MipFilter::None {
+            // Every lane on level `first`.
+            return fetch(self);
+        }
+        // One level for the group (its second level follows from the first)?
+        let same = self.b.ins().splat(I32X4, level0_s);
+        let same = self.b.ins().icmp(IntCC::Equal, level0, same);
+        let same = self.b.ins().vall_true(same);
+        let (fast, slow, done) = (self.b.create_block(), self.b.create_block(), self.b.create_block());
+        let out: [Value; 4] = std::array::from_fn(|_| self.b.append_block_param(done, F32X4));
+        self.b.ins().brif(same, fast, &[], slow, &[]);
+        // Constants made in one branch do not reach the other or the join.
+        let consts = (self.consts.clone(), self.fconsts.clone());
+        self.b.switch_to_block(fast);
+        let rgba = fetch(self);
+        self.b.ins().jump(done, &rgba.map(Into::into));
+        (self.consts, self.fconsts) = consts.clone();
+        self.b.switch_to_block(slow);
+        let rgba = self.sample_called(g, u, view, c);
+        self.b.ins().jump(done, &rgba.map(Into::into));
+        (self.consts, self.fconsts) = consts;
+        self.b.switch_to_block(done);
+        out
     }
 
     /// Packed RGBA8 lanes to four float channels (`arith::unorm8_to_float`).
@@ -198,8 +244,9 @@ impl Gen<'_> {
         }
     }
 
-    /// The packed RGBA8 of each lane's level `level`, filtered with `filter`
-    /// at `at` (`crate::texture::filter::aos`, two dimensions).
+    /// The packed RGBA8 of level `level` (a scalar: the group's lanes share
+    /// it), filtered with `filter` at `at` (`crate::texture::filter::aos`,
+    /// two dimensions).
     fn fetch_level(&mut self, unit: Value, key: &SamplerKey, filter: (Filter, Value), at: [Value; 2]) -> Value {
         let t = self.fetch_level_wide(unit, key, filter, at);
         self.narrow(t)
@@ -213,33 +260,23 @@ impl Gen<'_> {
         (filter, level): (Filter, Value),
         at: [Value; 2],
     ) -> [Value; 2] {
-        // Each lane's level: its texels and sizes, one lane after the other in
-        // straight-line code (a loop's blocks made the single-pass register
-        // allocator spill every vector live across them).
+        // The level's texels and size (levels are within `first..=last` <
+        // MAX_LEVELS; the clamp keeps the address inside the view whatever
+        // the lane held).
         let base = offset_of!(UnitView, levels) as i32;
-        let mut ptrs = [level; 4];
-        let mut sizes = [[level; 4]; 2];
-        for (lane, p) in ptrs.iter_mut().enumerate() {
-            let l = self.b.ins().extractlane(level, lane as u8);
-            // Levels are within `first..=last` < MAX_LEVELS; the clamp keeps
-            // the address inside the view whatever the lane holds.
-            let last = self.b.ins().iconst(types::I32, (MAX_LEVELS - 1) as i64);
-            let l = self.b.ins().umin(l, last);
-            let l = self.b.ins().uextend(self.ptr, l);
-            let off = self.b.ins().imul_imm_u(l, size_of::<LevelView>() as i64);
-            let lv = self.b.ins().iadd(unit, off);
-            *p = self
-                .b
-                .ins()
-                .load(self.ptr, mem(), lv, base + offset_of!(LevelView, texels) as i32);
-            for (a, off) in [offset_of!(LevelView, width), offset_of!(LevelView, height)]
-                .into_iter()
-                .enumerate()
-            {
-                sizes[a][lane] = self.b.ins().load(types::I32, mem(), lv, base + off as i32);
-            }
-        }
-        let size = sizes.map(|v| self.lanes_vector(v));
+        let top = self.b.ins().iconst(types::I32, (MAX_LEVELS - 1) as i64);
+        let l = self.b.ins().umin(level, top);
+        let l = self.b.ins().uextend(self.ptr, l);
+        let off = self.b.ins().imul_imm_u(l, size_of::<LevelView>() as i64);
+        let lv = self.b.ins().iadd(unit, off);
+        let texels = self
+            .b
+            .ins()
+            .load(self.ptr, mem(), lv, base + offset_of!(LevelView, texels) as i32);
+        let size = [offset_of!(LevelView, width), offset_of!(LevelView, height)].map(|off| {
+            let v = self.b.ins().load(types::I32, mem(), lv, base + off as i32);
+            self.b.ins().splat(I32X4, v)
+        });
         let pot = key.statics.pot;
         let one = self.splat(1);
         // Coordinates are clamped to the level (they already are: the clamp
@@ -257,7 +294,7 @@ impl Gen<'_> {
                 let y = self.nearest_axis(at[1], size[1], pot[1], key.wrap[1]);
                 let x = column(self, x);
                 let y = row(self, y);
-                let t = self.fetch(&ptrs, &[(x, y)])[0];
+                let t = self.fetch(texels, &[(x, y)])[0];
                 self.widen(t)
             }
             Filter::Linear => {
@@ -265,7 +302,7 @@ impl Gen<'_> {
                 let (y0, y1, wy) = self.linear_axis(at[1], size[1], pot[1], key.wrap[1]);
                 let [x0, x1] = [x0, x1].map(|x| column(self, x));
                 let [y0, y1] = [y0, y1].map(|y| row(self, y));
-                let t = self.fetch(&ptrs, &[(x0, y0), (x1, y0), (x0, y1), (x1, y1)]);
+                let t = self.fetch(texels, &[(x0, y0), (x1, y0), (x0, y1), (x1, y1)]);
                 // The three lerps on widened texels, narrowed once.
                 let t = [t[0], t[1], t[2], t[3]].map(|t| self.widen(t));
                 let (wx, wy) = (self.wide_weight(wx), self.wide_weight(wy));
@@ -277,20 +314,20 @@ impl Gen<'_> {
     }
 
     /// The packed texels at each `(x, y)`, column and row offset
-    /// (`row · width`), of each lane's level's texels `ptrs` (from
-    /// [`Self::fetch_level`]), lane after lane.
-    fn fetch(&mut self, ptrs: &[Value; 4], at: &[(Value, Value)]) -> Vec<Value> {
+    /// (`row · width`), of the level's `texels` (from [`Self::fetch_level`]),
+    /// lane after lane.
+    fn fetch(&mut self, texels: Value, at: &[(Value, Value)]) -> Vec<Value> {
         at.iter()
             .map(|&(x, y)| {
                 let index = self.b.ins().iadd(y, x);
                 let index = self.b.ins().ishl_imm_u(index, 2);
-                let texels = std::array::from_fn(|lane| {
+                let lanes = std::array::from_fn(|lane| {
                     let off = self.b.ins().extractlane(index, lane as u8);
                     let off = self.b.ins().uextend(self.ptr, off);
-                    let addr = self.b.ins().iadd(ptrs[lane], off);
+                    let addr = self.b.ins().iadd(texels, off);
                     self.b.ins().load(types::I32, mem(), addr, 0)
                 });
-                self.lanes_vector(texels)
+                self.lanes_vector(lanes)
             })
             .collect()
     }

@@ -55,7 +55,7 @@ impl Gen<'_> {
             for (u, unit) in key.tex.iter().enumerate() {
                 if let Some(unit) = unit.as_ref().filter(|t| native_unit(t)) {
                     let c = self.project(sv, u, &points, needs_lod(&unit.sampler));
-                    samples[u] = Some(self.sample_native(u, &unit.sampler, view, &c));
+                    samples[u] = Some(self.sample_native(g, (u, &unit.sampler), view, &c));
                 }
             }
         }
@@ -134,6 +134,30 @@ impl Gen<'_> {
                 }
             }
         }
+    }
+
+    /// Natively sampled unit `u` through the reference sampler, at its
+    /// projected coordinates `c` (which must have the quad's): stored as
+    /// `(s, t, 0, 1)` (the reference's projection by q = 1 leaves them as
+    /// they are), top-left, top-right and bottom-left pixels, and each
+    /// lane's own pixel in the fourth place (the one each lane reads as its
+    /// own: for a 2D λ the reference reads no other).
+    pub(super) fn sample_called(&mut self, g: &Group, u: usize, view: Value, c: &Projected) -> Rgba {
+        let quad = c.quad.expect("a group leaves the native path only over λ");
+        let slot = self.tex_slot();
+        let args = self.b.ins().stack_addr(self.ptr, slot, 0);
+        let (zero, one) = (self.fconst(0.0), self.fconst(1.0));
+        for (p, st) in [quad[0], quad[1], quad[2], c.at].into_iter().enumerate() {
+            for (k, v) in [st[0], st[1], zero, one].into_iter().enumerate() {
+                let off = offset_of!(TexCall, coords) + (((u * 4 + p) * 4 + k) * 16);
+                self.b.ins().store(mem(), v, args, off as i32);
+            }
+        }
+        let own = self.splat(3);
+        self.b
+            .ins()
+            .store(mem(), own, args, offset_of!(TexCall, quad_pixel) as i32);
+        self.call_sampler(g, (args, 1 << u), view)[u].expect("unit u was sampled")
     }
 
     /// Calls the reference sampler for the units of `units` on the
