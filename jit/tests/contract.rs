@@ -736,7 +736,7 @@ fn tex_float(rng: &mut Rng, scale: f32) -> f32 {
 
 /// Planes with texture coordinates: 1/w mostly 1 and gently sloped,
 /// coordinates from [`tex_float`] with slopes from magnification to strong
-/// minification, q mostly 1.
+/// minification, q/w mostly 1/w or 1.
 fn textured_planes(rng: &mut Rng) -> Planes {
     let mut p = planes(rng);
     if rng.below(4) != 0 {
@@ -751,7 +751,13 @@ fn textured_planes(rng: &mut Rng) -> Planes {
         for c in 0..4 {
             let k = softgl_jit::shade::slot::tex(u) + c;
             if c == 3 && rng.below(4) != 0 {
-                p.constant(k, 1.0);
+                // q = 1 at the vertices: q/w is 1/w (perspective), or 1 where w is.
+                if rng.below(2) == 0 {
+                    let (a0, dx, dy) = p.get(softgl_jit::shade::slot::INV_W);
+                    p.set(k, a0, dx, dy);
+                } else {
+                    p.constant(k, 1.0);
+                }
                 continue;
             }
             let slope = [1e-3, 1e-2, 0.1, 1.0][rng.below(4) as usize];
@@ -902,22 +908,33 @@ fn one_unit_key(min: Filter, mip: MipFilter, mag: Filter, wrap: Wrap) -> Fragmen
 /// (square sides, RGBA8 bytes) on both back ends; the JIT's pixels, after
 /// checking they equal the interpreter's.
 fn run_one_unit(key: &FragmentKey, planes: Planes, levels: &[(u32, u32, Vec<u8>)]) -> Vec<u8> {
+    run_one_unit_on(key, planes, levels, (16, 2))
+}
+
+/// [`run_one_unit`] on a `width`×`height` target (`width` ≤ 64).
+fn run_one_unit_on(
+    key: &FragmentKey,
+    planes: Planes,
+    levels: &[(u32, u32, Vec<u8>)],
+    (width, height): (u32, u32),
+) -> Vec<u8> {
     let images = support::images(levels);
     let mut set = TextureSet::default();
     set.units[0] = Some(support::whole_chain(&images));
     let key = &support::bind(key, &set);
-    let spans: Vec<FragmentSpan> = (0..2)
+    let spans: Vec<FragmentSpan> = (0..height)
         .map(|y| {
             let mut s = FragmentSpan::new(0, y);
-            for i in 0..16 {
+            for i in 0..width as usize {
                 s.set(i, [0; 4], 0);
             }
             s
         })
         .collect();
     let run = |jit: bool| {
-        let mut color = vec![0u8; 16 * 2 * 4];
-        let mut target = Target::new(16, 2, ColorFormat::Rgba8, &mut color, 64, None, None).unwrap();
+        let mut color = vec![0u8; (width * height * 4) as usize];
+        let stride = width as usize * 4;
+        let mut target = Target::new(width, height, ColorFormat::Rgba8, &mut color, stride, None, None).unwrap();
         let u = FragmentUniforms::default();
         if jit {
             let s = Specialist::compile(key).unwrap();
@@ -980,5 +997,42 @@ fn npot_repeat_far_from_the_origin_matches() {
         let color = run_one_unit(&key, planes, &[(3, 5, texels.clone())]);
         // Every fragment is one of the texels (NEAREST) or between them.
         assert!(color.chunks(4).any(|p| p != [0, 0, 0, 0]));
+    }
+}
+
+/// λ from each lane's own quad: with 1/w sloped, ρ differs from quad to quad
+/// and the level changes inside groups (so both the one-level path and the
+/// callout run), on an even and an odd row, with the x derivative dominating
+/// ρ in one case and the y derivative in the other.
+#[test]
+fn lambda_of_each_quad_matches() {
+    use softgl_jit::shade::slot;
+    let mut rng = softgl_jit::rng::Rng::new(91);
+    let levels: Vec<(u32, u32, Vec<u8>)> = (0..=6)
+        .map(|l| {
+            let s = 64u32 >> l;
+            (s, s, (0..s * s * 4).map(|_| rng.next_u64() as u8).collect())
+        })
+        .collect();
+    let filters = [
+        (Filter::Linear, MipFilter::Linear),
+        (Filter::Nearest, MipFilter::Nearest),
+        (Filter::Nearest, MipFilter::Linear),
+    ];
+    for (min, mip) in filters {
+        let key = one_unit_key(min, mip, Filter::Linear, Wrap::Repeat);
+        for (s, t) in [
+            ((0.1, 0.21, 0.013), (0.2, 0.011, 0.02)),
+            ((0.3, 0.012, 0.2), (0.1, 0.02, 0.31)),
+        ] {
+            // 1/w and q/w (q = 1) sloped alike: s/q is perspective-correct.
+            let mut planes = st_planes(s, t);
+            for k in [slot::INV_W, slot::tex(0) + 3] {
+                planes.set(k, 1.0, 0.07, 0.03);
+            }
+            let color = run_one_unit_on(&key, planes, &levels, (64, 16));
+            // The pixels are texels of several levels, not one colour.
+            assert!(color.chunks(4).any(|p| p != &color[..4]), "{min:?} {mip:?}");
+        }
     }
 }
