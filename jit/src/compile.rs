@@ -196,6 +196,8 @@ struct Gen<'a> {
     fconsts: Vec<(u32, Value)>,
     /// The stack slot of the texture callout's arguments, once made.
     tex_slot: Option<cranelift_codegen::ir::StackSlot>,
+    /// The native sampler's slot for gather offsets, once made.
+    gather_slot: Option<cranelift_codegen::ir::StackSlot>,
 }
 
 impl<'a> Gen<'a> {
@@ -209,6 +211,7 @@ impl<'a> Gen<'a> {
             x86: false,
             fconsts: Vec::new(),
             tex_slot: None,
+            gather_slot: None,
         }
     }
 

@@ -14,10 +14,15 @@ use super::{le, mem, Gen, Group, I32X4};
 use crate::callout::{LevelView, TexView, UnitView};
 use crate::texture::{Filter, MipFilter, SamplerKey, TexTarget, TexUnitKey, TexelFormat, Wrap, MAX_LEVELS};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
-use cranelift_codegen::ir::{types, InstBuilder, MemFlagsData, Value};
+use cranelift_codegen::ir::{types, InstBuilder, MemFlagsData, StackSlot, StackSlotData, StackSlotKind, Value};
 use std::mem::{offset_of, size_of};
 
 const F32X4: cranelift_codegen::ir::Type = types::F32X4;
+
+/// `punpckldq`: dwords 0 and 1 of `a` and `b` interleaved.
+const UNPACK_DWORDS: [u8; 16] = [0, 1, 2, 3, 16, 17, 18, 19, 4, 5, 6, 7, 20, 21, 22, 23];
+/// `punpcklqdq`: the low qwords of `a` and `b`.
+const UNPACK_QWORDS: [u8; 16] = [0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23];
 
 /// Whether generated code samples `unit` itself (else it calls the reference).
 pub fn native_unit(unit: &TexUnitKey) -> bool {
@@ -314,31 +319,61 @@ impl Gen<'_> {
     }
 
     /// The packed texels at each `(x, y)`, column and row offset
-    /// (`row · width`), of the level's `texels` (from [`Self::fetch_level`]),
-    /// lane after lane.
+    /// (`row · width`), of the level's `texels` (from [`Self::fetch_level`]).
+    ///
+    /// x86 has no gather in 128-bit code Cranelift emits, so each lane is a
+    /// load of its own, and the way they are made matters: the offsets go
+    /// through a stack slot (a store and four loads) and the texels into the
+    /// vector by two unpacks (`movd` from memory, `punpckldq`,
+    /// `punpcklqdq`), three shuffle-port operations for four texels where
+    /// `pextrd`/`pinsrd` took twelve (the shuffle port was what a bilinear
+    /// group waited on).
     fn fetch(&mut self, texels: Value, at: &[(Value, Value)]) -> Vec<Value> {
-        at.iter()
-            .map(|&(x, y)| {
-                let index = self.b.ins().iadd(y, x);
-                let index = self.b.ins().ishl_imm_u(index, 2);
-                let lanes = std::array::from_fn(|lane| {
-                    let off = self.b.ins().extractlane(index, lane as u8);
-                    let off = self.b.ins().uextend(self.ptr, off);
+        let slot = self.gather_slot();
+        let base = self.b.ins().stack_addr(self.ptr, slot, 0);
+        for (k, &(x, y)) in at.iter().enumerate() {
+            let index = self.b.ins().iadd(y, x);
+            let index = self.b.ins().ishl_imm_u(index, 2);
+            self.b.ins().store(mem(), index, base, 16 * k as i32);
+        }
+        (0..at.len())
+            .map(|k| {
+                let lanes: [Value; 4] = std::array::from_fn(|lane| {
+                    let off = self.b.ins().uload32(mem(), base, (16 * k + 4 * lane) as i32);
+                    let off = if self.ptr == types::I64 {
+                        off
+                    } else {
+                        self.b.ins().ireduce(self.ptr, off)
+                    };
                     let addr = self.b.ins().iadd(texels, off);
-                    self.b.ins().load(types::I32, mem(), addr, 0)
+                    let t = self.b.ins().load(types::I32, mem(), addr, 0);
+                    self.b.ins().scalar_to_vector(I32X4, t)
                 });
-                self.lanes_vector(lanes)
+                let low = self.interleave(lanes[0], lanes[1], UNPACK_DWORDS);
+                let high = self.interleave(lanes[2], lanes[3], UNPACK_DWORDS);
+                self.interleave(low, high, UNPACK_QWORDS)
             })
             .collect()
     }
 
-    /// Four `i32` values as the lanes of an `i32x4`.
-    fn lanes_vector(&mut self, v: [Value; 4]) -> Value {
-        let mut out = self.b.ins().splat(I32X4, v[0]);
-        for (lane, &x) in v.iter().enumerate().skip(1) {
-            out = self.b.ins().insertlane(out, x, lane as u8);
+    /// The byte shuffle `mask` of `a` and `b` (lanes of `b` are 16..32).
+    fn interleave(&mut self, a: Value, b: Value, mask: [u8; 16]) -> Value {
+        let a8 = self.b.ins().bitcast(types::I8X16, le(), a);
+        let b8 = self.b.ins().bitcast(types::I8X16, le(), b);
+        let m = self.b.func.dfg.immediates.push(mask.to_vec().into());
+        let out = self.b.ins().shuffle(a8, b8, m);
+        self.b.ins().bitcast(I32X4, le(), out)
+    }
+
+    /// The function's stack slot for gather offsets (four vectors), made on first use.
+    fn gather_slot(&mut self) -> StackSlot {
+        if let Some(s) = self.gather_slot {
+            return s;
         }
-        out
+        let data = StackSlotData::new(StackSlotKind::ExplicitSlot, 64, 4);
+        let s = self.b.create_sized_stack_slot(data);
+        self.gather_slot = Some(s);
+        s
     }
 
     /// Packed RGBA8 lanes as two `i16x8` halves (lanes 0–1, lanes 2–3).
