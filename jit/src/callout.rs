@@ -45,6 +45,9 @@ pub struct UnitView {
     /// The first and last level sampled (`base_level`, `max(max_level, base_level)`).
     pub first: [i32; 4],
     pub last: [i32; 4],
+    /// The first level's width and height: level `l`'s are
+    /// `max(1, side >> (l − first))` (checked by `UnitView::new`).
+    pub base_side: [[i32; 4]; 2],
     /// Levels `first..=last` (the others zero): every one non-empty, at
     /// least 1×1, and holding `4 · width · height` bytes.
     pub levels: [LevelView; MAX_LEVELS],
@@ -68,6 +71,7 @@ impl Default for UnitView {
             bias: [0.0; 4],
             first: [0; 4],
             last: [0; 4],
+            base_side: [[0; 4]; 2],
             levels: [LevelView {
                 texels: std::ptr::null(),
                 width: 0,
@@ -92,11 +96,16 @@ impl UnitView {
         let first = tex.base_level;
         let last = tex.max_level.max(first);
         let image = |l: u32| tex.images.get(l as usize).filter(|im| !im.texels.is_empty());
+        let base = image(first)?;
         let mut v = UnitView::default();
         for l in first..=last {
             let im = image(l)?;
+            // The sizes of a mipmap chain (GL's completeness asks for them).
+            let chained = |side: u32, base: u32| side == (base >> (l - first).min(31)).max(1);
             let ok = (1..=NATIVE_MAX_SIDE).contains(&im.width)
                 && (1..=NATIVE_MAX_SIDE).contains(&im.height)
+                && chained(im.width, base.width)
+                && chained(im.height, base.height)
                 && im.texels.len() >= 4 * im.width as usize * im.height as usize;
             if !ok {
                 return None;
@@ -107,7 +116,6 @@ impl UnitView {
                 height: im.height as i32,
             };
         }
-        let base = image(first)?;
         let s = LodState::new(&key.sampler, tex);
         v.base_size = [[base.width as f32; 4], [base.height as f32; 4]];
         v.min_lod = [s.min_lod; 4];
@@ -115,6 +123,7 @@ impl UnitView {
         v.bias = [s.bias; 4];
         v.first = [first as i32; 4];
         v.last = [last as i32; 4];
+        v.base_side = [[base.width as i32; 4], [base.height as i32; 4]];
         Some(v)
     }
 }

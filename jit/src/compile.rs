@@ -179,6 +179,8 @@ struct Group {
     z: Option<Value>,
     /// The pixel x of the lanes as f32 (keys with a shading stage).
     px: Option<Value>,
+    /// `1 / (1/w)` at the lanes, once the shading stage has made it.
+    w: Option<Value>,
 }
 
 struct Gen<'a> {
@@ -384,6 +386,7 @@ impl<'a> Gen<'a> {
             lane0,
             z: None,
             px: None,
+            w: None,
         }
     }
 

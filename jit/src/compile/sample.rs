@@ -278,12 +278,21 @@ impl Gen<'_> {
             .b
             .ins()
             .load(self.ptr, mem(), lv, base + offset_of!(LevelView, texels) as i32);
-        let size = [offset_of!(LevelView, width), offset_of!(LevelView, height)].map(|off| {
-            let v = self.b.ins().load(types::I32, mem(), lv, base + off as i32);
-            self.b.ins().splat(I32X4, v)
+        // The size from the base level's, `max(1, side >> (level − first))`
+        // (`UnitView::new` checked every level has it): shifts instead of a
+        // chain of loads ahead of the coordinate arithmetic.
+        let first = self
+            .b
+            .ins()
+            .load(types::I32, mem(), unit, offset_of!(UnitView, first) as i32);
+        let down = self.b.ins().isub(level, first);
+        let one = self.splat(1);
+        let size = [0, 1].map(|a| {
+            let side = self.unit_i32(unit, offset_of!(UnitView, base_side) + 16 * a);
+            let v = self.b.ins().ushr(side, down);
+            self.b.ins().smax(v, one)
         });
         let pot = key.statics.pot;
-        let one = self.splat(1);
         // Coordinates are clamped to the level (they already are: the clamp
         // only guarantees it), rows made once.
         let wm = self.b.ins().isub(size[0], one);

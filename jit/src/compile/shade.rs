@@ -63,6 +63,8 @@ impl Gen<'_> {
         } else {
             None
         };
+        // The texture coordinates at the lanes take the same w.
+        g.w = w;
         let colour = |s: &mut Self, k: usize| {
             let v = at(s, k);
             match (key.flat, w) {

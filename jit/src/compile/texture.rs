@@ -77,10 +77,15 @@ impl Gen<'_> {
             pts.extend([(qx, qy), (qx1, qy), (qx, qy1)]);
         }
         pts.into_iter()
-            .map(|(x, y)| {
-                let one = self.fconst(1.0);
-                let iw = self.plane(planes, slot::INV_W, x, y);
-                (x, y, self.b.ins().fdiv(one, iw))
+            .enumerate()
+            .map(|(p, (x, y))| match g.w.filter(|_| p == 0) {
+                // The lanes' own w, as the shading stage made it.
+                Some(w) => (x, y, w),
+                None => {
+                    let one = self.fconst(1.0);
+                    let iw = self.plane(planes, slot::INV_W, x, y);
+                    (x, y, self.b.ins().fdiv(one, iw))
+                }
             })
             .collect()
     }
