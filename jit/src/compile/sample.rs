@@ -19,11 +19,6 @@ use std::mem::{offset_of, size_of};
 
 const F32X4: cranelift_codegen::ir::Type = types::F32X4;
 
-/// `punpckldq`: dwords 0 and 1 of `a` and `b` interleaved.
-const UNPACK_DWORDS: [u8; 16] = [0, 1, 2, 3, 16, 17, 18, 19, 4, 5, 6, 7, 20, 21, 22, 23];
-/// `punpcklqdq`: the low qwords of `a` and `b`.
-const UNPACK_QWORDS: [u8; 16] = [0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23];
-
 /// Whether generated code samples `unit` itself (else it calls the reference).
 pub fn native_unit(unit: &TexUnitKey) -> bool {
     native_sampler(&unit.sampler)
@@ -332,11 +327,9 @@ impl Gen<'_> {
     ///
     /// x86 has no gather in 128-bit code Cranelift emits, so each lane is a
     /// load of its own, and the way they are made matters: the offsets go
-    /// through a stack slot (a store and four loads) and the texels into the
-    /// vector by two unpacks (`movd` from memory, `punpckldq`,
-    /// `punpcklqdq`), three shuffle-port operations for four texels where
-    /// `pextrd`/`pinsrd` took twelve (the shuffle port was what a bilinear
-    /// group waited on).
+    /// through a stack slot (a store and four loads) rather than `pextrd`
+    /// (the shuffle port was what a group waited on), the texels into the
+    /// vector by `movd` and `pinsrd`.
     fn fetch(&mut self, texels: Value, at: &[(Value, Value)]) -> Vec<Value> {
         let slot = self.gather_slot();
         let base = self.b.ins().stack_addr(self.ptr, slot, 0);
@@ -355,23 +348,16 @@ impl Gen<'_> {
                         self.b.ins().ireduce(self.ptr, off)
                     };
                     let addr = self.b.ins().iadd(texels, off);
-                    let t = self.b.ins().load(types::I32, mem(), addr, 0);
-                    self.b.ins().scalar_to_vector(I32X4, t)
+                    self.b.ins().load(types::I32, mem(), addr, 0)
                 });
-                let low = self.interleave(lanes[0], lanes[1], UNPACK_DWORDS);
-                let high = self.interleave(lanes[2], lanes[3], UNPACK_DWORDS);
-                self.interleave(low, high, UNPACK_QWORDS)
+                // `movd` and `pinsrd` from memory.
+                let mut v = self.b.ins().scalar_to_vector(I32X4, lanes[0]);
+                for (lane, &t) in lanes.iter().enumerate().skip(1) {
+                    v = self.b.ins().insertlane(v, t, lane as u8);
+                }
+                v
             })
             .collect()
-    }
-
-    /// The byte shuffle `mask` of `a` and `b` (lanes of `b` are 16..32).
-    fn interleave(&mut self, a: Value, b: Value, mask: [u8; 16]) -> Value {
-        let a8 = self.b.ins().bitcast(types::I8X16, le(), a);
-        let b8 = self.b.ins().bitcast(types::I8X16, le(), b);
-        let m = self.b.func.dfg.immediates.push(mask.to_vec().into());
-        let out = self.b.ins().shuffle(a8, b8, m);
-        self.b.ins().bitcast(I32X4, le(), out)
     }
 
     /// The function's stack slot for gather offsets (four vectors), made on first use.
