@@ -1002,8 +1002,8 @@ fn npot_repeat_far_from_the_origin_matches() {
 
 /// λ from each lane's own quad: with 1/w sloped, ρ differs from quad to quad
 /// and the level changes inside groups (so both the one-level path and the
-/// callout run), on an even and an odd row, with the x derivative dominating
-/// ρ in one case and the y derivative in the other.
+/// callout run), on even and odd rows, with the x derivative dominating ρ in
+/// one case and the y derivative in another.
 #[test]
 fn lambda_of_each_quad_matches() {
     use softgl_jit::shade::slot;
@@ -1021,14 +1021,18 @@ fn lambda_of_each_quad_matches() {
     ];
     for (min, mip) in filters {
         let key = one_unit_key(min, mip, Filter::Linear, Wrap::Repeat);
-        for (s, t) in [
-            ((0.1, 0.21, 0.013), (0.2, 0.011, 0.02)),
-            ((0.3, 0.012, 0.2), (0.1, 0.02, 0.31)),
+        for (s, t, w) in [
+            ((0.1, 0.21, 0.013), (0.2, 0.011, 0.02), (0.07, 0.03)),
+            ((0.3, 0.012, 0.2), (0.1, 0.02, 0.31), (0.07, 0.03)),
+            // λ growing to the right and crossing 0 (the lanes below it read
+            // the first level twice, their right neighbours two levels) at a
+            // different column on each row.
+            ((0.1, 0.004, 0.001), (0.2, 0.0005, 0.004), (-0.012, -0.002)),
         ] {
             // 1/w and q/w (q = 1) sloped alike: s/q is perspective-correct.
             let mut planes = st_planes(s, t);
             for k in [slot::INV_W, slot::tex(0) + 3] {
-                planes.set(k, 1.0, 0.07, 0.03);
+                planes.set(k, 1.0, w.0, w.1);
             }
             let color = run_one_unit_on(&key, planes, &levels, (64, 16));
             // The pixels are texels of several levels, not one colour.

@@ -135,9 +135,18 @@ impl Gen<'_> {
             // Every lane on level `first`.
             return fetch(self);
         }
-        // One level for the group (its second level follows from the first)?
+        // One level (or pair of levels) for the group? (The second does not
+        // follow from the first: a lane λ puts below the chain reads the
+        // first level twice, its neighbour on the first level the first and
+        // the second.)
         let same = self.b.ins().splat(I32X4, level0_s);
-        let same = self.b.ins().icmp(IntCC::Equal, level0, same);
+        let mut same = self.b.ins().icmp(IntCC::Equal, level0, same);
+        if let Some((level1, _)) = second {
+            let l1 = self.b.ins().extractlane(level1, 0);
+            let l1 = self.b.ins().splat(I32X4, l1);
+            let same1 = self.b.ins().icmp(IntCC::Equal, level1, l1);
+            same = self.b.ins().band(same, same1);
+        }
         let same = self.b.ins().vall_true(same);
         let (fast, slow, done) = (self.b.create_block(), self.b.create_block(), self.b.create_block());
         let out: [Value; 4] = std::array::from_fn(|_| self.b.append_block_param(done, F32X4));
