@@ -187,3 +187,21 @@ fn tier_names_parse() {
     assert_eq!(Tier::parse(Some("fast")), None);
     assert_eq!(Tier::parse(None), None);
 }
+
+fn tiered(key: &FragmentKey) -> Result<Specialist, softgl_jit::SpecialistError> {
+    Specialist::compile_tier(key, Tier::Tiered)
+}
+
+#[test]
+fn the_cache_counts_upgrades_resident_and_evicted() {
+    let mut cache = softgl_jit::SpecialistCache::with_compiler(2, tiered);
+    for (name, key) in keys() {
+        cache.get(&key).expect("compiles").wait_optimized();
+        assert!(cache.get(&key).is_some_and(Specialist::is_upgraded), "{name}");
+    }
+    let s = cache.stats();
+    assert_eq!((s.misses, s.hits, s.evictions, s.resident, s.upgrades), (4, 4, 2, 2, 4));
+    cache.set_capacity(1);
+    let s = cache.stats();
+    assert_eq!((s.evictions, s.resident, s.upgrades), (3, 1, 4));
+}
