@@ -120,13 +120,7 @@ fn texels(c: &mut Criterion) {
 /// shaded key without texturing, for scale.
 fn compile(c: &mut Criterion) {
     let one = key(Filter::Linear, MipFilter::Linear);
-    let mut two = one;
-    if let Some(shade) = two.shade.as_mut() {
-        let mut second = shade.tex[0].expect("unit 0 is on");
-        second.sampler.mip = MipFilter::None;
-        second.sampler.wrap = [Wrap::ClampToEdge; 3];
-        shade.tex[1] = Some(second);
-    }
+    let two = support::with_bilinear_second_unit(one);
     // For scale, in the same run: the same key without its unit.
     let mut untextured = one;
     if let Some(shade) = untextured.shade.as_mut() {

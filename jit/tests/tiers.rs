@@ -24,13 +24,7 @@ const H: u32 = 6;
 fn keys() -> [(&'static str, FragmentKey); 4] {
     let one = |min, mip, wrap| support::one_unit_key(min, mip, min, wrap, EnvMode::Modulate);
     let trilinear = one(Filter::Linear, MipFilter::Linear, Wrap::Repeat);
-    let mut two = trilinear;
-    if let Some(shade) = two.shade.as_mut() {
-        let mut second = shade.tex[0].expect("unit 0 is on");
-        second.sampler.mip = MipFilter::None;
-        second.sampler.wrap = [Wrap::ClampToEdge; 3];
-        shade.tex[1] = Some(second);
-    }
+    let two = support::with_bilinear_second_unit(trilinear);
     [
         ("nearest", one(Filter::Nearest, MipFilter::None, Wrap::Repeat)),
         ("trilinear", trilinear),
