@@ -11,7 +11,7 @@
 use crate::compile::RegAlloc;
 use crate::key::FragmentKey;
 use std::sync::mpsc::{self, Sender};
-use std::sync::OnceLock;
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// How a specialist is compiled.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -62,21 +62,23 @@ impl Tier {
 /// Work for the background thread.
 pub(crate) type Job = Box<dyn FnOnce() + Send>;
 
-/// Queues `job` on the one background compile thread (started on first use),
+/// Queues `job` on the one background compile thread (started on first use,
+/// and again in a child process after a `fork`, which copies no threads),
 /// which runs jobs one at a time in the order queued. Gives the job back when
 /// the thread cannot be started or has stopped.
 pub(crate) fn background(job: Job) -> Result<(), Job> {
-    static QUEUE: OnceLock<Option<Sender<Job>>> = OnceLock::new();
-    let queue = QUEUE.get_or_init(|| {
+    static QUEUE: Mutex<Option<(u32, Sender<Job>)>> = Mutex::new(None);
+    let mut queue = QUEUE.lock().unwrap_or_else(PoisonError::into_inner);
+    let pid = std::process::id();
+    if queue.as_ref().is_none_or(|(started_in, _)| *started_in != pid) {
         let (tx, rx) = mpsc::channel::<Job>();
-        std::thread::Builder::new()
+        let spawned = std::thread::Builder::new()
             .name("softgl-jit-tier2".into())
-            .spawn(move || rx.into_iter().for_each(|job| job()))
-            .ok()
-            .map(|_| tx)
-    });
-    match queue {
-        Some(tx) => tx.send(job).map_err(|e| e.0),
+            .spawn(move || rx.into_iter().for_each(|job| job()));
+        *queue = spawned.ok().map(|_| (pid, tx));
+    }
+    match queue.as_ref() {
+        Some((_, tx)) => tx.send(job).map_err(|e| e.0),
         None => Err(job),
     }
 }
