@@ -1,11 +1,11 @@
 //! Tiered compilation: which register allocator a key is compiled with first,
 //! and the one background thread that compiles the optimized tier.
 //!
-//! A key with texture units takes 0.5–1.7 ms to compile with the backtracking
+//! A key with texture units takes 0.5–3 ms to compile with the backtracking
 //! register allocator and about a third of that single-pass (figures in
 //! [`crate::compile::host_isa_with`]). The draw that meets a new textured key
 //! waits only for the single-pass code; the backtracking code, which samples
-//! about twice as fast, is compiled on [`background`]'s thread and installed
+//! about twice as fast, is compiled on one background thread and installed
 //! in the specialist when ready.
 
 use crate::compile::RegAlloc;
