@@ -107,9 +107,12 @@ pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
 /// compiles on a quiet machine, backtracking / single-pass: untextured minimal
 /// key (62 IR instructions) 80 / 53 µs; one NEAREST unit (278) 499 / 188 µs;
 /// bilinear (440) 846 / 289 µs; trilinear (893) 1730 / 597 µs. Single-pass code
-/// spills about five times as often (479 stack accesses against 89 in the
-/// trilinear key) and samples at half the rate (`jit/benches/texels.rs`: 8.1
-/// against 17.1 Mtexels/s in the same loaded run). Hence the tiering policy of
+/// spills more and runs slower: with an earlier texture generator (per-lane
+/// loops) it spilled five times as often (479 stack accesses against 89 in the
+/// trilinear key) and sampled at half the rate; with today's it is 5–10% slower
+/// (`jit/benches/texels.rs`, `jit` against `jit_quick`, load 1.2–2.5, Mfragments/s:
+/// NEAREST 103 / 97, LINEAR 67 / 63, trilinear 25.6 / 24.4, two trilinear units
+/// 13.7 / 12.3). Hence the tiering policy of
 /// [`crate::specialist::Specialist::compile`]: a key with texture units is
 /// compiled single-pass first (the draw waits only for that), then again with
 /// the backtracking allocator on one background thread, and the specialist
