@@ -119,9 +119,9 @@ pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
 /// switches to that code once it is ready; keys without texture units compile
 /// once, backtracking (80–190 µs). What a draw then waits for, against what
 /// the background thread spends (`benches/specialists.rs`, group `compile`,
-/// criterion medians, load 1–1.6): one NEAREST unit 194 / 487 µs, bilinear
-/// 295 / 830 µs, trilinear 568 µs / 1.64 ms, two trilinear units 992 µs /
-/// 3.09 ms.
+/// criterion medians, load 0.35–0.64): one NEAREST unit 192 / 478 µs, bilinear
+/// 297 / 835 µs, trilinear 586 µs / 1.65 ms, two trilinear units 974 µs /
+/// 3.12 ms.
 pub fn host_isa_with(alloc: RegAlloc) -> Result<OwnedTargetIsa, CompileError> {
     let mut flags = settings::builder();
     let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
