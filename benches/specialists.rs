@@ -1,5 +1,6 @@
-//! What specialists cost besides running them: compile time per key, the cost of
-//! a cache hit on each draw, and a state-thrash frame (256 distinct keys × 50
+//! What specialists cost besides running them: compile time per key (textured
+//! keys in both tiers: `quick` is what a draw waits for, `optimized` what the
+//! background thread then spends), the cost of a cache hit on each draw, and a state-thrash frame (256 distinct keys × 50
 //! small triangles at 1024x1024) on a cold and a warm cache, against the
 //! interpreter. llvmpipe, for the same frame on this machine: 2.8–3.1 s the
 //! first time (LLVM compiles each state for 11–12 ms), 18–23 ms after.
@@ -8,15 +9,48 @@ use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
 use softgl::{
     Backend, Capability, ClearMask, CompareFunc, Context, FramebufferDesc, LogicOp, PrimitiveMode, VertexArrays,
 };
-use softgl_jit::{ColorFormat, FragmentKey, Specialist, SpecialistCache};
+use softgl_jit::texture::{EnvMode, Filter, MipFilter, TextureSet, Wrap};
+use softgl_jit::{ColorFormat, FragmentKey, Specialist, SpecialistCache, Tier};
 use std::hint::black_box;
 use std::time::Duration;
 
 mod common;
+#[path = "../jit/tests/support/mod.rs"]
+#[allow(dead_code, reason = "only its keys and textures are used here")]
+mod support;
 
 const SIZE: u32 = 1024;
 const STATES: usize = 256;
 const TRIANGLES_PER_STATE: usize = 50;
+
+/// Keys with texture units: one 2D RGBA8 unit, MODULATE, REPEAT, NEAREST,
+/// bilinear or trilinear; and two trilinear units.
+fn textured_keys() -> [(&'static str, FragmentKey); 4] {
+    let one = |filter, mip| support::one_unit_key(filter, mip, filter, Wrap::Repeat, EnvMode::Modulate);
+    let trilinear = one(Filter::Linear, MipFilter::Linear);
+    let mut two = trilinear;
+    if let Some(shade) = two.shade.as_mut() {
+        shade.tex[1] = shade.tex[0];
+    }
+    // With the statics of a power-of-two texture under GL's default LOD state.
+    let levels: Vec<(u32, u32, Vec<u8>)> = (0..4)
+        .map(|l| {
+            let s = 8u32 >> l;
+            (s, s, vec![0; (s * s * 4) as usize])
+        })
+        .collect();
+    let images = support::images(&levels);
+    let mut set = TextureSet::default();
+    set.units[0] = Some(support::whole_chain(&images));
+    set.units[1] = set.units[0];
+    [
+        ("nearest", one(Filter::Nearest, MipFilter::None)),
+        ("bilinear", one(Filter::Linear, MipFilter::None)),
+        ("trilinear", trilinear),
+        ("two_trilinear", two),
+    ]
+    .map(|(name, key)| (name, support::bind(&key, &set)))
+}
 
 fn compile(c: &mut Criterion) {
     let mut group = c.benchmark_group("compile");
@@ -27,6 +61,13 @@ fn compile(c: &mut Criterion) {
         group.bench_function(name, |b| {
             b.iter(|| black_box(Specialist::compile(&key).expect("compiles")))
         });
+    }
+    for (name, key) in textured_keys() {
+        for (tier_name, tier) in [("quick", Tier::Quick), ("optimized", Tier::Optimized)] {
+            group.bench_function(format!("{name}/{tier_name}"), |b| {
+                b.iter(|| black_box(Specialist::compile_tier(&key, tier).expect("compiles")))
+            });
+        }
     }
     group.finish();
 }

@@ -3,7 +3,9 @@
 //! whose texture coordinates map it onto a 256² mipmapped RGBA8 texture,
 //! minified by 1.37 (λ ≈ 0.45, so trilinear blends levels 0 and 1), MODULATE
 //! over a constant colour, REPEAT. Each fragment samples once: texels/s is
-//! fragments/s.
+//! fragments/s (`two_trilinear_units`: twice, the same texture; still
+//! fragments/s). `jit_quick` is the single-pass code a tiered specialist
+//! runs until its backtracking code is installed.
 //!
 //! `cargo bench -p softgl-jit --bench texels`
 
@@ -11,7 +13,7 @@ use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use softgl_jit::shade::slot;
 use softgl_jit::texture::{EnvMode, Filter, MipFilter, TextureSet, Wrap, MAX_UNITS};
 use softgl_jit::SPAN_MAX;
-use softgl_jit::{interp, ColorFormat, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target};
+use softgl_jit::{interp, ColorFormat, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target, Tier};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -38,7 +40,7 @@ fn levels() -> Vec<(u32, u32, Vec<u8>)> {
         .collect()
 }
 
-/// One primitive: white, w = 1, s and t growing by `MINIFY / TEX` a pixel.
+/// One primitive: white, w = 1, s and t of units 0 and 1 growing by `MINIFY / TEX` a pixel.
 fn planes() -> Planes {
     let mut p = Planes::default();
     p.constant(slot::INV_W, 1.0);
@@ -46,10 +48,12 @@ fn planes() -> Planes {
         p.constant(slot::COLOR + c, 1.0);
     }
     let d = MINIFY / TEX as f32;
-    p.set(slot::tex(0), 0.25 * d, d, 0.0);
-    p.set(slot::tex(0) + 1, 0.25 * d, 0.0, d);
-    p.constant(slot::tex(0) + 2, 0.0);
-    p.constant(slot::tex(0) + 3, 1.0);
+    for unit in 0..2 {
+        p.set(slot::tex(unit), 0.25 * d, d, 0.0);
+        p.set(slot::tex(unit) + 1, 0.25 * d, 0.0, d);
+        p.constant(slot::tex(unit) + 2, 0.0);
+        p.constant(slot::tex(unit) + 3, 1.0);
+    }
     p
 }
 
@@ -73,6 +77,7 @@ fn texels(c: &mut Criterion) {
     let images = support::images(&levels);
     let mut set = TextureSet::default();
     set.units[0] = Some(support::whole_chain(&images));
+    set.units[1] = set.units[0];
     let planes = [planes()];
     let spans = spans();
     let u = FragmentUniforms::default();
@@ -81,14 +86,25 @@ fn texels(c: &mut Criterion) {
     let mut group = c.benchmark_group("texels");
     group.throughput(Throughput::Elements(u64::from(SIZE * SIZE)));
     group.sample_size(20).measurement_time(Duration::from_secs(4));
-    for (name, filter, mip) in [
-        ("nearest", Filter::Nearest, MipFilter::None),
-        ("linear", Filter::Linear, MipFilter::None),
-        ("trilinear", Filter::Linear, MipFilter::Linear),
+    let trilinear = key(Filter::Linear, MipFilter::Linear);
+    let mut two_trilinear = trilinear;
+    if let Some(shade) = two_trilinear.shade.as_mut() {
+        shade.tex[1] = shade.tex[0];
+    }
+    for (name, key) in [
+        ("nearest", key(Filter::Nearest, MipFilter::None)),
+        ("linear", key(Filter::Linear, MipFilter::None)),
+        ("trilinear", trilinear),
+        // Two samples a fragment: texels/s counts fragments.
+        ("two_trilinear_units", two_trilinear),
     ] {
-        let key = support::bind(&key(filter, mip), &set);
-        let specialist = Specialist::compile(&key).expect("the bench key compiles");
-        for backend in ["jit", "interpreter"] {
+        // The key for the bench's texture (its statics: power-of-two, no LOD
+        // clamp or bias). `jit`: the code a draw runs once the background
+        // upgrade is installed; `jit_quick`: the single-pass code it runs until then.
+        let key = support::bind(&key, &set);
+        let specialist = Specialist::compile_tier(&key, Tier::Optimized).expect("the bench key compiles");
+        let quick = Specialist::compile_tier(&key, Tier::Quick).expect("the bench key compiles");
+        for backend in ["jit", "jit_quick", "interpreter"] {
             group.bench_function(format!("{name}/{backend}"), |b| {
                 b.iter(|| {
                     let mut t = Target::new(
@@ -104,6 +120,7 @@ fn texels(c: &mut Criterion) {
                     let spans = black_box(&spans);
                     match backend {
                         "jit" => specialist.run_with_planes(&u, &set, spans, &planes, &mut t),
+                        "jit_quick" => quick.run_with_planes(&u, &set, spans, &planes, &mut t),
                         _ => interp::run_with_planes(&key, &u, &set, spans, &planes, &mut t),
                     }
                     .expect("the key names the buffers");
@@ -114,9 +131,9 @@ fn texels(c: &mut Criterion) {
     group.finish();
 }
 
-/// Compile time of textured keys: one trilinear unit; two units (trilinear
-/// and bilinear, the second MODULATE over the first); and the shaded key
-/// without texturing, for scale.
+/// Compile time of textured keys in both tiers: one trilinear unit; two units
+/// (trilinear and bilinear, the second MODULATE over the first); and the
+/// shaded key without texturing, for scale.
 fn compile(c: &mut Criterion) {
     // The statics of the bench's texture (power-of-two, no LOD clamp or bias).
     let levels = levels();
@@ -125,14 +142,7 @@ fn compile(c: &mut Criterion) {
     set.units[0] = Some(support::whole_chain(&images));
     set.units[1] = set.units[0];
     let one = support::bind(&key(Filter::Linear, MipFilter::Linear), &set);
-    let mut two = one;
-    if let Some(shade) = two.shade.as_mut() {
-        let mut second = shade.tex[0].expect("unit 0 is on");
-        second.sampler.mip = MipFilter::None;
-        second.sampler.wrap = [Wrap::ClampToEdge; 3];
-        shade.tex[1] = Some(second);
-    }
-    let two = support::bind(&two, &set);
+    let two = support::bind(&support::with_bilinear_second_unit(one), &set);
     // For scale, in the same run: the same key without its unit.
     let mut untextured = one;
     if let Some(shade) = untextured.shade.as_mut() {
@@ -144,9 +154,11 @@ fn compile(c: &mut Criterion) {
         ("textured_1_unit", one),
         ("textured_2_units", two),
     ] {
-        group.bench_function(name, |b| {
-            b.iter(|| black_box(Specialist::compile(&key).expect("compiles")))
-        });
+        for (tier_name, tier) in [("quick", Tier::Quick), ("optimized", Tier::Optimized)] {
+            group.bench_function(format!("{name}/{tier_name}"), |b| {
+                b.iter(|| black_box(Specialist::compile_tier(&key, tier).expect("compiles")))
+            });
+        }
     }
     group.finish();
 }

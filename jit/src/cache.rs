@@ -26,9 +26,13 @@ pub struct CacheStats {
     /// Specialists held now.
     pub resident: usize,
     pub capacity: usize,
-    /// Time spent compiling, in all.
+    /// Optimized code installed by the background thread in specialists of
+    /// this cache ([`crate::Tier::Tiered`]), resident or evicted since.
+    pub upgrades: u64,
+    /// Time draws waited for compiles, in all (for a tiered key, its quick
+    /// compile: the optimized one runs on the background thread).
     pub total_compile: Duration,
-    /// Median time of one compile (over the last 4096), if any happened.
+    /// Median time a draw waited for one compile (over the last 4096), if any happened.
     pub median_compile: Option<Duration>,
 }
 
@@ -73,10 +77,19 @@ impl SpecialistCache {
     /// Changes the capacity; specialists beyond it are evicted, least recent first.
     pub fn set_capacity(&mut self, capacity: usize) {
         let cap = NonZeroUsize::new(capacity).unwrap_or(NonZeroUsize::MIN);
-        let before = self.lru.len();
+        while self.lru.len() > cap.get() {
+            if let Some((_, evicted)) = self.lru.pop_lru() {
+                self.evict(evicted);
+            }
+        }
         self.lru.resize(cap);
-        self.stats.evictions += (before - self.lru.len()) as u64;
         self.stats.capacity = cap.get();
+    }
+
+    /// Counts `evicted`'s leaving, and frees it.
+    fn evict(&mut self, evicted: Option<Specialist>) {
+        self.stats.evictions += 1;
+        self.stats.upgrades += u64::from(evicted.as_ref().is_some_and(Specialist::is_upgraded));
     }
 
     /// The specialist for `key` (a normalized, valid key), compiling it on a miss;
@@ -99,8 +112,10 @@ impl SpecialistCache {
             if compiled.is_none() {
                 self.stats.failures += 1;
             }
-            if self.lru.push(*key, compiled).is_some_and(|(k, _)| k != *key) {
-                self.stats.evictions += 1;
+            if let Some((k, evicted)) = self.lru.push(*key, compiled) {
+                if k != *key {
+                    self.evict(evicted);
+                }
             }
         }
         self.lru.get(key).and_then(Option::as_ref)
@@ -110,8 +125,13 @@ impl SpecialistCache {
     pub fn stats(&self) -> CacheStats {
         let mut ns = self.compile_ns.clone();
         ns.sort_unstable();
+        let upgraded = self
+            .lru
+            .iter()
+            .filter(|(_, s)| s.as_ref().is_some_and(Specialist::is_upgraded));
         CacheStats {
             resident: self.lru.len(),
+            upgrades: self.stats.upgrades + upgraded.count() as u64,
             median_compile: ns.get(ns.len() / 2).map(|&n| Duration::from_nanos(n)),
             ..self.stats.clone()
         }

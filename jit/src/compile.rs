@@ -79,18 +79,50 @@ pub enum CompileError {
     Module(#[from] Box<cranelift_module::ModuleError>),
 }
 
-/// The host ISA with the flags specialists are compiled with. `opt_level=none`:
-/// the generator already emits each constant and factor once per group, so
-/// Cranelift's e-graph pass bought only 2% of run time for 50% more compile time
-/// (all-ops key on this 2-core machine: 204 µs and 430 Mfragments/s without it,
-/// 309 µs and 440 with it; the register allocator is most of what is left).
-/// The IR verifier runs only in debug builds (it adds 30-60%).
-/// Keys with texture units take the same (backtracking) register allocator:
-/// the single-pass one compiled the one-trilinear-unit key in 1.8 ms instead
-/// of 2.7 ms but spilled five times as often (479 stack accesses against 89),
-/// and its code sampled at half the rate (`jit/benches/texels.rs`: 8.1 against
-/// 17.1 Mtexels/s in the same loaded run).
+/// Cranelift's register allocators (its `regalloc_algorithm` flag).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum RegAlloc {
+    /// Range splitting and backtracking: slower to compile, code that spills little.
+    Backtracking,
+    /// One linear pass: compiles in about a third of the time, code that spills a lot.
+    SinglePass,
+}
+
+/// The host ISA with the flags specialists are compiled with, and the
+/// backtracking register allocator ([`host_isa_with`]).
 pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
+    host_isa_with(RegAlloc::Backtracking)
+}
+
+/// The host ISA with the flags specialists are compiled with and register
+/// allocator `alloc`.
+///
+/// `opt_level=none`: the generator already emits each constant and factor once
+/// per group, so Cranelift's e-graph pass bought only 2% of run time for 50%
+/// more compile time (all-ops key on this 2-core machine: 204 µs and 430
+/// Mfragments/s without it, 309 µs and 440 with it; the register allocator is
+/// most of what is left). The IR verifier runs only in debug builds (it adds 30-60%).
+///
+/// The register allocator is 74% of a backtracking compile. Medians of 200
+/// compiles on a quiet machine, backtracking / single-pass: untextured minimal
+/// key (62 IR instructions) 80 / 53 µs; one NEAREST unit (278) 499 / 188 µs;
+/// bilinear (440) 846 / 289 µs; trilinear (893) 1730 / 597 µs. Single-pass code
+/// spills more and runs slower: with an earlier texture generator (per-lane
+/// loops) it spilled five times as often (479 stack accesses against 89 in the
+/// trilinear key) and sampled at half the rate; with today's it is 5–10% slower
+/// (`jit/benches/texels.rs`, `jit` against `jit_quick`, load 1.2–2.5, Mfragments/s:
+/// NEAREST 103 / 97, LINEAR 67 / 63, trilinear 25.6 / 24.4, two trilinear units
+/// 13.7 / 12.3). Hence the tiering policy of
+/// [`crate::specialist::Specialist::compile`]: a key with texture units is
+/// compiled single-pass first (the draw waits only for that), then again with
+/// the backtracking allocator on one background thread, and the specialist
+/// switches to that code once it is ready; keys without texture units compile
+/// once, backtracking (80–190 µs). What a draw then waits for, against what
+/// the background thread spends (`benches/specialists.rs`, group `compile`,
+/// criterion medians, load 0.35–0.64): one NEAREST unit 192 / 478 µs, bilinear
+/// 297 / 835 µs, trilinear 586 µs / 1.65 ms, two trilinear units 974 µs /
+/// 3.12 ms.
+pub fn host_isa_with(alloc: RegAlloc) -> Result<OwnedTargetIsa, CompileError> {
     let mut flags = settings::builder();
     let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
     set(&mut flags, "opt_level", "none")?;
@@ -100,6 +132,14 @@ pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
         if cfg!(debug_assertions) { "true" } else { "false" },
     )?;
     set(&mut flags, "is_pic", "false")?;
+    set(
+        &mut flags,
+        "regalloc_algorithm",
+        match alloc {
+            RegAlloc::Backtracking => "backtracking",
+            RegAlloc::SinglePass => "single_pass",
+        },
+    )?;
     let isa = cranelift_native::builder().map_err(|e| CompileError::Isa(e.to_string()))?;
     isa.finish(settings::Flags::new(flags))
         .map_err(|e| CompileError::Isa(e.to_string()))

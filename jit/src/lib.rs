@@ -21,6 +21,7 @@ pub mod span;
 pub mod specialist;
 pub mod target;
 pub mod texture;
+pub mod tier;
 pub mod uniforms;
 
 pub use cache::{CacheStats, SpecialistCache};
@@ -34,4 +35,5 @@ pub use span::{FragmentSpan, SPAN_MAX};
 pub use specialist::{Specialist, SpecialistError};
 pub use target::{DepthTarget, Target, TargetError};
 pub use texture::TextureSet;
+pub use tier::Tier;
 pub use uniforms::FragmentUniforms;

@@ -1,7 +1,7 @@
 //! A compiled specialist and the one place softgl calls into generated code.
 
 use crate::callout::TexView;
-use crate::compile::{self, CompileError, SpanCall, SpanFn};
+use crate::compile::{self, CompileError, RegAlloc, SpanCall, SpanFn};
 use crate::interp::{check_key, check_planes, owned_mask, row_of, FragmentError};
 use crate::key::FragmentKey;
 use crate::pixel;
@@ -9,12 +9,14 @@ use crate::shade::Planes;
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::target::{DepthTarget, Target};
 use crate::texture::TextureSet;
+use crate::tier::{self, Tier};
 use crate::uniforms::FragmentUniforms;
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_jit::{JITBuilder, JITModule};
 use cranelift_module::{Module, ModuleError};
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::OnceLock;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Arc, Condvar, Mutex, OnceLock, PoisonError, Weak};
 
 /// Why a specialist could not be made.
 #[derive(Debug, thiserror::Error)]
@@ -27,41 +29,184 @@ pub enum SpecialistError {
     Panic(String),
 }
 
-/// The host ISA ([`compile::host_isa`]), made once per process.
-fn isa() -> Result<&'static OwnedTargetIsa, SpecialistError> {
-    static ISA: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
-    ISA.get_or_init(|| compile::host_isa().map_err(|e| e.to_string()))
+/// The host ISA with register allocator `alloc` ([`compile::host_isa_with`]),
+/// made once per process.
+fn isa(alloc: RegAlloc) -> Result<&'static OwnedTargetIsa, SpecialistError> {
+    static ISAS: [OnceLock<Result<OwnedTargetIsa, String>>; 2] = [OnceLock::new(), OnceLock::new()];
+    let slot = match alloc {
+        RegAlloc::Backtracking => &ISAS[0],
+        RegAlloc::SinglePass => &ISAS[1],
+    };
+    slot.get_or_init(|| compile::host_isa_with(alloc).map_err(|e| e.to_string()))
         .as_ref()
         .map_err(|e| SpecialistError::Compile(CompileError::Isa(e.clone())))
 }
 
-/// One key's stages compiled to native code, in a module of its own so that
-/// dropping the specialist frees its code pages.
-pub struct Specialist {
-    key: FragmentKey,
-    func: SpanFn,
-    module: Option<JITModule>,
+/// `JITModule`s holding code now, in the whole process.
+static LIVE_MODULES: AtomicUsize = AtomicUsize::new(0);
+
+/// How many compiled modules hold code now, in the whole process: one per
+/// [`Tier::Quick`] or [`Tier::Optimized`] specialist, two per upgraded
+/// [`Tier::Tiered`] one, and one while the background thread holds a result.
+/// Tests count leaks with it.
+pub fn live_modules() -> usize {
+    LIVE_MODULES.load(Ordering::Relaxed)
 }
 
-// SAFETY: the module's code and data are immutable after finalization and owned
-// by this value alone; its interior `RefCell`s are only touched while compiling,
-// before the value exists, and by `free_memory` in `drop` (which takes `&mut self`).
-unsafe impl Send for Specialist {}
+/// A finalized `JITModule`, freed on drop. Never reached through a shared
+/// reference: only [`Compiled`]'s drop takes it, by value.
+struct OwnedModule(Option<JITModule>);
+
+// SAFETY: `JITModule` is not `Sync` because of the `RefCell` symbol table it
+// reads while linking; `OwnedModule` has no method taking `&self`, so a shared
+// reference to it gives access to nothing. (It is `Send` on its own: Cranelift
+// marks the raw pointers it holds — its code and data blobs, its memory
+// provider, its symbol addresses — `Send`, and the ISA behind it is an
+// `Arc<dyn TargetIsa + Send + Sync>`. So a module finalized on the background
+// thread may be moved to the specialist and freed on whichever thread drops it.)
+unsafe impl Sync for OwnedModule {}
+
+impl Drop for OwnedModule {
+    fn drop(&mut self) {
+        if let Some(module) = self.0.take() {
+            // SAFETY: an `OwnedModule` lives in a `Compiled`, whose `func` is only
+            // called by `Specialist::run_with_planes` through `&Specialist`, and the
+            // specialist owns that `Compiled` (as its first code, or in the upgrade
+            // slot it holds an `Arc` to, which is never emptied): while the module
+            // exists no call can be running, and none happens after this. A result of
+            // the background thread that no specialist took was never called.
+            unsafe { module.free_memory() };
+            LIVE_MODULES.fetch_sub(1, Ordering::Relaxed);
+        }
+    }
+}
+
+/// One compile of a key: its function and the module that holds its code.
+struct Compiled {
+    func: SpanFn,
+    alloc: RegAlloc,
+    _module: OwnedModule,
+}
+
+/// The optimized code of a [`Tier::Tiered`] specialist, filled in by the
+/// background thread, which holds only a `Weak` to it (so a specialist dropped
+/// before its upgrade frees everything it has).
+struct Upgrade {
+    code: Arc<OnceLock<Compiled>>,
+    over: Arc<Over>,
+}
+
+/// Whether the background thread is done with an upgrade (installed it,
+/// skipped it or failed), for [`Specialist::wait_optimized`].
+#[derive(Default)]
+struct Over {
+    done: Mutex<bool>,
+    signal: Condvar,
+}
+
+/// The background compile of a [`Tier::Tiered`] specialist's optimized code.
+/// Dropping it, run or not, marks the upgrade over.
+struct UpgradeJob {
+    key: FragmentKey,
+    code: Weak<OnceLock<Compiled>>,
+    over: Arc<Over>,
+}
+
+impl UpgradeJob {
+    /// Compiles with the backtracking allocator and installs the code, unless
+    /// the specialist was dropped before or during the compile (then its code
+    /// is freed here).
+    fn run(self) {
+        if self.code.strong_count() == 0 {
+            return;
+        }
+        let Ok(compiled) = Specialist::compile_code(&self.key, RegAlloc::Backtracking) else {
+            return;
+        };
+        if let Some(slot) = self.code.upgrade() {
+            let _ = slot.set(compiled);
+        }
+    }
+}
+
+impl Drop for UpgradeJob {
+    fn drop(&mut self) {
+        // The job holds no strong reference to the code slot by now, so a
+        // specialist dropped after `wait_optimized` frees both modules itself.
+        *self.over.done.lock().unwrap_or_else(PoisonError::into_inner) = true;
+        self.over.signal.notify_all();
+    }
+}
+
+/// One key's stages compiled to native code, in a module of its own so that
+/// dropping the specialist frees its code pages. A [`Tier::Tiered`] specialist
+/// has a second module, its optimized code, once the background thread has
+/// compiled it; each call of `run*` reads which code to run once (an acquire
+/// load), so a call that started on the first code finishes on it, and both
+/// modules live until the specialist drops.
+///
+/// `Send` and `Sync`: the code is immutable once finalized, and the upgrade
+/// slot is a `OnceLock`.
+pub struct Specialist {
+    key: FragmentKey,
+    first: Compiled,
+    upgrade: Option<Upgrade>,
+}
+
+const _: fn() = || {
+    fn send_sync<T: Send + Sync>() {}
+    send_sync::<Specialist>();
+};
 
 impl std::fmt::Debug for Specialist {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Specialist")
             .field("key", &self.key)
+            .field("optimized", &self.is_optimized())
             .finish_non_exhaustive()
     }
 }
 
 impl Specialist {
-    /// Compiles `key`. A panic inside Cranelift is caught and returned as an error.
+    /// Compiles `key` in the tier [`Tier::for_key`] picks: keys with texture
+    /// units [`Tier::Tiered`], others [`Tier::Optimized`]. A panic inside
+    /// Cranelift is caught and returned as an error.
     pub fn compile(key: &FragmentKey) -> Result<Specialist, SpecialistError> {
+        Self::compile_tier(key, Tier::for_key(key))
+    }
+
+    /// Compiles `key` in `tier`. For [`Tier::Tiered`] this returns once the
+    /// quick code is ready and queues the optimized compile on the background
+    /// thread (if that thread cannot run, the specialist keeps its quick code).
+    pub fn compile_tier(key: &FragmentKey, tier: Tier) -> Result<Specialist, SpecialistError> {
         key.validate()?;
-        let isa = isa()?;
-        catch_unwind(AssertUnwindSafe(|| Self::compile_with(key, isa))).unwrap_or_else(|p| {
+        let first = Self::compile_code(key, tier.first())?;
+        let upgrade = (tier == Tier::Tiered).then(|| {
+            let upgrade = Upgrade {
+                code: Arc::new(OnceLock::new()),
+                over: Arc::new(Over::default()),
+            };
+            let job = UpgradeJob {
+                key: *key,
+                code: Arc::downgrade(&upgrade.code),
+                over: upgrade.over.clone(),
+            };
+            // Not queued: dropping the job marks the upgrade over.
+            let _ = tier::background(Box::new(move || job.run()));
+            upgrade
+        });
+        Ok(Specialist {
+            key: *key,
+            first,
+            upgrade,
+        })
+    }
+
+    /// Compiles a valid `key` with `alloc` into a module of its own, catching a
+    /// panic inside Cranelift.
+    fn compile_code(key: &FragmentKey, alloc: RegAlloc) -> Result<Compiled, SpecialistError> {
+        let isa = isa(alloc)?;
+        catch_unwind(AssertUnwindSafe(|| Self::compile_with(key, isa, alloc))).unwrap_or_else(|p| {
             let msg = p
                 .downcast_ref::<&str>()
                 .map(|s| s.to_string())
@@ -71,7 +216,7 @@ impl Specialist {
         })
     }
 
-    fn compile_with(key: &FragmentKey, isa: &OwnedTargetIsa) -> Result<Specialist, SpecialistError> {
+    fn compile_with(key: &FragmentKey, isa: &OwnedTargetIsa, alloc: RegAlloc) -> Result<Compiled, SpecialistError> {
         let mut module = JITModule::new(JITBuilder::with_isa(
             isa.clone(),
             cranelift_module::default_libcall_names(),
@@ -89,12 +234,14 @@ impl Specialist {
             Ok(code) => {
                 // SAFETY: `code` is the finalized function built with `compile::signature`,
                 // which is `SpanFn`'s ABI (two pointers, no result, the ISA's default
-                // convention), and it lives as long as `module`, which this value owns.
+                // convention), and it lives as long as `module`, which the returned
+                // `Compiled` owns.
                 let func = unsafe { std::mem::transmute::<*const u8, SpanFn>(code) };
-                Ok(Specialist {
-                    key: *key,
+                LIVE_MODULES.fetch_add(1, Ordering::Relaxed);
+                Ok(Compiled {
                     func,
-                    module: Some(module),
+                    alloc,
+                    _module: OwnedModule(Some(module)),
                 })
             }
             Err(e) => {
@@ -108,6 +255,37 @@ impl Specialist {
     /// The key this specialist was compiled for.
     pub fn key(&self) -> &FragmentKey {
         &self.key
+    }
+
+    /// The code `run*` calls now: the optimized code once installed, else the first.
+    fn code(&self) -> &Compiled {
+        self.upgrade.as_ref().and_then(|u| u.code.get()).unwrap_or(&self.first)
+    }
+
+    /// Whether the code run now was compiled with the backtracking register
+    /// allocator ([`Tier::Optimized`], or [`Tier::Tiered`] once upgraded).
+    pub fn is_optimized(&self) -> bool {
+        self.code().alloc == RegAlloc::Backtracking
+    }
+
+    /// Whether this is a [`Tier::Tiered`] specialist whose optimized code is installed.
+    pub fn is_upgraded(&self) -> bool {
+        self.upgrade.as_ref().is_some_and(|u| u.code.get().is_some())
+    }
+
+    /// Blocks until the optimized code of a [`Tier::Tiered`] specialist is
+    /// installed, or its compile failed; returns at once for the other tiers.
+    /// For tests and benches: a draw never waits for it.
+    pub fn wait_optimized(&self) {
+        if let Some(u) = &self.upgrade {
+            let done = u.over.done.lock().unwrap_or_else(PoisonError::into_inner);
+            drop(
+                u.over
+                    .signal
+                    .wait_while(done, |done| !*done)
+                    .unwrap_or_else(PoisonError::into_inner),
+            );
+        }
     }
 
     /// Runs the stages over `spans` into `target`: the same result as
@@ -144,17 +322,19 @@ impl Specialist {
         let tex = view
             .as_ref()
             .map_or(std::ptr::null(), |v| (v as *const TexView<'_>).cast());
+        let func = self.code().func;
         for span in spans {
             let p = planes
                 .get(span.planes as usize)
                 .map_or(std::ptr::null(), |p| p as *const Planes);
-            self.run_span((uniforms, tex), (span, p), target);
+            self.run_span(func, (uniforms, tex), (span, p), target);
         }
         Ok(())
     }
 
     fn run_span(
         &self,
+        func: SpanFn,
         (u, tex): (&FragmentUniforms, *const TexView<'static>),
         (span, planes): (&FragmentSpan, *const Planes),
         t: &mut Target<'_>,
@@ -212,7 +392,7 @@ impl Specialist {
             call.color = color.as_mut_ptr();
             call.depth = depth.as_mut().map_or(std::ptr::null_mut(), DepthRow::as_mut_ptr);
             call.stencil = stencil.as_mut().map_or(std::ptr::null_mut(), |s| s.as_mut_ptr());
-            self.call(&call, u);
+            self.call(func, &call, u);
             return;
         }
         let mut scratch = Scratch::default();
@@ -233,7 +413,7 @@ impl Specialist {
             scratch.stencil[..len].copy_from_slice(s);
             call.stencil = scratch.stencil.as_mut_ptr();
         }
-        self.call(&call, u);
+        self.call(func, &call, u);
         color.copy_from_slice(&scratch.color[..len * bpp]);
         match depth {
             Some(DepthRow::U16(d)) => d.copy_from_slice(&scratch.depth16[..len]),
@@ -245,17 +425,20 @@ impl Specialist {
         }
     }
 
-    fn call(&self, call: &SpanCall, u: &FragmentUniforms) {
-        // SAFETY: `self.func` was compiled from `self.key`, which `run` checked against
-        // the target's formats. The generated code reads the span and the uniforms
-        // through these references (and the planes, non-null whenever the key has a
-        // shading stage: `check_planes`), and reads and writes `4 * call.groups` pixels
-        // from each non-null buffer pointer (and no buffer the key does not use):
-        // `run_span` made each pointer from a slice of at least that many pixels. Keys
-        // with texture units read `call.tex`, the `TexView` `run_with_planes` made for
-        // them and keeps alive across the call, and pass it to `callout::texture_group`
+    /// Calls `func`, which is [`Self::code`]'s function, read once for the whole `run*` call.
+    fn call(&self, func: SpanFn, call: &SpanCall, u: &FragmentUniforms) {
+        // SAFETY: `func` is the code of one of this specialist's `Compiled`s, both
+        // compiled from `self.key`, which `run` checked against the target's formats;
+        // `&self` keeps its module alive across the call (`OwnedModule`'s drop). The
+        // generated code reads the span and the uniforms through these references
+        // (and the planes, non-null whenever the key has a shading stage:
+        // `check_planes`), and reads and writes `4 * call.groups` pixels from each
+        // non-null buffer pointer (and no buffer the key does not use): `run_span`
+        // made each pointer from a slice of at least that many pixels. Keys with
+        // texture units read `call.tex`, the `TexView` `run_with_planes` made for them
+        // and keeps alive across the call, and pass it to `callout::texture_group`
         // with a stack slot of their own.
-        unsafe { (self.func)(call, u) }
+        unsafe { func(call, u) }
     }
 }
 
@@ -296,16 +479,6 @@ impl Default for Scratch {
             depth16: [0; SPAN_MAX],
             depth32: [0; SPAN_MAX],
             stencil: [0; SPAN_MAX],
-        }
-    }
-}
-
-impl Drop for Specialist {
-    fn drop(&mut self) {
-        if let Some(module) = self.module.take() {
-            // SAFETY: `func` points into this module and is only called through
-            // `&self`, so no call can be running or happen after this.
-            unsafe { module.free_memory() };
         }
     }
 }

@@ -1,4 +1,4 @@
-//! Keys shared by the contract tests and the texel bench
+//! Keys shared by the contract and tier tests and the benches
 //! (`#[path]`-included by `jit/benches/texels.rs`).
 
 use softgl_jit::texture::{
@@ -35,6 +35,23 @@ pub fn one_unit_key(min: Filter, mip: MipFilter, mag: Filter, wrap: Wrap, mode: 
         }),
         ..FragmentKey::new(ColorFormat::Rgba8, None, false)
     }
+}
+
+/// `key` with a second unit: a copy of unit 0 sampling bilinear (no mipmap),
+/// CLAMP_TO_EDGE, its environment over unit 0's result.
+#[allow(
+    dead_code,
+    reason = "the tier tests and the texel bench use it, the contract tests do not"
+)]
+pub fn with_bilinear_second_unit(key: FragmentKey) -> FragmentKey {
+    let mut two = key;
+    if let Some(shade) = two.shade.as_mut() {
+        let mut second = shade.tex[0].expect("unit 0 is on");
+        second.sampler.mip = MipFilter::None;
+        second.sampler.wrap = [Wrap::ClampToEdge; 3];
+        shade.tex[1] = Some(second);
+    }
+    two
 }
 
 /// The images of `levels` (width, height, RGBA8 texels), depth 1.
