@@ -4,7 +4,9 @@
 use crate::raster::SpanSink;
 use softgl_jit::shade::slot;
 use softgl_jit::texture::{TextureSet, MAX_UNITS};
-use softgl_jit::{interp, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target};
+use softgl_jit::{
+    interp, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target,
+};
 
 /// Spans handed to the back end at once.
 const BATCH: usize = 32;
@@ -43,7 +45,9 @@ pub struct FragmentStage<'t> {
     key: FragmentKey,
     uniforms: FragmentUniforms,
     /// The textures the key's units sample.
-    textures: TextureSet<'t>,
+    textures: &'t TextureSet<'t>,
+    /// What the specialist reads of them, made once for the draw.
+    view: DrawTextures<'t>,
     target: Target<'t>,
     /// Spans `..count` are the batch's; the storage is reused.
     batch: Vec<FragmentSpan>,
@@ -69,19 +73,21 @@ impl<'t> FragmentStage<'t> {
     pub fn new(
         key: FragmentKey,
         uniforms: FragmentUniforms,
-        textures: &TextureSet<'t>,
+        textures: &'t TextureSet<'t>,
         target: Target<'t>,
         specialist: Option<&'t Specialist>,
     ) -> Result<Self, FragmentError> {
         interp::check_key(&key, &target)?;
+        let specialist = specialist.filter(|s| *s.key() == key);
         Ok(FragmentStage {
-            specialist: specialist.filter(|s| *s.key() == key),
+            view: specialist.map_or(DrawTextures::None, |s| s.texture_view(textures)),
+            specialist,
             span_color: key.shade.is_none_or(|s| !s.color),
             span_z: key.depth.is_some() && key.shade.is_none_or(|s| !s.depth),
             count: 0,
             key,
             uniforms,
-            textures: *textures,
+            textures,
             target,
             batch: Vec::with_capacity(BATCH),
             planes: Vec::with_capacity(BATCH),
@@ -103,11 +109,17 @@ impl<'t> FragmentStage<'t> {
         let spans = &self.batch[..self.count];
         let planes = &self.planes[..self.planes_len];
         let r = match self.specialist {
-            Some(s) => s.run_with_planes(&self.uniforms, &self.textures, spans, planes, &mut self.target),
+            Some(s) => s.run_with_view(
+                &self.uniforms,
+                (self.textures, &self.view),
+                spans,
+                planes,
+                &mut self.target,
+            ),
             None => interp::run_with_planes(
                 &self.key,
                 &self.uniforms,
-                &self.textures,
+                self.textures,
                 spans,
                 planes,
                 &mut self.target,

@@ -26,6 +26,8 @@ pub struct TexView<'a> {
     set: *const (),
     /// The texture units of the specialist's key.
     keys: *const [Option<TexUnitKey>; MAX_UNITS],
+    /// The same, by value, for [`TexView::is_for`].
+    units_key: [Option<TexUnitKey>; MAX_UNITS],
     _borrow: PhantomData<&'a TextureSet<'a>>,
 }
 
@@ -144,8 +146,17 @@ impl<'a> TexView<'a> {
             units,
             set: (set as *const TextureSet<'a>).cast(),
             keys,
+            units_key: *keys,
             _borrow: PhantomData,
         })
+    }
+}
+
+impl TexView<'_> {
+    /// Whether this is the view of a key with texture units `units` (what
+    /// that key's generated code may read of it).
+    pub fn is_for(&self, units: &[Option<TexUnitKey>; MAX_UNITS]) -> bool {
+        self.units_key == *units
     }
 }
 
@@ -189,7 +200,7 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
     let Some(call) = (unsafe { call.as_mut() }) else {
         return;
     };
-    // SAFETY: `view` is null or the `TexView` `Specialist::run_with_planes`
+    // SAFETY: `view` is null or the `TexView` `Specialist::run_with_view`
     // built for this call, alive until it returns.
     let Some(view) = (unsafe { call.view.as_ref() }) else {
         return;

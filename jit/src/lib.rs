@@ -32,7 +32,7 @@ pub use key::{
 };
 pub use shade::{FogMode, FogUniforms, Planes};
 pub use span::{FragmentSpan, SPAN_MAX};
-pub use specialist::{Specialist, SpecialistError};
+pub use specialist::{DrawTextures, Specialist, SpecialistError};
 pub use target::{DepthTarget, Target, TargetError};
 pub use texture::TextureSet;
 pub use tier::Tier;

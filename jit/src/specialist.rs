@@ -309,19 +309,48 @@ impl Specialist {
         planes: &[Planes],
         target: &mut Target<'_>,
     ) -> Result<(), FragmentError> {
+        let view = self.texture_view(textures);
+        self.run_with_view(uniforms, (textures, &view), spans, planes, target)
+    }
+
+    /// What this specialist reads of a draw's `textures`, made once for all
+    /// the draw's spans ([`Self::run_with_view`]).
+    pub fn texture_view<'a>(&'a self, textures: &'a TextureSet<'a>) -> DrawTextures<'a> {
+        match self.key.shade.as_ref().filter(|s| s.textured()) {
+            Some(shade) => match TexView::new(&shade.tex, textures) {
+                Some(view) => DrawTextures::View(Box::new(view)),
+                None => DrawTextures::Interpreter,
+            },
+            None => DrawTextures::None,
+        }
+    }
+
+    /// [`Self::run_with_planes`] with the view of `textures` made by
+    /// [`Self::texture_view`] (a draw makes it once, not for every batch of spans).
+    pub fn run_with_view(
+        &self,
+        uniforms: &FragmentUniforms,
+        (textures, view): (&TextureSet<'_>, &DrawTextures<'_>),
+        spans: &[FragmentSpan],
+        planes: &[Planes],
+        target: &mut Target<'_>,
+    ) -> Result<(), FragmentError> {
         check_key(&self.key, target)?;
         check_planes(&self.key, spans, planes)?;
-        let view = match self.key.shade.as_ref().filter(|s| s.textured()) {
-            Some(shade) => match TexView::new(&shade.tex, textures) {
-                Some(view) => Some(view),
-                // A natively sampled unit without a texture it can read.
-                None => return crate::interp::run_with_planes(&self.key, uniforms, textures, spans, planes, target),
-            },
-            None => None,
+        let units = self.key.shade.as_ref().filter(|s| s.textured()).map(|s| &s.tex);
+        let tex = match (units, view) {
+            (None, _) => std::ptr::null(),
+            (Some(units), DrawTextures::View(v)) if v.is_for(units) => (&**v as *const TexView<'_>).cast(),
+            // A natively sampled unit without a texture it can read.
+            (Some(_), DrawTextures::Interpreter) => {
+                return crate::interp::run_with_planes(&self.key, uniforms, textures, spans, planes, target)
+            }
+            // Not this key's view: the generated code reads only its own.
+            (Some(_), _) => {
+                let own = self.texture_view(textures);
+                return self.run_with_view(uniforms, (textures, &own), spans, planes, target);
+            }
         };
-        let tex = view
-            .as_ref()
-            .map_or(std::ptr::null(), |v| (v as *const TexView<'_>).cast());
         let func = self.code().func;
         for span in spans {
             let p = planes
@@ -435,11 +464,22 @@ impl Specialist {
         // `check_planes`), and reads and writes `4 * call.groups` pixels from each
         // non-null buffer pointer (and no buffer the key does not use): `run_span`
         // made each pointer from a slice of at least that many pixels. Keys with
-        // texture units read `call.tex`, the `TexView` `run_with_planes` made for them
-        // and keeps alive across the call, and pass it to `callout::texture_group`
-        // with a stack slot of their own.
+        // texture units read `call.tex`, a `TexView` made for their units (`run_with_view`
+        // checked `is_for`) and alive across the call, and pass it to
+        // `callout::texture_group` with a stack slot of their own.
         unsafe { func(call, u) }
     }
+}
+
+/// A draw's textures as a specialist reads them ([`Specialist::texture_view`]).
+pub enum DrawTextures<'a> {
+    /// The key samples no texture.
+    None,
+    /// The view of the draw's textures (boxed: it is 4 KB).
+    View(Box<TexView<'a>>),
+    /// A natively sampled unit has no texture it can read: the draw runs on
+    /// the interpreter.
+    Interpreter,
 }
 
 /// `n` depth values of a row, from `index`.

@@ -18,7 +18,8 @@ use softgl_jit::texture::{
 };
 use softgl_jit::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, DepthTarget,
-    FragmentKey, FragmentSpan, FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target, Tier, SPAN_MAX,
+    DrawTextures, FragmentKey, FragmentSpan, FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target,
+    Tier, SPAN_MAX,
 };
 use softgl_jit::{FogMode, FogUniforms, Planes, ShadeKey, TextureSet};
 
@@ -1042,5 +1043,63 @@ fn lambda_of_each_quad_matches() {
             // The pixels are texels of several levels, not one colour.
             assert!(color.chunks(4).any(|p| p != &color[..4]), "{min:?} {mip:?}");
         }
+    }
+}
+
+/// A draw's texture view is made once for a specialist's key; one made for
+/// another key (or none) is not read: the specialist makes its own, and the
+/// pixels are the interpreter's.
+#[test]
+fn a_view_made_for_another_key_is_not_read() {
+    use softgl_jit::shade::slot;
+    let levels: Vec<(u32, u32, Vec<u8>)> = (0..=4)
+        .map(|l| {
+            let s = 16u32 >> l;
+            (s, s, (0..s * s * 4).map(|i| (i * 37 + l) as u8).collect())
+        })
+        .collect();
+    let images = support::images(&levels);
+    let mut set = TextureSet::default();
+    set.units[0] = Some(support::whole_chain(&images));
+    let trilinear = support::bind(
+        &one_unit_key(Filter::Linear, MipFilter::Linear, Filter::Linear, Wrap::Repeat),
+        &set,
+    );
+    let nearest = support::bind(
+        &one_unit_key(Filter::Nearest, MipFilter::None, Filter::Nearest, Wrap::ClampToEdge),
+        &set,
+    );
+    let mut planes = st_planes((0.1, 0.07, 0.01), (0.3, 0.01, 0.09));
+    planes.set(slot::INV_W, 1.0, 0.0, 0.0);
+    let spans: Vec<FragmentSpan> = (0..4)
+        .map(|y| {
+            let mut s = FragmentSpan::new(0, y);
+            for i in 0..32 {
+                s.set(i, [0; 4], 0);
+            }
+            s
+        })
+        .collect();
+    let render = |run: &dyn Fn(&mut Target<'_>)| {
+        let mut color = vec![0u8; 32 * 4 * 4];
+        let mut t = Target::new(32, 4, ColorFormat::Rgba8, &mut color, 128, None, None).unwrap();
+        run(&mut t);
+        color
+    };
+    let u = FragmentUniforms::default();
+    let want = render(&|t| interp::run_with_planes(&trilinear, &u, &set, &spans, &[planes], t).unwrap());
+    let specialist = Specialist::compile(&trilinear).unwrap();
+    let other = Specialist::compile(&nearest).unwrap();
+    for view in [
+        other.texture_view(&set),
+        DrawTextures::None,
+        specialist.texture_view(&set),
+    ] {
+        let got = render(&|t| {
+            specialist
+                .run_with_view(&u, (&set, &view), &spans, &[planes], t)
+                .unwrap()
+        });
+        assert_eq!(got, want);
     }
 }
