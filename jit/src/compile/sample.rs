@@ -308,16 +308,16 @@ impl Gen<'_> {
         };
         match filter {
             Filter::Nearest => {
-                let x = self.nearest_axis(at[0], size[0], pot[0], key.wrap[0]);
-                let y = self.nearest_axis(at[1], size[1], pot[1], key.wrap[1]);
+                let x = self.nearest_axis(at[0], (size[0], wm), pot[0], key.wrap[0]);
+                let y = self.nearest_axis(at[1], (size[1], hm), pot[1], key.wrap[1]);
                 let x = column(self, x);
                 let y = row(self, y);
                 let t = self.fetch(texels, &[(x, y)])[0];
                 self.widen(t)
             }
             Filter::Linear => {
-                let (x0, x1, wx) = self.linear_axis(at[0], size[0], pot[0], key.wrap[0]);
-                let (y0, y1, wy) = self.linear_axis(at[1], size[1], pot[1], key.wrap[1]);
+                let (x0, x1, wx) = self.linear_axis(at[0], (size[0], wm), pot[0], key.wrap[0]);
+                let (y0, y1, wy) = self.linear_axis(at[1], (size[1], hm), pot[1], key.wrap[1]);
                 let [x0, x1] = [x0, x1].map(|x| column(self, x));
                 let [y0, y1] = [y0, y1].map(|y| row(self, y));
                 let t = self.fetch(texels, &[(x0, y0), (x1, y0), (x0, y1), (x1, y1)]);
@@ -445,12 +445,11 @@ impl Gen<'_> {
         ch
     }
 
-    /// The nearest texel along an axis (`filter::aos_nearest_axis`); `pot`:
-    /// REPEAT of a power-of-two size (the key's statics).
-    fn nearest_axis(&mut self, s: Value, len: Value, pot: bool, wrap: Wrap) -> Value {
+    /// The nearest texel along an axis (`filter::aos_nearest_axis`) of
+    /// length `len` (and `len − 1`); `pot`: REPEAT of a power-of-two size
+    /// (the key's statics).
+    fn nearest_axis(&mut self, s: Value, (len, len1): (Value, Value), pot: bool, wrap: Wrap) -> Value {
         let lf = self.b.ins().fcvt_from_sint(F32X4, len);
-        let one = self.splat(1);
-        let len1 = self.b.ins().isub(len, one);
         match wrap {
             Wrap::Repeat if pot => {
                 let v = self.b.ins().fmul(s, lf);
@@ -480,9 +479,8 @@ impl Gen<'_> {
 
     /// The two texels and the 8-bit weight of the second along an axis
     /// (`filter::aos_linear_axis`); `pot` as in [`Self::nearest_axis`].
-    fn linear_axis(&mut self, s: Value, len: Value, pot: bool, wrap: Wrap) -> (Value, Value, Value) {
+    fn linear_axis(&mut self, s: Value, (len, len1): (Value, Value), pot: bool, wrap: Wrap) -> (Value, Value, Value) {
         let one = self.splat(1);
-        let len1 = self.b.ins().isub(len, one);
         let zero = self.splat(0);
         let ff = self.splat(255);
         let m128 = self.splat(-128);
