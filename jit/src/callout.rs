@@ -9,6 +9,7 @@
 
 use crate::texture::lod::LodState;
 use crate::texture::{SamplerStatics, TexUnitKey, TextureRef, TextureSet, MAX_LEVELS, MAX_UNITS};
+use crate::shade::Planes;
 use std::marker::PhantomData;
 
 /// The draw's textures as compiled code sees them. `#[repr(C)]`: the
@@ -161,21 +162,22 @@ impl TexView<'_> {
 }
 
 /// What compiled code hands [`texture_group`] for one group of four lanes:
-/// the units to sample and their coordinates at the pixels of the lanes'
-/// quads, computed from the planes exactly as `crate::shade::tex_coords`
-/// does; the samples come back in `samples`.
+/// the units to sample, the lanes' pixels and their primitive's planes (the
+/// reference computes the coordinates at the lanes' quads from them as the
+/// interpreter does, `crate::shade::sample_unit`); the samples come back in
+/// `samples`.
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug)]
 pub struct TexCall {
-    /// `coords[u][p][c][lane]`: unit `u`'s coordinate `c` (s, t, r, q) at
-    /// pixel `p` of each lane's 2×2 quad: top-left, top-right, bottom-left,
-    /// bottom-right.
-    pub coords: [[[[f32; 4]; 4]; 4]; MAX_UNITS],
-    /// Which pixel of its quad each lane is (0..4, the order of `coords`).
-    pub quad_pixel: [u32; 4],
+    /// The lanes' pixel columns and their row, in llvmpipe's top-down frame
+    /// (`SpanCall::row`), as the specialist evaluates the planes at them.
+    pub px: [f32; 4],
+    pub row: [f32; 4],
     /// `samples[u][channel][lane]`: unit `u`'s filtered RGBA, for the units
     /// of `units` and the lanes of `live` (the rest is left as it is).
     pub samples: [[[f32; 4]; 4]; MAX_UNITS],
+    /// The planes of the group's primitive (`SpanCall::planes`).
+    pub planes: *const Planes,
     /// The [`TexView`] of the call (`SpanCall::tex`).
     pub view: *const TexView<'static>,
     /// Bit `i`: lane `i` is live.
@@ -185,15 +187,16 @@ pub struct TexCall {
 }
 
 /// The samples of a group: for each unit of `call.units` the key enables
-/// and each live lane, the reference sampler (`crate::texture::sample_quad`)
-/// at the lane's quad, or 0 when the set has no texture for the unit
-/// (as `crate::shade::texture` leaves it). Does nothing when `call` or its
-/// view is null.
+/// and each live lane, the reference sampler at the lane's quad
+/// (`crate::shade::sample_unit`), or 0 when the set has no texture for the
+/// unit (as `crate::shade::texture` leaves it). Does nothing when `call`,
+/// its view or its planes are null.
 ///
 /// # Safety
 /// `call` is null or points to a `TexCall` that nothing else accesses during
 /// the call, whose `view` is null or the `TexView` the specialist built for
-/// the running call (its referents outlive the call).
+/// the running call (its referents outlive the call), and whose `planes` is
+/// null or the running span's planes.
 pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
     // SAFETY: by the contract above `call` is null or a valid, exclusive
     // `TexCall` (a stack slot of the calling group).
@@ -205,6 +208,11 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
     let Some(view) = (unsafe { call.view.as_ref() }) else {
         return;
     };
+    // SAFETY: `planes` is null or `SpanCall::planes`, the span's planes, which
+    // `Specialist::run_with_view` keeps borrowed across the call.
+    let Some(planes) = (unsafe { call.planes.as_ref() }) else {
+        return;
+    };
     // SAFETY: `TexView::new` made `keys` and `set` from references that
     // outlive the view (its `'a`); `set` was a `TextureSet`.
     let (keys, set) = unsafe { (&*view.keys, &*view.set.cast::<TextureSet<'_>>()) };
@@ -213,10 +221,10 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
             continue;
         };
         for lane in (0..4).filter(|l| call.live & (1 << l) != 0) {
-            let quad = std::array::from_fn(|p| std::array::from_fn(|c| call.coords[u][p][c][lane]));
-            let texel = tex.as_ref().map_or([0.0; 4], |tex| {
-                crate::texture::sample_quad(key, tex, &quad, call.quad_pixel[lane] as usize)
-            });
+            let at = (call.px[lane], call.row[lane]);
+            let texel = tex
+                .as_ref()
+                .map_or([0.0; 4], |tex| crate::shade::sample_unit(planes, (u, key), tex, at));
             for (c, v) in texel.into_iter().enumerate() {
                 call.samples[u][c][lane] = v;
             }

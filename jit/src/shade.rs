@@ -311,17 +311,28 @@ pub fn texture(
     textures: &crate::texture::TextureSet<'_>,
     primary: [f32; 4],
 ) -> [f32; 4] {
-    use crate::texture::{sample_quad, MAX_UNITS};
-    let (qx, qy) = quad_origin((px, row));
-    let lane = usize::from(px != qx) + 2 * usize::from(row != qy);
-    let pixels = [(qx, qy), (qx + 1.0, qy), (qx, qy + 1.0), (qx + 1.0, qy + 1.0)];
+    use crate::texture::MAX_UNITS;
     let mut samples = [[0.0; 4]; MAX_UNITS];
     for (u, unit) in key.tex.iter().enumerate() {
         let (Some(unit), Some(tex)) = (unit, &textures.units[u]) else {
             continue;
         };
-        let quad = pixels.map(|p| tex_coords(planes, u, p));
-        samples[u] = sample_quad(unit, tex, &quad, lane);
+        samples[u] = sample_unit(planes, (u, unit), tex, (px, row));
     }
     crate::texture::environment(&key.tex, &samples, primary, &textures.env_color)
+}
+
+/// Unit `u`'s sample of `tex` at `(px, row)`: its coordinates at the four
+/// pixels of the fragment's quad (λ and cube-map derivatives need them).
+pub fn sample_unit(
+    planes: &Planes,
+    (u, unit): (usize, &crate::texture::TexUnitKey),
+    tex: &crate::texture::TextureRef<'_>,
+    (px, row): (f32, f32),
+) -> [f32; 4] {
+    let (qx, qy) = quad_origin((px, row));
+    let lane = usize::from(px != qx) + 2 * usize::from(row != qy);
+    let pixels = [(qx, qy), (qx + 1.0, qy), (qx, qy + 1.0), (qx + 1.0, qy + 1.0)];
+    let quad = pixels.map(|p| tex_coords(planes, u, p));
+    crate::texture::sample_quad(unit, tex, &quad, lane)
 }

@@ -10,7 +10,7 @@
 //! [`UnitView`](crate::callout::UnitView) at run time, never from the key;
 //! per lane, since the lanes of a group can lie in quads of different levels.
 
-use super::{le, mem, Gen, Group, I32X4};
+use super::{le, mem, Gen, Group, SpanValues, I32X4};
 use crate::callout::{LevelView, TexView, UnitView};
 use crate::texture::{Filter, MipFilter, SamplerKey, TexTarget, TexUnitKey, TexelFormat, Wrap, MAX_LEVELS};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
@@ -52,7 +52,7 @@ impl Gen<'_> {
     /// sampler through the callout instead, on the same coordinates.
     pub(super) fn sample_native(
         &mut self,
-        g: &Group,
+        (g, sv): (&Group, &SpanValues),
         (u, key): (usize, &SamplerKey),
         view: Value,
         c: &Projected,
@@ -158,7 +158,7 @@ impl Gen<'_> {
         self.b.ins().jump(done, &rgba.map(Into::into));
         (self.consts, self.fconsts) = consts.clone();
         self.b.switch_to_block(slow);
-        let rgba = self.sample_called(g, u, view, c);
+        let rgba = self.sample_called(g, sv, u, view);
         self.b.ins().jump(done, &rgba.map(Into::into));
         (self.consts, self.fconsts) = consts;
         self.b.switch_to_block(done);

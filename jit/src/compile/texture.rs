@@ -42,8 +42,7 @@ impl Gen<'_> {
         if called != 0 {
             let slot = self.tex_slot();
             let args = self.b.ins().stack_addr(self.ptr, slot, 0);
-            self.store_coords(g, sv, (args, called));
-            samples = self.call_sampler(g, (args, called), view);
+            samples = self.call_sampler(g, sv, (args, called), view);
         }
         if native != 0 {
             let lod = key
@@ -55,7 +54,7 @@ impl Gen<'_> {
             for (u, unit) in key.tex.iter().enumerate() {
                 if let Some(unit) = unit.as_ref().filter(|t| native_unit(t)) {
                     let c = self.project(sv, u, &points, needs_lod(&unit.sampler));
-                    samples[u] = Some(self.sample_native(g, (u, &unit.sampler), view, &c));
+                    samples[u] = Some(self.sample_native((g, sv), (u, &unit.sampler), view, &c));
                 }
             }
         }
@@ -111,64 +110,30 @@ impl Gen<'_> {
         }
     }
 
-    /// Stores the coordinates of the units of `units` at the four pixels of
-    /// each lane's quad (top-left, top-right, bottom-left, bottom-right) and
-    /// the lane's place in its quad in the group's [`TexCall`].
-    fn store_coords(&mut self, g: &Group, sv: &SpanValues, (args, units): (Value, u32)) {
-        let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
-        let px = g.px.expect("carried by the loop for keys with a shading stage");
-        let one = self.fconst(1.0);
-        let (qx, x_odd) = self.even(px);
-        let (qy, y_odd) = self.even(row);
-        let below = self.b.ins().ishl_imm_u(y_odd, 1);
-        let place = self.b.ins().bor(x_odd, below);
-        self.b
-            .ins()
-            .store(mem(), place, args, offset_of!(TexCall, quad_pixel) as i32);
-        let qx1 = self.b.ins().fadd(qx, one);
-        let qy1 = self.b.ins().fadd(qy, one);
-        for (p, (x, y)) in [(qx, qy), (qx1, qy), (qx, qy1), (qx1, qy1)].into_iter().enumerate() {
-            let iw = self.plane(planes, slot::INV_W, x, y);
-            let w = self.b.ins().fdiv(one, iw);
-            for u in (0..MAX_UNITS).filter(|u| units & (1 << u) != 0) {
-                for c in 0..4 {
-                    let v = self.plane(planes, slot::tex(u) + c, x, y);
-                    let v = self.b.ins().fmul(v, w);
-                    let off = offset_of!(TexCall, coords) + (((u * 4 + p) * 4 + c) * 16);
-                    self.b.ins().store(mem(), v, args, off as i32);
-                }
-            }
-        }
-    }
-
-    /// Natively sampled unit `u` through the reference sampler, at its
-    /// projected coordinates `c` (which must have the quad's): stored as
-    /// `(s, t, 0, 1)` (the reference's projection by q = 1 leaves them as
-    /// they are), top-left, top-right and bottom-left pixels, and each
-    /// lane's own pixel in the fourth place (the one each lane reads as its
-    /// own: for a 2D λ the reference reads no other).
-    pub(super) fn sample_called(&mut self, g: &Group, u: usize, view: Value, c: &Projected) -> Rgba {
-        let quad = c.quad.expect("a group leaves the native path only over λ");
+    /// Natively sampled unit `u` through the reference sampler (a group
+    /// whose lanes λ puts on different levels).
+    pub(super) fn sample_called(&mut self, g: &Group, sv: &SpanValues, u: usize, view: Value) -> Rgba {
         let slot = self.tex_slot();
         let args = self.b.ins().stack_addr(self.ptr, slot, 0);
-        let (zero, one) = (self.fconst(0.0), self.fconst(1.0));
-        for (p, st) in [quad[0], quad[1], quad[2], c.at].into_iter().enumerate() {
-            for (k, v) in [st[0], st[1], zero, one].into_iter().enumerate() {
-                let off = offset_of!(TexCall, coords) + (((u * 4 + p) * 4 + k) * 16);
-                self.b.ins().store(mem(), v, args, off as i32);
-            }
-        }
-        let own = self.splat(3);
-        self.b
-            .ins()
-            .store(mem(), own, args, offset_of!(TexCall, quad_pixel) as i32);
-        self.call_sampler(g, (args, 1 << u), view)[u].expect("unit u was sampled")
+        self.call_sampler(g, sv, (args, 1 << u), view)[u].expect("unit u was sampled")
     }
 
-    /// Calls the reference sampler for the units of `units` on the
-    /// coordinates stored in the group's [`TexCall`]; their samples.
-    fn call_sampler(&mut self, g: &Group, (args, units): (Value, u32), view: Value) -> [Option<Rgba>; MAX_UNITS] {
+    /// Calls the reference sampler for the units of `units` at the group's
+    /// lanes (it evaluates their coordinates from the planes as the
+    /// interpreter does); their samples.
+    fn call_sampler(
+        &mut self,
+        g: &Group,
+        sv: &SpanValues,
+        (args, units): (Value, u32),
+        view: Value,
+    ) -> [Option<Rgba>; MAX_UNITS] {
+        let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
+        let px = g.px.expect("carried by the loop for keys with a shading stage");
         let store = |s: &mut Self, v: Value, off: usize| s.b.ins().store(mem(), v, args, off as i32);
+        store(self, px, offset_of!(TexCall, px));
+        store(self, row, offset_of!(TexCall, row));
+        store(self, planes, offset_of!(TexCall, planes));
         store(self, view, offset_of!(TexCall, view));
         let live = self.b.ins().vhigh_bits(types::I32, g.live);
         store(self, live, offset_of!(TexCall, live));
