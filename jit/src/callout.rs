@@ -7,9 +7,9 @@
 //! built by the specialist from the [`TextureSet`] at the call boundary and
 //! valid for the whole call; everything in it is read-only.
 
+use crate::shade::Planes;
 use crate::texture::lod::LodState;
 use crate::texture::{SamplerStatics, TexUnitKey, TextureRef, TextureSet, MAX_LEVELS, MAX_UNITS};
-use crate::shade::Planes;
 use std::marker::PhantomData;
 
 /// The draw's textures as compiled code sees them. `#[repr(C)]`: the

@@ -157,8 +157,18 @@ pub fn signature(isa: &OwnedTargetIsa) -> Signature {
 /// Builds the body of `key`'s specialist into `func` (whose signature is [`signature`]).
 /// The key must be valid ([`FragmentKey::validate`]).
 pub fn build(key: &FragmentKey, isa: &OwnedTargetIsa, func: &mut cranelift_codegen::ir::Function) {
-    let mut fctx = FunctionBuilderContext::new();
-    let b = FunctionBuilder::new(func, &mut fctx);
+    build_with(key, isa, func, &mut FunctionBuilderContext::new());
+}
+
+/// [`build`] with a builder context of the caller's (reused from one compile
+/// to the next, its buffers are not allocated again).
+pub fn build_with(
+    key: &FragmentKey,
+    isa: &OwnedTargetIsa,
+    func: &mut cranelift_codegen::ir::Function,
+    fctx: &mut FunctionBuilderContext,
+) {
+    let b = FunctionBuilder::new(func, fctx);
     let mut g = Gen::new(key, isa.pointer_type(), b);
     // Specialists are compiled for the host (`host_isa`).
     g.x86 = cfg!(target_arch = "x86_64");

@@ -14,9 +14,24 @@ use crate::uniforms::FragmentUniforms;
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_jit::{JITBuilder, JITModule};
 use cranelift_module::{Module, ModuleError};
+use std::cell::RefCell;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Condvar, Mutex, OnceLock, PoisonError, Weak};
+
+/// Fresh Cranelift contexts.
+fn contexts() -> (cranelift_codegen::Context, cranelift_frontend::FunctionBuilderContext) {
+    (
+        cranelift_codegen::Context::new(),
+        cranelift_frontend::FunctionBuilderContext::new(),
+    )
+}
+
+thread_local! {
+    /// Each compiling thread's Cranelift contexts, reused from compile to compile.
+    static CONTEXTS: RefCell<(cranelift_codegen::Context, cranelift_frontend::FunctionBuilderContext)> =
+        RefCell::new(contexts());
+}
 
 /// Why a specialist could not be made.
 #[derive(Debug, thiserror::Error)]
@@ -207,6 +222,8 @@ impl Specialist {
     fn compile_code(key: &FragmentKey, alloc: RegAlloc) -> Result<Compiled, SpecialistError> {
         let isa = isa(alloc)?;
         catch_unwind(AssertUnwindSafe(|| Self::compile_with(key, isa, alloc))).unwrap_or_else(|p| {
+            // A panic may have left the thread's contexts half used: new ones.
+            CONTEXTS.set(contexts());
             let msg = p
                 .downcast_ref::<&str>()
                 .map(|s| s.to_string())
@@ -221,15 +238,17 @@ impl Specialist {
             isa.clone(),
             cranelift_module::default_libcall_names(),
         ));
-        let built = (|| -> Result<*const u8, Box<ModuleError>> {
-            let mut ctx = module.make_context();
+        let built = CONTEXTS.with_borrow_mut(|(ctx, fctx)| -> Result<*const u8, Box<ModuleError>> {
+            // The thread's contexts, cleared: their buffers (the register
+            // allocator's above all) are reused rather than allocated again.
+            ctx.clear();
             ctx.func.signature = compile::signature(isa);
-            compile::build(key, isa, &mut ctx.func);
+            compile::build_with(key, isa, &mut ctx.func, fctx);
             let id = module.declare_anonymous_function(&ctx.func.signature)?;
-            module.define_function(id, &mut ctx)?;
+            module.define_function(id, ctx)?;
             module.finalize_definitions()?;
             Ok(module.get_finalized_function(id))
-        })();
+        });
         match built {
             Ok(code) => {
                 // SAFETY: `code` is the finalized function built with `compile::signature`,
