@@ -103,25 +103,20 @@ pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
 /// Mfragments/s without it, 309 µs and 440 with it; the register allocator is
 /// most of what is left). The IR verifier runs only in debug builds (it adds 30-60%).
 ///
-/// The register allocator is 74% of a backtracking compile. Medians of 200
-/// compiles on a quiet machine, backtracking / single-pass: untextured minimal
-/// key (62 IR instructions) 80 / 53 µs; one NEAREST unit (278) 499 / 188 µs;
-/// bilinear (440) 846 / 289 µs; trilinear (893) 1730 / 597 µs. Single-pass code
+/// The register allocator is 74% of a backtracking compile. Single-pass code
 /// spills more and runs slower: with an earlier texture generator (per-lane
-/// loops) it spilled five times as often (479 stack accesses against 89 in the
-/// trilinear key) and sampled at half the rate; with today's it is 5–10% slower
-/// (`jit/benches/texels.rs`, `jit` against `jit_quick`, load 1.2–2.5, Mfragments/s:
-/// NEAREST 103 / 97, LINEAR 67 / 63, trilinear 25.6 / 24.4, two trilinear units
-/// 13.7 / 12.3). Hence the tiering policy of
+/// loops) it spilled five times as often and sampled at half the rate; with
+/// today's it is 5–10% slower (`jit/benches/texels.rs`, `jit` against
+/// `jit_quick`). Hence the tiering policy of
 /// [`crate::specialist::Specialist::compile`]: a key with texture units is
 /// compiled single-pass first (the draw waits only for that), then again with
 /// the backtracking allocator on one background thread, and the specialist
 /// switches to that code once it is ready; keys without texture units compile
-/// once, backtracking (80–190 µs). What a draw then waits for, against what
-/// the background thread spends (`benches/specialists.rs`, group `compile`,
-/// criterion medians, load 0.35–0.64): one NEAREST unit 192 / 478 µs, bilinear
-/// 297 / 835 µs, trilinear 586 µs / 1.65 ms, two trilinear units 974 µs /
-/// 3.12 ms.
+/// once, backtracking. What a draw then waits for, against what the
+/// background thread spends (`benches/specialists.rs`, group `compile`,
+/// criterion medians, quiet machine): one NEAREST unit 195 / 314 µs, bilinear
+/// 221 / 503 µs, trilinear 470 µs / 1.15 ms, two trilinear units 773 µs /
+/// 2.04 ms.
 pub fn host_isa_with(alloc: RegAlloc) -> Result<OwnedTargetIsa, CompileError> {
     let mut flags = settings::builder();
     let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
