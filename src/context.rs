@@ -447,6 +447,13 @@ impl Context {
         self.specialists.stats()
     }
 
+    /// Compiles every fragment key from now on in `tier` (`None`: each key's
+    /// own policy, `SOFTGL_JIT_TIER` or tiered for textured keys). Tests use
+    /// `Tier::Optimized` to check the code a draw runs after its upgrade.
+    pub fn set_jit_tier(&mut self, tier: Option<softgl_jit::Tier>) {
+        self.specialists.set_tier(tier);
+    }
+
     /// How many specialists to keep (at least one; `SOFTGL_SPECIALISTS` at creation,
     /// else 64). Shrinking evicts the least recently used and frees their code.
     pub fn set_specialist_capacity(&mut self, capacity: usize) {

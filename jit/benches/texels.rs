@@ -4,8 +4,9 @@
 //! minified by 1.37 (λ ≈ 0.45, so trilinear blends levels 0 and 1), MODULATE
 //! over a constant colour, REPEAT. Each fragment samples once: texels/s is
 //! fragments/s (`two_trilinear_units`: twice, the same texture; still
-//! fragments/s). `jit_quick` is the single-pass code a tiered specialist
-//! runs until its backtracking code is installed.
+//! fragments/s). `jit_quick` is the quick code a tiered specialist runs
+//! until its optimized code is installed (single-pass register allocation,
+//! every unit sampled by the reference through the callout).
 //!
 //! `cargo bench -p softgl-jit --bench texels`
 
@@ -100,7 +101,8 @@ fn texels(c: &mut Criterion) {
     ] {
         // The key for the bench's texture (its statics: power-of-two, no LOD
         // clamp or bias). `jit`: the code a draw runs once the background
-        // upgrade is installed; `jit_quick`: the single-pass code it runs until then.
+        // upgrade is installed; `jit_quick`: the quick code it runs until then
+        // (single-pass, every unit through the callout).
         let key = support::bind(&key, &set);
         let specialist = Specialist::compile_tier(&key, Tier::Optimized).expect("the bench key compiles");
         let quick = Specialist::compile_tier(&key, Tier::Quick).expect("the bench key compiles");

@@ -2,6 +2,7 @@
 
 use crate::key::FragmentKey;
 use crate::specialist::{Specialist, SpecialistError};
+use crate::tier::Tier;
 use lru::LruCache;
 use std::num::NonZeroUsize;
 use std::time::{Duration, Instant};
@@ -43,6 +44,8 @@ pub struct SpecialistCache {
     stats: CacheStats,
     compile_ns: Vec<u64>,
     compiler: Compiler,
+    /// A tier every key is compiled in, else each key's own ([`Tier::for_key`]).
+    tier: Option<Tier>,
 }
 
 /// How a cache makes a specialist from a key.
@@ -66,7 +69,15 @@ impl SpecialistCache {
             },
             compile_ns: Vec::new(),
             compiler,
+            tier: None,
         }
+    }
+
+    /// Compiles every key from now on in `tier` (`None`: each key's own,
+    /// [`Tier::for_key`]); tests use [`Tier::Optimized`] to check the code
+    /// a draw runs once its upgrade is in. Specialists already held stay.
+    pub fn set_tier(&mut self, tier: Option<Tier>) {
+        self.tier = tier;
     }
 
     /// A cache of `SOFTGL_SPECIALISTS` specialists, else [`DEFAULT_CAPACITY`].
@@ -100,7 +111,11 @@ impl SpecialistCache {
         } else {
             self.stats.misses += 1;
             let start = Instant::now();
-            let compiled = (self.compiler)(key).ok();
+            let compiled = match self.tier {
+                Some(tier) => Specialist::compile_tier(key, tier),
+                None => (self.compiler)(key),
+            }
+            .ok();
             let took = start.elapsed();
             self.stats.total_compile += took;
             let ns = took.as_nanos() as u64;

@@ -152,19 +152,22 @@ pub fn signature(isa: &OwnedTargetIsa) -> Signature {
 /// Builds the body of `key`'s specialist into `func` (whose signature is [`signature`]).
 /// The key must be valid ([`FragmentKey::validate`]).
 pub fn build(key: &FragmentKey, isa: &OwnedTargetIsa, func: &mut cranelift_codegen::ir::Function) {
-    build_with(key, isa, func, &mut FunctionBuilderContext::new());
+    build_with(key, isa, func, (&mut FunctionBuilderContext::new(), true));
 }
 
 /// [`build`] with a builder context of the caller's (reused from one compile
-/// to the next, its buffers are not allocated again).
+/// to the next, its buffers are not allocated again), and the texture units
+/// sampled natively (`native_sampling`, [`native_unit`]) or all through the
+/// reference sampler's callout (the quick tier's code: a fraction of the IR).
 pub fn build_with(
     key: &FragmentKey,
     isa: &OwnedTargetIsa,
     func: &mut cranelift_codegen::ir::Function,
-    fctx: &mut FunctionBuilderContext,
+    (fctx, native_sampling): (&mut FunctionBuilderContext, bool),
 ) {
     let b = FunctionBuilder::new(func, fctx);
     let mut g = Gen::new(key, isa.pointer_type(), b);
+    g.native_sampling = native_sampling;
     // Specialists are compiled for the host (`host_isa`).
     g.x86 = cfg!(target_arch = "x86_64");
     g.emit();
@@ -239,6 +242,9 @@ struct Gen<'a> {
     inverses: Vec<(Value, Value)>,
     /// Whether the target is x86-64 (whose own instructions some stages use).
     x86: bool,
+    /// Whether units [`native_unit`] takes are sampled in the generated code
+    /// (else through the callout).
+    native_sampling: bool,
     /// Splatted f32 constants of the current group, by their bits.
     fconsts: Vec<(u32, Value)>,
     /// The stack slot of the texture callout's arguments, once made.
@@ -256,6 +262,7 @@ impl<'a> Gen<'a> {
             consts: Vec::new(),
             inverses: Vec::new(),
             x86: false,
+            native_sampling: true,
             fconsts: Vec::new(),
             tex_slot: None,
             gather_slot: None,

@@ -1,12 +1,15 @@
-//! Tiered compilation: which register allocator a key is compiled with first,
-//! and the one background thread that compiles the optimized tier.
+//! Tiered compilation: how a key is compiled first, and the one background
+//! thread that compiles the optimized tier.
 //!
-//! A key with texture units takes 0.5–3 ms to compile with the backtracking
-//! register allocator and about a third of that single-pass (figures in
+//! A key with texture units takes 0.3–2 ms to compile with the natively
+//! sampled texture stage and the backtracking register allocator (figures in
 //! [`crate::compile::host_isa_with`]). The draw that meets a new textured key
-//! waits only for the single-pass code; the backtracking code, whose texture
-//! stage runs 5–10% faster, is compiled on one background thread and installed
-//! in the specialist when ready.
+//! waits only for the quick code: single-pass register allocation, and every
+//! unit sampled by the reference sampler through the callout (the code of a
+//! key without texturing, about 100 µs). That code samples at the
+//! interpreter's speed; the optimized code (native sampling, backtracking) is
+//! compiled on one background thread and installed in the specialist when
+//! ready, a millisecond or two later, between two batches of a draw.
 
 use crate::compile::RegAlloc;
 use crate::key::FragmentKey;
@@ -16,9 +19,11 @@ use std::sync::{Mutex, OnceLock, PoisonError};
 /// How a specialist is compiled.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Tier {
-    /// Single-pass register allocation only: the fastest compile, slower code.
+    /// Single-pass register allocation and every texture unit through the
+    /// callout only: the fastest compile, the slowest texturing.
     Quick,
-    /// Backtracking register allocation only: what a key without texture units gets.
+    /// Native sampling and backtracking register allocation only: what a key
+    /// without texture units gets.
     Optimized,
     /// [`Tier::Quick`] now, then [`Tier::Optimized`] on the background thread,
     /// installed when ready: what a key with texture units gets.

@@ -793,7 +793,10 @@ proptest! {
         u in uniforms(),
         seed in any::<u64>(),
     ) {
-        textured_case(key, shade, tex, u, seed)?;
+        // Both tiers' code: a draw runs the quick code (single-pass, every
+        // unit through the callout) until the optimized code is installed.
+        let tier = if seed & 1 == 0 { Tier::Quick } else { Tier::Optimized };
+        textured_case(key, shade, tex, u, (seed, tier))?;
     }
 
     /// Units the specialist samples natively (2D RGBA8, REPEAT or
@@ -809,7 +812,7 @@ proptest! {
         let mut tex = [None; MAX_UNITS];
         (tex[0], tex[1]) = (Some(units.0), units.1);
         prop_assert!(tex.iter().flatten().all(softgl_jit::compile::native_unit));
-        textured_case(key, shade, tex, u, seed)?;
+        textured_case(key, shade, tex, u, (seed, Tier::Optimized))?;
     }
 }
 
@@ -860,7 +863,7 @@ fn textured_case(
     shade: ShadeKey,
     tex: [Option<TexUnitKey>; MAX_UNITS],
     u: FragmentUniforms,
-    seed: u64,
+    (seed, tier): (u64, Tier),
 ) -> Result<(), TestCaseError> {
     let key = FragmentKey {
         shade: Some(ShadeKey {
@@ -896,9 +899,6 @@ fn textured_case(
     } else {
         key
     };
-    // Both register allocators' code: a draw runs the single-pass code until
-    // the backtracking code is installed.
-    let tier = if seed & 1 == 0 { Tier::Quick } else { Tier::Optimized };
     let (jit_buf, interp_buf) = run_both(&key, tier, &u, &textures, &mut rng, textured_planes);
     prop_assert_eq!(&jit_buf, &interp_buf, "buffers differ");
     Ok(())

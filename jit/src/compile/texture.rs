@@ -32,7 +32,7 @@ impl Gen<'_> {
                 .map(|u| 1 << u)
                 .sum()
         };
-        let native = mask(&native_unit);
+        let native = if self.native_sampling { mask(&native_unit) } else { 0 };
         let called = mask(&|_| true) & !native;
         let view = self
             .b
