@@ -109,14 +109,15 @@ pub fn host_isa() -> Result<OwnedTargetIsa, CompileError> {
 /// today's it is 5–10% slower (`jit/benches/texels.rs`, `jit` against
 /// `jit_quick`). Hence the tiering policy of
 /// [`crate::specialist::Specialist::compile`]: a key with texture units is
-/// compiled single-pass first (the draw waits only for that), then again with
-/// the backtracking allocator on one background thread, and the specialist
-/// switches to that code once it is ready; keys without texture units compile
-/// once, backtracking. What a draw then waits for, against what the
-/// background thread spends (`benches/specialists.rs`, group `compile`,
-/// criterion medians, quiet machine): one NEAREST unit 195 / 314 µs, bilinear
-/// 221 / 503 µs, trilinear 470 µs / 1.15 ms, two trilinear units 773 µs /
-/// 2.04 ms.
+/// compiled quick first (the draw waits only for that), then again with
+/// native sampling and the backtracking allocator on one background thread,
+/// and the specialist switches to that code once it is ready; keys without
+/// texture units compile once, backtracking. The quick code samples every
+/// unit through the callout
+/// ([`build_with`]): what a draw then waits for, against what the background
+/// thread spends (`benches/specialists.rs`, group `compile`, criterion
+/// medians): one NEAREST unit 88.5 / 249 µs, bilinear 87.4 / 414 µs,
+/// trilinear 88.1 / 956 µs, two trilinear units 90.9 µs / 1.69 ms.
 pub fn host_isa_with(alloc: RegAlloc) -> Result<OwnedTargetIsa, CompileError> {
     let mut flags = settings::builder();
     let set = |f: &mut settings::Builder, k: &str, v: &str| f.set(k, v).map_err(|e| CompileError::Isa(e.to_string()));
