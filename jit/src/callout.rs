@@ -134,7 +134,7 @@ impl UnitView {
 impl<'a> TexView<'a> {
     /// The view of `set` for a specialist of a key with texture units
     /// `keys`, or `None` when a natively sampled unit has no texture or one
-    /// the native path cannot read ([`UnitView::new`]).
+    /// the native path cannot read (`UnitView::new`).
     pub fn new(keys: &'a [Option<TexUnitKey>; MAX_UNITS], set: &'a TextureSet<'a>) -> Option<TexView<'a>> {
         let mut units = [UnitView::default(); MAX_UNITS];
         for ((key, tex), view) in keys.iter().zip(&set.units).zip(&mut units) {
