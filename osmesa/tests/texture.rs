@@ -553,8 +553,12 @@ fn parameters_environment_and_generation_are_set_and_queried() {
     assert_eq!(eye, [1.0, 2.0, 3.0, -2.0]);
     glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP as i32);
     assert_eq!(glGetError(), GL_INVALID_ENUM);
+    // A scalar form sets a plane to (param, 0, 0, 0), as Mesa's do.
     glTexGenf(GL_T, GL_EYE_PLANE, 1.0);
-    assert_eq!(glGetError(), GL_INVALID_ENUM, "planes need the vector forms");
+    assert_eq!(glGetError(), GL_NO_ERROR);
+    // SAFETY: room for 4 values.
+    unsafe { glGetTexGenfv(GL_T, GL_EYE_PLANE, eye.as_mut_ptr()) };
+    assert_eq!(eye, [1.0, 0.0, 0.0, 0.0]);
     glEnable(GL_TEXTURE_GEN_T);
     assert_eq!(glIsEnabled(GL_TEXTURE_GEN_T), GL_TRUE);
     glActiveTexture(GL_TEXTURE0 + 2);

@@ -154,15 +154,15 @@ fn gen_count(pname: GLenum) -> usize {
     }
 }
 
-/// Records `glTexGen` with values `v`; `vector` for the `v` forms (the
-/// planes are refused by the scalar ones).
-fn tex_gen(c: GLenum, pname: GLenum, v: [f64; 4], vector: bool) {
+/// Records `glTexGen` with values `v`. The scalar forms pass `(param, 0, 0,
+/// 0)`, a plane too, as Mesa's do (`texgen.c` `_mesa_TexGenf`, `dlist.c`
+/// `save_TexGenf`: no error; llvmpipe facts §19).
+fn tex_gen(c: GLenum, pname: GLenum, v: [f64; 4]) {
     checked(move |gl| {
         outside(gl)?;
         let c = decode::<TexCoordName>(c)?;
         let p = match gen_name(pname)? {
             TexGenParamName::Mode => TexGenParam::Mode(decode(v[0] as i64 as GLenum)?),
-            _ if !vector => return Err(GlError::InvalidEnum),
             TexGenParamName::ObjectPlane => TexGenParam::ObjectPlane(v.map(|x| x as f32)),
             TexGenParamName::EyePlane => TexGenParam::EyePlane(v.map(|x| x as f32)),
         };
@@ -174,7 +174,7 @@ fn tex_gen(c: GLenum, pname: GLenum, v: [f64; 4], vector: bool) {
 /// `p` is null or holds the values `pname` takes.
 unsafe fn tex_gen_v<T: Copy + Into<f64>>(c: GLenum, pname: GLenum, p: *const T) {
     // SAFETY: passed on.
-    unsafe { with_values(p, gen_count(pname), |v| tex_gen(c, pname, v, true)) }
+    unsafe { with_values(p, gen_count(pname), |v| tex_gen(c, pname, v)) }
 }
 
 fn get_tex_gen<T: Copy>(c: GLenum, pname: GLenum, out: *mut T, conv: fn(Value) -> Vec<T>) {
@@ -314,13 +314,13 @@ exports! {
 
     // ----- coordinate generation -----
     [] fn glTexGeni(coord: GLenum, pname: GLenum, param: i32) {
-        tex_gen(coord, pname, [f64::from(param), 0.0, 0.0, 0.0], false)
+        tex_gen(coord, pname, [f64::from(param), 0.0, 0.0, 0.0])
     }
     [] fn glTexGenf(coord: GLenum, pname: GLenum, param: f32) {
-        tex_gen(coord, pname, [f64::from(param), 0.0, 0.0, 0.0], false)
+        tex_gen(coord, pname, [f64::from(param), 0.0, 0.0, 0.0])
     }
     [] fn glTexGend(coord: GLenum, pname: GLenum, param: f64) {
-        tex_gen(coord, pname, [param, 0.0, 0.0, 0.0], false)
+        tex_gen(coord, pname, [param, 0.0, 0.0, 0.0])
     }
     /// # Safety
     /// `params` is null or holds the values `pname` takes.
