@@ -25,10 +25,9 @@ pub struct TexView<'a> {
     pub units: [UnitView; MAX_UNITS],
     /// The draw's [`TextureSet`], type-erased, for [`texture_group`].
     set: *const (),
-    /// The texture units of the specialist's key.
-    keys: *const [Option<TexUnitKey>; MAX_UNITS],
-    /// The same, by value, for [`TexView::is_for`].
-    units_key: [Option<TexUnitKey>; MAX_UNITS],
+    /// The texture units of the specialist's key, for [`texture_group`] and
+    /// [`TexView::is_for`].
+    keys: [Option<TexUnitKey>; MAX_UNITS],
     _borrow: PhantomData<&'a TextureSet<'a>>,
 }
 
@@ -146,8 +145,7 @@ impl<'a> TexView<'a> {
             env_color: set.env_color.map(|c| c.map(|v| [v; 4])),
             units,
             set: (set as *const TextureSet<'a>).cast(),
-            keys,
-            units_key: *keys,
+            keys: *keys,
             _borrow: PhantomData,
         })
     }
@@ -157,7 +155,7 @@ impl TexView<'_> {
     /// Whether this is the view of a key with texture units `units` (what
     /// that key's generated code may read of it).
     pub fn is_for(&self, units: &[Option<TexUnitKey>; MAX_UNITS]) -> bool {
-        self.units_key == *units
+        self.keys == *units
     }
 }
 
@@ -213,10 +211,10 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
     let Some(planes) = (unsafe { call.planes.as_ref() }) else {
         return;
     };
-    // SAFETY: `TexView::new` made `keys` and `set` from references that
-    // outlive the view (its `'a`); `set` was a `TextureSet`.
-    let (keys, set) = unsafe { (&*view.keys, &*view.set.cast::<TextureSet<'_>>()) };
-    for (u, (key, tex)) in keys.iter().zip(&set.units).enumerate() {
+    // SAFETY: `TexView::new` made `set` from a reference that outlives the
+    // view (its `'a`) to a `TextureSet`.
+    let set = unsafe { &*view.set.cast::<TextureSet<'_>>() };
+    for (u, (key, tex)) in view.keys.iter().zip(&set.units).enumerate() {
         let Some(key) = key.as_ref().filter(|_| call.units & (1 << u) != 0) else {
             continue;
         };
