@@ -9,7 +9,7 @@ use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
 use softgl::{
     Backend, Capability, ClearMask, CompareFunc, Context, FramebufferDesc, LogicOp, PrimitiveMode, VertexArrays,
 };
-use softgl_jit::texture::{EnvMode, Filter, MipFilter, TextureSet, Wrap};
+use softgl_jit::texture::{EnvMode, Filter, MipFilter, Wrap};
 use softgl_jit::{ColorFormat, FragmentKey, Specialist, SpecialistCache, Tier};
 use std::hint::black_box;
 use std::time::Duration;
@@ -40,9 +40,7 @@ fn textured_keys() -> [(&'static str, FragmentKey); 4] {
         })
         .collect();
     let images = support::images(&levels);
-    let mut set = TextureSet::default();
-    set.units[0] = Some(support::whole_chain(&images));
-    set.units[1] = set.units[0];
+    let set = support::two_units(&images);
     [
         ("nearest", one(Filter::Nearest, MipFilter::None)),
         ("bilinear", one(Filter::Linear, MipFilter::None)),

@@ -12,7 +12,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use softgl_jit::shade::slot;
-use softgl_jit::texture::{EnvMode, Filter, MipFilter, TextureSet, Wrap, MAX_UNITS};
+use softgl_jit::texture::{EnvMode, Filter, MipFilter, Wrap, MAX_UNITS};
 use softgl_jit::SPAN_MAX;
 use softgl_jit::{interp, ColorFormat, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target, Tier};
 use std::hint::black_box;
@@ -76,9 +76,7 @@ fn spans() -> Vec<FragmentSpan> {
 fn texels(c: &mut Criterion) {
     let levels = levels();
     let images = support::images(&levels);
-    let mut set = TextureSet::default();
-    set.units[0] = Some(support::whole_chain(&images));
-    set.units[1] = set.units[0];
+    let set = support::two_units(&images);
     let planes = [planes()];
     let spans = spans();
     let u = FragmentUniforms::default();
@@ -140,9 +138,7 @@ fn compile(c: &mut Criterion) {
     // The statics of the bench's texture (power-of-two, no LOD clamp or bias).
     let levels = levels();
     let images = support::images(&levels);
-    let mut set = TextureSet::default();
-    set.units[0] = Some(support::whole_chain(&images));
-    set.units[1] = set.units[0];
+    let set = support::two_units(&images);
     let one = support::bind(&key(Filter::Linear, MipFilter::Linear), &set);
     let two = support::bind(&support::with_bilinear_second_unit(one), &set);
     // For scale, in the same run: the same key without its unit.

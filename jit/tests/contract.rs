@@ -7,6 +7,7 @@
 //! values are drawn from small pools half the time, so that equal depths, equal
 //! stencil values, references and wrap-around edges actually occur.
 
+#[allow(dead_code, reason = "the texel bench's texture sets are not used here")]
 mod support;
 
 use proptest::prelude::*;

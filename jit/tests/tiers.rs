@@ -41,12 +41,9 @@ fn keys() -> [(&'static str, FragmentKey); 4] {
 
 /// The texture of [`levels`] with a grey-blue border on units 0 and 1.
 fn texture_set<'a>(images: &'a [softgl_jit::texture::Image<'a>]) -> TextureSet<'a> {
-    let mut set = TextureSet::default();
-    for unit in 0..2 {
-        set.units[unit] = Some(softgl_jit::texture::TextureRef {
-            border: [0.2, 0.4, 0.6, 0.8],
-            ..support::whole_chain(images)
-        });
+    let mut set = support::two_units(images);
+    for tex in set.units.iter_mut().flatten() {
+        tex.border = [0.2, 0.4, 0.6, 0.8];
     }
     set
 }

@@ -81,6 +81,14 @@ pub fn whole_chain<'a>(images: &'a [Image<'a>]) -> TextureRef<'a> {
     }
 }
 
+/// A set with [`whole_chain`] of `images` on units 0 and 1.
+pub fn two_units<'a>(images: &'a [Image<'a>]) -> TextureSet<'a> {
+    let mut set = TextureSet::default();
+    set.units[0] = Some(whole_chain(images));
+    set.units[1] = set.units[0];
+    set
+}
+
 /// `key` with the statics of `set`'s textures (`softgl_jit::texture::with_statics`):
 /// without them a natively sampled unit would run on the interpreter.
 pub fn bind(key: &FragmentKey, set: &TextureSet<'_>) -> FragmentKey {
