@@ -39,7 +39,7 @@ pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fog::{FogCoordSrc, FogMode, FogParam};
 pub use fragment::Backend;
-pub use framebuffer::{ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
+pub use framebuffer::{Clear, ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
 pub use gl_enum::GlEnum;
 pub use lighting::{
     ColorControl, ColorMaterialMode, LightModelParam, LightParam, LightParamName, MaterialParam, MaterialParamName,
