@@ -7,7 +7,7 @@
 use crate::error::{GlError, GlResult};
 use crate::fog::{FogCoordSrc, FogParam, FogState};
 use crate::fragment::Backend;
-use crate::raster::scene::{DrawState, Scene, MEMORY_BOUND};
+use crate::raster::scene::{DrawState, Scene};
 use softgl_jit::interp;
 use crate::framebuffer::{Clear, Framebuffer, FramebufferDesc, ReadFormat};
 use crate::geometry::batch::{FogSource, TexFetch, VertexStage};
@@ -350,6 +350,15 @@ pub struct Context {
     threads: usize,
 }
 
+/// What [`Context::scene_stats`] reports.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SceneStats {
+    pub pending_primitives: usize,
+    pub pending_bytes: usize,
+    pub peak_bytes: usize,
+    pub flushes: u64,
+}
+
 impl Drop for Context {
     /// Rasterizes what is pending: a context's last draws reach its
     /// framebuffer (lent memory too) even without a `glFinish`.
@@ -434,9 +443,22 @@ impl Context {
         self.threads = threads.clamp(1, crate::raster::pool::MAX_THREADS);
     }
 
-    /// Draws and clears recorded and not yet rasterized: primitives, bytes held.
-    pub fn pending(&self) -> (usize, usize) {
-        (self.scene.primitives(), self.scene.bytes())
+    /// The deferred scene: primitives and bytes recorded and not yet
+    /// rasterized, the most bytes it held at once, and the flushes run.
+    pub fn scene_stats(&self) -> SceneStats {
+        let (peak_bytes, flushes) = self.scene.peak();
+        SceneStats {
+            pending_primitives: self.scene.primitives(),
+            pending_bytes: self.scene.bytes(),
+            peak_bytes,
+            flushes,
+        }
+    }
+
+    /// Sets the bytes past which the scene is flushed, mid-draw if need be
+    /// (0: [`crate::raster::scene::MEMORY_BOUND`], 64 MiB).
+    pub fn set_scene_bound(&mut self, bytes: usize) {
+        self.scene.set_bound(bytes);
     }
 
     /// The framebuffer as the draws rasterized so far left it, without
@@ -1213,11 +1235,10 @@ impl Context {
             specialist,
             textures: textures.share(),
         };
-        geometry.draw(&vertex_stage, mode, count, fetch, &mut self.scene.draw(&self.fb, state));
-        if self.scene.bytes() > MEMORY_BOUND {
-            self.finish_scene();
-        }
-        Ok(())
+        let mut binner = self.scene.draw(&mut self.fb, self.threads, state);
+        geometry.draw(&vertex_stage, mode, count, fetch, &mut binner);
+        let r = binner.finish();
+        self.record(r.map_err(|_| GlError::InvalidOperation))
     }
 
     /// `glFlush`/`glFinish`: rasterizes every draw recorded so far. Like

@@ -35,7 +35,7 @@ pub mod raster;
 pub mod state;
 pub mod texture;
 
-pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
+pub use context::{AttribArray, Context, CurrentAttribs, Indices, SceneStats, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fog::{FogCoordSrc, FogMode, FogParam};
 pub use fragment::Backend;

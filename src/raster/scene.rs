@@ -94,6 +94,10 @@ pub struct Scene {
     /// `clears` with [`CLEAR`] set, in the order recorded.
     bins: Vec<Vec<u32>>,
     bytes: usize,
+    /// See [`Scene::bound`].
+    bound: usize,
+    peak: usize,
+    flushes: u64,
 }
 
 impl Scene {
@@ -152,14 +156,38 @@ impl Scene {
     }
 
     /// Starts recording a draw into `fb` (whose size the scene takes): the
-    /// primitives the returned sink receives run with `state`.
-    pub fn draw(&mut self, fb: &Framebuffer, state: DrawState) -> Binner<'_> {
+    /// primitives the returned sink receives run with `state`. Past
+    /// [`Scene::bound`] bytes the sink flushes the scene into `fb` on
+    /// `threads` threads, mid-draw if need be.
+    pub fn draw<'s>(&'s mut self, fb: &'s mut Framebuffer, threads: usize, state: DrawState) -> Binner<'s> {
         self.fit(fb.width(), fb.height());
         Binner {
-            draw: self.draws.len() as u32,
-            state: Some(state),
             scene: self,
+            fb,
+            threads,
+            state,
+            draw: None,
+            error: None,
         }
+    }
+
+    /// Bytes past which a draw flushes ([`MEMORY_BOUND`] unless set).
+    pub fn bound(&self) -> usize {
+        if self.bound == 0 {
+            MEMORY_BOUND
+        } else {
+            self.bound
+        }
+    }
+
+    /// Sets the bytes past which a draw flushes (0: [`MEMORY_BOUND`]).
+    pub fn set_bound(&mut self, bytes: usize) {
+        self.bound = bytes;
+    }
+
+    /// The most bytes held at once since the scene was made, and the flushes run.
+    pub fn peak(&self) -> (usize, u64) {
+        (self.peak, self.flushes)
     }
 
     /// Runs every tile into `fb` on `threads` threads and empties the scene.
@@ -169,6 +197,8 @@ impl Scene {
             return Ok(());
         }
         let r = self.run(fb, threads);
+        self.peak = self.peak.max(self.bytes);
+        self.flushes += 1;
         self.draws.clear();
         self.prims.clear();
         self.clears.clear();
@@ -246,18 +276,33 @@ impl Scene {
 /// Records one draw's primitives into a scene ([`Scene::draw`]).
 pub struct Binner<'s> {
     scene: &'s mut Scene,
-    draw: u32,
-    /// Until the draw's first primitive is recorded.
-    state: Option<DrawState>,
+    fb: &'s mut Framebuffer,
+    threads: usize,
+    state: DrawState,
+    /// The draw's index in the scene, once a primitive of it is recorded
+    /// (again after a flush).
+    draw: Option<u32>,
+    error: Option<FragmentError>,
 }
 
 impl Binner<'_> {
+    /// Ends the draw: the first error of a flush it made, if any.
+    pub fn finish(self) -> Result<(), FragmentError> {
+        self.error.map_or(Ok(()), Err)
+    }
+
     fn record(&mut self, r: Option<Rect>, params: &RasterParams, prim: Prim) {
         let Some(r) = r else { return };
-        if let Some(state) = self.state.take() {
-            self.scene.bytes += std::mem::size_of::<DrawState>();
-            self.scene.draws.push(state);
-        }
+        let draw = match self.draw {
+            Some(d) => d,
+            None => {
+                let d = self.scene.draws.len() as u32;
+                self.scene.bytes += std::mem::size_of::<DrawState>();
+                self.scene.draws.push(self.state.clone());
+                self.draw = Some(d);
+                d
+            }
+        };
         let entry = self.scene.prims.len() as u32;
         self.scene.bytes += std::mem::size_of::<Binned>()
             + match &prim {
@@ -267,11 +312,17 @@ impl Binner<'_> {
                 _ => 0,
             };
         self.scene.prims.push(Binned {
-            draw: self.draw,
+            draw,
             params: *params,
             prim,
         });
         self.scene.bin(r, entry);
+        if self.scene.bytes > self.scene.bound() {
+            if let Err(e) = self.scene.flush(self.fb, self.threads) {
+                self.error.get_or_insert(e);
+            }
+            self.draw = None;
+        }
     }
 }
 
