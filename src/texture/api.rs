@@ -195,6 +195,19 @@ impl Context {
         })
     }
 
+    /// Rasterizes the pending draws first when they hold texels of the
+    /// texture bound to `target` on the active unit, as llvmpipe flushes a
+    /// scene before a resource it reads is written: the write then needs no
+    /// copy of the texels, and the scene never holds more than one old copy
+    /// of a texture (a client streaming uploads between draws would
+    /// otherwise pile them up).
+    fn before_texture_write(&mut self, target: TexTarget) {
+        let obj = self.textures.bound(self.textures.active_unit(), target);
+        if obj.images.iter().flatten().any(|i| std::sync::Arc::strong_count(&i.texels) > 1) {
+            self.finish_scene();
+        }
+    }
+
     /// `glTexImage1D/2D/3D` (sizes `[w, 1, 1]`, `[w, h, 1]`, `[w, h, d]`).
     /// `pixels: None` allocates the image without data (texels read as 0).
     pub fn tex_image(
@@ -206,6 +219,7 @@ impl Context {
         border: i32,
         pixels: Option<PixelData<'_>>,
     ) -> GlResult {
+        self.before_texture_write(target.texture_target());
         self.tex_call(|gl| {
             let tt = target.texture_target();
             let level = level_index(tt, level)?;
@@ -300,6 +314,7 @@ impl Context {
         size: [i32; 3],
         pixels: PixelData<'_>,
     ) -> GlResult {
+        self.before_texture_write(target.texture_target());
         self.tex_call(|gl| {
             check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
             let tt = target.texture_target();
@@ -576,6 +591,7 @@ impl Context {
     /// nothing when BASE_LEVEL ≥ MAX_LEVEL; `InvalidOperation` for a cube map
     /// whose base faces differ, or without a base image.
     pub fn generate_mipmap(&mut self, target: TexTarget) -> GlResult {
+        self.before_texture_write(target);
         self.tex_call(|gl| {
             let obj = gl.textures.current_mut(target);
             if obj.params.base_level >= obj.params.max_level {
