@@ -6,8 +6,10 @@
 
 use crate::error::{GlError, GlResult};
 use crate::fog::{FogCoordSrc, FogParam, FogState};
-use crate::fragment::{Backend, FragmentStage};
-use crate::framebuffer::{Framebuffer, FramebufferDesc, ReadFormat};
+use crate::fragment::Backend;
+use crate::raster::scene::{DrawState, Scene};
+use softgl_jit::interp;
+use crate::framebuffer::{Clear, Framebuffer, FramebufferDesc, ReadFormat};
 use crate::geometry::batch::{FogSource, TexFetch, VertexStage};
 use crate::geometry::lighting::LightSetup;
 use crate::geometry::varying::VaryingLayout;
@@ -342,6 +344,27 @@ pub struct Context {
     ordered_dither: bool,
     /// Texture objects, their bindings per unit, the active unit (`texture/`).
     pub(crate) textures: crate::texture::TextureStore,
+    /// Draws and clears not yet rasterized (`raster/scene.rs`).
+    scene: Scene,
+    /// Threads a flush rasterizes tiles on.
+    threads: usize,
+}
+
+/// What [`Context::scene_stats`] reports.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SceneStats {
+    pub pending_primitives: usize,
+    pub pending_bytes: usize,
+    pub peak_bytes: usize,
+    pub flushes: u64,
+}
+
+impl Drop for Context {
+    /// Rasterizes what is pending: a context's last draws reach its
+    /// framebuffer (lent memory too) even without a `glFinish`.
+    fn drop(&mut self) {
+        let _ = self.scene.flush(&mut self.fb, self.threads);
+    }
 }
 
 impl Context {
@@ -377,23 +400,79 @@ impl Context {
             specialists: SpecialistCache::from_env(),
             ordered_dither: std::env::var("SOFTGL_DITHER").is_ok_and(|v| v.trim() == "1"),
             textures: crate::texture::TextureStore::new(),
+            scene: Scene::default(),
+            threads: crate::raster::pool::default_threads(),
         }
     }
 
-    pub fn framebuffer(&self) -> &Framebuffer {
+    /// The framebuffer, with every draw made so far rasterized into it.
+    pub fn framebuffer(&mut self) -> &Framebuffer {
+        self.finish_scene();
         &self.fb
     }
 
-    /// The framebuffer, for callers that lend or hand out its memory (the C ABI).
+    /// The framebuffer's size and formats (no flush needed).
+    pub fn framebuffer_desc(&self) -> &FramebufferDesc {
+        self.fb.desc()
+    }
+
+    /// The framebuffer, for callers that lend or hand out its memory (the C
+    /// ABI), with every draw made so far rasterized into it.
     pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
+        self.finish_scene();
         &mut self.fb
     }
 
-    /// Draws into `fb` from now on and returns the previous framebuffer. The
-    /// state (viewport, scissor box, …) is kept, as when a GL context is made
-    /// current on another drawable.
+    /// Draws into `fb` from now on and returns the previous framebuffer,
+    /// with every draw made so far rasterized into it. The state (viewport,
+    /// scissor box, …) is kept, as when a GL context is made current on
+    /// another drawable.
     pub fn replace_framebuffer(&mut self, fb: Framebuffer) -> Framebuffer {
+        self.finish_scene();
         std::mem::replace(&mut self.fb, fb)
+    }
+
+    /// Threads a flush rasterizes tiles on (`SOFTGL_THREADS` at creation,
+    /// else the cores). Images are the same bytes for any count.
+    pub fn threads(&self) -> usize {
+        self.threads
+    }
+
+    /// Sets the threads a flush rasterizes on (1 to 64).
+    pub fn set_threads(&mut self, threads: usize) {
+        self.threads = threads.clamp(1, crate::raster::pool::MAX_THREADS);
+    }
+
+    /// The deferred scene: primitives and bytes recorded and not yet
+    /// rasterized, the most bytes it held at once, and the flushes run.
+    pub fn scene_stats(&self) -> SceneStats {
+        let (peak_bytes, flushes) = self.scene.peak();
+        SceneStats {
+            pending_primitives: self.scene.primitives(),
+            pending_bytes: self.scene.bytes(),
+            peak_bytes,
+            flushes,
+        }
+    }
+
+    /// Sets the bytes past which the scene is flushed, mid-draw if need be
+    /// (0: [`crate::raster::scene::MEMORY_BOUND`], 64 MiB).
+    pub fn set_scene_bound(&mut self, bytes: usize) {
+        self.scene.set_bound(bytes);
+    }
+
+    /// The framebuffer as the draws rasterized so far left it, without
+    /// rasterizing the pending ones: for its sizes and formats.
+    pub fn framebuffer_pending(&self) -> &Framebuffer {
+        &self.fb
+    }
+
+    /// Rasterizes every recorded draw and clear into the framebuffer; a
+    /// fragment stage's failure is recorded as `GL_INVALID_OPERATION`.
+    pub(crate) fn finish_scene(&mut self) {
+        if let Err(_e) = self.scene.flush(&mut self.fb, self.threads) {
+            self.error.get_or_insert(GlError::InvalidOperation);
+        }
     }
 
     /// Records `error` GL-style (kept unless one is already pending), for
@@ -566,16 +645,17 @@ impl Context {
         } else {
             self.fb.bounds()
         };
+        let mut clear = Clear::new(rect);
         if mask.color {
-            self.fb.clear_color(rect, s.clear_color, s.color_mask);
+            clear = clear.color(&self.fb, s.clear_color, s.color_mask);
         }
         if mask.depth && s.depth_write {
-            self.fb.clear_depth(rect, s.clear_depth);
+            clear = clear.depth(&self.fb, s.clear_depth);
         }
         if mask.stencil {
-            let write_mask = s.stencil_write_mask as u8;
-            self.fb.clear_stencil(rect, s.clear_stencil as u8, write_mask);
+            clear = clear.stencil(&self.fb, s.clear_stencil as u8, s.stencil_write_mask as u8);
         }
+        self.scene.clear(&self.fb, clear);
         Ok(())
     }
 
@@ -1142,23 +1222,32 @@ impl Context {
         vertex_stage.tex_coords = tex_coords.as_ref().map(|t| (t, TexFetch(tex)));
         let mut geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
         geometry.set_user_planes(self.projection.top());
+        if interp::check_key(&key, &self.fb.target()).is_err() {
+            return self.record(Err(GlError::InvalidOperation));
+        }
         let specialist = match self.backend {
-            Backend::Jit => self.specialists.get(&key),
+            Backend::Jit => self.specialists.get(&key).cloned(),
             Backend::Interpreter => None,
         };
-        let set = textures.set();
-        let r = FragmentStage::new(key, uniforms, &set, self.fb.target(), specialist).and_then(|mut stage| {
-            geometry.draw(&vertex_stage, mode, count, fetch, &mut stage);
-            stage.finish()
-        });
+        let state = DrawState {
+            key,
+            uniforms,
+            specialist,
+            textures: textures.share(),
+        };
+        let mut binner = self.scene.draw(&mut self.fb, self.threads, state);
+        geometry.draw(&vertex_stage, mode, count, fetch, &mut binner);
+        let r = binner.finish();
         self.record(r.map_err(|_| GlError::InvalidOperation))
     }
 
-    /// `glFlush`/`glFinish`: softgl draws at each call, so there is nothing
-    /// to wait for; like Mesa's flush of the vertices it buffers, it ends
-    /// the immediate-mode vertex format (`docs/llvmpipe-facts.md` §20).
+    /// `glFlush`/`glFinish`: rasterizes every draw recorded so far. Like
+    /// Mesa's flush of the vertices it buffers, it ends the immediate-mode
+    /// vertex format (`docs/llvmpipe-facts.md` §20).
     pub fn flush(&mut self) -> GlResult {
-        self.outside()
+        self.outside()?;
+        self.finish_scene();
+        Ok(())
     }
 
     // ----- reading -----
@@ -1166,6 +1255,7 @@ impl Context {
     /// `glReadPixels` into bytes, rows bottom-up.
     pub fn read_pixels(&mut self, x: i32, y: i32, w: i32, h: i32, format: ReadFormat) -> GlResult<Vec<u8>> {
         self.outside()?;
+        self.finish_scene();
         let r = self.fb.read_pixels(x, y, w, h, format);
         self.record(r)
     }
@@ -1173,6 +1263,7 @@ impl Context {
     /// `glReadPixels` with `GL_FLOAT`, rows bottom-up.
     pub fn read_pixels_f32(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<Vec<[f32; 4]>> {
         self.outside()?;
+        self.finish_scene();
         let r = self.fb.read_pixels_f32(x, y, w, h);
         self.record(r)
     }

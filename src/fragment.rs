@@ -40,15 +40,15 @@ impl Backend {
 /// Collects spans and runs the fragment stages over them in batches, with the
 /// key's specialist when there is one, else with the interpreter. Each span
 /// names the planes of its primitive among the batch's.
-pub struct FragmentStage<'t> {
+pub struct FragmentStage<'t, 'f> {
     specialist: Option<&'t Specialist>,
     key: FragmentKey,
     uniforms: FragmentUniforms,
     /// The textures the key's units sample.
     textures: &'t TextureSet<'t>,
     /// What the specialist reads of them, made once for the draw.
-    view: DrawTextures<'t>,
-    target: Target<'t>,
+    view: &'t DrawTextures<'t>,
+    target: &'t mut Target<'f>,
     /// Spans `..count` are the batch's; the storage is reused.
     batch: Vec<FragmentSpan>,
     count: usize,
@@ -66,21 +66,23 @@ pub struct FragmentStage<'t> {
     error: Option<FragmentError>,
 }
 
-impl<'t> FragmentStage<'t> {
+impl<'t, 'f> FragmentStage<'t, 'f> {
     /// A stage for `key`, checked against `target` once here, sampling
-    /// `textures`. `specialist`, if given, must have been compiled for `key`;
-    /// without one the interpreter runs.
+    /// `textures` (`view`: what `specialist` reads of them,
+    /// [`Specialist::texture_view`]). `specialist`, if given, must have been
+    /// compiled for `key`; without one the interpreter runs.
     pub fn new(
         key: FragmentKey,
         uniforms: FragmentUniforms,
         textures: &'t TextureSet<'t>,
-        target: Target<'t>,
+        view: &'t DrawTextures<'t>,
+        target: &'t mut Target<'f>,
         specialist: Option<&'t Specialist>,
     ) -> Result<Self, FragmentError> {
-        interp::check_key(&key, &target)?;
+        interp::check_key(&key, target)?;
         let specialist = specialist.filter(|s| *s.key() == key);
         Ok(FragmentStage {
-            view: specialist.map_or(DrawTextures::None, |s| s.texture_view(textures)),
+            view,
             specialist,
             span_color: key.shade.is_none_or(|s| !s.color),
             span_z: key.depth.is_some() && key.shade.is_none_or(|s| !s.depth),
@@ -109,21 +111,8 @@ impl<'t> FragmentStage<'t> {
         let spans = &self.batch[..self.count];
         let planes = &self.planes[..self.planes_len];
         let r = match self.specialist {
-            Some(s) => s.run_with_view(
-                &self.uniforms,
-                (self.textures, &self.view),
-                spans,
-                planes,
-                &mut self.target,
-            ),
-            None => interp::run_with_planes(
-                &self.key,
-                &self.uniforms,
-                self.textures,
-                spans,
-                planes,
-                &mut self.target,
-            ),
+            Some(s) => s.run_with_view(&self.uniforms, (self.textures, self.view), spans, planes, self.target),
+            None => interp::run_with_planes(&self.key, &self.uniforms, self.textures, spans, planes, self.target),
         };
         if let Err(e) = r {
             self.error.get_or_insert(e);
@@ -156,7 +145,7 @@ impl<'t> FragmentStage<'t> {
     }
 }
 
-impl SpanSink for FragmentStage<'_> {
+impl SpanSink for FragmentStage<'_, '_> {
     fn span(&mut self, span: &FragmentSpan) {
         if span.live_mask() == 0 {
             return;

@@ -89,6 +89,138 @@ impl Rect {
     pub fn is_empty(&self) -> bool {
         self.x0 >= self.x1 || self.y0 >= self.y1
     }
+
+    /// The pixels in both (empty when they do not meet).
+    pub fn intersect(self, other: Rect) -> Rect {
+        Rect {
+            x0: self.x0.max(other.x0),
+            y0: self.y0.max(other.y0),
+            x1: self.x1.min(other.x1),
+            y1: self.y1.min(other.y1),
+        }
+    }
+}
+
+/// A `glClear` resolved against a framebuffer: what each buffer is set to,
+/// and through which mask, inside `rect`. Applied to any band of the
+/// framebuffer's rows ([`Clear::apply`]), so that a deferred clear runs as part
+/// of each tile's work.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Clear {
+    pub rect: Rect,
+    /// The packed colour, the bits of it the colour mask writes, and its bytes.
+    color: Option<(u32, u32, [u8; 4])>,
+    depth: Option<u32>,
+    /// Value and write mask.
+    stencil: Option<(u8, u8)>,
+}
+
+impl Clear {
+    /// Clears nothing yet, inside `rect` of `fb`.
+    pub fn new(rect: Rect) -> Clear {
+        Clear {
+            rect,
+            color: None,
+            depth: None,
+            stencil: None,
+        }
+    }
+
+    /// Also clears the color buffer to `rgba` through `mask`.
+    pub fn color(mut self, fb: &Framebuffer, rgba: [f32; 4], mask: ColorMask) -> Clear {
+        let format = fb.desc.color;
+        let bits = pixel::mask_bits(format, mask);
+        if bits == 0 {
+            return self;
+        }
+        let rgb_written = mask.r && mask.g && mask.b;
+        let value = if format == ColorFormat::Rgb565 && self.rect == fb.bounds() && rgb_written {
+            // A whole-buffer clear is llvmpipe's `pipe->clear`, packed by
+            // `util_format_pack_rgba`: `util_iround(c * max)`, half up in f32.
+            // A scissored or masked clear draws a quad, whose colour goes the
+            // fragments' way: unorm8, then truncated (docs/llvmpipe-facts.md §13).
+            let q = |v: f32, max: f32| (v.clamp(0.0, 1.0) * max + 0.5) as u32;
+            (q(rgba[0], 31.0) << 11) | (q(rgba[1], 63.0) << 5) | q(rgba[2], 31.0)
+        } else {
+            pixel::pack(format, rgba.map(|v| float_to_unorm(v, 255) as u8), None)
+        };
+        let mut bytes = [0u8; 4];
+        pixel::store(format, &mut bytes, value);
+        self.color = Some((value, bits, bytes));
+        self
+    }
+
+    /// Also clears the depth buffer, if any, to window depth `depth`.
+    pub fn depth(mut self, fb: &Framebuffer, depth: f64) -> Clear {
+        self.depth = fb.depth_format().map(|f| depth_to_unorm(depth, f));
+        self
+    }
+
+    /// Also clears the stencil buffer, if any, to `value` through `write_mask`.
+    pub fn stencil(mut self, fb: &Framebuffer, value: u8, write_mask: u8) -> Clear {
+        self.stencil = fb.has_stencil().then_some((value, write_mask));
+        self
+    }
+
+    /// Whether it clears anything.
+    pub fn is_empty(&self) -> bool {
+        self.rect.is_empty() || (self.color.is_none() && self.depth.is_none() && self.stencil.is_none())
+    }
+
+    /// Clears the part of `rect` inside `within` and the rows `t` holds.
+    pub fn apply(&self, t: &mut Target<'_>, within: Rect) {
+        let rows = t.rows();
+        let r = self.rect.intersect(within).intersect(Rect {
+            x0: 0,
+            y0: rows.start,
+            x1: t.width(),
+            y1: rows.end,
+        });
+        if r.is_empty() {
+            return;
+        }
+        let (x0, x1) = (r.x0 as usize, r.x1 as usize);
+        if let Some((value, bits, bytes)) = self.color {
+            let format = t.color_format();
+            let bpp = format.bytes_per_pixel();
+            let all = bits == pixel::mask_bits(format, ColorMask::ALL);
+            for y in r.y0..r.y1 {
+                let start = t.color_offset(r.x0, y);
+                let row = &mut t.color_mut()[start..][..(x1 - x0) * bpp];
+                match (all, bpp) {
+                    (true, 4) => fill_row::<4>(row, &bytes),
+                    (true, 3) => fill_row::<3>(row, &bytes),
+                    (true, _) => fill_row::<2>(row, &bytes),
+                    (false, _) => {
+                        for px in row.chunks_exact_mut(bpp) {
+                            let old = pixel::load(format, px);
+                            pixel::store(format, px, (value & bits) | (old & !bits));
+                        }
+                    }
+                }
+            }
+        }
+        if let Some(v) = self.depth {
+            for y in r.y0..r.y1 {
+                let i = t.index(r.x0, y);
+                match t.depth_mut() {
+                    Some(DepthTarget::D16(d)) => d[i..i + x1 - x0].fill(v as u16),
+                    Some(DepthTarget::D24(d) | DepthTarget::D32(d)) => d[i..i + x1 - x0].fill(v),
+                    None => {}
+                }
+            }
+        }
+        if let Some((value, mask)) = self.stencil {
+            for y in r.y0..r.y1 {
+                let i = t.index(r.x0, y);
+                if let Some(s) = t.stencil_mut() {
+                    for s in &mut s[i..i + x1 - x0] {
+                        *s = (value & mask) | (*s & !mask);
+                    }
+                }
+            }
+        }
+    }
 }
 
 /// Formats `read_pixels` can return.
@@ -336,6 +468,11 @@ impl Framebuffer {
         self.stencil.as_deref()
     }
 
+    /// Clears as `clear` says, now.
+    pub fn apply_clear(&mut self, clear: &Clear) {
+        clear.apply(&mut self.target(), clear.rect);
+    }
+
     /// A checked view for the fragment stages.
     pub fn target(&mut self) -> Target<'_> {
         let (w, h, format) = (self.desc.width, self.desc.height, self.desc.color);
@@ -376,70 +513,6 @@ impl Framebuffer {
             y0: clamp_y(y),
             x1: clamp_x(x.saturating_add(w)),
             y1: clamp_y(y.saturating_add(h)),
-        }
-    }
-
-    /// Clears `rect` of the color buffer to `rgba` through `mask`.
-    pub fn clear_color(&mut self, rect: Rect, rgba: [f32; 4], mask: ColorMask) {
-        let format = self.desc.color;
-        let bits = pixel::mask_bits(format, mask);
-        if bits == 0 || rect.is_empty() {
-            return;
-        }
-        let rgb_written = mask.r && mask.g && mask.b;
-        let value = if format == ColorFormat::Rgb565 && rect == self.bounds() && rgb_written {
-            // A whole-buffer clear is llvmpipe's `pipe->clear`, packed by
-            // `util_format_pack_rgba`: `util_iround(c * max)`, half up in f32.
-            // A scissored or masked clear draws a quad, whose colour goes the
-            // fragments' way: unorm8, then truncated (docs/llvmpipe-facts.md §13).
-            let q = |v: f32, max: f32| (v.clamp(0.0, 1.0) * max + 0.5) as u32;
-            (q(rgba[0], 31.0) << 11) | (q(rgba[1], 63.0) << 5) | q(rgba[2], 31.0)
-        } else {
-            pixel::pack(format, rgba.map(|v| float_to_unorm(v, 255) as u8), None)
-        };
-        let bpp = format.bytes_per_pixel();
-        let all = bits == pixel::mask_bits(format, ColorMask::ALL);
-        let mut bytes = [0u8; 4];
-        pixel::store(format, &mut bytes, value);
-        for y in rect.y0..rect.y1 {
-            let start = self.color_offset(rect.x0, y);
-            let len = (rect.x1 - rect.x0) as usize * bpp;
-            let row = &mut self.color.bytes_mut()[start..][..len];
-            match (all, bpp) {
-                (true, 4) => fill_row::<4>(row, &bytes),
-                (true, 3) => fill_row::<3>(row, &bytes),
-                (true, _) => fill_row::<2>(row, &bytes),
-                (false, _) => {
-                    for px in row.chunks_exact_mut(bpp) {
-                        let old = pixel::load(format, px);
-                        pixel::store(format, px, (value & bits) | (old & !bits));
-                    }
-                }
-            }
-        }
-    }
-
-    /// Clears `rect` of the depth buffer (if any) to window depth `depth`.
-    pub fn clear_depth(&mut self, rect: Rect, depth: f64) {
-        let mut target = self.target();
-        let row = target.width() as usize;
-        let Some(buf) = target.depth_mut() else { return };
-        let v = depth_to_unorm(depth, buf.format());
-        for y in rect.y0..rect.y1 {
-            for x in rect.x0..rect.x1 {
-                buf.set(y as usize * row + x as usize, v);
-            }
-        }
-    }
-
-    /// Clears `rect` of the stencil buffer (if any) to `value` through `write_mask`.
-    pub fn clear_stencil(&mut self, rect: Rect, value: u8, write_mask: u8) {
-        let w = self.desc.width as usize;
-        let Some(buf) = self.stencil.as_mut() else { return };
-        for y in rect.y0..rect.y1 {
-            for s in &mut buf[y as usize * w..][rect.x0 as usize..rect.x1 as usize] {
-                *s = (value & write_mask) | (*s & !write_mask);
-            }
         }
     }
 

@@ -35,11 +35,11 @@ pub mod raster;
 pub mod state;
 pub mod texture;
 
-pub use context::{AttribArray, Context, CurrentAttribs, Indices, VertexArrays};
+pub use context::{AttribArray, Context, CurrentAttribs, Indices, SceneStats, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fog::{FogCoordSrc, FogMode, FogParam};
 pub use fragment::Backend;
-pub use framebuffer::{ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
+pub use framebuffer::{Clear, ColorMemory, Framebuffer, FramebufferDesc, ReadFormat};
 pub use gl_enum::GlEnum;
 pub use lighting::{
     ColorControl, ColorMaterialMode, LightModelParam, LightParam, LightParamName, MaterialParam, MaterialParamName,

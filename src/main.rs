@@ -60,7 +60,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Demo { output, size: (w, h) } => {
-            let gl = match softgl::demo::render(w, h) {
+            let mut gl = match softgl::demo::render(w, h) {
                 Ok(gl) => gl,
                 Err(e) => {
                     eprintln!("softgl: cannot render the demo at {w}x{h}: {e}");

@@ -22,7 +22,7 @@ fn only_requested_buffers_are_allocated() {
         depth_bits: 0,
         stencil_bits: 0,
     };
-    let gl = Context::new(desc).unwrap();
+    let mut gl = Context::new(desc).unwrap();
     let fb = gl.framebuffer();
     assert_eq!(fb.color_bytes().len(), 4 * 3 * 2);
     assert!(fb.depth_buffer().is_none());
@@ -35,7 +35,7 @@ fn only_requested_buffers_are_allocated() {
             depth_bits: bits,
             stencil_bits: 8,
         };
-        let gl = Context::new(desc).unwrap();
+        let mut gl = Context::new(desc).unwrap();
         assert_eq!(gl.framebuffer().depth_format(), Some(format));
         assert_eq!(
             gl.framebuffer().depth_at(3, 2),

@@ -25,16 +25,21 @@ struct Snapshot {
     stencil: Option<Vec<u8>>,
 }
 
-fn snapshot(gl: &Context) -> Snapshot {
+fn snapshot(gl: &mut Context) -> Snapshot {
     let fb = gl.framebuffer();
+    let (color, depth, stencil) = (
+        fb.color_bytes().to_vec(),
+        fb.depth_buffer().cloned(),
+        fb.stencil_buffer().map(<[u8]>::to_vec),
+    );
     Snapshot {
         state: gl.state().clone(),
         matrices: MODES.map(|m| gl.matrix(m)),
         depths: MODES.map(|m| gl.matrix_depth(m)),
         current: *gl.current(),
-        color: fb.color_bytes().to_vec(),
-        depth: fb.depth_buffer().cloned(),
-        stencil: fb.stencil_buffer().map(<[u8]>::to_vec),
+        color,
+        depth,
+        stencil,
     }
 }
 
@@ -242,7 +247,7 @@ fn begin_inside_begin_is_invalid_operation() {
     gl.vertex2(-1.0, 3.0);
     // The first begin is still open, as Triangles: the three vertices make one triangle.
     gl.end().unwrap();
-    assert_eq!(count(&gl, RED), 256);
+    assert_eq!(count(&mut gl, RED), 256);
     assert_eq!(gl.get_error(), None);
 }
 
@@ -313,7 +318,7 @@ fn state_calls_between_begin_and_end_are_rejected_and_the_pair_still_draws() {
     gl.vertex2(-1.0, 3.0);
     gl.end().unwrap();
     // Identity matrices, full viewport, no scissor, color mask all: every pixel red.
-    assert_eq!(count(&gl, RED), 256);
+    assert_eq!(count(&mut gl, RED), 256);
     assert_eq!(gl.get_error(), None);
 }
 
@@ -341,10 +346,10 @@ fn draw_arrays_past_the_end_is_invalid_value_and_draws_nothing() {
     rejects(&mut gl, GlError::InvalidValue, |gl| {
         gl.draw_arrays(PrimitiveMode::Triangles, 0, 4, &with_colors)
     });
-    assert_eq!(count(&gl, BLUE), 256);
+    assert_eq!(count(&mut gl, BLUE), 256);
     // The last valid range draws.
     gl.draw_arrays(PrimitiveMode::Triangles, 3, 3, &arrays).unwrap();
-    assert_eq!(count(&gl, RED), 256);
+    assert_eq!(count(&mut gl, RED), 256);
     assert_eq!(gl.get_error(), None);
 }
 
@@ -373,7 +378,7 @@ fn bad_array_sizes_are_invalid_value() {
     rejects(&mut gl, GlError::InvalidValue, |gl| {
         gl.draw_arrays(PrimitiveMode::Points, 0, 3, &arrays)
     });
-    assert_eq!(count(&gl, BLUE), 256);
+    assert_eq!(count(&mut gl, BLUE), 256);
 }
 
 #[test]
@@ -392,10 +397,10 @@ fn draw_elements_with_an_index_out_of_range_is_invalid_value_and_draws_nothing()
     rejects(&mut gl, GlError::InvalidValue, |gl| {
         gl.draw_elements(PrimitiveMode::Triangles, Indices::U32(&[u32::MAX, 1, 2]), &arrays)
     });
-    assert_eq!(count(&gl, BLUE), 256);
+    assert_eq!(count(&mut gl, BLUE), 256);
     gl.draw_elements(PrimitiveMode::Triangles, Indices::U32(&[2, 0, 1]), &arrays)
         .unwrap();
-    assert_eq!(count(&gl, RED), 256);
+    assert_eq!(count(&mut gl, RED), 256);
     assert_eq!(gl.get_error(), None);
 }
 
@@ -453,7 +458,7 @@ fn invalid_framebuffer_descriptions_are_invalid_value() {
                     depth_bits,
                     stencil_bits,
                 };
-                let gl = Context::new(desc).unwrap();
+                let mut gl = Context::new(desc).unwrap();
                 assert_eq!(gl.framebuffer().depth_format(), format);
                 assert_eq!(gl.framebuffer().has_stencil(), stencil_bits == 8);
             }

@@ -169,7 +169,7 @@ fn every_scene_matches_llvmpipe_on_both_back_ends() {
     let mut report = Vec::new();
     for backend in [Backend::Interpreter, Backend::Jit] {
         for &(name, budget) in SCENES {
-            let gl = render(name, backend);
+            let mut gl = render(name, backend);
             let got = gl.framebuffer().color_bytes();
             let (left, right) = differ(got, &l[name]);
             let most = got.iter().zip(&l[name]).map(|(a, b)| a.abs_diff(*b)).max();

@@ -576,7 +576,7 @@ fn scenes_render_the_same_twice() {
         stencil_decal,
         blend_logic,
     ] {
-        let (a, b) = (scene(), scene());
+        let (mut a, mut b) = (scene(), scene());
         assert_eq!(a.framebuffer().color_bytes(), b.framebuffer().color_bytes());
     }
 }

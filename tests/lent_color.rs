@@ -2,7 +2,7 @@
 //! with the caller's buffer): row strides with padding, top-down rows, and
 //! memory too small for the size refused.
 
-use softgl::{ClearMask, ColorFormat, ColorMemory, Context, Framebuffer, FramebufferDesc, GlError, PrimitiveMode};
+use softgl::{Clear, ClearMask, ColorFormat, ColorMemory, Context, Framebuffer, FramebufferDesc, GlError, PrimitiveMode};
 use std::sync::{Arc, Mutex};
 
 /// Memory shared with the test, so that it can look at what was drawn.
@@ -111,9 +111,11 @@ fn a_clone_owns_a_snapshot_of_lent_memory() {
     let mem = Lent(vec![0; STRIDE * H], shared);
     let mut fb = Framebuffer::with_color_memory(desc, Box::new(mem), STRIDE, true).unwrap();
     let bounds = fb.bounds();
-    fb.clear_color(bounds, [1.0, 0.0, 0.0, 1.0], softgl::ColorMask::ALL);
+    let red = Clear::new(bounds).color(&fb, [1.0, 0.0, 0.0, 1.0], softgl::ColorMask::ALL);
+    fb.apply_clear(&red);
     let snapshot = fb.clone();
-    fb.clear_color(bounds, [0.0, 1.0, 0.0, 1.0], softgl::ColorMask::ALL);
+    let green = Clear::new(bounds).color(&fb, [0.0, 1.0, 0.0, 1.0], softgl::ColorMask::ALL);
+    fb.apply_clear(&green);
     assert_eq!(snapshot.pixel(1, 2), Some([255, 0, 0, 255]));
     assert_eq!(fb.pixel(1, 2), Some([0, 255, 0, 255]));
 }

@@ -148,7 +148,7 @@ fn a_clip_plane_keeps_exactly_one_half() {
     gl.clip_plane(0, [1.0, 0.0, 0.0, 0.0]).unwrap();
     gl.enable(Capability::ClipPlane(0)).unwrap();
     quad(&mut gl, true);
-    let covered = |gl: &Context| -> Vec<usize> {
+    let covered = |gl: &mut Context| -> Vec<usize> {
         (0..8)
             .map(|x| {
                 (0..8)
@@ -157,7 +157,7 @@ fn a_clip_plane_keeps_exactly_one_half() {
             })
             .collect()
     };
-    assert_eq!(covered(&gl), [0, 0, 0, 0, 8, 8, 8, 8]);
+    assert_eq!(covered(&mut gl), [0, 0, 0, 0, 8, 8, 8, 8]);
     assert_eq!(gl.get_clip_plane(0), Ok([1.0, 0.0, 0.0, 0.0]));
     // A plane given under a translation is kept in eye coordinates:
     // x_obj = x_eye + 0.5 ≥ 0 keeps x_eye ≥ -0.5: two more columns.
@@ -169,11 +169,11 @@ fn a_clip_plane_keeps_exactly_one_half() {
     gl.enable(Capability::ClipPlane(1)).unwrap();
     assert_eq!(gl.get_clip_plane(1), Ok([1.0, 0.0, 0.0, 0.5]));
     quad(&mut gl, true);
-    assert_eq!(covered(&gl), [0, 0, 8, 8, 8, 8, 8, 8]);
+    assert_eq!(covered(&mut gl), [0, 0, 8, 8, 8, 8, 8, 8]);
     // Disabled, it cuts nothing.
     gl.disable(Capability::ClipPlane(1)).unwrap();
     quad(&mut gl, true);
-    assert_eq!(covered(&gl), [8; 8]);
+    assert_eq!(covered(&mut gl), [8; 8]);
 }
 
 #[test]

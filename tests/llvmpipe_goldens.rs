@@ -250,8 +250,8 @@ fn reference(name: &str) -> Reference {
 /// Replays scene `name` on both back ends: each must stay within `budget`
 /// of llvmpipe, and the two must be identical.
 fn check(name: &str, budget: Budget) {
-    let interp = replay(name, Backend::Interpreter);
-    let jit = replay(name, Backend::Jit);
+    let mut interp = replay(name, Backend::Interpreter);
+    let mut jit = replay(name, Backend::Jit);
     let (a, b) = (interp.framebuffer(), jit.framebuffer());
     assert!(
         a.color_bytes() == b.color_bytes(),
@@ -271,10 +271,10 @@ fn check(name: &str, budget: Budget) {
             );
         }
     }
-    check_against_llvmpipe(name, &interp, budget);
+    check_against_llvmpipe(name, &mut interp, budget);
 }
 
-fn check_against_llvmpipe(name: &str, gl: &Context, budget: Budget) {
+fn check_against_llvmpipe(name: &str, gl: &mut Context, budget: Budget) {
     let want = reference(name);
     let fb = gl.framebuffer();
     let (w, h) = (fb.width(), fb.height());

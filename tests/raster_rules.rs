@@ -24,7 +24,7 @@ fn count_with_stencil(gl: &mut Context) {
         .unwrap();
 }
 
-fn stencil_grid(gl: &Context) -> Vec<Vec<u8>> {
+fn stencil_grid(gl: &mut Context) -> Vec<Vec<u8>> {
     let fb = gl.framebuffer();
     (0..fb.height())
         .map(|y| (0..fb.width()).map(|x| fb.stencil_at(x, y).unwrap()).collect())
@@ -32,7 +32,7 @@ fn stencil_grid(gl: &Context) -> Vec<Vec<u8>> {
 }
 
 /// The lit pixels (stencil > 0) as `(x, y)`, row by row from y = 0.
-fn lit(gl: &Context) -> Vec<(u32, u32)> {
+fn lit(gl: &mut Context) -> Vec<(u32, u32)> {
     let fb = gl.framebuffer();
     let mut v = Vec::new();
     for y in 0..fb.height() {
@@ -74,7 +74,7 @@ fn fan_of_64_covering_the_window_hits_every_pixel_exactly_once() {
     count_with_stencil(&mut gl);
     let pts = fan(13.37, 41.71, 300.0, 300.0, 64, 0.0);
     draw(&mut gl, PrimitiveMode::TriangleFan, &pts);
-    let grid = stencil_grid(&gl);
+    let grid = stencil_grid(&mut gl);
     let ones = grid.iter().flatten().filter(|&&s| s == 1).count();
     assert_eq!(ones, 64 * 64, "every pixel hit exactly once: {grid:?}");
 }
@@ -85,15 +85,15 @@ fn fan_of_64_inside_the_window_hits_no_pixel_twice() {
     count_with_stencil(&mut gl);
     let pts = fan(29.13, 35.77, 21.3, 17.9, 64, 0.1);
     draw(&mut gl, PrimitiveMode::TriangleFan, &pts);
-    let grid = stencil_grid(&gl);
+    let grid = stencil_grid(&mut gl);
     assert_eq!(grid.iter().flatten().copied().max(), Some(1), "no pixel hit twice");
     // The same outline as one polygon covers the same pixels: the shared edges
     // inside the fan neither drop nor add pixels.
-    let fan = lit(&gl);
+    let fan = lit(&mut gl);
     let mut gl2 = window_ctx(64, 64);
     count_with_stencil(&mut gl2);
     draw(&mut gl2, PrimitiveMode::Polygon, &pts[1..pts.len() - 1]);
-    let poly = lit(&gl2);
+    let poly = lit(&mut gl2);
     assert!(
         fan.len() > 1000,
         "the fan covers an ellipse of about 1200 pixels, got {}",
@@ -118,10 +118,10 @@ fn grid_of_quads_with_edges_through_pixel_centers_hits_every_pixel_once() {
         }
     }
     gl.end().unwrap();
-    let grid = stencil_grid(&gl);
+    let grid = stencil_grid(&mut gl);
     assert_eq!(grid.iter().flatten().copied().max(), Some(1));
     // Left and bottom edges own the centers on them: x 2.5..32.5 covers 2..=31.
-    assert_eq!(lit(&gl), rect(2, 31, 4, 33));
+    assert_eq!(lit(&mut gl), rect(2, 31, 4, 33));
 }
 
 #[test]
@@ -160,7 +160,7 @@ fn top_left_rule_matches_llvmpipe_on_axis_aligned_edges() {
             q.reverse();
         }
         draw(&mut gl, PrimitiveMode::Triangles, &[q[0], q[1], q[2], q[0], q[2], q[3]]);
-        assert_eq!(lit(&gl), rect(1, 4, 1, 4), "ccw = {ccw}");
+        assert_eq!(lit(&mut gl), rect(1, 4, 1, 4), "ccw = {ccw}");
     }
 }
 
@@ -171,13 +171,13 @@ fn top_left_rule_matches_llvmpipe_on_sloped_edges() {
     count_with_stencil(&mut gl);
     draw(&mut gl, PrimitiveMode::Triangles, &[(1.5, 1.5), (7.5, 1.5), (1.5, 7.5)]);
     let expect: Vec<(u32, u32)> = (1..=6).flat_map(|y| (1..=(7 - y)).map(move |x| (x, y))).collect();
-    assert_eq!(lit(&gl), expect);
+    assert_eq!(lit(&mut gl), expect);
     // Triangle B: the inside is at +x: centers on the hypotenuse are in.
     let mut gl = window_ctx(10, 8);
     count_with_stencil(&mut gl);
     draw(&mut gl, PrimitiveMode::Triangles, &[(7.5, 7.5), (1.5, 7.5), (7.5, 1.5)]);
     let expect: Vec<(u32, u32)> = (2..=6).flat_map(|y| ((8 - y)..=6).map(move |x| (x, y))).collect();
-    assert_eq!(lit(&gl), expect);
+    assert_eq!(lit(&mut gl), expect);
 }
 
 #[test]
@@ -228,7 +228,7 @@ fn vertices_snap_in_llvmpipes_top_down_frame() {
         let mut gl = window_ctx(1024, 1024);
         count_with_stencil(&mut gl);
         draw(&mut gl, PrimitiveMode::Triangles, &tri);
-        assert_eq!(lit(&gl).len(), count, "{tri:?}");
+        assert_eq!(lit(&mut gl).len(), count, "{tri:?}");
         assert_eq!(
             gl.framebuffer().stencil_at(x, y) == Some(1),
             in_,
@@ -303,7 +303,7 @@ fn bowtie_quads_split_as_llvmpipe_does_for_each_way_of_drawing() {
         let mut gl = window_ctx(32, 32);
         count_with_stencil(&mut gl);
         draw(&mut gl);
-        stencil_grid(&gl)
+        stencil_grid(&mut gl)
     };
     let split = |t: [usize; 6]| coverage(&|gl| draw(gl, PrimitiveMode::Triangles, &t.map(|i| V[i])));
     let (v0_v2, v1_v3) = (split([0, 1, 2, 0, 2, 3]), split([0, 1, 3, 1, 2, 3]));
@@ -431,14 +431,14 @@ fn thin_lines_follow_diamond_exit_like_llvmpipe() {
         let mut gl = window_ctx(10, 10);
         count_with_stencil(&mut gl);
         draw(&mut gl, PrimitiveMode::Lines, &[a, b]);
-        assert_eq!(lit(&gl), want, "line {a:?} -> {b:?}");
+        assert_eq!(lit(&mut gl), want, "line {a:?} -> {b:?}");
     }
     // A zero-length line and one that never leaves its start diamond draw nothing.
     for (a, b) in [((3.5, 3.5), (3.5, 3.5)), ((0.2, 0.5), (0.8, 0.5))] {
         let mut gl = window_ctx(10, 10);
         count_with_stencil(&mut gl);
         draw(&mut gl, PrimitiveMode::Lines, &[a, b]);
-        assert!(lit(&gl).is_empty(), "line {a:?} -> {b:?}");
+        assert!(lit(&mut gl).is_empty(), "line {a:?} -> {b:?}");
     }
 }
 
@@ -455,7 +455,7 @@ fn wide_lines_are_parallelograms_like_llvmpipe() {
         count_with_stencil(&mut gl);
         gl.line_width(width).unwrap();
         draw(&mut gl, PrimitiveMode::Lines, &[a, b]);
-        assert_eq!(lit(&gl), want, "width {width} {a:?} -> {b:?}");
+        assert_eq!(lit(&mut gl), want, "width {width} {a:?} -> {b:?}");
     }
 }
 
@@ -477,7 +477,7 @@ fn points_cover_llvmpipe_squares() {
         count_with_stencil(&mut gl);
         gl.point_size(size).unwrap();
         draw(&mut gl, PrimitiveMode::Points, &[(x, y)]);
-        assert_eq!(lit(&gl), want, "point at ({x}, {y}) size {size}");
+        assert_eq!(lit(&mut gl), want, "point at ({x}, {y}) size {size}");
     }
 }
 
@@ -505,7 +505,7 @@ fn every_primitive_mode_draws_the_expected_fragment_count() {
             _ => square.to_vec(),
         };
         draw(&mut gl, mode, &pts);
-        let count: u32 = stencil_grid(&gl).iter().flatten().map(|&s| u32::from(s)).sum();
+        let count: u32 = stencil_grid(&mut gl).iter().flatten().map(|&s| u32::from(s)).sum();
         let want = match mode {
             // The quad strip's one quad is the full square.
             PrimitiveMode::QuadStrip => 64,
@@ -527,7 +527,7 @@ fn rgb565_truncates_like_llvmpipe_and_dithers_only_when_asked() {
         stencil_bits: 0,
         ..FramebufferDesc::rgba8_d24s8(8, 8)
     };
-    let stored = |gl: &Context, x: u32, y: u32| {
+    let stored = |gl: &mut Context, x: u32, y: u32| {
         let i = (y * 8 + x) as usize * 2;
         let b = gl.framebuffer().color_bytes();
         let v = u16::from_le_bytes([b[i], b[i + 1]]);
@@ -538,13 +538,13 @@ fn rgb565_truncates_like_llvmpipe_and_dithers_only_when_asked() {
     // is (3.1, 12.6, 9.3), which rounds to (3, 13, 9).
     gl.clear_color(0.1, 0.2, 0.3, 1.0).unwrap();
     gl.clear(ClearMask::COLOR).unwrap();
-    assert_eq!(stored(&gl, 5, 5), (3, 13, 9), "whole-buffer clear");
+    assert_eq!(stored(&mut gl, 5, 5), (3, 13, 9), "whole-buffer clear");
     gl.enable(Capability::ScissorTest).unwrap();
     gl.scissor(0, 0, 4, 8).unwrap();
     gl.clear(ClearMask::COLOR).unwrap();
     gl.disable(Capability::ScissorTest).unwrap();
     assert_eq!(
-        (stored(&gl, 1, 1), stored(&gl, 5, 1)),
+        (stored(&mut gl, 1, 1), stored(&mut gl, 5, 1)),
         ((3, 12, 9), (3, 13, 9)),
         "scissored clear"
     );
@@ -554,7 +554,7 @@ fn rgb565_truncates_like_llvmpipe_and_dithers_only_when_asked() {
         PrimitiveMode::Triangles,
         &[(0.0, -1.0), (1.0, -1.0), (1.0, 1.0)],
     );
-    assert_eq!(stored(&gl, 7, 0), (3, 12, 9), "a fragment");
+    assert_eq!(stored(&mut gl, 7, 0), (3, 12, 9), "a fragment");
 
     // Red byte 4 is 0.49 of a 5-bit step: truncated it is 0; the ordered
     // dither stores 1 where the Bayer entry is 8 or more (16 b + 7 >= 255 - 124).
@@ -613,7 +613,7 @@ fn long_strips_fans_and_loops_span_vertex_batches_without_gaps() {
     let pts = fan(20.3, 25.9, 200.0, 200.0, 998, 0.0);
     draw(&mut gl, PrimitiveMode::TriangleFan, &pts);
     assert!(
-        stencil_grid(&gl).iter().flatten().all(|&s| s == 1),
+        stencil_grid(&mut gl).iter().flatten().all(|&s| s == 1),
         "fan across batches"
     );
 
@@ -630,7 +630,7 @@ fn long_strips_fans_and_loops_span_vertex_batches_without_gaps() {
         .collect();
     draw(&mut gl, PrimitiveMode::TriangleStrip, &strip);
     assert!(
-        stencil_grid(&gl).iter().flatten().all(|&s| s == 1),
+        stencil_grid(&mut gl).iter().flatten().all(|&s| s == 1),
         "strip across batches"
     );
 
@@ -645,13 +645,13 @@ fn long_strips_fans_and_loops_span_vertex_batches_without_gaps() {
         })
         .collect();
     draw(&mut gl, PrimitiveMode::LineLoop, &ring);
-    let loop_pixels = lit(&gl);
+    let loop_pixels = lit(&mut gl);
     let mut gl = window_ctx(48, 48);
     count_with_stencil(&mut gl);
     let mut closed = ring.clone();
     closed.push(ring[0]);
     draw(&mut gl, PrimitiveMode::LineStrip, &closed);
-    assert_eq!(loop_pixels, lit(&gl));
+    assert_eq!(loop_pixels, lit(&mut gl));
     // An 8-connected ring of radius r has about 4·√2·r = 113 pixels.
     assert!(
         (100..=125).contains(&loop_pixels.len()),
@@ -675,7 +675,7 @@ fn point_sizes_round_like_llvmpipe() {
         count_with_stencil(&mut gl);
         gl.point_size(size).unwrap();
         draw(&mut gl, PrimitiveMode::Points, &[(150.0, 0.5)]);
-        assert_eq!(lit(&gl).len() as u32, width, "size {size}");
+        assert_eq!(lit(&mut gl).len() as u32, width, "size {size}");
     }
 }
 
@@ -719,7 +719,7 @@ fn wide_points_and_lines_may_reach_past_the_viewport() {
     gl.load_identity().unwrap();
     gl.matrix_mode(MatrixMode::Modelview).unwrap();
     draw(&mut gl, PrimitiveMode::Points, &[(-1.0 + 0.5 / 4.0, -1.0 + 0.5 / 4.0)]);
-    assert_eq!(lit(&gl), rect(2, 6, 2, 6));
+    assert_eq!(lit(&mut gl), rect(2, 6, 2, 6));
     // A point whose center is outside the view volume is dropped entirely.
     let mut gl = window_ctx(16, 16);
     count_with_stencil(&mut gl);
@@ -729,7 +729,7 @@ fn wide_points_and_lines_may_reach_past_the_viewport() {
     gl.load_identity().unwrap();
     gl.matrix_mode(MatrixMode::Modelview).unwrap();
     draw(&mut gl, PrimitiveMode::Points, &[(-1.05, 0.0)]);
-    assert!(lit(&gl).is_empty());
+    assert!(lit(&mut gl).is_empty());
 }
 
 #[test]

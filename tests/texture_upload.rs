@@ -36,7 +36,7 @@ fn texels(gl: &Context, level: usize) -> Vec<u8> {
         .image(level, 0)
         .expect("image")
         .texels
-        .clone()
+        .to_vec()
 }
 
 #[test]
@@ -1147,7 +1147,7 @@ fn copies_read_the_framebuffer() {
     gl.copy_tex_image(TexImageTarget::D1, 0, InternalFormat::Rgb8, [0, 0], [2, 1], 0)
         .unwrap();
     let t = &gl.textures().bound(0, TextureTarget::D1).image(0, 0).unwrap().texels;
-    assert_eq!(t, &[255, 0, 0, 255, 255, 0, 0, 255]);
+    assert_eq!(t.as_slice(), &[255, 0, 0, 255, 255, 0, 0, 255]);
     // Depth: the stored 24-bit value of 0.5, as a float.
     gl.copy_tex_image(d2, 0, InternalFormat::DepthComponent24, [0, 0], [1, 1], 0)
         .unwrap();
@@ -1232,12 +1232,12 @@ fn volumes_honour_image_height_and_skip_images() {
     let px = data(PixelFormat::Alpha, PixelType::UnsignedByte, store, &bytes);
     gl.tex_image(TexImageTarget::D3, 0, InternalFormat::Alpha8, [2, 2, 2], 0, Some(px))
         .unwrap();
-    let a = |gl: &Context| -> Vec<u8> {
+    let a = |gl: &mut Context| -> Vec<u8> {
         let img = gl.textures().bound(0, TextureTarget::D3).image(0, 0).unwrap();
         img.texels.chunks(4).map(|t| t[3]).collect()
     };
     // Image 1 starts at byte 6, image 2 at byte 12.
-    assert_eq!(a(&gl), [6, 7, 8, 9, 12, 13, 14, 15]);
+    assert_eq!(a(&mut gl), [6, 7, 8, 9, 12, 13, 14, 15]);
     // One byte short of the last texel.
     let px = data(PixelFormat::Alpha, PixelType::UnsignedByte, store, &bytes[..15]);
     assert_eq!(
@@ -1253,13 +1253,13 @@ fn volumes_honour_image_height_and_skip_images() {
     );
     gl.tex_sub_image(TexImageTarget::D3, 0, [1, 0, 0], [1, 2, 2], px)
         .unwrap();
-    assert_eq!(a(&gl), [6, 100, 8, 101, 12, 102, 14, 103]);
+    assert_eq!(a(&mut gl), [6, 100, 8, 101, 12, 102, 14, 103]);
     // Slice 1, texel (0, 1) from the framebuffer's alpha (cleared to 0.8 → 204).
     gl.clear_color(0.2, 0.4, 0.6, 0.8).unwrap();
     gl.clear(softgl::ClearMask::COLOR).unwrap();
     gl.copy_tex_sub_image(TexImageTarget::D3, 0, [0, 1, 1], [0, 0], [1, 1])
         .unwrap();
-    assert_eq!(a(&gl), [6, 100, 8, 101, 12, 102, 204, 103]);
+    assert_eq!(a(&mut gl), [6, 100, 8, 101, 12, 102, 204, 103]);
 }
 
 /// A cube map is complete when its six faces have base images of one size

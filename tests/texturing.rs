@@ -75,7 +75,7 @@ fn textured_quad(gl: &mut Context) {
 }
 
 /// The four 4×4 quadrants' colours: bottom left, bottom right, top left, top right.
-fn quadrants(gl: &Context) -> [[u8; 4]; 4] {
+fn quadrants(gl: &mut Context) -> [[u8; 4]; 4] {
     let fb = gl.framebuffer();
     let q = [(0, 0), (4, 0), (0, 4), (4, 4)].map(|(x0, y0)| {
         let c = fb.pixel(x0, y0).unwrap();
@@ -96,18 +96,18 @@ fn a_disabled_or_incomplete_unit_adds_nothing_to_the_draw() {
         color: true,
         ..VaryingLayout::default()
     };
-    let untextured = |gl: &Context| {
+    let untextured = |gl: &mut Context| {
         let (key, layout) = gl.draw_plan();
         assert_eq!(layout, plain);
         assert_eq!(key.shade.unwrap().tex, [None; 8]);
     };
-    untextured(&gl);
+    untextured(&mut gl);
     // Enabled, but the default texture has no image: incomplete.
     gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
-    untextured(&gl);
+    untextured(&mut gl);
     // An image but the default minification filter wants mipmaps: still incomplete.
     upload_2d(&mut gl, 2, 2, &[WHITE; 4]);
-    untextured(&gl);
+    untextured(&mut gl);
     // Complete: unit 0 carries 4 slots after the colour, and has a key.
     gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Linear, MipFilter::None))
         .unwrap();
@@ -127,7 +127,7 @@ fn a_disabled_or_incomplete_unit_adds_nothing_to_the_draw() {
     // Disabled again: nothing.
     gl.active_texture(0).unwrap();
     gl.disable(Capability::Texture(TextureTarget::D2)).unwrap();
-    untextured(&gl);
+    untextured(&mut gl);
     // No stage reads the colour (colour mask off, no alpha test): nothing either.
     gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
     gl.color_mask(false, false, false, false).unwrap();
@@ -157,7 +157,7 @@ fn nearest_magnification_replaces_with_the_texels() {
     gl.color3(0.2, 0.4, 0.6);
     textured_quad(&mut gl);
     // Pixel x has s = (x + 0.5)/8: texel column 0 for x < 4, 1 from x = 4 on; rows alike.
-    assert_eq!(quadrants(&gl), [RED, GREEN, BLUE, WHITE]);
+    assert_eq!(quadrants(&mut gl), [RED, GREEN, BLUE, WHITE]);
 }
 
 #[test]
@@ -173,7 +173,7 @@ fn modulate_multiplies_the_colour_by_the_texels() {
     // 0.2·255 = 51, 0.4·255 = 102, 0.6·255 = 153; a texel channel of 255 keeps
     // the colour's, one of 0 zeroes it.
     assert_eq!(
-        quadrants(&gl),
+        quadrants(&mut gl),
         [[51, 0, 0, 255], [0, 102, 0, 255], [0, 0, 153, 255], [51, 102, 153, 255]]
     );
 }
@@ -213,7 +213,7 @@ fn generate_s(gl: &mut Context, mode: TexGenMode, plane: [f32; 4]) {
 }
 
 /// The texels of the bottom row, left to right.
-fn row(gl: &Context) -> Vec<[u8; 4]> {
+fn row(gl: &mut Context) -> Vec<[u8; 4]> {
     (0..8).map(|x| gl.framebuffer().pixel(x, 0).unwrap()).collect()
 }
 
@@ -223,7 +223,7 @@ fn object_linear_texgen_replaces_the_given_coordinates() {
     // s = 0.5·x + 0.5 over x in [-1, 1]: pixel x has s = (x + 0.5)/8, texel floor(4s) = x/2.
     generate_s(&mut gl, TexGenMode::ObjectLinear, [0.5, 0.0, 0.0, 0.5]);
     quad_without_coordinates(&mut gl);
-    assert_eq!(row(&gl), [RED, RED, GREEN, GREEN, BLUE, BLUE, WHITE, WHITE]);
+    assert_eq!(row(&mut gl), [RED, RED, GREEN, GREEN, BLUE, BLUE, WHITE, WHITE]);
 }
 
 #[test]
@@ -240,7 +240,7 @@ fn an_eye_plane_is_kept_in_the_eye_coordinates_of_its_modelview() {
     gl.load_identity().unwrap();
     quad_without_coordinates(&mut gl);
     // s = 0.25·x + 0.5 in [0.25, 0.75]: pixel x has s = (x + 0.5)/16 + 0.25, texel 1 then 2.
-    assert_eq!(row(&gl), [GREEN, GREEN, GREEN, GREEN, BLUE, BLUE, BLUE, BLUE]);
+    assert_eq!(row(&mut gl), [GREEN, GREEN, GREEN, GREEN, BLUE, BLUE, BLUE, BLUE]);
 }
 
 #[test]
@@ -253,7 +253,7 @@ fn the_texture_matrix_transforms_the_coordinates() {
     gl.matrix_mode(MatrixMode::Modelview).unwrap();
     textured_quad(&mut gl);
     // Pixel x: s = (x + 0.5)/8, s' = (x + 0.5)/16 + 0.5, texel 2 for x < 4, 3 after.
-    assert_eq!(row(&gl), [BLUE, BLUE, BLUE, BLUE, WHITE, WHITE, WHITE, WHITE]);
+    assert_eq!(row(&mut gl), [BLUE, BLUE, BLUE, BLUE, WHITE, WHITE, WHITE, WHITE]);
     // Unit 1's matrix is its own.
     gl.active_texture(1).unwrap();
     assert_eq!(gl.matrix(MatrixMode::Texture), glam::Mat4::IDENTITY);
@@ -270,7 +270,7 @@ fn a_second_unit_reads_its_own_coordinates() {
         gl.vertex2(x, y);
     }
     gl.end().unwrap();
-    assert_eq!(row(&gl), [RED, RED, GREEN, GREEN, BLUE, BLUE, WHITE, WHITE]);
+    assert_eq!(row(&mut gl), [RED, RED, GREEN, GREEN, BLUE, BLUE, WHITE, WHITE]);
     assert_eq!(gl.draw_plan().1.tex, 0b10);
 }
 
@@ -359,11 +359,11 @@ fn a_complete_texture_reaches_the_fragment_stage() {
     gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
     gl.tex_env(TexEnvParam::Mode(EnvMode::Replace)).unwrap();
     quad(&mut gl);
-    assert_eq!(common::count(&gl, WHITE), 64);
+    assert_eq!(common::count(&mut gl, WHITE), 64);
     // MODULATE by white: the colour again.
     gl.tex_env(TexEnvParam::Mode(EnvMode::Modulate)).unwrap();
     quad(&mut gl);
-    assert_eq!(common::count(&gl, [51, 102, 153, 255]), 64);
+    assert_eq!(common::count(&mut gl, [51, 102, 153, 255]), 64);
 }
 
 /// Texture coordinate scenes rendered by Mesa 22.3.6 llvmpipe
@@ -577,7 +577,7 @@ fn texture_coordinates_match_llvmpipe() {
         let want = reference
             .get(name)
             .unwrap_or_else(|| panic!("{name} missing from texgen.txt"));
-        let gl = replay(line);
+        let mut gl = replay(line);
         let got = gl.framebuffer().color_bytes();
         assert_eq!(got.len(), want.len());
         let differ = got.chunks(4).zip(want.chunks(4)).filter(|(a, b)| a != b).count();
@@ -640,6 +640,6 @@ fn non_finite_coordinates_still_draw() {
         gl.end().unwrap();
         // The quad covers the window whatever its coordinates, and samples
         // texel 0 (red) everywhere: measured with llvmpipe for each case.
-        assert_eq!(common::count(&gl, RED), 64, "s = {s}, q = {q}");
+        assert_eq!(common::count(&mut gl, RED), 64, "s = {s}, q = {q}");
     }
 }

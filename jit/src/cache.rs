@@ -4,6 +4,7 @@ use crate::key::FragmentKey;
 use crate::specialist::{Specialist, SpecialistError};
 use crate::tier::Tier;
 use lru::LruCache;
+use std::sync::Arc;
 use std::num::NonZeroUsize;
 use std::time::{Duration, Instant};
 
@@ -40,7 +41,7 @@ pub struct CacheStats {
 /// An LRU cache of specialists. A key that failed to compile is remembered as
 /// failed (so it is not compiled again on every draw) until it is evicted.
 pub struct SpecialistCache {
-    lru: LruCache<FragmentKey, Option<Specialist>>,
+    lru: LruCache<FragmentKey, Option<Arc<Specialist>>>,
     stats: CacheStats,
     compile_ns: Vec<u64>,
     compiler: Compiler,
@@ -98,14 +99,15 @@ impl SpecialistCache {
     }
 
     /// Counts `evicted`'s leaving, and frees it.
-    fn evict(&mut self, evicted: Option<Specialist>) {
+    fn evict(&mut self, evicted: Option<Arc<Specialist>>) {
         self.stats.evictions += 1;
-        self.stats.upgrades += u64::from(evicted.as_ref().is_some_and(Specialist::is_upgraded));
+        self.stats.upgrades += u64::from(evicted.as_deref().is_some_and(Specialist::is_upgraded));
     }
 
     /// The specialist for `key` (a normalized, valid key), compiling it on a miss;
-    /// `None` when it cannot be compiled.
-    pub fn get(&mut self, key: &FragmentKey) -> Option<&Specialist> {
+    /// `None` when it cannot be compiled. Shared: a deferred draw keeps its
+    /// specialist alive (and its code mapped) after an eviction.
+    pub fn get(&mut self, key: &FragmentKey) -> Option<&Arc<Specialist>> {
         if self.lru.contains(key) {
             self.stats.hits += 1;
         } else {
@@ -115,7 +117,8 @@ impl SpecialistCache {
                 Some(tier) => Specialist::compile_tier(key, tier),
                 None => (self.compiler)(key),
             }
-            .ok();
+            .ok()
+            .map(Arc::new);
             let took = start.elapsed();
             self.stats.total_compile += took;
             let ns = took.as_nanos() as u64;
@@ -143,7 +146,7 @@ impl SpecialistCache {
         let upgraded = self
             .lru
             .iter()
-            .filter(|(_, s)| s.as_ref().is_some_and(Specialist::is_upgraded));
+            .filter(|(_, s)| s.as_deref().is_some_and(Specialist::is_upgraded));
         CacheStats {
             resident: self.lru.len(),
             upgrades: self.stats.upgrades + upgraded.count() as u64,

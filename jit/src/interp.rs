@@ -82,19 +82,6 @@ pub fn row_of(y: u32, height: u32) -> f32 {
     height.saturating_sub(y + 1) as f32
 }
 
-/// The mask of `span`'s fragments that lie inside the target.
-pub fn owned_mask(span: &FragmentSpan, width: u32, height: u32) -> u64 {
-    if span.y >= height || span.x >= width {
-        return 0;
-    }
-    let inside = (width - span.x).min(SPAN_MAX as u32);
-    let mut live = span.live_mask();
-    if inside < 64 {
-        live &= (1u64 << inside) - 1;
-    }
-    live
-}
-
 fn run_span(
     key: &FragmentKey,
     stages: &[Stage],
@@ -102,7 +89,7 @@ fn run_span(
     (span, planes): (&FragmentSpan, &Planes),
     t: &mut Target<'_>,
 ) {
-    let mut live = owned_mask(span, t.width(), t.height());
+    let mut live = t.owned_mask(span);
     if live == 0 {
         return;
     }

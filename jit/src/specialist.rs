@@ -2,7 +2,7 @@
 
 use crate::callout::TexView;
 use crate::compile::{self, CompileError, RegAlloc, SpanCall, SpanFn};
-use crate::interp::{check_key, check_planes, owned_mask, row_of, FragmentError};
+use crate::interp::{check_key, check_planes, row_of, FragmentError};
 use crate::key::FragmentKey;
 use crate::pixel;
 use crate::shade::Planes;
@@ -390,7 +390,7 @@ impl Specialist {
         (span, planes): (&FragmentSpan, *const Planes),
         t: &mut Target<'_>,
     ) {
-        let live = owned_mask(span, t.width(), t.height());
+        let live = t.owned_mask(span);
         if live == 0 {
             return;
         }

@@ -27,6 +27,25 @@ impl DepthTarget<'_> {
         }
     }
 
+    /// The first `n` values and the rest, as two targets of the same format.
+    fn split_at(self, n: usize) -> (Self, Self) {
+        let n = n.min(self.len());
+        match self {
+            DepthTarget::D16(d) => {
+                let (a, b) = d.split_at_mut(n);
+                (DepthTarget::D16(a), DepthTarget::D16(b))
+            }
+            DepthTarget::D24(d) => {
+                let (a, b) = d.split_at_mut(n);
+                (DepthTarget::D24(a), DepthTarget::D24(b))
+            }
+            DepthTarget::D32(d) => {
+                let (a, b) = d.split_at_mut(n);
+                (DepthTarget::D32(a), DepthTarget::D32(b))
+            }
+        }
+    }
+
     /// The stored value at `index`.
     #[inline]
     pub fn get(&self, index: usize) -> u32 {
@@ -48,10 +67,18 @@ impl DepthTarget<'_> {
 
 /// A framebuffer view: color rows of `stride` bytes (row 0 at the bottom unless
 /// `top_down`), depth and stencil rows of `width` values with row 0 at the bottom.
+///
+/// A view may hold only a band of rows, `y0..y0 + rows` of a framebuffer
+/// `height` rows tall ([`Target::into_bands`]): its slices then start at the
+/// band's first row, and fragments outside the band are not its to write.
+/// Bands of one framebuffer are disjoint, so threads can own one each.
 #[derive(Debug)]
 pub struct Target<'a> {
     width: u32,
     height: u32,
+    /// The band of rows this view owns.
+    y0: u32,
+    rows: u32,
     color_format: ColorFormat,
     color: &'a mut [u8],
     stride: usize,
@@ -119,6 +146,8 @@ impl<'a> Target<'a> {
         Ok(Target {
             width,
             height,
+            y0: 0,
+            rows: height,
             color_format,
             color,
             stride,
@@ -138,8 +167,95 @@ impl<'a> Target<'a> {
         self.width
     }
 
+    /// The framebuffer's height (a band's too: rows are numbered in the framebuffer).
     pub fn height(&self) -> u32 {
         self.height
+    }
+
+    /// The rows this view owns, `y0..y1` (all of them unless it is a band).
+    pub fn rows(&self) -> std::ops::Range<u32> {
+        self.y0..self.y0 + self.rows
+    }
+
+    /// Splits the view into bands of `band` rows (the last may be shorter),
+    /// bottom band first. Each band owns its rows of every buffer.
+    pub fn into_bands(self, band: u32) -> Vec<Target<'a>> {
+        let band = band.max(1);
+        let end = self.y0 + self.rows;
+        let (w, stride) = (self.width as usize, self.stride);
+        let starts: Vec<u32> = (self.y0..end).step_by(band as usize).collect();
+        // Color rows are stored top band first when top-down: split them in
+        // storage order, then hand them out bottom band first.
+        let mut colors: Vec<Option<&'a mut [u8]>> = Vec::with_capacity(starts.len());
+        let mut color = self.color;
+        let stored: Vec<usize> = if self.top_down {
+            (0..starts.len()).rev().collect()
+        } else {
+            (0..starts.len()).collect()
+        };
+        colors.resize_with(starts.len(), || None);
+        for (k, &i) in stored.iter().enumerate() {
+            let rows = band.min(end - starts[i]) as usize;
+            let take = if k + 1 == stored.len() {
+                color.len()
+            } else {
+                (rows * stride).min(color.len())
+            };
+            let (a, b) = std::mem::take(&mut color).split_at_mut(take);
+            colors[i] = Some(a);
+            color = b;
+        }
+        let (mut depth, mut stencil) = (self.depth, self.stencil);
+        let mut bands = Vec::with_capacity(starts.len());
+        for (i, &y0) in starts.iter().enumerate() {
+            let rows = band.min(end - y0);
+            let n = rows as usize * w;
+            let (d, rest) = match depth {
+                Some(d) => {
+                    let (a, b) = d.split_at(n);
+                    (Some(a), Some(b))
+                }
+                None => (None, None),
+            };
+            depth = rest;
+            let (s, rest) = match stencil {
+                Some(s) => {
+                    let (a, b) = s.split_at_mut(n.min(s.len()));
+                    (Some(a), Some(b))
+                }
+                None => (None, None),
+            };
+            stencil = rest;
+            bands.push(Target {
+                width: self.width,
+                height: self.height,
+                y0,
+                rows,
+                color_format: self.color_format,
+                color: colors[i].take().unwrap_or_default(),
+                stride,
+                top_down: self.top_down,
+                depth: d,
+                stencil: s,
+            });
+        }
+        bands
+    }
+
+    /// The fragments of `span` this view writes: the covered ones inside the
+    /// framebuffer's width and in the view's rows.
+    #[inline]
+    pub fn owned_mask(&self, span: &crate::FragmentSpan) -> u64 {
+        if span.y < self.y0 || span.y - self.y0 >= self.rows || span.x >= self.width {
+            return 0;
+        }
+        let inside = (self.width - span.x).min(crate::SPAN_MAX as u32);
+        let live = span.live_mask();
+        if inside < 64 {
+            live & ((1u64 << inside) - 1)
+        } else {
+            live
+        }
     }
 
     pub fn color_format(&self) -> ColorFormat {
@@ -154,17 +270,21 @@ impl<'a> Target<'a> {
         self.stencil.is_some()
     }
 
-    /// Byte offset of pixel `(x, y)` in the color buffer.
+    /// Byte offset of pixel `(x, y)` (a row of the view's) in the color buffer.
     #[inline]
     pub fn color_offset(&self, x: u32, y: u32) -> usize {
-        let row = if self.top_down { self.height - 1 - y } else { y };
+        let row = if self.top_down {
+            self.y0 + self.rows - 1 - y
+        } else {
+            y - self.y0
+        };
         row as usize * self.stride + x as usize * self.color_format.bytes_per_pixel()
     }
 
-    /// Index of pixel `(x, y)` in the depth and stencil buffers.
+    /// Index of pixel `(x, y)` (a row of the view's) in the depth and stencil buffers.
     #[inline]
     pub fn index(&self, x: u32, y: u32) -> usize {
-        y as usize * self.width as usize + x as usize
+        (y - self.y0) as usize * self.width as usize + x as usize
     }
 
     pub fn color_mut(&mut self) -> &mut [u8] {

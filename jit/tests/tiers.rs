@@ -200,7 +200,7 @@ fn the_cache_counts_upgrades_resident_and_evicted() {
     let mut cache = softgl_jit::SpecialistCache::with_compiler(2, tiered);
     for (name, key) in keys() {
         cache.get(&key).expect("compiles").wait_optimized();
-        assert!(cache.get(&key).is_some_and(Specialist::is_upgraded), "{name}");
+        assert!(cache.get(&key).is_some_and(|s| s.is_upgraded()), "{name}");
     }
     let s = cache.stats();
     assert_eq!((s.misses, s.hits, s.evictions, s.resident, s.upgrades), (4, 4, 2, 2, 4));

@@ -234,7 +234,9 @@ pub unsafe extern "C" fn OSMesaGetColorBuffer(
 ) -> u8 {
     let r = guard(None, || {
         let shared = lookup(handle(ctx))?;
-        let os = lock(&shared);
+        let mut os = lock(&shared);
+        // The buffer is handed out to be read: what was drawn must be in it.
+        os.flush();
         os.binding()
             .map(|b| (b.width, b.height, os.format() as i32, b.ptr.cast::<c_void>()))
     });

@@ -226,7 +226,7 @@ impl OsContext {
         let desc = self.desc_for(&binding);
         let len = binding.len(self.row_length);
         let stride = binding.stride(self.row_length);
-        let same = self.gl.as_ref().is_some_and(|gl| *gl.framebuffer().desc() == desc);
+        let same = self.gl.as_ref().is_some_and(|gl| *gl.framebuffer_desc() == desc);
         let fb = if binding.format.is_direct() {
             // SAFETY: OSMesaMakeCurrent's contract: `buffer` holds the image
             // (`len` bytes for this size and row length) while bound.
@@ -269,7 +269,7 @@ impl OsContext {
             let _ = gl.flush();
         }
         self.refresh_depth_view();
-        let (Some(b), Some(gl)) = (self.binding, self.gl.as_ref()) else {
+        let (Some(b), Some(gl)) = (self.binding, self.gl.as_mut()) else {
             return;
         };
         if b.format.is_direct() {
@@ -285,7 +285,7 @@ impl OsContext {
     /// Rebuilds the Z24S8 copy of depth and stencil, for contexts with both;
     /// empties it otherwise.
     fn refresh_depth_view(&mut self) {
-        let fb = self.gl.as_deref().map(Context::framebuffer);
+        let fb = self.gl.as_deref_mut().map(Context::framebuffer);
         match fb.and_then(|fb| Some((fb.depth_buffer()?, fb.stencil_buffer()?))) {
             Some((DepthBuffer::D24(d), stencil)) => {
                 self.depth_view.clear();

@@ -9,7 +9,7 @@ pub mod lighting;
 pub mod varying;
 
 use crate::framebuffer::{Framebuffer, Rect};
-use crate::raster::{self, RasterParams, RasterVertex, SpanSink};
+use crate::raster::{self, PrimSink, RasterParams, RasterVertex};
 use crate::state::{FrontFace, PolygonMode, RasterState, ShadeModel};
 use assemble::{assemble, Primitive, QuadSplit};
 use batch::{VertexBatch, VertexStage};
@@ -72,12 +72,7 @@ pub enum DrawSource {
 
 /// The pixels inside both `a` and `b`.
 fn intersect(a: Rect, b: Rect) -> Rect {
-    Rect {
-        x0: a.x0.max(b.x0),
-        y0: a.y0.max(b.y0),
-        x1: a.x1.min(b.x1),
-        y1: a.y1.min(b.y1),
-    }
+    a.intersect(b)
 }
 
 /// The viewport transform, in f32 as llvmpipe computes it.
@@ -184,7 +179,7 @@ impl<'s> Geometry<'s> {
         (mode, source): (PrimitiveMode, DrawSource),
         count: usize,
         fetch: &dyn Fn(usize) -> InVertex,
-        sink: &mut dyn SpanSink,
+        sink: &mut dyn PrimSink,
     ) {
         if self.params.bounds.is_empty() {
             return;
@@ -304,16 +299,16 @@ impl<'s> Geometry<'s> {
         self.project_as(v, true)
     }
 
-    fn point(&self, v: &ClipVertex, sink: &mut dyn SpanSink) {
+    fn point(&self, v: &ClipVertex, sink: &mut dyn PrimSink) {
         if !v.is_finite(self.layout.finite_len()) || outcode(v.pos, 1.0) != 0 || self.user.code(v.pos) != 0 {
             return;
         }
         if let Some(rv) = self.project(v) {
-            raster::point(&rv, self.state.point_size, &self.wide_params, sink);
+            sink.point(&rv, self.state.point_size, &self.wide_params);
         }
     }
 
-    fn line(&self, a: &ClipVertex, b: &ClipVertex, flat: Option<Varyings>, sink: &mut dyn SpanSink) {
+    fn line(&self, a: &ClipVertex, b: &ClipVertex, flat: Option<Varyings>, sink: &mut dyn PrimSink) {
         let n = self.layout.len();
         let f = self.layout.finite_len();
         if !(a.is_finite(f) && b.is_finite(f)) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
@@ -340,11 +335,11 @@ impl<'s> Geometry<'s> {
         }
         let drawn = |c: &ClipVertex| c.pos == a0.pos || c.pos == b0.pos;
         if let (Some(ra), Some(rb)) = (self.project_as(&a, drawn(&a)), self.project_as(&b, drawn(&b))) {
-            raster::line(&ra, &rb, self.state.line_width, flat.as_ref(), &self.wide_params, sink);
+            sink.line(&ra, &rb, self.state.line_width, flat.as_ref(), &self.wide_params);
         }
     }
 
-    fn polygon(&self, poly: [PolyVertex; 3], mut flat: Option<Varyings>, sink: &mut dyn SpanSink) {
+    fn polygon(&self, poly: [PolyVertex; 3], mut flat: Option<Varyings>, sink: &mut dyn PrimSink) {
         let n = self.layout.len();
         let f = self.layout.finite_len();
         if poly.iter().any(|(v, _)| !v.is_finite(f)) {
@@ -421,10 +416,10 @@ impl<'s> Geometry<'s> {
                     // order fixes which vertex anchors the f32 setup (measured: the
                     // other fans and starting vertices give 6-8x more depth differences).
                     for i in 2..win.len() {
-                        raster::triangle([&win[i - 1].0, &win[i].0, &win[0].0], flat, &params, sink);
+                        sink.triangle([&win[i - 1].0, &win[i].0, &win[0].0], flat, &params);
                     }
                 } else {
-                    raster::triangle([&win[0].0, &win[1].0, &win[2].0], flat, &params, sink);
+                    sink.triangle([&win[0].0, &win[1].0, &win[2].0], flat, &params);
                 }
             }
             PolygonMode::Line | PolygonMode::Point => {
@@ -440,7 +435,7 @@ impl<'s> Geometry<'s> {
                     }
                     if mode == PolygonMode::Line {
                         let next = &shifted[(i + 1) % shifted.len()].0;
-                        raster::line(v, next, self.state.line_width, flat, &self.params, sink);
+                        sink.line(v, next, self.state.line_width, flat, &self.params);
                     } else {
                         let mut v = *v;
                         if let (Some(f), Some(o)) = (flat, self.layout.color()) {
@@ -449,7 +444,7 @@ impl<'s> Geometry<'s> {
                         if let (Some(f), Some(o)) = (flat, self.layout.secondary()) {
                             copy_slots(&mut v.v, o, f, o, 4);
                         }
-                        raster::point(&v, self.state.point_size, &self.params, sink);
+                        sink.point(&v, self.state.point_size, &self.params);
                     }
                 }
             }

@@ -1,17 +1,21 @@
 //! Rasterization following GL's rules as llvmpipe implements them: vertices
 //! snapped to 8 sub-pixel bits (round half to even), samples at pixel centers,
 //! edges on the left and at the bottom (y up) own the centers on them.
-//! Primitives become [`FragmentSpan`]s handed to a [`SpanSink`].
+//! Primitives become [`FragmentSpan`]s handed to a [`SpanSink`]: at once
+//! ([`Rasterize`]), or tile by tile when a [`scene::Scene`] they were binned
+//! into is flushed.
 //!
 //! Measured facts about llvmpipe that these rules follow: `docs/llvmpipe-facts.md`.
 
 mod line;
 mod point;
+pub mod pool;
+pub mod scene;
 mod triangle;
 
 pub use line::line;
 pub use point::point;
-pub use triangle::{offset, triangle};
+pub use triangle::{offset, triangle, triangle_box};
 
 use crate::framebuffer::Rect;
 use crate::geometry::varying::{VaryingLayout, Varyings};
@@ -67,6 +71,51 @@ impl<F: FnMut(&FragmentSpan)> SpanSink for F {
     fn span(&mut self, span: &FragmentSpan) {
         self(span)
     }
+}
+
+/// Receives a draw's primitives once clipped, projected and culled.
+pub trait PrimSink {
+    fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams);
+    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams);
+    fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams);
+}
+
+/// Rasterizes each primitive as it comes, into a span sink.
+pub struct Rasterize<'s>(pub &'s mut dyn SpanSink);
+
+impl PrimSink for Rasterize<'_> {
+    fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
+        triangle(v, flat, params, self.0)
+    }
+
+    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
+        line(a, b, width, flat, params, self.0)
+    }
+
+    fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
+        point(v, size, params, self.0)
+    }
+}
+
+/// The pixels within `bounds` that a primitive reaching `reach` pixels
+/// around the points `p` may cover (a box, not exact); `None` when none or
+/// when a coordinate is not finite (the rasterizer draws nothing then).
+pub(crate) fn reach_box(p: &[(f32, f32)], reach: f32, bounds: Rect) -> Option<Rect> {
+    let mut b = [f32::INFINITY, f32::INFINITY, f32::NEG_INFINITY, f32::NEG_INFINITY];
+    for &(x, y) in p {
+        if !(x.is_finite() && y.is_finite()) {
+            return None;
+        }
+        b = [b[0].min(x), b[1].min(y), b[2].max(x), b[3].max(y)];
+    }
+    let clamp = |v: f32, lo: u32, hi: u32| (v.max(lo as f32).min(hi as f32)) as u32;
+    let r = Rect {
+        x0: clamp((b[0] - reach).floor(), bounds.x0, bounds.x1),
+        y0: clamp((b[1] - reach).floor(), bounds.y0, bounds.y1),
+        x1: clamp((b[2] + reach).ceil() + 1.0, bounds.x0, bounds.x1),
+        y1: clamp((b[3] + reach).ceil() + 1.0, bounds.y0, bounds.y1),
+    };
+    (!r.is_empty()).then_some(r)
 }
 
 /// What the rasterizer needs to know about the target and the state.

@@ -1,6 +1,7 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 
 use super::{ceil_div, emit_row, floor_div, snap, with_planes, FillSlot, RasterParams, RasterVertex, SpanSink, ONE};
+use crate::framebuffer::Rect;
 use crate::geometry::varying::Varyings;
 use softgl_jit::interp::row_of;
 use softgl_jit::shade::{slot, Planes};
@@ -63,6 +64,31 @@ pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterP
     // reflected exactly into GL rows (docs/llvmpipe-facts.md 2).
     let top = (i64::from(params.height) - 1) * ONE;
     cover(v.map(|v| (snap(v.x), top - snap(v.y_down))), v, flat, params, sink);
+}
+
+/// The pixels [`triangle`] may cover: its snapped bounding box within
+/// `params.bounds`, as `cover` finds it; `None` when it covers nothing.
+pub fn triangle_box(v: [&RasterVertex; 3], params: &RasterParams) -> Option<Rect> {
+    let top = (i64::from(params.height) - 1) * ONE;
+    let p = v.map(|v| (snap(v.x), top - snap(v.y_down)));
+    let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
+    if area == 0 {
+        return None;
+    }
+    let b = params.bounds;
+    let (xs, ys) = (p.map(|q| q.0), p.map(|q| q.1));
+    let min = |a: [i64; 3]| a[0].min(a[1]).min(a[2]);
+    let max = |a: [i64; 3]| a[0].max(a[1]).max(a[2]);
+    let x0 = ceil_div(min(xs), ONE).max(i64::from(b.x0));
+    let x1 = floor_div(max(xs), ONE).min(i64::from(b.x1) - 1);
+    let y0 = ceil_div(min(ys), ONE).max(i64::from(b.y0));
+    let y1 = floor_div(max(ys), ONE).min(i64::from(b.y1) - 1);
+    (x0 <= x1 && y0 <= y1).then(|| Rect {
+        x0: x0 as u32,
+        y0: y0 as u32,
+        x1: x1 as u32 + 1,
+        y1: y1 as u32 + 1,
+    })
 }
 
 /// [`triangle`] for a wide line's quad, whose corners are made in GL's

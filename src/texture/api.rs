@@ -10,6 +10,7 @@ use super::unpack::{self, ClientLayout, Raw, Route};
 use super::{max_levels, PixelData, PixelStore, TexImageTarget, TexLevelParamName, TexParam, TexParamName};
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
+use crate::framebuffer::Framebuffer;
 use crate::gl_enum::GlEnum;
 
 /// `GL_MAX_TEXTURE_SIZE` (and the cube map size); 3D textures: [`MAX_3D_TEXTURE_SIZE`].
@@ -94,8 +95,7 @@ fn level_index(target: TexTarget, level: i32) -> GlResult<usize> {
 /// The framebuffer's pixels of a rectangle as client pixels (RGBA ubyte, or
 /// the stored depth), the way Mesa's copies read them; pixels outside the
 /// framebuffer are `None`.
-fn read_source(gl: &Context, depth: bool, x: i32, y: i32) -> Option<[Raw; 4]> {
-    let fb = gl.framebuffer();
+fn read_source(fb: &Framebuffer, depth: bool, x: i32, y: i32) -> Option<[Raw; 4]> {
     let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
     if depth {
         let bits = fb.depth_format()?.max_value().count_ones();
@@ -195,6 +195,19 @@ impl Context {
         })
     }
 
+    /// Rasterizes the pending draws first when they hold texels of the
+    /// texture bound to `target` on the active unit, as llvmpipe flushes a
+    /// scene before a resource it reads is written: the write then needs no
+    /// copy of the texels, and the scene never holds more than one old copy
+    /// of a texture (a client streaming uploads between draws would
+    /// otherwise pile them up).
+    fn before_texture_write(&mut self, target: TexTarget) {
+        let obj = self.textures.bound(self.textures.active_unit(), target);
+        if obj.images.iter().flatten().any(|i| std::sync::Arc::strong_count(&i.texels) > 1) {
+            self.finish_scene();
+        }
+    }
+
     /// `glTexImage1D/2D/3D` (sizes `[w, 1, 1]`, `[w, h, 1]`, `[w, h, d]`).
     /// `pixels: None` allocates the image without data (texels read as 0).
     pub fn tex_image(
@@ -206,6 +219,7 @@ impl Context {
         border: i32,
         pixels: Option<PixelData<'_>>,
     ) -> GlResult {
+        self.before_texture_write(target.texture_target());
         self.tex_call(|gl| {
             let tt = target.texture_target();
             let level = level_index(tt, level)?;
@@ -228,7 +242,7 @@ impl Context {
                     depth: size[2] as u32,
                     border: border as u32,
                     internal,
-                    texels: Vec::new(),
+                    texels: Default::default(),
                 });
                 if let Some(slot) = gl.textures.proxy_mut(t).image_mut(level, 0) {
                     *slot = img;
@@ -300,6 +314,7 @@ impl Context {
         size: [i32; 3],
         pixels: PixelData<'_>,
     ) -> GlResult {
+        self.before_texture_write(target.texture_target());
         self.tex_call(|gl| {
             check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
             let tt = target.texture_target();
@@ -333,6 +348,7 @@ impl Context {
         size: [i32; 2],
         border: i32,
     ) -> GlResult {
+        self.finish_scene();
         self.tex_call(|gl| {
             check(
                 matches!(
@@ -353,7 +369,7 @@ impl Context {
             )?;
             let depth = internal.base() == BaseFormat::Depth;
             check(
-                !depth || gl.framebuffer().depth_format().is_some(),
+                !depth || gl.framebuffer_pending().depth_format().is_some(),
                 GlError::InvalidOperation,
             )?;
             check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
@@ -387,7 +403,7 @@ impl Context {
                 let (Ok(x), Ok(y)) = (i32::try_from(x), i32::try_from(y)) else {
                     continue;
                 };
-                if let Some(rgba) = read_source(self, depth, x, y) {
+                if let Some(rgba) = read_source(self.framebuffer_pending(), depth, x, y) {
                     let at = (offset[0] + i as usize, offset[1] + j as usize, offset[2]);
                     unpack::store_texel(img, at, rgba, Route::Direct);
                 }
@@ -405,6 +421,7 @@ impl Context {
         xy: [i32; 2],
         size: [i32; 2],
     ) -> GlResult {
+        self.finish_scene();
         self.tex_call(|gl| {
             check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
             let tt = target.texture_target();
@@ -424,7 +441,7 @@ impl Context {
             }
             let depth = img.internal.base() == BaseFormat::Depth;
             check(
-                !depth || gl.framebuffer().depth_format().is_some(),
+                !depth || gl.framebuffer_pending().depth_format().is_some(),
                 GlError::InvalidOperation,
             )?;
             let mut img = img.clone();
@@ -574,6 +591,7 @@ impl Context {
     /// nothing when BASE_LEVEL ≥ MAX_LEVEL; `InvalidOperation` for a cube map
     /// whose base faces differ, or without a base image.
     pub fn generate_mipmap(&mut self, target: TexTarget) -> GlResult {
+        self.before_texture_write(target);
         self.tex_call(|gl| {
             let obj = gl.textures.current_mut(target);
             if obj.params.base_level >= obj.params.max_level {

@@ -195,7 +195,7 @@ fn downsample(src: &TexImage, size: [u32; 3]) -> TexImage {
                     }
                 };
                 let at = dst.offset(x, y, z);
-                put_texel(&mut dst.texels[at..], &storage, n);
+                put_texel(&mut dst.texels_mut()[at..], &storage, n);
             }
         }
     }

@@ -6,6 +6,7 @@ use super::format::InternalFormat;
 use super::jit::{BaseFormat, DepthMode, Filter, MipFilter, TexTarget, TexelFormat, Wrap};
 use super::{faces, max_levels};
 use softgl_jit::CompareFunc;
+use std::sync::Arc;
 
 /// One image: a level of a target, or one face of a cube map level. Texels
 /// tightly packed in the internal format's [`TexelFormat`], rows bottom-up.
@@ -18,7 +19,10 @@ pub struct TexImage {
     /// upload, llvmpipe keeps none, but records a proxy's as asked).
     pub border: u32,
     pub internal: InternalFormat,
-    pub texels: Vec<u8>,
+    /// Shared with the draws deferred until the next flush, which read the
+    /// texels as they were when drawn: writers copy them first when shared
+    /// ([`TexImage::texels_mut`]).
+    pub texels: Arc<Vec<u8>>,
 }
 
 impl TexImage {
@@ -31,8 +35,13 @@ impl TexImage {
             depth: size[2],
             border: 0,
             internal,
-            texels: vec![0; n * internal.storage().texel_format().bytes_per_texel()],
+            texels: Arc::new(vec![0; n * internal.storage().texel_format().bytes_per_texel()]),
         }
+    }
+
+    /// The texels to write, copied first if a deferred draw still reads them.
+    pub fn texels_mut(&mut self) -> &mut Vec<u8> {
+        Arc::make_mut(&mut self.texels)
     }
 
     pub fn texel_format(&self) -> TexelFormat {

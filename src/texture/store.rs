@@ -7,6 +7,7 @@ use super::jit::{
 };
 use super::object::TextureObject;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 const TARGETS: [TexTarget; 4] = [TexTarget::D1, TexTarget::D2, TexTarget::D3, TexTarget::Cube];
 
@@ -181,7 +182,8 @@ impl TextureStore {
             statics: SamplerStatics::default(),
         };
         let faces = obj.faces();
-        let images = obj.images[..(last + 1) * faces]
+        let levels = &obj.images[..(last + 1) * faces];
+        let images = levels
             .iter()
             .map(|i| match i {
                 Some(i) => Image {
@@ -197,6 +199,7 @@ impl TextureStore {
             key,
             base: storage.base,
             images,
+            shared: levels.iter().map(|i| i.as_ref().map(|i| Arc::clone(&i.texels))).collect(),
             params: TextureRef {
                 images: &[],
                 base_level: p.base_level as u32,
@@ -231,12 +234,66 @@ pub struct Sampling<'a> {
     pub base: BaseFormat,
     /// Level `l`, face `f` at `l * faces + f`, up to the last level sampled; missing levels are empty.
     pub images: Vec<Image<'a>>,
+    /// The texels behind `images` (`None` for empty ones), for [`Sampling::share`].
+    shared: Vec<Option<Arc<Vec<u8>>>>,
     /// The rest of the sampler's view: no images (they are [`Sampling::images`]),
     /// the object's LOD bias quantized ([`quantized_lod_bias`]).
     params: TextureRef<'static>,
 }
 
+/// A [`Sampling`] that holds its texels (shared with the texture object,
+/// which copies them before a later write): what a deferred draw keeps.
+#[derive(Clone, Debug)]
+pub struct SharedSampling {
+    key: SamplerKey,
+    base: BaseFormat,
+    /// Each image's texels (`None`: empty) and size.
+    images: Vec<(Option<Arc<Vec<u8>>>, [u32; 3])>,
+    params: TextureRef<'static>,
+}
+
+impl SharedSampling {
+    /// The sampling again, viewing the texels held.
+    pub fn sampling(&self) -> Sampling<'_> {
+        let images = self
+            .images
+            .iter()
+            .map(|(t, [width, height, depth])| match t {
+                Some(t) => Image {
+                    texels: t,
+                    width: *width,
+                    height: *height,
+                    depth: *depth,
+                },
+                None => Image::EMPTY,
+            })
+            .collect();
+        Sampling {
+            key: self.key,
+            base: self.base,
+            images,
+            shared: self.images.iter().map(|(t, _)| t.clone()).collect(),
+            params: self.params,
+        }
+    }
+}
+
 impl Sampling<'_> {
+    /// The sampling with its texels held, for a draw that runs later.
+    pub fn share(&self) -> SharedSampling {
+        SharedSampling {
+            key: self.key,
+            base: self.base,
+            images: self
+                .shared
+                .iter()
+                .zip(&self.images)
+                .map(|(t, i)| (t.clone(), [i.width, i.height, i.depth]))
+                .collect(),
+            params: self.params,
+        }
+    }
+
     /// The sampler's view, with the unit's LOD bias (`GL_TEXTURE_FILTER_CONTROL`,
     /// quantized by the caller with [`quantized_lod_bias`]) added.
     pub fn texture_ref(&self, unit_lod_bias: f32) -> TextureRef<'_> {

@@ -13,6 +13,7 @@ use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::matrix::{MatrixStack, MAX_TEXTURE_DEPTH};
 use crate::state::Capability;
+use crate::texture::store::SharedSampling;
 use crate::texture::{Sampling, TextureStore};
 use glam::Mat4;
 use softgl_jit::texture::{
@@ -224,7 +225,41 @@ impl Default for TexturePlan<'_> {
     }
 }
 
+/// A [`TexturePlan`] holding its textures' texels: what a deferred draw keeps.
+#[derive(Clone, Debug, Default)]
+pub struct SharedPlan {
+    keys: [Option<TexUnitKey>; MAX_UNITS],
+    mask: u8,
+    samplings: [Option<SharedSampling>; MAX_UNITS],
+    lod_bias: [f32; MAX_UNITS],
+    env_color: [[f32; 4]; MAX_UNITS],
+}
+
+impl SharedPlan {
+    /// The plan again, viewing the texels held.
+    pub fn plan(&self) -> TexturePlan<'_> {
+        TexturePlan {
+            keys: self.keys,
+            mask: self.mask,
+            samplings: std::array::from_fn(|u| self.samplings[u].as_ref().map(SharedSampling::sampling)),
+            lod_bias: self.lod_bias,
+            env_color: self.env_color,
+        }
+    }
+}
+
 impl TexturePlan<'_> {
+    /// The plan with its texels held, for a draw that runs later.
+    pub fn share(&self) -> SharedPlan {
+        SharedPlan {
+            keys: self.keys,
+            mask: self.mask,
+            samplings: std::array::from_fn(|u| self.samplings[u].as_ref().map(Sampling::share)),
+            lod_bias: self.lod_bias,
+            env_color: self.env_color,
+        }
+    }
+
     /// What the fragment stage samples: each unit's texture (its object's
     /// LOD bias plus the unit's) and environment colour.
     pub fn set(&self) -> TextureSet<'_> {

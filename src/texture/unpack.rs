@@ -509,7 +509,7 @@ pub fn store_texel(img: &mut TexImage, (x, y, z): (usize, usize, usize), rgba: [
         }
     }
     let at = img.offset(x, y, z);
-    put_texel(&mut img.texels[at..], &storage, n);
+    put_texel(&mut img.texels_mut()[at..], &storage, n);
 }
 
 /// Converts `data`'s pixels into the `size` region of `img` at `offset`.
@@ -554,7 +554,7 @@ fn upload_bytes(
         for y in 0..size[1] {
             let src = &data.bytes[layout.at(0, y, z)..][..size[0] * n];
             let at = img.offset(offset[0], offset[1] + y, offset[2] + z);
-            let dst = &mut img.texels[at..][..size[0] * 4];
+            let dst = &mut img.texels_mut()[at..][..size[0] * 4];
             if data.format == PixelFormat::Rgba && base == BaseFormat::Rgba {
                 // Stored as given: the row is a copy.
                 dst.copy_from_slice(src);

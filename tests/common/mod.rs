@@ -4,7 +4,7 @@ use softgl::Context;
 
 /// Number of pixels of `gl`'s RGBA8 color buffer equal to `rgba`.
 #[allow(dead_code)] // Not every test that shares this module counts pixels.
-pub fn count(gl: &Context, rgba: [u8; 4]) -> usize {
+pub fn count(gl: &mut Context, rgba: [u8; 4]) -> usize {
     gl.framebuffer()
         .color_bytes()
         .chunks_exact(4)

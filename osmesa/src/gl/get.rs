@@ -114,7 +114,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         return Err(GlError::InvalidOperation);
     }
     let s = gl.state();
-    let fb = gl.framebuffer();
+    let fb = gl.framebuffer_pending();
     let rect = |r: softgl::state::WindowRect| Val::I(vec![r.x.into(), r.y.into(), r.width.into(), r.height.into()]);
     let color_bits = |c: usize| -> i64 {
         match (fb.color_format(), c) {

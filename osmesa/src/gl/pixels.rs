@@ -6,7 +6,7 @@ use crate::consts::*;
 use crate::gl_state::PixelStore;
 use softgl::texture::unpack::ClientLayout;
 use softgl::texture::{PixelFormat, PixelType};
-use softgl::{Context, GlError, GlResult};
+use softgl::{Context, Framebuffer, GlError, GlResult};
 use std::ffi::c_void;
 
 fn pixel_store(pname: GLenum, param: i32) {
@@ -120,8 +120,7 @@ fn source(format: GLenum) -> GlResult<Source> {
 
 /// Component values in [0, 1] (colour, depth) or raw (stencil) for pixel `(x, y)`;
 /// `None` outside the framebuffer, which leaves the caller's bytes untouched.
-fn read_pixel(gl: &Context, src: Source, x: i64, y: i64, out: &mut Vec<f64>) -> Option<()> {
-    let fb = gl.framebuffer();
+fn read_pixel(fb: &Framebuffer, src: Source, x: i64, y: i64, out: &mut Vec<f64>) -> Option<()> {
     let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
     out.clear();
     match src {
@@ -269,7 +268,7 @@ unsafe fn read_pixels(
     let mut vals = Vec::with_capacity(4);
     for j in 0..h {
         for i in 0..w {
-            if read_pixel(gl, src, i64::from(x) + i as i64, i64::from(y) + j as i64, &mut vals).is_none() {
+            if read_pixel(fb, src, i64::from(x) + i as i64, i64::from(y) + j as i64, &mut vals).is_none() {
                 continue;
             }
             let at = start + j * stride + i * pixel_bytes;

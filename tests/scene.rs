@@ -1,0 +1,140 @@
+//! Deferred rendering through the Rust API: draws and clears wait in the
+//! scene until something reads the framebuffer, a draw keeps the state and
+//! texels it was made with, and a scene past its memory bound flushes, even
+//! in the middle of one draw, without changing a pixel.
+
+use softgl::texture::{
+    Filter, InternalFormat, MipFilter, PixelData, PixelFormat, PixelStore, PixelType, TexImageTarget, TexParam,
+    TextureTarget,
+};
+use softgl::{Capability, ClearMask, Context, FramebufferDesc, PrimitiveMode, VertexArrays};
+
+fn context(w: u32, h: u32) -> Context {
+    Context::new(FramebufferDesc::rgba8_d24s8(w, h)).unwrap()
+}
+
+fn quad(gl: &mut Context, rgb: [f32; 3]) {
+    gl.color3(rgb[0], rgb[1], rgb[2]);
+    gl.begin(PrimitiveMode::Quads).unwrap();
+    for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+        gl.vertex2(x, y);
+    }
+    gl.end().unwrap();
+}
+
+#[test]
+fn draws_wait_until_the_framebuffer_is_read() {
+    let mut gl = context(100, 70);
+    gl.clear_color(0.0, 0.0, 1.0, 1.0).unwrap();
+    gl.clear(ClearMask::ALL).unwrap();
+    quad(&mut gl, [1.0, 0.0, 0.0]);
+    let s = gl.scene_stats();
+    assert_eq!(s.pending_primitives, 2, "the quad's two triangles wait");
+    assert_eq!(gl.framebuffer_pending().pixel(50, 35), Some([0, 0, 0, 0]), "nothing drawn yet");
+    // Reading pixels flushes: every pixel is the quad's.
+    let bytes = gl.read_pixels(0, 0, 100, 70, softgl::ReadFormat::Rgba8).unwrap();
+    assert!(bytes.chunks(4).all(|p| p == [255, 0, 0, 255]));
+    assert_eq!(gl.scene_stats().pending_primitives, 0);
+    assert_eq!(gl.scene_stats().flushes, 1);
+}
+
+#[test]
+fn clears_and_draws_keep_their_order_in_every_tile() {
+    let mut gl = context(150, 130);
+    gl.clear_color(1.0, 0.0, 0.0, 1.0).unwrap();
+    gl.clear(ClearMask::ALL).unwrap();
+    quad(&mut gl, [0.0, 1.0, 0.0]);
+    // A scissored clear over the left half, after the quad.
+    gl.enable(Capability::ScissorTest).unwrap();
+    gl.scissor(0, 0, 75, 130).unwrap();
+    gl.clear_color(0.0, 0.0, 1.0, 1.0).unwrap();
+    gl.clear(ClearMask::ALL).unwrap();
+    gl.disable(Capability::ScissorTest).unwrap();
+    let fb = gl.framebuffer();
+    for (x, y) in [(0, 0), (74, 129), (70, 64), (1, 127)] {
+        assert_eq!(fb.pixel(x, y), Some([0, 0, 255, 255]), "({x}, {y}) cleared after the quad");
+    }
+    for (x, y) in [(75, 0), (149, 129), (128, 64)] {
+        assert_eq!(fb.pixel(x, y), Some([0, 255, 0, 255]), "({x}, {y}) the quad's");
+    }
+}
+
+/// A 1×1 RGBA8 texture of `rgba` on the bound 2D texture.
+fn texel(gl: &mut Context, rgba: [u8; 4]) {
+    let pixels = PixelData {
+        format: PixelFormat::Rgba,
+        ty: PixelType::UnsignedByte,
+        store: PixelStore::DEFAULT,
+        bytes: &rgba,
+    };
+    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba8, [1, 1, 1], 0, Some(pixels))
+        .unwrap();
+}
+
+#[test]
+fn a_draw_samples_the_texels_it_was_made_with() {
+    let mut gl = context(80, 80);
+    gl.bind_texture(TextureTarget::D2, 1).unwrap();
+    gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Nearest, MipFilter::None))
+        .unwrap();
+    texel(&mut gl, [10, 20, 30, 255]);
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    gl.enable(Capability::ScissorTest).unwrap();
+    gl.scissor(0, 0, 40, 80).unwrap();
+    quad(&mut gl, [1.0, 1.0, 1.0]);
+    // Rewritten while the first draw holds its texels: the draw is
+    // rasterized first (as llvmpipe flushes before writing a resource a
+    // scene reads), so no copy is made and only the second draw sees it.
+    texel(&mut gl, [200, 100, 50, 255]);
+    assert_eq!(gl.scene_stats().flushes, 1);
+    gl.scissor(40, 0, 40, 80).unwrap();
+    quad(&mut gl, [1.0, 1.0, 1.0]);
+    // And deleted before the flush: the draw keeps the texels.
+    gl.delete_textures(&[1]);
+    assert_eq!(gl.scene_stats().pending_primitives, 2);
+    let fb = gl.framebuffer();
+    assert_eq!(fb.pixel(10, 10), Some([10, 20, 30, 255]));
+    assert_eq!(fb.pixel(70, 70), Some([200, 100, 50, 255]));
+}
+
+/// `n` small triangles in a grid over a `w`×`h` window, in pixel coordinates.
+fn grid(n: usize, w: u32, h: u32) -> (Vec<f32>, Vec<f32>) {
+    let (mut pos, mut col) = (Vec::new(), Vec::new());
+    for i in 0..n {
+        let (x, y) = ((i * 7 % w as usize) as f32, (i * 13 / w as usize % h as usize) as f32);
+        pos.extend_from_slice(&[x, y, x + 5.5, y + 0.5, x + 1.0, y + 4.5]);
+        let c = (i % 255) as f32 / 255.0;
+        for _ in 0..3 {
+            col.extend_from_slice(&[c, 1.0 - c, 0.5]);
+        }
+    }
+    (pos, col)
+}
+
+#[test]
+fn a_draw_past_the_memory_bound_flushes_midway_and_draws_the_same_pixels() {
+    let (w, h) = (200, 150);
+    let (pos, col) = grid(20_000, w, h);
+    let render = |bound: usize| {
+        let mut gl = context(w, h);
+        gl.set_scene_bound(bound);
+        gl.ortho(0.0, f64::from(w), 0.0, f64::from(h), -1.0, 1.0).unwrap();
+        gl.enable(Capability::Blend).unwrap();
+        gl.blend_func(softgl::BlendFactor::One, softgl::BlendFactor::One).unwrap();
+        let arrays = VertexArrays::with_colors(2, &pos, 3, &col);
+        gl.draw_arrays(PrimitiveMode::Triangles, 0, 60_000, &arrays).unwrap();
+        let stats = gl.scene_stats();
+        let bytes = gl.framebuffer().color_bytes().to_vec();
+        (stats, bytes)
+    };
+    let (whole, image) = render(0);
+    // Triangles reaching past the window's edge are clipped into several.
+    assert_eq!(whole.flushes, 0, "64 MiB hold it all: {whole:?}");
+    assert!(whole.pending_primitives >= 20_000, "{whole:?}");
+    let bound = 1 << 20;
+    let (split, split_image) = render(bound);
+    assert!(split.flushes >= 5, "{split:?}");
+    // A primitive (~1 KB) and its bin entries may pass the bound before the flush.
+    assert!(split.peak_bytes <= bound + 4096, "{split:?}");
+    assert!(image == split_image, "flushing midway changed pixels");
+}
