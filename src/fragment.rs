@@ -37,6 +37,14 @@ impl Backend {
     }
 }
 
+/// The storage of a [`FragmentStage`]'s batch, kept from one stage to the
+/// next (a tile runs a stage per run of one draw's primitives).
+#[derive(Debug, Default)]
+pub struct StageBuffers {
+    batch: Vec<FragmentSpan>,
+    planes: Vec<Planes>,
+}
+
 /// Collects spans and runs the fragment stages over them in batches, with the
 /// key's specialist when there is one, else with the interpreter. Each span
 /// names the planes of its primitive among the batch's.
@@ -49,17 +57,17 @@ pub struct FragmentStage<'t, 'f> {
     /// What the specialist reads of them, made once for the draw.
     view: &'t DrawTextures<'t>,
     target: &'t mut Target<'f>,
-    /// Spans `..count` are the batch's; the storage is reused.
-    batch: Vec<FragmentSpan>,
+    /// The batch's spans (`batch[..count]`) and planes, in storage reused
+    /// from stage to stage.
+    buffers: &'t mut StageBuffers,
     count: usize,
     /// Whether the stages read the spans' colours and depths (a key without
     /// a shading stage, or one leaving them to the span).
     span_color: bool,
     span_z: bool,
-    /// The planes of the batch's primitives, `..planes_len`; the last is the
-    /// current one's. The storage is reused: a primitive writes the slots it
-    /// uses over whatever an earlier one left.
-    planes: Vec<Planes>,
+    /// The planes of the batch's primitives are `planes[..planes_len]`; the
+    /// last is the current one's. A primitive writes the slots it uses over
+    /// whatever an earlier one left.
     planes_len: usize,
     /// Bit `u` set when unit `u` samples (its coordinate slots are read).
     tex_units: u8,
@@ -78,6 +86,7 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
         view: &'t DrawTextures<'t>,
         target: &'t mut Target<'f>,
         specialist: Option<&'t Specialist>,
+        buffers: &'t mut StageBuffers,
     ) -> Result<Self, FragmentError> {
         interp::check_key(&key, target)?;
         let specialist = specialist.filter(|s| *s.key() == key);
@@ -91,8 +100,7 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
             uniforms,
             textures,
             target,
-            batch: Vec::with_capacity(BATCH),
-            planes: Vec::with_capacity(BATCH),
+            buffers,
             planes_len: 0,
             tex_units: key.shade.map_or(0, |s| {
                 (0..MAX_UNITS)
@@ -108,8 +116,8 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
         if self.count == 0 {
             return;
         }
-        let spans = &self.batch[..self.count];
-        let planes = &self.planes[..self.planes_len];
+        let spans = &self.buffers.batch[..self.count];
+        let planes = &self.buffers.planes[..self.planes_len];
         let r = match self.specialist {
             Some(s) => s.run_with_view(&self.uniforms, (self.textures, self.view), spans, planes, self.target),
             None => interp::run_with_planes(&self.key, &self.uniforms, self.textures, spans, planes, self.target),
@@ -127,7 +135,7 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
     fn flush(&mut self) {
         self.run();
         if self.planes_len > 1 {
-            let (head, tail) = self.planes.split_at_mut(self.planes_len - 1);
+            let (head, tail) = self.buffers.planes.split_at_mut(self.planes_len - 1);
             let (to, from) = (&mut head[0].coeffs, &tail[0].coeffs);
             to[..slot::TEX0].copy_from_slice(&from[..slot::TEX0]);
             for u in (0..MAX_UNITS).filter(|&u| self.tex_units & (1 << u) != 0) {
@@ -150,11 +158,11 @@ impl SpanSink for FragmentStage<'_, '_> {
         if span.live_mask() == 0 {
             return;
         }
-        if self.count == self.batch.len() {
-            self.batch.push(FragmentSpan::new(0, 0));
+        if self.count == self.buffers.batch.len() {
+            self.buffers.batch.push(FragmentSpan::new(0, 0));
         }
         // Only what the stages read is copied: with planes, the header.
-        let s = &mut self.batch[self.count];
+        let s = &mut self.buffers.batch[self.count];
         (s.x, s.y, s.len, s.mask) = (span.x, span.y, span.len, span.mask);
         s.planes = self.planes_len.saturating_sub(1) as u32;
         if self.span_color {
@@ -175,10 +183,10 @@ impl SpanSink for FragmentStage<'_, '_> {
             self.run();
             self.planes_len = 0;
         }
-        if self.planes_len == self.planes.len() {
-            self.planes.push(Planes::default());
+        if self.planes_len == self.buffers.planes.len() {
+            self.buffers.planes.push(Planes::default());
         }
         self.planes_len += 1;
-        Some(&mut self.planes[self.planes_len - 1])
+        Some(&mut self.buffers.planes[self.planes_len - 1])
     }
 }

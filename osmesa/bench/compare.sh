@@ -17,7 +17,7 @@ set -e
 here=$(cd "$(dirname "$0")" && pwd)
 lib=${SOFTGL_LIB:-$here/../../target/release/osmesa}
 rounds=${1:-3}; [ $# -gt 0 ] && shift
-cases=${*:-fill quads200 tris ops xor thrash tex lit litlist clear clearall create}
+cases=${*:-fill quads200 tris ops xor thrash tex lit litlist lit16 lit16list clear clearall create}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 bin=$tmp/fill
 [ -e "$lib/libOSMesa.so.8" ] || { echo "no softgl library at $lib/libOSMesa.so.8 (cargo build --release -p softgl-osmesa, or SOFTGL_LIB=DIR)" >&2; exit 1; }

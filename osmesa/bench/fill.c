@@ -34,6 +34,10 @@
  *            poles), not the 1.6 M the numbers suggest;
  *   litlist  the same sphere compiled once into a display list (outside the
  *            timed frames) and called each frame (Mtri/s);
+ *   lit16    the lit frame at the size the issue means: a sphere of 1000
+ *            slices x 800 stacks made here as GLU makes its (quad strips from
+ *            the +z pole, normals per vertex), 1,600,000 triangles (Mtri/s);
+ *   lit16list the same compiled once into a display list and called each frame;
  *   clear    glClear(GL_COLOR_BUFFER_BIT) + glFinish; a sample is 20 of them,
  *            the figure the time of one;
  *   clearall the same with colour, depth and stencil;
@@ -60,21 +64,11 @@ OSMesaContext OSMesaCreateContextExt(GLenum format, GLint depth, GLint stencil, 
 GLboolean OSMesaMakeCurrent(OSMesaContext ctx, void *buffer, GLenum type, GLsizei width, GLsizei height);
 void OSMesaDestroyContext(OSMesaContext ctx);
 #endif
-#ifndef NO_GLU
-#include <GL/glu.h>
-#else
 #include <math.h>
 #include <stdlib.h>
-typedef int GLUquadric;
-static GLUquadric *gluNewQuadric(void){ static GLUquadric q; return &q; }
-static void gluPerspective(double fovy, double aspect, double n, double f){
-  double y=n*tan(fovy*3.14159265358979/360); glFrustum(-y*aspect,y*aspect,-y,y,n,f); }
-/* Only the camera used here: at (0,0,z) looking at the origin, y up. */
-static void gluLookAt(double ex,double ey,double ez,double cx,double cy,double cz,double ux,double uy,double uz){
-  (void)ex;(void)ey;(void)cx;(void)cy;(void)cz;(void)ux;(void)uy;(void)uz; glTranslated(0,0,-ez); }
-/* As GLU's: slices and stacks clamped to 239, quad strips from the +z pole. */
-static void gluSphere(GLUquadric *q, double r, int slices, int stacks){
-  (void)q; if(slices>239) slices=239; if(stacks>239) stacks=239;
+/* A sphere of `slices` x `stacks` quad strips from the +z pole, as GLU's
+ * gluSphere makes it (without its clamp to 239). */
+static void strip_sphere(double r, int slices, int stacks){
   float *sn=malloc(sizeof(float)*2*(slices+stacks+2)), *cs=sn+slices+1, *sp=cs+slices+1, *cp=sp+stacks+1;
   for(int i=0;i<=slices;i++){ double t=2*3.14159265358979*(i%slices)/slices; sn[i]=(float)sin(t); cs[i]=(float)cos(t); }
   for(int j=0;j<=stacks;j++){ double p=3.14159265358979*j/stacks; sp[j]=(float)sin(p); cp[j]=(float)cos(p); }
@@ -86,6 +80,20 @@ static void gluSphere(GLUquadric *q, double r, int slices, int stacks){
     glEnd();
   }
   free(sn);
+}
+#ifndef NO_GLU
+#include <GL/glu.h>
+#else
+typedef int GLUquadric;
+static GLUquadric *gluNewQuadric(void){ static GLUquadric q; return &q; }
+static void gluPerspective(double fovy, double aspect, double n, double f){
+  double y=n*tan(fovy*3.14159265358979/360); glFrustum(-y*aspect,y*aspect,-y,y,n,f); }
+/* Only the camera used here: at (0,0,z) looking at the origin, y up. */
+static void gluLookAt(double ex,double ey,double ez,double cx,double cy,double cz,double ux,double uy,double uz){
+  (void)ex;(void)ey;(void)cx;(void)cy;(void)cz;(void)ux;(void)uy;(void)uz; glTranslated(0,0,-ez); }
+/* As GLU's: slices and stacks clamped to 239, quad strips from the +z pole. */
+static void gluSphere(GLUquadric *q, double r, int slices, int stacks){
+  (void)q; strip_sphere(r, slices>239?239:slices, stacks>239?239:stacks);
 }
 #endif
 #include <stdio.h>
@@ -217,12 +225,14 @@ int main(int argc,char**argv){
     GLfloat fogc[4]={0.5f,0.6f,0.7f,1}; glFogfv(GL_FOG_COLOR,fogc);
     glVertexPointer(3,GL_FLOAT,0,tri); glColorPointer(3,GL_FLOAT,0,col); glTexCoordPointer(2,GL_FLOAT,0,tc);
     glEnableClientState(GL_VERTEX_ARRAY); glEnableClientState(GL_COLOR_ARRAY); glEnableClientState(GL_TEXTURE_COORD_ARRAY); }
-  else if(!strcmp(c,"lit")||!strcmp(c,"litlist")){ glEnable(GL_DEPTH_TEST); glEnable(GL_LIGHTING); glEnable(GL_LIGHT0);
+  else if(!strncmp(c,"lit",3)){ glEnable(GL_DEPTH_TEST); glEnable(GL_LIGHTING); glEnable(GL_LIGHT0);
     GLfloat p[4]={1,1,2,0}; glLightfv(GL_LIGHT0,GL_POSITION,p);
     GLfloat red[4]={0.8f,0.2f,0.2f,1}; glMaterialfv(GL_FRONT_AND_BACK,GL_AMBIENT_AND_DIFFUSE,red);
     glMatrixMode(GL_PROJECTION); gluPerspective(40,1,1,20); glMatrixMode(GL_MODELVIEW); gluLookAt(0,0,5,0,0,0,0,1,0);
-    sphere=1; work=2.0*239*239; unit="Mtri/s";
-    if(!strcmp(c,"litlist")){ glNewList(1,GL_COMPILE); gluSphere(q,1.5,1000,800); glEndList(); sphere=2; } }
+    int big=!strncmp(c,"lit16",5), list=strstr(c,"list")!=NULL;
+    if(strcmp(c,"lit")&&strcmp(c,"litlist")&&strcmp(c,"lit16")&&strcmp(c,"lit16list")){ fprintf(stderr,"unknown case %s\n",c); return 2; }
+    sphere=big?3:1; work=big?2.0*1000*800:2.0*239*239; unit="Mtri/s";
+    if(list){ glNewList(1,GL_COMPILE); if(big) strip_sphere(1.5,1000,800); else gluSphere(q,1.5,1000,800); glEndList(); sphere=2; } }
   else if(!strcmp(c,"clear")){ clear=GL_COLOR_BUFFER_BIT; }
   else if(!strcmp(c,"clearall")){ clear=GL_COLOR_BUFFER_BIT|GL_DEPTH_BUFFER_BIT|GL_STENCIL_BUFFER_BIT; }
   else if(!strcmp(c,"create")){ }
@@ -243,6 +253,7 @@ int main(int argc,char**argv){
       else if(!strcmp(c,"quads200")) quads(200,0);
       else if(!strcmp(c,"thrash")) for(int i=0;i<STATES;i++){ thrash_state(i); glDrawArrays(GL_TRIANGLES,i*PER_STATE*3,PER_STATE*3); }
       else if(sphere==1) gluSphere(q,1.5,1000,800);
+      else if(sphere==3) strip_sphere(1.5,1000,800);
       else if(sphere==2) glCallList(1);
       else glDrawArrays(GL_TRIANGLES,0,20000*3);
       glFinish();

@@ -13,9 +13,9 @@
 //! pixels are those of the whole primitive at once.
 
 use super::{reach_box, triangle_box, PrimSink, Rasterize, RasterParams, RasterVertex};
-use crate::fragment::FragmentStage;
+use crate::fragment::{FragmentStage, StageBuffers};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
-use crate::geometry::varying::Varyings;
+use crate::geometry::varying::{Varyings, MAX_VARYINGS};
 use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::texture::TextureSet;
 use softgl_jit::{DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Specialist, Target};
@@ -41,42 +41,88 @@ pub struct DrawState {
     pub textures: SharedPlan,
 }
 
-/// One recorded primitive, as the geometry stage handed it over.
-#[derive(Clone, Debug)]
-enum Prim {
-    Triangle {
-        v: [RasterVertex; 3],
-        flat: Option<Box<Varyings>>,
-    },
-    Line {
-        v: [RasterVertex; 2],
-        width: f32,
-        flat: Option<Box<Varyings>>,
-    },
-    Point {
-        v: RasterVertex,
-        size: f32,
-    },
+/// A recorded vertex's window position, depth and 1/w; its varyings (the
+/// layout's, no more) are in [`Scene::vary`].
+#[derive(Clone, Copy, Debug)]
+struct Vert {
+    x: f32,
+    y: f32,
+    y_down: f32,
+    inv_w: f32,
+    z: f64,
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Copy, Debug)]
+enum Kind {
+    Triangle,
+    Line { width: f32 },
+    Point { size: f32 },
+}
+
+impl Kind {
+    fn vertices(self) -> usize {
+        match self {
+            Kind::Triangle => 3,
+            Kind::Line { .. } => 2,
+            Kind::Point { .. } => 1,
+        }
+    }
+}
+
+impl DrawState {
+    /// Whether `other`'s fragments run exactly as this draw's: the same key,
+    /// uniforms and specialist, and no textures (textured draws are not
+    /// compared: their texels may differ).
+    fn same_as(&self, other: &DrawState) -> bool {
+        self.key == other.key
+            && self.uniforms == other.uniforms
+            && match (&self.specialist, &other.specialist) {
+                (Some(a), Some(b)) => Arc::ptr_eq(a, b),
+                (None, None) => true,
+                _ => false,
+            }
+            && self.textures.is_empty()
+            && other.textures.is_empty()
+    }
+}
+
+/// One recorded primitive, as the geometry stage handed it over: 64 bytes
+/// and its vertices (24 bytes and 4 per varying of the layout each), where a
+/// copy of its `RasterVertex`es is 224 bytes each (copying those was a fifth
+/// of the 1.6 M-triangle lit frame, `perf`).
+#[derive(Clone, Copy, Debug)]
 struct Binned {
     draw: u32,
+    kind: Kind,
+    /// Its first vertex in `verts`.
+    first: u32,
+    /// Where its varyings start in `vary`: `n` (the layout's length) for
+    /// each vertex, then `n` flat ones when `flat`.
+    vary: u32,
+    flat: bool,
     params: RasterParams,
-    prim: Prim,
 }
 
-impl Binned {
-    /// Rasterizes the primitive's pixels inside `tile` into `sink`.
-    fn rasterize(&self, tile: Rect, sink: &mut dyn PrimSink) {
-        let params = RasterParams {
-            bounds: self.params.bounds.intersect(tile),
-            ..self.params
+/// A band's room to rebuild a primitive's vertices in (reused: no 700
+/// bytes zeroed and copied per primitive and tile).
+struct Scratch {
+    v: [RasterVertex; 3],
+    flat: Varyings,
+}
+
+impl Default for Scratch {
+    fn default() -> Self {
+        let v = RasterVertex {
+            x: 0.0,
+            y: 0.0,
+            y_down: 0.0,
+            z: 0.0,
+            inv_w: 1.0,
+            v: [0.0; MAX_VARYINGS],
         };
-        match &self.prim {
-            Prim::Triangle { v, flat } => sink.triangle([&v[0], &v[1], &v[2]], flat.as_deref(), &params),
-            Prim::Line { v, width, flat } => sink.line(&v[0], &v[1], *width, flat.as_deref(), &params),
-            Prim::Point { v, size } => sink.point(v, *size, &params),
+        Scratch {
+            v: [v; 3],
+            flat: [0.0; MAX_VARYINGS],
         }
     }
 }
@@ -89,6 +135,9 @@ pub struct Scene {
     tiles_x: u32,
     draws: Vec<DrawState>,
     prims: Vec<Binned>,
+    verts: Vec<Vert>,
+    /// The varyings of `verts` and of flat primitives, the layout's slots only.
+    vary: Vec<f32>,
     clears: Vec<Clear>,
     /// Per tile, row by row from the bottom: entries into `prims`, or into
     /// `clears` with [`CLEAR`] set, in the order recorded.
@@ -201,6 +250,8 @@ impl Scene {
         self.flushes += 1;
         self.draws.clear();
         self.prims.clear();
+        self.verts.clear();
+        self.vary.clear();
         self.clears.clear();
         for b in &mut self.bins {
             b.clear();
@@ -223,8 +274,43 @@ impl Scene {
         results.into_iter().collect()
     }
 
+    /// Rasterizes `p`'s pixels inside `tile` into `sink`, rebuilding its
+    /// vertices in `scratch`.
+    fn rasterize(&self, p: &Binned, tile: Rect, scratch: &mut Scratch, sink: &mut dyn PrimSink) {
+        let params = RasterParams {
+            bounds: p.params.bounds.intersect(tile),
+            ..p.params
+        };
+        let flat = self.rebuild(p, scratch);
+        let (v, f) = (&scratch.v, flat.then_some(&scratch.flat));
+        match p.kind {
+            Kind::Triangle => sink.triangle([&v[0], &v[1], &v[2]], f, &params),
+            Kind::Line { width } => sink.line(&v[0], &v[1], width, f, &params),
+            Kind::Point { size } => sink.point(&v[0], size, &params),
+        }
+    }
+
+    /// Writes `p`'s vertices (and flat varyings; returns whether it has
+    /// them) into `out` as the geometry stage handed them over. Only the
+    /// layout's slots are written: the rasterizer reads no others.
+    fn rebuild(&self, p: &Binned, out: &mut Scratch) -> bool {
+        let n = p.params.layout.len();
+        let (first, vary) = (p.first as usize, p.vary as usize);
+        let k = p.kind.vertices();
+        for (i, (q, o)) in self.verts[first..first + k].iter().zip(&mut out.v).enumerate() {
+            (o.x, o.y, o.y_down, o.z, o.inv_w) = (q.x, q.y, q.y_down, q.z, q.inv_w);
+            o.v[..n].copy_from_slice(&self.vary[vary + i * n..][..n]);
+        }
+        if p.flat {
+            out.flat[..n].copy_from_slice(&self.vary[vary + k * n..][..n]);
+        }
+        p.flat
+    }
+
     /// Runs the tiles of row `ty` into `band`, its rows of the framebuffer.
     fn run_band(&self, ty: u32, band: &mut Target<'_>, sets: &[TextureSet<'_>]) -> Result<(), FragmentError> {
+        let mut scratch = Box::<Scratch>::default();
+        let mut buffers = StageBuffers::default();
         let mut views: Vec<Option<DrawTextures<'_>>> = Vec::new();
         views.resize_with(self.draws.len(), || None);
         let mut first_error = None;
@@ -255,10 +341,11 @@ impl Scene {
                 let view = views[d].get_or_insert_with(|| {
                     specialist.map_or(DrawTextures::None, |s| s.texture_view(&sets[d]))
                 });
-                let r = FragmentStage::new(draw.key, draw.uniforms, &sets[d], view, band, specialist).and_then(
+                let r = FragmentStage::new(draw.key, draw.uniforms, &sets[d], view, band, specialist, &mut buffers).and_then(
                     |mut stage| {
                         for &e in &bin[i..end] {
-                            self.prims[e as usize].rasterize(tile, &mut Rasterize(&mut stage));
+                            let p = &self.prims[e as usize];
+                            self.rasterize(p, tile, &mut scratch, &mut Rasterize(&mut stage));
                         }
                         stage.finish()
                     },
@@ -291,10 +378,17 @@ impl Binner<'_> {
         self.error.map_or(Ok(()), Err)
     }
 
-    fn record(&mut self, r: Option<Rect>, params: &RasterParams, prim: Prim) {
+    fn record(&mut self, r: Option<Rect>, params: &RasterParams, kind: Kind, v: &[&RasterVertex], flat: Option<&Varyings>) {
         let Some(r) = r else { return };
         let draw = match self.draw {
             Some(d) => d,
+            // The scene's last draw runs with the same state: its primitives
+            // join it (a strip per glBegin/glEnd is one run of a tile).
+            None if self.scene.draws.last().is_some_and(|last| last.same_as(&self.state)) => {
+                let d = self.scene.draws.len() as u32 - 1;
+                self.draw = Some(d);
+                d
+            }
             None => {
                 let d = self.scene.draws.len() as u32;
                 self.scene.bytes += std::mem::size_of::<DrawState>();
@@ -303,22 +397,38 @@ impl Binner<'_> {
                 d
             }
         };
-        let entry = self.scene.prims.len() as u32;
-        self.scene.bytes += std::mem::size_of::<Binned>()
-            + match &prim {
-                Prim::Triangle { flat: Some(_), .. } | Prim::Line { flat: Some(_), .. } => {
-                    std::mem::size_of::<Varyings>()
-                }
-                _ => 0,
-            };
-        self.scene.prims.push(Binned {
+        let scene = &mut *self.scene;
+        let n = params.layout.len();
+        let (first, vary) = (scene.verts.len() as u32, scene.vary.len() as u32);
+        for v in v {
+            scene.verts.push(Vert {
+                x: v.x,
+                y: v.y,
+                y_down: v.y_down,
+                inv_w: v.inv_w,
+                z: v.z,
+            });
+            scene.vary.extend_from_slice(&v.v[..n]);
+        }
+        if let Some(f) = flat {
+            scene.vary.extend_from_slice(&f[..n]);
+        }
+        let flat = flat.is_some();
+        let entry = scene.prims.len() as u32;
+        scene.prims.push(Binned {
             draw,
+            kind,
+            first,
+            vary,
+            flat,
             params: *params,
-            prim,
         });
-        self.scene.bin(r, entry);
-        if self.scene.bytes > self.scene.bound() {
-            if let Err(e) = self.scene.flush(self.fb, self.threads) {
+        scene.bytes += std::mem::size_of::<Binned>()
+            + v.len() * std::mem::size_of::<Vert>()
+            + (v.len() + usize::from(flat)) * n * 4;
+        scene.bin(r, entry);
+        if scene.bytes > scene.bound() {
+            if let Err(e) = scene.flush(self.fb, self.threads) {
                 self.error.get_or_insert(e);
             }
             self.draw = None;
@@ -329,27 +439,31 @@ impl Binner<'_> {
 impl PrimSink for Binner<'_> {
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
         let r = triangle_box(v, params);
-        let prim = Prim::Triangle {
-            v: v.map(|v| *v),
-            flat: flat.map(|f| Box::new(*f)),
-        };
-        self.record(r, params, prim);
+        self.record(r, params, Kind::Triangle, &v, flat);
     }
 
     fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
         let reach = super::line::line_width_pixels(width) as f32 / 2.0 + 1.0;
         let r = reach_box(&[(a.x, a.y), (b.x, b.y)], reach, params.bounds);
-        let prim = Prim::Line {
-            v: [*a, *b],
-            width,
-            flat: flat.map(|f| Box::new(*f)),
-        };
-        self.record(r, params, prim);
+        self.record(r, params, Kind::Line { width }, &[a, b], flat);
     }
 
     fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
         let reach = super::point::point_size_pixels(size) as f32 / 2.0 + 1.0;
         let r = reach_box(&[(v.x, v.y)], reach, params.bounds);
-        self.record(r, params, Prim::Point { v: *v, size });
+        self.record(r, params, Kind::Point { size }, &[v], None);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// What a recorded primitive costs, against a copy of its vertices.
+    #[test]
+    fn a_recorded_triangle_is_smaller_than_its_raster_vertices() {
+        let recorded = std::mem::size_of::<Binned>() + 3 * std::mem::size_of::<Vert>();
+        let copied = 3 * std::mem::size_of::<RasterVertex>();
+        assert!(recorded * 4 < copied, "{recorded} bytes recorded, {copied} copied");
     }
 }

@@ -236,6 +236,11 @@ pub struct SharedPlan {
 }
 
 impl SharedPlan {
+    /// Whether no unit samples.
+    pub fn is_empty(&self) -> bool {
+        self.mask == 0
+    }
+
     /// The plan again, viewing the texels held.
     pub fn plan(&self) -> TexturePlan<'_> {
         TexturePlan {
