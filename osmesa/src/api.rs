@@ -202,7 +202,9 @@ pub unsafe extern "C" fn OSMesaGetDepthBuffer(
     bytes_per_value: *mut i32,
     buffer: *mut *mut c_void,
 ) -> u8 {
-    let r = guard(None, || lookup(handle(ctx)).and_then(|c| lock(&c).depth_buffer()));
+    let r = guard(None, || {
+        with_context(&lookup(handle(ctx))?, OsContext::depth_buffer).flatten()
+    });
     let v = r.unwrap_or(DepthView {
         width: 0,
         height: 0,
@@ -233,10 +235,11 @@ pub unsafe extern "C" fn OSMesaGetColorBuffer(
     buffer: *mut *mut c_void,
 ) -> u8 {
     let r = guard(None, || {
-        let shared = lookup(handle(ctx))?;
-        let os = lock(&shared);
-        os.binding()
-            .map(|b| (b.width, b.height, os.format() as i32, b.ptr.cast::<c_void>()))
+        with_context(&lookup(handle(ctx))?, |os| {
+            os.binding()
+                .map(|b| (b.width, b.height, os.format() as i32, b.ptr.cast::<c_void>()))
+        })
+        .flatten()
     });
     let (w, h, f, p) = r.unwrap_or((0, 0, 0, std::ptr::null_mut()));
     // SAFETY: the caller's output pointers are NULL or writable.
