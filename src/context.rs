@@ -989,8 +989,19 @@ impl Context {
     #[inline]
     pub fn color4(&mut self, r: f32, g: f32, b: f32, a: f32) {
         self.current.color = Vec4::new(r, g, b, a);
-        self.state.lighting.track_color(self.current.color);
+        // (Checked here so that the call, and its loop, stay out of the
+        // inlined attribute call while `GL_COLOR_MATERIAL` is off.)
+        if self.state.lighting.color_material {
+            self.track_color_material();
+        }
         self.format.attrib(immediate::COLOR, self.begun.is_some());
+    }
+
+    /// `GL_COLOR_MATERIAL`'s materials follow the current colour.
+    #[cold]
+    #[inline(never)]
+    fn track_color_material(&mut self) {
+        self.state.lighting.track_color(self.current.color);
     }
 
     #[inline]

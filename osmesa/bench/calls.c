@@ -12,8 +12,9 @@
  * Prints per case the median over the repetitions of ns per call; the vertex
  * cases time the calls between glBegin and glEnd only and print glEnd's cost per
  * vertex beside them (clipping the points away: the draw path's, not the ABI's).
- * For instructions per call: valgrind --tool=callgrind /tmp/calls color3f 1000000 1,
- * then again with 2000000, and divide the difference by 1 million. */
+ * Instructions per call: run `valgrind --tool=callgrind /tmp/calls color3f 200000 1`
+ * and again with 400000, and divide the difference of the totals by 220000 (each
+ * run adds a tenth as warm-up); the benchmark's own loop counts 11 of them. */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
 #include <GL/gl.h>

@@ -4,6 +4,7 @@
 # interleaved round by round; prints the median of
 # the rounds' medians per case and the ratio softgl / llvmpipe. Not a test.
 #   cargo build --release -p softgl-osmesa && sh osmesa/bench/compare.sh [ROUNDS] [CASES...]
+# (The cost of one attribute call, glColor3f, glVertex3f, ...: osmesa/bench/calls.c, run as its header says.)
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 lib=${SOFTGL_LIB:-$here/../../target/release/osmesa}

@@ -29,9 +29,12 @@
 //! current stays valid here until released: the slot holds its `Arc`.
 //!
 //! Cost, measured with `osmesa/bench/calls.c` (callgrind, instructions per
-//! `glColor3f` call including the caller's loop): 157 with a `RefCell`, a
-//! `Mutex` lock and `catch_unwind` per call, ATTRIB_AFTER with the fast path;
-//! Mesa 22's llvmpipe takes 30.
+//! `glColor3f` call, the benchmark's loop's 11 included): 157 with a
+//! thread-local `RefCell`, a `Mutex` lock and `catch_unwind` per call; 57
+//! with the lock held while current and a `thread_local!` pointer
+//! ([`attrib`]; its `__tls_get_addr` call and the spills around it take 20:
+//! see `fast` for the static-TLS form that saved them but broke `dlopen`);
+//! Mesa 22's llvmpipe takes 30. In time: see the commit messages.
 
 use crate::consts::*;
 use crate::convert::UserFormat;
@@ -516,7 +519,7 @@ pub fn clear_current_if(h: usize) {
 /// This thread's current context.
 pub fn current_handle() -> Option<usize> {
     CURRENT
-        .try_with(|slot| slot.try_borrow().ok()?.as_ref().map(|c| c.handle))
+        .try_with(|slot| slot.try_borrow().ok()?.0.as_ref().map(|c| c.handle))
         .ok()
         .flatten()
 }
@@ -586,97 +589,151 @@ impl Drop for Current {
 
 thread_local! {
     /// This thread's current context.
-    static CURRENT: RefCell<Option<Current>> = const { RefCell::new(None) };
+    static CURRENT: RefCell<Slot> = const { RefCell::new(Slot(None)) };
 }
 
 /// `FAST`, the current context for [`attrib`]: `CURRENT`'s `os`, or null
 /// when there is none or `CURRENT` is borrowed (a call on the context is
-/// running). Always there while the thread runs (no destructor).
+/// running).
 ///
-/// On x86-64 Linux a word of the static TLS block (initial-exec, as Mesa's
-/// current context): reading it is one `fs`-relative load, where a
-/// `thread_local!` of a shared library calls `__tls_get_addr` (11
-/// instructions, and a call that spills the caller's arguments: 20 of the
-/// 46 instructions a `glColor3f` took with it). glibc keeps room in the
-/// static block for such variables of libraries loaded later (`dlopen`).
-#[cfg(all(target_arch = "x86_64", target_os = "linux"))]
+/// Each thread keeps it in a `thread_local!` `Cell` (no destructor: always
+/// there while the thread runs), which in a shared library costs a
+/// `__tls_get_addr` call and the spills around it: 20 of the 57 instructions
+/// a `glColor3f` took. So while exactly one thread has a context current —
+/// the usual program — that thread also keeps it in `SOLE`, a global, with
+/// its thread pointer in `SOLE_TP`; [`get`] compares the running thread's
+/// pointer (`fs:0` on x86-64, `tpidr_el0` on AArch64: one instruction) with
+/// `SOLE_TP` first. Why a thread that reads its own pointer in `SOLE_TP`
+/// finds its own `FAST` in `SOLE`:
+/// - `SOLE_TP` is set (to its own pointer) only by a thread whose slot gets
+///   a context while no other thread has one (`transition`, under `CLAIMS`),
+///   and a thread's slot emptying, here or at its exit, clears its own claim;
+/// - so while a thread has a context current no other thread claims; one
+///   that gets a context too only clears `SOLE_TP` (never `SOLE`);
+/// - `SOLE` is written only by the claimant: at its claim, at its unclaim,
+///   and by [`set`] when it finds its pointer in `SOLE_TP` (its own earlier
+///   write, or a stale read of it while `SOLE` is still its own).
+///
+/// Tried and rejected: `FAST` in the static TLS block (initial-exec, as
+/// Mesa's current context; `global_asm!` and an `fs`-relative load). It
+/// marks the whole library `STATIC_TLS`, and its 9 KB of thread-locals
+/// (std's, the JIT's) do not fit the room glibc keeps for libraries loaded
+/// later: `dlopen` (PyOpenGL, ctypes) failed with "cannot allocate memory in
+/// static TLS block".
 mod fast {
-    use super::OsContext;
-
-    std::arch::global_asm!(
-        ".pushsection .tbss.softgl_osmesa_fast,\"awT\",@nobits",
-        ".p2align 3",
-        ".globl softgl_osmesa_fast",
-        ".hidden softgl_osmesa_fast",
-        ".type softgl_osmesa_fast,@object",
-        ".size softgl_osmesa_fast,8",
-        "softgl_osmesa_fast:",
-        ".zero 8",
-        ".popsection",
-    );
-
-    #[inline(always)]
-    pub fn get() -> *mut OsContext {
-        let p: *mut OsContext;
-        // SAFETY: loads this thread's 8 bytes of the static TLS block (its
-        // offset from the GOT), which exist while the thread runs; no other
-        // memory is touched.
-        unsafe {
-            std::arch::asm!(
-                "mov {p}, qword ptr [rip + softgl_osmesa_fast@GOTTPOFF]",
-                "mov {p}, qword ptr fs:[{p}]",
-                p = out(reg) p,
-                options(nostack, readonly, preserves_flags),
-            );
-        }
-        p
-    }
-
-    #[inline(always)]
-    pub fn set(p: *mut OsContext) {
-        // SAFETY: stores into this thread's 8 bytes of the static TLS block,
-        // as `get` reads them; nothing else is written.
-        unsafe {
-            std::arch::asm!(
-                "mov {t}, qword ptr [rip + softgl_osmesa_fast@GOTTPOFF]",
-                "mov qword ptr fs:[{t}], {p}",
-                t = out(reg) _,
-                p = in(reg) p,
-                options(nostack, preserves_flags),
-            );
-        }
-    }
-}
-
-/// `FAST` elsewhere: a `thread_local!` `Cell` without destructor.
-#[cfg(not(all(target_arch = "x86_64", target_os = "linux")))]
-mod fast {
-    use super::OsContext;
+    use super::{lock, OsContext};
     use std::cell::Cell;
+    use std::sync::atomic::{AtomicPtr, AtomicUsize, Ordering::Relaxed};
+    use std::sync::Mutex;
 
     thread_local! {
         static FAST: Cell<*mut OsContext> = const { Cell::new(std::ptr::null_mut()) };
     }
 
+    /// The sole thread with a current context: its `FAST` and thread pointer.
+    static SOLE: AtomicPtr<OsContext> = AtomicPtr::new(std::ptr::null_mut());
+    static SOLE_TP: AtomicUsize = AtomicUsize::new(0);
+    /// How many threads have a context current; held while claiming.
+    static CLAIMS: Mutex<usize> = Mutex::new(0);
+
+    /// The running thread's thread pointer: unique among live threads,
+    /// never 0. `None` where it is not read (no `SOLE` there).
+    #[inline(always)]
+    fn tp() -> Option<usize> {
+        #[cfg(all(target_arch = "x86_64", target_os = "linux"))]
+        {
+            let tp: usize;
+            // SAFETY: loads the TCB's self pointer, which the x86-64 TLS
+            // ABI keeps at `fs:0` for every thread; touches nothing else.
+            unsafe {
+                std::arch::asm!("mov {}, qword ptr fs:[0]", out(reg) tp,
+                    options(nostack, readonly, preserves_flags));
+            }
+            Some(tp)
+        }
+        #[cfg(all(target_arch = "aarch64", target_os = "linux"))]
+        {
+            let tp: usize;
+            // SAFETY: reads the thread pointer register; no memory.
+            unsafe {
+                std::arch::asm!("mrs {}, tpidr_el0", out(reg) tp, options(nostack, nomem, preserves_flags));
+            }
+            Some(tp)
+        }
+        #[cfg(not(all(any(target_arch = "x86_64", target_arch = "aarch64"), target_os = "linux")))]
+        {
+            None
+        }
+    }
+
+    /// This thread's `FAST`.
     #[inline(always)]
     pub fn get() -> *mut OsContext {
+        if let Some(tp) = tp() {
+            if SOLE_TP.load(Relaxed) == tp {
+                return SOLE.load(Relaxed);
+            }
+        }
         FAST.with(Cell::get)
     }
 
-    #[inline(always)]
+    /// Sets this thread's `FAST` (and `SOLE` when this thread is the claimant).
     pub fn set(p: *mut OsContext) {
         FAST.with(|fast| fast.set(p));
+        if tp().is_some_and(|tp| SOLE_TP.load(Relaxed) == tp) {
+            SOLE.store(p, Relaxed);
+        }
+    }
+
+    /// This thread's slot got a context (`current`, with `FAST` = `p`) or
+    /// lost it: counts it, and claims `SOLE` when no other thread has one.
+    pub fn transition(current: bool, p: *mut OsContext) {
+        let Some(me) = tp() else {
+            return;
+        };
+        let mut threads = lock(&CLAIMS);
+        if current {
+            *threads += 1;
+            if *threads == 1 {
+                SOLE.store(p, Relaxed);
+                SOLE_TP.store(me, Relaxed);
+            } else {
+                SOLE_TP.store(0, Relaxed);
+            }
+        } else {
+            *threads = threads.saturating_sub(1);
+            if SOLE_TP.load(Relaxed) == me {
+                SOLE_TP.store(0, Relaxed);
+                SOLE.store(std::ptr::null_mut(), Relaxed);
+            }
+        }
     }
 }
 
-/// The borrowed slot: `FAST` is null meanwhile and set from the slot again
-/// when this drops (after a panic too).
-struct SlotBorrow<'a>(RefMut<'a, Option<Current>>);
+/// The borrowed slot (and whether it held a context): `FAST` is null
+/// meanwhile and set from the slot again when this drops (after a panic
+/// too).
+struct SlotBorrow<'a>(RefMut<'a, Slot>, bool);
 
 impl Drop for SlotBorrow<'_> {
     fn drop(&mut self) {
-        let os = self.0.as_ref().map_or(std::ptr::null_mut(), |c| c.os);
+        let os = self.0 .0.as_ref().map_or(std::ptr::null_mut(), |c| c.os);
         fast::set(os);
+        if self.0 .0.is_some() != self.1 {
+            fast::transition(self.0 .0.is_some(), os);
+        }
+    }
+}
+
+/// A thread's slot: its current context, if any.
+struct Slot(Option<Current>);
+
+impl Drop for Slot {
+    /// At thread exit: the thread has no context current any more.
+    fn drop(&mut self) {
+        if self.0.is_some() {
+            fast::transition(false, std::ptr::null_mut());
+        }
     }
 }
 
@@ -687,9 +744,11 @@ impl Drop for SlotBorrow<'_> {
 fn with_slot<R>(f: impl FnOnce(&mut Option<Current>) -> R) -> Option<R> {
     CURRENT
         .try_with(|slot| {
-            let mut slot = SlotBorrow(slot.try_borrow_mut().ok()?);
+            let slot = slot.try_borrow_mut().ok()?;
+            let had = slot.0.is_some();
+            let mut slot = SlotBorrow(slot, had);
             fast::set(std::ptr::null_mut());
-            Some(f(&mut slot.0))
+            Some(f(&mut slot.0 .0))
         })
         .ok()
         .flatten()
