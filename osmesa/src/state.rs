@@ -31,10 +31,12 @@
 //! Cost, measured with `osmesa/bench/calls.c` (callgrind, instructions per
 //! `glColor3f` call, the benchmark's loop's 11 included): 157 with a
 //! thread-local `RefCell`, a `Mutex` lock and `catch_unwind` per call; 57
-//! with the lock held while current and a `thread_local!` pointer
-//! ([`attrib`]; its `__tls_get_addr` call and the spills around it take 20:
-//! see `fast` for the static-TLS form that saved them but broke `dlopen`);
-//! Mesa 22's llvmpipe takes 30. In time: see the commit messages.
+//! with the lock held while current and a `thread_local!` pointer (its
+//! `__tls_get_addr` call and the spills around it took 20); 39 with the
+//! pointer in a global while one thread has a context current (`fast`), as
+//! [`attrib`] reads it now; Mesa 22's llvmpipe takes 30. In time (10 million
+//! calls, median of 5 repetitions, 5 interleaved runs, 2 loaded cores):
+//! 24-34 ns before, 4.1-9 ns (median 4.8) after, Mesa 4.6-8 (5.0).
 
 use crate::consts::*;
 use crate::convert::UserFormat;
@@ -817,7 +819,8 @@ pub fn attrib<F: FnOnce(&mut Context)>(f: F) -> Option<F> {
     if p.is_null() {
         return None;
     }
-    // SAFETY: a non-null `FAST` is this thread's current context, whose lock
+    // SAFETY: a non-null `fast::get()` is this thread's `FAST` (see `fast`
+    // for its `SOLE` copy): its current context, whose lock
     // this thread holds (`Current`). It is null while any other reference
     // to that context is live (`with_slot`) and from before the lock is
     // released (`Current::drop`), and `f` cannot reach the slot (it only
