@@ -1043,6 +1043,7 @@ impl Context {
     }
 
     /// `glVertex4f`: outside `begin`/`end` it is ignored, as in GL.
+    #[inline]
     pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) {
         let v = self.current.vertex(Vec4::new(x, y, z, w));
         if let Some(b) = &mut self.begun {
@@ -1055,48 +1056,68 @@ impl Context {
         }
     }
 
+    #[inline]
     pub fn vertex3(&mut self, x: f32, y: f32, z: f32) {
         self.vertex4(x, y, z, 1.0)
     }
 
+    #[inline]
     pub fn vertex2(&mut self, x: f32, y: f32) {
         self.vertex4(x, y, 0.0, 1.0)
     }
 
+    #[inline]
     pub fn color4(&mut self, r: f32, g: f32, b: f32, a: f32) {
         self.current.color = Vec4::new(r, g, b, a);
-        self.state.lighting.track_color(self.current.color);
+        // (Checked here so that the call, and its loop, stay out of the
+        // inlined attribute call while `GL_COLOR_MATERIAL` is off.)
+        if self.state.lighting.color_material {
+            self.track_color_material();
+        }
         self.format.attrib(immediate::COLOR, self.begun.is_some());
     }
 
+    /// `GL_COLOR_MATERIAL`'s materials follow the current colour.
+    #[cold]
+    #[inline(never)]
+    fn track_color_material(&mut self) {
+        self.state.lighting.track_color(self.current.color);
+    }
+
+    #[inline]
     pub fn color3(&mut self, r: f32, g: f32, b: f32) {
         self.color4(r, g, b, 1.0)
     }
 
     /// `glNormal3f`: kept as current state for lighting.
+    #[inline]
     pub fn normal3(&mut self, x: f32, y: f32, z: f32) {
         self.current.normal = Vec3::new(x, y, z);
     }
 
     /// `glIndexf`: the current colour index, kept for `GL_CURRENT_INDEX`
     /// (an RGBA context draws nothing with it).
+    #[inline]
     pub fn index(&mut self, c: f32) {
         self.current.index = c;
     }
 
     /// `glEdgeFlag`: whether the edges that start at the next vertices are
     /// boundary edges (polygon mode `Line`/`Point` draws only those).
+    #[inline]
     pub fn edge_flag(&mut self, flag: bool) {
         self.current.edge_flag = flag;
     }
 
     /// `glSecondaryColor3f` (GL 1.4): the current secondary colour, alpha 1.
+    #[inline]
     pub fn secondary_color3(&mut self, r: f32, g: f32, b: f32) {
         self.current.secondary = Vec4::new(r, g, b, 1.0);
         self.format.attrib(immediate::SECONDARY, self.begun.is_some());
     }
 
     /// `glFogCoordf` (GL 1.4): the current fog coordinate.
+    #[inline]
     pub fn fog_coord(&mut self, c: f32) {
         self.current.fog_coord = c;
     }

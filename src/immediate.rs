@@ -33,10 +33,18 @@ impl VertexFormat {
     /// (`vbo_exec_fixup_vertex` → `vbo_exec_wrap_upgrade_vertex`): a colour
     /// new to the format draws the buffered vertices first, and outside
     /// `begin`/`end` with more than 8 of them, it empties the format before.
+    #[inline]
     pub(crate) fn attrib(&mut self, bit: u8, inside: bool) {
         if self.attribs & bit != 0 {
             return;
         }
+        self.add(bit, inside);
+    }
+
+    /// [`VertexFormat::attrib`] for a colour not in the format yet: once per
+    /// format, out of the way of the attribute calls.
+    #[cold]
+    fn add(&mut self, bit: u8, inside: bool) {
         if !inside && self.buffered > 8 {
             self.reset();
         }
@@ -45,6 +53,7 @@ impl VertexFormat {
     }
 
     /// A vertex between `begin` and `end`.
+    #[inline]
     pub(crate) fn vertex(&mut self) {
         self.pos = true;
         self.buffered += 1;

@@ -90,8 +90,10 @@ pub extern "C" fn OSMesaDestroyContext(ctx: OSMesaContext) {
 
 /// `OSMesaMakeCurrent`: binds `buffer` (`width` × `height` pixels of `format`
 /// and `type`) to `ctx` and makes it current on this thread. `GL_FALSE` for an
-/// unknown context, a null buffer, a size outside `1..=16384` or a format and
-/// type Mesa refuses; the current context is then unchanged.
+/// unknown context, a null buffer, a size outside `1..=16384`, a format and
+/// type Mesa refuses, or a context current on another thread (GL allows one
+/// thread at a time; Mesa lets both race on it); the current context is then
+/// unchanged.
 /// `OSMesaMakeCurrent(NULL, NULL, …)` releases this thread's current context
 /// and returns `GL_TRUE`, as Mesa 22 does (whatever the type and size); a null
 /// context with a buffer is `GL_FALSE`.
@@ -190,7 +192,8 @@ unsafe fn put<T>(p: *mut T, v: T) {
 /// Without a depth buffer (or before the first `OSMesaMakeCurrent`):
 /// `GL_FALSE`, and zeros and `NULL` written to the outputs, as Mesa 22.3.6
 /// answers (measured for every depth and stencil size; Mesa itself crashes
-/// when asked before the first `OSMesaMakeCurrent`).
+/// when asked before the first `OSMesaMakeCurrent`). The same for a context
+/// current on another thread: only that thread may touch it then.
 ///
 /// # Safety
 /// Each output pointer is `NULL` or writable.
@@ -202,7 +205,9 @@ pub unsafe extern "C" fn OSMesaGetDepthBuffer(
     bytes_per_value: *mut i32,
     buffer: *mut *mut c_void,
 ) -> u8 {
-    let r = guard(None, || lookup(handle(ctx)).and_then(|c| lock(&c).depth_buffer()));
+    let r = guard(None, || {
+        with_context(&lookup(handle(ctx))?, OsContext::depth_buffer).flatten()
+    });
     let v = r.unwrap_or(DepthView {
         width: 0,
         height: 0,
@@ -220,7 +225,8 @@ pub unsafe extern "C" fn OSMesaGetDepthBuffer(
 }
 
 /// `OSMesaGetColorBuffer`: the caller's buffer bound to `ctx`, its size and
-/// OSMesa format; `GL_FALSE` and zeros before the first `OSMesaMakeCurrent`.
+/// OSMesa format; `GL_FALSE` and zeros before the first `OSMesaMakeCurrent`
+/// and for a context current on another thread.
 ///
 /// # Safety
 /// Each output pointer is `NULL` or writable.
@@ -233,12 +239,13 @@ pub unsafe extern "C" fn OSMesaGetColorBuffer(
     buffer: *mut *mut c_void,
 ) -> u8 {
     let r = guard(None, || {
-        let shared = lookup(handle(ctx))?;
-        let mut os = lock(&shared);
-        // The buffer is handed out to be read: what was drawn must be in it.
-        os.flush();
-        os.binding()
-            .map(|b| (b.width, b.height, os.format() as i32, b.ptr.cast::<c_void>()))
+        with_context(&lookup(handle(ctx))?, |os| {
+            // The buffer is handed out to be read: what was drawn must be in it.
+            os.flush();
+            os.binding()
+                .map(|b| (b.width, b.height, os.format() as i32, b.ptr.cast::<c_void>()))
+        })
+        .flatten()
     });
     let (w, h, f, p) = r.unwrap_or((0, 0, 0, std::ptr::null_mut()));
     // SAFETY: the caller's output pointers are NULL or writable.

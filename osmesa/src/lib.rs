@@ -3,9 +3,13 @@
 //!
 //! - Contexts live in a registry keyed by the handle C sees; a handle that was
 //!   destroyed (or never existed) is refused, not dereferenced.
-//! - Each thread has at most one current context; GL calls without one do
-//!   nothing, as in Mesa.
-//! - No panic crosses into C: every export runs its body under `catch_unwind`.
+//! - Each thread has at most one current context, and a context is current
+//!   on at most one thread (the thread holds its lock meanwhile, so GL calls
+//!   lock nothing; see `state`); GL calls without one do nothing, as in Mesa.
+//! - No panic crosses into C: every export runs its body under
+//!   `catch_unwind`, except the vertex attribute calls (`glColor`,
+//!   `glVertex`, …), plain stores and `Vec` pushes that cannot panic, which
+//!   take a lock-free path of a few instructions (`state::attrib`).
 //! - The colour formats softgl draws natively (RGBA, BGRA, RGB bytes and
 //!   RGB 5-6-5) are rendered straight into the caller's buffer, honouring
 //!   `OSMESA_ROW_LENGTH` and `OSMESA_Y_UP`; the others (ARGB, BGR, 16-bit and

@@ -12,17 +12,42 @@
 //!   [`with_gl`] on its GL state and [`softgl::Context`] (what `gl/*` uses).
 //!
 //! Every GL entry point reaches its context through [`with_gl`], which hands
-//! it the [`GlState`] and the [`Context`]: `gl/*` imports from here and from
-//! `gl_state`, never the other way.
+//! it the [`GlState`] and the [`Context`], or, for the vertex attribute
+//! calls, through [`attrib`]: `gl/*` imports from here and from `gl_state`,
+//! never the other way.
+//!
+//! The threading contract, GL's: a context is current on one thread at a
+//! time. A thread holds its current context's lock for as long as the
+//! context is current there (taken by the make-current functions, released
+//! when another context is made current, at release, and at thread exit),
+//! so its GL calls lock nothing: they reach the context through a pointer in
+//! a thread-local slot. Making a context current that another thread has
+//! current fails ([`MakeCurrentError::InUse`]); other threads reach a
+//! context only while it is current nowhere, under its lock, briefly
+//! ([`with_context`]: `OSMesaGetColorBuffer`, `OSMesaGetDepthBuffer`,
+//! EGL's surface swaps). A context destroyed on another thread while
+//! current stays valid here until released: the slot holds its `Arc`.
+//!
+//! Cost, measured with `osmesa/bench/calls.c` (callgrind, instructions per
+//! `glColor3f` call, the benchmark's loop's 11 included): 157 with a
+//! thread-local `RefCell`, a `Mutex` lock and `catch_unwind` per call; 57
+//! with the lock held while current and a `thread_local!` pointer (its
+//! `__tls_get_addr` call and the spills around it took 20); 39 with the
+//! pointer in a global while one thread has a context current (`fast`), as
+//! [`attrib`] reads it now; Mesa 22's llvmpipe takes 30. In time (10 million
+//! calls, median of 5 repetitions, 5 interleaved runs, 2 loaded cores):
+//! 24-34 ns before, 4.1-9 ns (median 4.8) after, Mesa 4.6-8 (5.0).
 
 use crate::consts::*;
 use crate::convert::UserFormat;
 use crate::gl_state::GlState;
 use softgl::framebuffer::DepthBuffer;
 use softgl::{ColorMemory, Context, Framebuffer, FramebufferDesc, GlError};
-use std::cell::RefCell;
+use std::cell::{RefCell, RefMut};
 use std::collections::HashMap;
+use std::mem::ManuallyDrop;
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
 
 /// The caller's colour buffer, as `OSMesaMakeCurrent` gave it.
@@ -327,8 +352,25 @@ impl OsContext {
     }
 }
 
-/// A live handle's context.
-pub type Shared = Arc<Mutex<OsContext>>;
+/// A live handle's context and whether some thread has it current.
+pub struct SharedContext {
+    /// Set while a thread has the context current: that thread then holds
+    /// `os`'s lock for as long (see [`Current`]), so the flag tells that long
+    /// hold from the brief ones of [`with_context`].
+    current: AtomicBool,
+    os: Mutex<OsContext>,
+}
+
+/// A live handle's context, as the registry, EGL and the current slots hold it.
+pub type Shared = Arc<SharedContext>;
+
+/// `os` as a context a handle can stand for, current nowhere yet.
+pub fn share(os: OsContext) -> Shared {
+    Arc::new(SharedContext {
+        current: AtomicBool::new(false),
+        os: Mutex::new(os),
+    })
+}
 
 /// Handles C holds, to their contexts. Handles are small integers shifted
 /// to look like aligned pointers; they are never dereferenced.
@@ -347,10 +389,10 @@ pub fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
 /// and `stencil_bits` as `OSMesaCreateContextExt` takes them) and returns its
 /// handle, never 0.
 pub fn create_context(format: GLenum, depth_bits: i32, stencil_bits: i32) -> usize {
-    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(1);
-    let id = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed) << 4;
+    static NEXT: AtomicUsize = AtomicUsize::new(1);
+    let id = NEXT.fetch_add(1, Ordering::Relaxed) << 4;
     let ctx = OsContext::new(format, depth_bits, stencil_bits);
-    lock(registry()).insert(id, Arc::new(Mutex::new(ctx)));
+    lock(registry()).insert(id, share(ctx));
     id
 }
 
@@ -366,12 +408,7 @@ pub fn destroy_context(handle: usize) -> bool {
     if lock(registry()).remove(&handle).is_none() {
         return false;
     }
-    CURRENT.with(|cur| {
-        let mut cur = cur.borrow_mut();
-        if cur.as_ref().is_some_and(|(c, _)| *c == handle) {
-            *cur = None;
-        }
-    });
+    clear_current_if(handle);
     true
 }
 
@@ -385,6 +422,9 @@ pub enum MakeCurrentError {
     BadType,
     /// softgl could not make the framebuffer (too large, row length too short).
     Framebuffer(GlError),
+    /// Current on another thread (GL allows one at a time: GLX's
+    /// `BadAccess`, EGL's `EGL_BAD_ACCESS`; Mesa's OSMesa lets both race).
+    InUse,
 }
 
 /// Binds `buffer` (`width` × `height` pixels of the context's format and
@@ -407,24 +447,32 @@ pub unsafe fn make_current(
     if buffer.is_null() || !size_ok(width) || !size_ok(height) {
         return Err(MakeCurrentError::BadBuffer);
     }
-    let mut os = lock(&shared);
-    let format = UserFormat::new(os.format, ty).ok_or(MakeCurrentError::BadType)?;
-    let binding = Binding {
-        ptr: buffer,
-        ty,
-        width,
-        height,
-        format,
+    let bind = |os: &mut OsContext| {
+        let format = UserFormat::new(os.format, ty).ok_or(MakeCurrentError::BadType)?;
+        let binding = Binding {
+            ptr: buffer,
+            ty,
+            width,
+            height,
+            format,
+        };
+        os.bind(binding).map_err(MakeCurrentError::Framebuffer)
     };
-    os.bind(binding).map_err(MakeCurrentError::Framebuffer)?;
-    drop(os);
+    // Current here already: a new buffer for it, nothing to copy out.
+    let again = with_slot(|slot| match slot {
+        Some(cur) if Arc::ptr_eq(&cur.shared, &shared) => Some(bind(cur.os())),
+        _ => None,
+    });
+    if let Some(Some(r)) = again {
+        return r;
+    }
+    let mut new = Current::acquire(handle, shared).ok_or(MakeCurrentError::InUse)?;
+    // (An error drops `new`, which releases the context again.)
+    bind(new.os())?;
+    let previous = with_slot(|slot| slot.replace(new)).ok_or(MakeCurrentError::InUse)?;
     // Stop the previous context: its caller's buffer gets its last frame.
-    // (Its lock is taken after this one's is released: no lock-order cycle.)
-    let previous = CURRENT.with(|cur| cur.borrow_mut().replace((handle, shared)));
-    if let Some((h, prev)) = previous {
-        if h != handle {
-            lock(&prev).flush();
-        }
+    if let Some(mut prev) = previous {
+        prev.os().flush();
     }
     Ok(())
 }
@@ -432,35 +480,300 @@ pub unsafe fn make_current(
 /// Leaves no context current on this thread; the one that was gets its last
 /// frame copied out, as at a switch.
 pub fn release_current() {
-    if let Some((_, prev)) = CURRENT.with(|cur| cur.borrow_mut().take()) {
-        lock(&prev).flush();
+    if let Some(Some(mut prev)) = with_slot(Option::take) {
+        prev.os().flush();
     }
 }
 
-/// Makes `shared` (handle `h`) this thread's current context without flushing
-/// anything (EGL's make-current does its own bookkeeping); the one it replaces.
-pub fn replace_current(h: usize, shared: Shared) -> Option<(usize, Shared)> {
-    CURRENT.with(|cur| cur.borrow_mut().replace((h, shared)))
+/// Makes `shared` (handle `h`) this thread's current context without binding
+/// anything (EGL's make-current does its own bookkeeping); nothing changes
+/// when it already is. The context it replaces is flushed when
+/// `flush_previous(its handle)` says so. `false` (and no change) when
+/// another thread has `shared` current.
+pub fn replace_current(h: usize, shared: Shared, flush_previous: impl FnOnce(usize) -> bool) -> bool {
+    let mine = |slot: &mut Option<Current>| slot.as_ref().is_some_and(|c| Arc::ptr_eq(&c.shared, &shared));
+    if with_slot(mine) == Some(true) {
+        return true;
+    }
+    let Some(new) = Current::acquire(h, shared) else {
+        return false;
+    };
+    let Some(previous) = with_slot(|slot| slot.replace(new)) else {
+        return false;
+    };
+    if let Some(mut prev) = previous {
+        if flush_previous(prev.handle) {
+            prev.os().flush();
+        }
+    }
+    true
 }
 
 /// Empties this thread's slot if it holds handle `h` (safe during thread exit).
 pub fn clear_current_if(h: usize) {
-    let _ = CURRENT.try_with(|cur| {
-        let mut cur = cur.borrow_mut();
-        if cur.as_ref().is_some_and(|(c, _)| *c == h) {
-            *cur = None;
+    let _ = with_slot(|slot| {
+        if slot.as_ref().is_some_and(|c| c.handle == h) {
+            *slot = None;
         }
     });
 }
 
 /// This thread's current context.
 pub fn current_handle() -> Option<usize> {
-    CURRENT.with(|cur| cur.borrow().as_ref().map(|(h, _)| *h))
+    CURRENT
+        .try_with(|slot| slot.try_borrow().ok()?.0.as_ref().map(|c| c.handle))
+        .ok()
+        .flatten()
+}
+
+/// This thread's current context, holding the context's lock for as long as
+/// it is current here: GL lets one thread at a time use a context, so the
+/// calls on it lock nothing (see the module docs).
+struct Current {
+    handle: usize,
+    /// The locked context. While current it is reached only through this
+    /// pointer, taken once from `guard`: by the attribute calls' fast path
+    /// (a copy in `FAST`) and by everything else through [`Current::os`].
+    os: *mut OsContext,
+    /// `shared.os`'s lock. `'static` stands for "while `shared` lives":
+    /// [`Drop`] drops it before `shared`.
+    guard: ManuallyDrop<MutexGuard<'static, OsContext>>,
+    shared: Shared,
+}
+
+impl Current {
+    /// Takes `shared`'s context for this thread; `None` when another thread
+    /// has it current.
+    fn acquire(handle: usize, shared: Shared) -> Option<Current> {
+        if shared.current.swap(true, Ordering::Acquire) {
+            return None;
+        }
+        // SAFETY: the mutex lives in the `Arc`'s allocation, which never
+        // moves and which `Current` keeps alive (`shared`) until after the
+        // guard is dropped (first thing in `drop`).
+        let mutex: &'static Mutex<OsContext> = unsafe { &*std::ptr::from_ref(&shared.os) };
+        // Waits at most for a brief holder (`with_context`): a thread that
+        // keeps the lock set `current` first.
+        let mut guard = lock(mutex);
+        let os: *mut OsContext = &mut *guard;
+        Some(Current {
+            handle,
+            os,
+            guard: ManuallyDrop::new(guard),
+            shared,
+        })
+    }
+
+    /// The context. Only in a [`with_slot`] closure (which nulls `FAST`)
+    /// or on a `Current` taken out of the slot.
+    fn os(&mut self) -> &mut OsContext {
+        // SAFETY: `os` points into the data `guard` keeps locked for this
+        // thread. The only other way to it is `FAST`, which is null while
+        // the slot is borrowed (`with_slot`) and never holds a context taken
+        // out of the slot; `&mut self` makes this the only reference now.
+        unsafe { &mut *self.os }
+    }
+}
+
+impl Drop for Current {
+    /// Releases the context; also at thread exit, for a thread that ends
+    /// with a context current.
+    fn drop(&mut self) {
+        // No stale fast pointer may outlive the lock.
+        if fast::get() == self.os {
+            fast::set(std::ptr::null_mut());
+        }
+        // SAFETY: dropped once, here, and not used after.
+        unsafe { ManuallyDrop::drop(&mut self.guard) };
+        self.shared.current.store(false, Ordering::Release);
+    }
 }
 
 thread_local! {
-    /// This thread's current context: its handle and the context.
-    static CURRENT: RefCell<Option<(usize, Shared)>> = const { RefCell::new(None) };
+    /// This thread's current context.
+    static CURRENT: RefCell<Slot> = const { RefCell::new(Slot(None)) };
+}
+
+/// `FAST`, the current context for [`attrib`]: `CURRENT`'s `os`, or null
+/// when there is none or `CURRENT` is borrowed (a call on the context is
+/// running).
+///
+/// Each thread keeps it in a `thread_local!` `Cell` (no destructor: always
+/// there while the thread runs), which in a shared library costs a
+/// `__tls_get_addr` call and the spills around it: 20 of the 57 instructions
+/// a `glColor3f` took. So while exactly one thread has a context current —
+/// the usual program — that thread also keeps it in `SOLE`, a global, with
+/// its thread pointer in `SOLE_TP`; [`get`] compares the running thread's
+/// pointer (`fs:0` on x86-64, `tpidr_el0` on AArch64: one instruction) with
+/// `SOLE_TP` first. Why a thread that reads its own pointer in `SOLE_TP`
+/// finds its own `FAST` in `SOLE`:
+/// - `SOLE_TP` is set (to its own pointer) only by a thread whose slot gets
+///   a context while no other thread has one (`transition`, under `CLAIMS`),
+///   and a thread's slot emptying, here or at its exit, clears its own claim;
+/// - so while a thread has a context current no other thread claims; one
+///   that gets a context too only clears `SOLE_TP` (never `SOLE`);
+/// - `SOLE` is written only by the claimant: at its claim, at its unclaim,
+///   and by [`set`] when it finds its pointer in `SOLE_TP` (its own earlier
+///   write, or a stale read of it while `SOLE` is still its own).
+///
+/// Tried and rejected: `FAST` in the static TLS block (initial-exec, as
+/// Mesa's current context; `global_asm!` and an `fs`-relative load). It
+/// marks the whole library `STATIC_TLS`, and its 9 KB of thread-locals
+/// (std's, the JIT's) do not fit the room glibc keeps for libraries loaded
+/// later: `dlopen` (PyOpenGL, ctypes) failed with "cannot allocate memory in
+/// static TLS block".
+mod fast {
+    use super::{lock, OsContext};
+    use std::cell::Cell;
+    use std::sync::atomic::{AtomicPtr, AtomicUsize, Ordering::Relaxed};
+    use std::sync::Mutex;
+
+    thread_local! {
+        static FAST: Cell<*mut OsContext> = const { Cell::new(std::ptr::null_mut()) };
+    }
+
+    /// The sole thread with a current context: its `FAST` and thread pointer.
+    static SOLE: AtomicPtr<OsContext> = AtomicPtr::new(std::ptr::null_mut());
+    static SOLE_TP: AtomicUsize = AtomicUsize::new(0);
+    /// How many threads have a context current; held while claiming.
+    static CLAIMS: Mutex<usize> = Mutex::new(0);
+
+    /// The running thread's thread pointer: unique among live threads,
+    /// never 0. `None` where it is not read (no `SOLE` there).
+    #[inline(always)]
+    fn tp() -> Option<usize> {
+        #[cfg(all(target_arch = "x86_64", target_os = "linux"))]
+        {
+            let tp: usize;
+            // SAFETY: loads the TCB's self pointer, which the x86-64 TLS
+            // ABI keeps at `fs:0` for every thread; touches nothing else.
+            unsafe {
+                std::arch::asm!("mov {}, qword ptr fs:[0]", out(reg) tp,
+                    options(nostack, readonly, preserves_flags));
+            }
+            Some(tp)
+        }
+        #[cfg(all(target_arch = "aarch64", target_os = "linux"))]
+        {
+            let tp: usize;
+            // SAFETY: reads the thread pointer register; no memory.
+            unsafe {
+                std::arch::asm!("mrs {}, tpidr_el0", out(reg) tp, options(nostack, nomem, preserves_flags));
+            }
+            Some(tp)
+        }
+        #[cfg(not(all(any(target_arch = "x86_64", target_arch = "aarch64"), target_os = "linux")))]
+        {
+            None
+        }
+    }
+
+    /// This thread's `FAST`.
+    #[inline(always)]
+    pub fn get() -> *mut OsContext {
+        if let Some(tp) = tp() {
+            if SOLE_TP.load(Relaxed) == tp {
+                return SOLE.load(Relaxed);
+            }
+        }
+        FAST.with(Cell::get)
+    }
+
+    /// Sets this thread's `FAST` (and `SOLE` when this thread is the claimant).
+    pub fn set(p: *mut OsContext) {
+        FAST.with(|fast| fast.set(p));
+        if tp().is_some_and(|tp| SOLE_TP.load(Relaxed) == tp) {
+            SOLE.store(p, Relaxed);
+        }
+    }
+
+    /// This thread's slot got a context (`current`, with `FAST` = `p`) or
+    /// lost it: counts it, and claims `SOLE` when no other thread has one.
+    pub fn transition(current: bool, p: *mut OsContext) {
+        let Some(me) = tp() else {
+            return;
+        };
+        let mut threads = lock(&CLAIMS);
+        if current {
+            *threads += 1;
+            if *threads == 1 {
+                SOLE.store(p, Relaxed);
+                SOLE_TP.store(me, Relaxed);
+            } else {
+                SOLE_TP.store(0, Relaxed);
+            }
+        } else {
+            *threads = threads.saturating_sub(1);
+            if SOLE_TP.load(Relaxed) == me {
+                SOLE_TP.store(0, Relaxed);
+                SOLE.store(std::ptr::null_mut(), Relaxed);
+            }
+        }
+    }
+}
+
+/// The borrowed slot (and whether it held a context): `FAST` is null
+/// meanwhile and set from the slot again when this drops (after a panic
+/// too).
+struct SlotBorrow<'a>(RefMut<'a, Slot>, bool);
+
+impl Drop for SlotBorrow<'_> {
+    fn drop(&mut self) {
+        let os = self.0 .0.as_ref().map_or(std::ptr::null_mut(), |c| c.os);
+        fast::set(os);
+        if self.0 .0.is_some() != self.1 {
+            fast::transition(self.0 .0.is_some(), os);
+        }
+    }
+}
+
+/// A thread's slot: its current context, if any.
+struct Slot(Option<Current>);
+
+impl Drop for Slot {
+    /// At thread exit: the thread has no context current any more.
+    fn drop(&mut self) {
+        if self.0.is_some() {
+            fast::transition(false, std::ptr::null_mut());
+        }
+    }
+}
+
+/// Runs `f` on this thread's slot, exclusively: an attribute call made
+/// meanwhile finds no context (is ignored) and a nested `with_slot` gets
+/// `None`, so no two references to the current context ever coexist.
+/// `None` also once the slot is gone (thread exit).
+fn with_slot<R>(f: impl FnOnce(&mut Option<Current>) -> R) -> Option<R> {
+    CURRENT
+        .try_with(|slot| {
+            let slot = slot.try_borrow_mut().ok()?;
+            let had = slot.0.is_some();
+            let mut slot = SlotBorrow(slot, had);
+            fast::set(std::ptr::null_mut());
+            Some(f(&mut slot.0 .0))
+        })
+        .ok()
+        .flatten()
+}
+
+/// Runs `f` on `shared`'s context: in place when it is this thread's
+/// current one, under its lock when it is current nowhere. `None` when
+/// another thread has it current (GL lets one thread at a time use a
+/// context) or this thread's is in use (a nested call).
+pub fn with_context<R>(shared: &Shared, f: impl FnOnce(&mut OsContext) -> R) -> Option<R> {
+    let mut f = Some(f);
+    let mine = with_slot(|slot| match slot {
+        Some(cur) if Arc::ptr_eq(&cur.shared, shared) => f.take().map(|f| f(cur.os())),
+        _ => None,
+    });
+    if let Some(Some(r)) = mine {
+        return Some(r);
+    }
+    let f = f?;
+    if shared.current.load(Ordering::Acquire) {
+        return None;
+    }
+    Some(f(&mut lock(&shared.os)))
 }
 
 /// Runs `f`, returning `default` if it panics: no panic crosses into C.
@@ -482,11 +795,44 @@ pub fn with_gl<R: Copy>(default: R, f: impl FnOnce(&mut GlState, &mut Context) -
 /// when there is none. A panic in `f` returns `default` too.
 pub fn with_current<R: Copy>(default: R, f: impl FnOnce(&mut OsContext) -> R) -> R {
     guard(default, || {
-        CURRENT.with(|cur| match cur.borrow().as_ref() {
-            Some((_, shared)) => f(&mut lock(shared)),
+        with_slot(|slot| match slot {
+            Some(cur) => f(cur.os()),
             None => default,
         })
+        .unwrap_or(default)
     })
+}
+
+/// The attribute calls' way in (`glColor`, `glVertex`, …): `f` on this
+/// thread's current GL context at once, with no lock, no `RefCell` and no
+/// unwinding guard. `Some(f)` back while a display list is compiled (the
+/// caller records it through [`with_gl`]). Nothing happens without a
+/// current context, as in Mesa, or inside another call on it.
+///
+/// `f` must not panic: a panic here would abort the process (an
+/// `extern "C"` function does not unwind). The attribute calls are plain
+/// stores into the current attributes and `Vec` pushes (whose only panic,
+/// capacity overflow, needs more than the address space).
+#[inline(always)]
+pub fn attrib<F: FnOnce(&mut Context)>(f: F) -> Option<F> {
+    let p = fast::get();
+    if p.is_null() {
+        return None;
+    }
+    // SAFETY: a non-null `fast::get()` is this thread's `FAST` (see `fast`
+    // for its `SOLE` copy): its current context, whose lock
+    // this thread holds (`Current`). It is null while any other reference
+    // to that context is live (`with_slot`) and from before the lock is
+    // released (`Current::drop`), and `f` cannot reach the slot (it only
+    // sees the `Context`): this is the only reference until it returns.
+    let os = unsafe { &mut *p };
+    if os.gl_state.compiling.is_some() {
+        return Some(f);
+    }
+    if let Some(gl) = os.gl.as_deref_mut() {
+        f(gl);
+    }
+    None
 }
 
 #[cfg(test)]
@@ -511,5 +857,95 @@ mod tests {
         assert_eq!(current_handle(), None);
         assert!(destroy_context(h));
         assert!(!destroy_context(h), "a handle dies once");
+    }
+
+    /// A 2x2 RGBA context current on this thread, drawing into `buf`.
+    fn current_2x2(buf: &mut [u8; 16]) -> usize {
+        let h = create_context(OSMESA_RGBA, 0, 0);
+        // SAFETY: `buf` holds 2x2 RGBA pixels and outlives the binding (the
+        // tests release or destroy the context before it goes).
+        unsafe { make_current(h, buf.as_mut_ptr(), GL_UNSIGNED_BYTE, 2, 2) }.unwrap();
+        h
+    }
+
+    fn current_color() -> [f32; 4] {
+        with_gl([0.0; 4], |_, gl| gl.current().color.to_array())
+    }
+
+    #[test]
+    fn an_attribute_call_reaches_only_a_free_current_context() {
+        let mut ran = false;
+        assert!(attrib(|_: &mut Context| ran = true).is_none());
+        assert!(!ran, "no current context: nothing runs");
+        let mut buf = [0u8; 16];
+        let h = current_2x2(&mut buf);
+        assert!(attrib(|gl: &mut Context| gl.color4(0.5, 0.25, 1.0, 1.0)).is_none());
+        assert_eq!(current_color(), [0.5, 0.25, 1.0, 1.0]);
+        // Inside another call on the context the fast path finds none (two
+        // references to the context never coexist): ignored.
+        with_gl((), |_, gl| {
+            assert!(attrib(|g: &mut Context| g.color4(1.0, 0.0, 0.0, 1.0)).is_none());
+            gl.normal3(0.0, 1.0, 0.0);
+        });
+        assert_eq!(current_color(), [0.5, 0.25, 1.0, 1.0]);
+        // After that call (and after a panicking one) the fast path is back.
+        assert_eq!(with_gl(1, |_, _| panic!("in a GL call")), 1);
+        assert!(attrib(|gl: &mut Context| gl.color4(0.0, 1.0, 0.0, 1.0)).is_none());
+        assert_eq!(current_color(), [0.0, 1.0, 0.0, 1.0]);
+        // While a list is compiled the call comes back to be recorded.
+        let list = crate::gl_state::Compiling {
+            name: 1,
+            execute: false,
+            cmds: Vec::new(),
+        };
+        with_gl((), |os, _| os.compiling = Some(list));
+        assert!(attrib(|gl: &mut Context| gl.color4(1.0, 1.0, 1.0, 1.0)).is_some());
+        with_gl((), |os, _| os.compiling = None);
+        assert_eq!(current_color(), [0.0, 1.0, 0.0, 1.0]);
+        assert!(destroy_context(h));
+        assert!(attrib(|_: &mut Context| ran = true).is_none());
+        assert!(!ran, "destroyed while current here: released");
+    }
+
+    #[test]
+    fn a_context_is_current_on_one_thread_at_a_time() {
+        let mut buf = [0u8; 16];
+        let h = current_2x2(&mut buf);
+        attrib(|gl: &mut Context| gl.color4(0.0, 0.0, 1.0, 1.0));
+        let shared = lookup(h).unwrap();
+        let elsewhere = |shared: Shared| {
+            std::thread::spawn(move || {
+                let mut other = [0u8; 16];
+                // SAFETY: `other` holds 2x2 RGBA pixels; the thread ends
+                // (releasing the context) before it goes.
+                let made = unsafe { make_current(h, other.as_mut_ptr(), GL_UNSIGNED_BYTE, 2, 2) };
+                let seen = with_context(&shared, |os| os.format());
+                // Changes the current colour, and ends with the context current.
+                attrib(|gl: &mut Context| gl.color4(1.0, 0.0, 0.0, 1.0));
+                (made, seen)
+            })
+            .join()
+            .unwrap()
+        };
+        assert_eq!(elsewhere(shared.clone()), (Err(MakeCurrentError::InUse), None));
+        assert_eq!(current_color(), [0.0, 0.0, 1.0, 1.0], "untouched by the other thread");
+        assert_eq!(
+            with_context(&shared, |os| os.format()),
+            Some(OSMESA_RGBA),
+            "here: in place"
+        );
+        release_current();
+        assert_eq!(
+            with_context(&shared, |os| os.format()),
+            Some(OSMESA_RGBA),
+            "current nowhere"
+        );
+        assert_eq!(elsewhere(shared.clone()), (Ok(()), Some(OSMESA_RGBA)));
+        // The other thread ended with it current: its end released it.
+        // SAFETY: as in `current_2x2`.
+        unsafe { make_current(h, buf.as_mut_ptr(), GL_UNSIGNED_BYTE, 2, 2) }.unwrap();
+        assert_eq!(current_color(), [1.0, 0.0, 0.0, 1.0], "the other thread's colour");
+        release_current();
+        assert!(destroy_context(h));
     }
 }

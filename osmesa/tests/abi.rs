@@ -314,8 +314,16 @@ fn a_context_destroyed_while_current_elsewhere_stays_safe() {
         .unwrap();
     glClearColor(0.0, 1.0, 0.0, 1.0);
     glClear(GL_COLOR_BUFFER_BIT);
+    // The attribute calls too (they reach the context without the registry).
+    glColor3f(0.0, 0.0, 1.0);
+    glBegin(GL_QUADS);
+    for (x, y) in [(0.0, 0.0), (2.0, 0.0), (2.0, 4.0), (0.0, 4.0)] {
+        glVertex2f(x, y);
+    }
+    glEnd();
     glFinish();
-    assert_eq!(px(&buf, 4, 0, 0), [0, 255, 0, 255]);
+    assert_eq!(px(&buf, 4, 0, 0), [0, 0, 255, 255]);
+    assert_eq!(px(&buf, 4, 3, 0), [0, 255, 0, 255]);
     assert_eq!(OSMesaGetCurrentContext(), ctx);
     // The handle is gone for everyone else.
     let mut b2 = vec![0u8; 4];
@@ -324,6 +332,93 @@ fn a_context_destroyed_while_current_elsewhere_stays_safe() {
         unsafe { OSMesaMakeCurrent(ctx, b2.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 1, 1) },
         GL_FALSE
     );
+}
+
+/// Fills the `w` x `w` pixel window with one quad of `rgb`, a colour per vertex.
+fn fill_with_attribute_calls(w: f32, rgb: [u8; 3]) {
+    glBegin(GL_QUADS);
+    for (x, y) in [(0.0, 0.0), (w, 0.0), (w, w), (0.0, w)] {
+        glColor3ub(rgb[0], rgb[1], rgb[2]);
+        glVertex2f(x, y);
+    }
+    glEnd();
+    glFinish();
+}
+
+#[test]
+fn contexts_on_several_threads_draw_with_attribute_calls() {
+    // Each thread's attribute calls reach its own context, at the same time.
+    const W: usize = 8;
+    let threads: Vec<_> = (0..4u8)
+        .map(|t| {
+            std::thread::spawn(move || {
+                let mut buf = vec![0u8; W * W * 4];
+                let ctx = current(&mut buf, W as i32, W as i32);
+                for round in 0..100u8 {
+                    // A unorm8 colour through glColor3ub comes back exact.
+                    let rgb = [t * 60 + 15, round * 2, 255 - t * 60];
+                    fill_with_attribute_calls(W as f32, rgb);
+                    let want = [rgb[0], rgb[1], rgb[2], 255];
+                    assert!(buf.chunks(4).all(|p| p == want), "thread {t} round {round}");
+                }
+                assert_eq!(glGetError(), GL_NO_ERROR);
+                // SAFETY: null context and buffer: releases.
+                assert_eq!(unsafe { OSMesaMakeCurrent(null_mut(), null_mut(), 0, 0, 0) }, GL_TRUE);
+                OSMesaDestroyContext(ctx);
+            })
+        })
+        .collect();
+    for t in threads {
+        t.join().unwrap();
+    }
+}
+
+#[test]
+fn a_context_current_on_one_thread_is_refused_on_another() {
+    const GL_CURRENT_COLOR: u32 = 0x0B00;
+    let mut buf = vec![0u8; 4 * 4 * 4];
+    let ctx = current(&mut buf, 4, 4);
+    let (handle, mine) = (ctx as usize, buf.as_ptr() as usize);
+    // Another thread tries to make it current and to ask for its buffer,
+    // then draws green with it if it could (and ends with it current).
+    let elsewhere = move || {
+        std::thread::spawn(move || {
+            let ctx = handle as OSMesaContext;
+            let (mut w, mut h, mut f, mut p) = (0, 0, 0, null_mut::<c_void>());
+            // SAFETY: valid output pointers.
+            let asked = unsafe { OSMesaGetColorBuffer(ctx, &mut w, &mut h, &mut f, &mut p) };
+            let mut other = vec![0u8; 4 * 4 * 4];
+            // SAFETY: 4x4 RGBA pixels, alive until the thread ends, which
+            // releases the context.
+            let made = unsafe { OSMesaMakeCurrent(ctx, other.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 4, 4) };
+            fill_with_attribute_calls(4.0, [0, 255, 0]);
+            (asked, p as usize, made, other[..4].to_vec())
+        })
+        .join()
+        .unwrap()
+    };
+    assert_eq!(elsewhere(), (GL_FALSE, 0, GL_FALSE, vec![0; 4]), "current here");
+    // Here it still draws.
+    fill_with_attribute_calls(4.0, [255, 0, 0]);
+    assert_eq!(px(&buf, 4, 3, 3), [255, 0, 0, 255]);
+    // SAFETY: null context and buffer: releases.
+    assert_eq!(unsafe { OSMesaMakeCurrent(null_mut(), null_mut(), 0, 0, 0) }, GL_TRUE);
+    assert_eq!(
+        elsewhere(),
+        (GL_TRUE, mine, GL_TRUE, vec![0, 255, 0, 255]),
+        "current nowhere"
+    );
+    // The other thread's end released it; its current colour is the context's.
+    // SAFETY: `buf` holds 4x4 RGBA pixels and outlives the binding.
+    assert_eq!(
+        unsafe { OSMesaMakeCurrent(ctx, buf.as_mut_ptr().cast(), GL_UNSIGNED_BYTE, 4, 4) },
+        GL_TRUE
+    );
+    let mut color = [0.0f32; 4];
+    // SAFETY: room for the 4 values of GL_CURRENT_COLOR.
+    unsafe { glGetFloatv(GL_CURRENT_COLOR, color.as_mut_ptr()) };
+    assert_eq!(color, [0.0, 1.0, 0.0, 1.0]);
+    OSMesaDestroyContext(ctx);
 }
 
 #[test]

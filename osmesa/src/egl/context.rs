@@ -4,7 +4,7 @@
 //! the current state, `eglDestroyContext`.
 
 use super::*;
-use crate::state::{current_handle, replace_current, OsContext};
+use crate::state::{current_handle, replace_current, share, with_context, OsContext};
 
 /// The GL version softgl implements: the leading `major.minor` of its `GL_VERSION`.
 pub(crate) fn implemented_version() -> (i32, i32) {
@@ -114,7 +114,7 @@ pub unsafe extern "C" fn eglCreateContext(
         egl.contexts.insert(
             h,
             ContextEntry {
-                shared: Arc::new(Mutex::new(os)),
+                shared: share(os),
                 config,
                 version,
                 current_on: None,
@@ -202,8 +202,9 @@ pub extern "C" fn eglMakeCurrent(dpy: EGLDisplay, draw: EGLSurface, read: EGLSur
             let shared = entry.shared.clone();
             if let Some((sh, s)) = &surface {
                 let mut s = lock(s);
-                let fb = s.fb.take().ok_or(EGL_BAD_ACCESS)?;
-                lock(&shared).swap_framebuffer(fb);
+                // (The placeholder it drew into before is dropped.)
+                let swapped = with_context(&shared, |os| s.fb.take().map(|fb| os.swap_framebuffer(fb)));
+                swapped.flatten().ok_or(EGL_BAD_ACCESS)?;
                 s.bound_to = Some(h);
                 entry.surface = Some(*sh);
                 if !entry.viewport_set {
@@ -222,11 +223,8 @@ pub extern "C" fn eglMakeCurrent(dpy: EGLDisplay, draw: EGLSurface, read: EGLSur
         };
         // An OSMesa context current here stops being current (its caller's
         // buffer gets its last frame, as with OSMesaMakeCurrent).
-        let previous = replace_current(h, shared);
-        if let Some((ph, prev)) = previous {
-            if ph != h && ph & 0xF == 0 {
-                lock(&prev).flush();
-            }
+        if !replace_current(h, shared, |ph| ph & 0xF == 0) {
+            return Err(EGL_BAD_ACCESS);
         }
         drop(egl);
         if let Some((w, h)) = first_size {

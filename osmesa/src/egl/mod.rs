@@ -40,7 +40,7 @@ pub use glx::*;
 pub use stubs::*;
 pub use surface::*;
 
-use crate::state::{guard, lock, Shared};
+use crate::state::{guard, lock, with_context, Shared};
 use softgl::Framebuffer;
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -254,7 +254,7 @@ fn release(egl: &mut Egl, cur: Current) {
     }
     if let Some((_, surface)) = &cur.surface {
         let mut s = lock(surface);
-        s.fb = lock(&cur.shared).swap_framebuffer(placeholder());
+        s.fb = with_context(&cur.shared, |os| os.swap_framebuffer(placeholder())).flatten();
         s.bound_to = None;
     }
     crate::state::clear_current_if(cur.ctx);

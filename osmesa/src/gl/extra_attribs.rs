@@ -6,7 +6,7 @@
 //! because no map can be enabled in softgl (GL 1.5 §5.1: only enabled maps
 //! are evaluated).
 
-use super::{outside, rec};
+use super::{attr, outside, rec};
 use crate::consts::GLenum;
 
 /// Reads one value through `v`, or `None` for a null pointer.
@@ -18,18 +18,14 @@ unsafe fn read1<T: Copy>(v: *const T) -> Option<T> {
     (!v.is_null()).then(|| unsafe { v.read_unaligned() })
 }
 
+#[inline]
 fn index(c: f32) {
-    rec(move |_, gl| {
-        gl.index(c);
-        Ok(())
-    })
+    attr(move |gl| gl.index(c))
 }
 
+#[inline]
 fn edge_flag(flag: u8) {
-    rec(move |_, gl| {
-        gl.edge_flag(flag != 0);
-        Ok(())
-    })
+    attr(move |gl| gl.edge_flag(flag != 0))
 }
 
 /// An evaluator call allowed between `glBegin` and `glEnd`: with no map

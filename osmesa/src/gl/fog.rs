@@ -5,7 +5,7 @@ use super::arrays::{pointer, COLOR_TYPES};
 use super::enums::decode;
 use super::get::Val;
 use super::immediate::{read, Norm};
-use super::{checked, rec};
+use super::{attr, checked};
 use crate::consts::*;
 use crate::gl_state::GlState;
 use softgl::fog::FogState;
@@ -134,18 +134,14 @@ pub(super) fn value(os: &GlState, gl: &Context, pname: GLenum) -> Option<Val> {
     })
 }
 
+#[inline]
 fn secondary(r: f32, g: f32, b: f32) {
-    rec(move |_, gl| {
-        gl.secondary_color3(r, g, b);
-        Ok(())
-    })
+    attr(move |gl| gl.secondary_color3(r, g, b))
 }
 
+#[inline]
 fn fog_coord(c: f32) {
-    rec(move |_, gl| {
-        gl.fog_coord(c);
-        Ok(())
-    })
+    attr(move |gl| gl.fog_coord(c))
 }
 
 /// `glSecondaryColor3{t}` and `glSecondaryColor3{t}v` for each component type.

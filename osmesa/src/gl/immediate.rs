@@ -2,7 +2,7 @@
 //! `glNormal`, `glTexCoord` and `glRect` variant of GL 1.1.
 
 use super::enums::decode;
-use super::{checked, gl, rec};
+use super::{attr, checked, gl};
 use softgl::Context;
 
 /// Integer colour components to floats, GL 1.x's rules: unsigned `c / max`,
@@ -63,32 +63,24 @@ pub(super) unsafe fn read<T: Copy, const N: usize>(v: *const T) -> Option<[T; N]
     Some(unsafe { std::ptr::read_unaligned(v.cast::<[T; N]>()) })
 }
 
+#[inline]
 fn vertex(x: f32, y: f32, z: f32, w: f32) {
-    rec(move |_, gl| {
-        gl.vertex4(x, y, z, w);
-        Ok(())
-    })
+    attr(move |gl| gl.vertex4(x, y, z, w))
 }
 
+#[inline]
 fn color(r: f32, g: f32, b: f32, a: f32) {
-    rec(move |_, gl| {
-        gl.color4(r, g, b, a);
-        Ok(())
-    })
+    attr(move |gl| gl.color4(r, g, b, a))
 }
 
+#[inline]
 fn normal(x: f32, y: f32, z: f32) {
-    rec(move |_, gl| {
-        gl.normal3(x, y, z);
-        Ok(())
-    })
+    attr(move |gl| gl.normal3(x, y, z))
 }
 
+#[inline]
 fn tex_coord(s: f32, t: f32, r: f32, q: f32) {
-    rec(move |_, gl| {
-        gl.tex_coord([s, t, r, q]);
-        Ok(())
-    })
+    attr(move |gl| gl.tex_coord([s, t, r, q]))
 }
 
 fn rect(x1: f32, y1: f32, x2: f32, y2: f32) {

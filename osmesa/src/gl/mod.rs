@@ -2,7 +2,7 @@
 //! `exports!`, which also lists them for `OSMesaGetProcAddress`.
 
 use crate::gl_state::{Cmd, GlState};
-use crate::state::with_gl;
+use crate::state::{attrib, with_gl};
 use softgl::{Context, GlError, GlResult};
 
 /// Declares `extern "C"` exports and a `table()` of their names and addresses.
@@ -114,6 +114,27 @@ fn rec(f: impl Fn(&mut GlState, &mut Context) -> GlResult + Send + Sync + 'stati
             }
         });
         run_or_record(os, gl, cmd);
+    })
+}
+
+/// A vertex attribute call (`glColor`, `glVertex`, …, errors recorded by
+/// the context): run at once through [`attrib`]'s fast path (no lock, no
+/// `RefCell`, no `catch_unwind`: `f` must not panic), recorded while a
+/// display list is compiled.
+#[inline(always)]
+fn attr(f: impl Fn(&mut Context) + Send + Sync + 'static) {
+    if let Some(f) = attrib(f) {
+        record_attr(f);
+    }
+}
+
+/// [`attr`] while a display list is compiled, out of the fast path's way.
+#[cold]
+#[inline(never)]
+fn record_attr(f: impl Fn(&mut Context) + Send + Sync + 'static) {
+    rec(move |_, gl| {
+        f(gl);
+        Ok(())
     })
 }
 
