@@ -7,8 +7,6 @@
 use crate::error::{GlError, GlResult};
 use crate::fog::{FogCoordSrc, FogParam, FogState};
 use crate::fragment::Backend;
-use crate::raster::scene::{DrawState, Scene};
-use softgl_jit::interp;
 use crate::framebuffer::{Clear, Framebuffer, FramebufferDesc, ReadFormat};
 use crate::geometry::batch::{FogSource, TexFetch, VertexStage};
 use crate::geometry::lighting::LightSetup;
@@ -19,6 +17,7 @@ use crate::lighting::{
     ColorMaterialMode, LightModelParam, LightParam, LightParamName, Material, MaterialParam, MaterialParamName,
 };
 use crate::matrix::{self, MatrixMode, MatrixStack};
+use crate::raster::scene::{DrawState, Scene};
 use crate::state::{
     Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, RasterState, ShadeModel, WindowRect,
 };
@@ -26,6 +25,7 @@ use crate::texture::texgen::TexCoordStage;
 use crate::texture::unit::{TexturePlan, TextureUnits};
 use crate::texture::TextureStore;
 use glam::{Mat4, Vec3, Vec4};
+use softgl_jit::interp;
 use softgl_jit::texture::MAX_UNITS;
 use softgl_jit::{
     BlendEquation, BlendFactor, BlendKey, CacheStats, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,

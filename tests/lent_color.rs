@@ -2,7 +2,9 @@
 //! with the caller's buffer): row strides with padding, top-down rows, and
 //! memory too small for the size refused.
 
-use softgl::{Clear, ClearMask, ColorFormat, ColorMemory, Context, Framebuffer, FramebufferDesc, GlError, PrimitiveMode};
+use softgl::{
+    Clear, ClearMask, ColorFormat, ColorMemory, Context, Framebuffer, FramebufferDesc, GlError, PrimitiveMode,
+};
 use std::sync::{Arc, Mutex};
 
 /// Memory shared with the test, so that it can look at what was drawn.

@@ -30,7 +30,11 @@ fn draws_wait_until_the_framebuffer_is_read() {
     quad(&mut gl, [1.0, 0.0, 0.0]);
     let s = gl.scene_stats();
     assert_eq!(s.pending_primitives, 2, "the quad's two triangles wait");
-    assert_eq!(gl.framebuffer_pending().pixel(50, 35), Some([0, 0, 0, 0]), "nothing drawn yet");
+    assert_eq!(
+        gl.framebuffer_pending().pixel(50, 35),
+        Some([0, 0, 0, 0]),
+        "nothing drawn yet"
+    );
     // Reading pixels flushes: every pixel is the quad's.
     let bytes = gl.read_pixels(0, 0, 100, 70, softgl::ReadFormat::Rgba8).unwrap();
     assert!(bytes.chunks(4).all(|p| p == [255, 0, 0, 255]));
@@ -52,7 +56,11 @@ fn clears_and_draws_keep_their_order_in_every_tile() {
     gl.disable(Capability::ScissorTest).unwrap();
     let fb = gl.framebuffer();
     for (x, y) in [(0, 0), (74, 129), (70, 64), (1, 127)] {
-        assert_eq!(fb.pixel(x, y), Some([0, 0, 255, 255]), "({x}, {y}) cleared after the quad");
+        assert_eq!(
+            fb.pixel(x, y),
+            Some([0, 0, 255, 255]),
+            "({x}, {y}) cleared after the quad"
+        );
     }
     for (x, y) in [(75, 0), (149, 129), (128, 64)] {
         assert_eq!(fb.pixel(x, y), Some([0, 255, 0, 255]), "({x}, {y}) the quad's");
@@ -120,7 +128,8 @@ fn a_draw_past_the_memory_bound_flushes_midway_and_draws_the_same_pixels() {
         gl.set_scene_bound(bound);
         gl.ortho(0.0, f64::from(w), 0.0, f64::from(h), -1.0, 1.0).unwrap();
         gl.enable(Capability::Blend).unwrap();
-        gl.blend_func(softgl::BlendFactor::One, softgl::BlendFactor::One).unwrap();
+        gl.blend_func(softgl::BlendFactor::One, softgl::BlendFactor::One)
+            .unwrap();
         let arrays = VertexArrays::with_colors(2, &pos, 3, &col);
         gl.draw_arrays(PrimitiveMode::Triangles, 0, 60_000, &arrays).unwrap();
         let stats = gl.scene_stats();

@@ -406,11 +406,13 @@ fn nan_and_inf_positions_drop_the_primitive() {
     b.draw(&mut gl, PrimitiveMode::TriangleStrip);
     // Pixel centers with x > 16 and y > 2 (x - 16): none lies on the slanted edge.
     let right = |x: u32, y: u32| x >= 16 && (y as f32 + 0.5) > 2.0 * (x as f32 + 0.5 - 16.0);
-    expect_image(
-        &mut gl,
-        "strip with a NaN vertex",
-        |x, y| if right(x, y) { RED } else { CLEAR },
-    );
+    expect_image(&mut gl, "strip with a NaN vertex", |x, y| {
+        if right(x, y) {
+            RED
+        } else {
+            CLEAR
+        }
+    });
 }
 
 #[test]
@@ -456,7 +458,11 @@ fn nan_and_inf_colors_render_as_clamped_values() {
     let mut b = Batch::default();
     b.tri([p2(-1.0, -1.0), p2(3.0, -1.0), p2(-1.0, 3.0)], [NAN; 4]).good();
     b.draw(&mut gl, PrimitiveMode::Triangles);
-    expect_image(&mut gl, "all-NaN color", |x, y| if in_good(x, y) { GREEN } else { [0; 4] });
+    expect_image(
+        &mut gl,
+        "all-NaN color",
+        |x, y| if in_good(x, y) { GREEN } else { [0; 4] },
+    );
 }
 
 #[test]
@@ -982,7 +988,11 @@ fn stencil_wraps_through_a_draw() {
         .unwrap();
     gl.stencil_func(CompareFunc::Equal, 255, 0xff).unwrap();
     full().draw(&mut gl, PrimitiveMode::Triangles);
-    expect_image(&mut gl, "stencil Equal 255", |x, y| if in_good(x, y) { RED } else { CLEAR });
+    expect_image(
+        &mut gl,
+        "stencil Equal 255",
+        |x, y| if in_good(x, y) { RED } else { CLEAR },
+    );
     gl.stencil_func(CompareFunc::Always, -5, 0xff).unwrap();
     gl.stencil_op(StencilOp::Keep, StencilOp::Keep, StencilOp::Replace)
         .unwrap();
@@ -1034,7 +1044,11 @@ fn polygon_offset_extremes() {
             match mode {
                 PolygonMode::Fill => {
                     let drawn = want.is_some();
-                    expect_image(&mut gl, &what, |x, y| if drawn && in_good(x, y) { GREEN } else { CLEAR });
+                    expect_image(
+                        &mut gl,
+                        &what,
+                        |x, y| if drawn && in_good(x, y) { GREEN } else { CLEAR },
+                    );
                     if !tilted || want != Some(MID) {
                         assert_eq!(gl.framebuffer().depth_at(16, 16), Some(want.unwrap_or(FAR)), "{what}");
                     }

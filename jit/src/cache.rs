@@ -4,8 +4,8 @@ use crate::key::FragmentKey;
 use crate::specialist::{Specialist, SpecialistError};
 use crate::tier::Tier;
 use lru::LruCache;
-use std::sync::Arc;
 use std::num::NonZeroUsize;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// Specialists kept when neither the API nor `SOFTGL_SPECIALISTS` says

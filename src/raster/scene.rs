@@ -12,7 +12,7 @@
 //! bounds cut to the tile: coverage decides each pixel on its own, so the
 //! pixels are those of the whole primitive at once.
 
-use super::{reach_box, triangle_box, PrimSink, Rasterize, RasterParams, RasterVertex};
+use super::{reach_box, triangle_box, PrimSink, RasterParams, RasterVertex, Rasterize};
 use crate::fragment::{FragmentStage, StageBuffers};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
 use crate::geometry::varying::{Varyings, MAX_VARYINGS};
@@ -338,18 +338,16 @@ impl Scene {
                     .map_or(bin.len(), |n| i + n);
                 let draw = &self.draws[d];
                 let specialist = draw.specialist.as_deref();
-                let view = views[d].get_or_insert_with(|| {
-                    specialist.map_or(DrawTextures::None, |s| s.texture_view(&sets[d]))
-                });
-                let r = FragmentStage::new(draw.key, draw.uniforms, &sets[d], view, band, specialist, &mut buffers).and_then(
-                    |mut stage| {
+                let view =
+                    views[d].get_or_insert_with(|| specialist.map_or(DrawTextures::None, |s| s.texture_view(&sets[d])));
+                let r = FragmentStage::new(draw.key, draw.uniforms, &sets[d], view, band, specialist, &mut buffers)
+                    .and_then(|mut stage| {
                         for &e in &bin[i..end] {
                             let p = &self.prims[e as usize];
                             self.rasterize(p, tile, &mut scratch, &mut Rasterize(&mut stage));
                         }
                         stage.finish()
-                    },
-                );
+                    });
                 if let Err(e) = r {
                     first_error.get_or_insert(e);
                 }
@@ -378,7 +376,14 @@ impl Binner<'_> {
         self.error.map_or(Ok(()), Err)
     }
 
-    fn record(&mut self, r: Option<Rect>, params: &RasterParams, kind: Kind, v: &[&RasterVertex], flat: Option<&Varyings>) {
+    fn record(
+        &mut self,
+        r: Option<Rect>,
+        params: &RasterParams,
+        kind: Kind,
+        v: &[&RasterVertex],
+        flat: Option<&Varyings>,
+    ) {
         let Some(r) = r else { return };
         let draw = match self.draw {
             Some(d) => d,

@@ -203,7 +203,12 @@ impl Context {
     /// otherwise pile them up).
     fn before_texture_write(&mut self, target: TexTarget) {
         let obj = self.textures.bound(self.textures.active_unit(), target);
-        if obj.images.iter().flatten().any(|i| std::sync::Arc::strong_count(&i.texels) > 1) {
+        if obj
+            .images
+            .iter()
+            .flatten()
+            .any(|i| std::sync::Arc::strong_count(&i.texels) > 1)
+        {
             self.finish_scene();
         }
     }

@@ -199,7 +199,10 @@ impl TextureStore {
             key,
             base: storage.base,
             images,
-            shared: levels.iter().map(|i| i.as_ref().map(|i| Arc::clone(&i.texels))).collect(),
+            shared: levels
+                .iter()
+                .map(|i| i.as_ref().map(|i| Arc::clone(&i.texels)))
+                .collect(),
             params: TextureRef {
                 images: &[],
                 base_level: p.base_level as u32,

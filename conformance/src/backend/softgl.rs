@@ -45,7 +45,11 @@ impl Backend for Softgl {
     }
 
     fn probe(&self) -> Result<String, super::Unavailable> {
-        Ok(format!("softgl {} (in process)", env!("CARGO_PKG_VERSION")))
+        Ok(format!(
+            "softgl {} (in process, {} rasterizer threads)",
+            env!("CARGO_PKG_VERSION"),
+            softgl::raster::pool::default_threads()
+        ))
     }
 
     fn render(&mut self, scene: &Scene, full: bool, runs: usize) -> Outcome {

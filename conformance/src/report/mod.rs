@@ -258,6 +258,12 @@ pub fn summary(results: &[SceneResult], names: &[String]) -> String {
             t.steady_ms
         );
     }
+    let _ = writeln!(
+        o,
+        "\nTimes: softgl rasterizes on {} threads (`SOFTGL_THREADS`); llvmpipe and softpipe run as Mesa sets them (`LP_NUM_THREADS`: {}).",
+        softgl::raster::pool::default_threads(),
+        std::env::var("LP_NUM_THREADS").unwrap_or_else(|_| "unset, the cores".to_string())
+    );
     o
 }
 
