@@ -24,8 +24,11 @@ pub fn threads_from(value: Option<&str>) -> usize {
         .min(MAX_THREADS)
 }
 
+/// The pools made so far, by thread count.
+type Pools = Mutex<Vec<(usize, Arc<ThreadPool>)>>;
+
 fn pool(threads: usize) -> Option<Arc<ThreadPool>> {
-    static POOLS: OnceLock<Mutex<Vec<(usize, Arc<ThreadPool>)>>> = OnceLock::new();
+    static POOLS: OnceLock<Pools> = OnceLock::new();
     let mut pools = POOLS
         .get_or_init(|| Mutex::new(Vec::new()))
         .lock()

@@ -244,6 +244,9 @@ pub struct Sampling<'a> {
     params: TextureRef<'static>,
 }
 
+/// An image's texels, shared with the texture object.
+type SharedTexels = Arc<Vec<u8>>;
+
 /// A [`Sampling`] that holds its texels (shared with the texture object,
 /// which copies them before a later write): what a deferred draw keeps.
 #[derive(Clone, Debug)]
@@ -251,7 +254,7 @@ pub struct SharedSampling {
     key: SamplerKey,
     base: BaseFormat,
     /// Each image's texels (`None`: empty) and size.
-    images: Vec<(Option<Arc<Vec<u8>>>, [u32; 3])>,
+    images: Vec<(Option<SharedTexels>, [u32; 3])>,
     params: TextureRef<'static>,
 }
 
