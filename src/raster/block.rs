@@ -1,0 +1,228 @@
+//! The block rasterizer: a triangle's coverage of one 64×64 tile as row
+//! masks, found hierarchically from the same [`Edges`] the row rasterizer
+//! (`triangle::cover`, the oracle) walks, with the same exact test per pixel.
+//!
+//! The tile's 16×16 blocks are classified against each edge from the edge
+//! function at a corner and its extreme over the block: rejected blocks cost
+//! nothing more, fully covered ones set their bits without a per-pixel test,
+//! and partial ones are split into 4×4 blocks, classified the same way; only
+//! partial 4×4 blocks are evaluated per pixel (16 values per edge, each the
+//! corner's value plus a precomputed step). An edge that accepts all of a
+//! block is not tested inside it.
+//!
+//! Exactness: snapped coordinates are within ±2^40 (`snap`), so an edge
+//! function can reach 2^82; its value at the tile's origin is computed in
+//! i128 once per edge and tile. An edge kept for the tile has both signs of
+//! `E − k` on it, so `|E − k| ≤ 63·(|dx| + |dy|)·ONE + 1 < 2^57` at the
+//! origin and everywhere inside: all later sums are exact in i64.
+
+use super::edges::Edges;
+use super::ONE;
+use crate::framebuffer::Rect;
+
+/// Side of a tile in pixels.
+pub const TILE: u32 = 64;
+
+/// A tile's coverage: bit `i` of `rows[j]` is pixel `(x0 + i, y0 + j)`
+/// (window coordinates, y up).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TileMask {
+    pub x0: u32,
+    pub y0: u32,
+    pub rows: [u64; TILE as usize],
+}
+
+impl TileMask {
+    /// No pixel of the tile whose lower-left pixel is `(x0, y0)`.
+    pub fn empty(x0: u32, y0: u32) -> TileMask {
+        TileMask {
+            x0,
+            y0,
+            rows: [0; TILE as usize],
+        }
+    }
+
+    /// Number of covered pixels.
+    pub fn count(&self) -> u32 {
+        self.rows.iter().map(|r| r.count_ones()).sum()
+    }
+
+    /// Whether pixel `(x, y)` (window coordinates) is covered.
+    pub fn covers(&self, x: u32, y: u32) -> bool {
+        let (i, j) = (x.wrapping_sub(self.x0), y.wrapping_sub(self.y0));
+        i < TILE && j < TILE && self.rows[j as usize] >> i & 1 == 1
+    }
+}
+
+/// One edge's stepping over a tile, its value less `k` so that a pixel is
+/// inside when it is `>= 0`.
+#[derive(Clone, Copy, Debug, Default)]
+struct Step {
+    /// `E − k` at the tile's lower-left pixel.
+    c0: i64,
+    /// Change of `E` per pixel right and per row up.
+    sx: i64,
+    sy: i64,
+    /// Least and greatest change of `E` from a block's lower-left pixel over
+    /// a 16×16 block (`[0]`) and a 4×4 block (`[1]`).
+    lo: [i64; 2],
+    hi: [i64; 2],
+    /// Change of `E` from a 4×4 block's lower-left pixel to its pixel
+    /// `(l % 4, l / 4)`.
+    off: [i64; 16],
+}
+
+impl Step {
+    fn new(c0: i64, sx: i64, sy: i64) -> Step {
+        let span = |n: i64| {
+            let (a, b) = (n * sx, n * sy);
+            (a.min(0) + b.min(0), a.max(0) + b.max(0))
+        };
+        let ((lo16, hi16), (lo4, hi4)) = (span(15), span(3));
+        Step {
+            c0,
+            sx,
+            sy,
+            lo: [lo16, lo4],
+            hi: [hi16, hi4],
+            off: std::array::from_fn(|l| (l % 4) as i64 * sx + (l / 4) as i64 * sy),
+        }
+    }
+
+    /// `E − k` at pixel `(i, j)` of the tile.
+    #[inline]
+    fn at(&self, i: u32, j: u32) -> i64 {
+        self.c0 + i64::from(i) * self.sx + i64::from(j) * self.sy
+    }
+}
+
+/// The edges still undecided in a block (the others accept all of it).
+#[derive(Clone, Copy)]
+struct Live {
+    edge: [u8; 3],
+    n: usize,
+}
+
+/// Classifies the block of `level` (0: 16×16, 1: 4×4) whose lower-left pixel
+/// is `(i, j)` of the tile against the `live` edges: `None` when one rejects
+/// all of it, else the edges that stay undecided (none: fully covered).
+#[inline]
+fn classify(steps: &[Step; 3], live: Live, level: usize, i: u32, j: u32) -> Option<Live> {
+    let mut out = Live { edge: [0; 3], n: 0 };
+    for &e in &live.edge[..live.n] {
+        let s = &steps[usize::from(e)];
+        let c = s.at(i, j);
+        if c + s.hi[level] < 0 {
+            return None;
+        }
+        if c + s.lo[level] < 0 {
+            out.edge[out.n] = e;
+            out.n += 1;
+        }
+    }
+    Some(out)
+}
+
+/// The pixels of the tile `tile` (at most 64×64) that the triangle of `edges`
+/// covers, within `clip` (the tile is usually intersected with the raster
+/// bounds): exactly the pixels `triangle::cover` emits with those bounds.
+pub fn tile_coverage(edges: &Edges, tile: Rect, clip: Rect) -> TileMask {
+    debug_assert!(tile.x1 - tile.x0 <= TILE && tile.y1 - tile.y0 <= TILE, "a tile is at most 64x64");
+    let mut mask = TileMask::empty(tile.x0, tile.y0);
+    let (ox, oy) = (i64::from(tile.x0), i64::from(tile.y0));
+    // The pixels to decide, relative to the tile, half-open: tile, clip and
+    // bounding box intersected.
+    let lo_x = ox.max(i64::from(clip.x0)).max(edges.px.0) - ox;
+    let hi_x = i64::from(tile.x1.min(clip.x1)).min(edges.px.1.saturating_add(1)) - ox;
+    let lo_y = oy.max(i64::from(clip.y0)).max(edges.py.0) - oy;
+    let hi_y = i64::from(tile.y1.min(clip.y1)).min(edges.py.1.saturating_add(1)) - oy;
+    if lo_x >= hi_x || lo_y >= hi_y {
+        return mask;
+    }
+    let (cx0, cx1, cy0, cy1) = (lo_x as u32, hi_x as u32, lo_y as u32, hi_y as u32);
+
+    let mut steps = [Step::default(); 3];
+    let mut live = Live { edge: [0; 3], n: 0 };
+    for (n, e) in edges.edges.iter().enumerate() {
+        let (sx, sy) = (-e.dy * ONE, e.dx * ONE);
+        let w = i128::from;
+        let c0 = w(e.dx) * w(oy * ONE - e.a.1) - w(e.dy) * w(ox * ONE - e.a.0) - w(e.k);
+        // Extremes of E − k over the pixels to decide.
+        let (ax, bx) = (i64::from(cx0) * sx, i64::from(cx1 - 1) * sx);
+        let (ay, by) = (i64::from(cy0) * sy, i64::from(cy1 - 1) * sy);
+        let least = c0 + w(ax.min(bx) + ay.min(by));
+        let most = c0 + w(ax.max(bx) + ay.max(by));
+        if most < 0 {
+            return mask;
+        }
+        if least < 0 {
+            // Both signs occur over the rectangle, so c0 is small (module docs).
+            steps[n] = Step::new(c0 as i64, sx, sy);
+            live.edge[live.n] = n as u8;
+            live.n += 1;
+        }
+    }
+
+    if live.n > 0 {
+        for bj in cy0 / 16..=(cy1 - 1) / 16 {
+            for bi in cx0 / 16..=(cx1 - 1) / 16 {
+                let (i, j) = (bi * 16, bj * 16);
+                match classify(&steps, live, 0, i, j) {
+                    None => {}
+                    Some(l) if l.n == 0 => fill(&mut mask.rows, i, j, 16, 0xffff),
+                    Some(l) => block16(&steps, l, &mut mask.rows, i, j),
+                }
+            }
+        }
+    } else {
+        // Every edge accepts the whole rectangle.
+        for r in &mut mask.rows[cy0 as usize..cy1 as usize] {
+            *r = u64::MAX;
+        }
+    }
+
+    // Keep the rectangle: full and partial blocks may reach past it.
+    let cols = (u64::MAX >> (64 - (cx1 - cx0))) << cx0;
+    for (j, r) in mask.rows.iter_mut().enumerate() {
+        *r &= if (cy0..cy1).contains(&(j as u32)) { cols } else { 0 };
+    }
+    mask
+}
+
+/// Sets `bits << i` in `n` rows from row `j`.
+#[inline]
+fn fill(rows: &mut [u64; 64], i: u32, j: u32, n: u32, bits: u64) {
+    for r in &mut rows[j as usize..(j + n) as usize] {
+        *r |= bits << i;
+    }
+}
+
+/// A partial 16×16 block at `(i, j)`: its 4×4 blocks, classified, and the
+/// partial ones evaluated per pixel against the edges still live in them.
+fn block16(steps: &[Step; 3], live: Live, rows: &mut [u64; 64], i: u32, j: u32) {
+    for sj in 0..4 {
+        for si in 0..4 {
+            let (i, j) = (i + si * 4, j + sj * 4);
+            let l = match classify(steps, live, 1, i, j) {
+                None => continue,
+                Some(l) => l,
+            };
+            let mut bits = 0xffffu32;
+            for &e in &l.edge[..l.n] {
+                let s = &steps[usize::from(e)];
+                let c = s.at(i, j);
+                let mut m = 0u32;
+                for (k, off) in s.off.iter().enumerate() {
+                    m |= u32::from(c + off >= 0) << k;
+                }
+                bits &= m;
+            }
+            for r in 0..4 {
+                rows[(j + r) as usize] |= u64::from(bits >> (4 * r) & 0xf) << i;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;
