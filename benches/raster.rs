@@ -72,13 +72,19 @@ fn bench(c: &mut Criterion) {
         offset: None,
     };
     let sets = [
-        ("full_tile", vec![[vertex(-500.0, -500.0), vertex(2000.0, -500.0), vertex(-500.0, 2000.0)]]),
+        (
+            "full_tile",
+            vec![[vertex(-500.0, -500.0), vertex(2000.0, -500.0), vertex(-500.0, 2000.0)]],
+        ),
         ("2000px", random(256, 2000.0, 1)),
         ("20px", random(1024, 20.0, 2)),
     ];
     let mut group = c.benchmark_group("tile_coverage");
     for (name, tris) in &sets {
-        let edges: Vec<Option<Edges>> = tris.iter().map(|t| Edges::window([&t[0], &t[1], &t[2]], HEIGHT)).collect();
+        let edges: Vec<Option<Edges>> = tris
+            .iter()
+            .map(|t| Edges::window([&t[0], &t[1], &t[2]], HEIGHT))
+            .collect();
         let pixels: u64 = edges
             .iter()
             .flatten()

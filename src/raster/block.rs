@@ -127,7 +127,10 @@ fn classify(steps: &[Step; 3], live: Live, level: usize, i: u32, j: u32) -> Opti
 /// covers, within `clip` (the tile is usually intersected with the raster
 /// bounds): exactly the pixels `triangle::cover` emits with those bounds.
 pub fn tile_coverage(edges: &Edges, tile: Rect, clip: Rect) -> TileMask {
-    debug_assert!(tile.x1 - tile.x0 <= TILE && tile.y1 - tile.y0 <= TILE, "a tile is at most 64x64");
+    debug_assert!(
+        tile.x1 - tile.x0 <= TILE && tile.y1 - tile.y0 <= TILE,
+        "a tile is at most 64x64"
+    );
     let mut mask = TileMask::empty(tile.x0, tile.y0);
     let (ox, oy) = (i64::from(tile.x0), i64::from(tile.y0));
     // The pixels to decide, relative to the tile, half-open: tile, clip and
@@ -163,45 +166,56 @@ pub fn tile_coverage(edges: &Edges, tile: Rect, clip: Rect) -> TileMask {
         }
     }
 
-    if live.n > 0 {
-        for bj in cy0 / 16..=(cy1 - 1) / 16 {
-            for bi in cx0 / 16..=(cx1 - 1) / 16 {
-                let (i, j) = (bi * 16, bj * 16);
-                match classify(&steps, live, 0, i, j) {
-                    None => {}
-                    Some(l) if l.n == 0 => fill(&mut mask.rows, i, j, 16, 0xffff),
-                    Some(l) => block16(&steps, l, &mut mask.rows, i, j),
-                }
+    let area = Area {
+        cols: (u64::MAX >> (64 - (cx1 - cx0))) << cx0,
+        x: (cx0, cx1),
+        y: (cy0, cy1),
+    };
+    if live.n == 0 {
+        // Every edge accepts the whole rectangle.
+        fill(&mut mask.rows, &area, cy0, cy1 - cy0, u64::MAX);
+        return mask;
+    }
+    for bj in cy0 / 16..=(cy1 - 1) / 16 {
+        for bi in cx0 / 16..=(cx1 - 1) / 16 {
+            let (i, j) = (bi * 16, bj * 16);
+            match classify(&steps, live, 0, i, j) {
+                None => {}
+                Some(l) if l.n == 0 => fill(&mut mask.rows, &area, j, 16, 0xffff << i),
+                Some(l) => block16(&steps, l, &mut mask.rows, &area, i, j),
             }
         }
-    } else {
-        // Every edge accepts the whole rectangle.
-        for r in &mut mask.rows[cy0 as usize..cy1 as usize] {
-            *r = u64::MAX;
-        }
-    }
-
-    // Keep the rectangle: full and partial blocks may reach past it.
-    let cols = (u64::MAX >> (64 - (cx1 - cx0))) << cx0;
-    for (j, r) in mask.rows.iter_mut().enumerate() {
-        *r &= if (cy0..cy1).contains(&(j as u32)) { cols } else { 0 };
     }
     mask
 }
 
-/// Sets `bits << i` in `n` rows from row `j`.
+/// The pixels to decide, relative to the tile: columns `x.0..x.1` (as the
+/// mask `cols`) of rows `y.0..y.1`. Blocks may reach past it; their bits
+/// outside are never set.
+struct Area {
+    cols: u64,
+    x: (u32, u32),
+    y: (u32, u32),
+}
+
+/// Sets `bits` (within the area) in `n` rows from row `j`.
 #[inline]
-fn fill(rows: &mut [u64; 64], i: u32, j: u32, n: u32, bits: u64) {
-    for r in &mut rows[j as usize..(j + n) as usize] {
-        *r |= bits << i;
+fn fill(rows: &mut [u64; 64], area: &Area, j: u32, n: u32, bits: u64) {
+    let (j0, j1) = (j.max(area.y.0), (j + n).min(area.y.1));
+    for r in &mut rows[j0 as usize..j1 as usize] {
+        *r |= bits & area.cols;
     }
 }
 
-/// A partial 16×16 block at `(i, j)`: its 4×4 blocks, classified, and the
-/// partial ones evaluated per pixel against the edges still live in them.
-fn block16(steps: &[Step; 3], live: Live, rows: &mut [u64; 64], i: u32, j: u32) {
-    for sj in 0..4 {
-        for si in 0..4 {
+/// A partial 16×16 block at `(i, j)`: its 4×4 blocks within the area,
+/// classified, and the partial ones evaluated per pixel against the edges
+/// still live in them.
+fn block16(steps: &[Step; 3], live: Live, rows: &mut [u64; 64], area: &Area, i: u32, j: u32) {
+    // The 4x4 blocks of this one that meet the area.
+    let (si0, si1) = ((i.max(area.x.0) - i) / 4, ((i + 16).min(area.x.1) - 1 - i) / 4);
+    let (sj0, sj1) = ((j.max(area.y.0) - j) / 4, ((j + 16).min(area.y.1) - 1 - j) / 4);
+    for sj in sj0..=sj1 {
+        for si in si0..=si1 {
             let (i, j) = (i + si * 4, j + sj * 4);
             let l = match classify(steps, live, 1, i, j) {
                 None => continue,
@@ -211,17 +225,23 @@ fn block16(steps: &[Step; 3], live: Live, rows: &mut [u64; 64], i: u32, j: u32) 
             for &e in &l.edge[..l.n] {
                 let s = &steps[usize::from(e)];
                 let c = s.at(i, j);
-                let mut m = 0u32;
-                for (k, off) in s.off.iter().enumerate() {
-                    m |= u32::from(c + off >= 0) << k;
-                }
-                bits &= m;
+                bits &= inside(c, &s.off);
             }
-            for r in 0..4 {
-                rows[(j + r) as usize] |= u64::from(bits >> (4 * r) & 0xf) << i;
+            for r in j.max(area.y.0)..(j + 4).min(area.y.1) {
+                rows[r as usize] |= u64::from(bits >> (4 * (r - j)) & 0xf) << i & area.cols;
             }
         }
     }
+}
+
+/// Bit `l` set when `c + off[l] >= 0`.
+#[inline(always)]
+fn inside(c: i64, off: &[i64; 16]) -> u32 {
+    let mut m = 0;
+    for (l, &o) in off.iter().enumerate() {
+        m |= u32::from(c + o >= 0) << l;
+    }
+    m
 }
 
 #[cfg(test)]

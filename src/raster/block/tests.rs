@@ -63,7 +63,10 @@ fn add_span(m: &mut TileMask, tile: Rect, s: &FragmentSpan) {
     for b in 0..s.len {
         if s.mask >> b & 1 == 1 {
             let (x, y) = (s.x + b, s.y);
-            assert!(x >= tile.x0 && x < tile.x1 && y >= tile.y0 && y < tile.y1, "({x}, {y}) off the tile");
+            assert!(
+                x >= tile.x0 && x < tile.x1 && y >= tile.y0 && y < tile.y1,
+                "({x}, {y}) off the tile"
+            );
             assert!(!m.covers(x, y), "({x}, {y}) emitted twice");
             m.rows[(y - tile.y0) as usize] |= 1 << (x - tile.x0);
         }
@@ -102,13 +105,23 @@ fn show(m: &TileMask) -> String {
     m.rows
         .iter()
         .rev()
-        .map(|r| (0..64).map(|i| if r >> i & 1 == 1 { '#' } else { '.' }).collect::<String>() + "\n")
+        .map(|r| {
+            (0..64)
+                .map(|i| if r >> i & 1 == 1 { '#' } else { '.' })
+                .collect::<String>()
+                + "\n"
+        })
         .collect()
 }
 
 fn check(p: [(i64, i64); 3], tile: Rect, clip: Rect) -> TileMask {
     let (b, o) = (block(p, tile, clip), oracle(p, tile, clip));
-    assert!(b == o, "p = {p:?}, tile {tile:?}, clip {clip:?}\nblock:\n{}oracle:\n{}", show(&b), show(&o));
+    assert!(
+        b == o,
+        "p = {p:?}, tile {tile:?}, clip {clip:?}\nblock:\n{}oracle:\n{}",
+        show(&b),
+        show(&o)
+    );
     b
 }
 
@@ -129,7 +142,10 @@ fn full_tile_and_nothing() {
     let m = check(big, t, clip);
     assert_eq!((m.count(), m.rows[7], m.rows[6]), (30, 0x3ff << 5, 0));
     // Degenerate: collinear points cover nothing.
-    assert_eq!(check([(0, 0), (100 * ONE, 50 * ONE), (50 * ONE, 25 * ONE)], t, t).count(), 0);
+    assert_eq!(
+        check([(0, 0), (100 * ONE, 50 * ONE), (50 * ONE, 25 * ONE)], t, t).count(),
+        0
+    );
     // Beside the tile.
     assert_eq!(check([(0, 0), (10 * ONE, 0), (0, 10 * ONE)], t, t).count(), 0);
 }
@@ -178,7 +194,15 @@ fn small_grid_exhaustive() {
 fn block_grid_exhaustive() {
     let t = tile_rect(1, 1);
     let o = 64 * ONE;
-    let vals = [o - 8 * ONE, o, o + 15 * ONE + ONE / 2, o + 16 * ONE, o + 33 * ONE, o + 64 * ONE, o + 70 * ONE];
+    let vals = [
+        o - 8 * ONE,
+        o,
+        o + 15 * ONE + ONE / 2,
+        o + 16 * ONE,
+        o + 33 * ONE,
+        o + 64 * ONE,
+        o + 70 * ONE,
+    ];
     let pts: Vec<(i64, i64)> = vals.iter().flat_map(|&x| vals.iter().map(move |&y| (x, y))).collect();
     let clip = Rect {
         x0: 70,
