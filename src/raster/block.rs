@@ -14,7 +14,19 @@
 //! function can reach 2^82; its value at the tile's origin is computed in
 //! i128 once per edge and tile. An edge kept for the tile has both signs of
 //! `E − k` on it, so `|E − k| ≤ 63·(|dx| + |dy|)·ONE + 1 < 2^57` at the
-//! origin and everywhere inside: all later sums are exact in i64.
+//! origin and everywhere inside: all later sums are exact in i64. (The row
+//! rasterizer's i64 products overflow past about ±2^30 units, 4M pixels;
+//! clipping keeps window coordinates within the viewport, far below.)
+//!
+//! Speed (`cargo bench -p softgl --bench raster`, 2 shared cores, two runs,
+//! medians; per tile-triangle, then per covered pixel), block vs rows:
+//! a triangle covering the tile 155–243 ns vs 1.33–1.41 µs (0.04–0.06 vs
+//! 0.33 ns/px); random 2000-px triangles (1192 px in the tile on average)
+//! 3.4–4.1 µs vs 1.0–1.3 µs (2.8–3.5 vs 0.84–1.06 ns/px); 20-px triangles
+//! 0.58–0.90 µs vs 0.30–0.42 µs (30–47 vs 16–22 ns/px). Full blocks pay off;
+//! the scalar per-pixel i64 test of partial 4×4 blocks (16 values × up to
+//! 3 edges) does not yet: i32 lanes (exact when both steps are below 2^27)
+//! and SIMD compares are the next step.
 
 use super::edges::Edges;
 use super::ONE;
