@@ -20,13 +20,15 @@
 //!
 //! Speed (`cargo bench -p softgl --bench raster`, 2 shared cores, two runs,
 //! medians; per tile-triangle, then per covered pixel), block vs rows:
-//! a triangle covering the tile 155–243 ns vs 1.33–1.41 µs (0.04–0.06 vs
-//! 0.33 ns/px); random 2000-px triangles (1192 px in the tile on average)
-//! 3.4–4.1 µs vs 1.0–1.3 µs (2.8–3.5 vs 0.84–1.06 ns/px); 20-px triangles
-//! 0.58–0.90 µs vs 0.30–0.42 µs (30–47 vs 16–22 ns/px). Full blocks pay off;
-//! the scalar per-pixel i64 test of partial 4×4 blocks (16 values × up to
-//! 3 edges) does not yet: i32 lanes (exact when both steps are below 2^27)
-//! and SIMD compares are the next step.
+//! a triangle covering the tile 159–167 ns vs 0.73–0.83 µs (0.04 vs
+//! 0.18–0.20 ns/px); random 2000-px triangles (1192 px in the tile on
+//! average) 1.39–1.66 µs vs 0.67–0.72 µs (1.2–1.4 vs 0.56–0.60 ns/px);
+//! 20-px triangles 359–426 ns vs 209–223 ns (19–22 vs 11–12 ns/px). Full
+//! blocks pay off 5x; partial ones cost about 2x the row loop's divisions
+//! still: the i64 lanes of the 4×4 tests (SSE2 has no 64-bit compare) are
+//! the next thing to narrow (i32 is exact when both steps are below 2^27).
+//! Classifying the 4×4 blocks of a 16×16 one branch-free, as bit masks,
+//! took 2000-px triangles from 3.3x to 1.4–2x the row loop's time.
 
 use super::edges::Edges;
 use super::ONE;
@@ -105,29 +107,14 @@ impl Step {
 }
 
 /// The edges still undecided in a block, bit `e` for edge `e` (the others
-/// accept all of it). A bit set rather than a list: writing a list's bytes
-/// then reading it whole stalled store forwarding, 22% of the time.
+/// accept all of it).
 type Live = u8;
 
-/// Classifies the block of `level` (0: 16×16) whose lower-left pixel
-/// is `(i, j)` of the tile against the `live` edges: `None` when one rejects
-/// all of it, else the edges that stay undecided (none: fully covered).
-#[inline]
-fn classify(steps: &[Step; 3], live: Live, level: usize, i: u32, j: u32) -> Option<Live> {
-    let mut out = 0;
-    for (e, s) in steps.iter().enumerate() {
-        if live >> e & 1 == 0 {
-            continue;
-        }
-        let c = s.at(i, j);
-        if c + s.hi[level] < 0 {
-            return None;
-        }
-        if c + s.lo[level] < 0 {
-            out |= 1 << e;
-        }
-    }
-    Some(out)
+/// Bit `l` set for the cells `(l % 4, l / 4)` of a 4×4 grid within the
+/// inclusive ranges `i` and `j`.
+fn grid_mask(i: (u32, u32), j: (u32, u32)) -> u32 {
+    let row = (0xf >> (3 - (i.1 - i.0))) << i.0;
+    (j.0..=j.1).fold(0, |m, sj| m | row << (4 * sj))
 }
 
 /// The pixels of the tile `tile` (at most 64×64) that the triangle of `edges`
@@ -182,15 +169,27 @@ pub fn tile_coverage(edges: &Edges, tile: Rect, clip: Rect) -> TileMask {
         fill(&mut mask.rows, &area, cy0, cy1 - cy0, u64::MAX);
         return mask;
     }
-    for bj in cy0 / 16..=(cy1 - 1) / 16 {
-        for bi in cx0 / 16..=(cx1 - 1) / 16 {
-            let (i, j) = (bi * 16, bj * 16);
-            match classify(&steps, live, 0, i, j) {
-                None => {}
-                Some(0) => fill(&mut mask.rows, &area, j, 16, 0xffff << i),
-                Some(l) => block16(&steps, l, &mut mask.rows, &area, i, j),
-            }
+    // The tile's 16x16 blocks, classified together as the 4x4 blocks of a
+    // 16x16 one are (block16).
+    let meet = grid_mask((cx0 / 16, (cx1 - 1) / 16), (cy0 / 16, (cy1 - 1) / 16));
+    let (mut any, mut full) = (meet, meet);
+    for (e, s) in steps.iter().enumerate() {
+        if live >> e & 1 == 1 {
+            any &= inside(s.c0 + s.hi[0], 16 * s.sx, 16 * s.sy);
+            full &= inside(s.c0 + s.lo[0], 16 * s.sx, 16 * s.sy);
         }
+    }
+    let mut f = full;
+    while f != 0 {
+        let l = f.trailing_zeros();
+        f &= f - 1;
+        fill(&mut mask.rows, &area, l / 4 * 16, 16, 0xffff << (l % 4 * 16));
+    }
+    let mut p = any & !full;
+    while p != 0 {
+        let l = p.trailing_zeros();
+        p &= p - 1;
+        block16(&steps, live, &mut mask.rows, &area, l % 4 * 16, l / 4 * 16);
     }
     mask
 }
@@ -215,17 +214,14 @@ fn fill(rows: &mut [u64; 64], area: &Area, j: u32, n: u32, bits: u64) {
 
 /// A partial 16×16 block at `(i, j)`: its sixteen 4×4 blocks classified
 /// together, per live edge one bit mask of those it does not reject and one
-/// of those it accepts whole (branch-free: classifying them one by one cost
-/// 3.4 µs per 2000-px triangle, mostly in mispredicted branches); then the
-/// partial ones within the area evaluated per pixel.
+/// of those it accepts whole (branch-free: one at a time with a branch per
+/// edge, a 2000-px triangle took 2.4x as long); then the partial ones within
+/// the area evaluated per pixel.
 fn block16(steps: &[Step; 3], live: Live, rows: &mut [u64; 64], area: &Area, i: u32, j: u32) {
     // The 4x4 blocks of this one that meet the area.
     let (si0, si1) = ((i.max(area.x.0) - i) / 4, ((i + 16).min(area.x.1) - 1 - i) / 4);
     let (sj0, sj1) = ((j.max(area.y.0) - j) / 4, ((j + 16).min(area.y.1) - 1 - j) / 4);
-    let row = (0xf >> (3 - (si1 - si0))) << si0;
-    let meet = (0..4)
-        .filter(|sj| (sj0..=sj1).contains(sj))
-        .fold(0, |m, sj| m | row << (4 * sj));
+    let meet = grid_mask((si0, si1), (sj0, sj1));
     let (mut any, mut full) = (meet, meet);
     for (e, s) in steps.iter().enumerate() {
         if live >> e & 1 == 1 {
