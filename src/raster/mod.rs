@@ -7,12 +7,16 @@
 //!
 //! Measured facts about llvmpipe that these rules follow: `docs/llvmpipe-facts.md`.
 
+mod block;
+mod edges;
 mod line;
 mod point;
 pub mod pool;
 pub mod scene;
 mod triangle;
 
+pub use block::{tile_coverage, TileMask, TILE};
+pub use edges::{Edge, Edges};
 pub use line::line;
 pub use point::point;
 pub use triangle::{offset, triangle, triangle_box};

@@ -1,5 +1,6 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 
+use super::edges::{Edge, Edges};
 use super::{ceil_div, emit_row, floor_div, snap, with_planes, FillSlot, RasterParams, RasterVertex, SpanSink, ONE};
 use crate::framebuffer::Rect;
 use crate::geometry::varying::Varyings;
@@ -103,44 +104,23 @@ pub(super) fn triangle_y_up(
 }
 
 /// Covers the triangle of the snapped bottom-up positions `p` of `v`.
-fn cover(
-    mut p: [(i64, i64); 3],
+pub(super) fn cover(
+    p: [(i64, i64); 3],
     v: [&RasterVertex; 3],
     flat: Option<&Varyings>,
     params: &RasterParams,
     sink: &mut dyn SpanSink,
 ) {
-    let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
-    if area == 0 || params.bounds.is_empty() {
+    let Some(e) = Edges::new(p) else { return };
+    if params.bounds.is_empty() {
         return;
     }
-    if area < 0 {
-        p.swap(1, 2);
-    }
-
-    // Edge i runs from p[i] to p[i+1]; with counter-clockwise order the inside
-    // is on its left. A center exactly on an edge is inside when the edge is a
-    // left edge (going down) or a bottom edge (horizontal, going right).
-    let edges = [0, 1, 2].map(|i| {
-        let (a, b) = (p[i], p[(i + 1) % 3]);
-        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-        let owns = dy < 0 || (dy == 0 && dx > 0);
-        (a, dx, dy, if owns { 0 } else { 1 })
-    });
-
-    let (min_x, max_x) = (
-        p.iter().map(|q| q.0).min().unwrap_or(0),
-        p.iter().map(|q| q.0).max().unwrap_or(0),
-    );
-    let (min_y, max_y) = (
-        p.iter().map(|q| q.1).min().unwrap_or(0),
-        p.iter().map(|q| q.1).max().unwrap_or(0),
-    );
+    let edges = e.edges;
     let b = params.bounds;
-    let px0 = ceil_div(min_x, ONE).max(i64::from(b.x0));
-    let px1 = floor_div(max_x, ONE).min(i64::from(b.x1) - 1);
-    let py0 = ceil_div(min_y, ONE).max(i64::from(b.y0));
-    let py1 = floor_div(max_y, ONE).min(i64::from(b.y1) - 1);
+    let px0 = e.px.0.max(i64::from(b.x0));
+    let px1 = e.px.1.min(i64::from(b.x1) - 1);
+    let py0 = e.py.0.max(i64::from(b.y0));
+    let py1 = e.py.1.min(i64::from(b.y1) - 1);
     if px0 > px1 || py0 > py1 {
         return;
     }
@@ -150,7 +130,7 @@ fn cover(
     for py in py0..=py1 {
         let sy = py * ONE;
         let (mut lo, mut hi) = (px0, px1);
-        for &((ax, ay), dx, dy, k) in &edges {
+        for &Edge { a: (ax, ay), dx, dy, k } in &edges {
             // E(px) = dx * (sy - ay) - dy * (px * ONE - ax) must be >= k.
             let c = dx * (sy - ay) + dy * ax;
             let m = dy * ONE;
