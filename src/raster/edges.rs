@@ -67,6 +67,19 @@ impl Edges {
         })
     }
 
+    /// Whether every pixel centre of the box `x0..=x1` × `y0..=y1` is inside
+    /// the triangle: all four corners are (an edge function is linear, so
+    /// its least value over a rectangle is at a corner). In i128, exact for
+    /// any snapped coordinates.
+    pub fn contains_box(&self, (x0, x1): (i64, i64), (y0, y1): (i64, i64)) -> bool {
+        self.edges.iter().all(|e| {
+            [(x0, y0), (x1, y0), (x0, y1), (x1, y1)].iter().all(|&(x, y)| {
+                let w = |a: i64| i128::from(a);
+                w(e.dx) * (w(y) * w(ONE) - w(e.a.1)) - w(e.dy) * (w(x) * w(ONE) - w(e.a.0)) >= w(e.k)
+            })
+        })
+    }
+
     /// The edges of the triangle [`super::triangle`] rasterizes for `v` in a
     /// framebuffer `height` rows high: x snapped, and llvmpipe's top-down y
     /// snapped then reflected into GL rows (docs/llvmpipe-facts.md 2).

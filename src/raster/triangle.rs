@@ -70,20 +70,12 @@ pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterP
 /// The pixels [`triangle`] may cover: its snapped bounding box within
 /// `params.bounds`, as `cover` finds it; `None` when it covers nothing.
 pub fn triangle_box(v: [&RasterVertex; 3], params: &RasterParams) -> Option<Rect> {
-    let top = (i64::from(params.height) - 1) * ONE;
-    let p = v.map(|v| (snap(v.x), top - snap(v.y_down)));
-    let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
-    if area == 0 {
-        return None;
-    }
+    let e = Edges::window(v, params.height)?;
     let b = params.bounds;
-    let (xs, ys) = (p.map(|q| q.0), p.map(|q| q.1));
-    let min = |a: [i64; 3]| a[0].min(a[1]).min(a[2]);
-    let max = |a: [i64; 3]| a[0].max(a[1]).max(a[2]);
-    let x0 = ceil_div(min(xs), ONE).max(i64::from(b.x0));
-    let x1 = floor_div(max(xs), ONE).min(i64::from(b.x1) - 1);
-    let y0 = ceil_div(min(ys), ONE).max(i64::from(b.y0));
-    let y1 = floor_div(max(ys), ONE).min(i64::from(b.y1) - 1);
+    let x0 = e.px.0.max(i64::from(b.x0));
+    let x1 = e.px.1.min(i64::from(b.x1) - 1);
+    let y0 = e.py.0.max(i64::from(b.y0));
+    let y1 = e.py.1.min(i64::from(b.y1) - 1);
     (x0 <= x1 && y0 <= y1).then(|| Rect {
         x0: x0 as u32,
         y0: y0 as u32,
@@ -126,11 +118,14 @@ pub(super) fn cover(
     }
 
     let per_fragment_z = with_planes(sink, |planes| setup_planes(v, flat, params, planes));
+    // A box wholly inside (a tile a large triangle covers) needs no edge
+    // per row: every row is the box's (the fill frame's tiles, mostly).
+    let inside = e.contains_box((px0, px1), (py0, py1));
     let mut span = FragmentSpan::new(0, 0);
     for py in py0..=py1 {
         let sy = py * ONE;
         let (mut lo, mut hi) = (px0, px1);
-        for &Edge { a: (ax, ay), dx, dy, k } in &edges {
+        for &Edge { a: (ax, ay), dx, dy, k } in edges.iter().filter(|_| !inside) {
             // E(px) = dx * (sy - ay) - dy * (px * ONE - ax) must be >= k.
             let c = dx * (sy - ay) + dy * ax;
             let m = dy * ONE;
