@@ -147,3 +147,39 @@ fn a_draw_past_the_memory_bound_flushes_midway_and_draws_the_same_pixels() {
     assert!(split.peak_bytes <= bound + 1024, "{split:?}");
     assert!(image == split_image, "flushing midway changed pixels");
 }
+
+#[test]
+fn draws_holding_more_than_64_mib_of_textures_are_flushed() {
+    // 24 textures of 4 MiB, each uploaded, drawn with and deleted, no flush
+    // asked for: the scene holds at most 64 MiB of them (llvmpipe's bound).
+    let mut gl = context(16, 16);
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    let texels = vec![200u8; 1024 * 1024 * 4];
+    for name in 1..=24 {
+        gl.bind_texture(TextureTarget::D2, name).unwrap();
+        gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Nearest, MipFilter::None))
+            .unwrap();
+        let pixels = PixelData {
+            format: PixelFormat::Rgba,
+            ty: PixelType::UnsignedByte,
+            store: PixelStore::DEFAULT,
+            bytes: &texels,
+        };
+        gl.tex_image(
+            TexImageTarget::D2,
+            0,
+            InternalFormat::Rgba8,
+            [1024, 1024, 1],
+            0,
+            Some(pixels),
+        )
+        .unwrap();
+        quad(&mut gl, [1.0, 1.0, 1.0]);
+        gl.delete_textures(&[name]);
+    }
+    // The 17th texture passes 64 MiB: the scene is flushed after its quad's
+    // first triangle; its second and the 7 later quads (14 triangles) wait.
+    let s = gl.scene_stats();
+    assert_eq!((s.flushes, s.pending_primitives), (1, 15), "{s:?}");
+    assert_eq!(gl.framebuffer().pixel(8, 8), Some([200, 200, 200, 200]));
+}

@@ -19,6 +19,7 @@ use crate::geometry::varying::{Varyings, MAX_VARYINGS};
 use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::texture::TextureSet;
 use softgl_jit::{DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Specialist, Target};
+use std::collections::HashSet;
 use std::sync::Arc;
 
 /// Side of a tile, in pixels.
@@ -27,6 +28,14 @@ pub const TILE: u32 = 64;
 /// A scene is flushed when what it holds passes this many bytes, so a
 /// frame of any number of primitives runs in bounded memory.
 pub const MEMORY_BOUND: usize = 64 << 20;
+
+/// A scene is flushed when the texels its draws hold pass this many bytes
+/// (each image counted once), as llvmpipe flushes a scene referencing more
+/// than `LP_SCENE_MAX_RESOURCE_SIZE` of textures (64 MiB, `lp_scene.h`):
+/// a client that uploads, draws with and deletes a new texture each frame
+/// without a flush would otherwise pile up every frame's texels (piglit's
+/// streaming-texture-leak: 20 GB).
+pub const TEXTURE_BOUND: usize = 64 << 20;
 
 /// Bin entries with this bit are clears; the others primitives.
 const CLEAR: u32 = 1 << 31;
@@ -143,6 +152,9 @@ pub struct Scene {
     /// `clears` with [`CLEAR`] set, in the order recorded.
     bins: Vec<Vec<u32>>,
     bytes: usize,
+    /// The texel images the draws hold (by address) and their bytes.
+    textures: HashSet<usize>,
+    texture_bytes: usize,
     /// See [`Scene::bound`].
     bound: usize,
     peak: usize,
@@ -249,6 +261,8 @@ impl Scene {
         self.peak = self.peak.max(self.bytes);
         self.flushes += 1;
         self.draws.clear();
+        self.textures.clear();
+        self.texture_bytes = 0;
         self.prims.clear();
         self.verts.clear();
         self.vary.clear();
@@ -397,6 +411,11 @@ impl Binner<'_> {
             None => {
                 let d = self.scene.draws.len() as u32;
                 self.scene.bytes += std::mem::size_of::<DrawState>();
+                for t in self.state.textures.texels() {
+                    if self.scene.textures.insert(Arc::as_ptr(t) as usize) {
+                        self.scene.texture_bytes += t.len();
+                    }
+                }
                 self.scene.draws.push(self.state.clone());
                 self.draw = Some(d);
                 d
@@ -432,7 +451,7 @@ impl Binner<'_> {
             + v.len() * std::mem::size_of::<Vert>()
             + (v.len() + usize::from(flat)) * n * 4;
         scene.bin(r, entry);
-        if scene.bytes > scene.bound() {
+        if scene.bytes > scene.bound() || scene.texture_bytes > TEXTURE_BOUND {
             if let Err(e) = scene.flush(self.fb, self.threads) {
                 self.error.get_or_insert(e);
             }

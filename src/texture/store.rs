@@ -245,7 +245,7 @@ pub struct Sampling<'a> {
 }
 
 /// An image's texels, shared with the texture object.
-type SharedTexels = Arc<Vec<u8>>;
+pub type SharedTexels = Arc<Vec<u8>>;
 
 /// A [`Sampling`] that holds its texels (shared with the texture object,
 /// which copies them before a later write): what a deferred draw keeps.
@@ -259,6 +259,11 @@ pub struct SharedSampling {
 }
 
 impl SharedSampling {
+    /// The texels held.
+    pub fn texels(&self) -> impl Iterator<Item = &SharedTexels> {
+        self.images.iter().filter_map(|(t, _)| t.as_ref())
+    }
+
     /// The sampling again, viewing the texels held.
     pub fn sampling(&self) -> Sampling<'_> {
         let images = self

@@ -241,6 +241,11 @@ impl SharedPlan {
         self.mask == 0
     }
 
+    /// The texels the plan holds, unit by unit (a texture on two units twice).
+    pub fn texels(&self) -> impl Iterator<Item = &crate::texture::store::SharedTexels> {
+        self.samplings.iter().flatten().flat_map(SharedSampling::texels)
+    }
+
     /// The plan again, viewing the texels held.
     pub fn plan(&self) -> TexturePlan<'_> {
         TexturePlan {
