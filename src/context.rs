@@ -307,6 +307,9 @@ impl Varying {
 type Fetch<'a> = (&'a dyn Fn(usize) -> InVertex, &'a dyn Fn(usize, usize) -> Vec4);
 
 /// A primitive between `begin` and `end`.
+/// What [`Begun`] holds, kept empty between primitives.
+type Spare = (Vec<InVertex>, Vec<[Material; 2]>, Vec<[Vec4; MAX_UNITS]>);
+
 struct Begun {
     mode: PrimitiveMode,
     verts: Vec<InVertex>,
@@ -346,6 +349,8 @@ pub struct Context {
     pub(crate) textures: crate::texture::TextureStore,
     /// Draws and clears not yet rasterized (`raster/scene.rs`).
     scene: Scene,
+    /// The vertex, material and texture-coordinate storage `begin` reuses.
+    spare: Spare,
     /// Threads a flush rasterizes tiles on.
     threads: usize,
 }
@@ -401,6 +406,7 @@ impl Context {
             ordered_dither: std::env::var("SOFTGL_DITHER").is_ok_and(|v| v.trim() == "1"),
             textures: crate::texture::TextureStore::new(),
             scene: Scene::default(),
+            spare: Spare::default(),
             threads: crate::raster::pool::default_threads(),
         }
     }
@@ -1006,12 +1012,14 @@ impl Context {
             return self.record(Err(GlError::InvalidOperation));
         }
         self.format.begin();
+        // The storage of the last primitive, emptied: no allocation per glBegin.
+        let (verts, materials, tex) = std::mem::take(&mut self.spare);
         self.begun = Some(Begun {
             mode,
-            verts: Vec::new(),
-            materials: Vec::new(),
+            verts,
+            materials,
             shininess_varies: false,
-            tex: Vec::new(),
+            tex,
             tex_units: self.tex_units.enabled_mask(),
         });
         Ok(())
@@ -1033,13 +1041,24 @@ impl Context {
         let vertex_materials = self.vertex_materials(&b.materials, b.shininess_varies);
         let current = self.current.tex_coords;
         let tex = |i: usize, u: usize| b.tex.get(i).map_or(current[u], |t| t[u]);
-        self.draw_with(
+        let r = self.draw_with(
             (b.mode, source),
             b.verts.len(),
             (&|i| b.verts[i], &tex),
             &vertex_materials,
             varying,
-        )
+        );
+        let Begun {
+            mut verts,
+            mut materials,
+            mut tex,
+            ..
+        } = b;
+        verts.clear();
+        materials.clear();
+        tex.clear();
+        self.spare = (verts, materials, tex);
+        r
     }
 
     /// `glVertex4f`: outside `begin`/`end` it is ignored, as in GL.
