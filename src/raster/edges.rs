@@ -84,7 +84,14 @@ impl Edges {
     /// framebuffer `height` rows high: x snapped, and llvmpipe's top-down y
     /// snapped then reflected into GL rows (docs/llvmpipe-facts.md 2).
     pub fn window(v: [&RasterVertex; 3], height: u32) -> Option<Edges> {
+        Edges::new(Edges::window_points(v, height))
+    }
+
+    /// The snapped bottom-up positions of `v`: llvmpipe snaps its top-down y,
+    /// whose f32 value can round apart from the bottom-up one (to a tie, or
+    /// across one); the snapped value is reflected exactly into GL rows.
+    pub fn window_points(v: [&RasterVertex; 3], height: u32) -> [(i64, i64); 3] {
         let top = (i64::from(height) - 1) * ONE;
-        Edges::new(v.map(|v| (snap(v.x), top - snap(v.y_down))))
+        v.map(|v| (snap(v.x), top - snap(v.y_down)))
     }
 }

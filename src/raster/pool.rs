@@ -20,8 +20,16 @@ pub fn threads_from(value: Option<&str>) -> usize {
     value
         .and_then(|v| v.trim().parse::<usize>().ok())
         .filter(|&n| n > 0)
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from))
+        .unwrap_or_else(cores)
         .min(MAX_THREADS)
+}
+
+/// The cores this process may run on, asked once: `available_parallelism`
+/// reads the cgroup's CPU quota from files, which every context creation
+/// would otherwise pay for.
+fn cores() -> usize {
+    static CORES: OnceLock<usize> = OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, usize::from))
 }
 
 /// The pools made so far, by thread count.

@@ -60,11 +60,8 @@ impl Setup {
 /// Rasterizes a triangle, either winding. `flat` (the provoking vertex's
 /// varyings) replaces the interpolated colours.
 pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams, sink: &mut dyn SpanSink) {
-    // llvmpipe snaps its top-down y, whose f32 value can round apart from
-    // the bottom-up one (to a tie, or across one); the snapped value is
-    // reflected exactly into GL rows (docs/llvmpipe-facts.md 2).
-    let top = (i64::from(params.height) - 1) * ONE;
-    cover(v.map(|v| (snap(v.x), top - snap(v.y_down))), v, flat, params, sink);
+    // docs/llvmpipe-facts.md 2: the y snapped top-down, reflected into GL rows.
+    cover(Edges::window_points(v, params.height), v, flat, params, sink);
 }
 
 /// The pixels [`triangle`] may cover: its snapped bounding box within
