@@ -144,13 +144,29 @@ pub struct RasterParams {
 /// Non-finite input snaps to 0; callers drop such primitives before.
 #[inline]
 pub fn snap(v: f32) -> i64 {
-    let f = ((v - 0.5) * ONE as f32).round_ties_even();
+    let f = rint((v - 0.5) * ONE as f32);
     if f.is_finite() {
         // Clipping bounds window coordinates to the view volume; this keeps
         // edge products inside i64 whatever arrives.
         f.clamp(-((1u64 << 40) as f32), (1u64 << 40) as f32) as i64
     } else {
         0
+    }
+}
+
+/// `x.round_ties_even()` without the call to libm's `rintf` it compiles to
+/// on baseline x86-64 (no SSE4.1 `roundss`): 3.8% of the lit16 frame went to
+/// that call. Below 2^23, adding and subtracting 2^23 rounds to the nearest
+/// integer, ties to even, in the default rounding mode; from 2^23 on every f32
+/// is an integer already; NaN stays NaN, and the sign (of -0.0 too) is kept.
+#[inline]
+pub fn rint(x: f32) -> f32 {
+    const TWO_23: f32 = 8_388_608.0;
+    let a = x.abs();
+    if a < TWO_23 {
+        ((a + TWO_23) - TWO_23).copysign(x)
+    } else {
+        x
     }
 }
 
@@ -239,5 +255,63 @@ pub(crate) fn emit_row(
         }
         sink.span(span);
         x += n;
+    }
+}
+
+#[cfg(test)]
+mod rint_tests {
+    use super::rint;
+    use proptest::prelude::*;
+
+    /// Bit-identical to `round_ties_even` (NaN payloads aside: NaN stays NaN).
+    fn same(x: f32) -> bool {
+        let (a, b) = (rint(x), x.round_ties_even());
+        (a.is_nan() && b.is_nan()) || a.to_bits() == b.to_bits()
+    }
+
+    #[test]
+    fn ties_signs_and_edges() {
+        let edges = [
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.5,
+            2.5,
+            -2.5,
+            0.49999997,
+            4_194_303.5,
+            4_194_304.5,
+            8_388_607.5,
+            -8_388_607.5,
+            8_388_608.0,
+            16_777_217.0,
+            f32::MAX,
+            f32::MIN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            f32::MIN_POSITIVE,
+            -f32::MIN_POSITIVE,
+            1e-45,
+        ];
+        for x in edges {
+            assert!(same(x), "{x}: {} vs {}", rint(x), x.round_ties_even());
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(20_000))]
+        #[test]
+        fn any_bits(bits in any::<u32>()) {
+            let x = f32::from_bits(bits);
+            prop_assert!(same(x), "{x}");
+        }
+
+        #[test]
+        fn halves(n in -20_000_000i32..20_000_000) {
+            let x = n as f32 * 0.5;
+            prop_assert!(same(x), "{x}");
+        }
     }
 }
