@@ -261,6 +261,11 @@ impl SharedPlan {
 impl TexturePlan<'_> {
     /// The plan with its texels held, for a draw that runs later.
     pub fn share(&self) -> SharedPlan {
+        // Most draws sample nothing: 0.6 k instructions a draw went to
+        // walking eight empty units (callgrind, osmesa/bench/quads.c).
+        if self.mask == 0 {
+            return SharedPlan::default();
+        }
         SharedPlan {
             keys: self.keys,
             mask: self.mask,
