@@ -315,6 +315,9 @@ impl TextureUnits {
     /// and its environment colour.
     pub fn plan<'a>(&self, store: &'a TextureStore) -> TexturePlan<'a> {
         let mut plan = TexturePlan::default();
+        if self.units.iter().all(|u| !u.enabled.iter().any(|&e| e)) {
+            return plan;
+        }
         for (u, unit) in self.units.iter().enumerate() {
             let found = PRIORITY
                 .iter()
