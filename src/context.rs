@@ -24,9 +24,11 @@ use crate::state::{
 use crate::texture::texgen::TexCoordStage;
 use crate::texture::unit::{TexturePlan, TextureUnits};
 use crate::texture::TextureStore;
+use crate::tracked::Tracked;
 use glam::{Mat4, Vec3, Vec4};
 use softgl_jit::interp;
 use softgl_jit::texture::MAX_UNITS;
+use softgl_jit::FragmentUniforms;
 use softgl_jit::{
     BlendEquation, BlendFactor, BlendKey, CacheStats, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
     ShadeKey, SpecialistCache, Stage, StencilOp,
@@ -329,13 +331,13 @@ struct Begun {
 /// A software GL 1.x context with its own framebuffer. `Send`: it owns all its data.
 pub struct Context {
     fb: Framebuffer,
-    state: RasterState,
+    state: Tracked<RasterState>,
     modelview: MatrixStack,
     projection: MatrixStack,
     matrix_mode: MatrixMode,
     pub(crate) current: CurrentAttribs,
     /// Texture units: enables, environment, generation, matrices.
-    pub(crate) tex_units: TextureUnits,
+    pub(crate) tex_units: Tracked<TextureUnits>,
     /// The primitive between `begin` and `end`.
     begun: Option<Begun>,
     /// Which colours `begin`/`end` draws carry per vertex (Mesa's vertex format).
@@ -346,13 +348,27 @@ pub struct Context {
     /// Whether `GL_DITHER` dithers (see [`Context::set_ordered_dither`]).
     ordered_dither: bool,
     /// Texture objects, their bindings per unit, the active unit (`texture/`).
-    pub(crate) textures: crate::texture::TextureStore,
+    pub(crate) textures: Tracked<crate::texture::TextureStore>,
     /// Draws and clears not yet rasterized (`raster/scene.rs`).
     scene: Scene,
     /// The vertex, material and texture-coordinate storage `begin` reuses.
     spare: Spare,
     /// Threads a flush rasterizes tiles on.
     threads: usize,
+    /// The last untextured draw's plan, reused while nothing it was made of changes.
+    plan_cache: Option<CachedPlan>,
+}
+
+/// A draw's plan (`plan`) and uniforms, and what they were made of: the
+/// generations of the state, texture units and texture objects, the
+/// framebuffer's formats and the dither mode. Kept only for plans that sample
+/// no texture (a textured plan borrows the texels).
+#[derive(Clone, Copy, Debug)]
+struct CachedPlan {
+    made_of: (u64, u64, u64, FramebufferDesc, bool),
+    key: FragmentKey,
+    layout: VaryingLayout,
+    uniforms: FragmentUniforms,
 }
 
 /// What [`Context::scene_stats`] reports.
@@ -383,12 +399,12 @@ impl Context {
     pub fn with_framebuffer(fb: Framebuffer) -> Context {
         let desc = *fb.desc();
         Context {
-            state: RasterState::new(desc.width, desc.height),
+            state: Tracked::new(RasterState::new(desc.width, desc.height)),
             fb,
             modelview: MatrixStack::new(matrix::MAX_MODELVIEW_DEPTH),
             projection: MatrixStack::new(matrix::MAX_PROJECTION_DEPTH),
             matrix_mode: MatrixMode::Modelview,
-            tex_units: TextureUnits::default(),
+            tex_units: Tracked::default(),
             current: CurrentAttribs {
                 color: Vec4::ONE,
                 normal: Vec3::Z,
@@ -404,10 +420,11 @@ impl Context {
             backend: Backend::from_env(),
             specialists: SpecialistCache::from_env(),
             ordered_dither: std::env::var("SOFTGL_DITHER").is_ok_and(|v| v.trim() == "1"),
-            textures: crate::texture::TextureStore::new(),
+            textures: Tracked::new(crate::texture::TextureStore::new()),
             scene: Scene::default(),
             spare: Spare::default(),
             threads: crate::raster::pool::default_threads(),
+            plan_cache: None,
         }
     }
 
@@ -574,7 +591,7 @@ impl Context {
     /// Applies `f` to the state unless inside `begin`/`end`.
     fn set(&mut self, f: impl FnOnce(&mut RasterState)) -> GlResult {
         self.outside()?;
-        f(&mut self.state);
+        f(&mut self.state.get_mut());
         Ok(())
     }
 
@@ -701,7 +718,7 @@ impl Context {
         match self.matrix_mode {
             MatrixMode::Modelview => &mut self.modelview,
             MatrixMode::Projection => &mut self.projection,
-            MatrixMode::Texture => self.tex_units.matrix_stack_mut(unit),
+            MatrixMode::Texture => self.tex_units.get_mut().matrix_stack_mut(unit),
         }
     }
 
@@ -870,7 +887,7 @@ impl Context {
         if !crate::state::valid_dst_factor(dst_rgb) || !crate::state::valid_dst_factor(dst_alpha) {
             return self.record(Err(GlError::InvalidEnum));
         }
-        let b = &mut self.state.blend_func;
+        let b = &mut self.state.get_mut().blend_func;
         (b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha) = (src_rgb, dst_rgb, src_alpha, dst_alpha);
         Ok(())
     }
@@ -908,7 +925,7 @@ impl Context {
     pub fn light(&mut self, index: u32, param: LightParam) -> GlResult {
         self.outside()?;
         let mv = *self.modelview.top();
-        let r = self.state.lighting.set_light(index, param, &mv);
+        let r = self.state.get_mut().lighting.set_light(index, param, &mv);
         self.record(r)
     }
 
@@ -927,7 +944,7 @@ impl Context {
     /// material of the vertices that follow, as Mesa's vertex attributes do.
     pub fn material(&mut self, face: Face, param: MaterialParam) -> GlResult {
         let before = self.state.lighting.materials;
-        let r = self.state.lighting.set_material(face, param);
+        let r = self.state.get_mut().lighting.set_material(face, param);
         self.record(r)?;
         let after = self.state.lighting.materials;
         if let Some(b) = &mut self.begun {
@@ -987,7 +1004,7 @@ impl Context {
     pub fn clip_plane(&mut self, index: u32, plane: [f64; 4]) -> GlResult {
         self.outside()?;
         let mv = *self.modelview.top();
-        let r = self.state.lighting.set_clip_plane(index, plane, &mv);
+        let r = self.state.get_mut().lighting.set_clip_plane(index, plane, &mv);
         self.record(r)
     }
 
@@ -1100,7 +1117,7 @@ impl Context {
     #[cold]
     #[inline(never)]
     fn track_color_material(&mut self) {
-        self.state.lighting.track_color(self.current.color);
+        self.state.get_mut().lighting.track_color(self.current.color);
     }
 
     #[inline]
@@ -1146,7 +1163,7 @@ impl Context {
         self.outside()?;
         let mut fog = self.state.fog;
         self.record(fog.set(p))?;
-        self.state.fog = fog;
+        self.state.get_mut().fog = fog;
         Ok(())
     }
 
@@ -1216,7 +1233,7 @@ impl Context {
     /// with an enabled target whose texture is complete, when a stage reads
     /// the fragment colour.
     fn draw_plan_textured(&self) -> (FragmentKey, VaryingLayout, TexturePlan<'_>) {
-        let textures = (&self.tex_units, &self.textures);
+        let textures = (&*self.tex_units, &*self.textures);
         plan(&self.state, &self.fb, self.ordered_dither, textures)
     }
 
@@ -1230,8 +1247,28 @@ impl Context {
         vertex_materials: &[LightSetup],
         varying: Varying,
     ) -> GlResult {
-        let textures = (&self.tex_units, &self.textures);
-        let (mut key, mut layout, textures) = plan(&self.state, &self.fb, self.ordered_dither, textures);
+        let made_of = (
+            self.state.generation(),
+            self.tex_units.generation(),
+            self.textures.generation(),
+            *self.fb.desc(),
+            self.ordered_dither,
+        );
+        let (mut key, mut layout, textures, uniforms) = match self.plan_cache {
+            Some(c) if c.made_of == made_of => (c.key, c.layout, TexturePlan::default(), c.uniforms),
+            _ => {
+                let textures = (&*self.tex_units, &*self.textures);
+                let (key, layout, textures) = plan(&self.state, &self.fb, self.ordered_dither, textures);
+                let uniforms = self.state.fragment_uniforms();
+                self.plan_cache = (textures.mask == 0).then_some(CachedPlan {
+                    made_of,
+                    key,
+                    layout,
+                    uniforms,
+                });
+                (key, layout, textures, uniforms)
+            }
+        };
         // Unlit colours that do not vary are llvmpipe's uniforms (§20): constant
         // planes of the vertices' (equal, clamped) values, read as flat colours.
         // A constant colour summed with a varying secondary one (or the reverse)
@@ -1244,7 +1281,6 @@ impl Context {
                 shade.flat = true;
             }
         }
-        let uniforms = self.state.fragment_uniforms();
         let reads_depth = key.depth.is_some();
         let mv = self.modelview.top();
         let mut vertex_stage = VertexStage::new(*self.projection.top() * *mv, layout);

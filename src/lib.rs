@@ -34,6 +34,7 @@ pub mod matrix;
 pub mod raster;
 pub mod state;
 pub mod texture;
+pub mod tracked;
 
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, SceneStats, VertexArrays};
 pub use error::{GlError, GlResult};

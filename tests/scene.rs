@@ -183,3 +183,35 @@ fn draws_holding_more_than_64_mib_of_textures_are_flushed() {
     assert_eq!((s.flushes, s.pending_primitives), (1, 15), "{s:?}");
     assert_eq!(gl.framebuffer().pixel(8, 8), Some([200, 200, 200, 200]));
 }
+
+/// A draw reuses the last untextured draw's plan (key, layout, uniforms)
+/// only while nothing it was made of changed: each change below, through the
+/// state, the texture units or the texture objects, shows in the next draw.
+#[test]
+fn every_state_change_reaches_the_next_draw_of_the_same_kind() {
+    let mut gl = context(40, 40);
+    let read = |gl: &mut Context| gl.read_pixels(20, 20, 1, 1, softgl::ReadFormat::Rgba8).unwrap();
+    quad(&mut gl, [1.0, 0.0, 0.0]);
+    assert_eq!(read(&mut gl), [255, 0, 0, 255]);
+    // The state: a colour mask.
+    gl.color_mask(false, true, true, true).unwrap();
+    quad(&mut gl, [0.0, 1.0, 0.0]);
+    assert_eq!(read(&mut gl), [255, 255, 0, 255], "red kept, green written");
+    gl.color_mask(true, true, true, true).unwrap();
+    quad(&mut gl, [0.0, 0.0, 1.0]);
+    assert_eq!(read(&mut gl), [0, 0, 255, 255]);
+    // The texture units: a 2D target enabled with no texture complete is no
+    // texturing; one made complete (the texture objects) then samples.
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    quad(&mut gl, [1.0, 1.0, 1.0]);
+    assert_eq!(read(&mut gl), [255, 255, 255, 255]);
+    gl.bind_texture(TextureTarget::D2, 3).unwrap();
+    gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Nearest, MipFilter::None))
+        .unwrap();
+    texel(&mut gl, [10, 20, 30, 255]);
+    quad(&mut gl, [1.0, 1.0, 1.0]);
+    assert_eq!(read(&mut gl), [10, 20, 30, 255]);
+    gl.disable(Capability::Texture(TextureTarget::D2)).unwrap();
+    quad(&mut gl, [0.0, 1.0, 0.0]);
+    assert_eq!(read(&mut gl), [0, 255, 0, 255]);
+}

@@ -130,7 +130,7 @@ impl Context {
     pub fn active_texture(&mut self, unit: u32) -> GlResult {
         self.tex_call(|gl| {
             check((unit as usize) < MAX_UNITS, GlError::InvalidEnum)?;
-            gl.textures.set_active_unit(unit as usize);
+            gl.textures.get_mut().set_active_unit(unit as usize);
             Ok(())
         })
     }
@@ -144,7 +144,7 @@ impl Context {
     pub fn gen_textures(&mut self, n: i32) -> GlResult<Vec<u32>> {
         self.tex_call(|gl| {
             let n = usize::try_from(n).map_err(|_| GlError::InvalidValue)?;
-            Ok(gl.textures.gen(n))
+            Ok(gl.textures.get_mut().gen(n))
         })
     }
 
@@ -152,13 +152,13 @@ impl Context {
     /// texture; a new name creates an object; an object of another target is
     /// `InvalidOperation`.
     pub fn bind_texture(&mut self, target: TexTarget, name: u32) -> GlResult {
-        self.tex_call(|gl| check(gl.textures.bind(target, name), GlError::InvalidOperation))
+        self.tex_call(|gl| check(gl.textures.get_mut().bind(target, name), GlError::InvalidOperation))
     }
 
     /// `glDeleteTextures`: bindings of deleted objects revert to 0; unknown names are ignored.
     pub fn delete_textures(&mut self, names: &[u32]) {
         let _ = self.tex_call(|gl| {
-            gl.textures.delete(names);
+            gl.textures.get_mut().delete(names);
             Ok(())
         });
     }
@@ -178,7 +178,7 @@ impl Context {
     pub fn prioritize_textures(&mut self, names: &[u32], priorities: &[f32]) {
         let _ = self.tex_call(|gl| {
             for (&name, &p) in names.iter().zip(priorities) {
-                if let Some(obj) = gl.textures.object_mut(name) {
+                if let Some(obj) = gl.textures.get_mut().object_mut(name) {
                     obj.params.priority = p.clamp(0.0, 1.0);
                 }
             }
@@ -249,7 +249,7 @@ impl Context {
                     internal,
                     texels: Default::default(),
                 });
-                if let Some(slot) = gl.textures.proxy_mut(t).image_mut(level, 0) {
+                if let Some(slot) = gl.textures.get_mut().proxy_mut(t).image_mut(level, 0) {
                     *slot = img;
                 }
                 return Ok(());
@@ -268,7 +268,7 @@ impl Context {
                 let layout = client_layout(&p, &store, dims, usize3)?;
                 unpack::upload(&mut img, [0; 3], usize3, &PixelData { store, ..p }, &layout);
             }
-            let obj = gl.textures.current_mut(tt);
+            let obj = gl.textures.get_mut().current_mut(tt);
             if let Some(slot) = obj.image_mut(level, target.face()) {
                 *slot = Some(img);
             }
@@ -279,7 +279,7 @@ impl Context {
     /// Mesa's `check_gen_mipmap`: after the base level of a face changes,
     /// with `GL_GENERATE_MIPMAP` on, that face's chain below it is rebuilt.
     fn check_gen_mipmap(&mut self, target: TexImageTarget, level: usize) -> GlResult {
-        let obj = self.textures.current_mut(target.texture_target());
+        let obj = self.textures.get_mut().current_mut(target.texture_target());
         if obj.params.generate_mipmap && level as i32 == obj.params.base_level {
             let face = target.face();
             super::mipmap::generate(obj, face..face + 1);
@@ -333,7 +333,7 @@ impl Context {
                 return Ok(());
             }
             let layout = client_layout(&pixels, &pixels.store, target.dims(), usize3)?;
-            let obj = gl.textures.current_mut(tt);
+            let obj = gl.textures.get_mut().current_mut(tt);
             if let Some(Some(img)) = obj.image_mut(level, target.face()) {
                 unpack::upload(img, offset.map(|o| o as usize), usize3, &pixels, &layout);
             }
@@ -388,7 +388,7 @@ impl Context {
             };
             let mut img = TexImage::new(internal, stripped.map(|s| s as u32));
             gl.copy_into(&mut img, [0, 0], xy, [stripped[0], stripped[1]], depth);
-            if let Some(slot) = gl.textures.current_mut(tt).image_mut(level, target.face()) {
+            if let Some(slot) = gl.textures.get_mut().current_mut(tt).image_mut(level, target.face()) {
                 *slot = Some(img);
             }
             gl.check_gen_mipmap(target, level)
@@ -452,7 +452,7 @@ impl Context {
             let mut img = img.clone();
             let at = off.map(|o| o as usize);
             gl.copy_into_slice(&mut img, at, xy, [region[0], region[1]], depth);
-            if let Some(slot) = gl.textures.current_mut(tt).image_mut(level, target.face()) {
+            if let Some(slot) = gl.textures.get_mut().current_mut(tt).image_mut(level, target.face()) {
                 *slot = Some(img);
             }
             gl.check_gen_mipmap(target, level)
@@ -494,7 +494,7 @@ impl Context {
     /// `glTexParameter` on the active unit's `target`.
     pub fn tex_parameter(&mut self, target: TexTarget, p: TexParam) -> GlResult {
         self.tex_call(|gl| {
-            let params = &mut gl.textures.current_mut(target).params;
+            let params = &mut gl.textures.get_mut().current_mut(target).params;
             match p {
                 TexParam::MinFilter(f, m) => (params.min, params.mip) = (f, m),
                 TexParam::MagFilter(f) => params.mag = f,
@@ -598,7 +598,7 @@ impl Context {
     pub fn generate_mipmap(&mut self, target: TexTarget) -> GlResult {
         self.before_texture_write(target);
         self.tex_call(|gl| {
-            let obj = gl.textures.current_mut(target);
+            let obj = gl.textures.get_mut().current_mut(target);
             if obj.params.base_level >= obj.params.max_level {
                 return Ok(());
             }

@@ -465,7 +465,7 @@ impl Context {
     /// for every other capability.
     pub(crate) fn texture_flag_mut(&mut self, cap: Capability) -> Option<&mut bool> {
         let unit = self.active_texture_unit();
-        let u = &mut self.tex_units.units[unit];
+        let u = &mut self.tex_units.get_mut().units[unit];
         match cap {
             Capability::Texture(t) => Some(&mut u.enabled[target_index(t)]),
             Capability::TexGen(c) => Some(&mut u.gen[c.index()].enabled),
@@ -495,7 +495,7 @@ impl Context {
         self.outside()?;
         let ok = unit < MAX_UNITS;
         self.record(if ok { Ok(()) } else { Err(GlError::InvalidEnum) })?;
-        self.tex_units.units[unit] = state;
+        self.tex_units.get_mut().units[unit] = state;
         Ok(())
     }
 
@@ -505,7 +505,7 @@ impl Context {
         let unit = self.active_texture_unit();
         let mut u = self.tex_units.units[unit];
         self.record(u.set_env(p))?;
-        self.tex_units.units[unit] = u;
+        self.tex_units.get_mut().units[unit] = u;
         Ok(())
     }
 
@@ -529,7 +529,7 @@ impl Context {
             }
             _ => [0.0; 4],
         };
-        let g = &mut self.tex_units.units[unit].gen[coord.index()];
+        let g = &mut self.tex_units.get_mut().units[unit].gen[coord.index()];
         match p {
             TexGenParam::Mode(m) => {
                 let ok = match m {
@@ -581,7 +581,7 @@ impl Context {
     /// from unit 8 on).
     pub fn client_active_texture(&mut self, unit: u32) -> GlResult {
         let r = if (unit as usize) < MAX_UNITS {
-            self.tex_units.client_active = unit as usize;
+            self.tex_units.get_mut().client_active = unit as usize;
             Ok(())
         } else {
             Err(GlError::InvalidEnum)
