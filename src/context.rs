@@ -591,7 +591,7 @@ impl Context {
     /// Applies `f` to the state unless inside `begin`/`end`.
     fn set(&mut self, f: impl FnOnce(&mut RasterState)) -> GlResult {
         self.outside()?;
-        f(&mut self.state.get_mut());
+        f(self.state.get_mut());
         Ok(())
     }
 
