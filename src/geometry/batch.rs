@@ -98,8 +98,13 @@ impl VertexStage<'_> {
     /// copy of the vertex): the slots of the layout, the same slots for
     /// every vertex of a draw (the others are left as they are), and
     /// returning the clip-space position.
-    #[inline]
     pub fn transform_into(&self, i: usize, v: &InVertex, out: &mut Varyings) -> DVec4 {
+        self.transform_slots(&Slots::of(&self.layout), i, v, out)
+    }
+
+    /// [`Self::transform_into`] with the layout's offsets found beforehand.
+    #[inline]
+    fn transform_slots(&self, slots: &Slots, i: usize, v: &InVertex, out: &mut Varyings) -> DVec4 {
         if let Some(light) = &self.lighting {
             let light = self.vertex_materials.get(usize::from(v.material)).unwrap_or(light);
             let lit = light.light_vertex(&LightInput {
@@ -107,26 +112,25 @@ impl VertexStage<'_> {
                 normal: v.normal,
                 color: v.color,
             });
-            let l = &self.layout;
             for (slot, c) in [
-                (l.color(), lit.front),
-                (l.back_color(), lit.back),
-                (l.secondary(), lit.front_secondary),
-                (l.back_secondary(), lit.back_secondary),
+                (slots.color, &lit.front),
+                (slots.back_color, &lit.back),
+                (slots.secondary, &lit.front_secondary),
+                (slots.back_secondary, &lit.back_secondary),
             ] {
                 if let Some(o) = slot {
-                    out[o..o + 4].copy_from_slice(&c);
+                    out[o..o + 4].copy_from_slice(c);
                 }
             }
         } else {
-            if let Some(o) = self.layout.color() {
+            if let Some(o) = slots.color {
                 out[o..o + 4].copy_from_slice(&clamp_color(v.color));
             }
-            if let Some(o) = self.layout.secondary() {
+            if let Some(o) = slots.secondary {
                 out[o..o + 4].copy_from_slice(&clamp_color(v.secondary));
             }
         }
-        if let Some(o) = self.layout.fog() {
+        if let Some(o) = slots.fog {
             out[o] = match self.fog {
                 FogSource::EyeDepth { row } => match self.lighting.as_ref().and_then(|l| l.eye_position(v.pos)) {
                     Some(eye) => eye[2].abs(),
@@ -139,6 +143,29 @@ impl VertexStage<'_> {
             t.fill(v, |u| (fetch.0)(i, u), out);
         }
         (self.mvp * v.pos).as_dvec4()
+    }
+}
+
+/// The offsets of a layout's colour and fog slots, found once per draw
+/// rather than at every vertex.
+#[derive(Clone, Copy, Debug)]
+struct Slots {
+    color: Option<usize>,
+    back_color: Option<usize>,
+    secondary: Option<usize>,
+    back_secondary: Option<usize>,
+    fog: Option<usize>,
+}
+
+impl Slots {
+    fn of(l: &VaryingLayout) -> Slots {
+        Slots {
+            color: l.color(),
+            back_color: l.back_color(),
+            secondary: l.secondary(),
+            back_secondary: l.back_secondary(),
+            fog: l.fog(),
+        }
     }
 }
 
@@ -210,6 +237,7 @@ const EMPTY: BatchVertex = BatchVertex {
 /// [`VertexBatch::vertex`] after [`VertexBatch::load`].
 pub struct VertexBatch<'a> {
     stage: VertexStage<'a>,
+    slots: Slots,
     geometry: &'a Geometry<'a>,
     fetch: &'a dyn Fn(usize) -> InVertex,
     count: usize,
@@ -233,6 +261,7 @@ impl<'a> VertexBatch<'a> {
     ) -> VertexBatch<'a> {
         VertexBatch {
             stage,
+            slots: Slots::of(&stage.layout),
             geometry,
             fetch,
             count,
@@ -248,7 +277,7 @@ impl<'a> VertexBatch<'a> {
     #[inline]
     fn transform(&self, i: usize, out: &mut BatchVertex) {
         let v = (self.fetch)(i);
-        out.pos = self.stage.transform_into(i, &v, &mut out.win.v);
+        out.pos = self.stage.transform_slots(&self.slots, i, &v, &mut out.win.v);
         out.edge = v.edge;
         out.inside = self.geometry.classify(out.pos, &mut out.win);
     }

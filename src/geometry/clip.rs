@@ -135,6 +135,7 @@ fn dist(p: DVec4, k: usize, g: f64) -> f64 {
 }
 
 /// Bit `k` set when `p` is outside plane `k` at guard scale `g`.
+#[inline]
 pub fn outcode(p: DVec4, g: f64) -> u8 {
     (0..6).fold(0, |code, k| if dist(p, k, g) < 0.0 { code | (1 << k) } else { code })
 }
@@ -152,6 +153,7 @@ impl UserPlanes {
     /// Bit `i` set when `p` is outside enabled plane `i`, by draw's vertex
     /// test (`draw_llvm.c`): `0 > d`, `d` a chain of `fmuladd`s, which LLVM
     /// fuses on a CPU with FMA: `fma(w, pw, fma(z, pz, fma(y, py, x·px)))`.
+    #[inline]
     pub fn code(&self, p: DVec4) -> u8 {
         if self.enabled == 0 {
             return 0;

@@ -113,6 +113,8 @@ pub struct Geometry<'s> {
     viewport: Viewport,
     /// Triangles: clipped to the view volume, and bounded by the viewport.
     params: RasterParams,
+    /// `params` with the polygon offset of filled faces, if enabled.
+    fill_params: RasterParams,
     /// Points and lines: clipped to the view volume, their width may reach
     /// past the viewport up to the framebuffer's edges, as in llvmpipe.
     wide_params: RasterParams,
@@ -120,6 +122,8 @@ pub struct Geometry<'s> {
     layout: VaryingLayout,
     /// The enabled user clip planes, in clip coordinates.
     user: UserPlanes,
+    /// `layout.finite_len()`, asked at every vertex.
+    finite_len: usize,
 }
 
 impl<'s> Geometry<'s> {
@@ -162,13 +166,19 @@ impl<'s> Geometry<'s> {
             bounds: fb_rect,
             ..params
         };
+        let fill_offset = state.offset_fill.then_some((state.offset_factor, state.offset_units));
         Geometry {
             state,
             viewport,
             params,
+            fill_params: RasterParams {
+                offset: fill_offset,
+                ..params
+            },
             wide_params,
             layout,
             user: UserPlanes::default(),
+            finite_len: layout.finite_len(),
         }
     }
 
@@ -264,7 +274,7 @@ impl<'s> Geometry<'s> {
     /// clipping ([`batch::BatchVertex::inside`]).
     #[inline]
     fn classify(&self, pos: glam::DVec4, win: &mut RasterVertex) -> bool {
-        let finite = pos.is_finite() && win.v[..self.layout.finite_len()].iter().all(|c| c.is_finite());
+        let finite = pos.is_finite() && win.v[..self.finite_len].iter().all(|c| c.is_finite());
         if !finite || outcode(pos, 1.0) != 0 || self.user.code(pos) != 0 {
             return false;
         }
@@ -403,11 +413,7 @@ impl<'s> Geometry<'s> {
         if self.state.culls(front) || area == 0.0 {
             return;
         }
-        let offset = self
-            .state
-            .offset_fill
-            .then_some((self.state.offset_factor, self.state.offset_units));
-        let params = RasterParams { offset, ..self.params };
+        let params = &self.fill_params;
         if !front && (self.layout.back_color || self.layout.back_secondary) {
             let mut w = v.map(|v| *v);
             for v in &mut w {
@@ -417,9 +423,9 @@ impl<'s> Geometry<'s> {
             if let Some(f) = f.as_mut() {
                 self.select_face(f, front);
             }
-            sink.triangle([&w[0], &w[1], &w[2]], f.as_ref(), &params);
+            sink.triangle([&w[0], &w[1], &w[2]], f.as_ref(), params);
         } else {
-            sink.triangle(v, flat, &params);
+            sink.triangle(v, flat, params);
         }
     }
 
