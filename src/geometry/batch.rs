@@ -9,11 +9,13 @@
 //! texture coordinates generated and transformed ([`crate::texture::texgen`]).
 
 use super::clip::ClipVertex;
+use super::Geometry;
 use super::lighting::{LightInput, LightSetup};
-use super::varying::{VaryingLayout, MAX_VARYINGS};
+use super::varying::{VaryingLayout, Varyings, MAX_VARYINGS};
 use super::InVertex;
 use crate::texture::texgen::TexCoordStage;
-use glam::{Mat4, Vec4};
+use crate::raster::RasterVertex;
+use glam::{DVec4, Mat4, Vec4};
 
 /// Vertices transformed at once.
 pub const BATCH: usize = 256;
@@ -85,9 +87,24 @@ impl VertexStage<'_> {
     /// Vertex `v` (index `i` of the draw) in clip space with its varyings.
     pub fn transform(&self, i: usize, v: &InVertex) -> ClipVertex {
         let mut out = ClipVertex {
-            pos: (self.mvp * v.pos).as_dvec4(),
+            pos: DVec4::ZERO,
             v: [0.0; MAX_VARYINGS],
         };
+        out.pos = self.transform_into(i, v, &mut out.v);
+        out
+    }
+
+    /// [`Self::transform`] writing the varyings into `out` in place (no
+    /// copy of the vertex): the slots of the layout, the same slots for
+    /// every vertex of a draw (the others are left as they are), and
+    /// returning the clip-space position.
+    pub fn transform_into(&self, i: usize, v: &InVertex, out: &mut Varyings) -> DVec4 {
+        self.transform_slots(&Slots::of(&self.layout), i, v, out)
+    }
+
+    /// [`Self::transform_into`] with the layout's offsets found beforehand.
+    #[inline]
+    fn transform_slots(&self, slots: &Slots, i: usize, v: &InVertex, out: &mut Varyings) -> DVec4 {
         if let Some(light) = &self.lighting {
             let light = self.vertex_materials.get(usize::from(v.material)).unwrap_or(light);
             let lit = light.light_vertex(&LightInput {
@@ -95,27 +112,26 @@ impl VertexStage<'_> {
                 normal: v.normal,
                 color: v.color,
             });
-            let l = &self.layout;
             for (slot, c) in [
-                (l.color(), lit.front),
-                (l.back_color(), lit.back),
-                (l.secondary(), lit.front_secondary),
-                (l.back_secondary(), lit.back_secondary),
+                (slots.color, &lit.front),
+                (slots.back_color, &lit.back),
+                (slots.secondary, &lit.front_secondary),
+                (slots.back_secondary, &lit.back_secondary),
             ] {
                 if let Some(o) = slot {
-                    out.v[o..o + 4].copy_from_slice(&c);
+                    out[o..o + 4].copy_from_slice(c);
                 }
             }
         } else {
-            if let Some(o) = self.layout.color() {
-                out.v[o..o + 4].copy_from_slice(&clamp_color(v.color));
+            if let Some(o) = slots.color {
+                out[o..o + 4].copy_from_slice(&clamp_color(v.color));
             }
-            if let Some(o) = self.layout.secondary() {
-                out.v[o..o + 4].copy_from_slice(&clamp_color(v.secondary));
+            if let Some(o) = slots.secondary {
+                out[o..o + 4].copy_from_slice(&clamp_color(v.secondary));
             }
         }
-        if let Some(o) = self.layout.fog() {
-            out.v[o] = match self.fog {
+        if let Some(o) = slots.fog {
+            out[o] = match self.fog {
                 FogSource::EyeDepth { row } => match self.lighting.as_ref().and_then(|l| l.eye_position(v.pos)) {
                     Some(eye) => eye[2].abs(),
                     None => eye_dot(row, v.pos).abs(),
@@ -124,9 +140,32 @@ impl VertexStage<'_> {
             };
         }
         if let Some((t, fetch)) = self.tex_coords {
-            t.fill(v, |u| (fetch.0)(i, u), &mut out.v);
+            t.fill(v, |u| (fetch.0)(i, u), out);
         }
-        out
+        (self.mvp * v.pos).as_dvec4()
+    }
+}
+
+/// The offsets of a layout's colour and fog slots, found once per draw
+/// rather than at every vertex.
+#[derive(Clone, Copy, Debug)]
+struct Slots {
+    color: Option<usize>,
+    back_color: Option<usize>,
+    secondary: Option<usize>,
+    back_secondary: Option<usize>,
+    fog: Option<usize>,
+}
+
+impl Slots {
+    fn of(l: &VaryingLayout) -> Slots {
+        Slots {
+            color: l.color(),
+            back_color: l.back_color(),
+            secondary: l.secondary(),
+            back_secondary: l.back_secondary(),
+            fog: l.fog(),
+        }
     }
 }
 
@@ -145,55 +184,154 @@ pub fn eye_dot(m: Vec4, p: Vec4) -> f32 {
     s + p.x * m.x
 }
 
+/// A transformed vertex as the batch keeps it: its clip position, and its
+/// window position computed once (not once per triangle that uses it) next to
+/// its varyings, so that a triangle needing no clipping borrows its three
+/// vertices as they are.
+#[derive(Clone, Copy, Debug)]
+pub struct BatchVertex {
+    /// Clip coordinates.
+    pub pos: DVec4,
+    /// The varyings (`win.v`) and, when `inside`, the window position as
+    /// [`Geometry::project_as`](super::Geometry) maps a vertex of the draw.
+    pub win: RasterVertex,
+    /// Finite (position and the slots `finite_len` covers), inside the view
+    /// volume (outcode 0) and every enabled user plane, and projected to finite
+    /// window coordinates: a primitive of such vertices needs no clipping.
+    pub inside: bool,
+    /// `glEdgeFlag` of the vertex.
+    pub edge: bool,
+}
+
+impl BatchVertex {
+    /// The vertex as clipping takes it (a copy of its varyings).
+    pub fn clip(&self) -> ClipVertex {
+        ClipVertex {
+            pos: self.pos,
+            v: self.win.v,
+        }
+    }
+}
+
+/// A vertex before its first transform.
+const EMPTY: BatchVertex = BatchVertex {
+    pos: DVec4::ZERO,
+    win: RasterVertex {
+        x: 0.0,
+        y: 0.0,
+        y_down: 0.0,
+        z: 0.0,
+        inv_w: 0.0,
+        v: [0.0; MAX_VARYINGS],
+    },
+    inside: false,
+    edge: true,
+};
+
 /// A sliding window of transformed vertices, plus vertex 0, which fans,
 /// polygons and line loops refer back to.
+///
+/// Vertices are written in place (the old `get` returned a 230-byte vertex by
+/// value and the triangle closure copied three of them per triangle: 14% of
+/// the lit16 frame went to that memmove); primitives borrow them through
+/// [`VertexBatch::vertex`] after [`VertexBatch::load`].
 pub struct VertexBatch<'a> {
     stage: VertexStage<'a>,
+    slots: Slots,
+    geometry: &'a Geometry<'a>,
     fetch: &'a dyn Fn(usize) -> InVertex,
     count: usize,
+    /// Index of `window[0]`.
     base: usize,
-    clip: Vec<ClipVertex>,
-    first: Option<ClipVertex>,
+    /// Vertices `base..base + len`; entries past `len` are stale.
+    window: Vec<BatchVertex>,
+    len: usize,
+    /// Vertex 0, kept once the window has moved past it.
+    first: BatchVertex,
 }
 
 impl<'a> VertexBatch<'a> {
-    /// A batch over `count` vertices, `fetch(i)` giving vertex `i`.
-    pub fn new(stage: VertexStage<'a>, count: usize, fetch: &'a dyn Fn(usize) -> InVertex) -> VertexBatch<'a> {
+    /// A batch over `count` vertices, `fetch(i)` giving vertex `i`, which
+    /// `geometry` classifies and projects.
+    pub fn new(
+        stage: VertexStage<'a>,
+        geometry: &'a Geometry<'a>,
+        count: usize,
+        fetch: &'a dyn Fn(usize) -> InVertex,
+    ) -> VertexBatch<'a> {
         VertexBatch {
             stage,
+            slots: Slots::of(&stage.layout),
+            geometry,
             fetch,
             count,
             base: 0,
-            clip: Vec::with_capacity(BATCH),
-            first: None,
+            window: Vec::new(),
+            len: 0,
+            first: EMPTY,
         }
     }
 
-    fn transform(&self, i: usize) -> ClipVertex {
-        self.stage.transform(i, &(self.fetch)(i))
+    /// Transforms vertex `i` into `out`. Every vertex of the draw writes the
+    /// same varying slots, so reusing an entry leaves nothing stale in them.
+    #[inline]
+    fn transform(&self, i: usize, out: &mut BatchVertex) {
+        let v = (self.fetch)(i);
+        out.pos = self.stage.transform_slots(&self.slots, i, &v, &mut out.win.v);
+        out.edge = v.edge;
+        out.inside = self.geometry.classify(out.pos, &mut out.win);
     }
 
-    /// Vertex `i` in clip space. Assembly asks for indices that never fall more
-    /// than three behind the newest one (or for vertex 0), so refilling the
-    /// window from `i - 3` keeps every vertex of the current primitive.
-    pub fn get(&mut self, i: usize) -> ClipVertex {
-        if i == 0 {
-            if let Some(v) = self.first {
-                return v;
-            }
-            let v = self.transform(0);
-            self.first = Some(v);
-            return v;
+    /// Makes the vertices of a primitive whose newest (largest) index is
+    /// `newest` available to [`Self::vertex`]. Assembly asks for indices that
+    /// never fall more than three behind the newest one (or for vertex 0), so
+    /// refilling the window from `newest - 3` keeps every vertex of the
+    /// current primitive; the ones already transformed are moved, not
+    /// transformed again.
+    #[inline]
+    pub fn load(&mut self, newest: usize) {
+        if newest >= self.base && newest < self.base + self.len {
+            return;
         }
-        if i < self.base || i >= self.base + self.clip.len() {
-            self.base = i.saturating_sub(3);
-            let end = (self.base + BATCH).min(self.count);
-            self.clip.clear();
-            for k in self.base..end {
-                let v = self.transform(k);
-                self.clip.push(v);
-            }
+        self.refill(newest);
+    }
+
+    fn refill(&mut self, newest: usize) {
+        let base = newest.saturating_sub(3);
+        if self.base == 0 && base != 0 && self.len > 0 {
+            self.first = self.window[0];
         }
-        self.clip[i - self.base]
+        let end = (base + BATCH).min(self.count);
+        let n = end - base;
+        if self.window.len() < n {
+            self.window.resize(n, EMPTY);
+        }
+        // Vertices kept from the old window: `base..old_end`, moved to the front.
+        let old_end = self.base + self.len;
+        let kept = if base >= self.base && base < old_end {
+            let kept = (old_end - base).min(n);
+            let from = base - self.base;
+            self.window.copy_within(from..from + kept, 0);
+            kept
+        } else {
+            0
+        };
+        let mut window = std::mem::take(&mut self.window);
+        for (k, out) in window[kept..n].iter_mut().enumerate() {
+            self.transform(base + kept + k, out);
+        }
+        self.window = window;
+        self.base = base;
+        self.len = n;
+    }
+
+    /// Vertex `i`, loaded by [`Self::load`] for the current primitive.
+    #[inline]
+    pub fn vertex(&self, i: usize) -> &BatchVertex {
+        if i == 0 && self.base != 0 {
+            &self.first
+        } else {
+            &self.window[i - self.base]
+        }
     }
 }

@@ -135,6 +135,7 @@ fn dist(p: DVec4, k: usize, g: f64) -> f64 {
 }
 
 /// Bit `k` set when `p` is outside plane `k` at guard scale `g`.
+#[inline]
 pub fn outcode(p: DVec4, g: f64) -> u8 {
     (0..6).fold(0, |code, k| if dist(p, k, g) < 0.0 { code | (1 << k) } else { code })
 }
@@ -152,6 +153,7 @@ impl UserPlanes {
     /// Bit `i` set when `p` is outside enabled plane `i`, by draw's vertex
     /// test (`draw_llvm.c`): `0 > d`, `d` a chain of `fmuladd`s, which LLVM
     /// fuses on a CPU with FMA: `fma(w, pw, fma(z, pz, fma(y, py, x·px)))`.
+    #[inline]
     pub fn code(&self, p: DVec4) -> u8 {
         if self.enabled == 0 {
             return 0;
@@ -211,16 +213,22 @@ fn clip_step_f32(
 
 /// Clips `poly` against the user planes in `mask` (after the view volume, in
 /// plane order, as llvmpipe); `false` when llvmpipe drops the polygon.
-pub fn clip_polygon_user(poly: &mut Vec<PolyVertex>, user: &UserPlanes, mask: u8, n: usize) -> bool {
-    let mut out: Vec<PolyVertex> = Vec::with_capacity(poly.len() + 6);
+/// `out` is scratch space.
+pub fn clip_polygon_user(
+    poly: &mut Vec<PolyVertex>,
+    out: &mut Vec<PolyVertex>,
+    user: &UserPlanes,
+    mask: u8,
+    n: usize,
+) -> bool {
     for i in 0..6 {
         if mask & (1 << i) == 0 || poly.len() < 3 {
             continue;
         }
-        if !clip_step_f32(poly, &mut out, |p| user.dist(p, i), n, true) {
+        if !clip_step_f32(poly, out, |p| user.dist(p, i), n, true) {
             return false;
         }
-        std::mem::swap(poly, &mut out);
+        std::mem::swap(poly, out);
     }
     true
 }
@@ -230,9 +238,10 @@ pub type PolyVertex = (ClipVertex, bool);
 
 /// Clips the polygon `poly` (edge flags per vertex) against the planes set in
 /// `planes` at guard scale `g` (Sutherland–Hodgman). Edges made by clipping
-/// are not boundary edges. `n` varyings are interpolated.
-pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64, n: usize) {
-    let mut out: Vec<PolyVertex> = Vec::with_capacity(poly.len() + 6);
+/// are not boundary edges. `n` varyings are interpolated; `out` is scratch
+/// space (the caller keeps both across primitives: nothing is allocated per
+/// primitive once they have grown).
+pub fn clip_polygon(poly: &mut Vec<PolyVertex>, out: &mut Vec<PolyVertex>, planes: u8, g: f64, n: usize) {
     let last = g == 1.0;
     let order = if last { FINAL_ORDER } else { [0, 1, 2, 3, 4, 5] };
     for k in order {
@@ -240,8 +249,8 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64, n: usize) {
             continue;
         }
         if last {
-            clip_step_f32(poly, &mut out, |p| dist_f32(p, k), n, false);
-            std::mem::swap(poly, &mut out);
+            clip_step_f32(poly, out, |p| dist_f32(p, k), n, false);
+            std::mem::swap(poly, out);
             continue;
         }
         out.clear();
@@ -259,7 +268,7 @@ pub fn clip_polygon(poly: &mut Vec<PolyVertex>, planes: u8, g: f64, n: usize) {
                 }
             }
         }
-        std::mem::swap(poly, &mut out);
+        std::mem::swap(poly, out);
     }
 }
 

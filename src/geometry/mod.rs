@@ -70,6 +70,29 @@ pub enum DrawSource {
     Elements,
 }
 
+/// Twice the signed area of the polygon of the `n` points `point(i)`, in f64
+/// (y up: positive is counter-clockwise).
+#[inline]
+fn signed_area(n: usize, point: impl Fn(usize) -> (f32, f32)) -> f64 {
+    (0..n)
+        .map(|i| {
+            let (p, q) = (point(i), point((i + 1) % n));
+            f64::from(p.0) * f64::from(q.1) - f64::from(q.0) * f64::from(p.1)
+        })
+        .sum()
+}
+
+/// What the clipping path reuses from one primitive to the next.
+#[derive(Default)]
+struct Scratch {
+    /// The polygon being clipped.
+    clipped: Vec<PolyVertex>,
+    /// The output of a clipping step.
+    out: Vec<PolyVertex>,
+    /// The clipped polygon in window coordinates, with its edge flags.
+    win: Vec<(RasterVertex, bool)>,
+}
+
 /// The pixels inside both `a` and `b`.
 fn intersect(a: Rect, b: Rect) -> Rect {
     a.intersect(b)
@@ -90,6 +113,8 @@ pub struct Geometry<'s> {
     viewport: Viewport,
     /// Triangles: clipped to the view volume, and bounded by the viewport.
     params: RasterParams,
+    /// `params` with the polygon offset of filled faces, if enabled.
+    fill_params: RasterParams,
     /// Points and lines: clipped to the view volume, their width may reach
     /// past the viewport up to the framebuffer's edges, as in llvmpipe.
     wide_params: RasterParams,
@@ -97,6 +122,8 @@ pub struct Geometry<'s> {
     layout: VaryingLayout,
     /// The enabled user clip planes, in clip coordinates.
     user: UserPlanes,
+    /// `layout.finite_len()`, asked at every vertex.
+    finite_len: usize,
 }
 
 impl<'s> Geometry<'s> {
@@ -139,13 +166,19 @@ impl<'s> Geometry<'s> {
             bounds: fb_rect,
             ..params
         };
+        let fill_offset = state.offset_fill.then_some((state.offset_factor, state.offset_units));
         Geometry {
             state,
             viewport,
             params,
+            fill_params: RasterParams {
+                offset: fill_offset,
+                ..params
+            },
             wide_params,
             layout,
             user: UserPlanes::default(),
+            finite_len: layout.finite_len(),
         }
     }
 
@@ -190,23 +223,68 @@ impl<'s> Geometry<'s> {
             QuadSplit::Direct
         };
         let unfilled = self.unfilled();
-        let mut batch = VertexBatch::new(*stage, count, fetch);
+        // The provoking vertex's varyings go with a primitive under flat
+        // shading or with uniform colours (the rasterizer takes its colours
+        // from them), borrowed from the batch.
+        let flat_shaded = self.state.shade_model == ShadeModel::Flat || self.layout.uniform_colors;
+        let mut batch = VertexBatch::new(*stage, self, count, fetch);
+        let mut scratch = Scratch::default();
         assemble(mode, count, quads, |prim| match prim {
-            Primitive::Point(i) => self.point(&batch.get(i), sink),
+            Primitive::Point(i) => {
+                batch.load(i);
+                let v = batch.vertex(i);
+                if v.inside {
+                    sink.point(&v.win, self.state.point_size, &self.wide_params);
+                }
+            }
             Primitive::Line { a, b, provoking } => {
-                let (va, vb, vp) = (batch.get(a), batch.get(b), batch.get(provoking));
-                self.line(&va, &vb, self.flat(&vp), sink)
+                batch.load(a.max(b).max(provoking));
+                let (va, vb) = (batch.vertex(a), batch.vertex(b));
+                let flat = flat_shaded.then(|| &batch.vertex(provoking).win.v);
+                if va.inside && vb.inside {
+                    // Nothing to clip at any guard level, both ends mapped as
+                    // vertices of the draw: what `line` computes for them.
+                    sink.line(&va.win, &vb.win, self.state.line_width, flat, &self.wide_params);
+                } else {
+                    self.line(&va.clip(), &vb.clip(), flat.copied(), sink)
+                }
             }
             Primitive::Triangle { v, provoking, edges } => {
-                // A vertex's edge flag ANDs with the assembly's boundary flag
-                // for every triangle mode, as llvmpipe's unfilled stage does
-                // (docs/llvmpipe-facts.md, "Edge flags").
-                let edge = |k: usize| edges[k] && (!unfilled || fetch(v[k]).edge);
-                let poly = [0, 1, 2].map(|k| (batch.get(v[k]), edge(k)));
-                let flat = self.flat(&batch.get(provoking));
-                self.polygon(poly, flat, sink)
+                batch.load(v[0].max(v[1]).max(v[2]).max(provoking));
+                let [a, b, c] = v.map(|i| batch.vertex(i));
+                let flat = flat_shaded.then(|| &batch.vertex(provoking).win.v);
+                if !unfilled && a.inside && b.inside && c.inside {
+                    self.triangle([&a.win, &b.win, &c.win], flat, sink);
+                } else {
+                    // A vertex's edge flag ANDs with the assembly's boundary flag
+                    // for every triangle mode, as llvmpipe's unfilled stage does
+                    // (docs/llvmpipe-facts.md, "Edge flags").
+                    let vs = [a, b, c];
+                    let poly = [0, 1, 2].map(|k| (vs[k].clip(), edges[k] && (!unfilled || vs[k].edge)));
+                    self.polygon(poly, flat.copied(), &mut scratch, sink)
+                }
             }
         });
+    }
+
+    /// Classifies a transformed vertex at `pos` whose varyings `win.v` holds:
+    /// whether it is finite, inside the view volume and the user planes, and
+    /// mapped to finite window coordinates, which it then writes into `win`
+    /// (as [`Self::project`] does). A primitive of such vertices needs no
+    /// clipping ([`batch::BatchVertex::inside`]).
+    #[inline]
+    fn classify(&self, pos: glam::DVec4, win: &mut RasterVertex) -> bool {
+        let finite = pos.is_finite() && win.v[..self.finite_len].iter().all(|c| c.is_finite());
+        if !finite || outcode(pos, 1.0) != 0 || self.user.code(pos) != 0 {
+            return false;
+        }
+        match self.map(pos, true) {
+            Some((x, y, y_down, z, inv_w)) => {
+                (win.x, win.y, win.y_down, win.z, win.inv_w) = (x, y, y_down, z, inv_w);
+                true
+            }
+            None => false,
+        }
     }
 
     /// Whether llvmpipe splits this draw's quads along v1-v3
@@ -240,12 +318,6 @@ impl<'s> Geometry<'s> {
             .any(|&front| self.state.polygon_mode(front) != PolygonMode::Fill)
     }
 
-    /// The provoking vertex's varyings under flat shading or with uniform
-    /// colours (the rasterizer takes its colours from them), else `None`.
-    fn flat(&self, v: &ClipVertex) -> Option<Varyings> {
-        (self.state.shade_model == ShadeModel::Flat || self.layout.uniform_colors).then_some(v.v)
-    }
-
     /// Two-sided selection: for a back face, the back colours (when the
     /// layout carries them) replace the front ones the rasterizer reads.
     fn select_face(&self, v: &mut Varyings, front: bool) {
@@ -269,7 +341,21 @@ impl<'s> Geometry<'s> {
     /// one the clipper made, in C without fusing (`interp`,
     /// `draw_pipe_clip.c`) (docs/llvmpipe-facts.md §11).
     fn project_as(&self, v: &ClipVertex, fused: bool) -> Option<RasterVertex> {
-        let p = v.pos.as_vec4();
+        let (x, y, y_down, z, inv_w) = self.map(v.pos, fused)?;
+        Some(RasterVertex {
+            x,
+            y,
+            y_down,
+            z,
+            inv_w,
+            v: v.v,
+        })
+    }
+
+    /// The window coordinates of [`Self::project_as`]: `(x, y, y_down, z, 1/w)`.
+    #[inline]
+    fn map(&self, pos: glam::DVec4, fused: bool) -> Option<(f32, f32, f32, f64, f32)> {
+        let p = pos.as_vec4();
         let inv_w = 1.0 / p.w;
         let (s, t) = (self.viewport.scale, self.viewport.translate);
         let map = |c: f32, s: f32, t: f32| {
@@ -284,28 +370,7 @@ impl<'s> Geometry<'s> {
         let y_down = map(p.y, self.viewport.flipped_y.0, self.viewport.flipped_y.1);
         let z = map(p.z, s[2], t[2]);
         let ok = x.is_finite() && y.is_finite() && z.is_finite() && inv_w.is_finite();
-        ok.then(|| RasterVertex {
-            x,
-            y,
-            y_down,
-            z: f64::from(z),
-            inv_w,
-            v: v.v,
-        })
-    }
-
-    /// [`Self::project_as`] for a vertex of the draw.
-    fn project(&self, v: &ClipVertex) -> Option<RasterVertex> {
-        self.project_as(v, true)
-    }
-
-    fn point(&self, v: &ClipVertex, sink: &mut dyn PrimSink) {
-        if !v.is_finite(self.layout.finite_len()) || outcode(v.pos, 1.0) != 0 || self.user.code(v.pos) != 0 {
-            return;
-        }
-        if let Some(rv) = self.project(v) {
-            sink.point(&rv, self.state.point_size, &self.wide_params);
-        }
+        ok.then_some((x, y, y_down, f64::from(z), inv_w))
     }
 
     fn line(&self, a: &ClipVertex, b: &ClipVertex, flat: Option<Varyings>, sink: &mut dyn PrimSink) {
@@ -339,7 +404,41 @@ impl<'s> Geometry<'s> {
         }
     }
 
-    fn polygon(&self, poly: [PolyVertex; 3], mut flat: Option<Varyings>, sink: &mut dyn PrimSink) {
+    /// A triangle of vertices of the draw that needs no clipping, drawn
+    /// filled: what [`Self::polygon`] computes for it, without copying a
+    /// vertex (unless a back face selects its back colours).
+    fn triangle(&self, v: [&RasterVertex; 3], flat: Option<&Varyings>, sink: &mut dyn PrimSink) {
+        let area = signed_area(3, |i| (v[i].x, v[i].y));
+        let front = (area > 0.0) == (self.state.front_face == FrontFace::Ccw);
+        if self.state.culls(front) || area == 0.0 {
+            return;
+        }
+        let params = &self.fill_params;
+        if !front && (self.layout.back_color || self.layout.back_secondary) {
+            let mut w = v.map(|v| *v);
+            for v in &mut w {
+                self.select_face(&mut v.v, front);
+            }
+            let mut f = flat.copied();
+            if let Some(f) = f.as_mut() {
+                self.select_face(f, front);
+            }
+            sink.triangle([&w[0], &w[1], &w[2]], f.as_ref(), params);
+        } else {
+            sink.triangle(v, flat, params);
+        }
+    }
+
+    /// The general triangle: clipped, projected, culled, drawn as its
+    /// polygon mode says. `scratch` holds the clipped polygon (kept across
+    /// primitives: nothing is allocated per primitive once it has grown).
+    fn polygon(
+        &self,
+        poly: [PolyVertex; 3],
+        mut flat: Option<Varyings>,
+        scratch: &mut Scratch,
+        sink: &mut dyn PrimSink,
+    ) {
         let n = self.layout.len();
         let f = self.layout.finite_len();
         if poly.iter().any(|(v, _)| !v.is_finite(f)) {
@@ -350,25 +449,27 @@ impl<'s> Geometry<'s> {
         if codes[0] & codes[1] & codes[2] != 0 || user[0] & user[1] & user[2] != 0 {
             return;
         }
-        let mut clipped: Vec<PolyVertex> = poly.to_vec();
+        let Scratch { clipped, out, win } = scratch;
+        clipped.clear();
+        clipped.extend_from_slice(&poly);
         let mut was_clipped = false;
         for &g in guard_levels(poly.iter().map(|(v, _)| v)) {
             let planes = clipped.iter().fold(0, |acc, (v, _)| acc | outcode(v.pos, g));
             if planes != 0 {
-                clip_polygon(&mut clipped, planes, g, n);
+                clip_polygon(clipped, out, planes, g, n);
                 was_clipped = true;
             }
         }
         // User planes after the view volume's, as llvmpipe's clipper orders them.
         let user_mask = user[0] | user[1] | user[2];
         if user_mask != 0 {
-            if !clip_polygon_user(&mut clipped, &self.user, user_mask, n) {
+            if !clip_polygon_user(clipped, out, &self.user, user_mask, n) {
                 return;
             }
             was_clipped = true;
         }
-        let mut win: Vec<(RasterVertex, bool)> = Vec::with_capacity(clipped.len());
-        for (v, edge) in &clipped {
+        win.clear();
+        for (v, edge) in clipped.iter() {
             let drawn = poly.iter().any(|(o, _)| o.pos == v.pos);
             match self.project_as(v, drawn) {
                 Some(rv) => win.push((rv, *edge)),
@@ -379,12 +480,7 @@ impl<'s> Geometry<'s> {
             return;
         }
         // Facing from the signed area in window space (y up: positive is CCW).
-        let area: f64 = (0..win.len())
-            .map(|i| {
-                let (p, q) = (&win[i].0, &win[(i + 1) % win.len()].0);
-                f64::from(p.x) * f64::from(q.y) - f64::from(q.x) * f64::from(p.y)
-            })
-            .sum();
+        let area = signed_area(win.len(), |i| (win[i].0.x, win[i].0.y));
         let front = (area > 0.0) == (self.state.front_face == FrontFace::Ccw);
         if self.state.culls(front) {
             return;
@@ -423,11 +519,11 @@ impl<'s> Geometry<'s> {
                 }
             }
             PolygonMode::Line | PolygonMode::Point => {
-                let dz = offset.map_or(0.0, |(factor, units)| self.offset_of(&win, factor, units));
-                let shifted: Vec<(RasterVertex, bool)> = win
-                    .iter()
-                    .map(|(v, e)| (RasterVertex { z: v.z + dz, ..*v }, *e))
-                    .collect();
+                let dz = offset.map_or(0.0, |(factor, units)| self.offset_of(win, factor, units));
+                for (v, _) in win.iter_mut() {
+                    v.z += dz;
+                }
+                let shifted = &*win;
                 for i in 0..shifted.len() {
                     let (v, edge) = &shifted[i];
                     if !edge {
