@@ -367,16 +367,18 @@ impl<'a> Gen<'a> {
             args.push(px0.into());
         }
         self.b.ins().jump(head, &args);
+        // A group with live lanes goes straight to work; only one without
+        // asks whether any live lane is left (two instructions fewer a group
+        // than asking first).
         self.b.switch_to_block(head);
-        let body = self.b.create_block();
-        self.b.ins().brif(rest, body, &[], exit, &[]);
-
-        self.b.switch_to_block(body);
         let next = self.b.create_block();
         let bits = self.b.ins().ireduce(types::I32, rest);
         let bits = self.b.ins().band_imm_u(bits, 15);
         let work = self.b.create_block();
-        self.b.ins().brif(bits, work, &[], next, &[]);
+        let empty = self.b.create_block();
+        self.b.ins().brif(bits, work, &[], empty, &[]);
+        self.b.switch_to_block(empty);
+        self.b.ins().brif(rest, next, &[], exit, &[]);
 
         self.b.switch_to_block(work);
         // Uniforms are loaded in each group rather than once per span: keeping a
