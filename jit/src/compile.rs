@@ -640,8 +640,12 @@ impl<'a> Gen<'a> {
                 }
                 Stage::Blend(blend) => {
                     let dst = self.load_dst(&mut g);
-                    let d = self.unpack(dst);
-                    g.rgba = self.blend(&blend, g.rgba, d, u);
+                    if blend.eq_rgb == blend.eq_alpha {
+                        self.blend16(&blend, &mut g, dst, u);
+                    } else {
+                        let d = self.unpack(dst);
+                        g.rgba = self.blend(&blend, g.rgba, d, u);
+                    }
                 }
                 Stage::Pack { dither } => {
                     // The shading stage may have packed the colour already.
@@ -1080,6 +1084,159 @@ impl<'a> Gen<'a> {
                     Factor::Value(self.b.ins().umin(s[3], ida))
                 }
             }
+        }
+    }
+
+    /// A vector of eight `u16` lanes all `v`.
+    fn splat16(&mut self, v: u16) -> Value {
+        // Cached with the `i32` splats, under keys no `i32` constant has.
+        let key = (1 << 40) | i64::from(v);
+        if let Some(&(_, c)) = self.consts.iter().find(|(k, _)| *k == key) {
+            return c;
+        }
+        let [lo, hi] = v.to_le_bytes();
+        let bytes = std::array::from_fn(|i| if i % 2 == 0 { lo } else { hi });
+        let c = self.vconst_bytes(bytes);
+        let c = self.b.ins().bitcast(types::I16X8, le(), c);
+        self.consts.push((key, c));
+        c
+    }
+
+    /// Channels `a` and `b` (bytes in `i32` lanes) side by side in `u16` lanes.
+    fn pair(&mut self, a: Value, b: Value, cache: &mut Vec<(Value, Value, Value)>) -> Value {
+        if let Some(&(_, _, p)) = cache.iter().find(|&&(x, y, _)| x == a && y == b) {
+            return p;
+        }
+        let p = self.b.ins().snarrow(a, b);
+        cache.push((a, b, p));
+        p
+    }
+
+    /// The factors of channels `c` and `c + 1` side by side.
+    fn pair_factor(&mut self, (f0, f1): (Factor, Factor), cache: &mut Vec<(Value, Value, Value)>) -> Factor {
+        match (f0, f1) {
+            (Factor::Zero, Factor::Zero) => Factor::Zero,
+            (Factor::One, Factor::One) => Factor::One,
+            _ => {
+                let v = |s: &mut Self, f: Factor| match f {
+                    Factor::Zero => s.splat(0),
+                    Factor::One => s.splat(255),
+                    Factor::Value(v) => v,
+                };
+                let (a, b) = (v(self, f0), v(self, f1));
+                Factor::Value(self.pair(a, b, cache))
+            }
+        }
+    }
+
+    /// [`Self::mul_unorm`] in `u16` lanes: `x · f ≤ 65025` and
+    /// `t + (t >> 8) + 128 ≤ 65407` fit, so the bits are the same.
+    fn mul_unorm16(&mut self, x: Value, f: Factor) -> Value {
+        match f {
+            Factor::Zero => self.splat16(0),
+            Factor::One => x,
+            Factor::Value(f) => {
+                let t = self.b.ins().imul(x, f);
+                let hi = self.b.ins().ushr_imm_u(t, 8);
+                let t = self.b.ins().iadd(t, hi);
+                let half = self.splat16(128);
+                let t = self.b.ins().iadd(t, half);
+                self.b.ins().ushr_imm_u(t, 8)
+            }
+        }
+    }
+
+    /// [`Self::blend`] (same equation for colour and alpha) with two
+    /// channels a vector: red and green, blue and alpha in the `u16` lanes
+    /// of one vector each, which halves the arithmetic (`pmullw` where
+    /// `pmulld` is slow). Leaves the group's colour packed for formats with
+    /// a byte a channel, else as channels.
+    fn blend16(&mut self, key: &BlendKey, g: &mut Group, dst: Value, u: &Uniforms) {
+        let s = g.rgba;
+        let d = self.unpack(dst);
+        let k = u.blend_color;
+        self.inverses.clear();
+        let mut cache = Vec::new();
+        let sp = [self.pair(s[0], s[1], &mut cache), self.pair(s[2], s[3], &mut cache)];
+        let dp = match self.key.color_format {
+            // Straight from the stored bytes: one shuffle a pair.
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 => {
+                let at = match self.key.color_format {
+                    ColorFormat::Rgba8 => [0u8, 1, 2, 3],
+                    _ => [2, 1, 0, 3],
+                };
+                let bytes = self.b.ins().bitcast(types::I8X16, le(), dst);
+                let zero = self.vconst_bytes([0; 16]);
+                [0, 1].map(|p| {
+                    // Index 16 takes a zero byte: lane j of the pair is
+                    // channel `2p + j / 4` of pixel `j % 4`.
+                    let mut mask = [16u8; 16];
+                    for j in 0..8 {
+                        mask[2 * j] = 4 * (j as u8 % 4) + at[2 * p + j / 4];
+                    }
+                    let m = self.b.func.dfg.immediates.push(mask.to_vec().into());
+                    let v = self.b.ins().shuffle(bytes, zero, m);
+                    self.b.ins().bitcast(types::I16X8, le(), v)
+                })
+            }
+            _ => [self.pair(d[0], d[1], &mut cache), self.pair(d[2], d[3], &mut cache)],
+        };
+        let mut out = [sp[0], sp[1]];
+        let eq = key.eq_rgb;
+        for p in 0..2 {
+            let (c0, c1) = (2 * p, 2 * p + 1);
+            let params = |c: usize| {
+                if c < 3 {
+                    (key.src_rgb, key.dst_rgb)
+                } else {
+                    (key.src_alpha, key.dst_alpha)
+                }
+            };
+            out[p] = match eq {
+                BlendEquation::Min => self.b.ins().umin(sp[p], dp[p]),
+                BlendEquation::Max => self.b.ins().umax(sp[p], dp[p]),
+                BlendEquation::Add | BlendEquation::Subtract | BlendEquation::ReverseSubtract => {
+                    let ((sf0, df0), (sf1, df1)) = (params(c0), params(c1));
+                    let fs = (self.factor(sf0, c0, s, d, k), self.factor(sf1, c1, s, d, k));
+                    let fs = self.pair_factor(fs, &mut cache);
+                    let fd = (self.factor(df0, c0, s, d, k), self.factor(df1, c1, s, d, k));
+                    let fd = self.pair_factor(fd, &mut cache);
+                    let ws = self.mul_unorm16(sp[p], fs);
+                    let wd = self.mul_unorm16(dp[p], fd);
+                    match eq {
+                        BlendEquation::Add => {
+                            let v = self.b.ins().iadd(ws, wd);
+                            let ff = self.splat16(255);
+                            self.b.ins().umin(v, ff)
+                        }
+                        BlendEquation::Subtract => {
+                            let v = self.b.ins().isub(ws, wd);
+                            let zero = self.splat16(0);
+                            self.b.ins().smax(v, zero)
+                        }
+                        _ => {
+                            let v = self.b.ins().isub(wd, ws);
+                            let zero = self.splat16(0);
+                            self.b.ins().smax(v, zero)
+                        }
+                    }
+                }
+            };
+        }
+        let bytes = matches!(
+            self.key.color_format,
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8
+        );
+        if bytes {
+            let planar = self.b.ins().unarrow(out[0], out[1]);
+            g.packed = Some(self.interleave(planar));
+        } else {
+            g.rgba = [
+                self.b.ins().uwiden_low(out[0]),
+                self.b.ins().uwiden_high(out[0]),
+                self.b.ins().uwiden_low(out[1]),
+                self.b.ins().uwiden_high(out[1]),
+            ];
         }
     }
 
