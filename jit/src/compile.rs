@@ -37,6 +37,26 @@ pub use sample::{native_sampler, native_unit};
 
 const I32X4: Type = types::I32X4;
 
+/// The lane mask of each group's four live bits: lane `i` all ones where bit `i` is set.
+#[repr(align(16))]
+struct LiveMasks([[u32; 4]; 16]);
+
+static LIVE_MASKS: LiveMasks = LiveMasks({
+    let mut t = [[0u32; 4]; 16];
+    let mut bits = 0;
+    while bits < 16 {
+        let mut i = 0;
+        while i < 4 {
+            if bits & (1 << i) != 0 {
+                t[bits][i] = u32::MAX;
+            }
+            i += 1;
+        }
+        bits += 1;
+    }
+    t
+});
+
 /// What the compiled function is given for one span. `#[repr(C)]`: the
 /// generated code reads its fields at their `offset_of!` offsets.
 #[repr(C)]
@@ -213,7 +233,12 @@ struct SpanValues {
 
 /// The fragment values of one group of four, as the stages update them.
 struct Group {
-    live: Value,
+    /// The lane mask of the live lanes, once a stage has needed it (made
+    /// from `bits` by [`Gen::live`]): a key without tests never makes it in
+    /// a group whose four lanes are all live.
+    live: Option<Value>,
+    /// The group's four bits of `SpanCall::live` (an `i32`, not zero).
+    bits: Value,
     rgba: [Value; 4],
     packed: Option<Value>,
     /// The stored color, packed, once loaded.
@@ -342,16 +367,18 @@ impl<'a> Gen<'a> {
             args.push(px0.into());
         }
         self.b.ins().jump(head, &args);
+        // A group with live lanes goes straight to work; only one without
+        // asks whether any live lane is left (two instructions fewer a group
+        // than asking first).
         self.b.switch_to_block(head);
-        let body = self.b.create_block();
-        self.b.ins().brif(rest, body, &[], exit, &[]);
-
-        self.b.switch_to_block(body);
         let next = self.b.create_block();
         let bits = self.b.ins().ireduce(types::I32, rest);
         let bits = self.b.ins().band_imm_u(bits, 15);
         let work = self.b.create_block();
-        self.b.ins().brif(bits, work, &[], next, &[]);
+        let empty = self.b.create_block();
+        self.b.ins().brif(bits, work, &[], empty, &[]);
+        self.b.switch_to_block(empty);
+        self.b.ins().brif(rest, next, &[], exit, &[]);
 
         self.b.switch_to_block(work);
         // Uniforms are loaded in each group rather than once per span: keeping a
@@ -389,8 +416,9 @@ impl<'a> Gen<'a> {
         if let Some(&(_, c)) = self.consts.iter().find(|(k, _)| *k == v) {
             return c;
         }
-        let s = self.b.ins().iconst(types::I32, v);
-        let c = self.b.ins().splat(I32X4, s);
+        // A constant-pool vector: one load (or the operand of its user)
+        // where `iconst` and `splat` take three instructions.
+        let c = self.vconst([v as u32; 4]);
         self.consts.push((v, c));
         c
     }
@@ -409,26 +437,36 @@ impl<'a> Gen<'a> {
         self.b.ins().vconst(types::I8X16, c)
     }
 
+    /// `v * n`, a shift when `n` is a power of two.
+    fn scale(&mut self, v: Value, n: i64) -> Value {
+        if n > 0 && (n as u64).is_power_of_two() {
+            self.b.ins().ishl_imm_u(v, i64::from((n as u64).trailing_zeros()))
+        } else {
+            self.b.ins().imul_imm_u(v, n)
+        }
+    }
+
     /// The lane mask of group `g` and its span data.
     fn group(&mut self, sv: &SpanValues, lane0: Value, bits: Value) -> Group {
-        let bits_v = self.b.ins().splat(I32X4, bits);
-        let lane_bits = self.vconst([1, 2, 4, 8]);
-        let sel = self.b.ins().band(bits_v, lane_bits);
         let zero = self.splat(0);
-        let live = self.b.ins().icmp(IntCC::Equal, sel, lane_bits);
         let lane0_p = self.b.ins().uextend(self.ptr, lane0);
         let bpp = self.key.color_format.bytes_per_pixel() as i64;
-        let off = self.b.ins().imul_imm_u(lane0_p, bpp);
+        let off = self.scale(lane0_p, bpp);
         let color_p = self.b.ins().iadd(sv.color, off);
         let dbytes = match self.key.depth_format {
             Some(DepthFormat::D16) => 2,
             _ => 4,
         };
-        let off = self.b.ins().imul_imm_u(lane0_p, dbytes);
+        let off = if dbytes == bpp {
+            off
+        } else {
+            self.scale(lane0_p, dbytes)
+        };
         let depth_p = self.b.ins().iadd(sv.depth, off);
         let stencil_p = self.b.ins().iadd(sv.stencil, lane0_p);
         Group {
-            live,
+            live: None,
+            bits,
             rgba: [zero; 4],
             packed: None,
             dst: None,
@@ -441,6 +479,23 @@ impl<'a> Gen<'a> {
             px: None,
             w: None,
         }
+    }
+
+    /// The lane mask of the group's live lanes, made from its bits the
+    /// first time a stage asks.
+    fn live(&mut self, g: &mut Group) -> Value {
+        if let Some(l) = g.live {
+            return l;
+        }
+        // One load from the table of the 16 masks (3 instructions where
+        // splatting and comparing the bits take 5).
+        let table = self.b.ins().iconst(self.ptr, LIVE_MASKS.0.as_ptr() as i64);
+        let bits_p = self.b.ins().uextend(self.ptr, g.bits);
+        let off = self.b.ins().ishl_imm_u(bits_p, 4);
+        let p = self.b.ins().iadd(table, off);
+        let live = self.b.ins().load(I32X4, mem(), p, 0);
+        g.live = Some(live);
+        live
     }
 
     /// Channel `c` (0 = red .. 3 = alpha) of the group's fragments.
@@ -492,15 +547,20 @@ impl<'a> Gen<'a> {
                     let x = self.b.ins().splat(I32X4, x);
                     let idx = self.vconst([0, 1, 2, 3]);
                     let x = self.b.ins().iadd(x, idx);
-                    let lo = self.b.ins().icmp(IntCC::SignedGreaterThanOrEqual, x, u.scissor_x0);
-                    let hi = self.b.ins().icmp(IntCC::SignedLessThan, x, u.scissor_x1);
-                    let inside = self.b.ins().band(lo, hi);
-                    g.live = self.b.ins().band(g.live, inside);
+                    // `x0 > x` and `x1 > x`: one instruction each on x86-64.
+                    let left = self.b.ins().icmp(IntCC::SignedGreaterThan, u.scissor_x0, x);
+                    let hi = self.b.ins().icmp(IntCC::SignedGreaterThan, u.scissor_x1, x);
+                    let live = self.live(&mut g);
+                    let live = self.b.ins().band(live, hi);
+                    g.live = Some(self.b.ins().band_not(live, left));
                     self.skip_if_dead(&g, next);
                 }
                 Stage::AlphaTest(func) => {
-                    let pass = self.compare(func, g.rgba[3], u.alpha_ref);
-                    g.live = self.b.ins().band(g.live, pass);
+                    // Alpha and the reference are bytes: signed compares
+                    // (one instruction on x86-64) order them as unsigned.
+                    let pass = self.compare_as(func, g.rgba[3], u.alpha_ref, true);
+                    let live = self.live(&mut g);
+                    g.live = Some(self.b.ins().band(live, pass));
                     self.skip_if_dead(&g, next);
                 }
                 Stage::StencilTest { stencil, depth_on } => {
@@ -508,18 +568,30 @@ impl<'a> Gen<'a> {
                         continue;
                     }
                     let s = self.load_stencil(&mut g);
+                    if stencil.func == CompareFunc::Always {
+                        // Every live lane passes: no compare, no `fail` op,
+                        // no lane dies (the `ops` frame's stencil test).
+                        if !depth_on && stencil.zpass != StencilOp::Keep {
+                            let live = self.live(&mut g);
+                            let s_new = self.stencil_select(stencil.zpass, live, s, u);
+                            g.stencil = Some((s_new, true));
+                            self.store_stencil(&mut g);
+                        }
+                        continue;
+                    }
                     let masked = self.b.ins().band(s, u.stencil_value_mask);
                     let pass = self.compare(stencil.func, u.stencil_ref_masked, masked);
-                    let fail = self.b.ins().band_not(g.live, pass);
+                    let live = self.live(&mut g);
+                    let fail = self.b.ins().band_not(live, pass);
                     let mut s_new = self.stencil_select(stencil.fail, fail, s, u);
-                    let passed = self.b.ins().band(g.live, pass);
+                    let passed = self.b.ins().band(live, pass);
                     if !depth_on {
                         s_new = self.stencil_select(stencil.zpass, passed, s_new, u);
                     }
                     let changed = stencil.fail != StencilOp::Keep || (!depth_on && stencil.zpass != StencilOp::Keep);
                     g.stencil = Some((s_new, changed));
                     self.store_stencil(&mut g);
-                    g.live = passed;
+                    g.live = Some(passed);
                     self.skip_if_dead(&g, next);
                 }
                 Stage::DepthTest { depth, stencil } => {
@@ -529,7 +601,7 @@ impl<'a> Gen<'a> {
                         Some(z) => z,
                         None => {
                             let lane0_p = self.b.ins().uextend(self.ptr, g.lane0);
-                            let zoff = self.b.ins().imul_imm_u(lane0_p, 4);
+                            let zoff = self.scale(lane0_p, 4);
                             let zp = self.b.ins().iadd(sv.span, zoff);
                             let z = self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32);
                             let max = self.splat(i64::from(format.max_value()));
@@ -541,28 +613,39 @@ impl<'a> Gen<'a> {
                     // compares in one instruction (unsigned takes three).
                     let signed = format != DepthFormat::D32;
                     let pass = self.compare_as(depth.func, z, stored, signed);
-                    let pass = self.b.ins().band(pass, g.live);
+                    let live = self.live(&mut g);
+                    let pass = self.b.ins().band(pass, live);
                     if depth.write {
-                        let out = self.b.ins().bitselect(pass, z, stored);
+                        let out = self.select(pass, z, stored);
                         self.store_depth(format, g.depth_p, out);
                     }
                     if let (Some(StencilKey { zfail, zpass, .. }), true) = (stencil, self.key.stencil_buffer) {
                         let s = self.load_stencil(&mut g);
-                        let zfailed = self.b.ins().band_not(g.live, pass);
-                        let s1 = self.stencil_select(zfail, zfailed, s, u);
-                        let s2 = self.stencil_select(zpass, pass, s1, u);
+                        let s2 = if zfail == zpass {
+                            // The lanes that fail and those that pass are
+                            // the live ones, apart: one op over all of them.
+                            self.stencil_select(zpass, live, s, u)
+                        } else {
+                            let zfailed = self.b.ins().band_not(live, pass);
+                            let s1 = self.stencil_select(zfail, zfailed, s, u);
+                            self.stencil_select(zpass, pass, s1, u)
+                        };
                         let changed = zfail != StencilOp::Keep || zpass != StencilOp::Keep;
                         let was = g.stencil.is_some_and(|(_, c)| c);
                         g.stencil = Some((s2, changed || was));
                         self.store_stencil(&mut g);
                     }
-                    g.live = pass;
+                    g.live = Some(pass);
                     self.skip_if_dead(&g, next);
                 }
                 Stage::Blend(blend) => {
                     let dst = self.load_dst(&mut g);
-                    let d = self.unpack(dst);
-                    g.rgba = self.blend(&blend, g.rgba, d, u);
+                    if blend.eq_rgb == blend.eq_alpha {
+                        self.blend16(&blend, &mut g, dst, u);
+                    } else {
+                        let d = self.unpack(dst);
+                        g.rgba = self.blend(&blend, g.rgba, d, u);
+                    }
                 }
                 Stage::Pack { dither } => {
                     // The shading stage may have packed the colour already.
@@ -576,17 +659,36 @@ impl<'a> Gen<'a> {
                     g.packed = Some(self.logic_op(op, s, dst));
                 }
                 Stage::ColorWrite(mask) => {
-                    let dst = self.load_dst(&mut g);
                     let s = g.packed.expect("Pack precedes ColorWrite in every stage list");
                     let format = self.key.color_format;
                     let bits = pixel::mask_bits(format, mask);
                     let value = if bits == pixel::mask_bits(format, ColorMask::ALL) {
                         s
                     } else {
+                        let dst = self.load_dst(&mut g);
                         let m = self.splat(i64::from(bits));
                         self.b.ins().bitselect(m, s, dst)
                     };
-                    let out = self.b.ins().bitselect(g.live, value, dst);
+                    if g.live.is_none() {
+                        // No test ran: a group whose four lanes are live stores
+                        // its pixels without reading them (the `fill` frame's
+                        // groups, nearly all full: 7 instructions fewer).
+                        let full = self.b.ins().icmp_imm_u(IntCC::Equal, g.bits, 15);
+                        let whole = self.b.create_block();
+                        let part = self.b.create_block();
+                        self.b.ins().brif(full, whole, &[], part, &[]);
+                        self.b.switch_to_block(whole);
+                        // Constants made in this block do not dominate `part`.
+                        let (consts, fconsts) = (self.consts.len(), self.fconsts.len());
+                        self.store_color(g.color_p, value);
+                        self.consts.truncate(consts);
+                        self.fconsts.truncate(fconsts);
+                        self.b.ins().jump(next, &[]);
+                        self.b.switch_to_block(part);
+                    }
+                    let live = self.live(&mut g);
+                    let dst = self.load_dst(&mut g);
+                    let out = self.select(live, value, dst);
                     self.store_color(g.color_p, out);
                 }
             }
@@ -594,9 +696,22 @@ impl<'a> Gen<'a> {
         self.b.ins().jump(next, &[]);
     }
 
+    /// `t` in the lanes of the lane mask `mask` (each lane all ones or all
+    /// zeros), `f` elsewhere: one `blendvps` on x86-64, where `bitselect`
+    /// of a mask Cranelift cannot prove lane-wise (a test's `band` of two
+    /// compares) takes three instructions.
+    fn select(&mut self, mask: Value, t: Value, f: Value) -> Value {
+        if self.x86 {
+            self.b.ins().blendv(mask, t, f)
+        } else {
+            self.b.ins().bitselect(mask, t, f)
+        }
+    }
+
     /// Ends the group when no lane is live any more.
     fn skip_if_dead(&mut self, g: &Group, next: Block) {
-        let any = self.b.ins().vany_true(g.live);
+        let Some(live) = g.live else { return };
+        let any = self.b.ins().vany_true(live);
         let go = self.b.create_block();
         self.b.ins().brif(any, go, &[], next, &[]);
         self.b.switch_to_block(go);
@@ -695,8 +810,9 @@ impl<'a> Gen<'a> {
                 self.b.ins().band(v, ff)
             }
         };
-        let written = self.b.ins().bitselect(u.stencil_write_mask, new, s);
-        self.b.ins().bitselect(mask, written, s)
+        // Bit by bit: `mask & write mask ? new : s`, one select.
+        let m = self.b.ins().band(mask, u.stencil_write_mask);
+        self.b.ins().bitselect(m, new, s)
     }
 
     fn load_depth(&mut self, format: DepthFormat, p: Value) -> Value {
@@ -842,7 +958,8 @@ impl<'a> Gen<'a> {
                 let c2 = place(self, c2, 16);
                 let v = self.b.ins().bor(c0, g8);
                 let v = self.b.ins().bor(v, c2);
-                if self.key.color_format.has_alpha() {
+                // Alpha the colour mask keeps: its bits are the stored ones.
+                if self.key.color_format.has_alpha() && self.key.color_mask.a {
                     let a = place(self, a, 24);
                     self.b.ins().bor(v, a)
                 } else {
@@ -970,11 +1087,169 @@ impl<'a> Gen<'a> {
         }
     }
 
+    /// A vector of eight `u16` lanes all `v`.
+    fn splat16(&mut self, v: u16) -> Value {
+        // Cached with the `i32` splats, under keys no `i32` constant has.
+        let key = (1 << 40) | i64::from(v);
+        if let Some(&(_, c)) = self.consts.iter().find(|(k, _)| *k == key) {
+            return c;
+        }
+        let [lo, hi] = v.to_le_bytes();
+        let bytes = std::array::from_fn(|i| if i % 2 == 0 { lo } else { hi });
+        let c = self.vconst_bytes(bytes);
+        let c = self.b.ins().bitcast(types::I16X8, le(), c);
+        self.consts.push((key, c));
+        c
+    }
+
+    /// Channels `a` and `b` (bytes in `i32` lanes) side by side in `u16` lanes.
+    fn pair(&mut self, a: Value, b: Value, cache: &mut Vec<(Value, Value, Value)>) -> Value {
+        if let Some(&(_, _, p)) = cache.iter().find(|&&(x, y, _)| x == a && y == b) {
+            return p;
+        }
+        let p = self.b.ins().snarrow(a, b);
+        cache.push((a, b, p));
+        p
+    }
+
+    /// The factors of channels `c` and `c + 1` side by side.
+    fn pair_factor(&mut self, (f0, f1): (Factor, Factor), cache: &mut Vec<(Value, Value, Value)>) -> Factor {
+        match (f0, f1) {
+            (Factor::Zero, Factor::Zero) => Factor::Zero,
+            (Factor::One, Factor::One) => Factor::One,
+            _ => {
+                let v = |s: &mut Self, f: Factor| match f {
+                    Factor::Zero => s.splat(0),
+                    Factor::One => s.splat(255),
+                    Factor::Value(v) => v,
+                };
+                let (a, b) = (v(self, f0), v(self, f1));
+                Factor::Value(self.pair(a, b, cache))
+            }
+        }
+    }
+
+    /// [`Self::mul_unorm`] in `u16` lanes: `x · f ≤ 65025` and
+    /// `t + (t >> 8) + 128 ≤ 65407` fit, so the bits are the same.
+    fn mul_unorm16(&mut self, x: Value, f: Factor) -> Value {
+        match f {
+            Factor::Zero => self.splat16(0),
+            Factor::One => x,
+            Factor::Value(f) => {
+                let t = self.b.ins().imul(x, f);
+                let hi = self.b.ins().ushr_imm_u(t, 8);
+                let t = self.b.ins().iadd(t, hi);
+                let half = self.splat16(128);
+                let t = self.b.ins().iadd(t, half);
+                self.b.ins().ushr_imm_u(t, 8)
+            }
+        }
+    }
+
+    /// [`Self::blend`] (same equation for colour and alpha) with two
+    /// channels a vector: red and green, blue and alpha in the `u16` lanes
+    /// of one vector each, which halves the arithmetic (`pmullw` where
+    /// `pmulld` is slow). Leaves the group's colour packed for formats with
+    /// a byte a channel, else as channels.
+    fn blend16(&mut self, key: &BlendKey, g: &mut Group, dst: Value, u: &Uniforms) {
+        let s = g.rgba;
+        let d = self.unpack(dst);
+        let k = u.blend_color;
+        self.inverses.clear();
+        let mut cache = Vec::new();
+        let sp = [self.pair(s[0], s[1], &mut cache), self.pair(s[2], s[3], &mut cache)];
+        let dp = match self.key.color_format {
+            // Straight from the stored bytes: one shuffle a pair.
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 => {
+                let at = match self.key.color_format {
+                    ColorFormat::Rgba8 => [0u8, 1, 2, 3],
+                    _ => [2, 1, 0, 3],
+                };
+                let bytes = self.b.ins().bitcast(types::I8X16, le(), dst);
+                let zero = self.vconst_bytes([0; 16]);
+                [0, 1].map(|p| {
+                    // Index 16 takes a zero byte: lane j of the pair is
+                    // channel `2p + j / 4` of pixel `j % 4`.
+                    let mut mask = [16u8; 16];
+                    for j in 0..8 {
+                        mask[2 * j] = 4 * (j as u8 % 4) + at[2 * p + j / 4];
+                    }
+                    let m = self.b.func.dfg.immediates.push(mask.to_vec().into());
+                    let v = self.b.ins().shuffle(bytes, zero, m);
+                    self.b.ins().bitcast(types::I16X8, le(), v)
+                })
+            }
+            _ => [self.pair(d[0], d[1], &mut cache), self.pair(d[2], d[3], &mut cache)],
+        };
+        let mut out = [sp[0], sp[1]];
+        let eq = key.eq_rgb;
+        for p in 0..2 {
+            let (c0, c1) = (2 * p, 2 * p + 1);
+            let params = |c: usize| {
+                if c < 3 {
+                    (key.src_rgb, key.dst_rgb)
+                } else {
+                    (key.src_alpha, key.dst_alpha)
+                }
+            };
+            out[p] = match eq {
+                BlendEquation::Min => self.b.ins().umin(sp[p], dp[p]),
+                BlendEquation::Max => self.b.ins().umax(sp[p], dp[p]),
+                BlendEquation::Add | BlendEquation::Subtract | BlendEquation::ReverseSubtract => {
+                    let ((sf0, df0), (sf1, df1)) = (params(c0), params(c1));
+                    let fs = (self.factor(sf0, c0, s, d, k), self.factor(sf1, c1, s, d, k));
+                    let fs = self.pair_factor(fs, &mut cache);
+                    let fd = (self.factor(df0, c0, s, d, k), self.factor(df1, c1, s, d, k));
+                    let fd = self.pair_factor(fd, &mut cache);
+                    let ws = self.mul_unorm16(sp[p], fs);
+                    let wd = self.mul_unorm16(dp[p], fd);
+                    match eq {
+                        BlendEquation::Add => {
+                            let v = self.b.ins().iadd(ws, wd);
+                            let ff = self.splat16(255);
+                            self.b.ins().umin(v, ff)
+                        }
+                        BlendEquation::Subtract => {
+                            let v = self.b.ins().isub(ws, wd);
+                            let zero = self.splat16(0);
+                            self.b.ins().smax(v, zero)
+                        }
+                        _ => {
+                            let v = self.b.ins().isub(wd, ws);
+                            let zero = self.splat16(0);
+                            self.b.ins().smax(v, zero)
+                        }
+                    }
+                }
+            };
+        }
+        let bytes = matches!(
+            self.key.color_format,
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8
+        );
+        if bytes {
+            let planar = self.b.ins().unarrow(out[0], out[1]);
+            g.packed = Some(self.interleave(planar));
+        } else {
+            g.rgba = [
+                self.b.ins().uwiden_low(out[0]),
+                self.b.ins().uwiden_high(out[0]),
+                self.b.ins().uwiden_low(out[1]),
+                self.b.ins().uwiden_high(out[1]),
+            ];
+        }
+    }
+
     fn blend(&mut self, key: &BlendKey, s: [Value; 4], d: [Value; 4], u: &Uniforms) -> [Value; 4] {
         let k = u.blend_color;
         self.inverses.clear();
         let mut out = s;
-        for c in 0..4 {
+        // A channel the colour mask keeps (or the format does not store) is
+        // not blended: its bits of the blended pixel are the stored ones
+        // (the `ops` frame's alpha: a quarter of the blend).
+        let mask = self.key.color_mask.for_format(self.key.color_format);
+        let written = [mask.r, mask.g, mask.b, mask.a];
+        for c in (0..4).filter(|&c| written[c]) {
             let (sf, df, eq) = if c < 3 {
                 (key.src_rgb, key.dst_rgb, key.eq_rgb)
             } else {
@@ -1051,17 +1326,45 @@ impl Uniforms {
             let a = g.uniform_u8(u, offset_of!(FragmentUniforms, alpha_ref));
             out.alpha_ref = splat(g, a);
         }
-        if key.stencil.is_some() && key.stencil_buffer {
-            let r = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_ref));
-            let vm = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_value_mask));
-            let wm = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_write_mask));
-            let rm = g.b.ins().band(r, vm);
-            out.stencil_ref = splat(g, r);
-            out.stencil_value_mask = splat(g, vm);
-            out.stencil_ref_masked = splat(g, rm);
-            out.stencil_write_mask = splat(g, wm);
+        if let (Some(st), true) = (key.stencil, key.stencil_buffer) {
+            // What the test and the ops read (the loads are not removed when unused).
+            let ops = [st.fail, st.zfail, st.zpass];
+            let compares = !matches!(st.func, CompareFunc::Always | CompareFunc::Never);
+            let replaces = ops.contains(&StencilOp::Replace);
+            let r = match compares || replaces {
+                true => g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_ref)),
+                false => zero,
+            };
+            if replaces {
+                out.stencil_ref = splat(g, r);
+            }
+            if compares {
+                let vm = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_value_mask));
+                let rm = g.b.ins().band(r, vm);
+                out.stencil_value_mask = splat(g, vm);
+                out.stencil_ref_masked = splat(g, rm);
+            }
+            if ops.iter().any(|&op| op != StencilOp::Keep) {
+                let wm = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_write_mask));
+                out.stencil_write_mask = splat(g, wm);
+            }
         }
-        if key.blend.is_some() {
+        let constant = |f: BlendFactor| {
+            matches!(
+                f,
+                BlendFactor::ConstantColor
+                    | BlendFactor::OneMinusConstantColor
+                    | BlendFactor::ConstantAlpha
+                    | BlendFactor::OneMinusConstantAlpha
+            )
+        };
+        // Only blends that read the constant colour load it (the loads are
+        // not removed when unused).
+        if key.blend.is_some_and(|b| {
+            [b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha]
+                .into_iter()
+                .any(constant)
+        }) {
             for c in 0..4 {
                 let v = g.uniform_u8(u, offset_of!(FragmentUniforms, blend_color) + c);
                 out.blend_color[c] = splat(g, v);
@@ -1071,5 +1374,78 @@ impl Uniforms {
             out.dither = g.b.ins().load(I32X4, mem(), call, offset_of!(SpanCall, dither) as i32);
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod disasm {
+    //! The machine code of the benchmark frames' keys, printed by
+    //! `cargo test -p softgl-jit --lib disasm -- --ignored --nocapture`: for
+    //! counting instructions a group while tuning the generator.
+    use super::*;
+    use crate::key::{BlendKey, DepthKey, ShadeKey, StencilKey};
+
+    /// The `fill` frame's key (smooth colour, no tests) and the `ops` frame's.
+    fn keys() -> [(&'static str, FragmentKey); 3] {
+        let base = FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), true);
+        let shade = ShadeKey {
+            color: true,
+            ..ShadeKey::default()
+        };
+        let fill = FragmentKey {
+            shade: Some(shade),
+            ..base
+        };
+        let depth = DepthKey {
+            func: CompareFunc::Less,
+            write: true,
+        };
+        let tris = FragmentKey {
+            depth: Some(depth),
+            shade: Some(ShadeKey { depth: true, ..shade }),
+            ..base
+        };
+        let ops = FragmentKey {
+            scissor: true,
+            alpha_test: Some(CompareFunc::Greater),
+            stencil: Some(StencilKey {
+                func: CompareFunc::Always,
+                fail: StencilOp::Keep,
+                zfail: StencilOp::Incr,
+                zpass: StencilOp::Incr,
+            }),
+            blend: Some(BlendKey {
+                src_rgb: BlendFactor::SrcAlpha,
+                dst_rgb: BlendFactor::OneMinusSrcAlpha,
+                src_alpha: BlendFactor::SrcAlpha,
+                dst_alpha: BlendFactor::OneMinusSrcAlpha,
+                ..BlendKey::DEFAULT
+            }),
+            color_mask: ColorMask {
+                r: true,
+                g: true,
+                b: true,
+                a: false,
+            },
+            ..tris
+        };
+        [("fill", fill), ("tris", tris), ("ops", ops)]
+    }
+
+    #[test]
+    #[ignore = "prints machine code; run by hand"]
+    fn print() {
+        let isa = host_isa().unwrap();
+        for (name, key) in keys() {
+            let mut ctx = cranelift_codegen::Context::new();
+            ctx.func.signature = signature(&isa);
+            build(&key, &isa, &mut ctx.func);
+            ctx.set_disasm(true);
+            let code = ctx
+                .compile(&*isa, &mut cranelift_codegen::control::ControlPlane::default())
+                .unwrap();
+            let text = code.vcode.clone().unwrap_or_default();
+            println!("==== {name}: {} bytes\n{text}", code.code_info().total_size);
+        }
     }
 }

@@ -135,6 +135,12 @@ impl Gen<'_> {
         let ba = self.b.ins().snarrow(b, a);
         // Bytes r0..r3 g0..g3 b0..b3 a0..a3.
         let planar = self.b.ins().unarrow(rg, ba);
+        self.interleave(planar)
+    }
+
+    /// Bytes `r0..r3 g0..g3 b0..b3 a0..a3` as four pixels of the format
+    /// (one with a byte a channel): one byte shuffle.
+    pub(super) fn interleave(&mut self, planar: Value) -> Value {
         let (c0, c2) = if self.key.color_format == ColorFormat::Bgra8 {
             (8, 0)
         } else {

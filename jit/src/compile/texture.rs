@@ -135,7 +135,10 @@ impl Gen<'_> {
         store(self, row, offset_of!(TexCall, row));
         store(self, planes, offset_of!(TexCall, planes));
         store(self, view, offset_of!(TexCall, view));
-        let live = self.b.ins().vhigh_bits(types::I32, g.live);
+        let live = match g.live {
+            Some(live) => self.b.ins().vhigh_bits(types::I32, live),
+            None => g.bits,
+        };
         store(self, live, offset_of!(TexCall, live));
         let mask = self.b.ins().iconst(types::I32, i64::from(units));
         store(self, mask, offset_of!(TexCall, units));
