@@ -6,6 +6,7 @@ use softgl_jit::shade::slot;
 use softgl_jit::texture::{TextureSet, MAX_UNITS};
 use softgl_jit::{
     interp, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target,
+    SPAN_MAX,
 };
 
 /// Spans handed to the back end at once.
@@ -174,6 +175,28 @@ impl SpanSink for FragmentStage<'_, '_> {
         self.count += 1;
         if self.count == BATCH {
             self.flush();
+        }
+    }
+
+    fn row(&mut self, y: u32, x0: u32, x1: u32) {
+        for (x, len, mask) in crate::raster::row_spans(x0, x1) {
+            if self.count == self.buffers.batch.len() {
+                self.buffers.batch.push(FragmentSpan::new(0, 0));
+            }
+            let s = &mut self.buffers.batch[self.count];
+            (s.x, s.y, s.len, s.mask) = (x, y, len, mask);
+            s.planes = self.planes_len.saturating_sub(1) as u32;
+            // The row's colours and depths are zero (`SpanSink::row`).
+            if self.span_color {
+                (s.r, s.g, s.b, s.a) = ([0; SPAN_MAX], [0; SPAN_MAX], [0; SPAN_MAX], [0; SPAN_MAX]);
+            }
+            if self.span_z {
+                s.z = [0; SPAN_MAX];
+            }
+            self.count += 1;
+            if self.count == BATCH {
+                self.flush();
+            }
         }
     }
 

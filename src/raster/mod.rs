@@ -60,6 +60,13 @@ pub trait SpanSink {
     fn planes_mut(&mut self) -> Option<&mut Planes> {
         None
     }
+    /// The fragments `x0..=x1` of row `y`, all covered, with nothing but
+    /// what the planes give (their colours and depths zero): as spans of at
+    /// most 64 fragments, which a sink may make without a whole
+    /// [`FragmentSpan`] (536 bytes zeroed a call, and copied) per row.
+    fn row(&mut self, y: u32, x0: u32, x1: u32) {
+        emit_row(self, &mut FragmentSpan::new(0, 0), y, x0, x1, None);
+    }
 }
 
 /// Runs `fill` on the sink's planes for the next primitive (on scratch
@@ -230,31 +237,40 @@ pub(crate) fn ceil_div(a: i64, b: i64) -> i64 {
 /// Fills slot `i` of a span with the fragment at `x` (what the planes do not give).
 pub(crate) type FillSlot<'a> = dyn FnMut(u32, &mut FragmentSpan, usize) + 'a;
 
+/// The spans of at most [`softgl_jit::SPAN_MAX`] fragments that cover
+/// `x0..=x1` (inclusive), left to right: `(x, len, mask)`.
+#[inline]
+pub(crate) fn row_spans(x0: u32, x1: u32) -> impl Iterator<Item = (u32, u32, u64)> {
+    let mut x = x0;
+    std::iter::from_fn(move || {
+        (x <= x1).then(|| {
+            let n = (x1 - x + 1).min(softgl_jit::SPAN_MAX as u32);
+            let at = x;
+            x += n;
+            (at, n, if n == 64 { u64::MAX } else { (1u64 << n) - 1 })
+        })
+    })
+}
+
 /// Emits a row `y` from `x0` to `x1` (inclusive) in spans of at most 64 fragments,
 /// with `shade(x, slot)` filling each slot when given (the planes carry
 /// everything else).
-pub(crate) fn emit_row(
-    sink: &mut dyn SpanSink,
+pub(crate) fn emit_row<S: SpanSink + ?Sized>(
+    sink: &mut S,
     span: &mut FragmentSpan,
     y: u32,
     x0: u32,
     x1: u32,
     mut shade: Option<&mut FillSlot<'_>>,
 ) {
-    let mut x = x0;
-    while x <= x1 {
-        let n = (x1 - x + 1).min(softgl_jit::SPAN_MAX as u32);
-        span.x = x;
-        span.y = y;
-        span.len = n;
-        span.mask = if n == 64 { u64::MAX } else { (1u64 << n) - 1 };
+    for (x, n, mask) in row_spans(x0, x1) {
+        (span.x, span.y, span.len, span.mask) = (x, y, n, mask);
         if let Some(shade) = shade.as_mut() {
             for i in 0..n {
                 shade(x + i, span, i as usize);
             }
         }
         sink.span(span);
-        x += n;
     }
 }
 
