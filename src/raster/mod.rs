@@ -71,7 +71,7 @@ pub trait SpanSink {
 
 /// Runs `fill` on the sink's planes for the next primitive (on scratch
 /// planes when the sink takes none).
-pub(crate) fn with_planes<R>(sink: &mut dyn SpanSink, fill: impl FnOnce(&mut Planes) -> R) -> R {
+pub(crate) fn with_planes<S: SpanSink + ?Sized, R>(sink: &mut S, fill: impl FnOnce(&mut Planes) -> R) -> R {
     match sink.planes_mut() {
         Some(planes) => fill(planes),
         None => fill(&mut Planes::default()),
@@ -95,6 +95,25 @@ pub trait PrimSink {
 pub struct Rasterize<'s>(pub &'s mut dyn SpanSink);
 
 impl PrimSink for Rasterize<'_> {
+    fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
+        triangle(v, flat, params, self.0)
+    }
+
+    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
+        line(a, b, width, flat, params, self.0)
+    }
+
+    fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
+        point(v, size, params, self.0)
+    }
+}
+
+/// [`Rasterize`] into a sink of a known type: its triangles' rows reach
+/// [`SpanSink::row`] by a direct call the row loop inlines, not through a
+/// `dyn` (a flush's fragment stage).
+pub struct RasterizeInto<'s, S: SpanSink>(pub &'s mut S);
+
+impl<S: SpanSink> PrimSink for RasterizeInto<'_, S> {
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
         triangle(v, flat, params, self.0)
     }

@@ -59,7 +59,10 @@ impl Setup {
 
 /// Rasterizes a triangle, either winding. `flat` (the provoking vertex's
 /// varyings) replaces the interpolated colours.
-pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams, sink: &mut dyn SpanSink) {
+///
+/// Generic over the sink, so that a flush's fragment stage takes each row
+/// with a direct, inlined call (`&mut dyn SpanSink` works as before).
+pub fn triangle<S: SpanSink + ?Sized>(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams, sink: &mut S) {
     // docs/llvmpipe-facts.md 2: the y snapped top-down, reflected into GL rows.
     cover(Edges::window_points(v, params.height), v, flat, params, sink);
 }
@@ -93,12 +96,12 @@ pub(super) fn triangle_y_up(
 }
 
 /// Covers the triangle of the snapped bottom-up positions `p` of `v`.
-pub(super) fn cover(
+pub(super) fn cover<S: SpanSink + ?Sized>(
     p: [(i64, i64); 3],
     v: [&RasterVertex; 3],
     flat: Option<&Varyings>,
     params: &RasterParams,
-    sink: &mut dyn SpanSink,
+    sink: &mut S,
 ) {
     let Some(e) = Edges::new(p) else { return };
     if params.bounds.is_empty() {
