@@ -6,6 +6,7 @@ use softgl_jit::shade::slot;
 use softgl_jit::texture::{TextureSet, MAX_UNITS};
 use softgl_jit::{
     interp, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target,
+    SPAN_MAX,
 };
 
 /// Spans handed to the back end at once.
@@ -89,6 +90,7 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
         buffers: &'t mut StageBuffers,
     ) -> Result<Self, FragmentError> {
         interp::check_key(&key, target)?;
+        buffers.batch.resize_with(BATCH, || FragmentSpan::new(0, 0));
         let specialist = specialist.filter(|s| *s.key() == key);
         Ok(FragmentStage {
             view,
@@ -158,11 +160,11 @@ impl SpanSink for FragmentStage<'_, '_> {
         if span.live_mask() == 0 {
             return;
         }
-        if self.count == self.buffers.batch.len() {
-            self.buffers.batch.push(FragmentSpan::new(0, 0));
-        }
         // Only what the stages read is copied: with planes, the header.
-        let s = &mut self.buffers.batch[self.count];
+        // (`batch` holds `BATCH` spans from the stage's start on.)
+        let Some(s) = self.buffers.batch.get_mut(self.count) else {
+            return;
+        };
         (s.x, s.y, s.len, s.mask) = (span.x, span.y, span.len, span.mask);
         s.planes = self.planes_len.saturating_sub(1) as u32;
         if self.span_color {
@@ -174,6 +176,26 @@ impl SpanSink for FragmentStage<'_, '_> {
         self.count += 1;
         if self.count == BATCH {
             self.flush();
+        }
+    }
+
+    #[inline]
+    fn row(&mut self, y: u32, x0: u32, x1: u32) {
+        let planes = self.planes_len.saturating_sub(1) as u32;
+        for (x, len, mask) in crate::raster::row_spans(x0, x1) {
+            // `batch` holds `BATCH` spans from the stage's start on.
+            let Some(s) = self.buffers.batch.get_mut(self.count) else {
+                return;
+            };
+            (s.x, s.y, s.len, s.mask, s.planes) = (x, y, len, mask, planes);
+            // The row's colours and depths are zero (`SpanSink::row`).
+            if self.span_color | self.span_z {
+                (s.r, s.g, s.b, s.a, s.z) = ([0; SPAN_MAX], [0; SPAN_MAX], [0; SPAN_MAX], [0; SPAN_MAX], [0; SPAN_MAX]);
+            }
+            self.count += 1;
+            if self.count == BATCH {
+                self.flush();
+            }
         }
     }
 

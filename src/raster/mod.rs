@@ -60,11 +60,18 @@ pub trait SpanSink {
     fn planes_mut(&mut self) -> Option<&mut Planes> {
         None
     }
+    /// The fragments `x0..=x1` of row `y`, all covered, with nothing but
+    /// what the planes give (their colours and depths zero): as spans of at
+    /// most 64 fragments, which a sink may make without a whole
+    /// [`FragmentSpan`] (536 bytes zeroed a call, and copied) per row.
+    fn row(&mut self, y: u32, x0: u32, x1: u32) {
+        emit_row(self, &mut FragmentSpan::new(0, 0), y, x0, x1, None);
+    }
 }
 
 /// Runs `fill` on the sink's planes for the next primitive (on scratch
 /// planes when the sink takes none).
-pub(crate) fn with_planes<R>(sink: &mut dyn SpanSink, fill: impl FnOnce(&mut Planes) -> R) -> R {
+pub(crate) fn with_planes<S: SpanSink + ?Sized, R>(sink: &mut S, fill: impl FnOnce(&mut Planes) -> R) -> R {
     match sink.planes_mut() {
         Some(planes) => fill(planes),
         None => fill(&mut Planes::default()),
@@ -88,6 +95,25 @@ pub trait PrimSink {
 pub struct Rasterize<'s>(pub &'s mut dyn SpanSink);
 
 impl PrimSink for Rasterize<'_> {
+    fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
+        triangle(v, flat, params, self.0)
+    }
+
+    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
+        line(a, b, width, flat, params, self.0)
+    }
+
+    fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
+        point(v, size, params, self.0)
+    }
+}
+
+/// [`Rasterize`] into a sink of a known type: its triangles' rows reach
+/// [`SpanSink::row`] by a direct call the row loop inlines, not through a
+/// `dyn` (a flush's fragment stage).
+pub struct RasterizeInto<'s, S: SpanSink>(pub &'s mut S);
+
+impl<S: SpanSink> PrimSink for RasterizeInto<'_, S> {
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
         triangle(v, flat, params, self.0)
     }
@@ -230,31 +256,40 @@ pub(crate) fn ceil_div(a: i64, b: i64) -> i64 {
 /// Fills slot `i` of a span with the fragment at `x` (what the planes do not give).
 pub(crate) type FillSlot<'a> = dyn FnMut(u32, &mut FragmentSpan, usize) + 'a;
 
+/// The spans of at most [`softgl_jit::SPAN_MAX`] fragments that cover
+/// `x0..=x1` (inclusive), left to right: `(x, len, mask)`.
+#[inline]
+pub(crate) fn row_spans(x0: u32, x1: u32) -> impl Iterator<Item = (u32, u32, u64)> {
+    let mut x = x0;
+    std::iter::from_fn(move || {
+        (x <= x1).then(|| {
+            let n = (x1 - x + 1).min(softgl_jit::SPAN_MAX as u32);
+            let at = x;
+            x += n;
+            (at, n, if n == 64 { u64::MAX } else { (1u64 << n) - 1 })
+        })
+    })
+}
+
 /// Emits a row `y` from `x0` to `x1` (inclusive) in spans of at most 64 fragments,
 /// with `shade(x, slot)` filling each slot when given (the planes carry
 /// everything else).
-pub(crate) fn emit_row(
-    sink: &mut dyn SpanSink,
+pub(crate) fn emit_row<S: SpanSink + ?Sized>(
+    sink: &mut S,
     span: &mut FragmentSpan,
     y: u32,
     x0: u32,
     x1: u32,
     mut shade: Option<&mut FillSlot<'_>>,
 ) {
-    let mut x = x0;
-    while x <= x1 {
-        let n = (x1 - x + 1).min(softgl_jit::SPAN_MAX as u32);
-        span.x = x;
-        span.y = y;
-        span.len = n;
-        span.mask = if n == 64 { u64::MAX } else { (1u64 << n) - 1 };
+    for (x, n, mask) in row_spans(x0, x1) {
+        (span.x, span.y, span.len, span.mask) = (x, y, n, mask);
         if let Some(shade) = shade.as_mut() {
             for i in 0..n {
                 shade(x + i, span, i as usize);
             }
         }
         sink.span(span);
-        x += n;
     }
 }
 

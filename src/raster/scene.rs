@@ -12,7 +12,7 @@
 //! bounds cut to the tile: coverage decides each pixel on its own, so the
 //! pixels are those of the whole primitive at once.
 
-use super::{reach_box, triangle_box, PrimSink, RasterParams, RasterVertex, Rasterize};
+use super::{reach_box, triangle_box, PrimSink, RasterParams, RasterVertex, RasterizeInto};
 use crate::fragment::{FragmentStage, StageBuffers};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
 use crate::geometry::varying::{Varyings, MAX_VARYINGS};
@@ -290,7 +290,7 @@ impl Scene {
 
     /// Rasterizes `p`'s pixels inside `tile` into `sink`, rebuilding its
     /// vertices in `scratch`.
-    fn rasterize(&self, p: &Binned, tile: Rect, scratch: &mut Scratch, sink: &mut dyn PrimSink) {
+    fn rasterize(&self, p: &Binned, tile: Rect, scratch: &mut Scratch, sink: &mut impl PrimSink) {
         let params = RasterParams {
             bounds: p.params.bounds.intersect(tile),
             ..p.params
@@ -358,7 +358,7 @@ impl Scene {
                     .and_then(|mut stage| {
                         for &e in &bin[i..end] {
                             let p = &self.prims[e as usize];
-                            self.rasterize(p, tile, &mut scratch, &mut Rasterize(&mut stage));
+                            self.rasterize(p, tile, &mut scratch, &mut RasterizeInto(&mut stage));
                         }
                         stage.finish()
                     });

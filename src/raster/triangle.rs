@@ -1,7 +1,7 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 
 use super::edges::{Edge, Edges};
-use super::{ceil_div, emit_row, floor_div, snap, with_planes, FillSlot, RasterParams, RasterVertex, SpanSink, ONE};
+use super::{ceil_div, emit_row, floor_div, snap, with_planes, RasterParams, RasterVertex, SpanSink, ONE};
 use crate::framebuffer::Rect;
 use crate::geometry::varying::Varyings;
 use softgl_jit::interp::row_of;
@@ -59,7 +59,10 @@ impl Setup {
 
 /// Rasterizes a triangle, either winding. `flat` (the provoking vertex's
 /// varyings) replaces the interpolated colours.
-pub fn triangle(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams, sink: &mut dyn SpanSink) {
+///
+/// Generic over the sink, so that a flush's fragment stage takes each row
+/// with a direct, inlined call (`&mut dyn SpanSink` works as before).
+pub fn triangle<S: SpanSink + ?Sized>(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams, sink: &mut S) {
     // docs/llvmpipe-facts.md 2: the y snapped top-down, reflected into GL rows.
     cover(Edges::window_points(v, params.height), v, flat, params, sink);
 }
@@ -93,18 +96,17 @@ pub(super) fn triangle_y_up(
 }
 
 /// Covers the triangle of the snapped bottom-up positions `p` of `v`.
-pub(super) fn cover(
+pub(super) fn cover<S: SpanSink + ?Sized>(
     p: [(i64, i64); 3],
     v: [&RasterVertex; 3],
     flat: Option<&Varyings>,
     params: &RasterParams,
-    sink: &mut dyn SpanSink,
+    sink: &mut S,
 ) {
     let Some(e) = Edges::new(p) else { return };
     if params.bounds.is_empty() {
         return;
     }
-    let edges = e.edges;
     let b = params.bounds;
     let px0 = e.px.0.max(i64::from(b.x0));
     let px1 = e.px.1.min(i64::from(b.x1) - 1);
@@ -114,45 +116,218 @@ pub(super) fn cover(
         return;
     }
 
-    let per_fragment_z = with_planes(sink, |planes| setup_planes(v, flat, params, planes));
-    // A box wholly inside (a tile a large triangle covers) needs no edge
-    // per row: every row is the box's (the fill frame's tiles, mostly).
-    let inside = e.contains_box((px0, px1), (py0, py1));
-    let mut span = FragmentSpan::new(0, 0);
-    for py in py0..=py1 {
-        let sy = py * ONE;
-        let (mut lo, mut hi) = (px0, px1);
-        for &Edge { a: (ax, ay), dx, dy, k } in edges.iter().filter(|_| !inside) {
-            // E(px) = dx * (sy - ay) - dy * (px * ONE - ax) must be >= k.
-            let c = dx * (sy - ay) + dy * ax;
-            let m = dy * ONE;
-            if m == 0 {
-                if c < k {
-                    lo = 1;
-                    hi = 0;
-                }
-            } else if m > 0 {
-                hi = hi.min(floor_div(c - k, m));
+    // A box that no pixel of the triangle is in costs no set-up and no row
+    // (half the tiles of a full-screen triangle's box).
+    let Some(rows) = Rows::new(&e, (px0, px1), (py0, py1)) else {
+        return;
+    };
+    match with_planes(sink, |planes| setup_planes(v, flat, params, planes)) {
+        None => rows.each(|py, lo, hi| sink.row(py, lo, hi)),
+        // Only 32-bit depth fills the spans' slots (the planes give the rest).
+        Some((format, z)) => {
+            let mut span = FragmentSpan::new(0, 0);
+            rows.each(|py, lo, hi| {
+                let row = row_of(py, params.height);
+                let mut fill_z = |x: u32, s: &mut FragmentSpan, i: usize| {
+                    let z = z.dady.mul_add(row, z.dadx.mul_add(x as f32, z.a0));
+                    s.z[i] = crate::framebuffer::depth_to_unorm(f64::from(z), format);
+                };
+                emit_row(sink, &mut span, py, lo, hi, Some(&mut fill_z));
+            });
+        }
+    }
+}
+
+/// The pixels of a triangle within a box, row by row, with no division per
+/// row: each edge that is not horizontal bounds a row's pixels from one side
+/// and is walked exactly from row to row ([`Walk`]); a horizontal edge bounds
+/// the rows, found once. The row loop's three 64-bit divisions a row were
+/// most of `cover`'s time.
+struct Rows {
+    /// The box's columns, and the rows the horizontal edges keep of its rows.
+    px: (i64, i64),
+    py: (i64, i64),
+    /// Whether every pixel centre of the box is inside (a tile a large
+    /// triangle covers: no edge is walked).
+    inside: bool,
+    /// The edges that bound a row's pixels from the left and from the right
+    /// (a triangle has one or two of each; a missing one is the box's side).
+    left: [Walk; 2],
+    right: [Walk; 2],
+    /// How many of `left` and `right` are edges.
+    sides: (usize, usize),
+}
+
+impl Rows {
+    /// `None` when no pixel centre of the box is inside `e`'s triangle.
+    fn new(e: &Edges, px: (i64, i64), py: (i64, i64)) -> Option<Rows> {
+        // Below 2^29 units (2M pixels) every product and sum fits in i64
+        // (|dx|, |dy| < 2^30, |y·ONE − ay| < 2^30 + 2^29): the corners cost
+        // i64 arithmetic, not i128.
+        const SMALL: i64 = 1 << 29;
+        let small = e.edges.iter().all(|e| e.a.0.abs() < SMALL && e.a.1.abs() < SMALL)
+            && [px.0, px.1, py.0, py.1].iter().all(|&c| c.abs() < SMALL / ONE);
+        let mut inside = true;
+        for edge in &e.edges {
+            // An edge function is linear: its least and greatest values
+            // over the box are at corners. In i128, exact for any snapped
+            // coordinates (as `Edges::contains_box`).
+            let c = if small {
+                let at = |x: i64, y: i64| edge.dx * (y * ONE - edge.a.1) - edge.dy * (x * ONE - edge.a.0) - edge.k;
+                [at(px.0, py.0), at(px.1, py.0), at(px.0, py.1), at(px.1, py.1)].map(i128::from)
             } else {
-                lo = lo.max(ceil_div(k - c, -m));
+                let w = |a: i64| i128::from(a);
+                let at = |x: i64, y: i64| {
+                    w(edge.dx) * (w(y) * w(ONE) - w(edge.a.1)) - w(edge.dy) * (w(x) * w(ONE) - w(edge.a.0)) - w(edge.k)
+                };
+                [at(px.0, py.0), at(px.1, py.0), at(px.0, py.1), at(px.1, py.1)]
+            };
+            if c.iter().all(|&c| c < 0) {
+                return None;
+            }
+            inside &= c.iter().all(|&c| c >= 0);
+        }
+        let mut rows = Rows {
+            px,
+            py,
+            inside,
+            left: [Walk::fixed(-px.0); 2],
+            right: [Walk::fixed(px.1); 2],
+            sides: (2, 2),
+        };
+        if inside {
+            return Some(rows);
+        }
+        // Rows first: the walks start at the first row kept.
+        for &Edge { a: (_, ay), dx, dy, k } in &e.edges {
+            if dy != 0 {
+                continue;
+            }
+            // E = dx·(py·ONE − ay) − k at row py, >= 0 on the inside; it
+            // changes by s ≠ 0 (dx ≠ 0: the triangle is not degenerate) a row.
+            let n = dx * (py.0 * ONE - ay) - k;
+            let s = dx * ONE;
+            if s > 0 {
+                if n < 0 {
+                    rows.py.0 = rows.py.0.max(py.0 + ceil_div(-n, s));
+                }
+            } else if n < 0 {
+                return None;
+            } else {
+                rows.py.1 = rows.py.1.min(py.0 + floor_div(n, -s));
             }
         }
-        if lo > hi {
-            continue;
+        if rows.py.0 > rows.py.1 {
+            return None;
         }
-        let row = row_of(py as u32, params.height);
-        let mut fill_z = |x: u32, s: &mut FragmentSpan, i: usize| {
-            if let Some((format, z)) = per_fragment_z {
-                let z = z.dady.mul_add(row, z.dadx.mul_add(x as f32, z.a0));
-                s.z[i] = crate::framebuffer::depth_to_unorm(f64::from(z), format);
+        let (mut l, mut r) = (0, 0);
+        for edge in &e.edges {
+            if edge.dy < 0 {
+                rows.left[l.min(1)] = Walk::new(edge, rows.py.0);
+                l += 1;
+            } else if edge.dy > 0 {
+                rows.right[r.min(1)] = Walk::new(edge, rows.py.0);
+                r += 1;
             }
-        };
-        let shade: Option<&mut FillSlot<'_>> = if per_fragment_z.is_some() {
-            Some(&mut fill_z)
-        } else {
-            None
-        };
-        emit_row(sink, &mut span, py as u32, lo as u32, hi as u32, shade);
+        }
+        rows.sides = (l.min(2), r.min(2));
+        Some(rows)
+    }
+
+    /// Runs `row(py, first, last)` for each row of the box that has pixels
+    /// inside, bottom to top.
+    #[inline]
+    fn each(self, mut row: impl FnMut(u32, u32, u32)) {
+        let (px0, px1) = self.px;
+        if self.inside {
+            for py in self.py.0..=self.py.1 {
+                row(py as u32, px0 as u32, px1 as u32);
+            }
+            return;
+        }
+        // One loop per count of left and right edges: no bound is walked
+        // that is not an edge's (a third of the row steps).
+        let (left, right) = (&self.left[..self.sides.0], &self.right[..self.sides.1]);
+        match (left, right) {
+            (&[l], &[r]) => self.walk([l], [r], &mut row),
+            (&[l], &[r0, r1]) => self.walk([l], [r0, r1], &mut row),
+            (&[l0, l1], &[r]) => self.walk([l0, l1], [r], &mut row),
+            _ => self.walk(self.left, self.right, &mut row),
+        }
+    }
+
+    #[inline]
+    fn walk<const L: usize, const R: usize>(
+        &self,
+        mut left: [Walk; L],
+        mut right: [Walk; R],
+        row: &mut impl FnMut(u32, u32, u32),
+    ) {
+        let (px0, px1) = self.px;
+        for py in self.py.0..=self.py.1 {
+            let lo = left.iter_mut().fold(px0, |lo, w| lo.max(-w.step()));
+            let hi = right.iter_mut().fold(px1, |hi, w| hi.min(w.step()));
+            if lo <= hi {
+                row(py as u32, lo as u32, hi as u32);
+            }
+        }
+    }
+}
+
+/// One edge's bound on the pixels of a row, walked from row to row with no
+/// division: `E(px) = dx·(sy − ay) − dy·(px·ONE − ax) >= k` bounds `px` by
+/// `floor((c − k) / (dy·ONE))` from above when `dy > 0` (from below by the
+/// negated floor of `(c − k) / (−dy·ONE)` when `dy < 0`), where
+/// `c = dx·(sy − ay) + dy·ax` grows by `dx·ONE` a row: the quotient and its
+/// remainder step exactly.
+#[derive(Clone, Copy, Debug)]
+struct Walk {
+    /// The bound at this row: `floor(n / d)`, and `r = n − q·d` in `0..d`.
+    q: i64,
+    r: i64,
+    d: i64,
+    /// The step of `q` and `r` a row.
+    sq: i64,
+    sr: i64,
+}
+
+impl Walk {
+    /// A bound `q` on every row.
+    const fn fixed(q: i64) -> Walk {
+        Walk {
+            q,
+            r: 0,
+            d: 1,
+            sq: 0,
+            sr: 0,
+        }
+    }
+
+    /// The walk of an edge with `dy ≠ 0`, at row `py`.
+    fn new(&Edge { a: (ax, ay), dx, dy, k }: &Edge, py: i64) -> Walk {
+        let n = dx * (py * ONE - ay) + dy * ax - k;
+        let s = dx * ONE;
+        let d = (dy * ONE).abs();
+        Walk {
+            q: floor_div(n, d),
+            r: n.rem_euclid(d),
+            d,
+            sq: floor_div(s, d),
+            sr: s.rem_euclid(d),
+        }
+    }
+
+    /// This row's `q`; steps to the next row.
+    #[inline]
+    fn step(&mut self) -> i64 {
+        let q = self.q;
+        self.q += self.sq;
+        self.r += self.sr;
+        if self.r >= self.d {
+            self.r -= self.d;
+            self.q += 1;
+        }
+        q
     }
 }
 
