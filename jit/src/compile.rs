@@ -1458,4 +1458,28 @@ mod disasm {
             println!("==== {name}: {} bytes\n{text}", code.code_info().total_size);
         }
     }
+
+    /// The median time of building and compiling each key (without the
+    /// disassembly), for keeping compile time in view.
+    #[test]
+    #[ignore = "times compiles; run by hand"]
+    fn compile_time() {
+        let isa = host_isa().unwrap();
+        let mut fctx = FunctionBuilderContext::new();
+        for (name, key) in keys() {
+            let mut times: Vec<_> = (0..31)
+                .map(|_| {
+                    let t = std::time::Instant::now();
+                    let mut ctx = cranelift_codegen::Context::new();
+                    ctx.func.signature = signature(&isa);
+                    build_with(&key, &isa, &mut ctx.func, (&mut fctx, true));
+                    ctx.compile(&*isa, &mut cranelift_codegen::control::ControlPlane::default())
+                        .unwrap();
+                    t.elapsed()
+                })
+                .collect();
+            times.sort();
+            println!("{name}: {:?}", times[15]);
+        }
+    }
 }
