@@ -1,4 +1,14 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
+//!
+//! Within a box (a tile of a flush), `cover` first classifies the box
+//! against the edges at its corners: a box no pixel is in costs nothing more
+//! (no plane set-up, no row); a box wholly inside needs no edge per row.
+//! Otherwise each edge that is not horizontal is walked from row to row as
+//! an exact quotient and remainder (no 64-bit division per row), and the
+//! horizontal ones bound the rows once. Rows with nothing but planes go to
+//! the sink as headers ([`SpanSink::row`]). Measured with callgrind, one
+//! thread, `osmesa/bench/fill.c CASE 1` (two frames): ops 3248 M → 3079 M
+//! instructions, fill 883 M → 818 M, the images byte-identical.
 
 use super::edges::{Edge, Edges};
 use super::{ceil_div, emit_row, floor_div, snap, with_planes, RasterParams, RasterVertex, SpanSink, ONE};
@@ -62,7 +72,12 @@ impl Setup {
 ///
 /// Generic over the sink, so that a flush's fragment stage takes each row
 /// with a direct, inlined call (`&mut dyn SpanSink` works as before).
-pub fn triangle<S: SpanSink + ?Sized>(v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams, sink: &mut S) {
+pub fn triangle<S: SpanSink + ?Sized>(
+    v: [&RasterVertex; 3],
+    flat: Option<&Varyings>,
+    params: &RasterParams,
+    sink: &mut S,
+) {
     // docs/llvmpipe-facts.md 2: the y snapped top-down, reflected into GL rows.
     cover(Edges::window_points(v, params.height), v, flat, params, sink);
 }
