@@ -54,7 +54,13 @@ fn oracle(p: [(i64, i64); 3], tile: Rect, clip: Rect) -> TileMask {
     let v = vertex(0.0, 0.0, 1024);
     let mut m = TileMask::empty(tile.x0, tile.y0);
     let mut sink = |s: &FragmentSpan| add_span(&mut m, tile, s);
-    cover(p, [&v; 3], None, &params(intersect(tile, clip), 1024), &mut sink);
+    cover(
+        (p, None),
+        [&v; 3],
+        None,
+        &params(intersect(tile, clip), 1024),
+        &mut sink,
+    );
     m
 }
 
