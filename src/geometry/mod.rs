@@ -227,7 +227,7 @@ impl<'s> Geometry<'s> {
         // shading or with uniform colours (the rasterizer takes its colours
         // from them), borrowed from the batch.
         let flat_shaded = self.state.shade_model == ShadeModel::Flat || self.layout.uniform_colors;
-        let mut batch = VertexBatch::new(*stage, self, count, fetch);
+        let mut batch = VertexBatch::new(stage, self, count, fetch);
         let mut scratch = Scratch::default();
         assemble(mode, count, quads, |prim| match prim {
             Primitive::Point(i) => {
@@ -256,6 +256,13 @@ impl<'s> Geometry<'s> {
                 if !unfilled && a.inside && b.inside && c.inside {
                     self.triangle([&a.win, &b.win, &c.win], flat, sink);
                 } else {
+                    // Trivially rejected (what `polygon` checks first) before
+                    // copying the vertices: a culled glBegin/glEnd quad.
+                    let codes = a.codes.0 & b.codes.0 & c.codes.0;
+                    let user = a.codes.1 & b.codes.1 & c.codes.1;
+                    if !(a.finite && b.finite && c.finite) || codes != 0 || user != 0 {
+                        return;
+                    }
                     // A vertex's edge flag ANDs with the assembly's boundary flag
                     // for every triangle mode, as llvmpipe's unfilled stage does
                     // (docs/llvmpipe-facts.md, "Edge flags").
@@ -267,23 +274,22 @@ impl<'s> Geometry<'s> {
         });
     }
 
-    /// Classifies a transformed vertex at `pos` whose varyings `win.v` holds:
-    /// whether it is finite, inside the view volume and the user planes, and
-    /// mapped to finite window coordinates, which it then writes into `win`
-    /// (as [`Self::project`] does). A primitive of such vertices needs no
-    /// clipping ([`batch::BatchVertex::inside`]).
+    /// Classifies a transformed vertex (its position and varyings set):
+    /// its codes, whether it is finite, and whether it is inside the view
+    /// volume and the user planes and mapped to finite window coordinates,
+    /// which are then written into `v.win` (as `project_as(v, true)` maps them).
     #[inline]
-    fn classify(&self, pos: glam::DVec4, win: &mut RasterVertex) -> bool {
-        let finite = pos.is_finite() && win.v[..self.finite_len].iter().all(|c| c.is_finite());
-        if !finite || outcode(pos, 1.0) != 0 || self.user.code(pos) != 0 {
-            return false;
-        }
-        match self.map(pos, true) {
-            Some((x, y, y_down, z, inv_w)) => {
-                (win.x, win.y, win.y_down, win.z, win.inv_w) = (x, y, y_down, z, inv_w);
-                true
+    fn classify(&self, v: &mut batch::BatchVertex) {
+        let pos = v.pos.as_dvec4();
+        v.finite = pos.is_finite() && v.win.v[..self.finite_len].iter().all(|c| c.is_finite());
+        v.codes = (outcode(pos, 1.0), self.user.code(pos));
+        v.inside = false;
+        if v.finite && v.codes == (0, 0) {
+            if let Some((x, y, y_down, z, inv_w)) = self.map(pos, true) {
+                let w = &mut v.win;
+                (w.x, w.y, w.y_down, w.z, w.inv_w) = (x, y, y_down, z, inv_w);
+                v.inside = true;
             }
-            None => false,
         }
     }
 
@@ -407,6 +413,7 @@ impl<'s> Geometry<'s> {
     /// A triangle of vertices of the draw that needs no clipping, drawn
     /// filled: what [`Self::polygon`] computes for it, without copying a
     /// vertex (unless a back face selects its back colours).
+    #[inline(always)]
     fn triangle(&self, v: [&RasterVertex; 3], flat: Option<&Varyings>, sink: &mut dyn PrimSink) {
         let area = signed_area(3, |i| (v[i].x, v[i].y));
         let front = (area > 0.0) == (self.state.front_face == FrontFace::Ccw);
