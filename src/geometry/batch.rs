@@ -8,7 +8,7 @@
 //! coordinate taken from the eye-space depth or from `glFogCoord`, the
 //! texture coordinates generated and transformed ([`crate::texture::texgen`]).
 
-use super::clip::ClipVertex;
+use super::clip::{outcode, ClipVertex};
 use super::lighting::{LightInput, LightSetup};
 use super::varying::{VaryingLayout, Varyings, MAX_VARYINGS};
 use super::Geometry;
@@ -197,7 +197,7 @@ pub struct BatchVertex {
     /// The varyings (`win.v`) and, when `inside`, the window position as
     /// [`Geometry::project_as`](super::Geometry) maps a vertex of the draw.
     pub win: RasterVertex,
-    /// Outcode at the view volume ([`outcode`](super::clip::outcode) at guard scale 1) and the
+    /// Outcode at the view volume ([`outcode`] at guard scale 1) and the
     /// enabled user planes the vertex is outside of.
     pub codes: (u8, u8),
     /// Whether the position and the slots `finite_len` covers are finite.
@@ -336,6 +336,23 @@ impl<'a> VertexBatch<'a> {
         self.window = window;
         self.base = base;
         self.len = n;
+    }
+
+    /// Whether a vertex of the draw is outside the view volume or an enabled
+    /// user plane. A draw that fits in one window is transformed for it
+    /// (the work its primitives then reuse); a longer one is scanned by
+    /// position alone.
+    pub fn any_outside(&mut self) -> bool {
+        if self.count <= BATCH {
+            if self.count > 0 {
+                self.load(self.count.min(4) - 1);
+            }
+            return self.window[..self.count].iter().any(|v| v.codes != (0, 0));
+        }
+        (0..self.count).any(|i| {
+            let p = (self.stage.mvp * (self.fetch)(i).pos).as_dvec4();
+            outcode(p, 1.0) != 0 || self.geometry.user.code(p) != 0
+        })
     }
 
     /// Vertex `i`, loaded by [`Self::load`] for the current primitive.

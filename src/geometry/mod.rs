@@ -1,6 +1,20 @@
 //! The geometry pipeline of one draw: transform, primitive assembly, clip
 //! codes with trivial accept/reject, homogeneous clipping, perspective divide,
 //! viewport transform, facing and culling, polygon mode, then rasterization.
+//!
+//! Two paths for a primitive. The batch ([`batch::VertexBatch`]) classifies
+//! and projects each vertex once, as it transforms it; a primitive whose
+//! vertices are all finite and inside the view volume and the user planes
+//! (nothing to clip at any guard level) is culled from those window
+//! positions and handed to the sink by reference, with no vertex copied
+//! (`Geometry::triangle`). Any other goes through clipping
+//! (`Geometry::polygon`), which copies its vertices into scratch buffers
+//! kept for the whole draw (nothing allocated per primitive). Both compute
+//! the same bits: the fast path is the general one with its no-op steps left
+//! out. Measured on the lit16 frame (1.6 M triangles, callgrind): 5843
+//! instructions a triangle with two vectors and six vertex copies per
+//! triangle, 3379 with the fast path (the front end's share, all but the
+//! sink's binning and rasterizing, from about 3100 to about 640).
 
 pub mod assemble;
 pub mod batch;
@@ -217,7 +231,8 @@ impl<'s> Geometry<'s> {
         if self.params.bounds.is_empty() {
             return;
         }
-        let quads = if mode == PrimitiveMode::Quads && self.quads_split_v1_v3(stage, source, count, fetch) {
+        let mut batch = VertexBatch::new(stage, self, count, fetch);
+        let quads = if mode == PrimitiveMode::Quads && self.quads_split_v1_v3(&mut batch, source) {
             QuadSplit::Pipeline
         } else {
             QuadSplit::Direct
@@ -227,7 +242,6 @@ impl<'s> Geometry<'s> {
         // shading or with uniform colours (the rasterizer takes its colours
         // from them), borrowed from the batch.
         let flat_shaded = self.state.shade_model == ShadeModel::Flat || self.layout.uniform_colors;
-        let mut batch = VertexBatch::new(stage, self, count, fetch);
         let mut scratch = Scratch::default();
         assemble(mode, count, quads, |prim| match prim {
             Primitive::Point(i) => {
@@ -298,13 +312,7 @@ impl<'s> Geometry<'s> {
     /// flat shading of a per-vertex or lit colour (its `draw_arrays` with constant
     /// interpolation), and draws through its draw pipeline: a face drawn as
     /// lines or points, or a vertex outside the view volume.
-    fn quads_split_v1_v3(
-        &self,
-        stage: &VertexStage,
-        source: DrawSource,
-        count: usize,
-        fetch: &dyn Fn(usize) -> InVertex,
-    ) -> bool {
+    fn quads_split_v1_v3(&self, batch: &mut VertexBatch, source: DrawSource) -> bool {
         let direct_v1_v3 = match source {
             DrawSource::Elements => true,
             DrawSource::Arrays { per_vertex_color } => {
@@ -313,8 +321,7 @@ impl<'s> Geometry<'s> {
                 (per_vertex_color || self.state.lighting.enabled) && self.state.shade_model == ShadeModel::Flat
             }
         };
-        let clips = |p: glam::DVec4| outcode(p, 1.0) != 0 || self.user.code(p) != 0;
-        direct_v1_v3 || self.unfilled() || (0..count).any(|i| clips((stage.mvp * fetch(i).pos).as_dvec4()))
+        direct_v1_v3 || self.unfilled() || batch.any_outside()
     }
 
     /// Whether a face is drawn as lines or points.
