@@ -8,13 +8,13 @@
 //! coordinate taken from the eye-space depth or from `glFogCoord`, the
 //! texture coordinates generated and transformed ([`crate::texture::texgen`]).
 
-use super::clip::ClipVertex;
-use super::Geometry;
+use super::clip::{outcode, ClipVertex};
 use super::lighting::{LightInput, LightSetup};
 use super::varying::{VaryingLayout, Varyings, MAX_VARYINGS};
+use super::Geometry;
 use super::InVertex;
-use crate::texture::texgen::TexCoordStage;
 use crate::raster::RasterVertex;
+use crate::texture::texgen::TexCoordStage;
 use glam::{DVec4, Mat4, Vec4};
 
 /// Vertices transformed at once.
@@ -99,12 +99,12 @@ impl VertexStage<'_> {
     /// every vertex of a draw (the others are left as they are), and
     /// returning the clip-space position.
     pub fn transform_into(&self, i: usize, v: &InVertex, out: &mut Varyings) -> DVec4 {
-        self.transform_slots(&Slots::of(&self.layout), i, v, out)
+        self.transform_slots(&Slots::of(&self.layout), i, v, out).as_dvec4()
     }
 
     /// [`Self::transform_into`] with the layout's offsets found beforehand.
     #[inline]
-    fn transform_slots(&self, slots: &Slots, i: usize, v: &InVertex, out: &mut Varyings) -> DVec4 {
+    fn transform_slots(&self, slots: &Slots, i: usize, v: &InVertex, out: &mut Varyings) -> Vec4 {
         if let Some(light) = &self.lighting {
             let light = self.vertex_materials.get(usize::from(v.material)).unwrap_or(light);
             let lit = light.light_vertex(&LightInput {
@@ -142,7 +142,7 @@ impl VertexStage<'_> {
         if let Some((t, fetch)) = self.tex_coords {
             t.fill(v, |u| (fetch.0)(i, u), out);
         }
-        (self.mvp * v.pos).as_dvec4()
+        self.mvp * v.pos
     }
 }
 
@@ -190,14 +190,21 @@ pub fn eye_dot(m: Vec4, p: Vec4) -> f32 {
 /// vertices as they are.
 #[derive(Clone, Copy, Debug)]
 pub struct BatchVertex {
-    /// Clip coordinates.
-    pub pos: DVec4,
+    /// Clip coordinates, as the f32 transform makes them (clipping widens
+    /// them to f64: kept narrow, four vertices fit in 1 KB, which a small
+    /// draw's allocation serves from malloc's per-thread cache).
+    pub pos: Vec4,
     /// The varyings (`win.v`) and, when `inside`, the window position as
     /// [`Geometry::project_as`](super::Geometry) maps a vertex of the draw.
     pub win: RasterVertex,
-    /// Finite (position and the slots `finite_len` covers), inside the view
-    /// volume (outcode 0) and every enabled user plane, and projected to finite
-    /// window coordinates: a primitive of such vertices needs no clipping.
+    /// Outcode at the view volume ([`outcode`] at guard scale 1) and the
+    /// enabled user planes the vertex is outside of.
+    pub codes: (u8, u8),
+    /// Whether the position and the slots `finite_len` covers are finite.
+    pub finite: bool,
+    /// Finite, inside the view volume and every enabled user plane (both
+    /// codes 0), and projected to finite window coordinates: a primitive of
+    /// such vertices needs no clipping.
     pub inside: bool,
     /// `glEdgeFlag` of the vertex.
     pub edge: bool,
@@ -207,7 +214,7 @@ impl BatchVertex {
     /// The vertex as clipping takes it (a copy of its varyings).
     pub fn clip(&self) -> ClipVertex {
         ClipVertex {
-            pos: self.pos,
+            pos: self.pos.as_dvec4(),
             v: self.win.v,
         }
     }
@@ -215,7 +222,7 @@ impl BatchVertex {
 
 /// A vertex before its first transform.
 const EMPTY: BatchVertex = BatchVertex {
-    pos: DVec4::ZERO,
+    pos: Vec4::ZERO,
     win: RasterVertex {
         x: 0.0,
         y: 0.0,
@@ -224,6 +231,8 @@ const EMPTY: BatchVertex = BatchVertex {
         inv_w: 0.0,
         v: [0.0; MAX_VARYINGS],
     },
+    codes: (0, 0),
+    finite: false,
     inside: false,
     edge: true,
 };
@@ -236,25 +245,26 @@ const EMPTY: BatchVertex = BatchVertex {
 /// the lit16 frame went to that memmove); primitives borrow them through
 /// [`VertexBatch::vertex`] after [`VertexBatch::load`].
 pub struct VertexBatch<'a> {
-    stage: VertexStage<'a>,
+    stage: &'a VertexStage<'a>,
     slots: Slots,
     geometry: &'a Geometry<'a>,
     fetch: &'a dyn Fn(usize) -> InVertex,
     count: usize,
     /// Index of `window[0]`.
     base: usize,
-    /// Vertices `base..base + len`; entries past `len` are stale.
+    /// Vertices `base..base + len`, then (once the window has moved past
+    /// it) vertex 0 at `window[BATCH]`; other entries are stale.
     window: Vec<BatchVertex>,
     len: usize,
-    /// Vertex 0, kept once the window has moved past it.
-    first: BatchVertex,
+    /// Where vertex 0 is in `window`: 0, then `BATCH`.
+    zero: usize,
 }
 
 impl<'a> VertexBatch<'a> {
     /// A batch over `count` vertices, `fetch(i)` giving vertex `i`, which
     /// `geometry` classifies and projects.
     pub fn new(
-        stage: VertexStage<'a>,
+        stage: &'a VertexStage<'a>,
         geometry: &'a Geometry<'a>,
         count: usize,
         fetch: &'a dyn Fn(usize) -> InVertex,
@@ -268,7 +278,7 @@ impl<'a> VertexBatch<'a> {
             base: 0,
             window: Vec::new(),
             len: 0,
-            first: EMPTY,
+            zero: 0,
         }
     }
 
@@ -279,7 +289,7 @@ impl<'a> VertexBatch<'a> {
         let v = (self.fetch)(i);
         out.pos = self.stage.transform_slots(&self.slots, i, &v, &mut out.win.v);
         out.edge = v.edge;
-        out.inside = self.geometry.classify(out.pos, &mut out.win);
+        self.geometry.classify(out);
     }
 
     /// Makes the vertices of a primitive whose newest (largest) index is
@@ -299,7 +309,10 @@ impl<'a> VertexBatch<'a> {
     fn refill(&mut self, newest: usize) {
         let base = newest.saturating_sub(3);
         if self.base == 0 && base != 0 && self.len > 0 {
-            self.first = self.window[0];
+            // Fans, polygons and line loops refer back to vertex 0.
+            self.window.resize(BATCH + 1, EMPTY);
+            self.window[BATCH] = self.window[0];
+            self.zero = BATCH;
         }
         let end = (base + BATCH).min(self.count);
         let n = end - base;
@@ -325,13 +338,26 @@ impl<'a> VertexBatch<'a> {
         self.len = n;
     }
 
+    /// Whether a vertex of the draw is outside the view volume or an enabled
+    /// user plane. A draw that fits in one window is transformed for it
+    /// (the work its primitives then reuse); a longer one is scanned by
+    /// position alone.
+    pub fn any_outside(&mut self) -> bool {
+        if self.count <= BATCH {
+            if self.count > 0 {
+                self.load(self.count.min(4) - 1);
+            }
+            return self.window[..self.count].iter().any(|v| v.codes != (0, 0));
+        }
+        (0..self.count).any(|i| {
+            let p = (self.stage.mvp * (self.fetch)(i).pos).as_dvec4();
+            outcode(p, 1.0) != 0 || self.geometry.user.code(p) != 0
+        })
+    }
+
     /// Vertex `i`, loaded by [`Self::load`] for the current primitive.
     #[inline]
     pub fn vertex(&self, i: usize) -> &BatchVertex {
-        if i == 0 && self.base != 0 {
-            &self.first
-        } else {
-            &self.window[i - self.base]
-        }
+        &self.window[if i == 0 { self.zero } else { i - self.base }]
     }
 }
