@@ -91,29 +91,12 @@ pub trait PrimSink {
     fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams);
 }
 
-/// Rasterizes each primitive as it comes, into a span sink.
-pub struct Rasterize<'s>(pub &'s mut dyn SpanSink);
+/// Rasterizes what it is handed at once into a sink of a known type: its
+/// triangles' rows reach [`SpanSink::row`] by a direct call the row loop
+/// inlines, not through a `dyn` (a flush's fragment stage).
+pub struct Rasterize<'s, S: SpanSink>(pub &'s mut S);
 
-impl PrimSink for Rasterize<'_> {
-    fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
-        triangle(v, flat, params, self.0)
-    }
-
-    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
-        line(a, b, width, flat, params, self.0)
-    }
-
-    fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
-        point(v, size, params, self.0)
-    }
-}
-
-/// [`Rasterize`] into a sink of a known type: its triangles' rows reach
-/// [`SpanSink::row`] by a direct call the row loop inlines, not through a
-/// `dyn` (a flush's fragment stage).
-pub struct RasterizeInto<'s, S: SpanSink>(pub &'s mut S);
-
-impl<S: SpanSink> PrimSink for RasterizeInto<'_, S> {
+impl<S: SpanSink> PrimSink for Rasterize<'_, S> {
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
         triangle(v, flat, params, self.0)
     }

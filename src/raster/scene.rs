@@ -12,7 +12,7 @@
 //! bounds cut to the tile: coverage decides each pixel on its own, so the
 //! pixels are those of the whole primitive at once.
 
-use super::{reach_box, triangle_box, PrimSink, RasterParams, RasterVertex, RasterizeInto};
+use super::{reach_box, triangle_box, PrimSink, RasterParams, RasterVertex, Rasterize};
 use crate::fragment::{FragmentStage, StageBuffers};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
 use crate::geometry::varying::{Varyings, MAX_VARYINGS};
@@ -358,7 +358,7 @@ impl Scene {
                     .and_then(|mut stage| {
                         for &e in &bin[i..end] {
                             let p = &self.prims[e as usize];
-                            self.rasterize(p, tile, &mut scratch, &mut RasterizeInto(&mut stage));
+                            self.rasterize(p, tile, &mut scratch, &mut Rasterize(&mut stage));
                         }
                         stage.finish()
                     });
