@@ -14,9 +14,8 @@ use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughpu
 use softgl_jit::shade::slot;
 use softgl_jit::TextureSet;
 use softgl_jit::{
-    BlendFactor, BlendKey, ColorFormat, CompareFunc, DepthFormat, DepthKey, DepthTarget, FogMode, FogUniforms,
-    FragmentKey, FragmentSpan, FragmentUniforms, LogicOp, Planes, ShadeKey, Specialist, StencilKey, StencilOp, Target,
-    SPAN_MAX,
+    BlendKey, ColorFormat, CompareFunc, DepthFormat, DepthKey, DepthTarget, FogMode, FogUniforms, FragmentKey,
+    FragmentSpan, FragmentUniforms, LogicOp, Planes, ShadeKey, Specialist, StencilKey, StencilOp, Target, SPAN_MAX,
 };
 
 mod common;
@@ -171,13 +170,7 @@ fn scenes() -> Vec<Scene> {
         func: CompareFunc::Less,
         write: true,
     };
-    let over = BlendKey {
-        src_rgb: BlendFactor::SrcAlpha,
-        dst_rgb: BlendFactor::OneMinusSrcAlpha,
-        src_alpha: BlendFactor::SrcAlpha,
-        dst_alpha: BlendFactor::OneMinusSrcAlpha,
-        ..BlendKey::DEFAULT
-    };
+    let over = BlendKey::OVER;
     let rgba8 = FragmentKey::new(ColorFormat::Rgba8, None, false);
     // One perspective triangle's planes over the target: colours and the fog
     // coordinate over w, 1/w from 1 to 0.5 across, depth across the D24 range.

@@ -3,8 +3,7 @@
 #![allow(dead_code)]
 
 use softgl_jit::{
-    BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, FragmentKey, StencilKey,
-    StencilOp,
+    BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, FragmentKey, StencilKey, StencilOp,
 };
 
 /// Scissor + alpha (GREATER) + stencil (EQUAL, INCR) + depth (LESS) + blend
@@ -23,13 +22,7 @@ pub fn all_ops_key() -> FragmentKey {
             func: CompareFunc::Less,
             write: true,
         }),
-        blend: Some(BlendKey {
-            src_rgb: BlendFactor::SrcAlpha,
-            dst_rgb: BlendFactor::OneMinusSrcAlpha,
-            src_alpha: BlendFactor::SrcAlpha,
-            dst_alpha: BlendFactor::OneMinusSrcAlpha,
-            ..BlendKey::DEFAULT
-        }),
+        blend: Some(BlendKey::OVER),
         color_mask: ColorMask {
             a: false,
             ..ColorMask::ALL

@@ -1213,23 +1213,7 @@ impl<'a> Gen<'a> {
                     let fd = self.pair_factor(fd, &mut cache);
                     let ws = self.mul_unorm16(sp[p], fs);
                     let wd = self.mul_unorm16(dp[p], fd);
-                    match eq {
-                        BlendEquation::Add => {
-                            let v = self.b.ins().iadd(ws, wd);
-                            let ff = self.splat16(255);
-                            self.b.ins().umin(v, ff)
-                        }
-                        BlendEquation::Subtract => {
-                            let v = self.b.ins().isub(ws, wd);
-                            let zero = self.splat16(0);
-                            self.b.ins().smax(v, zero)
-                        }
-                        _ => {
-                            let v = self.b.ins().isub(wd, ws);
-                            let zero = self.splat16(0);
-                            self.b.ins().smax(v, zero)
-                        }
-                    }
+                    self.blend_equation(eq, ws, wd, true)
                 }
             };
         }
@@ -1248,6 +1232,28 @@ impl<'a> Gen<'a> {
                 self.b.ins().uwiden_high(out[1]),
             ];
         }
+    }
+
+    /// GL's blend equations with factors (add, subtract, reverse subtract;
+    /// min and max take none) on the weighted source `ws` and
+    /// destination `wd` unorm lanes (16-bit lanes when `lanes16`, else
+    /// 32-bit), saturated to `0..=255`: one definition for both widths.
+    fn blend_equation(&mut self, eq: BlendEquation, ws: Value, wd: Value, lanes16: bool) -> Value {
+        let splat = |g: &mut Self, v: u16| if lanes16 { g.splat16(v) } else { g.splat(i64::from(v)) };
+        if eq == BlendEquation::Add {
+            let v = self.b.ins().iadd(ws, wd);
+            let ff = splat(self, 255);
+            return self.b.ins().umin(v, ff);
+        }
+        // Subtract, or (the callers' only other case) ReverseSubtract.
+        let (a, b) = if eq == BlendEquation::Subtract {
+            (ws, wd)
+        } else {
+            (wd, ws)
+        };
+        let v = self.b.ins().isub(a, b);
+        let zero = splat(self, 0);
+        self.b.ins().smax(v, zero)
     }
 
     fn blend(&mut self, key: &BlendKey, s: [Value; 4], d: [Value; 4], u: &Uniforms) -> [Value; 4] {
@@ -1273,23 +1279,7 @@ impl<'a> Gen<'a> {
                     let fd = self.factor(df, c, s, d, k);
                     let ws = self.mul_unorm(s[c], fs);
                     let wd = self.mul_unorm(d[c], fd);
-                    match eq {
-                        BlendEquation::Add => {
-                            let v = self.b.ins().iadd(ws, wd);
-                            let ff = self.splat(255);
-                            self.b.ins().umin(v, ff)
-                        }
-                        BlendEquation::Subtract => {
-                            let v = self.b.ins().isub(ws, wd);
-                            let zero = self.splat(0);
-                            self.b.ins().smax(v, zero)
-                        }
-                        _ => {
-                            let v = self.b.ins().isub(wd, ws);
-                            let zero = self.splat(0);
-                            self.b.ins().smax(v, zero)
-                        }
-                    }
+                    self.blend_equation(eq, ws, wd, false)
                 }
             };
         }
@@ -1424,13 +1414,7 @@ mod disasm {
                 zfail: StencilOp::Incr,
                 zpass: StencilOp::Incr,
             }),
-            blend: Some(BlendKey {
-                src_rgb: BlendFactor::SrcAlpha,
-                dst_rgb: BlendFactor::OneMinusSrcAlpha,
-                src_alpha: BlendFactor::SrcAlpha,
-                dst_alpha: BlendFactor::OneMinusSrcAlpha,
-                ..BlendKey::DEFAULT
-            }),
+            blend: Some(BlendKey::OVER),
             color_mask: ColorMask {
                 r: true,
                 g: true,

@@ -368,6 +368,15 @@ impl BlendKey {
         eq_rgb: BlendEquation::Add,
         eq_alpha: BlendEquation::Add,
     };
+
+    /// Transparency: `SRC_ALPHA, ONE_MINUS_SRC_ALPHA, FUNC_ADD` for both.
+    pub const OVER: BlendKey = BlendKey {
+        src_rgb: BlendFactor::SrcAlpha,
+        dst_rgb: BlendFactor::OneMinusSrcAlpha,
+        src_alpha: BlendFactor::SrcAlpha,
+        dst_alpha: BlendFactor::OneMinusSrcAlpha,
+        ..BlendKey::DEFAULT
+    };
 }
 
 /// The code-shaping part of per-fragment state. Build it with
