@@ -1041,17 +1041,21 @@ impl<'a> Gen<'a> {
         }
     }
 
-    /// `x * f / 255` rounded as llvmpipe: `(t + (t >> 8) + 128) >> 8`, as [`pixel::mul_unorm8`].
-    fn mul_unorm(&mut self, x: Value, f: Factor) -> Value {
+    /// `x * f / 255` rounded as llvmpipe: `(t + (t >> 8) + 128) >> 8`, as
+    /// [`pixel::mul_unorm8`], in 32-bit lanes or, with `lanes16`, in `u16`
+    /// lanes: `x · f ≤ 65025` and `t + (t >> 8) + 128 ≤ 65407` fit, so the
+    /// bits are the same.
+    fn mul_unorm(&mut self, x: Value, f: Factor, lanes16: bool) -> Value {
+        let splat = |g: &mut Self, v: u16| if lanes16 { g.splat16(v) } else { g.splat(i64::from(v)) };
         match f {
-            Factor::Zero => self.splat(0),
+            Factor::Zero => splat(self, 0),
             // mul_unorm8(x, 255) == x for every byte x.
             Factor::One => x,
             Factor::Value(f) => {
                 let t = self.b.ins().imul(x, f);
                 let hi = self.b.ins().ushr_imm_u(t, 8);
                 let t = self.b.ins().iadd(t, hi);
-                let half = self.splat(128);
+                let half = splat(self, 128);
                 let t = self.b.ins().iadd(t, half);
                 self.b.ins().ushr_imm_u(t, 8)
             }
@@ -1139,23 +1143,6 @@ impl<'a> Gen<'a> {
         }
     }
 
-    /// [`Self::mul_unorm`] in `u16` lanes: `x · f ≤ 65025` and
-    /// `t + (t >> 8) + 128 ≤ 65407` fit, so the bits are the same.
-    fn mul_unorm16(&mut self, x: Value, f: Factor) -> Value {
-        match f {
-            Factor::Zero => self.splat16(0),
-            Factor::One => x,
-            Factor::Value(f) => {
-                let t = self.b.ins().imul(x, f);
-                let hi = self.b.ins().ushr_imm_u(t, 8);
-                let t = self.b.ins().iadd(t, hi);
-                let half = self.splat16(128);
-                let t = self.b.ins().iadd(t, half);
-                self.b.ins().ushr_imm_u(t, 8)
-            }
-        }
-    }
-
     /// [`Self::blend`] (same equation for colour and alpha) with two
     /// channels a vector: red and green, blue and alpha in the `u16` lanes
     /// of one vector each, which halves the arithmetic (`pmullw` where
@@ -1211,8 +1198,8 @@ impl<'a> Gen<'a> {
                     let fs = self.pair_factor(fs, &mut cache);
                     let fd = (self.factor(df0, c0, s, d, k), self.factor(df1, c1, s, d, k));
                     let fd = self.pair_factor(fd, &mut cache);
-                    let ws = self.mul_unorm16(sp[p], fs);
-                    let wd = self.mul_unorm16(dp[p], fd);
+                    let ws = self.mul_unorm(sp[p], fs, true);
+                    let wd = self.mul_unorm(dp[p], fd, true);
                     self.blend_equation(eq, ws, wd, true)
                 }
             };
@@ -1277,8 +1264,8 @@ impl<'a> Gen<'a> {
                 BlendEquation::Add | BlendEquation::Subtract | BlendEquation::ReverseSubtract => {
                     let fs = self.factor(sf, c, s, d, k);
                     let fd = self.factor(df, c, s, d, k);
-                    let ws = self.mul_unorm(s[c], fs);
-                    let wd = self.mul_unorm(d[c], fd);
+                    let ws = self.mul_unorm(s[c], fs, false);
+                    let wd = self.mul_unorm(d[c], fd, false);
                     self.blend_equation(eq, ws, wd, false)
                 }
             };
