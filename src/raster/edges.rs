@@ -4,7 +4,7 @@
 //! block rasterizer ([`super::block`]) both start from this one value, so they
 //! rasterize the very same edges.
 
-use super::{ceil_div, floor_div, snap, RasterVertex, ONE};
+use super::{snap, RasterVertex, ONE};
 
 /// One edge of a counter-clockwise triangle, from `a` to `a + (dx, dy)`
 /// (fixed point, y up). A pixel center `s` (fixed point) is on the inside when
@@ -32,38 +32,14 @@ pub struct Edges {
 impl Edges {
     /// The edges of the triangle of snapped bottom-up positions `p`, either
     /// winding; `None` when its area is zero (it covers nothing).
-    pub fn new(mut p: [(i64, i64); 3]) -> Option<Edges> {
-        // In i128: snap() bounds coordinates to ±2^40, so products reach 2^82.
-        let w = |a: i64| i128::from(a);
-        let area = w(p[1].0 - p[0].0) * w(p[2].1 - p[0].1) - w(p[2].0 - p[0].0) * w(p[1].1 - p[0].1);
-        if area == 0 {
-            return None;
-        }
-        if area < 0 {
-            p.swap(1, 2);
-        }
-        // Edge i runs from p[i] to p[i+1]; with counter-clockwise order the inside
-        // is on its left. A center exactly on an edge is inside when the edge is a
-        // left edge (going down) or a bottom edge (horizontal, going right).
-        let edges = [0, 1, 2].map(|i| {
-            let (a, b) = (p[i], p[(i + 1) % 3]);
-            let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-            let owns = dy < 0 || (dy == 0 && dx > 0);
-            Edge {
-                a,
-                dx,
-                dy,
-                k: if owns { 0 } else { 1 },
-            }
-        });
-        let xs = p.map(|q| q.0);
-        let ys = p.map(|q| q.1);
-        let (min_x, max_x) = (xs.into_iter().min().unwrap_or(0), xs.into_iter().max().unwrap_or(0));
-        let (min_y, max_y) = (ys.into_iter().min().unwrap_or(0), ys.into_iter().max().unwrap_or(0));
+    pub fn new(p: [(i64, i64); 3]) -> Option<Edges> {
+        let p = ccw(p)?;
+        let (min_x, max_x) = (p[0].0.min(p[1].0).min(p[2].0), p[0].0.max(p[1].0).max(p[2].0));
+        let (min_y, max_y) = (p[0].1.min(p[1].1).min(p[2].1), p[0].1.max(p[1].1).max(p[2].1));
         Some(Edges {
-            edges,
-            px: (ceil_div(min_x, ONE), floor_div(max_x, ONE)),
-            py: (ceil_div(min_y, ONE), floor_div(max_y, ONE)),
+            edges: edges_of(p),
+            px: (ceil_one(min_x), floor_one(max_x)),
+            py: (ceil_one(min_y), floor_one(max_y)),
         })
     }
 
@@ -92,6 +68,71 @@ impl Edges {
     /// across one); the snapped value is reflected exactly into GL rows.
     pub fn window_points(v: [&RasterVertex; 3], height: u32) -> [(i64, i64); 3] {
         let top = (i64::from(height) - 1) * ONE;
-        v.map(|v| (snap(v.x), top - snap(v.y_down)))
+        let at = |v: &RasterVertex| (snap(v.x), top - snap(v.y_down));
+        [at(v[0]), at(v[1]), at(v[2])]
     }
+}
+
+/// Below this (2^29 units, 2M pixels) a snapped coordinate is small: the
+/// differences of two are below 2^30 and an area or an edge function at a
+/// pixel centre within ±2^21 pixels fits in i64 (no i128).
+pub(crate) const SMALL: i64 = 1 << 29;
+
+/// Whether every coordinate of `p` is [`SMALL`].
+#[inline(always)]
+pub(crate) fn small(p: &[(i64, i64); 3]) -> bool {
+    p.iter().all(|q| q.0.abs() < SMALL && q.1.abs() < SMALL)
+}
+
+/// `p` made counter-clockwise (the last two swapped when clockwise); `None`
+/// when its area is zero. In i128 past [`SMALL`]: `snap` bounds coordinates
+/// to ±2^40, so products reach 2^82.
+#[inline(always)]
+pub(crate) fn ccw(p: [(i64, i64); 3]) -> Option<[(i64, i64); 3]> {
+    let negative = if small(&p) {
+        let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
+        if area == 0 {
+            return None;
+        }
+        area < 0
+    } else {
+        let w = |a: i64| i128::from(a);
+        let area = w(p[1].0 - p[0].0) * w(p[2].1 - p[0].1) - w(p[2].0 - p[0].0) * w(p[1].1 - p[0].1);
+        if area == 0 {
+            return None;
+        }
+        area < 0
+    };
+    Some(if negative { [p[0], p[2], p[1]] } else { p })
+}
+
+/// The edges of the counter-clockwise triangle `p`: edge i runs from p[i]
+/// to p[i+1], the inside on its left. A center exactly on an edge is inside
+/// when the edge is a left edge (going down) or a bottom edge (horizontal,
+/// going right).
+#[inline(always)]
+pub(crate) fn edges_of(p: [(i64, i64); 3]) -> [Edge; 3] {
+    let edge = |a: (i64, i64), b: (i64, i64)| {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let owns = dy < 0 || (dy == 0 && dx > 0);
+        Edge {
+            a,
+            dx,
+            dy,
+            k: i64::from(!owns),
+        }
+    };
+    [edge(p[0], p[1]), edge(p[1], p[2]), edge(p[2], p[0])]
+}
+
+/// `floor(a / ONE)`: an arithmetic shift.
+#[inline(always)]
+pub(crate) fn floor_one(a: i64) -> i64 {
+    a >> super::SUBPIXEL_BITS
+}
+
+/// `ceil(a / ONE)`.
+#[inline(always)]
+pub(crate) fn ceil_one(a: i64) -> i64 {
+    -((-a) >> super::SUBPIXEL_BITS)
 }

@@ -12,13 +12,14 @@
 //! bounds cut to the tile: coverage decides each pixel on its own, so the
 //! pixels are those of the whole primitive at once.
 
-use super::{reach_box, triangle_box, PrimSink, RasterParams, RasterVertex, Rasterize};
+use super::triangle::{plane_swap, setup_planes, Plane, Prepared};
+use super::{reach_box, Edges, PrimSink, RasterParams, RasterVertex, Rasterize, SpanSink};
 use crate::fragment::{FragmentStage, StageBuffers};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
 use crate::geometry::varying::{Varyings, MAX_VARYINGS};
 use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::texture::TextureSet;
-use softgl_jit::{DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Specialist, Target};
+use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Specialist, Target};
 use std::collections::HashSet;
 use std::sync::Arc;
 
@@ -95,21 +96,41 @@ impl DrawState {
     }
 }
 
-/// One recorded primitive, as the geometry stage handed it over: 64 bytes
-/// and its vertices (24 bytes and 4 per varying of the layout each), where a
-/// copy of its `RasterVertex`es is 224 bytes each (copying those was a fifth
-/// of the 1.6 M-triangle lit frame, `perf`).
+/// One recorded primitive: 64 bytes and, for a line or a point, its
+/// vertices as the geometry stage handed them over (24 bytes and 4 per
+/// varying of the layout each, where a copy of its `RasterVertex`es is 224
+/// bytes each: copying those was a fifth of the 1.6 M-triangle lit frame,
+/// `perf`); for a triangle, its set-up ([`Tri`]).
 #[derive(Clone, Copy, Debug)]
 struct Binned {
     draw: u32,
     kind: Kind,
-    /// Its first vertex in `verts`.
+    /// Its first vertex in `verts`; a triangle's set-up in `tris`.
     first: u32,
     /// Where its varyings start in `vary`: `n` (the layout's length) for
     /// each vertex, then `n` flat ones when `flat`.
     vary: u32,
     flat: bool,
     params: RasterParams,
+}
+
+/// A triangle set up once, when it is recorded: its coverage ([`Prepared`]:
+/// the snapped vertices counter-clockwise, the box, which pixels of a small
+/// box are inside) and its attribute planes, `planes[planes..][..n]` of the
+/// scene, in the order `setup_planes` makes them (depth last). A tile finds
+/// its rows and copies the planes; nothing is snapped or set up again.
+#[derive(Clone, Copy, Debug)]
+struct Tri {
+    prep: Prepared,
+    planes: u32,
+    n: u32,
+}
+
+/// A plane of slot `k`, recorded.
+#[derive(Clone, Copy, Debug)]
+struct SlotPlane {
+    k: u32,
+    plane: Plane,
 }
 
 /// A band's room to rebuild a primitive's vertices in (reused: no 700
@@ -144,6 +165,8 @@ pub struct Scene {
     tiles_x: u32,
     draws: Vec<DrawState>,
     prims: Vec<Binned>,
+    tris: Vec<Tri>,
+    planes: Vec<SlotPlane>,
     verts: Vec<Vert>,
     /// The varyings of `verts` and of flat primitives, the layout's slots only.
     vary: Vec<f32>,
@@ -264,6 +287,8 @@ impl Scene {
         self.textures.clear();
         self.texture_bytes = 0;
         self.prims.clear();
+        self.tris.clear();
+        self.planes.clear();
         self.verts.clear();
         self.vary.clear();
         self.clears.clear();
@@ -288,15 +313,31 @@ impl Scene {
         results.into_iter().collect()
     }
 
-    /// Rasterizes `p`'s pixels inside `tile` into `sink`, rebuilding its
-    /// vertices in `scratch`.
-    fn rasterize(&self, p: &Binned, tile: Rect, scratch: &mut Scratch, sink: &mut impl PrimSink) {
+    /// Rasterizes `p`'s pixels inside `tile` into `sink`, rebuilding a
+    /// line's or a point's vertices in `scratch`.
+    fn rasterize<S: SpanSink>(&self, p: &Binned, tile: Rect, scratch: &mut Scratch, sink: &mut S) {
+        if let Kind::Triangle = p.kind {
+            let t = &self.tris[p.first as usize];
+            let planes = &self.planes[t.planes as usize..][..t.n as usize];
+            // The box is within the bounds already.
+            t.prep.cover(tile, p.params.height, sink, |to| {
+                for sp in planes {
+                    to.set(sp.k as usize, sp.plane.a0, sp.plane.dadx, sp.plane.dady);
+                }
+                match p.params.depth {
+                    Some(f @ DepthFormat::D32) => planes.last().map(|z| (f, z.plane)),
+                    _ => None,
+                }
+            });
+            return;
+        }
         let params = RasterParams {
             bounds: p.params.bounds.intersect(tile),
             ..p.params
         };
         let flat = self.rebuild(p, scratch);
         let (v, f) = (&scratch.v, flat.then_some(&scratch.flat));
+        let sink = &mut Rasterize(sink);
         match p.kind {
             Kind::Triangle => sink.triangle([&v[0], &v[1], &v[2]], f, &params),
             Kind::Line { width } => sink.line(&v[0], &v[1], width, f, &params),
@@ -358,7 +399,7 @@ impl Scene {
                     .and_then(|mut stage| {
                         for &e in &bin[i..end] {
                             let p = &self.prims[e as usize];
-                            self.rasterize(p, tile, &mut scratch, &mut Rasterize(&mut stage));
+                            self.rasterize(p, tile, &mut scratch, &mut stage);
                         }
                         stage.finish()
                     });
@@ -390,16 +431,9 @@ impl Binner<'_> {
         self.error.map_or(Ok(()), Err)
     }
 
-    fn record(
-        &mut self,
-        r: Option<Rect>,
-        params: &RasterParams,
-        kind: Kind,
-        v: &[&RasterVertex],
-        flat: Option<&Varyings>,
-    ) {
-        let Some(r) = r else { return };
-        let draw = match self.draw {
+    /// The draw's index in the scene, recording it with the first primitive.
+    fn draw(&mut self) -> u32 {
+        match self.draw {
             Some(d) => d,
             // The scene's last draw runs with the same state: its primitives
             // join it (a strip per glBegin/glEnd is one run of a tile).
@@ -420,7 +454,20 @@ impl Binner<'_> {
                 self.draw = Some(d);
                 d
             }
-        };
+        }
+    }
+
+    /// Records a line or a point with its vertices.
+    fn record(
+        &mut self,
+        r: Option<Rect>,
+        params: &RasterParams,
+        kind: Kind,
+        v: &[&RasterVertex],
+        flat: Option<&Varyings>,
+    ) {
+        let Some(r) = r else { return };
+        let draw = self.draw();
         let scene = &mut *self.scene;
         let n = params.layout.len();
         let (first, vary) = (scene.verts.len() as u32, scene.vary.len() as u32);
@@ -438,6 +485,14 @@ impl Binner<'_> {
             scene.vary.extend_from_slice(&f[..n]);
         }
         let flat = flat.is_some();
+        scene.bytes += v.len() * std::mem::size_of::<Vert>() + (v.len() + usize::from(flat)) * n * 4;
+        self.push(r, draw, kind, (first, vary), flat, params);
+    }
+
+    /// Records the primitive and bins it into the tiles `r` touches;
+    /// flushes past the bounds.
+    fn push(&mut self, r: Rect, draw: u32, kind: Kind, (first, vary): (u32, u32), flat: bool, params: &RasterParams) {
+        let scene = &mut *self.scene;
         let entry = scene.prims.len() as u32;
         scene.prims.push(Binned {
             draw,
@@ -447,9 +502,7 @@ impl Binner<'_> {
             flat,
             params: *params,
         });
-        scene.bytes += std::mem::size_of::<Binned>()
-            + v.len() * std::mem::size_of::<Vert>()
-            + (v.len() + usize::from(flat)) * n * 4;
+        scene.bytes += std::mem::size_of::<Binned>();
         scene.bin(r, entry);
         if scene.bytes > scene.bound() || scene.texture_bytes > TEXTURE_BOUND {
             if let Err(e) = scene.flush(self.fb, self.threads) {
@@ -461,9 +514,29 @@ impl Binner<'_> {
 }
 
 impl PrimSink for Binner<'_> {
+    /// Sets the triangle up once ([`Tri`]); one that no pixel is inside
+    /// is not recorded.
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
-        let r = triangle_box(v, params);
-        self.record(r, params, Kind::Triangle, &v, flat);
+        let p = Edges::window_points(v, params.height);
+        let Some(prep) = Prepared::new(p, params.bounds) else {
+            return;
+        };
+        let draw = self.draw();
+        let scene = &mut *self.scene;
+        let at = scene.planes.len();
+        let planes = &mut scene.planes;
+        setup_planes(v, plane_swap(p), flat, params, &mut |k, plane| {
+            planes.push(SlotPlane { k: k as u32, plane })
+        });
+        let n = scene.planes.len() - at;
+        let first = scene.tris.len() as u32;
+        scene.tris.push(Tri {
+            prep,
+            planes: at as u32,
+            n: n as u32,
+        });
+        scene.bytes += std::mem::size_of::<Tri>() + n * std::mem::size_of::<SlotPlane>();
+        self.push(prep.rect(), draw, Kind::Triangle, (first, 0), false, params);
     }
 
     fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {

@@ -11,7 +11,7 @@
 //! set-up taking the snapped points it is given): tris 939 M → 843 M, ops
 //! 1596 M → 1501 M, fill 415 M → 381 M, the images byte-identical.
 
-use super::edges::{Edge, Edges};
+use super::edges::{ccw, ceil_one, edges_of, floor_one, small, Edge, Edges, SMALL};
 use super::{ceil_div, emit_row, floor_div, snap, with_planes, RasterParams, RasterVertex, SpanSink, ONE};
 use crate::framebuffer::Rect;
 use crate::geometry::varying::Varyings;
@@ -23,10 +23,10 @@ use softgl_jit::{DepthFormat, FragmentSpan};
 /// evaluated at integer pixel coordinates for the pixel centers (by the
 /// fragment stage: `Planes::at`).
 #[derive(Clone, Copy, Debug)]
-struct Plane {
-    a0: f32,
-    dadx: f32,
-    dady: f32,
+pub(crate) struct Plane {
+    pub a0: f32,
+    pub dadx: f32,
+    pub dady: f32,
 }
 
 /// Triangle setup in f32 from the unsnapped window positions, step for step
@@ -129,38 +129,214 @@ pub(super) fn cover<S: SpanSink + ?Sized>(
     params: &RasterParams,
     sink: &mut S,
 ) {
-    let Some(e) = Edges::new(p) else { return };
-    if params.bounds.is_empty() {
-        return;
-    }
-    let b = params.bounds;
-    let px0 = e.px.0.max(i64::from(b.x0));
-    let px1 = e.px.1.min(i64::from(b.x1) - 1);
-    let py0 = e.py.0.max(i64::from(b.y0));
-    let py1 = e.py.1.min(i64::from(b.y1) - 1);
-    if px0 > px1 || py0 > py1 {
-        return;
-    }
-
-    // A box that no pixel of the triangle is in costs no set-up and no row
-    // (half the tiles of a full-screen triangle's box).
-    let Some(rows) = Rows::new(&e, (px0, px1), (py0, py1)) else {
+    let Some(prep) = Prepared::new(p, params.bounds) else {
         return;
     };
-    let down = top.map(|top| p.map(|(x, y)| (x, top - y)));
-    match with_planes(sink, |planes| setup_planes(v, down, flat, params, planes)) {
-        None => rows.each(|py, lo, hi| sink.row(py, lo, hi)),
-        // Only 32-bit depth fills the spans' slots (the planes give the rest).
-        Some((format, z)) => {
-            let mut span = FragmentSpan::new(0, 0);
-            rows.each(|py, lo, hi| {
-                let row = row_of(py, params.height);
-                let mut fill_z = |x: u32, s: &mut FragmentSpan, i: usize| {
-                    let z = z.dady.mul_add(row, z.dadx.mul_add(x as f32, z.a0));
-                    s.z[i] = crate::framebuffer::depth_to_unorm(f64::from(z), format);
-                };
-                emit_row(sink, &mut span, py, lo, hi, Some(&mut fill_z));
-            });
+    let swap = match top {
+        Some(_) => plane_swap(p),
+        None => plane_swap_down(v.map(|v| (snap(v.x), snap(v.y_down)))),
+    };
+    prep.cover(params.bounds, params.height, sink, |planes| {
+        setup_planes(v, swap, flat, params, &mut |k, p| planes.set(k, p.a0, p.dadx, p.dady))
+    });
+}
+
+/// A triangle set up for coverage once (a scene does it when it records
+/// the triangle, so that a flush's tiles only find their rows): its
+/// snapped vertices made counter-clockwise, its pixel box within the
+/// bounds, and, when the box is small, which of its pixels are inside.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Prepared {
+    /// The box: inclusive pixel ranges.
+    px: (u32, u32),
+    py: (u32, u32),
+    cover: Cover,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum Cover {
+    /// Every pixel centre of the box is inside.
+    Inside,
+    /// Bit `8·j + i`: pixel `(px.0 + i, py.0 + j)` is inside (a box of at
+    /// most [`MASK`]×[`MASK`] pixels).
+    Masks(u64),
+    /// The vertices, counter-clockwise: the rows are walked per box.
+    Edges([(i64, i64); 3]),
+}
+
+/// The most columns and rows of a box whose pixels [`Prepared`] tests one
+/// by one (three additions a pixel, no division).
+const MASK: i64 = 8;
+
+impl Prepared {
+    /// The triangle of the snapped bottom-up positions `p` (either
+    /// winding) within `bounds`; `None` when no pixel of it is inside them.
+    #[inline]
+    pub(crate) fn new(p: [(i64, i64); 3], bounds: Rect) -> Option<Prepared> {
+        let p = ccw(p)?;
+        let x0 = ceil_one(p[0].0.min(p[1].0).min(p[2].0)).max(i64::from(bounds.x0));
+        let x1 = floor_one(p[0].0.max(p[1].0).max(p[2].0)).min(i64::from(bounds.x1) - 1);
+        let y0 = ceil_one(p[0].1.min(p[1].1).min(p[2].1)).max(i64::from(bounds.y0));
+        let y1 = floor_one(p[0].1.max(p[1].1).max(p[2].1)).min(i64::from(bounds.y1) - 1);
+        if x0 > x1 || y0 > y1 {
+            return None;
+        }
+        let (px, py) = ((x0 as u32, x1 as u32), (y0 as u32, y1 as u32));
+        let cover = if x1 - x0 < MASK && y1 - y0 < MASK && small(&p) {
+            // Within ±2^29 units and a box within ±2^21 pixels every edge
+            // function is exact in i64 (`edges::SMALL`).
+            let (w, h) = (x1 - x0 + 1, y1 - y0 + 1);
+            let row = (1u64 << w) - 1;
+            let mut all = 0;
+            for j in 0..h {
+                all |= row << (MASK * j);
+            }
+            let mut m = all;
+            for e in edges_of(p) {
+                // E at (x0, y0), and its steps a column and a row.
+                let at = e.dx * (y0 * ONE - e.a.1) - e.dy * (x0 * ONE - e.a.0) - e.k;
+                let (sx, sy) = (-e.dy * ONE, e.dx * ONE);
+                let mut inside = 0;
+                let mut r = at;
+                for j in 0..h {
+                    let mut c = r;
+                    for i in 0..w {
+                        inside |= u64::from(c >= 0) << (MASK * j + i);
+                        c += sx;
+                    }
+                    r += sy;
+                }
+                m &= inside;
+            }
+            match m {
+                0 => return None,
+                m if m == all => Cover::Inside,
+                m => Cover::Masks(m),
+            }
+        } else {
+            match Rows::classify(&edges_of(p), (x0, x1), (y0, y1))? {
+                true => Cover::Inside,
+                false => Cover::Edges(p),
+            }
+        };
+        Some(Prepared { px, py, cover })
+    }
+
+    /// The pixels the triangle may cover (its box within the bounds).
+    pub(crate) fn rect(&self) -> Rect {
+        Rect {
+            x0: self.px.0,
+            y0: self.py.0,
+            x1: self.px.1 + 1,
+            y1: self.py.1 + 1,
+        }
+    }
+
+    /// Emits the triangle's pixels within `clip` into `sink`, after the
+    /// planes `planes` writes (when some pixel of `clip` may be inside);
+    /// `planes` returns the depth plane of 32-bit depth, which the spans
+    /// carry ([`setup_planes`]). `height`: the framebuffer's.
+    #[inline]
+    pub(crate) fn cover<S: SpanSink + ?Sized>(
+        &self,
+        clip: Rect,
+        height: u32,
+        sink: &mut S,
+        planes: impl FnOnce(&mut Planes) -> Option<(DepthFormat, Plane)>,
+    ) {
+        let px = (self.px.0.max(clip.x0), self.px.1.min(clip.x1.saturating_sub(1)));
+        let py = (self.py.0.max(clip.y0), self.py.1.min(clip.y1.saturating_sub(1)));
+        if px.0 > px.1 || py.0 > py.1 || clip.is_empty() {
+            return;
+        }
+        let kind = match self.cover {
+            Cover::Inside => RowsKind::Box,
+            Cover::Masks(m) => {
+                // The columns of `clip`, in each row of the mask, and its rows.
+                let cols = ((1u64 << (px.1 - px.0 + 1)) - 1) << (px.0 - self.px.0);
+                let keep = (0..MASK as u32).fold(0, |k, j| k | cols << (MASK as u32 * j));
+                let n = (py.1 - py.0 + 1) * MASK as u32;
+                let rows = (if n >= 64 { u64::MAX } else { (1u64 << n) - 1 }) << ((py.0 - self.py.0) * MASK as u32);
+                let m = m & keep & rows;
+                if m == 0 {
+                    return;
+                }
+                RowsKind::Masks(m)
+            }
+            Cover::Edges(p) => {
+                let wide = |(a, b): (u32, u32)| (i64::from(a), i64::from(b));
+                match Rows::new(&edges_of(p), wide(px), wide(py)) {
+                    Some(rows) => RowsKind::Walk(rows),
+                    None => return,
+                }
+            }
+        };
+        let rows = TileRows {
+            px,
+            py,
+            origin: (self.px.0, self.py.0),
+            kind,
+        };
+        match with_planes(sink, planes) {
+            None => rows.each(|py, lo, hi| sink.row(py, lo, hi)),
+            // Only 32-bit depth fills the spans' slots (the planes give the rest).
+            Some((format, z)) => {
+                let mut span = FragmentSpan::new(0, 0);
+                rows.each(|py, lo, hi| {
+                    let row = row_of(py, height);
+                    let mut fill_z = |x: u32, s: &mut FragmentSpan, i: usize| {
+                        let z = z.dady.mul_add(row, z.dadx.mul_add(x as f32, z.a0));
+                        s.z[i] = crate::framebuffer::depth_to_unorm(f64::from(z), format);
+                    };
+                    emit_row(sink, &mut span, py, lo, hi, Some(&mut fill_z));
+                });
+            }
+        }
+    }
+}
+
+/// The rows of a triangle within a box, found by [`Prepared::cover`].
+struct TileRows {
+    /// The box (inclusive), and the lower-left pixel of the mask's.
+    px: (u32, u32),
+    py: (u32, u32),
+    origin: (u32, u32),
+    kind: RowsKind,
+}
+
+// A value on the stack for one tile's rows, never stored: its size is
+// not worth a box (a heap allocation per primitive).
+#[allow(clippy::large_enum_variant)]
+enum RowsKind {
+    /// Every pixel of the box.
+    Box,
+    /// A [`Cover::Masks`] cut to the box.
+    Masks(u64),
+    Walk(Rows),
+}
+
+impl TileRows {
+    /// Runs `row(py, first, last)` for each row that has pixels inside,
+    /// bottom to top.
+    #[inline]
+    fn each(self, mut row: impl FnMut(u32, u32, u32)) {
+        let (px, py) = (self.px, self.py);
+        match self.kind {
+            RowsKind::Box => {
+                for y in py.0..=py.1 {
+                    row(y, px.0, px.1);
+                }
+            }
+            RowsKind::Masks(m) => {
+                let (x0, y0) = self.origin;
+                for y in py.0..=py.1 {
+                    let bits = (m >> ((y - y0) * MASK as u32)) & 0xff;
+                    if bits != 0 {
+                        row(y, x0 + bits.trailing_zeros(), x0 + 63 - bits.leading_zeros());
+                    }
+                }
+            }
+            RowsKind::Walk(rows) => rows.each(row),
         }
     }
 }
@@ -186,34 +362,45 @@ struct Rows {
 }
 
 impl Rows {
-    /// `None` when no pixel centre of the box is inside `e`'s triangle.
-    fn new(e: &Edges, px: (i64, i64), py: (i64, i64)) -> Option<Rows> {
+    /// Whether every pixel centre of the box is inside the triangle of
+    /// `edges` (`Some(true)`), some may be (`Some(false)`), or none is
+    /// (`None`): from each edge function at the box's corners (it is
+    /// linear: its least and greatest values over the box are at corners).
+    #[inline]
+    fn classify(edges: &[Edge; 3], px: (i64, i64), py: (i64, i64)) -> Option<bool> {
         // Below 2^29 units (2M pixels) every product and sum fits in i64
         // (|dx|, |dy| < 2^30, |y·ONE − ay| < 2^30 + 2^29): the corners cost
         // i64 arithmetic, not i128.
-        const SMALL: i64 = 1 << 29;
-        let small = e.edges.iter().all(|e| e.a.0.abs() < SMALL && e.a.1.abs() < SMALL)
-            && [px.0, px.1, py.0, py.1].iter().all(|&c| c.abs() < SMALL / ONE);
+        let small = edges.iter().all(|e| e.a.0.abs() < SMALL && e.a.1.abs() < SMALL)
+            && px.0.abs().max(px.1.abs()).max(py.0.abs()).max(py.1.abs()) < SMALL / ONE;
         let mut inside = true;
-        for edge in &e.edges {
-            // An edge function is linear: its least and greatest values
-            // over the box are at corners. In i128, exact for any snapped
-            // coordinates (as `Edges::contains_box`).
-            let c = if small {
+        for edge in edges {
+            let (lo, hi) = if small {
                 let at = |x: i64, y: i64| edge.dx * (y * ONE - edge.a.1) - edge.dy * (x * ONE - edge.a.0) - edge.k;
-                [at(px.0, py.0), at(px.1, py.0), at(px.0, py.1), at(px.1, py.1)].map(i128::from)
+                let c = [at(px.0, py.0), at(px.1, py.0), at(px.0, py.1), at(px.1, py.1)];
+                (c[0].min(c[1]).min(c[2].min(c[3])), c[0].max(c[1]).max(c[2].max(c[3])))
             } else {
+                // In i128, exact for any snapped coordinates (as
+                // `Edges::contains_box`).
                 let w = |a: i64| i128::from(a);
                 let at = |x: i64, y: i64| {
                     w(edge.dx) * (w(y) * w(ONE) - w(edge.a.1)) - w(edge.dy) * (w(x) * w(ONE) - w(edge.a.0)) - w(edge.k)
                 };
-                [at(px.0, py.0), at(px.1, py.0), at(px.0, py.1), at(px.1, py.1)]
+                let c = [at(px.0, py.0), at(px.1, py.0), at(px.0, py.1), at(px.1, py.1)];
+                let (lo, hi) = (c[0].min(c[1]).min(c[2].min(c[3])), c[0].max(c[1]).max(c[2].max(c[3])));
+                (lo.signum() as i64, hi.signum() as i64)
             };
-            if c.iter().all(|&c| c < 0) {
+            if hi < 0 {
                 return None;
             }
-            inside &= c.iter().all(|&c| c >= 0);
+            inside &= lo >= 0;
         }
+        Some(inside)
+    }
+
+    /// `None` when no pixel centre of the box is inside the triangle of `edges`.
+    fn new(edges: &[Edge; 3], px: (i64, i64), py: (i64, i64)) -> Option<Rows> {
+        let inside = Rows::classify(edges, px, py)?;
         let mut rows = Rows {
             px,
             py,
@@ -226,7 +413,7 @@ impl Rows {
             return Some(rows);
         }
         // Rows first: the walks start at the first row kept.
-        for &Edge { a: (_, ay), dx, dy, k } in &e.edges {
+        for &Edge { a: (_, ay), dx, dy, k } in edges {
             if dy != 0 {
                 continue;
             }
@@ -248,7 +435,7 @@ impl Rows {
             return None;
         }
         let (mut l, mut r) = (0, 0);
-        for edge in &e.edges {
+        for edge in edges {
             if edge.dy < 0 {
                 rows.left[l.min(1)] = Walk::new(edge, rows.py.0);
                 l += 1;
@@ -358,34 +545,53 @@ impl Walk {
     }
 }
 
-/// Writes the planes of a triangle's attributes for the fragment stage into
-/// `planes`, set up in llvmpipe's order: colours (the flat ones constant), the
-/// secondary colour, the fog coordinate and the texture coordinates over w,
-/// 1/w, depth (with polygon offset). Only the slots the layout uses are
-/// written. `down`: the snapped top-down positions, when the caller has
-/// them. Returns the depth format and plane of the depth values the
-/// rasterizer computes per fragment itself (32-bit depth, which the shading
-/// stage leaves to the span).
-fn setup_planes(
+/// Whether llvmpipe swaps the first two vertices of the triangle of
+/// snapped top-down positions `q` for its plane set-up: when their area, in
+/// its y-down frame, is negative (in i64, as it computes it).
+#[inline]
+fn plane_swap_down(q: [(i64, i64); 3]) -> bool {
+    let area = (q[0].0.wrapping_sub(q[1].0))
+        .wrapping_mul(q[2].1.wrapping_sub(q[0].1))
+        .wrapping_sub((q[2].0.wrapping_sub(q[0].0)).wrapping_mul(q[0].1.wrapping_sub(q[1].1)));
+    area < 0
+}
+
+/// [`plane_swap_down`] of the snapped top-down positions whose reflection
+/// into GL rows is `p` ([`Edges::window_points`]): reflecting the y of all
+/// three negates both y differences of the area, which is the same value
+/// (to the bit, in wrapping i64) from the bottom-up positions.
+#[inline]
+pub(crate) fn plane_swap(p: [(i64, i64); 3]) -> bool {
+    let area = (p[1].0.wrapping_sub(p[0].0))
+        .wrapping_mul(p[2].1.wrapping_sub(p[0].1))
+        .wrapping_sub((p[2].0.wrapping_sub(p[0].0)).wrapping_mul(p[1].1.wrapping_sub(p[0].1)));
+    area < 0
+}
+
+/// Sets the planes of a triangle's attributes for the fragment stage up,
+/// in llvmpipe's order, handing each to `put(slot, plane)`: 1/w, the
+/// colours (the flat ones constant), the secondary colour, the fog
+/// coordinate and the texture coordinates over w, depth (with polygon
+/// offset) last. Only the slots the layout uses are put. `swap`: whether
+/// llvmpipe swaps the first two vertices ([`plane_swap`]). Returns the
+/// depth format and plane of the depth values the rasterizer computes per
+/// fragment itself (32-bit depth, which the shading stage leaves to the
+/// span).
+pub(crate) fn setup_planes(
     v: [&RasterVertex; 3],
-    down: Option<[(i64, i64); 3]>,
+    swap: bool,
     flat: Option<&Varyings>,
     params: &RasterParams,
-    planes: &mut Planes,
+    put: &mut impl FnMut(usize, Plane),
 ) -> Option<(DepthFormat, Plane)> {
-    // llvmpipe orders the vertices by the sign of the snapped area in its
-    // y-down frame, and swaps the first two when it is negative.
     let mut v = v;
-    let q = down.unwrap_or_else(|| v.map(|v| (snap(v.x), snap(v.y_down))));
-    let area = (q[0].0 - q[1].0) * (q[2].1 - q[0].1) - (q[2].0 - q[0].0) * (q[0].1 - q[1].1);
-    if area < 0 {
+    if swap {
         v.swap(0, 1);
     }
-    let setup = Setup::new(v.map(|v| (v.x, v.y_down)));
-    let mut put = |k: usize, p: Plane| planes.set(k, p.a0, p.dadx, p.dady);
+    let setup = Setup::new([(v[0].x, v[0].y_down), (v[1].x, v[1].y_down), (v[2].x, v[2].y_down)]);
     let layout = params.layout;
-    let over_w = |k: usize| setup.plane(v.map(|v| v.v[k] * v.inv_w));
-    put(slot::INV_W, setup.plane(v.map(|v| v.inv_w)));
+    let over_w = |k: usize| setup.plane([v[0].v[k] * v[0].inv_w, v[1].v[k] * v[1].inv_w, v[2].v[k] * v[2].inv_w]);
+    put(slot::INV_W, setup.plane([v[0].inv_w, v[1].inv_w, v[2].inv_w]));
     let colours = [
         (layout.color(), slot::COLOR, 4),
         (layout.secondary(), slot::SECONDARY, 3),
@@ -414,11 +620,12 @@ fn setup_planes(
     }
     let mut per_fragment_z = None;
     if let Some(f) = params.depth {
-        let mut z = v.map(|v| v.z as f32);
+        let mut z = [v[0].z as f32, v[1].z as f32, v[2].z as f32];
         if let Some((factor, units)) = params.offset {
             let slope = setup.plane(z);
             let o = offset(factor, units, slope.dadx, slope.dady, f);
-            z = z.map(|z| (z + o).clamp(0.0, 1.0));
+            let at = |z: f32| (z + o).clamp(0.0, 1.0);
+            z = [at(z[0]), at(z[1]), at(z[2])];
         }
         let plane = setup.plane(z);
         put(slot::Z, plane);

@@ -2,7 +2,7 @@
 //! against a per-pixel i128 evaluation where `cover`'s i64 products would
 //! overflow; shared edges covered exactly once.
 
-use super::super::triangle::cover;
+use super::super::triangle::{cover, Prepared};
 use super::super::{triangle, RasterParams, RasterVertex};
 use super::*;
 use crate::geometry::varying::{VaryingLayout, MAX_VARYINGS};
@@ -95,6 +95,17 @@ fn brute(p: [(i64, i64); 3], tile: Rect, clip: Rect) -> TileMask {
                 m.rows[(y - tile.y0) as usize] |= 1 << (x - tile.x0);
             }
         }
+    }
+    m
+}
+
+/// A scene's coverage of `tile`: the triangle set up once within `clip`
+/// ([`Prepared`]), then cut to the tile.
+fn prepared(p: [(i64, i64); 3], tile: Rect, clip: Rect) -> TileMask {
+    let mut m = TileMask::empty(tile.x0, tile.y0);
+    if let Some(prep) = Prepared::new(p, clip) {
+        let mut sink = |s: &FragmentSpan| add_span(&mut m, tile, s);
+        prep.cover(tile, 1024, &mut sink, |_| None);
     }
     m
 }
@@ -299,6 +310,27 @@ fn clip_of(tile: Rect) -> impl Strategy<Value = Rect> {
     prop_oneof![Just(tile), cut]
 }
 
+/// Triangles of a few pixels near a tile's corner (most straddle a tile
+/// edge), vertices anywhere on the sub-pixel grid or on centres and halves.
+fn tiny() -> impl Strategy<Value = ([(i64, i64); 3], u32, u32)> {
+    let tile = (1..4u32, 1..4u32);
+    let size = prop_oneof![Just(ONE / 2), Just(2 * ONE), Just(6 * ONE), Just(12 * ONE)];
+    let any_units =
+        (tile.clone(), -12..12i64, -12..12i64, size, any::<[(i32, i32); 3]>()).prop_map(|((tx, ty), cx, cy, s, r)| {
+            let c = ((i64::from(tx * 64) + cx) * ONE, (i64::from(ty * 64) + cy) * ONE);
+            (r.map(|(x, y)| (c.0 + i64::from(x) % s, c.1 + i64::from(y) % s)), tx, ty)
+        });
+    let halves = (tile, any::<[(i8, i8); 3]>()).prop_map(|((tx, ty), r)| {
+        let c = (i64::from(tx * 64) * ONE, i64::from(ty * 64) * ONE);
+        (
+            r.map(|(x, y)| (c.0 + i64::from(x % 16) * ONE / 2, c.1 + i64::from(y % 16) * ONE / 2)),
+            tx,
+            ty,
+        )
+    });
+    prop_oneof![any_units, halves]
+}
+
 fn case() -> impl Strategy<Value = ([(i64, i64); 3], Rect, Rect, bool)> {
     (points(4), any::<bool>()).prop_flat_map(|((p, tx, ty), swap)| {
         let t = tile_rect(tx, ty);
@@ -308,6 +340,26 @@ fn case() -> impl Strategy<Value = ([(i64, i64); 3], Rect, Rect, bool)> {
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: 4000, ..ProptestConfig::default() })]
+
+    /// A triangle set up once and cut to each tile (a scene's flush) ==
+    /// per-pixel i128, for tiny triangles (per-pixel masks) and any.
+    #[test]
+    fn prepared_equals_brute(
+        (p, tx, ty) in tiny(),
+        (cx, cy, cw, ch) in (0..90u32, 0..90u32, 0..200u32, 0..200u32),
+        (q, tile, clip, _) in case(),
+    ) {
+        // The four tiles around the corner, within a clip (the bounds).
+        let clip_tiny = Rect { x0: cx, y0: cy, x1: cx + cw, y1: cy + ch };
+        for (cx, cy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+            let t = tile_rect(tx + cx - 1, ty + cy - 1);
+            for c in [t, clip_tiny] {
+                let got = prepared(p, t, c);
+                prop_assert_eq!(got, brute(p, t, c), "p = {:?}, tile {:?}, clip {:?}", p, t, c);
+            }
+        }
+        prop_assert_eq!(prepared(q, tile, clip), brute(q, tile, clip));
+    }
 
     /// Block coverage == row coverage == per-pixel i128, pixel for pixel.
     #[test]
