@@ -33,7 +33,7 @@ impl Edges {
     /// The edges of the triangle of snapped bottom-up positions `p`, either
     /// winding; `None` when its area is zero (it covers nothing).
     pub fn new(p: [(i64, i64); 3]) -> Option<Edges> {
-        let p = ccw(p)?;
+        let p = ccw(p, small(&p))?;
         let (min_x, max_x) = (p[0].0.min(p[1].0).min(p[2].0), p[0].0.max(p[1].0).max(p[2].0));
         let (min_y, max_y) = (p[0].1.min(p[1].1).min(p[2].1), p[0].1.max(p[1].1).max(p[2].1));
         Some(Edges {
@@ -66,6 +66,7 @@ impl Edges {
     /// The snapped bottom-up positions of `v`: llvmpipe snaps its top-down y,
     /// whose f32 value can round apart from the bottom-up one (to a tie, or
     /// across one); the snapped value is reflected exactly into GL rows.
+    #[inline(always)]
     pub fn window_points(v: [&RasterVertex; 3], height: u32) -> [(i64, i64); 3] {
         let top = (i64::from(height) - 1) * ONE;
         let at = |v: &RasterVertex| (snap(v.x), top - snap(v.y_down));
@@ -85,11 +86,11 @@ pub(crate) fn small(p: &[(i64, i64); 3]) -> bool {
 }
 
 /// `p` made counter-clockwise (the last two swapped when clockwise); `None`
-/// when its area is zero. In i128 past [`SMALL`]: `snap` bounds coordinates
-/// to ±2^40, so products reach 2^82.
+/// when its area is zero. In i128 unless `small` ([`small`]): `snap` bounds
+/// coordinates to ±2^40, so products reach 2^82.
 #[inline(always)]
-pub(crate) fn ccw(p: [(i64, i64); 3]) -> Option<[(i64, i64); 3]> {
-    let negative = if small(&p) {
+pub(crate) fn ccw(p: [(i64, i64); 3], small: bool) -> Option<[(i64, i64); 3]> {
+    let negative = if small {
         let area = (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1);
         if area == 0 {
             return None;
