@@ -10,6 +10,21 @@
 //! thread, instructions per frame of `osmesa/bench/fill.c` (with the plane
 //! set-up taking the snapped points it is given): tris 939 M → 843 M, ops
 //! 1596 M → 1501 M, fill 415 M → 381 M, the images byte-identical.
+//!
+//! A triangle is set up once ([`Prepared`]; a scene does it when it
+//! records the triangle): its snapped vertices made counter-clockwise, its
+//! box within the bounds, and, for a box of at most 8×8 pixels, which of
+//! them are inside, tested one by one in i64 (three additions a pixel, no
+//! division: the triangles of a finely tessellated sphere are a pixel or
+//! two). A triangle no pixel of which is inside goes no further (no planes,
+//! no bin entry). A tile then only cuts that coverage to itself and finds
+//! its rows (the mask's bytes, the box's rows when every pixel is inside,
+//! else the row walk below); the scene records the planes
+//! ([`setup_planes`]) rather than the vertices, so nothing is snapped or set
+//! up twice. Measured with callgrind, one thread, instructions a frame of
+//! `lit16` (1.6 M triangles): 5317 M → 3002 M (3323 → 1876 a triangle;
+//! Mesa llvmpipe: 2.56 G), tris 758 M → LATER, ops 1240 M → LATER, lit
+//! 629 M → LATER, the images byte-identical.
 
 use super::edges::{ccw, ceil_one, edges_of, floor_one, Edge, Edges, SMALL};
 use super::{ceil_div, emit_row, floor_div, snap, with_planes, RasterParams, RasterVertex, SpanSink, ONE};
@@ -620,9 +635,12 @@ pub(crate) fn setup_planes(
     if let Some(o) = layout.fog() {
         put(slot::FOG, over_w(o));
     }
-    for (unit, o) in layout.tex_units() {
-        for c in 0..4 {
-            put(slot::tex(unit) + c, over_w(o + c));
+    // (`tex_units` walks the eight units: not for a layout with none.)
+    if layout.tex != 0 {
+        for (unit, o) in layout.tex_units() {
+            for c in 0..4 {
+                put(slot::tex(unit) + c, over_w(o + c));
+            }
         }
     }
     let mut per_fragment_z = None;
