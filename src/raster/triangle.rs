@@ -22,9 +22,9 @@
 //! else the row walk below); the scene records the planes
 //! ([`setup_planes`]) rather than the vertices, so nothing is snapped or set
 //! up twice. Measured with callgrind, one thread, instructions a frame of
-//! `lit16` (1.6 M triangles): 5317 M → 3002 M (3323 → 1876 a triangle;
-//! Mesa llvmpipe: 2.56 G), tris 758 M → LATER, ops 1240 M → LATER, lit
-//! 629 M → LATER, the images byte-identical.
+//! `lit16` (1.6 M triangles): 5317 M → 2936 M (3323 → 1835 a triangle;
+//! Mesa llvmpipe: 2.56 G), lit 629 M → 500 M, tris 758 M → 713 M, ops
+//! 1240 M → 1195 M, the images byte-identical.
 
 use super::edges::{ccw, ceil_one, edges_of, floor_one, Edge, Edges, SMALL};
 use super::{ceil_div, emit_row, floor_div, snap, with_planes, RasterParams, RasterVertex, SpanSink, ONE};
