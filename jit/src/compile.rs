@@ -239,6 +239,10 @@ struct SpanValues {
     /// The planes pointer, the row splatted and the pixel x of the span's
     /// first four lanes, for keys with a shading stage.
     planes: Option<(Value, Value, Value)>,
+    /// Whether the span's primitive's 1/w plane is exactly 1 at every pixel
+    /// (`a0 == 1`, `dadx == dady == 0`: every `glOrtho` draw), for keys that
+    /// divide colours by it ([`Gen::perspective`]).
+    w_one: Option<Value>,
 }
 
 /// The fragment values of one group of four, as the stages update them.
@@ -265,6 +269,10 @@ struct Group {
     px: Option<Value>,
     /// `1 / (1/w)` at the lanes, once the shading stage has made it.
     w: Option<Value>,
+    /// Whether the alpha channel (`rgba[3]`) is already shaded: the alpha
+    /// test reads it before the stencil and depth tests, the other channels
+    /// wait for the groups that pass them.
+    alpha_shaded: bool,
 }
 
 struct Gen<'a> {
@@ -336,10 +344,15 @@ impl<'a> Gen<'a> {
             live,
             x0,
             planes: None,
+            w_one: None,
         };
         let mut sv = sv;
-        if self.key.shade.is_some() {
-            sv.planes = Some(self.planes_and_row(call, x0));
+        if let Some(shade) = self.key.shade {
+            let (planes, row, px0) = self.planes_and_row(call, x0);
+            sv.planes = Some((planes, row, px0));
+            if shade.color && !shade.flat {
+                sv.w_one = Some(self.w_is_one(planes));
+            }
         }
         let exit = self.b.create_block();
 
@@ -422,6 +435,25 @@ impl<'a> Gen<'a> {
         self.b.ins().uload8(types::I32, mem(), u, off as i32)
     }
 
+    /// The `i32` uniform at `off` in four lanes: loaded just before its
+    /// splat, which Cranelift then folds into one `vbroadcastss` from memory
+    /// (3 instructions otherwise).
+    fn uniform_i32_splat(&mut self, u: Value, off: usize) -> Value {
+        let v = self.b.ins().load(types::I32, mem(), u, off as i32);
+        self.b.ins().splat(I32X4, v)
+    }
+
+    /// The byte uniform at `off` in four `i32` lanes: a `vpbroadcastb` from
+    /// memory (the load just before its splat folds into it) and one mask,
+    /// where loading, moving and splatting take 3 instructions.
+    fn uniform_u8_splat(&mut self, u: Value, off: usize) -> Value {
+        let v = self.b.ins().load(types::I8, mem(), u, off as i32);
+        let bytes = self.b.ins().splat(types::I8X16, v);
+        let lanes = self.b.ins().bitcast(I32X4, le(), bytes);
+        let ff = self.splat(255);
+        self.b.ins().band(lanes, ff)
+    }
+
     fn splat(&mut self, v: i64) -> Value {
         if let Some(&(_, c)) = self.consts.iter().find(|(k, _)| *k == v) {
             return c;
@@ -488,6 +520,7 @@ impl<'a> Gen<'a> {
             z: None,
             px: None,
             w: None,
+            alpha_shaded: false,
         }
     }
 
@@ -546,9 +579,17 @@ impl<'a> Gen<'a> {
             g.rgba[3] = self.span_channel(sv, g.lane0, 3);
         }
         for stage in stages.as_slice() {
-            if let (Some(shade), Stage::AlphaTest(_) | Stage::Blend(_) | Stage::Pack { .. }) = (colour_due, stage) {
-                self.shade_color(&mut g, sv, &shade);
-                colour_due = None;
+            match (colour_due, stage) {
+                // Untextured alpha depends on the alpha plane alone: the
+                // alpha test gets it now, the other channels are shaded only
+                // for the groups the stencil and depth tests leave (the `ops`
+                // frame's depth test kills most).
+                (Some(shade), Stage::AlphaTest(_)) if !shade.textured() => self.shade_alpha(&mut g, sv, &shade),
+                (Some(shade), Stage::AlphaTest(_) | Stage::Blend(_) | Stage::Pack { .. }) => {
+                    self.shade_color(&mut g, sv, &shade);
+                    colour_due = None;
+                }
+                _ => {}
             }
             match *stage {
                 Stage::Shade(_) => {}
@@ -1304,26 +1345,26 @@ impl Uniforms {
         };
         let splat = |g: &mut Gen<'_>, v: Value| g.b.ins().splat(I32X4, v);
         if key.scissor {
-            let x0 = g.uniform_i32(u, offset_of!(FragmentUniforms, scissor));
-            let x1 = g.uniform_i32(u, offset_of!(FragmentUniforms, scissor) + 8);
-            out.scissor_x0 = splat(g, x0);
-            out.scissor_x1 = splat(g, x1);
+            out.scissor_x0 = g.uniform_i32_splat(u, offset_of!(FragmentUniforms, scissor));
+            out.scissor_x1 = g.uniform_i32_splat(u, offset_of!(FragmentUniforms, scissor) + 8);
         }
         if key.alpha_test.is_some() {
-            let a = g.uniform_u8(u, offset_of!(FragmentUniforms, alpha_ref));
-            out.alpha_ref = splat(g, a);
+            out.alpha_ref = g.uniform_u8_splat(u, offset_of!(FragmentUniforms, alpha_ref));
         }
         if let (Some(st), true) = (key.stencil, key.stencil_buffer) {
             // What the test and the ops read (the loads are not removed when unused).
             let ops = [st.fail, st.zfail, st.zpass];
             let compares = !matches!(st.func, CompareFunc::Always | CompareFunc::Never);
             let replaces = ops.contains(&StencilOp::Replace);
-            let r = match compares || replaces {
+            let r = match compares {
                 true => g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_ref)),
                 false => zero,
             };
             if replaces {
-                out.stencil_ref = splat(g, r);
+                out.stencil_ref = match compares {
+                    true => splat(g, r),
+                    false => g.uniform_u8_splat(u, offset_of!(FragmentUniforms, stencil_ref)),
+                };
             }
             if compares {
                 let vm = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_value_mask));
@@ -1332,8 +1373,7 @@ impl Uniforms {
                 out.stencil_ref_masked = splat(g, rm);
             }
             if ops.iter().any(|&op| op != StencilOp::Keep) {
-                let wm = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_write_mask));
-                out.stencil_write_mask = splat(g, wm);
+                out.stencil_write_mask = g.uniform_u8_splat(u, offset_of!(FragmentUniforms, stencil_write_mask));
             }
         }
         let constant = |f: BlendFactor| {
@@ -1353,8 +1393,7 @@ impl Uniforms {
                 .any(constant)
         }) {
             for c in 0..4 {
-                let v = g.uniform_u8(u, offset_of!(FragmentUniforms, blend_color) + c);
-                out.blend_color[c] = splat(g, v);
+                out.blend_color[c] = g.uniform_u8_splat(u, offset_of!(FragmentUniforms, blend_color) + c);
             }
         }
         if key.dither && key.color_format.is_reduced() {

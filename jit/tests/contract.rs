@@ -302,6 +302,15 @@ fn planes(rng: &mut Rng) -> Planes {
         };
         p.set(k, a0, float(rng) * scale, float(rng) * scale);
     }
+    // 1/w exactly 1 (every glOrtho draw: the specialists skip the division),
+    // with slopes of either sign of zero, or 1 at the lanes' first pixel only.
+    let inv_w = softgl_jit::shade::slot::INV_W;
+    match rng.below(6) {
+        0 => p.set(inv_w, 1.0, 0.0, 0.0),
+        1 => p.set(inv_w, 1.0, -0.0, -0.0),
+        2 => p.set(inv_w, 1.0, 0.0, f32::MIN_POSITIVE),
+        _ => {}
+    }
     p
 }
 
