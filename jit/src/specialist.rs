@@ -1,7 +1,7 @@
 //! A compiled specialist and the one place softgl calls into generated code.
 
 use crate::callout::TexView;
-use crate::compile::{self, CompileError, RegAlloc, SpanCall, SpanFn};
+use crate::compile::{self, CompileError, RegAlloc, SpanCall, SpanFn, SplatUniforms};
 use crate::interp::{check_key, check_planes, row_of, FragmentError};
 use crate::key::FragmentKey;
 use crate::pixel;
@@ -374,11 +374,12 @@ impl Specialist {
             }
         };
         let func = self.code().func;
+        let splats = SplatUniforms::new(uniforms);
         for span in spans {
             let p = planes
                 .get(span.planes as usize)
                 .map_or(std::ptr::null(), |p| p as *const Planes);
-            self.run_span(func, (uniforms, tex), (span, p), target);
+            self.run_span(func, (&splats, tex), (span, p), target);
         }
         Ok(())
     }
@@ -386,7 +387,7 @@ impl Specialist {
     fn run_span(
         &self,
         func: SpanFn,
-        (u, tex): (&FragmentUniforms, *const TexView<'static>),
+        (u, tex): (&SplatUniforms, *const TexView<'static>),
         (span, planes): (&FragmentSpan, *const Planes),
         t: &mut Target<'_>,
     ) {
@@ -477,7 +478,7 @@ impl Specialist {
     }
 
     /// Calls `func`, which is [`Self::code`]'s function, read once for the whole `run*` call.
-    fn call(&self, func: SpanFn, call: &SpanCall, u: &FragmentUniforms) {
+    fn call(&self, func: SpanFn, call: &SpanCall, u: &SplatUniforms) {
         // SAFETY: `func` is the code of one of this specialist's `Compiled`s, both
         // compiled from `self.key`, which `run` checked against the target's formats;
         // `&self` keeps its module alive across the call (`OwnedModule`'s drop). The

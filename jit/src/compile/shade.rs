@@ -4,7 +4,7 @@
 //! multiply-adds exactly where it has them), so the bits equal the
 //! interpreter's.
 
-use super::{le, mem, Gen, Group, SpanCall, SpanValues, I32X4};
+use super::{le, mem, uniform_offset, Gen, Group, SpanCall, SpanValues, I32X4};
 use crate::key::{ColorFormat, DepthFormat, ShadeKey};
 use crate::shade::{exp2_coeffs, slot, FogMode, FogUniforms, Planes};
 use crate::uniforms::FragmentUniforms;
@@ -212,7 +212,7 @@ impl Gen<'_> {
             let one = self.fconst(1.0);
             let inv = self.b.ins().fsub(one, f);
             for (k, ck) in c.iter_mut().take(3).enumerate() {
-                let off = offset_of!(FragmentUniforms, fog) + offset_of!(FogUniforms, color) + 4 * k;
+                let off = uniform_offset(offset_of!(FragmentUniforms, fog) + offset_of!(FogUniforms, color) + 4 * k);
                 let fog = self.uniform_f32(sv.u, off);
                 let a = self.b.ins().fmul(fog, inv);
                 let b = self.b.ins().fmul(*ck, f);
@@ -376,7 +376,7 @@ impl Gen<'_> {
         let p = |s: &mut Self, k: usize| {
             s.uniform_f32(
                 u,
-                offset_of!(FragmentUniforms, fog) + offset_of!(FogUniforms, params) + 4 * k,
+                uniform_offset(offset_of!(FragmentUniforms, fog) + offset_of!(FogUniforms, params) + 4 * k),
             )
         };
         let f = match mode {
