@@ -242,6 +242,10 @@ struct SpanValues {
     /// (`a0 == 1`, `dadx == dady == 0`: every `glOrtho` draw), for keys that
     /// divide colours by it ([`Gen::perspective`]).
     w_one: Option<Value>,
+    /// For each natively sampled unit of such a key: whether w and the
+    /// unit's q/w plane are both exactly 1 over the span (the unit's s and t
+    /// are then its planes' values).
+    tex_one: [Option<Value>; crate::texture::MAX_UNITS],
 }
 
 /// The fragment values of one group of four, as the stages update them.
@@ -343,13 +347,21 @@ impl<'a> Gen<'a> {
             live,
             planes: None,
             w_one: None,
+            tex_one: [None; crate::texture::MAX_UNITS],
         };
         let mut sv = sv;
         if let Some(shade) = self.key.shade {
             let (planes, row, px0) = self.planes_and_row(call, x0);
             sv.planes = Some((planes, row, px0));
             if shade.color && !shade.flat {
-                sv.w_one = Some(self.w_is_one(planes));
+                let w_one = self.w_is_one(planes);
+                sv.w_one = Some(w_one);
+                for (u, unit) in shade.tex.iter().enumerate() {
+                    if unit.as_ref().is_some_and(|t| self.native_sampling && native_unit(t)) {
+                        let q_one = self.plane_is_one(planes, crate::shade::slot::tex(u) + 3);
+                        sv.tex_one[u] = Some(self.b.ins().band(w_one, q_one));
+                    }
+                }
             }
         }
         let exit = self.b.create_block();

@@ -55,16 +55,7 @@ impl Gen<'_> {
     /// px, 1))` is 1 for every finite `px` and `row`, `1 / 1` is 1 and
     /// `v · 1` is `v`), compared as bits, once a span.
     pub(super) fn w_is_one(&mut self, planes: Value) -> Value {
-        let load = |s: &mut Self, c: usize| {
-            let off = offset_of!(Planes, coeffs) + (3 * slot::INV_W + c) * 16;
-            s.b.ins().load(types::I32, mem(), planes, off as i32)
-        };
-        let (a0, dadx, dady) = (load(self, 0), load(self, 1), load(self, 2));
-        let d = self.b.ins().bor(dadx, dady);
-        let d = self.b.ins().band_imm_u(d, 0x7fff_ffff);
-        let a = self.b.ins().bxor_imm_u(a0, i64::from(1.0f32.to_bits()));
-        let any = self.b.ins().bor(a, d);
-        self.b.ins().icmp_imm_u(IntCC::Equal, any, 0)
+        self.plane_is_one(planes, slot::INV_W)
     }
 
     /// Planes `ks` at the lanes, each divided by the 1/w plane (times
@@ -91,36 +82,87 @@ impl Gen<'_> {
             return divided(self, w);
         };
         let need_w = keep_w && g.w.is_none();
-        let (fast, slow, merge) = (self.b.create_block(), self.b.create_block(), self.b.create_block());
-        for _ in 0..ks.len() + usize::from(need_w) {
-            self.b.append_block_param(merge, F32X4);
-        }
-        self.b.ins().brif(w_one, fast, &[], slow, &[]);
-        // Constants made in one arm do not dominate the other or the merge.
-        let (consts, fconsts) = (self.consts.len(), self.fconsts.len());
-        self.b.switch_to_block(fast);
-        let mut args: Vec<BlockArg> = ks.iter().map(|&k| self.plane(planes, k, px, row).into()).collect();
-        if need_w {
-            args.push(self.fconst(1.0).into());
-        }
-        self.b.ins().jump(merge, &args);
-        self.consts.truncate(consts);
-        self.fconsts.truncate(fconsts);
-        self.b.switch_to_block(slow);
-        let w = self.w(g, planes, px, row);
-        let mut args: Vec<BlockArg> = divided(self, w).into_iter().map(Into::into).collect();
-        if need_w {
-            args.push(w.into());
-        }
-        self.b.ins().jump(merge, &args);
-        self.consts.truncate(consts);
-        self.fconsts.truncate(fconsts);
-        self.b.switch_to_block(merge);
-        let params = self.b.block_params(merge).to_vec();
+        let g_w = g.w;
+        let params = self.diamond(
+            w_one,
+            |s| {
+                let mut v: Vec<Value> = ks.iter().map(|&k| s.plane(planes, k, px, row)).collect();
+                if need_w {
+                    v.push(s.fconst(1.0));
+                }
+                v
+            },
+            |s| {
+                let w = match g_w {
+                    Some(w) => w,
+                    None => s.inverse_w(planes, px, row),
+                };
+                let mut v = divided(s, w);
+                if need_w {
+                    v.push(w);
+                }
+                v
+            },
+        );
         if need_w {
             g.w = params.last().copied();
         }
         params[..ks.len()].to_vec()
+    }
+
+    /// `fast`'s values where `flag` is set, else `slow`'s (as many, each
+    /// `f32x4`): a branch and a merge. Constants either arm makes are
+    /// forgotten after it (they dominate neither the other arm nor the merge).
+    pub(super) fn diamond(
+        &mut self,
+        flag: Value,
+        fast: impl FnOnce(&mut Self) -> Vec<Value>,
+        slow: impl FnOnce(&mut Self) -> Vec<Value>,
+    ) -> Vec<Value> {
+        let (fast_b, slow_b, merge) = (self.b.create_block(), self.b.create_block(), self.b.create_block());
+        self.b.ins().brif(flag, fast_b, &[], slow_b, &[]);
+        let (consts, fconsts) = (self.consts.len(), self.fconsts.len());
+        let arm = |s: &mut Self, block, f: &mut dyn FnMut(&mut Self) -> Vec<Value>| {
+            s.b.switch_to_block(block);
+            let v = f(s);
+            if s.b.block_params(merge).is_empty() {
+                for _ in 0..v.len() {
+                    s.b.append_block_param(merge, F32X4);
+                }
+            }
+            let args: Vec<BlockArg> = v.into_iter().map(Into::into).collect();
+            s.b.ins().jump(merge, &args);
+            s.consts.truncate(consts);
+            s.fconsts.truncate(fconsts);
+        };
+        let mut fast = Some(fast);
+        let mut slow = Some(slow);
+        arm(self, fast_b, &mut |s| (fast.take().expect("called once"))(s));
+        arm(self, slow_b, &mut |s| (slow.take().expect("called once"))(s));
+        self.b.switch_to_block(merge);
+        self.b.block_params(merge).to_vec()
+    }
+
+    /// Whether plane `k` at `planes` is exactly 1 at every pixel, as
+    /// [`Self::w_is_one`].
+    pub(super) fn plane_is_one(&mut self, planes: Value, k: usize) -> Value {
+        let load = |s: &mut Self, c: usize| {
+            let off = offset_of!(Planes, coeffs) + (3 * k + c) * 16;
+            s.b.ins().load(types::I32, mem(), planes, off as i32)
+        };
+        let (a0, dadx, dady) = (load(self, 0), load(self, 1), load(self, 2));
+        let d = self.b.ins().bor(dadx, dady);
+        let d = self.b.ins().band_imm_u(d, 0x7fff_ffff);
+        let a = self.b.ins().bxor_imm_u(a0, i64::from(1.0f32.to_bits()));
+        let any = self.b.ins().bor(a, d);
+        self.b.ins().icmp_imm_u(IntCC::Equal, any, 0)
+    }
+
+    /// `1 / (1/w)` at `(px, row)`.
+    pub(super) fn inverse_w(&mut self, planes: Value, px: Value, row: Value) -> Value {
+        let iw = self.plane(planes, slot::INV_W, px, row);
+        let one = self.fconst(1.0);
+        self.b.ins().fdiv(one, iw)
     }
 
     /// `g.w`, or `1 / (1/w)` at the lanes (not kept: the caller keeps it
@@ -128,11 +170,7 @@ impl Gen<'_> {
     fn w(&mut self, g: &Group, planes: Value, px: Value, row: Value) -> Value {
         match g.w {
             Some(w) => w,
-            None => {
-                let iw = self.plane(planes, slot::INV_W, px, row);
-                let one = self.fconst(1.0);
-                self.b.ins().fdiv(one, iw)
-            }
+            None => self.inverse_w(planes, px, row),
         }
     }
 
