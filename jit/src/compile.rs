@@ -1444,8 +1444,9 @@ mod disasm {
     use super::*;
     use crate::key::{BlendKey, DepthKey, ShadeKey, StencilKey};
 
-    /// The `fill` frame's key (smooth colour, no tests) and the `ops` frame's.
-    fn keys() -> [(&'static str, FragmentKey); 3] {
+    /// The `fill` frame's key (smooth colour, no tests), the `ops` frame's
+    /// and the `tex` frame's.
+    fn keys() -> [(&'static str, FragmentKey); 4] {
         let base = FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), true);
         let shade = ShadeKey {
             color: true,
@@ -1482,7 +1483,39 @@ mod disasm {
             },
             ..tris
         };
-        [("fill", fill), ("tris", tris), ("ops", ops)]
+        use crate::texture::{
+            effective_combine, BaseFormat, CombineKey, DepthMode, EnvMode, Filter, MipFilter, SamplerKey,
+            SamplerStatics, TexTarget, TexUnitKey, TexelFormat, Wrap, MAX_UNITS,
+        };
+        let unit = TexUnitKey {
+            sampler: SamplerKey {
+                target: TexTarget::D2,
+                format: TexelFormat::Rgba8,
+                min: Filter::Linear,
+                mip: MipFilter::Linear,
+                mag: Filter::Linear,
+                wrap: [Wrap::Repeat; 3],
+                compare: None,
+                depth_mode: DepthMode::Luminance,
+                statics: SamplerStatics {
+                    pot: [true; 2],
+                    ..SamplerStatics::default()
+                },
+            },
+            base: BaseFormat::Rgba,
+            env: effective_combine(EnvMode::Modulate, BaseFormat::Rgba, CombineKey::DEFAULT),
+        };
+        let mut units = [None; MAX_UNITS];
+        units[0] = Some(unit);
+        let tex = FragmentKey {
+            shade: Some(ShadeKey {
+                tex: units,
+                fog: Some(crate::shade::FogMode::Exp),
+                ..ShadeKey { depth: true, ..shade }
+            }),
+            ..tris
+        };
+        [("fill", fill), ("tris", tris), ("ops", ops), ("tex", tex)]
     }
 
     #[test]
