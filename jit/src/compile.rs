@@ -265,6 +265,7 @@ struct Group {
     color_p: Value,
     depth_p: Value,
     stencil_p: Value,
+    /// The group's first lane, in the pointer type.
     lane0: Value,
     /// Depth values computed by the shading stage; else read from the span.
     z: Option<Value>,
@@ -393,9 +394,10 @@ impl<'a> Gen<'a> {
         // bits from it on and, for keys with a shading stage, the pixel x of
         // the group's lanes as f32 (exact: below 2^24).
         let head = self.b.create_block();
-        let lane0 = self.b.append_block_param(head, types::I32);
+        // The first lane in the pointer type: no extension a group.
+        let lane0 = self.b.append_block_param(head, self.ptr);
         let rest = self.b.append_block_param(head, types::I64);
-        let zero = self.b.ins().iconst(types::I32, 0);
+        let zero = self.b.ins().iconst(self.ptr, 0);
         let px = sv.planes.map(|(_, _, px0)| {
             let four = self.b.ins().f32const(4.0);
             (px0, self.b.ins().splat(types::F32X4, four))
@@ -510,7 +512,7 @@ impl<'a> Gen<'a> {
     /// The lane mask of group `g` and its span data.
     fn group(&mut self, sv: &SpanValues, lane0: Value, bits: Value) -> Group {
         let zero = self.splat(0);
-        let lane0_p = self.b.ins().uextend(self.ptr, lane0);
+        let lane0_p = lane0;
         let bpp = self.key.color_format.bytes_per_pixel() as i64;
         let off = self.scale(lane0_p, bpp);
         let color_p = self.b.ins().iadd(sv.color, off);
@@ -568,8 +570,7 @@ impl<'a> Gen<'a> {
             offset_of!(FragmentSpan, b),
             offset_of!(FragmentSpan, a),
         ][c];
-        let lane0_p = self.b.ins().uextend(self.ptr, lane0);
-        let p = self.b.ins().iadd(sv.span, lane0_p);
+        let p = self.b.ins().iadd(sv.span, lane0);
         let x = self.b.ins().uload8x8(mem(), p, field as i32);
         self.b.ins().uwiden_low(x)
     }
@@ -659,8 +660,7 @@ impl<'a> Gen<'a> {
                     let z = match g.z {
                         Some(z) => z,
                         None => {
-                            let lane0_p = self.b.ins().uextend(self.ptr, g.lane0);
-                            let zoff = self.scale(lane0_p, 4);
+                            let zoff = self.scale(g.lane0, 4);
                             let zp = self.b.ins().iadd(sv.span, zoff);
                             let z = self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32);
                             let max = self.splat(i64::from(format.max_value()));
