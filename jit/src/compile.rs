@@ -19,6 +19,27 @@
 //! fragment), the `ops` frame's specialists from 872 M to 650 M instructions
 //! a frame (the frame: 1597 M -> 1375 M).
 //!
+//! Then (issue 13; callgrind, `fill.c CASE 1` runs of two frames, one
+//! thread, `SOFTGL_JIT_TIER=optimized`; specialists' own instructions):
+//! - a span whose 1/w plane is exactly 1 (every `glOrtho` or untransformed
+//!   draw) takes the colours and texture coordinates from the planes
+//!   without dividing by 1/w or q (`shade::perspective`, `plain_coords`:
+//!   bit for bit what the division gives, see `w_is_one`);
+//! - the plane loads come in the order Cranelift folds one into its
+//!   fused multiply-add (4 instructions a plane, was 5);
+//! - untextured alpha is shaded alone for the alpha test, the other
+//!   channels only for groups the stencil and depth tests leave;
+//! - the scissor's columns narrow the span's live bits once (no test a
+//!   group), and the stages' integer uniforms come splatted
+//!   ([`SplatUniforms`]): one vector load each, was load, move, splat.
+//!
+//! `fill` 553.7 M -> 393.1 M (the `fill` group: 66 -> 52 instructions),
+//! `ops` 1300 M -> 920 M, `xor` 1226 M -> 846 M, `tex` 1935 M -> 1798 M.
+//! The price is compile time: the short paths are a branch and a second
+//! arm (release build, `compile_time` test below, medians on the loaded
+//! 2-core machine: `fill` 123 -> ~150 µs, `ops` 291 -> ~350 µs; the
+//! 256-key `thrash-first` frame stays about 1/30 of llvmpipe's).
+//!
 //! The function reads and writes whole groups of four pixels from the pointers
 //! in [`SpanCall`]: the caller (the `specialist` module) guarantees that
 //! `4 * groups` pixels are addressable from each of them.
