@@ -1433,6 +1433,12 @@ pub struct SplatUniforms {
     pub stencil_write_mask: [u32; 4],
     /// R, G, B, A, each in four lanes.
     pub blend_color: [[u32; 4]; 4],
+    /// The fog parameters (`FogUniforms::params`, f32 bits), then the
+    /// third and fourth negated (`-(c·p) == c·(-p)` bit for bit: no `fneg`
+    /// a group), each in four lanes.
+    pub fog_params: [[u32; 4]; 6],
+    /// The fog colour's R, G, B (f32 bits), each in four lanes.
+    pub fog_color: [[u32; 4]; 3],
     pub uniforms: FragmentUniforms,
 }
 
@@ -1446,6 +1452,12 @@ impl SplatUniforms {
             stencil_value_mask: lanes(u.stencil_value_mask),
             stencil_write_mask: lanes(u.stencil_write_mask),
             blend_color: u.blend_color.map(lanes),
+            fog_params: {
+                let p = u.fog.params;
+                let sign = 0x8000_0000;
+                [p[0], p[1], p[2], p[3], p[2] ^ sign, p[3] ^ sign].map(|v| [v; 4])
+            },
+            fog_color: u.fog.color.map(|v| [v; 4]),
             uniforms: *u,
         }
     }

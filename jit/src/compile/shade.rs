@@ -4,10 +4,9 @@
 //! multiply-adds exactly where it has them), so the bits equal the
 //! interpreter's.
 
-use super::{le, mem, uniform_offset, Gen, Group, SpanCall, SpanValues, I32X4};
+use super::{le, mem, Gen, Group, SpanCall, SpanValues, SplatUniforms, I32X4};
 use crate::key::{ColorFormat, DepthFormat, ShadeKey};
-use crate::shade::{exp2_coeffs, slot, FogMode, FogUniforms, Planes};
-use crate::uniforms::FragmentUniforms;
+use crate::shade::{exp2_coeffs, slot, FogMode, Planes};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
 use cranelift_codegen::ir::{types, BlockArg, InstBuilder, MemFlagsData, Value};
 use std::mem::offset_of;
@@ -250,8 +249,8 @@ impl Gen<'_> {
             let one = self.fconst(1.0);
             let inv = self.b.ins().fsub(one, f);
             for (k, ck) in c.iter_mut().take(3).enumerate() {
-                let off = uniform_offset(offset_of!(FragmentUniforms, fog) + offset_of!(FogUniforms, color) + 4 * k);
-                let fog = self.uniform_f32(sv.u, off);
+                let off = offset_of!(SplatUniforms, fog_color) + 16 * k;
+                let fog = self.b.ins().load(F32X4, mem().with_aligned(), sv.u, off as i32);
                 let a = self.b.ins().fmul(fog, inv);
                 let b = self.b.ins().fmul(*ck, f);
                 *ck = self.b.ins().fadd(a, b);
@@ -368,11 +367,6 @@ impl Gen<'_> {
         c
     }
 
-    fn uniform_f32(&mut self, u: Value, off: usize) -> Value {
-        let v = self.b.ins().load(types::F32, mem(), u, off as i32);
-        self.b.ins().splat(F32X4, v)
-    }
-
     /// `clamp(v, 0, 1)`, NaN as 0 (`crate::shade::saturate`).
     pub(super) fn saturate(&mut self, v: Value) -> Value {
         let ordered = self.b.ins().fcmp(FloatCC::Ordered, v, v);
@@ -411,11 +405,10 @@ impl Gen<'_> {
 
     /// The fog factor of `coord` (`crate::shade::fog_factor`).
     fn fog_factor(&mut self, mode: FogMode, coord: Value, u: Value) -> Value {
+        // `SplatUniforms::fog_params` `k`: one vector load.
         let p = |s: &mut Self, k: usize| {
-            s.uniform_f32(
-                u,
-                uniform_offset(offset_of!(FragmentUniforms, fog) + offset_of!(FogUniforms, params) + 4 * k),
-            )
+            let off = offset_of!(SplatUniforms, fog_params) + 16 * k;
+            s.b.ins().load(F32X4, mem().with_aligned(), u, off as i32)
         };
         let f = match mode {
             FogMode::Linear => {
@@ -424,16 +417,17 @@ impl Gen<'_> {
                 self.b.ins().fadd(t, p1)
             }
             FogMode::Exp => {
-                let p2 = p(self, 2);
-                let t = self.b.ins().fmul(coord, p2);
-                let x = self.b.ins().fneg(t);
+                // `-(c·p2)` as `c·(-p2)`: the same bits.
+                let minus_p2 = p(self, 4);
+                let x = self.b.ins().fmul(coord, minus_p2);
                 self.exp2(x)
             }
             FogMode::Exp2 => {
-                let p3 = p(self, 3);
+                // `-(t·t)` as `t·(c·(-p3))`: the same bits.
+                let (p3, minus_p3) = (p(self, 3), p(self, 5));
                 let t = self.b.ins().fmul(coord, p3);
-                let t2 = self.b.ins().fmul(t, t);
-                let x = self.b.ins().fneg(t2);
+                let minus_t = self.b.ins().fmul(coord, minus_p3);
+                let x = self.b.ins().fmul(t, minus_t);
                 self.exp2(x)
             }
         };
@@ -470,7 +464,11 @@ impl Gen<'_> {
         let x = self.select_if(FloatCC::LessThan, x, lo);
         let ipart = self.b.ins().floor(x);
         let fpart = self.b.ins().fsub(x, ipart);
-        let i = self.b.ins().fcvt_to_sint_sat(I32X4, ipart);
+        // `ipart` is an integer in `-127..=128` or NaN, and a NaN lane's
+        // result is NaN whatever `i` is (its polynomial is): x86's plain
+        // conversion (one instruction, `i32::MIN` for NaN) where the
+        // saturating one takes seven.
+        let i = self.int_lanes(ipart);
         let bias = self.splat(127);
         let i = self.b.ins().iadd(i, bias);
         let i = self.b.ins().ishl_imm_u(i, 23);
