@@ -33,8 +33,11 @@
 //!   group), and the stages' integer uniforms come splatted
 //!   ([`SplatUniforms`]): one vector load each, was load, move, splat.
 //!
-//! `fill` 553.7 M -> 393.1 M (the `fill` group: 66 -> 52 instructions),
-//! `ops` 1300 M -> 920 M, `xor` 1226 M -> 846 M, `tex` 1935 M -> 1798 M.
+//! `fill` 553.7 M -> 439.3 M (the `fill` group: 66 -> 52 instructions),
+//! `ops` 1300 M -> 912 M, `xor` 1226 M -> 837 M, `tex` 1935 M -> 1750 M
+//! (with the fog changes in `shade`); the frames' times against llvmpipe,
+//! one thread (`compare.sh 3`, one run): `fill` 1.04 -> 0.70, `ops` 1.17 ->
+//! 0.99, `xor` 1.25 -> 1.01, `tex` 1.18 -> 1.09.
 //! The price is compile time: the short paths are a branch and a second
 //! arm (release build, `compile_time` test below, medians on the loaded
 //! 2-core machine: `fill` 123 -> ~150 µs, `ops` 291 -> ~350 µs; the

@@ -401,9 +401,8 @@ impl Specialist {
 
     /// Runs `func` over `span` with `call` (whose `planes` and `tex` the
     /// caller set). A span sets only what is its own in the batch's call
-    /// record, and its bounds are worked out once (the `ops` frame's 2.4 M
-    /// spans a two-frame run: 143 -> 131 instructions each outside the
-    /// specialist).
+    /// record (the `ops` frame's 2.4 M spans a two-frame run: 143 -> 131
+    /// instructions each outside the specialist).
     fn run_span(
         &self,
         func: SpanFn,
