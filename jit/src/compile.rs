@@ -19,6 +19,30 @@
 //! fragment), the `ops` frame's specialists from 872 M to 650 M instructions
 //! a frame (the frame: 1597 M -> 1375 M).
 //!
+//! Then (issue 13; callgrind, `fill.c CASE 1` runs of two frames, one
+//! thread, `SOFTGL_JIT_TIER=optimized`; specialists' own instructions):
+//! - a span whose 1/w plane is exactly 1 (every `glOrtho` or untransformed
+//!   draw) takes the colours and texture coordinates from the planes
+//!   without dividing by 1/w or q (`shade::perspective`, `plain_coords`:
+//!   bit for bit what the division gives, see `w_is_one`);
+//! - the plane loads come in the order Cranelift folds one into its
+//!   fused multiply-add (4 instructions a plane, was 5);
+//! - untextured alpha is shaded alone for the alpha test, the other
+//!   channels only for groups the stencil and depth tests leave;
+//! - the scissor's columns narrow the span's live bits once (no test a
+//!   group), and the stages' integer uniforms come splatted
+//!   ([`SplatUniforms`]): one vector load each, was load, move, splat.
+//!
+//! `fill` 553.7 M -> 439.3 M (the `fill` group: 66 -> 52 instructions),
+//! `ops` 1300 M -> 912 M, `xor` 1226 M -> 837 M, `tex` 1935 M -> 1750 M
+//! (with the fog changes in `shade`); the frames' times against llvmpipe,
+//! one thread (`compare.sh 3`, one run): `fill` 1.04 -> 0.70, `ops` 1.17 ->
+//! 0.99, `xor` 1.25 -> 1.01, `tex` 1.18 -> 1.09.
+//! The price is compile time: the short paths are a branch and a second
+//! arm (release build, `compile_time` test below, medians on the loaded
+//! 2-core machine: `fill` 123 -> ~150 µs, `ops` 291 -> ~350 µs; the
+//! 256-key `thrash-first` frame stays about 1/30 of llvmpipe's).
+//!
 //! The function reads and writes whole groups of four pixels from the pointers
 //! in [`SpanCall`]: the caller (the `specialist` module) guarantees that
 //! `4 * groups` pixels are addressable from each of them.
@@ -98,7 +122,7 @@ pub struct SpanCall {
 }
 
 /// The signature of a compiled specialist.
-pub type SpanFn = unsafe extern "C" fn(call: *const SpanCall, uniforms: *const FragmentUniforms);
+pub type SpanFn = unsafe extern "C" fn(call: *const SpanCall, uniforms: *const SplatUniforms);
 
 /// Why a key could not be compiled.
 #[derive(Debug, thiserror::Error)]
@@ -235,10 +259,17 @@ struct SpanValues {
     depth: Value,
     stencil: Value,
     live: Value,
-    x0: Value,
     /// The planes pointer, the row splatted and the pixel x of the span's
     /// first four lanes, for keys with a shading stage.
     planes: Option<(Value, Value, Value)>,
+    /// Whether the span's primitive's 1/w plane is exactly 1 at every pixel
+    /// (`a0 == 1`, `dadx == dady == 0`: every `glOrtho` draw), for keys that
+    /// divide colours by it ([`Gen::perspective`]).
+    w_one: Option<Value>,
+    /// For each natively sampled unit of such a key: whether w and the
+    /// unit's q/w plane are both exactly 1 over the span (the unit's s and t
+    /// are then its planes' values).
+    tex_one: [Option<Value>; crate::texture::MAX_UNITS],
 }
 
 /// The fragment values of one group of four, as the stages update them.
@@ -258,6 +289,7 @@ struct Group {
     color_p: Value,
     depth_p: Value,
     stencil_p: Value,
+    /// The group's first lane, in the pointer type.
     lane0: Value,
     /// Depth values computed by the shading stage; else read from the span.
     z: Option<Value>,
@@ -265,6 +297,10 @@ struct Group {
     px: Option<Value>,
     /// `1 / (1/w)` at the lanes, once the shading stage has made it.
     w: Option<Value>,
+    /// Whether the alpha channel (`rgba[3]`) is already shaded: the alpha
+    /// test reads it before the stencil and depth tests, the other channels
+    /// wait for the groups that pass them.
+    alpha_shaded: bool,
 }
 
 struct Gen<'a> {
@@ -334,12 +370,24 @@ impl<'a> Gen<'a> {
             depth,
             stencil,
             live,
-            x0,
             planes: None,
+            w_one: None,
+            tex_one: [None; crate::texture::MAX_UNITS],
         };
         let mut sv = sv;
-        if self.key.shade.is_some() {
-            sv.planes = Some(self.planes_and_row(call, x0));
+        if let Some(shade) = self.key.shade {
+            let (planes, row, px0) = self.planes_and_row(call, x0);
+            sv.planes = Some((planes, row, px0));
+            if shade.color && !shade.flat {
+                let w_one = self.w_is_one(planes);
+                sv.w_one = Some(w_one);
+                for (u, unit) in shade.tex.iter().enumerate() {
+                    if unit.as_ref().is_some_and(|t| self.native_sampling && native_unit(t)) {
+                        let q_one = self.plane_is_one(planes, crate::shade::slot::tex(u) + 3);
+                        sv.tex_one[u] = Some(self.b.ins().band(w_one, q_one));
+                    }
+                }
+            }
         }
         let exit = self.b.create_block();
 
@@ -349,14 +397,20 @@ impl<'a> Gen<'a> {
                 .b
                 .ins()
                 .load(types::I32, mem(), span, offset_of!(FragmentSpan, y) as i32);
-            let sy0 = self.uniform_i32(u, offset_of!(FragmentUniforms, scissor) + 4);
-            let sy1 = self.uniform_i32(u, offset_of!(FragmentUniforms, scissor) + 12);
+            let sy0 = self.uniform_i32(u, uniform_offset(offset_of!(FragmentUniforms, scissor) + 4));
+            let sy1 = self.uniform_i32(u, uniform_offset(offset_of!(FragmentUniforms, scissor) + 12));
             let lo = self.b.ins().icmp(IntCC::SignedGreaterThanOrEqual, y, sy0);
             let hi = self.b.ins().icmp(IntCC::SignedLessThan, y, sy1);
             let inside = self.b.ins().band(lo, hi);
             let go = self.b.create_block();
             self.b.ins().brif(inside, go, &[], exit, &[]);
             self.b.switch_to_block(go);
+            // And its columns: the lanes outside them leave the live bits
+            // here (the scissor test comes first and a fragment it kills
+            // changes nothing), so no group tests them (the `ops` frame's
+            // groups: 13 instructions fewer).
+            let columns = self.scissor_columns(u, x0);
+            sv.live = self.b.ins().band(sv.live, columns);
         }
 
         // Groups of four from lane 0 while live lanes remain (the last live
@@ -364,9 +418,10 @@ impl<'a> Gen<'a> {
         // bits from it on and, for keys with a shading stage, the pixel x of
         // the group's lanes as f32 (exact: below 2^24).
         let head = self.b.create_block();
-        let lane0 = self.b.append_block_param(head, types::I32);
+        // The first lane in the pointer type: no extension a group.
+        let lane0 = self.b.append_block_param(head, self.ptr);
         let rest = self.b.append_block_param(head, types::I64);
-        let zero = self.b.ins().iconst(types::I32, 0);
+        let zero = self.b.ins().iconst(self.ptr, 0);
         let px = sv.planes.map(|(_, _, px0)| {
             let four = self.b.ins().f32const(4.0);
             (px0, self.b.ins().splat(types::F32X4, four))
@@ -414,12 +469,34 @@ impl<'a> Gen<'a> {
         self.b.ins().return_(&[]);
     }
 
-    fn uniform_i32(&mut self, u: Value, off: usize) -> Value {
-        self.b.ins().load(types::I32, mem(), u, off as i32)
+    /// The bits of the span's lanes inside the scissor box's columns
+    /// `x0 <= x < x1` (as `i32`s, the compare the interpreter makes), in
+    /// `i64` so that no difference overflows.
+    fn scissor_columns(&mut self, u: Value, span_x: Value) -> Value {
+        let x = self.b.ins().uextend(types::I64, span_x);
+        let zero = self.b.ins().iconst(types::I64, 0);
+        let all = self.b.ins().iconst(types::I64, 64);
+        let lanes_below = |g: &mut Self, off: usize| {
+            let bound = g.uniform_i32(u, uniform_offset(offset_of!(FragmentUniforms, scissor) + off));
+            let bound = g.b.ins().sextend(types::I64, bound);
+            let n = g.b.ins().isub(bound, x);
+            let n = g.b.ins().smax(n, zero);
+            let n = g.b.ins().smin(n, all);
+            // The bits of lanes `0..n`: `(1 << n) - 1`, all of them for 64.
+            let one = g.b.ins().iconst(types::I64, 1);
+            let bit = g.b.ins().ishl(one, n);
+            let below = g.b.ins().iadd_imm_u(bit, -1);
+            let every = g.b.ins().icmp_imm_u(IntCC::Equal, n, 64);
+            let ones = g.b.ins().iconst(types::I64, -1);
+            g.b.ins().select(every, ones, below)
+        };
+        let left = lanes_below(self, 0);
+        let right = lanes_below(self, 8);
+        self.b.ins().band_not(right, left)
     }
 
-    fn uniform_u8(&mut self, u: Value, off: usize) -> Value {
-        self.b.ins().uload8(types::I32, mem(), u, off as i32)
+    fn uniform_i32(&mut self, u: Value, off: usize) -> Value {
+        self.b.ins().load(types::I32, mem(), u, off as i32)
     }
 
     fn splat(&mut self, v: i64) -> Value {
@@ -459,7 +536,7 @@ impl<'a> Gen<'a> {
     /// The lane mask of group `g` and its span data.
     fn group(&mut self, sv: &SpanValues, lane0: Value, bits: Value) -> Group {
         let zero = self.splat(0);
-        let lane0_p = self.b.ins().uextend(self.ptr, lane0);
+        let lane0_p = lane0;
         let bpp = self.key.color_format.bytes_per_pixel() as i64;
         let off = self.scale(lane0_p, bpp);
         let color_p = self.b.ins().iadd(sv.color, off);
@@ -488,6 +565,7 @@ impl<'a> Gen<'a> {
             z: None,
             px: None,
             w: None,
+            alpha_shaded: false,
         }
     }
 
@@ -516,8 +594,7 @@ impl<'a> Gen<'a> {
             offset_of!(FragmentSpan, b),
             offset_of!(FragmentSpan, a),
         ][c];
-        let lane0_p = self.b.ins().uextend(self.ptr, lane0);
-        let p = self.b.ins().iadd(sv.span, lane0_p);
+        let p = self.b.ins().iadd(sv.span, lane0);
         let x = self.b.ins().uload8x8(mem(), p, field as i32);
         self.b.ins().uwiden_low(x)
     }
@@ -546,25 +623,22 @@ impl<'a> Gen<'a> {
             g.rgba[3] = self.span_channel(sv, g.lane0, 3);
         }
         for stage in stages.as_slice() {
-            if let (Some(shade), Stage::AlphaTest(_) | Stage::Blend(_) | Stage::Pack { .. }) = (colour_due, stage) {
-                self.shade_color(&mut g, sv, &shade);
-                colour_due = None;
+            match (colour_due, stage) {
+                // Untextured alpha depends on the alpha plane alone: the
+                // alpha test gets it now, the other channels are shaded only
+                // for the groups the stencil and depth tests leave (the `ops`
+                // frame's depth test kills most).
+                (Some(shade), Stage::AlphaTest(_)) if !shade.textured() => self.shade_alpha(&mut g, sv, &shade),
+                (Some(shade), Stage::AlphaTest(_) | Stage::Blend(_) | Stage::Pack { .. }) => {
+                    self.shade_color(&mut g, sv, &shade);
+                    colour_due = None;
+                }
+                _ => {}
             }
             match *stage {
                 Stage::Shade(_) => {}
-                Stage::Scissor => {
-                    let x = self.b.ins().iadd(sv.x0, g.lane0);
-                    let x = self.b.ins().splat(I32X4, x);
-                    let idx = self.vconst([0, 1, 2, 3]);
-                    let x = self.b.ins().iadd(x, idx);
-                    // `x0 > x` and `x1 > x`: one instruction each on x86-64.
-                    let left = self.b.ins().icmp(IntCC::SignedGreaterThan, u.scissor_x0, x);
-                    let hi = self.b.ins().icmp(IntCC::SignedGreaterThan, u.scissor_x1, x);
-                    let live = self.live(&mut g);
-                    let live = self.b.ins().band(live, hi);
-                    g.live = Some(self.b.ins().band_not(live, left));
-                    self.skip_if_dead(&g, next);
-                }
+                // Tested once a span (`emit`).
+                Stage::Scissor => {}
                 Stage::AlphaTest(func) => {
                     // Alpha and the reference are bytes: signed compares
                     // (one instruction on x86-64) order them as unsigned.
@@ -610,8 +684,7 @@ impl<'a> Gen<'a> {
                     let z = match g.z {
                         Some(z) => z,
                         None => {
-                            let lane0_p = self.b.ins().uextend(self.ptr, g.lane0);
-                            let zoff = self.scale(lane0_p, 4);
+                            let zoff = self.scale(g.lane0, 4);
                             let zp = self.b.ins().iadd(sv.span, zoff);
                             let z = self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32);
                             let max = self.splat(i64::from(format.max_value()));
@@ -1276,8 +1349,6 @@ impl<'a> Gen<'a> {
 
 /// Uniform values splatted once per span, for the stages that read them.
 struct Uniforms {
-    scissor_x0: Value,
-    scissor_x1: Value,
     alpha_ref: Value,
     stencil_ref: Value,
     stencil_ref_masked: Value,
@@ -1292,8 +1363,6 @@ impl Uniforms {
         let key = g.key;
         let zero = g.splat(0);
         let mut out = Uniforms {
-            scissor_x0: zero,
-            scissor_x1: zero,
             alpha_ref: zero,
             stencil_ref: zero,
             stencil_ref_masked: zero,
@@ -1302,38 +1371,24 @@ impl Uniforms {
             blend_color: [zero; 4],
             dither: zero,
         };
-        let splat = |g: &mut Gen<'_>, v: Value| g.b.ins().splat(I32X4, v);
-        if key.scissor {
-            let x0 = g.uniform_i32(u, offset_of!(FragmentUniforms, scissor));
-            let x1 = g.uniform_i32(u, offset_of!(FragmentUniforms, scissor) + 8);
-            out.scissor_x0 = splat(g, x0);
-            out.scissor_x1 = splat(g, x1);
-        }
+        // Each one aligned vector load of its four lanes, made once a batch
+        // by `SplatUniforms::new`.
+        let load = |g: &mut Gen<'_>, off: usize| g.b.ins().load(I32X4, mem().with_aligned(), u, off as i32);
         if key.alpha_test.is_some() {
-            let a = g.uniform_u8(u, offset_of!(FragmentUniforms, alpha_ref));
-            out.alpha_ref = splat(g, a);
+            out.alpha_ref = load(g, offset_of!(SplatUniforms, alpha_ref));
         }
         if let (Some(st), true) = (key.stencil, key.stencil_buffer) {
             // What the test and the ops read (the loads are not removed when unused).
             let ops = [st.fail, st.zfail, st.zpass];
-            let compares = !matches!(st.func, CompareFunc::Always | CompareFunc::Never);
-            let replaces = ops.contains(&StencilOp::Replace);
-            let r = match compares || replaces {
-                true => g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_ref)),
-                false => zero,
-            };
-            if replaces {
-                out.stencil_ref = splat(g, r);
+            if ops.contains(&StencilOp::Replace) {
+                out.stencil_ref = load(g, offset_of!(SplatUniforms, stencil_ref));
             }
-            if compares {
-                let vm = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_value_mask));
-                let rm = g.b.ins().band(r, vm);
-                out.stencil_value_mask = splat(g, vm);
-                out.stencil_ref_masked = splat(g, rm);
+            if !matches!(st.func, CompareFunc::Always | CompareFunc::Never) {
+                out.stencil_value_mask = load(g, offset_of!(SplatUniforms, stencil_value_mask));
+                out.stencil_ref_masked = load(g, offset_of!(SplatUniforms, stencil_ref_masked));
             }
             if ops.iter().any(|&op| op != StencilOp::Keep) {
-                let wm = g.uniform_u8(u, offset_of!(FragmentUniforms, stencil_write_mask));
-                out.stencil_write_mask = splat(g, wm);
+                out.stencil_write_mask = load(g, offset_of!(SplatUniforms, stencil_write_mask));
             }
         }
         let constant = |f: BlendFactor| {
@@ -1353,8 +1408,7 @@ impl Uniforms {
                 .any(constant)
         }) {
             for c in 0..4 {
-                let v = g.uniform_u8(u, offset_of!(FragmentUniforms, blend_color) + c);
-                out.blend_color[c] = splat(g, v);
+                out.blend_color[c] = load(g, offset_of!(SplatUniforms, blend_color) + 16 * c);
             }
         }
         if key.dither && key.color_format.is_reduced() {
@@ -1362,6 +1416,60 @@ impl Uniforms {
         }
         out
     }
+}
+
+/// What a specialist's second argument points to: the integer uniforms the
+/// stages compare and select with, each in four lanes, then the
+/// [`FragmentUniforms`] themselves (which the shading stage reads as
+/// scalars). Made once a batch of spans (`Specialist::run_with_view`), so
+/// that a group loads each in one aligned vector load where loading,
+/// moving and splatting a scalar took 3 instructions (the `ops` frame's
+/// groups: 2 uniforms, 4 instructions fewer).
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug)]
+pub struct SplatUniforms {
+    pub alpha_ref: [u32; 4],
+    pub stencil_ref: [u32; 4],
+    /// `stencil_ref & stencil_value_mask`.
+    pub stencil_ref_masked: [u32; 4],
+    pub stencil_value_mask: [u32; 4],
+    pub stencil_write_mask: [u32; 4],
+    /// R, G, B, A, each in four lanes.
+    pub blend_color: [[u32; 4]; 4],
+    /// The fog parameters (`FogUniforms::params`, f32 bits), then the
+    /// third and fourth negated (`-(c·p) == c·(-p)` bit for bit: no `fneg`
+    /// a group), each in four lanes.
+    pub fog_params: [[u32; 4]; 6],
+    /// The fog colour's R, G, B (f32 bits), each in four lanes.
+    pub fog_color: [[u32; 4]; 3],
+    pub uniforms: FragmentUniforms,
+}
+
+impl SplatUniforms {
+    pub fn new(u: &FragmentUniforms) -> SplatUniforms {
+        let lanes = |v: u8| [u32::from(v); 4];
+        SplatUniforms {
+            alpha_ref: lanes(u.alpha_ref),
+            stencil_ref: lanes(u.stencil_ref),
+            stencil_ref_masked: lanes(u.stencil_ref & u.stencil_value_mask),
+            stencil_value_mask: lanes(u.stencil_value_mask),
+            stencil_write_mask: lanes(u.stencil_write_mask),
+            blend_color: u.blend_color.map(lanes),
+            fog_params: {
+                let p = u.fog.params;
+                let sign = 0x8000_0000;
+                [p[0], p[1], p[2], p[3], p[2] ^ sign, p[3] ^ sign].map(|v| [v; 4])
+            },
+            fog_color: u.fog.color.map(|v| [v; 4]),
+            uniforms: *u,
+        }
+    }
+}
+
+/// The offset of `FragmentUniforms` field offset `off` from a specialist's
+/// second argument.
+pub(crate) const fn uniform_offset(off: usize) -> usize {
+    offset_of!(SplatUniforms, uniforms) + off
 }
 
 #[cfg(test)]
@@ -1372,8 +1480,9 @@ mod disasm {
     use super::*;
     use crate::key::{BlendKey, DepthKey, ShadeKey, StencilKey};
 
-    /// The `fill` frame's key (smooth colour, no tests) and the `ops` frame's.
-    fn keys() -> [(&'static str, FragmentKey); 3] {
+    /// The `fill` frame's key (smooth colour, no tests), the `ops` frame's
+    /// and the `tex` frame's.
+    fn keys() -> [(&'static str, FragmentKey); 4] {
         let base = FragmentKey::new(ColorFormat::Rgba8, Some(DepthFormat::D24), true);
         let shade = ShadeKey {
             color: true,
@@ -1410,7 +1519,39 @@ mod disasm {
             },
             ..tris
         };
-        [("fill", fill), ("tris", tris), ("ops", ops)]
+        use crate::texture::{
+            effective_combine, BaseFormat, CombineKey, DepthMode, EnvMode, Filter, MipFilter, SamplerKey,
+            SamplerStatics, TexTarget, TexUnitKey, TexelFormat, Wrap, MAX_UNITS,
+        };
+        let unit = TexUnitKey {
+            sampler: SamplerKey {
+                target: TexTarget::D2,
+                format: TexelFormat::Rgba8,
+                min: Filter::Linear,
+                mip: MipFilter::Linear,
+                mag: Filter::Linear,
+                wrap: [Wrap::Repeat; 3],
+                compare: None,
+                depth_mode: DepthMode::Luminance,
+                statics: SamplerStatics {
+                    pot: [true; 2],
+                    ..SamplerStatics::default()
+                },
+            },
+            base: BaseFormat::Rgba,
+            env: effective_combine(EnvMode::Modulate, BaseFormat::Rgba, CombineKey::DEFAULT),
+        };
+        let mut units = [None; MAX_UNITS];
+        units[0] = Some(unit);
+        let tex = FragmentKey {
+            shade: Some(ShadeKey {
+                tex: units,
+                fog: Some(crate::shade::FogMode::Exp),
+                ..ShadeKey { depth: true, ..shade }
+            }),
+            ..tris
+        };
+        [("fill", fill), ("tris", tris), ("ops", ops), ("tex", tex)]
     }
 
     #[test]

@@ -302,6 +302,15 @@ fn planes(rng: &mut Rng) -> Planes {
         };
         p.set(k, a0, float(rng) * scale, float(rng) * scale);
     }
+    // 1/w exactly 1 (every glOrtho draw: the specialists skip the division),
+    // with slopes of either sign of zero, or 1 at the lanes' first pixel only.
+    let inv_w = softgl_jit::shade::slot::INV_W;
+    match rng.below(6) {
+        0 => p.set(inv_w, 1.0, 0.0, 0.0),
+        1 => p.set(inv_w, 1.0, -0.0, -0.0),
+        2 => p.set(inv_w, 1.0, 0.0, f32::MIN_POSITIVE),
+        _ => {}
+    }
     p
 }
 
@@ -736,18 +745,21 @@ fn tex_float(rng: &mut Rng, scale: f32) -> f32 {
     (rng.below(20001) as f32 / 5000.0 - 2.0) * scale
 }
 
-/// Planes with texture coordinates: 1/w mostly 1 and gently sloped,
+/// Planes with texture coordinates: 1/w mostly 1, constant or gently sloped,
 /// coordinates from [`tex_float`] with slopes from magnification to strong
 /// minification, q/w mostly 1/w or 1.
 fn textured_planes(rng: &mut Rng) -> Planes {
     let mut p = planes(rng);
-    if rng.below(4) != 0 {
-        p.set(
+    match rng.below(8) {
+        // w exactly 1 (glOrtho): the specialists' short path when q/w is 1 too.
+        0..=1 => p.constant(softgl_jit::shade::slot::INV_W, 1.0),
+        2..=6 => p.set(
             softgl_jit::shade::slot::INV_W,
             1.0,
             tex_float(rng, 1e-3),
             tex_float(rng, 1e-3),
-        );
+        ),
+        _ => {}
     }
     for u in 0..MAX_UNITS {
         for c in 0..4 {

@@ -41,6 +41,25 @@ pub(super) struct Projected {
     pub quad: Option<[[Value; 2]; 3]>,
 }
 
+impl Projected {
+    /// `at`, then the quad's points if any, as one list (2 or 8 values).
+    pub fn flat(&self) -> Vec<Value> {
+        let mut v = self.at.to_vec();
+        for p in self.quad.iter().flatten() {
+            v.extend(p);
+        }
+        v
+    }
+
+    /// The inverse of [`Self::flat`].
+    pub fn from_flat(v: &[Value]) -> Projected {
+        Projected {
+            at: [v[0], v[1]],
+            quad: (v.len() == 8).then(|| [[v[2], v[3]], [v[4], v[5]], [v[6], v[7]]]),
+        }
+    }
+}
+
 impl Gen<'_> {
     /// Unit `u`'s filtered RGBA (`crate::texture::sample_quad`), `view` the
     /// call's [`TexView`].

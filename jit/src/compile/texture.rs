@@ -50,10 +50,36 @@ impl Gen<'_> {
                 .iter()
                 .flatten()
                 .any(|t| native_unit(t) && needs_lod(&t.sampler));
-            let points = self.native_points(g, sv, lod);
+            let mut shared = None;
             for (u, unit) in key.tex.iter().enumerate() {
                 if let Some(unit) = unit.as_ref().filter(|t| native_unit(t)) {
-                    let c = self.project(sv, u, &points, needs_lod(&unit.sampler));
+                    let quad = needs_lod(&unit.sampler);
+                    let c = match sv.tex_one[u] {
+                        // w and q/w exactly 1 over the span: s and t are the
+                        // planes' values, without the divisions by 1/w at
+                        // the lanes and their quads and by q (the `tex`
+                        // frame's trilinear unit: 7 divisions and 24
+                        // instructions fewer a group).
+                        Some(flag) => {
+                            let v = self.diamond(
+                                flag,
+                                |s| s.plain_coords(g, sv, u, quad),
+                                |s| {
+                                    let points = s.native_points(g, sv, lod);
+                                    s.project(sv, u, &points, quad).flat()
+                                },
+                            );
+                            Projected::from_flat(&v)
+                        }
+                        None => {
+                            let points = match &shared {
+                                Some(p) => p,
+                                None => shared.insert(self.native_points(g, sv, lod)),
+                            };
+                            let points = points.clone();
+                            self.project(sv, u, &points, quad)
+                        }
+                    };
                     samples[u] = Some(self.sample_native((g, sv), (u, &unit.sampler), view, &c));
                 }
             }
@@ -86,6 +112,27 @@ impl Gen<'_> {
                     (x, y, self.b.ins().fdiv(one, iw))
                 }
             })
+            .collect()
+    }
+
+    /// Unit `u`'s s and t planes at the lanes and, with `quad`, at their
+    /// quads' top-left, top-right and bottom-left pixels (the points of
+    /// [`Self::native_points`]), as [`Projected::flat`] lists them: what
+    /// [`Self::project`] makes when w and q/w are exactly 1.
+    fn plain_coords(&mut self, g: &Group, sv: &SpanValues, u: usize, quad: bool) -> Vec<Value> {
+        let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
+        let px = g.px.expect("carried by the loop for keys with a shading stage");
+        let mut pts = vec![(px, row)];
+        if quad {
+            let one = self.fconst(1.0);
+            let (qx, _) = self.even(px);
+            let (qy, _) = self.even(row);
+            let qx1 = self.b.ins().fadd(qx, one);
+            let qy1 = self.b.ins().fadd(qy, one);
+            pts.extend([(qx, qy), (qx1, qy), (qx, qy1)]);
+        }
+        pts.into_iter()
+            .flat_map(|(x, y)| [0, 1].map(|k| self.plane(planes, slot::tex(u) + k, x, y)))
             .collect()
     }
 
