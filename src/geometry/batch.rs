@@ -8,8 +8,8 @@
 //! coordinate taken from the eye-space depth or from `glFogCoord`, the
 //! texture coordinates generated and transformed ([`crate::texture::texgen`]).
 
-use super::clip::{outcode, ClipVertex};
-use super::lighting::{LightInput, LightSetup};
+use super::clip::{outcode_f32, ClipVertex};
+use super::lighting::{LightInput, LightSetup, LitColors, ManyLit, CHUNK};
 use super::varying::{VaryingLayout, Varyings, MAX_VARYINGS};
 use super::Geometry;
 use super::InVertex;
@@ -19,6 +19,10 @@ use glam::{DVec4, Mat4, Vec4};
 
 /// Vertices transformed at once.
 pub const BATCH: usize = 256;
+
+/// The fewest vertices a refill lights with [`LightSetup::light_many`]
+/// (fewer go one at a time: its arrays cost more to set up than they save).
+const MANY_MIN: usize = 8;
 
 /// Where the fog coordinate of a vertex comes from.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -112,16 +116,7 @@ impl VertexStage<'_> {
                 normal: v.normal,
                 color: v.color,
             });
-            for (slot, c) in [
-                (slots.color, &lit.front),
-                (slots.back_color, &lit.back),
-                (slots.secondary, &lit.front_secondary),
-                (slots.back_secondary, &lit.back_secondary),
-            ] {
-                if let Some(o) = slot {
-                    out[o..o + 4].copy_from_slice(c);
-                }
-            }
+            slots.put_lit(&lit, out);
         } else {
             if let Some(o) = slots.color {
                 out[o..o + 4].copy_from_slice(&clamp_color(v.color));
@@ -130,6 +125,13 @@ impl VertexStage<'_> {
                 out[o..o + 4].copy_from_slice(&clamp_color(v.secondary));
             }
         }
+        self.transform_rest(slots, i, v, out)
+    }
+
+    /// The part of [`Self::transform_slots`] after the colours: the fog
+    /// coordinate, the texture coordinates, the clip position.
+    #[inline(always)]
+    fn transform_rest(&self, slots: &Slots, i: usize, v: &InVertex, out: &mut Varyings) -> Vec4 {
         if let Some(o) = slots.fog {
             out[o] = match self.fog {
                 FogSource::EyeDepth { row } => match self.lighting.as_ref().and_then(|l| l.eye_position(v.pos)) {
@@ -165,6 +167,21 @@ impl Slots {
             secondary: l.secondary(),
             back_secondary: l.back_secondary(),
             fog: l.fog(),
+        }
+    }
+
+    /// Writes lit colours into the slots the layout carries.
+    #[inline(always)]
+    fn put_lit(&self, lit: &LitColors, out: &mut Varyings) {
+        for (slot, c) in [
+            (self.color, &lit.front),
+            (self.back_color, &lit.back),
+            (self.secondary, &lit.front_secondary),
+            (self.back_secondary, &lit.back_secondary),
+        ] {
+            if let Some(o) = slot {
+                out[o..o + 4].copy_from_slice(c);
+            }
         }
     }
 }
@@ -292,6 +309,27 @@ impl<'a> VertexBatch<'a> {
         self.geometry.classify(out);
     }
 
+    /// [`Self::transform`] for vertices `first..first + out.len()` (at most
+    /// [`CHUNK`]) of a draw that [`LightSetup::light_many`] lights: the
+    /// normals gathered as each vertex is fetched, the colours then computed
+    /// for all of them at once, written, and the vertices classified.
+    fn transform_lit_chunk(&self, light: &LightSetup, first: usize, out: &mut [BatchVertex]) {
+        let mut normals = [[0.0f32; CHUNK]; 3];
+        for (k, o) in out.iter_mut().enumerate() {
+            let v = (self.fetch)(first + k);
+            let n = light.lighting_normal(v.normal);
+            (normals[0][k], normals[1][k], normals[2][k]) = (n[0], n[1], n[2]);
+            o.pos = self.stage.transform_rest(&self.slots, first + k, &v, &mut o.win.v);
+            o.edge = v.edge;
+        }
+        let mut lit = ManyLit::default();
+        light.light_many(&normals, out.len(), &mut lit);
+        for (k, o) in out.iter_mut().enumerate() {
+            self.slots.put_lit(&light.many_colors(&lit, k), &mut o.win.v);
+            self.geometry.classify(o);
+        }
+    }
+
     /// Makes the vertices of a primitive whose newest (largest) index is
     /// `newest` available to [`Self::vertex`]. Assembly asks for indices that
     /// never fall more than three behind the newest one (or for vertex 0), so
@@ -330,8 +368,22 @@ impl<'a> VertexBatch<'a> {
             0
         };
         let mut window = std::mem::take(&mut self.window);
-        for (k, out) in window[kept..n].iter_mut().enumerate() {
-            self.transform(base + kept + k, out);
+        match self
+            .stage
+            .lighting
+            .as_ref()
+            .filter(|l| l.lights_many() && self.stage.vertex_materials.is_empty() && n - kept >= MANY_MIN)
+        {
+            Some(light) => {
+                for (c, chunk) in window[kept..n].chunks_mut(CHUNK).enumerate() {
+                    self.transform_lit_chunk(light, base + kept + c * CHUNK, chunk);
+                }
+            }
+            None => {
+                for (k, out) in window[kept..n].iter_mut().enumerate() {
+                    self.transform(base + kept + k, out);
+                }
+            }
         }
         self.window = window;
         self.base = base;
@@ -350,8 +402,8 @@ impl<'a> VertexBatch<'a> {
             return self.window[..self.count].iter().any(|v| v.codes != (0, 0));
         }
         (0..self.count).any(|i| {
-            let p = (self.stage.mvp * (self.fetch)(i).pos).as_dvec4();
-            outcode(p, 1.0) != 0 || self.geometry.user.code(p) != 0
+            let p = self.stage.mvp * (self.fetch)(i).pos;
+            outcode_f32(p) != 0 || self.geometry.user.code(p.as_dvec4()) != 0
         })
     }
 

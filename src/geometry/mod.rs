@@ -19,6 +19,7 @@
 pub mod assemble;
 pub mod batch;
 pub mod clip;
+pub mod fma;
 pub mod lighting;
 pub mod varying;
 
@@ -119,6 +120,9 @@ struct Viewport {
     translate: [f32; 3],
     /// Scale and translate of y in llvmpipe's top-down frame.
     flipped_y: (f32, f32),
+    /// `scale`, `translate` (x, y, z) and `flipped_y` widened to f64 for
+    /// [`fma::fma_wide`], once a draw.
+    wide: [(f64, f64); 4],
 }
 
 /// Per-draw constants of the geometry pipeline.
@@ -155,6 +159,16 @@ impl<'s> Geometry<'s> {
                 ((f + n) / 2.0) as f32,
             ],
             flipped_y: (-(vh as f32) / 2.0, (fb.height() as f32 - vp.y as f32) - vh as f32 / 2.0),
+            wide: [(0.0, 0.0); 4],
+        };
+        let viewport = Viewport {
+            wide: [
+                (viewport.scale[0].into(), viewport.translate[0].into()),
+                (viewport.scale[1].into(), viewport.translate[1].into()),
+                (viewport.scale[2].into(), viewport.translate[2].into()),
+                (viewport.flipped_y.0.into(), viewport.flipped_y.1.into()),
+            ],
+            ..viewport
         };
         // With the scissor test on, rows and columns outside the box are not
         // rasterized at all (its fragments would all be discarded): piglit's
@@ -294,12 +308,16 @@ impl<'s> Geometry<'s> {
     /// which are then written into `v.win` (as `project_as(v, true)` maps them).
     #[inline]
     fn classify(&self, v: &mut batch::BatchVertex) {
-        let pos = v.pos.as_dvec4();
-        v.finite = pos.is_finite() && v.win.v[..self.finite_len].iter().all(|c| c.is_finite());
-        v.codes = (outcode(pos, 1.0), self.user.code(pos));
+        let pos = v.pos;
+        // Every slot tested (no early exit): a branch-free loop.
+        let finite = v.win.v[..self.finite_len]
+            .iter()
+            .fold(pos.is_finite(), |ok, c| ok & c.is_finite());
+        v.finite = finite;
+        v.codes = (clip::outcode_f32(pos), self.user.code(pos.as_dvec4()));
         v.inside = false;
-        if v.finite && v.codes == (0, 0) {
-            if let Some((x, y, y_down, z, inv_w)) = self.map(pos, true) {
+        if finite && v.codes == (0, 0) {
+            if let Some((x, y, y_down, z, inv_w)) = self.map_f32(pos, true) {
                 let w = &mut v.win;
                 (w.x, w.y, w.y_down, w.z, w.inv_w) = (x, y, y_down, z, inv_w);
                 v.inside = true;
@@ -368,20 +386,26 @@ impl<'s> Geometry<'s> {
     /// The window coordinates of [`Self::project_as`]: `(x, y, y_down, z, 1/w)`.
     #[inline]
     fn map(&self, pos: glam::DVec4, fused: bool) -> Option<(f32, f32, f32, f64, f32)> {
-        let p = pos.as_vec4();
+        self.map_f32(pos.as_vec4(), fused)
+    }
+
+    /// [`Self::map`] of a position given in f32.
+    #[inline(always)]
+    fn map_f32(&self, p: Vec4, fused: bool) -> Option<(f32, f32, f32, f64, f32)> {
         let inv_w = 1.0 / p.w;
-        let (s, t) = (self.viewport.scale, self.viewport.translate);
-        let map = |c: f32, s: f32, t: f32| {
+        let vp = &self.viewport;
+        let map = |c: f32, k: usize, s: f32, t: f32| {
             if fused {
-                (c * inv_w).mul_add(s, t)
+                fma::fma_wide(c * inv_w, vp.wide[k].0, vp.wide[k].1)
             } else {
                 c * inv_w * s + t
             }
         };
-        let x = map(p.x, s[0], t[0]);
-        let y = map(p.y, s[1], t[1]);
-        let y_down = map(p.y, self.viewport.flipped_y.0, self.viewport.flipped_y.1);
-        let z = map(p.z, s[2], t[2]);
+        let (s, t) = (vp.scale, vp.translate);
+        let x = map(p.x, 0, s[0], t[0]);
+        let y = map(p.y, 1, s[1], t[1]);
+        let y_down = map(p.y, 3, vp.flipped_y.0, vp.flipped_y.1);
+        let z = map(p.z, 2, s[2], t[2]);
         let ok = x.is_finite() && y.is_finite() && z.is_finite() && inv_w.is_finite();
         ok.then_some((x, y, y_down, f64::from(z), inv_w))
     }
