@@ -12,7 +12,8 @@ use super::clip::{outcode_f32, ClipVertex};
 use super::lighting::{LightInput, LightSetup, LitColors, ManyLit, CHUNK};
 use super::varying::{VaryingLayout, Varyings, MAX_VARYINGS};
 use super::Geometry;
-use super::InVertex;
+use super::{InVertex, Vertices};
+use std::borrow::Borrow;
 use crate::raster::RasterVertex;
 use crate::texture::texgen::TexCoordStage;
 use glam::{DVec4, Mat4, Vec4};
@@ -265,7 +266,7 @@ pub struct VertexBatch<'a> {
     stage: &'a VertexStage<'a>,
     slots: Slots,
     geometry: &'a Geometry<'a>,
-    fetch: &'a dyn Fn(usize) -> InVertex,
+    fetch: Vertices<'a>,
     count: usize,
     /// Index of `window[0]`.
     base: usize,
@@ -278,13 +279,13 @@ pub struct VertexBatch<'a> {
 }
 
 impl<'a> VertexBatch<'a> {
-    /// A batch over `count` vertices, `fetch(i)` giving vertex `i`, which
+    /// A batch over `count` vertices, `fetch` giving them, which
     /// `geometry` classifies and projects.
     pub fn new(
         stage: &'a VertexStage<'a>,
         geometry: &'a Geometry<'a>,
         count: usize,
-        fetch: &'a dyn Fn(usize) -> InVertex,
+        fetch: Vertices<'a>,
     ) -> VertexBatch<'a> {
         VertexBatch {
             stage,
@@ -302,30 +303,72 @@ impl<'a> VertexBatch<'a> {
     /// Transforms vertex `i` into `out`. Every vertex of the draw writes the
     /// same varying slots, so reusing an entry leaves nothing stale in them.
     #[inline]
-    fn transform(&self, i: usize, out: &mut BatchVertex) {
-        let v = (self.fetch)(i);
-        out.pos = self.stage.transform_slots(&self.slots, i, &v, &mut out.win.v);
+    fn transform(&self, i: usize, v: &InVertex, out: &mut BatchVertex) {
+        out.pos = self.stage.transform_slots(&self.slots, i, v, &mut out.win.v);
         out.edge = v.edge;
         self.geometry.classify(out);
+    }
+
+    /// Transforms vertices `first..first + out.len()` into `out`, each read
+    /// by `get(i)` (a reference into the draw's vertices, or one made).
+    #[inline(always)]
+    fn transform_run<V: Borrow<InVertex>>(&self, first: usize, out: &mut [BatchVertex], get: impl Fn(usize) -> V) {
+        let many = self.stage.lighting.as_ref().filter(|l| {
+            l.lights_many() && self.stage.vertex_materials.is_empty() && out.len() >= MANY_MIN
+        });
+        match many {
+            Some(light) => {
+                for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+                    self.transform_lit_chunk(light, first + c * CHUNK, chunk, &get);
+                }
+            }
+            None => {
+                for (k, o) in out.iter_mut().enumerate() {
+                    self.transform(first + k, get(first + k).borrow(), o);
+                }
+            }
+        }
     }
 
     /// [`Self::transform`] for vertices `first..first + out.len()` (at most
     /// [`CHUNK`]) of a draw that [`LightSetup::light_many`] lights: the
     /// normals gathered as each vertex is fetched, the colours then computed
     /// for all of them at once, written, and the vertices classified.
-    fn transform_lit_chunk(&self, light: &LightSetup, first: usize, out: &mut [BatchVertex]) {
+    #[inline(always)]
+    fn transform_lit_chunk<V: Borrow<InVertex>>(
+        &self,
+        light: &LightSetup,
+        first: usize,
+        out: &mut [BatchVertex],
+        get: &impl Fn(usize) -> V,
+    ) {
         let mut normals = [[0.0f32; CHUNK]; 3];
         for (k, o) in out.iter_mut().enumerate() {
-            let v = (self.fetch)(first + k);
+            let v = get(first + k);
+            let v = v.borrow();
             let n = light.lighting_normal(v.normal);
             (normals[0][k], normals[1][k], normals[2][k]) = (n[0], n[1], n[2]);
-            o.pos = self.stage.transform_rest(&self.slots, first + k, &v, &mut o.win.v);
+            o.pos = self.stage.transform_rest(&self.slots, first + k, v, &mut o.win.v);
             o.edge = v.edge;
         }
         let mut lit = ManyLit::default();
         light.light_many(&normals, out.len(), &mut lit);
-        for (k, o) in out.iter_mut().enumerate() {
-            self.slots.put_lit(&light.many_colors(&lit, k), &mut o.win.v);
+        // The slots to write and their columns, picked once a chunk (picked
+        // at each vertex, the choice cost 30 instructions a vertex on lit16).
+        let columns = light.many_columns(&lit);
+        let mut put = [(0, columns[0]); 4];
+        let mut len = 0;
+        let s = &self.slots;
+        for (slot, column) in [s.color, s.secondary, s.back_color, s.back_secondary].into_iter().zip(columns) {
+            if let Some(o) = slot.filter(|&o| o + 4 <= MAX_VARYINGS) {
+                put[len] = (o, column);
+                len += 1;
+            }
+        }
+        for (k, o) in out.iter_mut().enumerate().take(CHUNK) {
+            for &(at, (c, a)) in &put[..len] {
+                o.win.v[at..at + 4].copy_from_slice(&[c[0][k], c[1][k], c[2][k], a]);
+            }
             self.geometry.classify(o);
         }
     }
@@ -368,22 +411,10 @@ impl<'a> VertexBatch<'a> {
             0
         };
         let mut window = std::mem::take(&mut self.window);
-        match self
-            .stage
-            .lighting
-            .as_ref()
-            .filter(|l| l.lights_many() && self.stage.vertex_materials.is_empty() && n - kept >= MANY_MIN)
-        {
-            Some(light) => {
-                for (c, chunk) in window[kept..n].chunks_mut(CHUNK).enumerate() {
-                    self.transform_lit_chunk(light, base + kept + c * CHUNK, chunk);
-                }
-            }
-            None => {
-                for (k, out) in window[kept..n].iter_mut().enumerate() {
-                    self.transform(base + kept + k, out);
-                }
-            }
+        let out = &mut window[kept..n];
+        match self.fetch {
+            Vertices::Slice(s) => self.transform_run(base + kept, out, |i| &s[i]),
+            Vertices::Fetch(f) => self.transform_run(base + kept, out, f),
         }
         self.window = window;
         self.base = base;
@@ -402,7 +433,7 @@ impl<'a> VertexBatch<'a> {
             return self.window[..self.count].iter().any(|v| v.codes != (0, 0));
         }
         (0..self.count).any(|i| {
-            let p = self.stage.mvp * (self.fetch)(i).pos;
+            let p = self.stage.mvp * self.fetch.pos(i);
             outcode_f32(p) != 0 || self.geometry.user.code(p.as_dvec4()) != 0
         })
     }

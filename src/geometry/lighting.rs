@@ -836,6 +836,25 @@ impl LightSetup {
         }
     }
 
+    /// The colours of a [`LightSetup::light_many`] result as columns, in
+    /// the order of [`LitColors`]' fields (front, front secondary, back,
+    /// back secondary): each the red, green and blue of every vertex, and
+    /// the alpha they share. Vertex `v`'s colours are
+    /// [`LightSetup::many_colors`]`(m, v)`, read without picking each one.
+    pub fn many_columns<'m>(&self, m: &'m ManyLit) -> [([&'m [f32; CHUNK]; 3], f32); 4] {
+        static ZERO: [f32; CHUNK] = [0.0; CHUNK];
+        let sat = |x: f32| if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
+        let col = |c: &'m [[f32; CHUNK]; 3], a: f32| ([&c[0], &c[1], &c[2]], sat(a));
+        let zero = ([&ZERO, &ZERO, &ZERO], 0.0);
+        let back = self.two_side;
+        [
+            col(&m.acc[0][0], self.mats[0][2][3]),
+            if self.separate { col(&m.acc[0][1], 1.0) } else { zero },
+            if back { col(&m.acc[1][0], self.mats[1][2][3]) } else { zero },
+            if back && self.separate { col(&m.acc[1][1], 1.0) } else { zero },
+        ]
+    }
+
     /// The colours of vertex `v` of a [`LightSetup::light_many`] result:
     /// what [`LightSetup::light_vertex`] returns for it.
     #[inline(always)]
@@ -1351,6 +1370,10 @@ mod tests {
                             [c.front, c.front_secondary, c.back, c.back_secondary].map(|a| a.map(f32::to_bits))
                         };
                         assert_eq!(bits(&setup.light_vertex(&input)), bits(&setup.many_colors(&out, k)));
+                        let cols = setup.many_columns(&out).map(|(c, a)| [c[0][k], c[1][k], c[2][k], a]);
+                        let g = setup.many_colors(&out, k);
+                        let want = [g.front, g.front_secondary, g.back, g.back_secondary];
+                        assert_eq!(cols.map(|c| c.map(f32::to_bits)), want.map(|c| c.map(f32::to_bits)));
                         many += 1;
                     }
                 }

@@ -73,6 +73,27 @@ impl InVertex {
     }
 }
 
+/// Where a draw's vertices come from.
+#[derive(Clone, Copy)]
+pub enum Vertices<'a> {
+    /// Vertex `i` is `v[i]` (`glBegin`/`glEnd`), read in place: no call
+    /// and no copy of the vertex.
+    Slice(&'a [InVertex]),
+    /// `f(i)` makes vertex `i` (vertex arrays).
+    Fetch(&'a dyn Fn(usize) -> InVertex),
+}
+
+impl Vertices<'_> {
+    /// The object position of vertex `i`.
+    #[inline]
+    fn pos(&self, i: usize) -> Vec4 {
+        match self {
+            Vertices::Slice(v) => v[i].pos,
+            Vertices::Fetch(f) => f(i).pos,
+        }
+    }
+}
+
 /// How a draw hands its vertices over, as far as llvmpipe's quad split
 /// depends on it (`docs/llvmpipe-facts.md` §12).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -232,14 +253,14 @@ impl<'s> Geometry<'s> {
         }
     }
 
-    /// Draws `count` vertices, `fetch(i)` giving vertex `i`, as `mode` into
+    /// Draws `count` vertices, `fetch` giving them, as `mode` into
     /// `sink`, running `stage` over them in batches.
     pub fn draw(
         &self,
         stage: &VertexStage,
         (mode, source): (PrimitiveMode, DrawSource),
         count: usize,
-        fetch: &dyn Fn(usize) -> InVertex,
+        fetch: Vertices,
         sink: &mut dyn PrimSink,
     ) {
         if self.params.bounds.is_empty() {
