@@ -13,10 +13,10 @@ use super::lighting::{LightInput, LightSetup, LitColors, ManyLit, CHUNK};
 use super::varying::{VaryingLayout, Varyings, MAX_VARYINGS};
 use super::Geometry;
 use super::{InVertex, Vertices};
-use std::borrow::Borrow;
 use crate::raster::RasterVertex;
 use crate::texture::texgen::TexCoordStage;
 use glam::{DVec4, Mat4, Vec4};
+use std::borrow::Borrow;
 
 /// Vertices transformed at once.
 pub const BATCH: usize = 256;
@@ -313,9 +313,11 @@ impl<'a> VertexBatch<'a> {
     /// by `get(i)` (a reference into the draw's vertices, or one made).
     #[inline(always)]
     fn transform_run<V: Borrow<InVertex>>(&self, first: usize, out: &mut [BatchVertex], get: impl Fn(usize) -> V) {
-        let many = self.stage.lighting.as_ref().filter(|l| {
-            l.lights_many() && self.stage.vertex_materials.is_empty() && out.len() >= MANY_MIN
-        });
+        let many = self
+            .stage
+            .lighting
+            .as_ref()
+            .filter(|l| l.lights_many() && self.stage.vertex_materials.is_empty() && out.len() >= MANY_MIN);
         match many {
             Some(light) => {
                 for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
@@ -359,7 +361,10 @@ impl<'a> VertexBatch<'a> {
         let mut put = [(0, columns[0]); 4];
         let mut len = 0;
         let s = &self.slots;
-        for (slot, column) in [s.color, s.secondary, s.back_color, s.back_secondary].into_iter().zip(columns) {
+        for (slot, column) in [s.color, s.secondary, s.back_color, s.back_secondary]
+            .into_iter()
+            .zip(columns)
+        {
             if let Some(o) = slot.filter(|&o| o + 4 <= MAX_VARYINGS) {
                 put[len] = (o, column);
                 len += 1;

@@ -850,8 +850,16 @@ impl LightSetup {
         [
             col(&m.acc[0][0], self.mats[0][2][3]),
             if self.separate { col(&m.acc[0][1], 1.0) } else { zero },
-            if back { col(&m.acc[1][0], self.mats[1][2][3]) } else { zero },
-            if back && self.separate { col(&m.acc[1][1], 1.0) } else { zero },
+            if back {
+                col(&m.acc[1][0], self.mats[1][2][3])
+            } else {
+                zero
+            },
+            if back && self.separate {
+                col(&m.acc[1][1], 1.0)
+            } else {
+                zero
+            },
         ]
     }
 
