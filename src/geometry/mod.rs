@@ -144,6 +144,22 @@ struct Viewport {
     /// `scale`, `translate` (x, y, z) and `flipped_y` widened to f64 for
     /// [`fma::fma_wide`], once a draw.
     wide: [(f64, f64); 4],
+    /// Whether each of those scales is a power of two ([`fma::fma_by_pow2`]).
+    pow2: [bool; 4],
+}
+
+impl Viewport {
+    /// `fma(q, s, t)` for the scale and translate `s`, `t` of coordinate
+    /// `k` (x, y, z, then `flipped_y`), through [`fma::fma_by_pow2`] when
+    /// the scale is a power of two.
+    #[inline(always)]
+    fn fused(&self, q: f32, k: usize, s: f32, t: f32) -> f32 {
+        if self.pow2[k] {
+            fma::fma_by_pow2(q, s, t, self.wide[k])
+        } else {
+            fma::fma_wide(q, self.wide[k].0, self.wide[k].1)
+        }
+    }
 }
 
 /// Per-draw constants of the geometry pipeline.
@@ -183,6 +199,7 @@ impl<'s> Geometry<'s> {
             ],
             flipped_y: (-(vh as f32) / 2.0, (fb.height() as f32 - vp.y as f32) - vh as f32 / 2.0),
             wide: [(0.0, 0.0); 4],
+            pow2: [false; 4],
         };
         let viewport = Viewport {
             wide: [
@@ -191,6 +208,13 @@ impl<'s> Geometry<'s> {
                 (viewport.scale[2].into(), viewport.translate[2].into()),
                 (viewport.flipped_y.0.into(), viewport.flipped_y.1.into()),
             ],
+            pow2: [
+                viewport.scale[0],
+                viewport.scale[1],
+                viewport.scale[2],
+                viewport.flipped_y.0,
+            ]
+            .map(fma::is_pow2),
             ..viewport
         };
         // With the scissor test on, rows and columns outside the box are not
@@ -435,7 +459,7 @@ impl<'s> Geometry<'s> {
         let vp = &self.viewport;
         let map = |c: f32, k: usize, s: f32, t: f32| {
             if fused {
-                fma::fma_wide(c * inv_w, vp.wide[k].0, vp.wide[k].1)
+                vp.fused(c * inv_w, k, s, t)
             } else {
                 c * inv_w * s + t
             }
