@@ -128,7 +128,7 @@ mod tests {
         let b_of = |r: &mut Rng| {
             let e = (r.next() % 254) as i32 - 126;
             let b = 2f32.powi(e);
-            if r.next() % 2 == 0 {
+            if r.next() & 1 == 0 {
                 b
             } else {
                 -b
@@ -145,7 +145,7 @@ mod tests {
                 "{a:e} {b:e} {c:e}"
             );
             // The viewport's shape: a in [-1, 1], translate of the scale's size.
-            let a = f32::from_bits(r.next() & 0x3f7f_ffff) * if r.next() % 2 == 0 { 1.0 } else { -1.0 };
+            let a = f32::from_bits(r.next() & 0x3f7f_ffff) * if r.next() & 1 == 0 { 1.0 } else { -1.0 };
             let b = [0.5f32, 512.0, -512.0, 8.0, 4096.0][(r.next() % 5) as usize];
             for c in [b.abs(), 0.5, 1000.0, b.abs() + 1.0] {
                 let want = a.mul_add(b, c);
