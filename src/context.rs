@@ -11,7 +11,7 @@ use crate::framebuffer::{Clear, Framebuffer, FramebufferDesc, ReadFormat};
 use crate::geometry::batch::{FogSource, TexFetch, VertexStage};
 use crate::geometry::lighting::LightSetup;
 use crate::geometry::varying::VaryingLayout;
-use crate::geometry::{DrawSource, Geometry, InVertex, MAX_VIEWPORT};
+use crate::geometry::{DrawSource, Geometry, InVertex, Vertices, MAX_VIEWPORT};
 use crate::immediate::{self, VertexFormat};
 use crate::lighting::{
     ColorMaterialMode, LightModelParam, LightParam, LightParamName, Material, MaterialParam, MaterialParamName,
@@ -306,7 +306,7 @@ impl Varying {
 
 /// How a draw reads its vertices: `fetch(i)` is vertex `i`, `tex(i, u)` its
 /// texture coordinates for unit `u` (asked only for the units it samples).
-type Fetch<'a> = (&'a dyn Fn(usize) -> InVertex, &'a dyn Fn(usize, usize) -> Vec4);
+type Fetch<'a> = (Vertices<'a>, &'a dyn Fn(usize, usize) -> Vec4);
 
 /// A primitive between `begin` and `end`.
 /// What [`Begun`] holds, kept empty between primitives.
@@ -1061,7 +1061,7 @@ impl Context {
         let r = self.draw_with(
             (b.mode, source),
             b.verts.len(),
-            (&|i| b.verts[i], &tex),
+            (Vertices::Slice(&b.verts), &tex),
             &vertex_materials,
             varying,
         );
@@ -1201,7 +1201,7 @@ impl Context {
             per_vertex_color: varying.color,
         };
         let tex = |i: usize, u: usize| fetch_tex(arrays, first + i, u, &current);
-        let fetch: Fetch<'_> = (&|i| fetch(arrays, first + i, &current), &tex);
+        let fetch: Fetch<'_> = (Vertices::Fetch(&|i| fetch(arrays, first + i, &current)), &tex);
         self.draw_with((mode, source), count, fetch, &[], varying)
     }
 
@@ -1214,7 +1214,7 @@ impl Context {
         let current = self.current;
         let source = (mode, DrawSource::Elements);
         let tex = |k: usize, u: usize| fetch_tex(arrays, indices.get(k), u, &current);
-        let fetch: Fetch<'_> = (&|k| fetch(arrays, indices.get(k), &current), &tex);
+        let fetch: Fetch<'_> = (Vertices::Fetch(&|k| fetch(arrays, indices.get(k), &current)), &tex);
         self.draw_with(source, indices.len(), fetch, &[], Varying::of(arrays))
     }
 

@@ -18,6 +18,7 @@
 //! Lines: each end is moved once from the ends the step starts from, by the
 //! largest `t` of the planes it is outside of.
 
+use super::fma::fma;
 use super::varying::Varyings;
 use glam::DVec4;
 
@@ -140,6 +141,27 @@ pub fn outcode(p: DVec4, g: f64) -> u8 {
     (0..6).fold(0, |code, k| if dist(p, k, g) < 0.0 { code | (1 << k) } else { code })
 }
 
+/// [`outcode`] at guard scale 1 of a position given in f32 (what
+/// `outcode(p.as_dvec4(), 1.0)` returns), computed in f32, three planes a
+/// step (one add or subtract of four lanes): the sum or difference of two f32 values has the sign of the exact
+/// one in f32 as in f64 (rounding to nearest never crosses zero, and
+/// gradual underflow gives zero only for an exact zero; an overflow keeps
+/// its sign; NaN compares false in both). The batch classifies every
+/// vertex with it: 34 instructions a vertex in f64 on lit16 (callgrind; the
+/// conversions to f64 on top), about 26 here.
+#[inline(always)]
+pub fn outcode_f32(p: glam::Vec4) -> u8 {
+    let w = glam::Vec4::splat(p.w);
+    let zxy = glam::Vec4::new(p.z, p.x, p.y, 0.0);
+    // Bit 0, 1, 2: the near, left, bottom planes (`w + z`, `w + x`, `w + y`),
+    // then far, right, top (`w − z`, …).
+    let plus = (w + zxy).cmplt(glam::Vec4::ZERO).bitmask() & 7;
+    let minus = (w - zxy).cmplt(glam::Vec4::ZERO).bitmask() & 7;
+    /// Bits 0, 1, 2 moved to 0, 2, 4.
+    const SPREAD: [u8; 8] = [0, 1, 4, 5, 16, 17, 20, 21];
+    SPREAD[plus as usize] | SPREAD[minus as usize] << 1
+}
+
 /// The enabled user clip planes of a draw, in clip coordinates, and how
 /// llvmpipe evaluates them (`docs/llvmpipe-facts.md` § "User clip planes").
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -161,7 +183,7 @@ impl UserPlanes {
         let p = p.as_vec4();
         (0..6).fold(0, |code, i| {
             let q = &self.planes[i];
-            let d = q[3].mul_add(p.w, q[2].mul_add(p.z, q[1].mul_add(p.y, q[0] * p.x)));
+            let d = fma(q[3], p.w, fma(q[2], p.z, fma(q[1], p.y, q[0] * p.x)));
             if self.enabled & (1 << i) != 0 && 0.0 > d {
                 code | (1 << i)
             } else {
@@ -339,4 +361,53 @@ fn clip_segment_f32(
         *b
     };
     Some((a2, b2))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn outcode_f32_equals_outcode_in_f64() {
+        let vals = [
+            0.0f32,
+            -0.0,
+            1.0,
+            -1.0,
+            0.5,
+            1e-45,
+            -1e-45,
+            1e-30,
+            -1e-30,
+            3.4028235e38,
+            -3.4028235e38,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            1.0 + f32::EPSILON,
+            -(1.0 + f32::EPSILON),
+        ];
+        let mut seed = 0x1234_5678_9abc_def0u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            f32::from_bits((seed >> 16) as u32)
+        };
+        let check = |p: glam::Vec4| assert_eq!(outcode_f32(p), outcode(p.as_dvec4(), 1.0), "{p:?}");
+        for &x in &vals {
+            for &y in &vals {
+                for &z in &vals {
+                    for &w in &vals {
+                        check(glam::Vec4::new(x, y, z, w));
+                    }
+                }
+            }
+        }
+        for _ in 0..1_000_000 {
+            let w = next();
+            let p = glam::Vec4::new(next(), -w * (1.0 + next().clamp(-1e-6, 1e-6)), next(), w);
+            check(p);
+        }
+    }
 }

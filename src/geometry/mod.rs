@@ -19,6 +19,7 @@
 pub mod assemble;
 pub mod batch;
 pub mod clip;
+pub mod fma;
 pub mod lighting;
 pub mod varying;
 
@@ -72,6 +73,27 @@ impl InVertex {
     }
 }
 
+/// Where a draw's vertices come from.
+#[derive(Clone, Copy)]
+pub enum Vertices<'a> {
+    /// Vertex `i` is `v[i]` (`glBegin`/`glEnd`), read in place: no call
+    /// and no copy of the vertex.
+    Slice(&'a [InVertex]),
+    /// `f(i)` makes vertex `i` (vertex arrays).
+    Fetch(&'a dyn Fn(usize) -> InVertex),
+}
+
+impl Vertices<'_> {
+    /// The object position of vertex `i`.
+    #[inline]
+    fn pos(&self, i: usize) -> Vec4 {
+        match self {
+            Vertices::Slice(v) => v[i].pos,
+            Vertices::Fetch(f) => f(i).pos,
+        }
+    }
+}
+
 /// How a draw hands its vertices over, as far as llvmpipe's quad split
 /// depends on it (`docs/llvmpipe-facts.md` §12).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -119,6 +141,25 @@ struct Viewport {
     translate: [f32; 3],
     /// Scale and translate of y in llvmpipe's top-down frame.
     flipped_y: (f32, f32),
+    /// `scale`, `translate` (x, y, z) and `flipped_y` widened to f64 for
+    /// [`fma::fma_wide`], once a draw.
+    wide: [(f64, f64); 4],
+    /// Whether each of those scales is a power of two ([`fma::fma_by_pow2`]).
+    pow2: [bool; 4],
+}
+
+impl Viewport {
+    /// `fma(q, s, t)` for the scale and translate `s`, `t` of coordinate
+    /// `k` (x, y, z, then `flipped_y`), through [`fma::fma_by_pow2`] when
+    /// the scale is a power of two.
+    #[inline(always)]
+    fn fused(&self, q: f32, k: usize, s: f32, t: f32) -> f32 {
+        if self.pow2[k] {
+            fma::fma_by_pow2(q, s, t, self.wide[k])
+        } else {
+            fma::fma_wide(q, self.wide[k].0, self.wide[k].1)
+        }
+    }
 }
 
 /// Per-draw constants of the geometry pipeline.
@@ -138,6 +179,8 @@ pub struct Geometry<'s> {
     user: UserPlanes,
     /// `layout.finite_len()`, asked at every vertex.
     finite_len: usize,
+    /// `layout.fog()`, asked at every lit vertex.
+    fog_slot: Option<usize>,
 }
 
 impl<'s> Geometry<'s> {
@@ -155,6 +198,24 @@ impl<'s> Geometry<'s> {
                 ((f + n) / 2.0) as f32,
             ],
             flipped_y: (-(vh as f32) / 2.0, (fb.height() as f32 - vp.y as f32) - vh as f32 / 2.0),
+            wide: [(0.0, 0.0); 4],
+            pow2: [false; 4],
+        };
+        let viewport = Viewport {
+            wide: [
+                (viewport.scale[0].into(), viewport.translate[0].into()),
+                (viewport.scale[1].into(), viewport.translate[1].into()),
+                (viewport.scale[2].into(), viewport.translate[2].into()),
+                (viewport.flipped_y.0.into(), viewport.flipped_y.1.into()),
+            ],
+            pow2: [
+                viewport.scale[0],
+                viewport.scale[1],
+                viewport.scale[2],
+                viewport.flipped_y.0,
+            ]
+            .map(fma::is_pow2),
+            ..viewport
         };
         // With the scissor test on, rows and columns outside the box are not
         // rasterized at all (its fragments would all be discarded): piglit's
@@ -193,6 +254,7 @@ impl<'s> Geometry<'s> {
             layout,
             user: UserPlanes::default(),
             finite_len: layout.finite_len(),
+            fog_slot: layout.fog(),
         }
     }
 
@@ -218,14 +280,14 @@ impl<'s> Geometry<'s> {
         }
     }
 
-    /// Draws `count` vertices, `fetch(i)` giving vertex `i`, as `mode` into
+    /// Draws `count` vertices, `fetch` giving them, as `mode` into
     /// `sink`, running `stage` over them in batches.
     pub fn draw(
         &self,
         stage: &VertexStage,
         (mode, source): (PrimitiveMode, DrawSource),
         count: usize,
-        fetch: &dyn Fn(usize) -> InVertex,
+        fetch: Vertices,
         sink: &mut dyn PrimSink,
     ) {
         if self.params.bounds.is_empty() {
@@ -294,12 +356,31 @@ impl<'s> Geometry<'s> {
     /// which are then written into `v.win` (as `project_as(v, true)` maps them).
     #[inline]
     fn classify(&self, v: &mut batch::BatchVertex) {
-        let pos = v.pos.as_dvec4();
-        v.finite = pos.is_finite() && v.win.v[..self.finite_len].iter().all(|c| c.is_finite());
-        v.codes = (outcode(pos, 1.0), self.user.code(pos));
+        // Every slot tested (no early exit): a branch-free loop.
+        let finite = v.win.v[..self.finite_len].iter().fold(true, |ok, c| ok & c.is_finite());
+        self.classify_as(v, finite);
+    }
+
+    /// [`Self::classify`] for a vertex whose colour slots hold lit colours,
+    /// finite by construction (clamped, NaN made 0): of its varyings only
+    /// the fog coordinate is tested (the loop over all of them cost about
+    /// 20 instructions a vertex on lit16, callgrind).
+    #[inline]
+    fn classify_lit(&self, v: &mut batch::BatchVertex) {
+        let finite = self.fog_slot.is_none_or(|o| v.win.v[o].is_finite());
+        self.classify_as(v, finite);
+    }
+
+    /// [`Self::classify`] given whether the varyings are finite.
+    #[inline(always)]
+    fn classify_as(&self, v: &mut batch::BatchVertex, varyings_finite: bool) {
+        let pos = v.pos;
+        let finite = pos.is_finite() & varyings_finite;
+        v.finite = finite;
+        v.codes = (clip::outcode_f32(pos), self.user.code(pos.as_dvec4()));
         v.inside = false;
-        if v.finite && v.codes == (0, 0) {
-            if let Some((x, y, y_down, z, inv_w)) = self.map(pos, true) {
+        if finite && v.codes == (0, 0) {
+            if let Some((x, y, y_down, z, inv_w)) = self.map_f32(pos, true) {
                 let w = &mut v.win;
                 (w.x, w.y, w.y_down, w.z, w.inv_w) = (x, y, y_down, z, inv_w);
                 v.inside = true;
@@ -368,20 +449,26 @@ impl<'s> Geometry<'s> {
     /// The window coordinates of [`Self::project_as`]: `(x, y, y_down, z, 1/w)`.
     #[inline]
     fn map(&self, pos: glam::DVec4, fused: bool) -> Option<(f32, f32, f32, f64, f32)> {
-        let p = pos.as_vec4();
+        self.map_f32(pos.as_vec4(), fused)
+    }
+
+    /// [`Self::map`] of a position given in f32.
+    #[inline(always)]
+    fn map_f32(&self, p: Vec4, fused: bool) -> Option<(f32, f32, f32, f64, f32)> {
         let inv_w = 1.0 / p.w;
-        let (s, t) = (self.viewport.scale, self.viewport.translate);
-        let map = |c: f32, s: f32, t: f32| {
+        let vp = &self.viewport;
+        let map = |c: f32, k: usize, s: f32, t: f32| {
             if fused {
-                (c * inv_w).mul_add(s, t)
+                vp.fused(c * inv_w, k, s, t)
             } else {
                 c * inv_w * s + t
             }
         };
-        let x = map(p.x, s[0], t[0]);
-        let y = map(p.y, s[1], t[1]);
-        let y_down = map(p.y, self.viewport.flipped_y.0, self.viewport.flipped_y.1);
-        let z = map(p.z, s[2], t[2]);
+        let (s, t) = (vp.scale, vp.translate);
+        let x = map(p.x, 0, s[0], t[0]);
+        let y = map(p.y, 1, s[1], t[1]);
+        let y_down = map(p.y, 3, vp.flipped_y.0, vp.flipped_y.1);
+        let z = map(p.z, 2, s[2], t[2]);
         let ok = x.is_finite() && y.is_finite() && z.is_finite() && inv_w.is_finite();
         ok.then_some((x, y, y_down, f64::from(z), inv_w))
     }
