@@ -221,17 +221,24 @@ impl Scene {
         (r.x0 / TILE..r.x1.div_ceil(TILE), r.y0 / TILE..r.y1.div_ceil(TILE))
     }
 
-    #[inline]
+    /// Bins `entry` into the tiles `r` touches: one tile (most primitives of
+    /// a frame of small ones) inline, without the ranges.
+    #[inline(always)]
     fn bin(&mut self, r: Rect, entry: u32) {
-        let (xs, ys) = self.tiles_of(r);
-        if xs.len() == 1 && ys.len() == 1 {
-            // Most primitives of a frame of small ones.
-            if let Some(bin) = self.bins.get_mut((ys.start * self.tiles_x + xs.start) as usize) {
+        let (tx, ty) = (r.x0 / TILE, r.y0 / TILE);
+        if r.x1 > r.x0 && r.y1 > r.y0 && (r.x1 - 1) / TILE == tx && (r.y1 - 1) / TILE == ty {
+            if let Some(bin) = self.bins.get_mut((ty * self.tiles_x + tx) as usize) {
                 bin.push(entry);
                 self.bytes += 4;
             }
             return;
         }
+        self.bin_tiles(r, entry);
+    }
+
+    #[inline(never)]
+    fn bin_tiles(&mut self, r: Rect, entry: u32) {
+        let (xs, ys) = self.tiles_of(r);
         for ty in ys {
             for tx in xs.clone() {
                 self.bins[(ty * self.tiles_x + tx) as usize].push(entry);
@@ -446,8 +453,18 @@ impl Binner<'_> {
     }
 
     /// The draw's index in the scene, recording it with the first primitive.
-    #[inline]
+    #[inline(always)]
     fn draw(&mut self) -> u32 {
+        match self.draw {
+            Some(d) => d,
+            None => self.first_draw(),
+        }
+    }
+
+    /// [`Binner::draw`] at the draw's first primitive (after a flush too):
+    /// out of line, so that the others cost a test.
+    #[inline(never)]
+    fn first_draw(&mut self) -> u32 {
         match self.draw {
             Some(d) => d,
             // The scene's last draw runs with the same state: its primitives
@@ -505,7 +522,8 @@ impl Binner<'_> {
     }
 
     /// Records the primitive and bins it into the tiles `r` touches;
-    /// flushes past the bounds.
+    /// flushes past the bounds (out of line).
+    #[inline(always)]
     fn push(&mut self, r: Rect, draw: u32, kind: Kind, (first, vary): (u32, u32), flat: bool, params: &RasterParams) {
         let scene = &mut *self.scene;
         let entry = scene.prims.len() as u32;
@@ -520,11 +538,17 @@ impl Binner<'_> {
         scene.bytes += std::mem::size_of::<Binned>();
         scene.bin(r, entry);
         if scene.bytes > scene.bound() || scene.texture_bytes > TEXTURE_BOUND {
-            if let Err(e) = scene.flush(self.fb, self.threads) {
-                self.error.get_or_insert(e);
-            }
-            self.draw = None;
+            self.flush();
         }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn flush(&mut self) {
+        if let Err(e) = self.scene.flush(self.fb, self.threads) {
+            self.error.get_or_insert(e);
+        }
+        self.draw = None;
     }
 }
 

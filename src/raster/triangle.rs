@@ -200,7 +200,37 @@ impl Prepared {
         let small = min_x > -SMALL && max_x < SMALL && min_y > -SMALL && max_y < SMALL;
         let p = ccw(p, small)?;
         let (px, py) = ((x0 as u32, x1 as u32), (y0 as u32, y1 as u32));
-        let cover = if x1 - x0 < MASK && y1 - y0 < MASK && small {
+        let cover = if x0 == x1 && y0 == y1 && small {
+            // One pixel (most of a finely tessellated sphere's triangles
+            // that cover any): its centre alone, no mask loop; what the
+            // mask below makes of it (one bit of one, inside).
+            let [e0, e1, e2] = edges_of(p);
+            let at = |e: &Edge| e.dx * (y0 * ONE - e.a.1) - e.dy * (x0 * ONE - e.a.0) - e.k;
+            if (at(&e0) | at(&e1) | at(&e2)) < 0 {
+                return None;
+            }
+            Cover::Inside
+        } else if x1 - x0 < 2 && y1 - y0 < 2 && small {
+            // At most 2×2 pixels (most of the rest): the mask below, its
+            // four tests without a loop.
+            let [e0, e1, e2] = edges_of(p);
+            let at = |e: &Edge| e.dx * (y0 * ONE - e.a.1) - e.dy * (x0 * ONE - e.a.0) - e.k;
+            let (r0, r1, r2) = (at(&e0), at(&e1), at(&e2));
+            let (sx0, sx1, sx2) = (-e0.dy * ONE, -e1.dy * ONE, -e2.dy * ONE);
+            let (sy0, sy1, sy2) = (e0.dx * ONE, e1.dx * ONE, e2.dx * ONE);
+            let (wide, tall) = (x1 > x0, y1 > y0);
+            let inside = |c0: i64, c1: i64, c2: i64| u64::from((c0 | c1 | c2) >= 0);
+            let m = inside(r0, r1, r2)
+                | (inside(r0 + sx0, r1 + sx1, r2 + sx2) & u64::from(wide)) << 1
+                | (inside(r0 + sy0, r1 + sy1, r2 + sy2) & u64::from(tall)) << MASK
+                | (inside(r0 + sx0 + sy0, r1 + sx1 + sy1, r2 + sx2 + sy2) & u64::from(wide & tall)) << (MASK + 1);
+            let all = 1 | u64::from(wide) << 1 | u64::from(tall) << MASK | u64::from(wide & tall) << (MASK + 1);
+            match m {
+                0 => return None,
+                m if m == all => Cover::Inside,
+                m => Cover::Masks(m),
+            }
+        } else if x1 - x0 < MASK && y1 - y0 < MASK && small {
             // Within ±2^29 units and a box within ±2^21 pixels every edge
             // function is exact in i64 (`edges::SMALL`).
             let (w, h) = (x1 - x0 + 1, y1 - y0 + 1);
