@@ -33,8 +33,9 @@ unsafe fn fetch(a: &ClientArray, i: usize, normalize: bool, out: &mut Vec<f32>) 
     let base = unsafe { a.ptr.add(i * stride) };
     if a.ty == GL_FLOAT {
         // The common type, its components copied as they are, without the
-        // per-component match below (the thrash frame's arrays: 113
-        // instructions a vertex went to this function with the match).
+        // per-component match below. With each array reserved once
+        // (`gather`), the thrash frame's element fetch went from about 105
+        // instructions to 55 (callgrind, 460,800 calls).
         match n {
             // SAFETY: the element's 2 components, f32s read unaligned.
             2 => out.extend_from_slice(&unsafe { base.cast::<[f32; 2]>().read_unaligned() }),
@@ -155,6 +156,9 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
     for (v, a) in coords.iter_mut().zip(tex) {
         reserve(v, a);
     }
+    // (Untextured draws skip the units' loop at every vertex: with the
+    // reservations above, `draw`'s own instructions over 6 thrash frames
+    // went from 16.0 M to 6.1 M.)
     let any_tex = tex.iter().any(Option::is_some);
     let mut count = 0;
     for i in indices {
