@@ -357,6 +357,8 @@ pub struct Context {
     threads: usize,
     /// The last untextured draw's plan, reused while nothing it was made of changes.
     plan_cache: Option<CachedPlan>,
+    /// The geometry's vertex window, reused by every draw (`batch::Window`).
+    window: crate::geometry::batch::Window,
 }
 
 /// A draw's plan (`plan`) and uniforms, and what they were made of: the
@@ -425,6 +427,7 @@ impl Context {
             spare: Spare::default(),
             threads: crate::raster::pool::default_threads(),
             plan_cache: None,
+            window: Default::default(),
         }
     }
 
@@ -1312,7 +1315,7 @@ impl Context {
             textures: textures.share(),
         };
         let mut binner = self.scene.draw(&mut self.fb, self.threads, state);
-        geometry.draw(&vertex_stage, mode, count, fetch, &mut binner);
+        geometry.draw(&vertex_stage, mode, count, fetch, &mut binner, &mut self.window);
         let r = binner.finish();
         self.record(r.map_err(|_| GlError::InvalidOperation))
     }

