@@ -320,9 +320,15 @@ impl Gen<'_> {
         // only guarantees it), rows made once.
         let wm = self.b.ins().isub(size[0], one);
         let hm = self.b.ins().isub(size[1], one);
-        let column = |s: &mut Self, x: Value| s.b.ins().umin(x, wm);
+        // An axis whose wrap ends in a mask with `len − 1` (REPEAT of a
+        // power of two) or a clamp to `0..=len − 1` (CLAMP_TO_EDGE) has its
+        // texels there whatever the lane held (NaN included): only REPEAT of
+        // other sizes (NaN through `fract`) keeps the clamp. 8 instructions
+        // a group on the tex frame.
+        let bounded = [0, 1].map(|a| key.wrap[a] == Wrap::ClampToEdge || (key.wrap[a] == Wrap::Repeat && pot[a]));
+        let column = |s: &mut Self, x: Value| if bounded[0] { x } else { s.b.ins().umin(x, wm) };
         let row = |s: &mut Self, y: Value| {
-            let y = s.b.ins().umin(y, hm);
+            let y = if bounded[1] { y } else { s.b.ins().umin(y, hm) };
             s.b.ins().imul(y, size[0])
         };
         match filter {
