@@ -87,9 +87,9 @@ impl Gen<'_> {
         self.environment(key, view, &samples, primary)
     }
 
-    /// The lanes' pixels and, with `quad`, the top-left, top-right and
-    /// bottom-left pixels of their quads, each with its w.
-    fn native_points(&mut self, g: &Group, sv: &SpanValues, quad: bool) -> Vec<(Value, Value, Value)> {
+    /// The span's planes, and the lanes' pixels (x, y) followed, with
+    /// `quad`, by the top-left, top-right and bottom-left pixels of their quads.
+    fn lane_points(&mut self, g: &Group, sv: &SpanValues, quad: bool) -> (Value, Vec<(Value, Value)>) {
         let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
         let px = g.px.expect("carried by the loop for keys with a shading stage");
         let mut pts = vec![(px, row)];
@@ -101,6 +101,13 @@ impl Gen<'_> {
             let qy1 = self.b.ins().fadd(qy, one);
             pts.extend([(qx, qy), (qx1, qy), (qx, qy1)]);
         }
+        (planes, pts)
+    }
+
+    /// The lanes' pixels and, with `quad`, the top-left, top-right and
+    /// bottom-left pixels of their quads, each with its w.
+    fn native_points(&mut self, g: &Group, sv: &SpanValues, quad: bool) -> Vec<(Value, Value, Value)> {
+        let (planes, pts) = self.lane_points(g, sv, quad);
         pts.into_iter()
             .enumerate()
             .map(|(p, (x, y))| match g.w.filter(|_| p == 0) {
@@ -120,17 +127,7 @@ impl Gen<'_> {
     /// [`Self::native_points`]), as [`Projected::flat`] lists them: what
     /// [`Self::project`] makes when w and q/w are exactly 1.
     fn plain_coords(&mut self, g: &Group, sv: &SpanValues, u: usize, quad: bool) -> Vec<Value> {
-        let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
-        let px = g.px.expect("carried by the loop for keys with a shading stage");
-        let mut pts = vec![(px, row)];
-        if quad {
-            let one = self.fconst(1.0);
-            let (qx, _) = self.even(px);
-            let (qy, _) = self.even(row);
-            let qx1 = self.b.ins().fadd(qx, one);
-            let qy1 = self.b.ins().fadd(qy, one);
-            pts.extend([(qx, qy), (qx1, qy), (qx, qy1)]);
-        }
+        let (planes, pts) = self.lane_points(g, sv, quad);
         pts.into_iter()
             .flat_map(|(x, y)| [0, 1].map(|k| self.plane(planes, slot::tex(u) + k, x, y)))
             .collect()
