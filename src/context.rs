@@ -13,6 +13,7 @@ use crate::geometry::lighting::LightSetup;
 use crate::geometry::varying::VaryingLayout;
 use crate::geometry::{DrawSource, Geometry, InVertex, Vertices, MAX_VIEWPORT};
 use crate::immediate::{self, VertexFormat};
+pub use crate::immediate::ImmediateRun;
 use crate::lighting::{
     ColorMaterialMode, LightModelParam, LightParam, LightParamName, Material, MaterialParam, MaterialParamName,
 };
@@ -1051,23 +1052,9 @@ impl Context {
             return self.record(Err(GlError::InvalidOperation));
         };
         self.format.end(b.verts.len());
-        let varying = Varying {
-            color: self.format.has(immediate::COLOR),
-            secondary: self.format.has(immediate::SECONDARY),
-        };
-        let source = DrawSource::Arrays {
-            per_vertex_color: varying.color,
-        };
-        let vertex_materials = self.vertex_materials(&b.materials, b.shininess_varies);
         let current = self.current.tex_coords;
         let tex = |i: usize, u: usize| b.tex.get(i).map_or(current[u], |t| t[u]);
-        let r = self.draw_with(
-            (b.mode, source),
-            b.verts.len(),
-            (Vertices::Slice(&b.verts), &tex),
-            &vertex_materials,
-            varying,
-        );
+        let r = self.draw_begun(b.mode, &b.verts, (&b.materials, b.shininess_varies), &tex);
         let Begun {
             mut verts,
             mut materials,
@@ -1078,6 +1065,64 @@ impl Context {
         materials.clear();
         tex.clear();
         self.spare = (verts, materials, tex);
+        r
+    }
+
+    /// The draw at `end` of `verts` (texture coordinates `tex(i, unit)`),
+    /// with the per-vertex materials `glMaterial` gave between.
+    fn draw_begun(
+        &mut self,
+        mode: PrimitiveMode,
+        verts: &[InVertex],
+        (materials, shininess_varies): (&[[Material; 2]], bool),
+        tex: &dyn Fn(usize, usize) -> Vec4,
+    ) -> GlResult {
+        let varying = Varying {
+            color: self.format.has(immediate::COLOR),
+            secondary: self.format.has(immediate::SECONDARY),
+        };
+        let source = DrawSource::Arrays {
+            per_vertex_color: varying.color,
+        };
+        let vertex_materials = self.vertex_materials(materials, shininess_varies);
+        self.draw_with(
+            (mode, source),
+            verts.len(),
+            (Vertices::Slice(verts), tex),
+            &vertex_materials,
+            varying,
+        )
+    }
+
+    /// A display list's `glBegin` … `glEnd` run: the same as its calls
+    /// (vertices, current attributes, vertex format, errors), drawn from
+    /// its arrays with no call per vertex. Between `begin` and `end`, or for
+    /// a run without its `glEnd`, it makes the calls one by one.
+    pub fn draw_run(&mut self, run: &ImmediateRun) -> GlResult {
+        if self.begun.is_some() || !run.ended() {
+            return run.replay(self);
+        }
+        let before = self.current;
+        let mut verts = std::mem::take(&mut self.spare.0);
+        run.fill(&before, &mut verts);
+        self.format.run(run.color_at(), run.len());
+        run.apply_last(&mut self.current);
+        if run.color_at().is_some() && self.state.lighting.color_material {
+            self.track_color_material();
+        }
+        let units = self.tex_units.enabled_mask();
+        let current = self.current.tex_coords;
+        let before0 = before.tex_coords[0];
+        let tex = |i: usize, u: usize| {
+            if units == 0 || u != 0 {
+                current[u]
+            } else {
+                run.tex_at(i).unwrap_or(before0)
+            }
+        };
+        let r = self.draw_begun(run.mode(), &verts, (&[], false), &tex);
+        verts.clear();
+        self.spare.0 = verts;
         r
     }
 

@@ -9,6 +9,11 @@
 //! format of its vertices, which is Mesa's format when it draws them (a new
 //! attribute makes Mesa draw the vertices buffered before it first).
 
+use crate::context::CurrentAttribs;
+use crate::geometry::InVertex;
+use crate::state::PrimitiveMode;
+use glam::{Vec3, Vec4};
+
 /// [`VertexFormat`] bit of the primary colour (`glColor`).
 pub(crate) const COLOR: u8 = 1;
 /// [`VertexFormat`] bit of the secondary colour (`glSecondaryColor`).
@@ -80,6 +85,24 @@ impl VertexFormat {
         }
     }
 
+    /// A display list's `glBegin` … `glEnd` ([`ImmediateRun`]) of `count`
+    /// vertices whose first colour call came after `color_at` of them: the
+    /// same steps as its calls (`begin`, `vertex` × `color_at`,
+    /// `attrib(COLOR, true)`, `vertex` × the rest, `end`), at once.
+    pub(crate) fn run(&mut self, color_at: Option<usize>, count: usize) {
+        self.begin();
+        let mut rest = count;
+        if let Some(k) = color_at {
+            self.pos |= k > 0;
+            self.buffered += k;
+            self.attrib(COLOR, true);
+            rest = count - k;
+        }
+        self.pos |= rest > 0;
+        self.buffered += rest;
+        self.end(count);
+    }
+
     /// Whether the colour `bit` is in the format (varies per vertex).
     pub(crate) fn has(&self, bit: u8) -> bool {
         self.attribs & bit != 0
@@ -88,6 +111,218 @@ impl VertexFormat {
     /// `vbo_reset_all_attr`.
     fn reset(&mut self) {
         *self = VertexFormat::default();
+    }
+}
+
+/// One attribute of an [`ImmediateRun`]: its value at each vertex from the
+/// first call that set it on (`first`), and its value after the run.
+#[derive(Clone, Debug)]
+struct RunAttrib<T> {
+    /// Vertices given before the first call setting it (`None`: never set);
+    /// those take the current value at replay.
+    first: Option<usize>,
+    /// The value at vertex `first + i`.
+    vals: Vec<T>,
+    /// The value the last call set.
+    last: T,
+}
+
+impl<T: Copy> RunAttrib<T> {
+    fn new(zero: T) -> RunAttrib<T> {
+        RunAttrib {
+            first: None,
+            vals: Vec::new(),
+            last: zero,
+        }
+    }
+
+    fn set(&mut self, v: T, vertices: usize) {
+        self.first.get_or_insert(vertices);
+        self.last = v;
+    }
+
+    #[inline]
+    fn vertex(&mut self) {
+        if self.first.is_some() {
+            self.vals.push(self.last);
+        }
+    }
+
+    /// The value at vertex `i`, when set by then.
+    #[inline]
+    fn at(&self, i: usize) -> Option<T> {
+        let f = self.first?;
+        i.checked_sub(f).and_then(|k| self.vals.get(k)).copied()
+    }
+
+    /// `(first, vals)` when set at or before the last vertex.
+    fn per_vertex(&self) -> Option<(usize, &[T])> {
+        self.first.map(|f| (f, &self.vals[..]))
+    }
+}
+
+/// A display list's `glBegin(mode)`, its `glVertex`, `glNormal`, `glColor`
+/// and `glTexCoord` calls, and (when `ended`) its `glEnd`, compiled into
+/// arrays (Mesa's `vbo_save` does the same): replayed by
+/// [`crate::Context::draw_run`] as one draw, where the calls cost two C ABI
+/// calls and a boxed closure each per vertex. A run keeps each attribute
+/// from the call that first set it on; the vertices before take the current
+/// value when the list runs, as the calls would. Compiling appends to
+/// vectors: no allocation per vertex (amortized growth).
+#[derive(Clone, Debug)]
+pub struct ImmediateRun {
+    mode: PrimitiveMode,
+    ended: bool,
+    pos: Vec<Vec4>,
+    normal: RunAttrib<Vec3>,
+    color: RunAttrib<Vec4>,
+    /// Unit 0's (`glTexCoord`).
+    tex: RunAttrib<Vec4>,
+}
+
+impl ImmediateRun {
+    /// `glBegin(mode)`.
+    pub fn new(mode: PrimitiveMode) -> ImmediateRun {
+        ImmediateRun {
+            mode,
+            ended: false,
+            pos: Vec::new(),
+            normal: RunAttrib::new(Vec3::ZERO),
+            color: RunAttrib::new(Vec4::ZERO),
+            tex: RunAttrib::new(Vec4::ZERO),
+        }
+    }
+
+    /// `glVertex4f`.
+    #[inline]
+    pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) {
+        self.pos.push(Vec4::new(x, y, z, w));
+        self.normal.vertex();
+        self.color.vertex();
+        self.tex.vertex();
+    }
+
+    /// `glNormal3f`.
+    #[inline]
+    pub fn normal3(&mut self, x: f32, y: f32, z: f32) {
+        self.normal.set(Vec3::new(x, y, z), self.pos.len());
+    }
+
+    /// `glColor4f`.
+    #[inline]
+    pub fn color4(&mut self, r: f32, g: f32, b: f32, a: f32) {
+        self.color.set(Vec4::new(r, g, b, a), self.pos.len());
+    }
+
+    /// `glTexCoord4f` (unit 0).
+    #[inline]
+    pub fn tex_coord(&mut self, c: [f32; 4]) {
+        self.tex.set(Vec4::from_array(c), self.pos.len());
+    }
+
+    /// `glEnd`; a run never ended replays its calls alone (a list with a
+    /// `glBegin` and no `glEnd`).
+    pub fn end(&mut self) {
+        self.ended = true;
+        self.pos.shrink_to_fit();
+        self.normal.vals.shrink_to_fit();
+        self.color.vals.shrink_to_fit();
+        self.tex.vals.shrink_to_fit();
+    }
+
+    pub fn mode(&self) -> PrimitiveMode {
+        self.mode
+    }
+
+    pub fn ended(&self) -> bool {
+        self.ended
+    }
+
+    pub fn len(&self) -> usize {
+        self.pos.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.pos.is_empty()
+    }
+
+    /// How many vertices came before the first colour call.
+    pub(crate) fn color_at(&self) -> Option<usize> {
+        self.color.first
+    }
+
+    /// Unit 0's texture coordinates at vertex `i`, when a call set them by then.
+    #[inline]
+    pub(crate) fn tex_at(&self, i: usize) -> Option<Vec4> {
+        self.tex.at(i)
+    }
+
+    /// The vertices, as the calls would make them with `before` current
+    /// at `glBegin`, into `out` (emptied first): one pass per attribute
+    /// over an L2-sized buffer, no call per vertex.
+    pub(crate) fn fill(&self, before: &CurrentAttribs, out: &mut Vec<InVertex>) {
+        out.clear();
+        let t = before.vertex(Vec4::ZERO);
+        out.extend(self.pos.iter().map(|&pos| InVertex { pos, ..t }));
+        if let Some((f, vals)) = self.normal.per_vertex() {
+            for (v, &n) in out[f..].iter_mut().zip(vals) {
+                v.normal = n;
+            }
+        }
+        if let Some((f, vals)) = self.color.per_vertex() {
+            for (v, &c) in out[f..].iter_mut().zip(vals) {
+                v.color = c;
+            }
+        }
+    }
+
+    /// The current attributes after the run's calls.
+    pub(crate) fn apply_last(&self, current: &mut CurrentAttribs) {
+        if self.normal.first.is_some() {
+            current.normal = self.normal.last;
+        }
+        if self.color.first.is_some() {
+            current.color = self.color.last;
+        }
+        if self.tex.first.is_some() {
+            current.tex_coords[0] = self.tex.last;
+        }
+    }
+
+    /// The run's calls themselves, one by one, on `gl`: what the list does
+    /// where the run cannot be one draw (called between `glBegin` and
+    /// `glEnd`, or never ended). Setting an attribute again to the value it
+    /// holds changes nothing GL can see, so each is set before every vertex
+    /// from its first call on.
+    pub(crate) fn replay(&self, gl: &mut crate::Context) -> crate::GlResult {
+        let _ = gl.begin(self.mode);
+        for (i, p) in self.pos.iter().enumerate() {
+            if let Some(n) = self.normal.at(i) {
+                gl.normal3(n.x, n.y, n.z);
+            }
+            if let Some(c) = self.color.at(i) {
+                gl.color4(c.x, c.y, c.z, c.w);
+            }
+            if let Some(t) = self.tex.at(i) {
+                gl.tex_coord(t.to_array());
+            }
+            gl.vertex4(p.x, p.y, p.z, p.w);
+        }
+        if self.normal.first.is_some() {
+            let n = self.normal.last;
+            gl.normal3(n.x, n.y, n.z);
+        }
+        if self.color.first.is_some() {
+            let c = self.color.last;
+            gl.color4(c.x, c.y, c.z, c.w);
+        }
+        if self.tex.first.is_some() {
+            gl.tex_coord(self.tex.last.to_array());
+        }
+        if self.ended {
+            return gl.end();
+        }
+        Ok(())
     }
 }
 

@@ -8,6 +8,7 @@ use crate::consts::*;
 use softgl::state::RasterState;
 use softgl::texture::unit::TexUnit;
 use softgl::texture::{TexParam, TextureTarget};
+use softgl::context::ImmediateRun;
 use softgl::{Context, CurrentAttribs, MatrixMode};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -63,6 +64,9 @@ pub struct Compiling {
     pub name: u32,
     pub execute: bool,
     pub cmds: Vec<Cmd>,
+    /// The `glBegin` … `glEnd` being compiled into arrays, while only
+    /// vertex attribute calls come (`gl::lists`).
+    pub run: Option<ImmediateRun>,
 }
 
 /// The state one `glPushAttrib` saved.

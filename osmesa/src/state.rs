@@ -902,6 +902,7 @@ mod tests {
             name: 1,
             execute: false,
             cmds: Vec::new(),
+            run: None,
         };
         with_gl((), |os, _| os.compiling = Some(list));
         assert!(attrib(|gl: &mut Context| gl.color4(1.0, 1.0, 1.0, 1.0)).is_some());

@@ -2,7 +2,9 @@
 //! `glNormal`, `glTexCoord` and `glRect` variant of GL 1.1.
 
 use super::enums::decode;
-use super::{attr, checked, gl};
+use super::lists::{begin_run, end_run, record_attrib};
+use super::{checked, gl};
+use crate::state::attrib;
 use softgl::Context;
 
 /// Integer colour components to floats, GL 1.x's rules: unsigned `c / max`,
@@ -63,24 +65,36 @@ pub(super) unsafe fn read<T: Copy, const N: usize>(v: *const T) -> Option<[T; N]
     Some(unsafe { std::ptr::read_unaligned(v.cast::<[T; N]>()) })
 }
 
+// Each attribute call runs at once through [`attrib`]'s fast path (no
+// lock, no `RefCell`, no `catch_unwind`: the closures cannot panic); while a
+// list is compiled it comes back and goes into the list's run or is recorded.
+
 #[inline]
 fn vertex(x: f32, y: f32, z: f32, w: f32) {
-    attr(move |gl| gl.vertex4(x, y, z, w))
+    if attrib(move |gl: &mut Context| gl.vertex4(x, y, z, w)).is_some() {
+        record_attrib(move |r| r.vertex4(x, y, z, w), move |gl| gl.vertex4(x, y, z, w))
+    }
 }
 
 #[inline]
 fn color(r: f32, g: f32, b: f32, a: f32) {
-    attr(move |gl| gl.color4(r, g, b, a))
+    if attrib(move |gl: &mut Context| gl.color4(r, g, b, a)).is_some() {
+        record_attrib(move |run| run.color4(r, g, b, a), move |gl| gl.color4(r, g, b, a))
+    }
 }
 
 #[inline]
 fn normal(x: f32, y: f32, z: f32) {
-    attr(move |gl| gl.normal3(x, y, z))
+    if attrib(move |gl: &mut Context| gl.normal3(x, y, z)).is_some() {
+        record_attrib(move |r| r.normal3(x, y, z), move |gl| gl.normal3(x, y, z))
+    }
 }
 
 #[inline]
 fn tex_coord(s: f32, t: f32, r: f32, q: f32) {
-    attr(move |gl| gl.tex_coord([s, t, r, q]))
+    if attrib(move |gl: &mut Context| gl.tex_coord([s, t, r, q])).is_some() {
+        record_attrib(move |run| run.tex_coord([s, t, r, q]), move |gl| gl.tex_coord([s, t, r, q]))
+    }
 }
 
 fn rect(x1: f32, y1: f32, x2: f32, y2: f32) {
@@ -96,10 +110,14 @@ fn rect(x1: f32, y1: f32, x2: f32, y2: f32) {
 
 exports! {
     [] fn glBegin(mode: u32) {
-        checked(move |gl| gl.begin(decode(mode)?))
+        if !begin_run(mode) {
+            checked(move |gl| gl.begin(decode(mode)?))
+        }
     }
     [] fn glEnd() {
-        gl(Context::end)
+        if !end_run() {
+            gl(Context::end)
+        }
     }
     [] fn glVertex2d(x: f64, y: f64) {
         vertex(x as f32, y as f32, 0.0, 1.0)

@@ -2,14 +2,96 @@
 //! between `glNewList` and `glEndList`; calls that GL never compiles
 //! (queries, client state, pixel packing, list management, `glFinish`) run at
 //! once. Draws from client arrays read the arrays when compiled, as in GL.
+//!
+//! A `glBegin` … `glEnd` made of `glVertex`, `glNormal`, `glColor` and
+//! `glTexCoord` calls alone compiles into arrays ([`ImmediateRun`], as Mesa's
+//! `vbo_save`), one command replayed as one draw
+//! ([`Context::draw_run`]) rather than a boxed closure per call, each
+//! replayed through the attribute path. Any other call inside ends the
+//! run (which then replays as its calls, [`ImmediateRun`]'s `replay`) and is
+//! recorded as usual, as are the calls after it up to `glEnd`; a run left
+//! open by `glEndList` replays as its calls too. The semantics are the calls'
+//! (the tests below compare the two): current attributes after the list,
+//! attributes not set in the run taken when the list runs, errors, a list
+//! called between `glBegin` and `glEnd`, `GL_COMPILE_AND_EXECUTE`.
 
+use super::enums::decode;
 use super::{now, rec};
 use crate::consts::*;
 use crate::gl_state::{Compiling, GlState};
 use crate::state::with_gl;
+use softgl::context::ImmediateRun;
 use softgl::{Context, GlError};
 use std::ffi::c_void;
 use std::sync::Arc;
+
+/// Records the run being compiled, if any, as one command.
+pub(super) fn close_run(list: &mut Compiling) {
+    if let Some(run) = list.run.take() {
+        list.cmds.push(Arc::new(move |_, gl: &mut Context| {
+            // Errors are the context's to record, as for the calls.
+            let _ = gl.draw_run(&run);
+        }));
+    }
+}
+
+/// `glBegin(mode)` while a list is compiled: opens a run (and begins under
+/// `GL_COMPILE_AND_EXECUTE`). `false` when no list is compiled or the mode
+/// is not one (the call is then made or recorded as usual).
+pub(super) fn begin_run(mode: GLenum) -> bool {
+    with_gl(false, |os, gl| {
+        let (Some(list), Ok(mode)) = (os.compiling.as_mut(), decode(mode)) else {
+            return false;
+        };
+        close_run(list);
+        list.run = Some(ImmediateRun::new(mode));
+        if list.execute {
+            let _ = gl.begin(mode);
+        }
+        true
+    })
+}
+
+/// `glEnd` while a run is compiled: ends and records it (and ends the
+/// primitive under `GL_COMPILE_AND_EXECUTE`). `false` otherwise.
+pub(super) fn end_run() -> bool {
+    with_gl(false, |os, gl| {
+        let Some(list) = os.compiling.as_mut() else {
+            return false;
+        };
+        let Some(run) = list.run.as_mut() else {
+            return false;
+        };
+        run.end();
+        close_run(list);
+        if list.execute {
+            let _ = gl.end();
+        }
+        true
+    })
+}
+
+/// A vertex attribute call while a list is compiled: `to_run` adds it to
+/// the run being compiled (and `call` runs under `GL_COMPILE_AND_EXECUTE`),
+/// or, outside a run, `call` is recorded.
+#[cold]
+#[inline(never)]
+pub(super) fn record_attrib(
+    to_run: impl FnOnce(&mut ImmediateRun),
+    call: impl Fn(&mut Context) + Send + Sync + 'static,
+) {
+    with_gl((), |os, gl| match os.compiling.as_mut() {
+        Some(Compiling {
+            run: Some(run), execute, ..
+        }) => {
+            to_run(run);
+            if *execute {
+                call(gl);
+            }
+        }
+        _ => super::run_or_record(os, gl, Arc::new(move |_, gl: &mut Context| call(gl))),
+    })
+}
 
 const GL_COMPILE: GLenum = 0x1300;
 const GL_COMPILE_AND_EXECUTE: GLenum = 0x1301;
@@ -86,7 +168,12 @@ exports! {
             if os.compiling.is_some() {
                 return Err(GlError::InvalidOperation);
             }
-            os.compiling = Some(Compiling { name: list, execute, cmds: Vec::new() });
+            os.compiling = Some(Compiling {
+                name: list,
+                execute,
+                cmds: Vec::new(),
+                run: None,
+            });
             Ok(())
         })
     }
@@ -95,7 +182,8 @@ exports! {
             if gl.inside_begin() {
                 return Err(GlError::InvalidOperation);
             }
-            let c = os.compiling.take().ok_or(GlError::InvalidOperation)?;
+            let mut c = os.compiling.take().ok_or(GlError::InvalidOperation)?;
+            close_run(&mut c);
             os.lists.insert(c.name, Arc::new(c.cmds));
             Ok(())
         })

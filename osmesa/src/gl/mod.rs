@@ -88,6 +88,8 @@ pub fn exported_names() -> Vec<&'static str> {
 pub(crate) fn run_or_record(os: &mut GlState, gl: &mut Context, cmd: Cmd) {
     match os.compiling.as_mut() {
         Some(list) => {
+            // Not a vertex attribute call: a run compiled so far replays as calls.
+            lists::close_run(list);
             list.cmds.push(cmd.clone());
             if list.execute {
                 cmd(os, gl);
