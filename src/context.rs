@@ -12,8 +12,8 @@ use crate::geometry::batch::{FogSource, TexFetch, VertexStage};
 use crate::geometry::lighting::LightSetup;
 use crate::geometry::varying::VaryingLayout;
 use crate::geometry::{DrawSource, Geometry, InVertex, Vertices, MAX_VIEWPORT};
-use crate::immediate::{self, VertexFormat};
 pub use crate::immediate::ImmediateRun;
+use crate::immediate::{self, VertexFormat};
 use crate::lighting::{
     ColorMaterialMode, LightModelParam, LightParam, LightParamName, Material, MaterialParam, MaterialParamName,
 };

@@ -5,10 +5,10 @@
 //! with the GL context. It imports neither: `gl/*` → `state` → `gl_state`.
 
 use crate::consts::*;
+use softgl::context::ImmediateRun;
 use softgl::state::RasterState;
 use softgl::texture::unit::TexUnit;
 use softgl::texture::{TexParam, TextureTarget};
-use softgl::context::ImmediateRun;
 use softgl::{Context, CurrentAttribs, MatrixMode};
 use std::collections::HashMap;
 use std::sync::Arc;

@@ -60,7 +60,11 @@ fn outcome(setup: fn(), draw: &dyn Fn()) -> Outcome {
     glFinish();
     let o = Outcome {
         pixels: Vec::new(),
-        current: [get4(GL_CURRENT_COLOR), get4(GL_CURRENT_NORMAL), get4(GL_CURRENT_TEXTURE_COORDS)],
+        current: [
+            get4(GL_CURRENT_COLOR),
+            get4(GL_CURRENT_NORMAL),
+            get4(GL_CURRENT_TEXTURE_COORDS),
+        ],
         error: glGetError(),
     };
     OSMesaDestroyContext(ctx);
@@ -69,7 +73,12 @@ fn outcome(setup: fn(), draw: &dyn Fn()) -> Outcome {
 
 /// `a` and `b` equal (the differing pixels counted rather than printed).
 fn check(a: &Outcome, b: &Outcome, what: &str) {
-    let differ = a.pixels.chunks(4).zip(b.pixels.chunks(4)).filter(|(p, q)| p != q).count();
+    let differ = a
+        .pixels
+        .chunks(4)
+        .zip(b.pixels.chunks(4))
+        .filter(|(p, q)| p != q)
+        .count();
     assert_eq!(differ, 0, "{what}: pixels differ");
     assert_eq!((a.current, a.error), (b.current, b.error), "{what}");
 }
@@ -132,7 +141,11 @@ fn strip() {
 #[test]
 fn a_lit_strip_draws_the_same_from_a_list() {
     let o = same_as_calls(lit, strip, |list| list(), true);
-    assert_ne!(o.pixels[..4], o.pixels[(W * 10 * 4 + 40) as usize..][..4], "something drawn");
+    assert_ne!(
+        o.pixels[..4],
+        o.pixels[(W * 10 * 4 + 40) as usize..][..4],
+        "something drawn"
+    );
     // Called twice with another current normal between: same again.
     same_as_calls(
         lit,
@@ -247,7 +260,19 @@ fn colour_material_follows_the_colours_of_a_run() {
 fn textured() {
     let texels: [u8; 16] = [255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 0, 255];
     // SAFETY: 2x2 RGBA texels.
-    unsafe { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA as i32, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.as_ptr().cast()) };
+    unsafe {
+        glTexImage2D(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA as i32,
+            2,
+            2,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            texels.as_ptr().cast(),
+        )
+    };
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glEnable(GL_TEXTURE_2D);

@@ -93,7 +93,10 @@ fn normal(x: f32, y: f32, z: f32) {
 #[inline]
 fn tex_coord(s: f32, t: f32, r: f32, q: f32) {
     if attrib(move |gl: &mut Context| gl.tex_coord([s, t, r, q])).is_some() {
-        record_attrib(move |run| run.tex_coord([s, t, r, q]), move |gl| gl.tex_coord([s, t, r, q]))
+        record_attrib(
+            move |run| run.tex_coord([s, t, r, q]),
+            move |gl| gl.tex_coord([s, t, r, q]),
+        )
     }
 }
 

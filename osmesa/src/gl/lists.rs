@@ -82,7 +82,9 @@ pub(super) fn record_attrib(
 ) {
     with_gl((), |os, gl| match os.compiling.as_mut() {
         Some(Compiling {
-            run: Some(run), execute, ..
+            run: Some(run),
+            execute,
+            ..
         }) => {
             to_run(run);
             if *execute {
