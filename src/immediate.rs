@@ -358,6 +358,44 @@ mod tests {
         f.end(n);
     }
 
+    /// [`VertexFormat::run`] steps as the calls of its run do, from any format.
+    #[test]
+    fn a_run_steps_the_format_as_its_calls() {
+        for (buffered, attribs, pos, pending) in [
+            (0, 0, false, false),
+            (9, COLOR, true, true),
+            (3, SECONDARY, true, false),
+        ] {
+            for count in [0, 1, 4] {
+                for color_at in [None, Some(0), Some(1), Some(count)] {
+                    if color_at.is_some_and(|k| k > count) {
+                        continue;
+                    }
+                    let start = VertexFormat {
+                        attribs,
+                        pos,
+                        pending,
+                        buffered,
+                    };
+                    let mut calls = start;
+                    calls.begin();
+                    for i in 0..=count {
+                        if color_at == Some(i) {
+                            calls.attrib(COLOR, true);
+                        }
+                        if i < count {
+                            calls.vertex();
+                        }
+                    }
+                    calls.end(count);
+                    let mut run = start;
+                    run.run(color_at, count);
+                    assert_eq!(run, calls, "{start:?} {count} {color_at:?}");
+                }
+            }
+        }
+    }
+
     #[test]
     fn colour_before_begin_is_constant_inside_varies() {
         let mut f = VertexFormat::default();
