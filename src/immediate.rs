@@ -21,7 +21,10 @@
 //! (position, normal) read in order. Callgrind, lit16list
 //! (`osmesa/bench/instructions.sh lit16list`): 2.401 G instructions a frame
 //! before, 2.334 G after (lit16, the same calls made at once: 2.459 G;
-//! llvmpipe's lit16list 2.398 G).
+//! llvmpipe's lit16list 2.398 G). Where the cycles went: last-level cache
+//! misses (callgrind `--cache-sim=yes`, `fill lit16list 1`: the compile and
+//! two frames, one thread) 4.20 M reads and 4.29 M writes before, 0.61 M
+//! and 1.88 M after.
 
 use crate::context::CurrentAttribs;
 use crate::geometry::InVertex;
