@@ -18,12 +18,13 @@
 
 use super::triangle::{plane_swap, setup_planes, Plane, Prepared};
 use super::{reach_box, Edges, PrimSink, RasterParams, RasterVertex, Rasterize, SpanSink};
-use crate::fragment::{FragmentStage, StageBuffers};
+use crate::fragment::{DrawStage, FragmentStage};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
 use crate::geometry::varying::{Varyings, MAX_VARYINGS};
 use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::texture::TextureSet;
 use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Specialist, Target};
+use std::cell::OnceCell;
 use std::collections::HashSet;
 use std::sync::Arc;
 
@@ -323,8 +324,16 @@ impl Scene {
         debug_assert_eq!((fb.width(), fb.height()), (self.width, self.height));
         let plans: Vec<TexturePlan<'_>> = self.draws.iter().map(|d| d.textures.plan()).collect();
         let sets: Vec<TextureSet<'_>> = plans.iter().map(TexturePlan::set).collect();
-        let bands = fb.target().into_bands(TILE);
-        let run_band = |(ty, mut band): (usize, Target<'_>)| self.run_band(ty as u32, &mut band, &sets);
+        let target = fb.target();
+        // Each draw's stages are checked and set up once for all its tiles.
+        let stages: Vec<Result<DrawStage<'_>, FragmentError>> = self
+            .draws
+            .iter()
+            .zip(&sets)
+            .map(|(d, set)| DrawStage::new(&d.key, &d.uniforms, set, d.specialist.as_deref(), &target))
+            .collect();
+        let bands = target.into_bands(TILE);
+        let run_band = |(ty, mut band): (usize, Target<'_>)| self.run_band(ty as u32, &mut band, &stages);
         let results: Vec<Result<(), FragmentError>> = if threads <= 1 || bands.len() <= 1 {
             bands.into_iter().enumerate().map(run_band).collect()
         } else {
@@ -383,13 +392,20 @@ impl Scene {
         p.flat
     }
 
-    /// Runs the tiles of row `ty` into `band`, its rows of the framebuffer.
-    fn run_band(&self, ty: u32, band: &mut Target<'_>, sets: &[TextureSet<'_>]) -> Result<(), FragmentError> {
+    /// Runs the tiles of row `ty` into `band`, its rows of the framebuffer,
+    /// on one fragment stage whose batches go on across tiles while the
+    /// draw stays the same.
+    fn run_band(
+        &self,
+        ty: u32,
+        band: &mut Target<'_>,
+        stages: &[Result<DrawStage<'_>, FragmentError>],
+    ) -> Result<(), FragmentError> {
         let mut scratch = Box::<Scratch>::default();
-        let mut buffers = StageBuffers::default();
-        let mut views: Vec<Option<DrawTextures<'_>>> = Vec::new();
-        views.resize_with(self.draws.len(), || None);
-        let mut first_error = None;
+        // What each draw's specialist reads of its textures, made when the
+        // band first runs the draw.
+        let views: Vec<OnceCell<DrawTextures<'_>>> = std::iter::repeat_with(OnceCell::new).take(stages.len()).collect();
+        let mut stage = FragmentStage::new(band);
         for tx in 0..self.tiles_x {
             let tile = Rect {
                 x0: tx * TILE,
@@ -402,35 +418,33 @@ impl Scene {
             while i < bin.len() {
                 let e = bin[i];
                 if e & CLEAR != 0 {
-                    self.clears[(e & !CLEAR) as usize].apply(band, tile);
+                    stage.clear(&self.clears[(e & !CLEAR) as usize], tile);
                     i += 1;
                     continue;
                 }
-                // The run of this draw's primitives shares one fragment stage.
+                // The run of this draw's primitives.
                 let d = self.prims[e as usize].draw as usize;
                 let end = bin[i..]
                     .iter()
                     .position(|&e| e & CLEAR != 0 || self.prims[e as usize].draw as usize != d)
                     .map_or(bin.len(), |n| i + n);
-                let draw = &self.draws[d];
-                let specialist = draw.specialist.as_deref();
-                let view =
-                    views[d].get_or_insert_with(|| specialist.map_or(DrawTextures::None, |s| s.texture_view(&sets[d])));
-                let r = FragmentStage::new(draw.key, draw.uniforms, &sets[d], view, band, specialist, &mut buffers)
-                    .and_then(|mut stage| {
+                match &stages[d] {
+                    Ok(draw) => {
+                        let view = views[d].get_or_init(|| {
+                            draw.specialist().map_or(DrawTextures::None, |s| s.texture_view(draw.textures()))
+                        });
+                        stage.set_draw(draw, view);
                         for &e in &bin[i..end] {
                             let p = &self.prims[e as usize];
                             self.rasterize(p, tile, &mut scratch, &mut stage);
                         }
-                        stage.finish()
-                    });
-                if let Err(e) = r {
-                    first_error.get_or_insert(e);
+                    }
+                    Err(e) => stage.fail(*e),
                 }
                 i = end;
             }
         }
-        first_error.map_or(Ok(()), Err)
+        stage.finish()
     }
 }
 
