@@ -7,6 +7,7 @@
 
 use crate::framebuffer::{Clear, Rect};
 use crate::raster::SpanSink;
+use softgl_jit::compile::SplatUniforms;
 use softgl_jit::shade::slot;
 use softgl_jit::texture::{TextureSet, MAX_UNITS};
 use softgl_jit::{
@@ -51,7 +52,9 @@ pub struct DrawStage<'t> {
     /// The draw's specialist, when it was compiled for the key.
     specialist: Option<&'t Specialist>,
     key: &'t FragmentKey,
-    uniforms: &'t FragmentUniforms,
+    /// The uniforms, as the specialist reads them (`splats.uniforms`: as
+    /// the interpreter does).
+    splats: SplatUniforms,
     /// The textures the key's units sample.
     textures: &'t TextureSet<'t>,
     /// Whether the stages read the spans' colours and depths (a key without
@@ -78,7 +81,7 @@ impl<'t> DrawStage<'t> {
         Ok(DrawStage {
             specialist: specialist.filter(|s| s.key() == key),
             key,
-            uniforms,
+            splats: SplatUniforms::new(uniforms),
             textures,
             span_color: key.shade.is_none_or(|s| !s.color),
             span_z: key.depth.is_some() && key.shade.is_none_or(|s| !s.depth),
@@ -183,8 +186,8 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
         let spans = &self.batch[..self.count];
         let planes = &self.planes[..self.planes_len];
         let r = match draw.specialist {
-            Some(s) => s.run_with_view(draw.uniforms, (draw.textures, view), spans, planes, self.target),
-            None => interp::run_with_planes(draw.key, draw.uniforms, draw.textures, spans, planes, self.target),
+            Some(s) => s.run_splatted(&draw.splats, (draw.textures, view), spans, planes, self.target),
+            None => interp::run_with_planes(draw.key, &draw.splats.uniforms, draw.textures, spans, planes, self.target),
         };
         if let Err(e) = r {
             self.error.get_or_insert(e);
