@@ -657,7 +657,12 @@ mod mask_row_tests {
 
     #[test]
     fn masked_and_filled_rows_are_the_bytes_of_pixel_by_pixel() {
-        let formats = [ColorFormat::Rgba8, ColorFormat::Bgra8, ColorFormat::Rgb8, ColorFormat::Rgb565];
+        let formats = [
+            ColorFormat::Rgba8,
+            ColorFormat::Bgra8,
+            ColorFormat::Rgb8,
+            ColorFormat::Rgb565,
+        ];
         let mut seed = 0x1234_5678u32;
         let mut next = move || {
             seed ^= seed << 13;
