@@ -4,8 +4,18 @@
 //! are there from the stage's start: no whole span is zeroed and copied per
 //! row (with the row walk in `raster::triangle`, ops 3248 M → 3079 M
 //! instructions a two-frame run, callgrind).
+//!
+//! A flush runs one [`FragmentStage`] a band, switched from draw to draw
+//! ([`FragmentStage::set_draw`]), and a [`DrawStage`] a draw, made once: the
+//! `thrash` frame (256 draws of 50 small triangles, so about one run of a
+//! draw per triangle and tile) made, checked and dropped a stage a run,
+//! with the key and uniforms copied and compared and the uniforms splatted
+//! again for every batch: 89.7 M → 79.3 M instructions a frame (callgrind,
+//! one thread).
 
+use crate::framebuffer::{Clear, Rect};
 use crate::raster::SpanSink;
+use softgl_jit::compile::SplatUniforms;
 use softgl_jit::shade::slot;
 use softgl_jit::texture::{TextureSet, MAX_UNITS};
 use softgl_jit::{
@@ -42,79 +52,134 @@ impl Backend {
     }
 }
 
-/// The storage of a [`FragmentStage`]'s batch, kept from one stage to the
-/// next (a tile runs a stage per run of one draw's primitives).
-#[derive(Debug, Default)]
-pub struct StageBuffers {
-    batch: Vec<FragmentSpan>,
-    planes: Vec<Planes>,
-}
-
-/// Collects spans and runs the fragment stages over them in batches, with the
-/// key's specialist when there is one, else with the interpreter. Each span
-/// names the planes of its primitive among the batch's.
-pub struct FragmentStage<'t, 'f> {
+/// What the fragment stages of one draw share, made once a flush (not once
+/// per run of a tile: `thrash`'s 256 draws of 50 small triangles made a
+/// stage per triangle, 450 instructions each, with the key and uniforms
+/// copied, checked and compared each time).
+pub struct DrawStage<'t> {
+    /// The draw's specialist, when it was compiled for the key.
     specialist: Option<&'t Specialist>,
-    key: FragmentKey,
-    uniforms: FragmentUniforms,
+    key: &'t FragmentKey,
+    /// The uniforms, as the specialist reads them (`splats.uniforms`: as
+    /// the interpreter does).
+    splats: SplatUniforms,
     /// The textures the key's units sample.
     textures: &'t TextureSet<'t>,
-    /// What the specialist reads of them, made once for the draw.
-    view: &'t DrawTextures<'t>,
-    target: &'t mut Target<'f>,
-    /// The batch's spans (`batch[..count]`) and planes, in storage reused
-    /// from stage to stage.
-    buffers: &'t mut StageBuffers,
-    count: usize,
     /// Whether the stages read the spans' colours and depths (a key without
     /// a shading stage, or one leaving them to the span).
     span_color: bool,
     span_z: bool,
-    /// The planes of the batch's primitives are `planes[..planes_len]`; the
-    /// last is the current one's. A primitive writes the slots it uses over
-    /// whatever an earlier one left.
-    planes_len: usize,
     /// Bit `u` set when unit `u` samples (its coordinate slots are read).
     tex_units: u8,
-    error: Option<FragmentError>,
 }
 
-impl<'t, 'f> FragmentStage<'t, 'f> {
-    /// A stage for `key`, checked against `target` once here, sampling
-    /// `textures` (`view`: what `specialist` reads of them,
-    /// [`Specialist::texture_view`]). `specialist`, if given, must have been
-    /// compiled for `key`; without one the interpreter runs.
+impl<'t> DrawStage<'t> {
+    /// A draw's stages for `key`, checked once here against `target`'s
+    /// formats (any band of a framebuffer has the same), sampling
+    /// `textures`. `specialist`, if given, runs when it was compiled for
+    /// `key`; without one the interpreter runs.
     pub fn new(
-        key: FragmentKey,
-        uniforms: FragmentUniforms,
+        key: &'t FragmentKey,
+        uniforms: &'t FragmentUniforms,
         textures: &'t TextureSet<'t>,
-        view: &'t DrawTextures<'t>,
-        target: &'t mut Target<'f>,
         specialist: Option<&'t Specialist>,
-        buffers: &'t mut StageBuffers,
+        target: &Target<'_>,
     ) -> Result<Self, FragmentError> {
-        interp::check_key(&key, target)?;
-        buffers.batch.resize_with(BATCH, || FragmentSpan::new(0, 0));
-        let specialist = specialist.filter(|s| *s.key() == key);
-        Ok(FragmentStage {
-            view,
-            specialist,
+        interp::check_key(key, target)?;
+        Ok(DrawStage {
+            specialist: specialist.filter(|s| s.key() == key),
+            key,
+            splats: SplatUniforms::new(uniforms),
+            textures,
             span_color: key.shade.is_none_or(|s| !s.color),
             span_z: key.depth.is_some() && key.shade.is_none_or(|s| !s.depth),
-            count: 0,
-            key,
-            uniforms,
-            textures,
-            target,
-            buffers,
-            planes_len: 0,
             tex_units: key.shade.map_or(0, |s| {
                 (0..MAX_UNITS)
                     .filter(|&u| s.tex[u].is_some())
                     .fold(0, |m, u| m | 1 << u)
             }),
-            error: None,
         })
+    }
+
+    /// The specialist that runs, if any (else the interpreter).
+    pub fn specialist(&self) -> Option<&'t Specialist> {
+        self.specialist
+    }
+
+    /// The textures the key's units sample.
+    pub fn textures(&self) -> &'t TextureSet<'t> {
+        self.textures
+    }
+}
+
+/// Collects spans and runs the fragment stages over them in batches, with the
+/// current draw's specialist when there is one, else with the interpreter.
+/// Each span names the planes of its primitive among the batch's. One stage
+/// runs a whole band: a batch goes on across primitives and tiles as long
+/// as the draw stays the same ([`FragmentStage::set_draw`]).
+pub struct FragmentStage<'t, 'f> {
+    /// The draw the batch's spans are of, and what its specialist reads of
+    /// its textures ([`Specialist::texture_view`]).
+    draw: Option<(&'t DrawStage<'t>, &'t DrawTextures<'t>)>,
+    target: &'t mut Target<'f>,
+    /// The batch's spans (`batch[..count]`), `BATCH` of them from the start.
+    batch: Vec<FragmentSpan>,
+    count: usize,
+    /// The planes of the batch's primitives are `planes[..planes_len]`; the
+    /// last is the current one's. A primitive writes the slots it uses over
+    /// whatever an earlier one left.
+    planes: Vec<Planes>,
+    planes_len: usize,
+    /// Copies of the current draw's [`DrawStage`] flags (read per span).
+    span_color: bool,
+    span_z: bool,
+    error: Option<FragmentError>,
+}
+
+impl<'t, 'f> FragmentStage<'t, 'f> {
+    /// A stage writing into `target`, with no draw yet.
+    pub fn new(target: &'t mut Target<'f>) -> Self {
+        FragmentStage {
+            draw: None,
+            target,
+            batch: vec![FragmentSpan::new(0, 0); BATCH],
+            count: 0,
+            planes: Vec::new(),
+            planes_len: 0,
+            span_color: false,
+            span_z: false,
+            error: None,
+        }
+    }
+
+    /// Makes the spans that follow `draw`'s (`view`: what its specialist
+    /// reads of its textures): the batch so far runs first unless it is of
+    /// the same draw.
+    #[inline]
+    pub fn set_draw(&mut self, draw: &'t DrawStage<'t>, view: &'t DrawTextures<'t>) {
+        if let Some((d, _)) = self.draw {
+            if std::ptr::eq(d, draw) {
+                return;
+            }
+        }
+        self.run();
+        // A new draw's primitives write their planes before their spans.
+        self.planes_len = 0;
+        self.draw = Some((draw, view));
+        (self.span_color, self.span_z) = (draw.span_color, draw.span_z);
+    }
+
+    /// Applies `clear` to the part of `tile` in the stage's rows, after the
+    /// spans so far.
+    pub fn clear(&mut self, clear: &Clear, tile: Rect) {
+        self.run();
+        clear.apply(self.target, tile);
+    }
+
+    /// Records `e` after what the batch so far reports.
+    pub fn fail(&mut self, e: FragmentError) {
+        self.run();
+        self.error.get_or_insert(e);
     }
 
     /// Runs the batch's spans.
@@ -122,11 +187,22 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
         if self.count == 0 {
             return;
         }
-        let spans = &self.buffers.batch[..self.count];
-        let planes = &self.buffers.planes[..self.planes_len];
-        let r = match self.specialist {
-            Some(s) => s.run_with_view(&self.uniforms, (self.textures, self.view), spans, planes, self.target),
-            None => interp::run_with_planes(&self.key, &self.uniforms, self.textures, spans, planes, self.target),
+        let Some((draw, view)) = self.draw else {
+            self.count = 0;
+            return;
+        };
+        let spans = &self.batch[..self.count];
+        let planes = &self.planes[..self.planes_len];
+        let r = match draw.specialist {
+            Some(s) => s.run_splatted(&draw.splats, (draw.textures, view), spans, planes, self.target),
+            None => interp::run_with_planes(
+                draw.key,
+                &draw.splats.uniforms,
+                draw.textures,
+                spans,
+                planes,
+                self.target,
+            ),
         };
         if let Err(e) = r {
             self.error.get_or_insert(e);
@@ -141,10 +217,11 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
     fn flush(&mut self) {
         self.run();
         if self.planes_len > 1 {
-            let (head, tail) = self.buffers.planes.split_at_mut(self.planes_len - 1);
+            let tex_units = self.draw.map_or(0, |(d, _)| d.tex_units);
+            let (head, tail) = self.planes.split_at_mut(self.planes_len - 1);
             let (to, from) = (&mut head[0].coeffs, &tail[0].coeffs);
             to[..slot::TEX0].copy_from_slice(&from[..slot::TEX0]);
-            for u in (0..MAX_UNITS).filter(|&u| self.tex_units & (1 << u) != 0) {
+            for u in (0..MAX_UNITS).filter(|&u| tex_units & (1 << u) != 0) {
                 let k = slot::tex(u);
                 to[k..k + 4].copy_from_slice(&from[k..k + 4]);
             }
@@ -152,9 +229,23 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
         self.planes_len = self.planes_len.min(1);
     }
 
+    /// Room for the next primitive's planes: the batch runs when its planes
+    /// are full (no later span reads them), the storage grows up to them.
+    #[cold]
+    #[inline(never)]
+    fn make_room(&mut self) {
+        if self.planes_len == BATCH {
+            self.run();
+            self.planes_len = 0;
+        }
+        if self.planes_len == self.planes.len() {
+            self.planes.push(Planes::default());
+        }
+    }
+
     /// Runs what is left and reports the first error, if any.
     pub fn finish(mut self) -> Result<(), FragmentError> {
-        self.flush();
+        self.run();
         self.error.map_or(Ok(()), Err)
     }
 }
@@ -166,7 +257,7 @@ impl SpanSink for FragmentStage<'_, '_> {
         }
         // Only what the stages read is copied: with planes, the header.
         // (`batch` holds `BATCH` spans from the stage's start on.)
-        let Some(s) = self.buffers.batch.get_mut(self.count) else {
+        let Some(s) = self.batch.get_mut(self.count) else {
             return;
         };
         (s.x, s.y, s.len, s.mask) = (span.x, span.y, span.len, span.mask);
@@ -188,7 +279,7 @@ impl SpanSink for FragmentStage<'_, '_> {
         let planes = self.planes_len.saturating_sub(1) as u32;
         for (x, len, mask) in crate::raster::row_spans(x0, x1) {
             // `batch` holds `BATCH` spans from the stage's start on.
-            let Some(s) = self.buffers.batch.get_mut(self.count) else {
+            let Some(s) = self.batch.get_mut(self.count) else {
                 return;
             };
             (s.x, s.y, s.len, s.mask, s.planes) = (x, y, len, mask, planes);
@@ -206,16 +297,12 @@ impl SpanSink for FragmentStage<'_, '_> {
         }
     }
 
+    #[inline]
     fn planes_mut(&mut self) -> Option<&mut Planes> {
-        if self.planes_len == BATCH {
-            // A new primitive: no later span reads the batch's planes.
-            self.run();
-            self.planes_len = 0;
-        }
-        if self.planes_len == self.buffers.planes.len() {
-            self.buffers.planes.push(Planes::default());
+        if self.planes_len == BATCH || self.planes_len == self.planes.len() {
+            self.make_room();
         }
         self.planes_len += 1;
-        Some(&mut self.buffers.planes[self.planes_len - 1])
+        self.planes.get_mut(self.planes_len - 1)
     }
 }

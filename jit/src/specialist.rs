@@ -352,11 +352,26 @@ impl Specialist {
     pub fn run_with_view(
         &self,
         uniforms: &FragmentUniforms,
+        textures: (&TextureSet<'_>, &DrawTextures<'_>),
+        spans: &[FragmentSpan],
+        planes: &[Planes],
+        target: &mut Target<'_>,
+    ) -> Result<(), FragmentError> {
+        self.run_splatted(&SplatUniforms::new(uniforms), textures, spans, planes, target)
+    }
+
+    /// [`Self::run_with_view`] with the uniforms splatted once for a draw,
+    /// not once a batch (a flush runs a batch per tile a small triangle
+    /// touches: `thrash`, 112 instructions a batch).
+    pub fn run_splatted(
+        &self,
+        splats: &SplatUniforms,
         (textures, view): (&TextureSet<'_>, &DrawTextures<'_>),
         spans: &[FragmentSpan],
         planes: &[Planes],
         target: &mut Target<'_>,
     ) -> Result<(), FragmentError> {
+        let uniforms = &splats.uniforms;
         check_key(&self.key, target)?;
         check_planes(&self.key, spans, planes)?;
         let units = self.key.shade.as_ref().filter(|s| s.textured()).map(|s| &s.tex);
@@ -370,11 +385,10 @@ impl Specialist {
             // Not this key's view: the generated code reads only its own.
             (Some(_), _) => {
                 let own = self.texture_view(textures);
-                return self.run_with_view(uniforms, (textures, &own), spans, planes, target);
+                return self.run_splatted(splats, (textures, &own), spans, planes, target);
             }
         };
         let func = self.code().func;
-        let splats = SplatUniforms::new(uniforms);
         // One call record for the batch: a span sets only its own fields.
         let mut call = SpanCall {
             span: std::ptr::null(),
@@ -394,7 +408,7 @@ impl Specialist {
             call.planes = planes
                 .get(span.planes as usize)
                 .map_or(std::ptr::null(), |p| p as *const Planes);
-            self.run_span(func, (&splats, &mut call), span, target);
+            self.run_span(func, (splats, &mut call), span, target);
         }
         Ok(())
     }

@@ -18,12 +18,13 @@
 
 use super::triangle::{plane_swap, setup_planes, Plane, Prepared};
 use super::{reach_box, Edges, PrimSink, RasterParams, RasterVertex, Rasterize, SpanSink};
-use crate::fragment::{FragmentStage, StageBuffers};
+use crate::fragment::{DrawStage, FragmentStage};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
 use crate::geometry::varying::{Varyings, MAX_VARYINGS};
 use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::texture::TextureSet;
-use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Specialist, Target};
+use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Planes, Specialist, Target};
+use std::cell::OnceCell;
 use std::collections::HashSet;
 use std::sync::Arc;
 
@@ -135,6 +136,23 @@ struct Tri {
 struct SlotPlane {
     k: u32,
     plane: Plane,
+}
+
+/// Writes recorded planes into their slots of `to`, each coefficient in
+/// four lanes (as the specialists load them), inlined with `with_planes`
+/// and the sink's `planes_mut` into the tile loop: a lit triangle's copy
+/// and its call were about 146 instructions of its flush (callgrind,
+/// `lit16`), now about 127 (17 a plane: three loads, three shuffles, three
+/// stores and the slot). Not copying them at all needs the specialists to
+/// read the recorded 16-byte planes and splat them themselves.
+#[inline(always)]
+fn copy_planes(to: &mut Planes, planes: &[SlotPlane]) {
+    for sp in planes {
+        if let Some(c) = to.coeffs.get_mut(sp.k as usize) {
+            let Plane { a0, dadx, dady } = sp.plane;
+            *c = [[a0; 4], [dadx; 4], [dady; 4]];
+        }
+    }
 }
 
 /// A band's room to rebuild a primitive's vertices in (reused: no 700
@@ -323,8 +341,16 @@ impl Scene {
         debug_assert_eq!((fb.width(), fb.height()), (self.width, self.height));
         let plans: Vec<TexturePlan<'_>> = self.draws.iter().map(|d| d.textures.plan()).collect();
         let sets: Vec<TextureSet<'_>> = plans.iter().map(TexturePlan::set).collect();
-        let bands = fb.target().into_bands(TILE);
-        let run_band = |(ty, mut band): (usize, Target<'_>)| self.run_band(ty as u32, &mut band, &sets);
+        let target = fb.target();
+        // Each draw's stages are checked and set up once for all its tiles.
+        let stages: Vec<Result<DrawStage<'_>, FragmentError>> = self
+            .draws
+            .iter()
+            .zip(&sets)
+            .map(|(d, set)| DrawStage::new(&d.key, &d.uniforms, set, d.specialist.as_deref(), &target))
+            .collect();
+        let bands = target.into_bands(TILE);
+        let run_band = |(ty, mut band): (usize, Target<'_>)| self.run_band(ty as u32, &mut band, &stages);
         let results: Vec<Result<(), FragmentError>> = if threads <= 1 || bands.len() <= 1 {
             bands.into_iter().enumerate().map(run_band).collect()
         } else {
@@ -341,9 +367,7 @@ impl Scene {
             let planes = &self.planes[t.planes as usize..][..t.n as usize];
             // The box is within the bounds already.
             t.prep.cover(tile, p.params.height, sink, |to| {
-                for sp in planes {
-                    to.set(sp.k as usize, sp.plane.a0, sp.plane.dadx, sp.plane.dady);
-                }
+                copy_planes(to, planes);
                 match p.params.depth {
                     Some(f @ DepthFormat::D32) => planes.last().map(|z| (f, z.plane)),
                     _ => None,
@@ -383,13 +407,52 @@ impl Scene {
         p.flat
     }
 
-    /// Runs the tiles of row `ty` into `band`, its rows of the framebuffer.
-    fn run_band(&self, ty: u32, band: &mut Target<'_>, sets: &[TextureSet<'_>]) -> Result<(), FragmentError> {
+    /// Reads what the primitives of `bin` recorded (their entries, set-ups
+    /// and planes) once before they run, in a loop whose loads do not wait
+    /// for one another: the scene is read in the bins' order, not the
+    /// recorded one, so a tile of small triangles from all over a frame
+    /// missed the cache three times a triangle, one miss after the other
+    /// (`perf`, `thrash`: 96% of `with_planes`' cycles on the planes' first
+    /// load, most of `run_band`'s on the entry's and the set-up's). A few
+    /// instructions an entry; `black_box` keeps the loads.
+    fn warm(&self, bin: &[u32]) {
+        let mut next = u32::MAX;
+        for &e in bin {
+            // An entry recorded just after the previous one is read after
+            // it too, which the hardware prefetches (a strip's triangles,
+            // `lit16`: 25 instructions an entry saved).
+            let near = e == next;
+            next = e.wrapping_add(1);
+            if near {
+                continue;
+            }
+            let Some(p) = self.prims.get(e as usize) else { continue };
+            if let Kind::Triangle = p.kind {
+                if let Some(t) = self.tris.get(p.first as usize) {
+                    // Whole records: one may straddle two cache lines.
+                    std::hint::black_box(*t);
+                    let last = (t.planes + t.n).saturating_sub(1) as usize;
+                    std::hint::black_box([t.planes as usize, last].map(|i| self.planes.get(i).map(|p| p.k)));
+                }
+            }
+            std::hint::black_box(*p);
+        }
+    }
+
+    /// Runs the tiles of row `ty` into `band`, its rows of the framebuffer,
+    /// on one fragment stage whose batches go on across tiles while the
+    /// draw stays the same.
+    fn run_band(
+        &self,
+        ty: u32,
+        band: &mut Target<'_>,
+        stages: &[Result<DrawStage<'_>, FragmentError>],
+    ) -> Result<(), FragmentError> {
         let mut scratch = Box::<Scratch>::default();
-        let mut buffers = StageBuffers::default();
-        let mut views: Vec<Option<DrawTextures<'_>>> = Vec::new();
-        views.resize_with(self.draws.len(), || None);
-        let mut first_error = None;
+        // What each draw's specialist reads of its textures, made when the
+        // band first runs the draw.
+        let views: Vec<OnceCell<DrawTextures<'_>>> = std::iter::repeat_with(OnceCell::new).take(stages.len()).collect();
+        let mut stage = FragmentStage::new(band);
         for tx in 0..self.tiles_x {
             let tile = Rect {
                 x0: tx * TILE,
@@ -398,39 +461,39 @@ impl Scene {
                 y1: ((ty + 1) * TILE).min(self.height),
             };
             let bin = &self.bins[(ty * self.tiles_x + tx) as usize];
+            self.warm(bin);
             let mut i = 0;
             while i < bin.len() {
                 let e = bin[i];
                 if e & CLEAR != 0 {
-                    self.clears[(e & !CLEAR) as usize].apply(band, tile);
+                    stage.clear(&self.clears[(e & !CLEAR) as usize], tile);
                     i += 1;
                     continue;
                 }
-                // The run of this draw's primitives shares one fragment stage.
+                // The run of this draw's primitives.
                 let d = self.prims[e as usize].draw as usize;
                 let end = bin[i..]
                     .iter()
                     .position(|&e| e & CLEAR != 0 || self.prims[e as usize].draw as usize != d)
                     .map_or(bin.len(), |n| i + n);
-                let draw = &self.draws[d];
-                let specialist = draw.specialist.as_deref();
-                let view =
-                    views[d].get_or_insert_with(|| specialist.map_or(DrawTextures::None, |s| s.texture_view(&sets[d])));
-                let r = FragmentStage::new(draw.key, draw.uniforms, &sets[d], view, band, specialist, &mut buffers)
-                    .and_then(|mut stage| {
+                match &stages[d] {
+                    Ok(draw) => {
+                        let view = views[d].get_or_init(|| {
+                            draw.specialist()
+                                .map_or(DrawTextures::None, |s| s.texture_view(draw.textures()))
+                        });
+                        stage.set_draw(draw, view);
                         for &e in &bin[i..end] {
                             let p = &self.prims[e as usize];
                             self.rasterize(p, tile, &mut scratch, &mut stage);
                         }
-                        stage.finish()
-                    });
-                if let Err(e) = r {
-                    first_error.get_or_insert(e);
+                    }
+                    Err(e) => stage.fail(*e),
                 }
                 i = end;
             }
         }
-        first_error.map_or(Ok(()), Err)
+        stage.finish()
     }
 }
 
