@@ -24,7 +24,7 @@
 //! - a span whose 1/w plane is exactly 1 (every `glOrtho` or untransformed
 //!   draw) takes the colours and texture coordinates from the planes
 //!   without dividing by 1/w or q (`shade::perspective`, `plain_coords`:
-//!   bit for bit what the division gives, see `w_is_one`);
+//!   bit for bit what the division gives, see `Planes::is_one`);
 //! - the plane loads come in the order Cranelift folds one into its
 //!   fused multiply-add (4 instructions a plane, was 5);
 //! - untextured alpha is shaded alone for the alpha test, the other
@@ -116,7 +116,10 @@ pub struct SpanCall {
     pub planes: *const Planes,
     /// The span's row in llvmpipe's top-down frame, for the planes.
     pub row: f32,
-    pub _pad2: u32,
+    /// [`Planes::ones`] of the span's planes for the key's natively sampled
+    /// units (`native_units`): which planes are exactly 1, found once a
+    /// primitive rather than once a span.
+    pub ones: u32,
     /// The draw's textures (keys with texture units), or null.
     pub tex: *const crate::callout::TexView<'static>,
 }
@@ -379,12 +382,15 @@ impl<'a> Gen<'a> {
             let (planes, row, px0) = self.planes_and_row(call, x0);
             sv.planes = Some((planes, row, px0));
             if shade.color && !shade.flat {
-                let w_one = self.w_is_one(planes);
-                sv.w_one = Some(w_one);
+                // The caller found which planes are exactly 1 (`SpanCall::ones`).
+                let ones = self
+                    .b
+                    .ins()
+                    .load(types::I32, mem(), call, offset_of!(SpanCall, ones) as i32);
+                sv.w_one = Some(self.b.ins().band_imm_u(ones, 1));
                 for (u, unit) in shade.tex.iter().enumerate() {
                     if unit.as_ref().is_some_and(|t| self.native_sampling && native_unit(t)) {
-                        let q_one = self.plane_is_one(planes, crate::shade::slot::tex(u) + 3);
-                        sv.tex_one[u] = Some(self.b.ins().band(w_one, q_one));
+                        sv.tex_one[u] = Some(self.b.ins().band_imm_u(ones, 2 << u));
                     }
                 }
             }
@@ -431,6 +437,15 @@ impl<'a> Gen<'a> {
         if let Some((px0, _)) = px {
             args.push(px0.into());
         }
+        // A key without texture units (no callout, whose values would be
+        // spilled across it) keeps the unorm8 conversion's 255.0 in a
+        // register for the span: one instruction fewer a group of the
+        // `fill` frame's 50.
+        let seeded = self
+            .key
+            .shade
+            .filter(|s| !s.textured())
+            .map(|_| (255.0f32.to_bits(), self.fconst(255.0)));
         self.b.ins().jump(head, &args);
         // A group with live lanes goes straight to work; only one without
         // asks whether any live lane is left (two instructions fewer a group
@@ -451,6 +466,7 @@ impl<'a> Gen<'a> {
         // than the loads (which hit L1) cost at run time.
         self.consts.clear();
         self.fconsts.clear();
+        self.fconsts.extend(seeded);
         let uniforms = Uniforms::load(self, u, call);
         let mut group = self.group(&sv, lane0, bits);
         group.px = px_head;
