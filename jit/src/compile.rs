@@ -43,6 +43,25 @@
 //! 2-core machine: `fill` 123 -> ~150 µs, `ops` 291 -> ~350 µs; the
 //! 256-key `thrash-first` frame stays about 1/30 of llvmpipe's).
 //!
+//! Then (issue 13, fourth session; same method, `fill.c CASE 1` and `CASE 3`
+//! runs, the difference halved: a frame's instructions): whether the 1/w
+//! and q/w planes are exactly 1 comes from the caller once a primitive
+//! (`SpanCall::ones`, `Planes::ones`) rather than from six plane loads a
+//! span; untextured keys keep the unorm8 conversion's 255.0 in a register
+//! across the span; textured keys make zero where it is used (kept for the
+//! group it was spilled); and the caller's per-span path reads the target
+//! once a batch (`Specialist::run_with_view`). `fill` 282.5 M -> 272.4 M
+//! a frame (16.84 -> 16.24 instructions a fragment; its specialist 52.4 ->
+//! 51.1 a group), `tex` 1318.8 M -> 1268.8 M (its specialists 824 -> 791 M).
+//! Tried and dropped: each bilinear row's two texels as one 8-byte load
+//! (8 loads a level where 16 are made now): the pair vectors feed two
+//! shuffles, so Cranelift folds none of the loads (it folds a load into a
+//! single use only), and a textured group took 513 instructions where it
+//! takes 521, for a second gather path in every bilinear level;
+//! the loop made twice for untextured keys, for w exactly 1 and any w (two
+//! instructions fewer a group): Cranelift then folded no plane's `a0` into
+//! its multiply-add (5 instructions a plane, not 4), which cost more.
+//!
 //! The function reads and writes whole groups of four pixels from the pointers
 //! in [`SpanCall`]: the caller (the `specialist` module) guarantees that
 //! `4 * groups` pixels are addressable from each of them.
@@ -516,6 +535,14 @@ impl<'a> Gen<'a> {
     }
 
     fn splat(&mut self, v: i64) -> Value {
+        if v == 0 && self.key.shade.is_some_and(|s| s.textured()) {
+            // In textured keys zero is one `pxor` where it is used: kept for
+            // the group, it lived across the texture stage and was spilled
+            // (the `tex` frame's depth-tested groups stored and reloaded
+            // it): 1277.7 -> 1268.8 M instructions a frame. (Untextured
+            // keys keep it: the `ops` frame took 0.8% more without.)
+            return self.vconst([0; 4]);
+        }
         if let Some(&(_, c)) = self.consts.iter().find(|(k, _)| *k == v) {
             return c;
         }
