@@ -24,7 +24,7 @@
 //! - a span whose 1/w plane is exactly 1 (every `glOrtho` or untransformed
 //!   draw) takes the colours and texture coordinates from the planes
 //!   without dividing by 1/w or q (`shade::perspective`, `plain_coords`:
-//!   bit for bit what the division gives, see `w_is_one`);
+//!   bit for bit what the division gives, see `Planes::is_one`);
 //! - the plane loads come in the order Cranelift folds one into its
 //!   fused multiply-add (4 instructions a plane, was 5);
 //! - untextured alpha is shaded alone for the alpha test, the other
@@ -42,6 +42,25 @@
 //! arm (release build, `compile_time` test below, medians on the loaded
 //! 2-core machine: `fill` 123 -> ~150 µs, `ops` 291 -> ~350 µs; the
 //! 256-key `thrash-first` frame stays about 1/30 of llvmpipe's).
+//!
+//! Then (issue 13, fourth session; same method, `fill.c CASE 1` and `CASE 3`
+//! runs, the difference halved: a frame's instructions): whether the 1/w
+//! and q/w planes are exactly 1 comes from the caller once a primitive
+//! (`SpanCall::ones`, `Planes::ones`) rather than from six plane loads a
+//! span; untextured keys keep the unorm8 conversion's 255.0 in a register
+//! across the span; textured keys make zero where it is used (kept for the
+//! group it was spilled); and the caller's per-span path reads the target
+//! once a batch (`Specialist::run_with_view`). `fill` 282.5 M -> 272.4 M
+//! a frame (16.84 -> 16.24 instructions a fragment; its specialist 52.4 ->
+//! 51.1 a group), `tex` 1318.8 M -> 1268.8 M (its specialists 824 -> 791 M).
+//! Tried and dropped: each bilinear row's two texels as one 8-byte load
+//! (8 loads a level where 16 are made now): the pair vectors feed two
+//! shuffles, so Cranelift folds none of the loads (it folds a load into a
+//! single use only), and a textured group took 513 instructions where it
+//! takes 521, for a second gather path in every bilinear level;
+//! the loop made twice for untextured keys, for w exactly 1 and any w (two
+//! instructions fewer a group): Cranelift then folded no plane's `a0` into
+//! its multiply-add (5 instructions a plane, not 4), which cost more.
 //!
 //! The function reads and writes whole groups of four pixels from the pointers
 //! in [`SpanCall`]: the caller (the `specialist` module) guarantees that
@@ -116,7 +135,10 @@ pub struct SpanCall {
     pub planes: *const Planes,
     /// The span's row in llvmpipe's top-down frame, for the planes.
     pub row: f32,
-    pub _pad2: u32,
+    /// [`Planes::ones`] of the span's planes for the key's natively sampled
+    /// units (`native_units`): which planes are exactly 1, found once a
+    /// primitive rather than once a span.
+    pub ones: u32,
     /// The draw's textures (keys with texture units), or null.
     pub tex: *const crate::callout::TexView<'static>,
 }
@@ -379,12 +401,15 @@ impl<'a> Gen<'a> {
             let (planes, row, px0) = self.planes_and_row(call, x0);
             sv.planes = Some((planes, row, px0));
             if shade.color && !shade.flat {
-                let w_one = self.w_is_one(planes);
-                sv.w_one = Some(w_one);
+                // The caller found which planes are exactly 1 (`SpanCall::ones`).
+                let ones = self
+                    .b
+                    .ins()
+                    .load(types::I32, mem(), call, offset_of!(SpanCall, ones) as i32);
+                sv.w_one = Some(self.b.ins().band_imm_u(ones, 1));
                 for (u, unit) in shade.tex.iter().enumerate() {
                     if unit.as_ref().is_some_and(|t| self.native_sampling && native_unit(t)) {
-                        let q_one = self.plane_is_one(planes, crate::shade::slot::tex(u) + 3);
-                        sv.tex_one[u] = Some(self.b.ins().band(w_one, q_one));
+                        sv.tex_one[u] = Some(self.b.ins().band_imm_u(ones, 2 << u));
                     }
                 }
             }
@@ -431,6 +456,15 @@ impl<'a> Gen<'a> {
         if let Some((px0, _)) = px {
             args.push(px0.into());
         }
+        // A key without texture units (no callout, whose values would be
+        // spilled across it) keeps the unorm8 conversion's 255.0 in a
+        // register for the span: one instruction fewer a group of the
+        // `fill` frame's 50.
+        let seeded = self
+            .key
+            .shade
+            .filter(|s| !s.textured())
+            .map(|_| (255.0f32.to_bits(), self.fconst(255.0)));
         self.b.ins().jump(head, &args);
         // A group with live lanes goes straight to work; only one without
         // asks whether any live lane is left (two instructions fewer a group
@@ -451,6 +485,7 @@ impl<'a> Gen<'a> {
         // than the loads (which hit L1) cost at run time.
         self.consts.clear();
         self.fconsts.clear();
+        self.fconsts.extend(seeded);
         let uniforms = Uniforms::load(self, u, call);
         let mut group = self.group(&sv, lane0, bits);
         group.px = px_head;
@@ -500,6 +535,14 @@ impl<'a> Gen<'a> {
     }
 
     fn splat(&mut self, v: i64) -> Value {
+        if v == 0 && self.key.shade.is_some_and(|s| s.textured()) {
+            // In textured keys zero is one `pxor` where it is used: kept for
+            // the group, it lived across the texture stage and was spilled
+            // (the `tex` frame's depth-tested groups stored and reloaded
+            // it): 1277.7 -> 1268.8 M instructions a frame. (Untextured
+            // keys keep it: the `ops` frame took 0.8% more without.)
+            return self.vconst([0; 4]);
+        }
         if let Some(&(_, c)) = self.consts.iter().find(|(k, _)| *k == v) {
             return c;
         }

@@ -211,6 +211,35 @@ impl Default for Planes {
 }
 
 impl Planes {
+    /// Whether slot `k`'s plane is exactly 1 at every pixel: `a0` is 1.0 and
+    /// `dadx`, `dady` are ±0 (then `fma(dady, row, fma(dadx, px, 1))` is 1
+    /// for every finite `px` and `row`), compared as bits.
+    #[inline]
+    pub fn is_one(&self, k: usize) -> bool {
+        let [a0, dadx, dady] = self.coeffs[k].map(|c| c[0].to_bits());
+        a0 == 1.0f32.to_bits() && (dadx | dady) & 0x7fff_ffff == 0
+    }
+
+    /// What compiled code reads as `SpanCall::ones`: bit 0 the 1/w plane
+    /// [`Self::is_one`] (colours and coordinates need no division by it),
+    /// bit `1 + u` for each unit `u` of `units` (a bit mask) that and unit
+    /// `u`'s q/w plane too (its s and t are its planes' values).
+    pub fn ones(&self, units: u32) -> u32 {
+        if !self.is_one(slot::INV_W) {
+            return 0;
+        }
+        let mut bits = 1;
+        let mut rest = units;
+        while rest != 0 {
+            let u = rest.trailing_zeros() as usize;
+            rest &= rest - 1;
+            if u < crate::texture::MAX_UNITS && self.is_one(slot::tex(u) + 3) {
+                bits |= 2 << u;
+            }
+        }
+        bits
+    }
+
     /// Sets slot `k`'s plane.
     #[inline]
     pub fn set(&mut self, k: usize, a0: f32, dadx: f32, dady: f32) {

@@ -303,8 +303,101 @@ impl<'a> Target<'a> {
         self.stencil.as_deref_mut()
     }
 
+    /// The geometry [`crate::Specialist`]'s per-span path reads, once a batch.
+    pub(crate) fn layout(&self) -> Layout {
+        Layout {
+            width: self.width,
+            height: self.height,
+            y0: self.y0,
+            rows: self.rows,
+            stride: self.stride,
+            bpp: self.color_format.bytes_per_pixel(),
+            top_down: self.top_down,
+        }
+    }
+
+    /// Each buffer's first element and length in elements (depth: with
+    /// `log2` of its element size; null and 0 for a buffer the view lacks),
+    /// for the per-span path: no slicing or enum match a span.
+    pub(crate) fn raw_parts(&mut self) -> RawParts {
+        let (depth, depth_len, depth_shift) = match &mut self.depth {
+            Some(DepthTarget::D16(d)) => (d.as_mut_ptr().cast(), d.len(), 1),
+            Some(DepthTarget::D24(d) | DepthTarget::D32(d)) => (d.as_mut_ptr().cast(), d.len(), 2),
+            None => (std::ptr::null_mut(), 0, 0),
+        };
+        let (stencil, stencil_len) = match &mut self.stencil {
+            Some(s) => (s.as_mut_ptr(), s.len()),
+            None => (std::ptr::null_mut(), 0),
+        };
+        RawParts {
+            color: self.color.as_mut_ptr(),
+            color_len: self.color.len(),
+            depth,
+            depth_len,
+            depth_shift,
+            stencil,
+            stencil_len,
+        }
+    }
+
     /// Splits the view into its color bytes, depth and stencil buffers at once.
     pub fn parts_mut(&mut self) -> (&mut [u8], Option<&mut DepthTarget<'a>>, Option<&mut [u8]>) {
         (self.color, self.depth.as_mut(), self.stencil.as_deref_mut())
     }
+}
+
+/// A target's geometry ([`Target::layout`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Layout {
+    pub width: u32,
+    pub height: u32,
+    pub y0: u32,
+    pub rows: u32,
+    pub stride: usize,
+    pub bpp: usize,
+    pub top_down: bool,
+}
+
+impl Layout {
+    /// `Target::owned_mask` of `span`, and the fragments of its row inside
+    /// the view (`min(width - x, 64)`, 0 outside).
+    #[inline]
+    pub fn owned(&self, span: &crate::FragmentSpan) -> (u64, u32) {
+        if span.y.wrapping_sub(self.y0) >= self.rows || span.x >= self.width {
+            return (0, 0);
+        }
+        let inside = (self.width - span.x).min(crate::SPAN_MAX as u32);
+        // `live_mask` and the view's right edge at once: the first
+        // `min(len, inside)` slots.
+        let n = span.len.min(inside);
+        let live = if n >= 64 {
+            span.mask
+        } else {
+            span.mask & ((1u64 << n) - 1)
+        };
+        (live, inside)
+    }
+
+    /// `Target::color_offset` and `Target::index` of a pixel the view owns.
+    #[inline]
+    pub fn offsets(&self, x: u32, y: u32) -> (usize, usize) {
+        let r = y - self.y0;
+        let row = if self.top_down { self.rows - 1 - r } else { r };
+        (
+            row as usize * self.stride + x as usize * self.bpp,
+            r as usize * self.width as usize + x as usize,
+        )
+    }
+}
+
+/// A target's buffers as pointers and lengths ([`Target::raw_parts`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RawParts {
+    pub color: *mut u8,
+    pub color_len: usize,
+    pub depth: *mut u8,
+    pub depth_len: usize,
+    pub depth_shift: u32,
+    pub stencil: *mut u8,
+    pub stencil_len: usize,
 }

@@ -7,7 +7,7 @@
 use super::{le, mem, Gen, Group, SpanCall, SpanValues, SplatUniforms, I32X4};
 use crate::key::{ColorFormat, DepthFormat, ShadeKey};
 use crate::shade::{exp2_coeffs, slot, FogMode, Planes};
-use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
+use cranelift_codegen::ir::condcodes::FloatCC;
 use cranelift_codegen::ir::{types, BlockArg, InstBuilder, MemFlagsData, Value};
 use std::mem::offset_of;
 
@@ -49,18 +49,11 @@ impl Gen<'_> {
         }
     }
 
-    /// Whether the 1/w plane at `planes` is exactly 1 at every pixel: its
-    /// `a0` is 1.0 and `dadx`, `dady` are ±0 (then `fma(dady, row, fma(dadx,
-    /// px, 1))` is 1 for every finite `px` and `row`, `1 / 1` is 1 and
-    /// `v · 1` is `v`), compared as bits, once a span.
-    pub(super) fn w_is_one(&mut self, planes: Value) -> Value {
-        self.plane_is_one(planes, slot::INV_W)
-    }
-
     /// Planes `ks` at the lanes, each divided by the 1/w plane (times
     /// `w = 1 / (1/w)`, made once a group and kept in `g.w`), as
     /// `crate::shade::fragment`. When the span's 1/w plane is exactly 1
-    /// ([`Self::w_is_one`]) the planes' values are taken as they are: the
+    /// (bit 0 of `SpanCall::ones`, [`crate::Planes::is_one`]: then `1 / 1` is 1
+    /// and `v · 1` is `v`) the planes' values are taken as they are: the
     /// same bits without the division and the multiplies (the `fill`
     /// frame's groups: 11 instructions fewer of 66).
     /// With `keep_w`, the merged w is kept in `g.w` for later stages.
@@ -140,21 +133,6 @@ impl Gen<'_> {
         arm(self, slow_b, &mut |s| (slow.take().expect("called once"))(s));
         self.b.switch_to_block(merge);
         self.b.block_params(merge).to_vec()
-    }
-
-    /// Whether plane `k` at `planes` is exactly 1 at every pixel, as
-    /// [`Self::w_is_one`].
-    pub(super) fn plane_is_one(&mut self, planes: Value, k: usize) -> Value {
-        let load = |s: &mut Self, c: usize| {
-            let off = offset_of!(Planes, coeffs) + (3 * k + c) * 16;
-            s.b.ins().load(types::I32, mem(), planes, off as i32)
-        };
-        let (a0, dadx, dady) = (load(self, 0), load(self, 1), load(self, 2));
-        let d = self.b.ins().bor(dadx, dady);
-        let d = self.b.ins().band_imm_u(d, 0x7fff_ffff);
-        let a = self.b.ins().bxor_imm_u(a0, i64::from(1.0f32.to_bits()));
-        let any = self.b.ins().bor(a, d);
-        self.b.ins().icmp_imm_u(IntCC::Equal, any, 0)
     }
 
     /// `1 / (1/w)` at `(px, row)`.
