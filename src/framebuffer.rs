@@ -674,12 +674,7 @@ mod mask_row_tests {
             let bpp = format.bytes_per_pixel();
             for width in [0, 1, 2, 5, 11, 12, 16, 17, 24, 25, 63, 64, 100] {
                 for m in 0..16u8 {
-                    let mask = ColorMask {
-                        r: m & 1 != 0,
-                        g: m & 2 != 0,
-                        b: m & 4 != 0,
-                        a: m & 8 != 0,
-                    };
+                    let mask = ColorMask::from_bits(m.into());
                     let bits = pixel::mask_bits(format, mask);
                     let value = next() & if bpp == 2 { 0xffff } else { u32::MAX };
                     let old: Vec<u8> = (0..width * bpp).map(|_| next() as u8).collect();

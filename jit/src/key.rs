@@ -313,6 +313,16 @@ impl ColorMask {
         a: false,
     };
 
+    /// The mask whose bits 0–3 say r, g, b, a (tests walk all 16 masks).
+    pub fn from_bits(bits: u32) -> ColorMask {
+        ColorMask {
+            r: bits & 1 != 0,
+            g: bits & 2 != 0,
+            b: bits & 4 != 0,
+            a: bits & 8 != 0,
+        }
+    }
+
     /// The mask restricted to the channels `format` stores.
     pub fn for_format(self, format: ColorFormat) -> ColorMask {
         ColorMask {

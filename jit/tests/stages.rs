@@ -1143,12 +1143,7 @@ fn color_mask_each_channel_each_format() {
         ColorFormat::Rgb565,
     ] {
         for bits in 0..16u32 {
-            let mask = ColorMask {
-                r: bits & 1 != 0,
-                g: bits & 2 != 0,
-                b: bits & 4 != 0,
-                a: bits & 8 != 0,
-            };
+            let mask = ColorMask::from_bits(bits);
             let mut fb = Fb::new(2, 1, format);
             let dst = encoded(format, dst_rgba);
             fb.set_pixel(0, 0, &dst);
