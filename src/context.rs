@@ -483,7 +483,8 @@ impl Context {
     }
 
     /// Sets the bytes past which the scene is flushed, mid-draw if need be
-    /// (0: [`crate::raster::scene::MEMORY_BOUND`], 64 MiB).
+    /// (0: [`crate::raster::scene::ONE_THREAD_BOUND`], 8 MiB, on one thread,
+    /// else [`crate::raster::scene::MEMORY_BOUND`], 64 MiB).
     pub fn set_scene_bound(&mut self, bytes: usize) {
         self.scene.set_bound(bytes);
     }

@@ -35,6 +35,17 @@ pub const TILE: u32 = 64;
 /// frame of any number of primitives runs in bounded memory.
 pub const MEMORY_BOUND: usize = 64 << 20;
 
+/// With one thread the scene is flushed sooner, past 8 MiB: the flush then
+/// reads back what the same core has just written while it is still in the
+/// cache (this machine: 2 MiB of L2 a core, 32 MiB of L3). `fill.c lit16`
+/// (1.6 M tiny lit triangles, the scene ~300 bytes a triangle), one thread,
+/// medians of 4 interleaved runs: 191 ms at 64 MiB, 183 at 16, 173 at 8,
+/// 170 at 2; `lit16list` 186 -> 164 ms at 8 MiB; `lit`, `tex` and `tris`
+/// the same or faster. With two threads 8 MiB gained nothing on `lit16`
+/// (171 -> 168 ms) and cost `lit` about 10% (more flushes, each handed to
+/// the pool and waited for), 2 MiB cost `lit16` 6%: they keep [`MEMORY_BOUND`].
+pub const ONE_THREAD_BOUND: usize = 8 << 20;
+
 /// A scene is flushed when the texels its draws hold pass this many bytes
 /// (each image counted once), as llvmpipe flushes a scene referencing more
 /// than `LP_SCENE_MAX_RESOURCE_SIZE` of textures (64 MiB, `lp_scene.h`):
@@ -212,7 +223,7 @@ impl Scene {
         self.prims.is_empty() && self.clears.is_empty()
     }
 
-    /// Bytes held (primitives, bin entries, draws): the scene is flushed past [`MEMORY_BOUND`].
+    /// Bytes held (primitives, bin entries, draws): the scene is flushed past [`Scene::bound`].
     pub fn bytes(&self) -> usize {
         self.bytes
     }
@@ -293,16 +304,17 @@ impl Scene {
         }
     }
 
-    /// Bytes past which a draw flushes ([`MEMORY_BOUND`] unless set).
-    pub fn bound(&self) -> usize {
-        if self.bound == 0 {
-            MEMORY_BOUND
-        } else {
-            self.bound
+    /// Bytes past which a draw on `threads` threads flushes (unless set:
+    /// [`ONE_THREAD_BOUND`] on one thread, else [`MEMORY_BOUND`]).
+    pub fn bound(&self, threads: usize) -> usize {
+        match self.bound {
+            0 if threads <= 1 => ONE_THREAD_BOUND,
+            0 => MEMORY_BOUND,
+            set => set,
         }
     }
 
-    /// Sets the bytes past which a draw flushes (0: [`MEMORY_BOUND`]).
+    /// Sets the bytes past which a draw flushes (0: [`Self::bound`]'s default).
     pub fn set_bound(&mut self, bytes: usize) {
         self.bound = bytes;
     }
@@ -600,7 +612,7 @@ impl Binner<'_> {
         });
         scene.bytes += std::mem::size_of::<Binned>();
         scene.bin(r, entry);
-        if scene.bytes > scene.bound() || scene.texture_bytes > TEXTURE_BOUND {
+        if scene.bytes > scene.bound(self.threads) || scene.texture_bytes > TEXTURE_BOUND {
             self.flush();
         }
     }
