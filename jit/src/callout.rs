@@ -201,13 +201,13 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
     let Some(call) = (unsafe { call.as_mut() }) else {
         return;
     };
-    // SAFETY: `view` is null or the `TexView` `Specialist::run_with_view`
+    // SAFETY: `view` is null or the `TexView` `Specialist::run_splatted`
     // built for this call, alive until it returns.
     let Some(view) = (unsafe { call.view.as_ref() }) else {
         return;
     };
     // SAFETY: `planes` is null or `SpanCall::planes`, the span's planes, which
-    // `Specialist::run_with_view` keeps borrowed across the call.
+    // `Specialist::run_splatted` keeps borrowed across the call.
     let Some(planes) = (unsafe { call.planes.as_ref() }) else {
         return;
     };

@@ -50,7 +50,7 @@
 //! span; untextured keys keep the unorm8 conversion's 255.0 in a register
 //! across the span; textured keys make zero where it is used (kept for the
 //! group it was spilled); and the caller's per-span path reads the target
-//! once a batch (`Specialist::run_with_view`). `fill` 282.5 M -> 272.4 M
+//! once a batch (`Specialist::run_splatted`). `fill` 282.5 M -> 272.4 M
 //! a frame (16.84 -> 16.24 instructions a fragment; its specialist 52.4 ->
 //! 51.1 a group), `tex` 1318.8 M -> 1268.8 M (its specialists 824 -> 791 M).
 //! Tried and dropped: each bilinear row's two texels as one 8-byte load
@@ -1464,7 +1464,7 @@ impl Uniforms {
 /// What a specialist's second argument points to: the integer uniforms the
 /// stages compare and select with, each in four lanes, then the
 /// [`FragmentUniforms`] themselves (which the shading stage reads as
-/// scalars). Made once a batch of spans (`Specialist::run_with_view`), so
+/// scalars). Made once a batch of spans (`Specialist::run_splatted`), so
 /// that a group loads each in one aligned vector load where loading,
 /// moving and splatting a scalar took 3 instructions (the `ops` frame's
 /// groups: 2 uniforms, 4 instructions fewer).

@@ -332,11 +332,11 @@ impl Specialist {
         target: &mut Target<'_>,
     ) -> Result<(), FragmentError> {
         let view = self.texture_view(textures);
-        self.run_with_view(uniforms, (textures, &view), spans, planes, target)
+        self.run_splatted(&SplatUniforms::new(uniforms), (textures, &view), spans, planes, target)
     }
 
     /// What this specialist reads of a draw's `textures`, made once for all
-    /// the draw's spans ([`Self::run_with_view`]).
+    /// the draw's spans ([`Self::run_splatted`]).
     pub fn texture_view<'a>(&'a self, textures: &'a TextureSet<'a>) -> DrawTextures<'a> {
         match self.key.shade.as_ref().filter(|s| s.textured()) {
             Some(shade) => match TexView::new(&shade.tex, textures) {
@@ -348,19 +348,7 @@ impl Specialist {
     }
 
     /// [`Self::run_with_planes`] with the view of `textures` made by
-    /// [`Self::texture_view`] (a draw makes it once, not for every batch of spans).
-    pub fn run_with_view(
-        &self,
-        uniforms: &FragmentUniforms,
-        textures: (&TextureSet<'_>, &DrawTextures<'_>),
-        spans: &[FragmentSpan],
-        planes: &[Planes],
-        target: &mut Target<'_>,
-    ) -> Result<(), FragmentError> {
-        self.run_splatted(&SplatUniforms::new(uniforms), textures, spans, planes, target)
-    }
-
-    /// [`Self::run_with_view`] with the uniforms splatted once for a draw,
+    /// [`Self::texture_view`] and the uniforms splatted, both once for a draw,
     /// not once a batch (a flush runs a batch per tile a small triangle
     /// touches: `thrash`, 112 instructions a batch).
     pub fn run_splatted(
@@ -576,11 +564,11 @@ impl Specialist {
         // `check_planes`), and reads and writes `4 * call.groups` pixels from each
         // non-null buffer pointer (and no buffer the key does not use): `run_span`
         // set each pointer of the batch's reused record for this span, from a slice
-        // of at least that many pixels (or null), or `run_with_view` did, from the
+        // of at least that many pixels (or null), or `run_splatted` did, from the
         // target's `raw_parts` taken after any `run_span` borrowed the buffers
         // again, an offset it checked to leave that many elements before the
         // buffer's length. Keys with
-        // texture units read `call.tex`, a `TexView` made for their units (`run_with_view`
+        // texture units read `call.tex`, a `TexView` made for their units (`run_splatted`
         // checked `is_for`) and alive across the call, and pass it to
         // `callout::texture_group` with a stack slot of their own.
         unsafe { func(call, u) }

@@ -12,6 +12,7 @@ mod support;
 
 use proptest::prelude::*;
 use proptest::sample::select;
+use softgl_jit::compile::SplatUniforms;
 use softgl_jit::interp;
 use softgl_jit::texture::{
     effective_combine, BaseFormat, CombineFn, CombineKey, CombineSrc, DepthMode, EnvMode, Filter, Image, MipFilter,
@@ -1110,7 +1111,7 @@ fn a_view_made_for_another_key_is_not_read() {
     ] {
         let got = render(&|t| {
             specialist
-                .run_with_view(&u, (&set, &view), &spans, &[planes], t)
+                .run_splatted(&SplatUniforms::new(&u), (&set, &view), &spans, &[planes], t)
                 .unwrap()
         });
         assert_eq!(got, want);
