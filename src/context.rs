@@ -18,6 +18,7 @@ use crate::lighting::{
     ColorMaterialMode, LightModelParam, LightParam, LightParamName, Material, MaterialParam, MaterialParamName,
 };
 use crate::matrix::{self, MatrixMode, MatrixStack};
+use crate::raster::background::Background;
 use crate::raster::scene::{DrawState, Scene};
 use crate::state::{
     Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, RasterState, ShadeModel, WindowRect,
@@ -27,7 +28,6 @@ use crate::texture::unit::{TexturePlan, TextureUnits};
 use crate::texture::TextureStore;
 use crate::tracked::Tracked;
 use glam::{Mat4, Vec3, Vec4};
-use softgl_jit::interp;
 use softgl_jit::texture::MAX_UNITS;
 use softgl_jit::FragmentUniforms;
 use softgl_jit::{
@@ -352,6 +352,9 @@ pub struct Context {
     pub(crate) textures: Tracked<crate::texture::TextureStore>,
     /// Draws and clears not yet rasterized (`raster/scene.rs`).
     scene: Scene,
+    /// A scene flushing on the pool while `scene` records, holding the
+    /// framebuffer's buffers (`fb` is hollow meanwhile: `raster/background.rs`).
+    background: Background,
     /// The vertex, material and texture-coordinate storage `begin` reuses.
     spare: Spare,
     /// Threads a flush rasterizes tiles on.
@@ -387,6 +390,7 @@ impl Drop for Context {
     /// Rasterizes what is pending: a context's last draws reach its
     /// framebuffer (lent memory too) even without a `glFinish`.
     fn drop(&mut self) {
+        let _ = self.background.join(&mut self.fb);
         let _ = self.scene.flush(&mut self.fb, self.threads);
     }
 }
@@ -425,6 +429,7 @@ impl Context {
             ordered_dither: std::env::var("SOFTGL_DITHER").is_ok_and(|v| v.trim() == "1"),
             textures: Tracked::new(crate::texture::TextureStore::new()),
             scene: Scene::default(),
+            background: Background::default(),
             spare: Spare::default(),
             threads: crate::raster::pool::default_threads(),
             plan_cache: None,
@@ -484,7 +489,8 @@ impl Context {
 
     /// Sets the bytes past which the scene is flushed, mid-draw if need be
     /// (0: [`crate::raster::scene::ONE_THREAD_BOUND`], 8 MiB, on one thread,
-    /// else [`crate::raster::scene::MEMORY_BOUND`], 64 MiB).
+    /// else [`crate::raster::scene::THREADED_BOUND`], 32 MiB, with the
+    /// scene before it flushing in the background).
     pub fn set_scene_bound(&mut self, bytes: usize) {
         self.scene.set_bound(bytes);
     }
@@ -498,7 +504,8 @@ impl Context {
     /// Rasterizes every recorded draw and clear into the framebuffer; a
     /// fragment stage's failure is recorded as `GL_INVALID_OPERATION`.
     pub(crate) fn finish_scene(&mut self) {
-        if let Err(_e) = self.scene.flush(&mut self.fb, self.threads) {
+        let before = self.background.join(&mut self.fb);
+        if let Err(_e) = before.and(self.scene.flush(&mut self.fb, self.threads)) {
             self.error.get_or_insert(GlError::InvalidOperation);
         }
     }
@@ -1347,7 +1354,13 @@ impl Context {
         vertex_stage.tex_coords = tex_coords.as_ref().map(|t| (t, TexFetch(tex)));
         let mut geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
         geometry.set_user_planes(self.projection.top());
-        if interp::check_key(&key, &self.fb.target()).is_err() {
+        // The framebuffer may be hollow (its buffers with a background
+        // flush): the key is checked against its formats.
+        let fb = &self.fb;
+        if key.validate().is_err()
+            || (key.color_format, key.depth_format, key.stencil_buffer)
+                != (fb.color_format(), fb.depth_format(), fb.has_stencil())
+        {
             return self.record(Err(GlError::InvalidOperation));
         }
         let specialist = match self.backend {
@@ -1360,7 +1373,7 @@ impl Context {
             specialist,
             textures: textures.share(),
         };
-        let mut binner = self.scene.draw(&mut self.fb, self.threads, state);
+        let mut binner = self.scene.draw(&mut self.fb, &mut self.background, self.threads, state);
         geometry.draw(&vertex_stage, mode, count, fetch, &mut binner, &mut self.window);
         let r = binner.finish();
         self.record(r.map_err(|_| GlError::InvalidOperation))

@@ -429,6 +429,27 @@ impl Framebuffer {
         })
     }
 
+    /// A framebuffer of the same size, layout and formats that holds no
+    /// pixels: it stands in for this one while its buffers are with a flush
+    /// on another thread (`raster/background.rs`), answering for the sizes
+    /// and formats a draw is recorded with. Nothing reads or writes its
+    /// pixels: every path that does waits for the flush and gets the real
+    /// buffers back first.
+    pub(crate) fn hollow(&self) -> Framebuffer {
+        Framebuffer {
+            desc: self.desc,
+            color: ColorStore::Owned(Vec::new()),
+            color_stride: self.color_stride,
+            color_top_down: self.color_top_down,
+            depth: self.depth.as_ref().map(|d| match d {
+                DepthBuffer::D16(_) => DepthBuffer::D16(Vec::new()),
+                DepthBuffer::D24(_) => DepthBuffer::D24(Vec::new()),
+                DepthBuffer::D32(_) => DepthBuffer::D32(Vec::new()),
+            }),
+            stencil: self.stencil.as_ref().map(|_| Vec::new()),
+        }
+    }
+
     /// Replaces the color buffer with `memory` (same size and format), rows
     /// `stride` bytes apart, top row first when `top_down`. Depth and stencil
     /// are kept. `InvalidValue` (and no change) when `memory` is too small.

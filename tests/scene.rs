@@ -148,6 +148,51 @@ fn a_draw_past_the_memory_bound_flushes_midway_and_draws_the_same_pixels() {
     assert!(image == split_image, "flushing midway changed pixels");
 }
 
+/// With two or more threads a scene past its bound is flushed on the pool
+/// while the next one records (`raster/background.rs`): the same flushes
+/// and the same bytes as one thread, a clear recorded while the flush is in
+/// flight lands after it, and reading the framebuffer waits for it.
+#[test]
+fn scenes_flushed_in_the_background_draw_what_one_thread_draws() {
+    let (w, h) = (200, 150);
+    let (pos, col) = grid(20_000, w, h);
+    let render = |threads: usize| {
+        let mut gl = context(w, h);
+        gl.set_threads(threads);
+        gl.set_scene_bound(256 << 10);
+        gl.ortho(0.0, f64::from(w), 0.0, f64::from(h), -1.0, 1.0).unwrap();
+        gl.enable(Capability::Blend).unwrap();
+        gl.blend_func(softgl::BlendFactor::One, softgl::BlendFactor::One)
+            .unwrap();
+        gl.enable(Capability::DepthTest).unwrap();
+        gl.depth_func(softgl::CompareFunc::Always).unwrap();
+        let arrays = VertexArrays::with_colors(2, &pos, 3, &col);
+        gl.draw_arrays(PrimitiveMode::Triangles, 0, 60_000, &arrays).unwrap();
+        let middle = gl.scene_stats();
+        // Recorded while the last background flush may still run: the
+        // clear of the left half comes after it in every tile.
+        gl.enable(Capability::ScissorTest).unwrap();
+        gl.scissor(0, 0, 100, 150).unwrap();
+        gl.clear_color(0.0, 0.0, 1.0, 1.0).unwrap();
+        gl.clear(ClearMask::COLOR).unwrap();
+        gl.disable(Capability::ScissorTest).unwrap();
+        gl.draw_arrays(PrimitiveMode::Triangles, 0, 30_000, &arrays).unwrap();
+        let pixels = gl.read_pixels(0, 0, w as i32, h as i32, softgl::ReadFormat::Rgba8).unwrap();
+        let depth = gl.framebuffer().depth_buffer().map(|d| format!("{d:?}"));
+        (middle, gl.scene_stats(), pixels, depth)
+    };
+    let one = render(1);
+    assert!(one.0.flushes >= 5, "{:?}", one.0);
+    for threads in [2, 8] {
+        let many = render(threads);
+        assert_eq!(many.0.flushes, one.0.flushes, "{threads} threads: {:?}", many.0);
+        assert_eq!(many.1.flushes, one.1.flushes, "{threads} threads: {:?}", many.1);
+        assert!(many.1.peak_bytes <= (256 << 10) + 1024, "{:?}", many.1);
+        assert!(many.2 == one.2, "{threads} threads changed the colours");
+        assert!(many.3 == one.3, "{threads} threads changed the depths");
+    }
+}
+
 #[test]
 fn draws_holding_more_than_64_mib_of_textures_are_flushed() {
     // 24 textures of 4 MiB, each uploaded, drawn with and deleted, no flush

@@ -7,6 +7,7 @@
 //!
 //! Measured facts about llvmpipe that these rules follow: `docs/llvmpipe-facts.md`.
 
+pub mod background;
 mod block;
 mod edges;
 mod line;

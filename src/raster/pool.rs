@@ -35,7 +35,9 @@ fn cores() -> usize {
 /// The pools made so far, by thread count.
 type Pools = Mutex<Vec<(usize, Arc<ThreadPool>)>>;
 
-fn pool(threads: usize) -> Option<Arc<ThreadPool>> {
+/// The private pool of `threads` threads, made on first use; `None` when
+/// its threads could not be started.
+pub(crate) fn pool(threads: usize) -> Option<Arc<ThreadPool>> {
     static POOLS: OnceLock<Pools> = OnceLock::new();
     let mut pools = POOLS
         .get_or_init(|| Mutex::new(Vec::new()))

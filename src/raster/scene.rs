@@ -16,6 +16,7 @@
 //! their bounds cut to the tile. Either way coverage decides each pixel on
 //! its own, so the pixels are those of the whole primitive at once.
 
+use super::background::Background;
 use super::triangle::{plane_swap, setup_planes, Plane, Prepared};
 use super::{reach_box, Edges, PrimSink, RasterParams, RasterVertex, Rasterize, SpanSink};
 use crate::fragment::{DrawStage, FragmentStage};
@@ -31,8 +32,8 @@ use std::sync::Arc;
 /// Side of a tile, in pixels.
 pub const TILE: u32 = 64;
 
-/// A scene is flushed when what it holds passes this many bytes, so a
-/// frame of any number of primitives runs in bounded memory.
+/// A context holds at most this many bytes of scenes, so a frame of any
+/// number of primitives runs in bounded memory.
 pub const MEMORY_BOUND: usize = 64 << 20;
 
 /// With one thread the scene is flushed sooner, past 8 MiB: the flush then
@@ -43,8 +44,17 @@ pub const MEMORY_BOUND: usize = 64 << 20;
 /// 170 at 2; `lit16list` 186 -> 164 ms at 8 MiB; `lit`, `tex` and `tris`
 /// the same or faster. With two threads 8 MiB gained nothing on `lit16`
 /// (171 -> 168 ms) and cost `lit` about 10% (more flushes, each handed to
-/// the pool and waited for), 2 MiB cost `lit16` 6%: they keep [`MEMORY_BOUND`].
+/// the pool and waited for), 2 MiB cost `lit16` 6%: they flush in the
+/// background instead ([`THREADED_BOUND`]).
 pub const ONE_THREAD_BOUND: usize = 8 << 20;
+
+/// With two or more threads a scene past half of [`MEMORY_BOUND`] is
+/// flushed in the background while the next one records
+/// (`raster/background.rs`): two scenes at most, 64 MiB between them.
+/// `fill.c lit16`, 2 threads, medians of 3 interleaved runs: 122-126 ms a
+/// frame at 16 and 32 MiB, 131 at 64 (the last scene, flushed at the end
+/// of the frame, is the part that does not overlap); llvmpipe 125-131.
+pub const THREADED_BOUND: usize = MEMORY_BOUND / 2;
 
 /// A scene is flushed when the texels its draws hold pass this many bytes
 /// (each image counted once), as llvmpipe flushes a scene referencing more
@@ -292,11 +302,18 @@ impl Scene {
     /// primitives the returned sink receives run with `state`. Past
     /// [`Scene::bound`] bytes the sink flushes the scene into `fb` on
     /// `threads` threads, mid-draw if need be.
-    pub fn draw<'s>(&'s mut self, fb: &'s mut Framebuffer, threads: usize, state: DrawState) -> Binner<'s> {
+    pub fn draw<'s>(
+        &'s mut self,
+        fb: &'s mut Framebuffer,
+        background: &'s mut Background,
+        threads: usize,
+        state: DrawState,
+    ) -> Binner<'s> {
         self.fit(fb.width(), fb.height());
         Binner {
             scene: self,
             fb,
+            background,
             threads,
             state,
             draw: None,
@@ -305,11 +322,11 @@ impl Scene {
     }
 
     /// Bytes past which a draw on `threads` threads flushes (unless set:
-    /// [`ONE_THREAD_BOUND`] on one thread, else [`MEMORY_BOUND`]).
+    /// [`ONE_THREAD_BOUND`] on one thread, else [`THREADED_BOUND`]).
     pub fn bound(&self, threads: usize) -> usize {
         match self.bound {
             0 if threads <= 1 => ONE_THREAD_BOUND,
-            0 => MEMORY_BOUND,
+            0 => THREADED_BOUND,
             set => set,
         }
     }
@@ -322,6 +339,17 @@ impl Scene {
     /// The most bytes held at once since the scene was made, and the flushes run.
     pub fn peak(&self) -> (usize, u64) {
         (self.peak, self.flushes)
+    }
+
+    /// Puts `spare` (an emptied scene) in this one's place to record into,
+    /// with this one's size, bound and counters (the flush to come counted),
+    /// and returns this one, to be flushed on another thread.
+    pub(crate) fn swap_out(&mut self, mut spare: Scene) -> Scene {
+        spare.fit(self.width, self.height);
+        spare.bound = self.bound;
+        spare.peak = self.peak.max(self.bytes);
+        spare.flushes = self.flushes + 1;
+        std::mem::replace(self, spare)
     }
 
     /// Runs every tile into `fb` on `threads` threads and empties the scene.
@@ -513,6 +541,8 @@ impl Scene {
 pub struct Binner<'s> {
     scene: &'s mut Scene,
     fb: &'s mut Framebuffer,
+    /// Where a flush past the bound runs with two or more threads.
+    background: &'s mut Background,
     threads: usize,
     state: DrawState,
     /// The draw's index in the scene, once a primitive of it is recorded
@@ -620,7 +650,11 @@ impl Binner<'_> {
     #[cold]
     #[inline(never)]
     fn flush(&mut self) {
-        if let Err(e) = self.scene.flush(self.fb, self.threads) {
+        let r = match self.threads {
+            0 | 1 => self.scene.flush(self.fb, 1),
+            n => self.background.start(self.scene, self.fb, n),
+        };
+        if let Err(e) = r {
             self.error.get_or_insert(e);
         }
         self.draw = None;
