@@ -487,10 +487,8 @@ impl Context {
         }
     }
 
-    /// Sets the bytes past which the scene is flushed, mid-draw if need be
-    /// (0: [`crate::raster::scene::ONE_THREAD_BOUND`], 8 MiB, on one thread,
-    /// else [`crate::raster::scene::THREADED_BOUND`], 32 MiB, with the
-    /// scene before it flushing in the background).
+    /// Sets the bytes past which the scene is flushed, mid-draw if need be,
+    /// in the background (0: [`crate::raster::scene::SCENE_BOUND`], 16 MiB).
     pub fn set_scene_bound(&mut self, bytes: usize) {
         self.scene.set_bound(bytes);
     }

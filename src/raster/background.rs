@@ -1,11 +1,19 @@
-//! Flushes in the background: with two or more threads, a scene that passes
-//! its bound in the middle of the frame is rasterized on the pool while the
-//! calling thread goes on taking GL calls and recording the next scene, as
-//! llvmpipe's setup thread bins scene N+1 while its rasterizer threads run
-//! scene N. A frame of many small primitives is mostly front end (vertex
-//! work, set-up, binning: two thirds of `fill.c lit16` on one thread), which
-//! before ran alone on one core while the other waited for the frame's
-//! flushes.
+//! Flushes in the background: a scene that passes its bound in the middle
+//! of a frame is rasterized on the pool while the calling thread goes on
+//! taking GL calls and recording the next scene. This is llvmpipe's thread
+//! model: `LP_NUM_THREADS=N` starts N rasterizer threads beside the
+//! application's, which bins scene N+1 while they run scene N
+//! (`lp_rast_queue_scene`, `lp_rast.c`: only `LP_NUM_THREADS=0` rasterizes
+//! on the calling thread; `ps -L` shows `llvmpipe-0` busy beside the client
+//! with `LP_NUM_THREADS=1`; docs/llvmpipe-facts.md). `SOFTGL_THREADS=N`
+//! runs tiles on N threads the same way: a background flush on a pool of
+//! N - 1 threads (one at least) while the caller records, and the flush
+//! that ends a frame on N threads, the caller among them, while it waits.
+//! A frame of many small primitives is mostly front end (vertex work,
+//! set-up, binning: two thirds of `fill.c lit16`), which before ran alone
+//! while the tiles waited. `lit16`, medians of 3 interleaved runs: one
+//! thread 172 -> 124-128 ms a frame (llvmpipe 147-167), two threads ~167 ->
+//! 122-126 (llvmpipe 125-131).
 //!
 //! The scene and the framebuffer's buffers move to the pool and back: the
 //! context keeps a hollow framebuffer of the same size and formats
@@ -70,10 +78,10 @@ impl Background {
     /// flushes at once.
     pub fn start(&mut self, scene: &mut Scene, fb: &mut Framebuffer, threads: usize) -> Result<(), FragmentError> {
         let before = self.join(fb);
-        // The caller keeps a core for itself: on all of them, its recording
-        // (the critical path) had two thirds of a core, and `lit16` with 16
-        // MiB scenes took 153-193 ms a frame against 122-138 (2 threads,
-        // interleaved runs).
+        // The caller keeps a core for itself: with the flush on all of
+        // them, its recording (the critical path) had two thirds of a core,
+        // and `lit16` with 16 MiB scenes took 153-193 ms a frame against
+        // 122-138 (2 threads, interleaved runs).
         let threads = threads.saturating_sub(1).max(1);
         let Some(pool) = pool::pool(threads) else {
             return before.and(scene.flush(fb, threads));

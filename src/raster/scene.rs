@@ -32,29 +32,17 @@ use std::sync::Arc;
 /// Side of a tile, in pixels.
 pub const TILE: u32 = 64;
 
-/// A context holds at most this many bytes of scenes, so a frame of any
-/// number of primitives runs in bounded memory.
-pub const MEMORY_BOUND: usize = 64 << 20;
-
-/// With one thread the scene is flushed sooner, past 8 MiB: the flush then
-/// reads back what the same core has just written while it is still in the
-/// cache (this machine: 2 MiB of L2 a core, 32 MiB of L3). `fill.c lit16`
-/// (1.6 M tiny lit triangles, the scene ~300 bytes a triangle), one thread,
-/// medians of 4 interleaved runs: 191 ms at 64 MiB, 183 at 16, 173 at 8,
-/// 170 at 2; `lit16list` 186 -> 164 ms at 8 MiB; `lit`, `tex` and `tris`
-/// the same or faster. With two threads 8 MiB gained nothing on `lit16`
-/// (171 -> 168 ms) and cost `lit` about 10% (more flushes, each handed to
-/// the pool and waited for), 2 MiB cost `lit16` 6%: they flush in the
-/// background instead ([`THREADED_BOUND`]).
-pub const ONE_THREAD_BOUND: usize = 8 << 20;
-
-/// With two or more threads a scene past half of [`MEMORY_BOUND`] is
-/// flushed in the background while the next one records
-/// (`raster/background.rs`): two scenes at most, 64 MiB between them.
-/// `fill.c lit16`, 2 threads, medians of 3 interleaved runs: 122-126 ms a
-/// frame at 16 and 32 MiB, 131 at 64 (the last scene, flushed at the end
-/// of the frame, is the part that does not overlap); llvmpipe 125-131.
-pub const THREADED_BOUND: usize = MEMORY_BOUND / 2;
+/// A scene is flushed past this many bytes, in the background
+/// (`raster/background.rs`): the caller records the next scene meanwhile,
+/// so a context holds two scenes at most, 32 MiB between them, and a frame
+/// of any number of primitives runs in bounded memory. Measured with
+/// `fill.c lit16` (1.6 M tiny lit triangles, ~300 bytes of scene each),
+/// medians of 3 interleaved runs, llvmpipe alongside: one thread 124-128
+/// ms a frame at 8 and 16 MiB, 128-163 at 32, 134-141 at 64 (llvmpipe
+/// 147-167); two threads 122-138 at 16, 124-126 at 32, 131 at 64 (llvmpipe
+/// 125-131). Flushed at once on one thread, the scene was best at 8 MiB
+/// (191 ms at 64, 173 at 8: read back while still in the cache).
+pub const SCENE_BOUND: usize = 16 << 20;
 
 /// A scene is flushed when the texels its draws hold pass this many bytes
 /// (each image counted once), as llvmpipe flushes a scene referencing more
@@ -321,12 +309,10 @@ impl Scene {
         }
     }
 
-    /// Bytes past which a draw on `threads` threads flushes (unless set:
-    /// [`ONE_THREAD_BOUND`] on one thread, else [`THREADED_BOUND`]).
-    pub fn bound(&self, threads: usize) -> usize {
+    /// Bytes past which a draw flushes (unless set: [`SCENE_BOUND`]).
+    pub fn bound(&self) -> usize {
         match self.bound {
-            0 if threads <= 1 => ONE_THREAD_BOUND,
-            0 => THREADED_BOUND,
+            0 => SCENE_BOUND,
             set => set,
         }
     }
@@ -642,7 +628,7 @@ impl Binner<'_> {
         });
         scene.bytes += std::mem::size_of::<Binned>();
         scene.bin(r, entry);
-        if scene.bytes > scene.bound(self.threads) || scene.texture_bytes > TEXTURE_BOUND {
+        if scene.bytes > scene.bound() || scene.texture_bytes > TEXTURE_BOUND {
             self.flush();
         }
     }
@@ -650,10 +636,7 @@ impl Binner<'_> {
     #[cold]
     #[inline(never)]
     fn flush(&mut self) {
-        let r = match self.threads {
-            0 | 1 => self.scene.flush(self.fb, 1),
-            n => self.background.start(self.scene, self.fb, n),
-        };
+        let r = self.background.start(self.scene, self.fb, self.threads);
         if let Err(e) = r {
             self.error.get_or_insert(e);
         }
