@@ -390,7 +390,7 @@ impl Drop for Context {
     /// Rasterizes what is pending: a context's last draws reach its
     /// framebuffer (lent memory too) even without a `glFinish`.
     fn drop(&mut self) {
-        let _ = self.background.join(&mut self.fb);
+        let _ = self.background.settle(&mut self.fb);
         let _ = self.scene.flush(&mut self.fb, self.threads);
     }
 }

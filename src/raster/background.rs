@@ -56,20 +56,24 @@ impl Background {
     }
 
     /// Waits for the flush in flight, if any, and puts its framebuffer
-    /// back into `fb`. Returns that flush's first error.
+    /// back into `fb`. Returns that flush's first error; a panic in it is
+    /// raised again here.
     pub fn join(&mut self, fb: &mut Framebuffer) -> Result<(), FragmentError> {
+        self.settle(fb).unwrap_or_else(|panic| resume_unwind(panic))
+    }
+
+    /// [`Background::join`] handing a panic back rather than raising it
+    /// (for a context's drop, which must not panic).
+    pub fn settle(&mut self, fb: &mut Framebuffer) -> std::thread::Result<Result<(), FragmentError>> {
         let Some(rx) = self.inflight.take() else {
-            return Ok(());
+            return Ok(Ok(()));
         };
         // The job always sends: its flush runs under `catch_unwind`, and
         // the pools live as long as the process.
         let done = rx.recv().expect("a background flush hands its buffers back");
         *fb = done.fb;
         self.spare = Some(done.scene);
-        match done.result {
-            Ok(r) => r,
-            Err(panic) => resume_unwind(panic),
-        }
+        done.result
     }
 
     /// Flushes `scene` into `fb` on a pool of `threads - 1` threads while
