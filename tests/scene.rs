@@ -177,7 +177,9 @@ fn scenes_flushed_in_the_background_draw_what_one_flush_draws() {
         gl.clear(ClearMask::COLOR).unwrap();
         gl.disable(Capability::ScissorTest).unwrap();
         gl.draw_arrays(PrimitiveMode::Triangles, 0, 300, &arrays).unwrap();
-        let pixels = gl.read_pixels(0, 0, w as i32, h as i32, softgl::ReadFormat::Rgba8).unwrap();
+        let pixels = gl
+            .read_pixels(0, 0, w as i32, h as i32, softgl::ReadFormat::Rgba8)
+            .unwrap();
         let depth = gl.framebuffer().depth_buffer().map(|d| format!("{d:?}"));
         (middle, gl.scene_stats(), pixels, depth)
     };
