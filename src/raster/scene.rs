@@ -8,10 +8,23 @@
 //! Clears are recorded per tile too and run as part of the tile's work,
 //! while its pixels are in cache.
 //!
-//! A triangle is set up when it is recorded ([`Tri`]: its coverage, box and
+//! A triangle is set up when it is recorded (its coverage, box and
 //! attribute planes, once, however many tiles it touches; one with no pixel
-//! inside is dropped there); within a tile its coverage is cut to the tile
-//! and its planes copied to the fragment stage. Lines and points are
+//! inside is dropped there) and written as one record of 32-bit words, the
+//! records one after the other in the order recorded: its class (the draw,
+//! what the flush reads of its parameters and the slots of its planes, kept
+//! once for all the triangles that share them, [`Class`]), its coverage
+//! ([`Prepared::encode`]: the box as four u16, a mask or the vertices) and
+//! its planes, 12 bytes each. A lit triangle of a pixel or two is 84 or 92
+//! bytes (it was 240: a 64-byte entry, an 80-byte set-up and six 16-byte
+//! planes, each in its own array), and a strip's triangles are read back in
+//! one pass, in the order written, which the hardware prefetches. `fill.c
+//! lit16` (1.6 M triangles of about 0.7 pixels), one thread: 2437 M → 2499 M
+//! instructions a frame (callgrind: decoding and appending the record cost
+//! more than they save) but 271 → 233 ms (the fastest of 5 interleaved runs
+//! each, a loaded machine): the flush stalled reading back the scene. Within
+//! a tile the coverage is cut to the tile and the planes copied to the
+//! fragment stage. Lines and points are
 //! recorded with their vertices and rasterized by the row rasterizer with
 //! their bounds cut to the tile. Either way coverage decides each pixel on
 //! its own, so the pixels are those of the whole primitive at once.
@@ -39,7 +52,7 @@ pub const MEMORY_BOUND: usize = 64 << 20;
 /// With one thread the scene is flushed sooner, past 8 MiB: the flush then
 /// reads back what the same core has just written while it is still in the
 /// cache (this machine: 2 MiB of L2 a core, 32 MiB of L3). `fill.c lit16`
-/// (1.6 M tiny lit triangles, the scene ~300 bytes a triangle), one thread,
+/// (1.6 M tiny lit triangles, the scene ~300 bytes a triangle then, ~100 now), one thread,
 /// medians of 4 interleaved runs: 191 ms at 64 MiB, 183 at 16, 173 at 8,
 /// 170 at 2; `lit16list` 186 -> 164 ms at 8 MiB; `lit`, `tex` and `tris`
 /// the same or faster. With two threads 8 MiB gained nothing on `lit16`
@@ -794,8 +807,9 @@ mod tests {
     use super::*;
 
     /// What a recorded primitive costs, against a copy of its vertices: a
-    /// line with its vertices, a lit triangle with its coverage (a mask)
-    /// and its six planes (1/w, the colour, depth).
+    /// line with its vertices; a lit triangle (1/w, the colour and depth:
+    /// six planes) of one pixel, of a 2×2 box partly covered, and a large
+    /// one, with their coverage, as [`Binner::triangle`] records them.
     #[test]
     fn a_recorded_primitive_is_smaller_than_its_raster_vertices() {
         let line = std::mem::size_of::<Binned>() + 2 * std::mem::size_of::<Vert>();
@@ -803,10 +817,43 @@ mod tests {
             line * 3 < 2 * std::mem::size_of::<RasterVertex>(),
             "{line} bytes a line"
         );
-        let triangle = 4 * (1 + 4 + 6 * 3);
+        let params = RasterParams {
+            bounds: Rect {
+                x0: 0,
+                y0: 0,
+                x1: 1024,
+                y1: 1024,
+            },
+            depth: Some(DepthFormat::D24),
+            height: 1024,
+            layout: crate::geometry::varying::VaryingLayout {
+                color: true,
+                ..Default::default()
+            },
+            offset: None,
+        };
+        let at = |x: f32, y: f32| RasterVertex {
+            x,
+            y,
+            y_down: 1024.0 - y,
+            z: 0.5,
+            inv_w: 1.0,
+            v: [0.5; MAX_VARYINGS],
+        };
+        let bytes = |v: [RasterVertex; 3]| {
+            let v = [&v[0], &v[1], &v[2]];
+            let p = Edges::window_points(v, params.height);
+            let prep = Prepared::new(p, params.bounds).expect("some pixel is inside");
+            let (n, _) = prep.encode(&mut [0; Prepared::WORDS]);
+            let mut planes = 0;
+            setup_planes(v, plane_swap(p), None, &params, &mut |_, _| planes += 1);
+            4 * (1 + n + 3 * planes)
+        };
         let copied = 3 * std::mem::size_of::<RasterVertex>();
-        assert!(triangle * 6 < copied, "{triangle} bytes recorded, {copied} copied");
-        assert_eq!(triangle, 92);
-        assert!(RECORD < 1 << 8);
+        let one = bytes([at(10.2, 10.2), at(10.9, 10.3), at(10.4, 10.9)]);
+        let masked = bytes([at(10.2, 10.2), at(12.4, 10.3), at(10.4, 12.4)]);
+        let large = bytes([at(10.0, 10.0), at(500.0, 10.0), at(10.0, 500.0)]);
+        assert_eq!((one, masked, large), (84, 92, 132));
+        assert!(masked * 6 < copied, "{masked} bytes recorded, {copied} copied");
     }
 }
