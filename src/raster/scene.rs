@@ -332,8 +332,9 @@ impl Scene {
         }
     }
 
-    /// Bytes past which a draw on `threads` threads flushes (unless set:
-    /// [`ONE_THREAD_BOUND`] on one thread, else [`MEMORY_BOUND`]).
+    /// Bytes past which a draw on `threads` threads flushes (unless set,
+    /// to at most `MOST_BYTES`, 1 GiB: [`ONE_THREAD_BOUND`] on one thread, else
+    /// [`MEMORY_BOUND`]).
     pub fn bound(&self, threads: usize) -> usize {
         match self.bound {
             0 if threads <= 1 => ONE_THREAD_BOUND,
