@@ -8,10 +8,23 @@
 //! Clears are recorded per tile too and run as part of the tile's work,
 //! while its pixels are in cache.
 //!
-//! A triangle is set up when it is recorded ([`Tri`]: its coverage, box and
+//! A triangle is set up when it is recorded (its coverage, box and
 //! attribute planes, once, however many tiles it touches; one with no pixel
-//! inside is dropped there); within a tile its coverage is cut to the tile
-//! and its planes copied to the fragment stage. Lines and points are
+//! inside is dropped there) and written as one record of 32-bit words, the
+//! records one after the other in the order recorded: its class (the draw,
+//! what the flush reads of its parameters and the slots of its planes, kept
+//! once for all the triangles that share them, [`Class`]), its coverage
+//! ([`Prepared::encode`]: the box as four u16, a mask or the vertices) and
+//! its planes, 12 bytes each. A lit triangle of a pixel or two is 84 or 92
+//! bytes (it was 240: a 64-byte entry, an 80-byte set-up and six 16-byte
+//! planes, each in its own array), and a strip's triangles are read back in
+//! one pass, in the order written, which the hardware prefetches. `fill.c
+//! lit16` (1.6 M triangles of about 0.7 pixels), one thread: 2437 M → 2499 M
+//! instructions a frame (callgrind: decoding and appending the record cost
+//! more than they save) but 271 → 233 ms (the fastest of 5 interleaved runs
+//! each, a loaded machine): the flush stalled reading back the scene. Within
+//! a tile the coverage is cut to the tile and the planes copied to the
+//! fragment stage. Lines and points are
 //! recorded with their vertices and rasterized by the row rasterizer with
 //! their bounds cut to the tile. Either way coverage decides each pixel on
 //! its own, so the pixels are those of the whole primitive at once.
@@ -23,6 +36,7 @@ use crate::fragment::{DrawStage, FragmentStage};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
 use crate::geometry::varying::{Varyings, MAX_VARYINGS};
 use crate::texture::unit::{SharedPlan, TexturePlan};
+use softgl_jit::shade::PLANES;
 use softgl_jit::texture::TextureSet;
 use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Planes, Specialist, Target};
 use std::cell::OnceCell;
@@ -36,7 +50,7 @@ pub const TILE: u32 = 64;
 /// (`raster/background.rs`): the caller records the next scene meanwhile,
 /// so a context holds two scenes at most, 32 MiB between them, and a frame
 /// of any number of primitives runs in bounded memory. Measured with
-/// `fill.c lit16` (1.6 M tiny lit triangles, ~300 bytes of scene each),
+/// `fill.c lit16` (1.6 M tiny lit triangles, ~300 bytes of scene each then),
 /// medians of 3 interleaved runs, llvmpipe alongside: one thread 124-128
 /// ms a frame at 8 and 16 MiB, 128-163 at 32, 134-141 at 64 (llvmpipe
 /// 147-167); two threads 122-138 at 16, 124-126 at 32, 131 at 64 (llvmpipe
@@ -52,8 +66,15 @@ pub const SCENE_BOUND: usize = 16 << 20;
 /// streaming-texture-leak: 20 GB).
 pub const TEXTURE_BOUND: usize = 64 << 20;
 
-/// Bin entries with this bit are clears; the others primitives.
+/// Bin entries with this bit are clears (an index into `clears`); with
+/// [`TRI`], triangles (the word of their record in `records`); the others
+/// lines and points (an index into `prims`).
 const CLEAR: u32 = 1 << 31;
+const TRI: u32 = 1 << 30;
+
+/// The largest bound a scene is flushed past, so that an index or a word
+/// offset in a bin entry or a record's class fits in 30 bits.
+const MOST_BYTES: usize = 1 << 30;
 
 /// What a draw's fragments run with.
 #[derive(Clone, Debug)]
@@ -78,7 +99,6 @@ struct Vert {
 
 #[derive(Clone, Copy, Debug)]
 enum Kind {
-    Triangle,
     Line { width: f32 },
     Point { size: f32 },
 }
@@ -86,7 +106,6 @@ enum Kind {
 impl Kind {
     fn vertices(self) -> usize {
         match self {
-            Kind::Triangle => 3,
             Kind::Line { .. } => 2,
             Kind::Point { .. } => 1,
         }
@@ -110,16 +129,15 @@ impl DrawState {
     }
 }
 
-/// One recorded primitive: 64 bytes and, for a line or a point, its
-/// vertices as the geometry stage handed them over (24 bytes and 4 per
-/// varying of the layout each, where a copy of its `RasterVertex`es is 224
-/// bytes each: copying those was a fifth of the 1.6 M-triangle lit frame,
-/// `perf`); for a triangle, its set-up ([`Tri`]).
+/// A recorded line or point: 64 bytes and its vertices as the geometry
+/// stage handed them over (24 bytes and 4 per varying of the layout each,
+/// where a copy of its `RasterVertex`es is 224 bytes each: copying those
+/// was a fifth of the 1.6 M-triangle lit frame, `perf`).
 #[derive(Clone, Copy, Debug)]
 struct Binned {
     draw: u32,
     kind: Kind,
-    /// Its first vertex in `verts`; a triangle's set-up in `tris`.
+    /// Its first vertex in `verts`.
     first: u32,
     /// Where its varyings start in `vary`: `n` (the layout's length) for
     /// each vertex, then `n` flat ones when `flat`.
@@ -128,37 +146,36 @@ struct Binned {
     params: RasterParams,
 }
 
-/// A triangle set up once, when it is recorded: its coverage ([`Prepared`]:
-/// the snapped vertices counter-clockwise, the box, which pixels of a small
-/// box are inside) and its attribute planes, `planes[planes..][..n]` of the
-/// scene, in the order `setup_planes` makes them (depth last). A tile finds
-/// its rows and copies the planes; nothing is snapped or set up again.
+/// What the triangles of a draw share while the parameters a flush reads
+/// stay the same (the height, the depth format, the layout: see
+/// [`Scene::class`]): the draw, the parameters and the slots of their
+/// planes (the same for each: `setup_planes` puts the layout's slots, in
+/// its order), recorded once, not per triangle.
 #[derive(Clone, Copy, Debug)]
-struct Tri {
-    prep: Prepared,
-    planes: u32,
-    n: u32,
+struct Class {
+    draw: u32,
+    params: RasterParams,
+    /// The slots of a triangle's planes, `slots[..n]`, in its record's order.
+    slots: [u8; PLANES],
+    n: u8,
 }
 
-/// A plane of slot `k`, recorded.
-#[derive(Clone, Copy, Debug)]
-struct SlotPlane {
-    k: u32,
-    plane: Plane,
-}
+/// The most words of a triangle's record: its class and tag, its coverage
+/// ([`Prepared::encode`]) and three a plane.
+const RECORD: usize = 1 + Prepared::WORDS + 3 * PLANES;
 
-/// Writes recorded planes into their slots of `to`, each coefficient in
+/// Writes a triangle's recorded planes (`planes`: three words a plane,
+/// `a0`, `dadx`, `dady`) into their slots of `to`, each coefficient in
 /// four lanes (as the specialists load them), inlined with `with_planes`
-/// and the sink's `planes_mut` into the tile loop: a lit triangle's copy
-/// and its call were about 146 instructions of its flush (callgrind,
-/// `lit16`), now about 127 (17 a plane: three loads, three shuffles, three
-/// stores and the slot). Not copying them at all needs the specialists to
-/// read the recorded 16-byte planes and splat them themselves.
+/// and the sink's `planes_mut` into the tile loop. Not copying them at all
+/// needs the specialists to read the recorded planes and splat them
+/// themselves.
 #[inline(always)]
-fn copy_planes(to: &mut Planes, planes: &[SlotPlane]) {
-    for sp in planes {
-        if let Some(c) = to.coeffs.get_mut(sp.k as usize) {
-            let Plane { a0, dadx, dady } = sp.plane;
+fn copy_planes(to: &mut Planes, slots: &[u8], planes: &[u32]) {
+    let (planes, _) = planes.as_chunks::<3>();
+    for (&k, &[a0, dadx, dady]) in slots.iter().zip(planes) {
+        if let Some(c) = to.coeffs.get_mut(usize::from(k)) {
+            let (a0, dadx, dady) = (f32::from_bits(a0), f32::from_bits(dadx), f32::from_bits(dady));
             *c = [[a0; 4], [dadx; 4], [dady; 4]];
         }
     }
@@ -196,8 +213,19 @@ pub struct Scene {
     tiles_x: u32,
     draws: Vec<DrawState>,
     prims: Vec<Binned>,
-    tris: Vec<Tri>,
-    planes: Vec<SlotPlane>,
+    /// The triangles' records, one after the other in the order recorded
+    /// (a strip's are read in that order too: the hardware prefetches
+    /// them): word 0 its class (the low 30 bits, into `classes`) and the
+    /// tag of its coverage (the top 2), then its coverage
+    /// ([`Prepared::encode`]), then its planes, three words each, in the
+    /// order of the class's slots.
+    records: Vec<u32>,
+    classes: Vec<Class>,
+    /// The class of the last triangle recorded.
+    class: Option<u32>,
+    triangles: usize,
+    /// Where a triangle's record is made before it is appended.
+    record: Record,
     verts: Vec<Vert>,
     /// The varyings of `verts` and of flat primitives, the layout's slots only.
     vary: Vec<f32>,
@@ -218,7 +246,7 @@ pub struct Scene {
 impl Scene {
     /// Whether nothing waits to be drawn.
     pub fn is_empty(&self) -> bool {
-        self.prims.is_empty() && self.clears.is_empty()
+        self.prims.is_empty() && self.triangles == 0 && self.clears.is_empty()
     }
 
     /// Bytes held (primitives, bin entries, draws): the scene is flushed past [`Scene::bound`].
@@ -228,7 +256,7 @@ impl Scene {
 
     /// Primitives recorded since the last flush.
     pub fn primitives(&self) -> usize {
-        self.prims.len()
+        self.prims.len() + self.triangles
     }
 
     /// Makes the (empty) scene's tiles cover a `width`×`height` framebuffer.
@@ -309,11 +337,12 @@ impl Scene {
         }
     }
 
-    /// Bytes past which a draw flushes (unless set: [`SCENE_BOUND`]).
+    /// Bytes past which a draw flushes (unless set, to at most
+    /// `MOST_BYTES`, 1 GiB: [`SCENE_BOUND`]).
     pub fn bound(&self) -> usize {
         match self.bound {
             0 => SCENE_BOUND,
-            set => set,
+            set => set.min(MOST_BYTES),
         }
     }
 
@@ -351,8 +380,10 @@ impl Scene {
         self.textures.clear();
         self.texture_bytes = 0;
         self.prims.clear();
-        self.tris.clear();
-        self.planes.clear();
+        self.records.clear();
+        self.classes.clear();
+        self.class = None;
+        self.triangles = 0;
         self.verts.clear();
         self.vary.clear();
         self.clears.clear();
@@ -385,22 +416,38 @@ impl Scene {
         results.into_iter().collect()
     }
 
-    /// Rasterizes `p`'s pixels inside `tile` into `sink`, rebuilding a
-    /// line's or a point's vertices in `scratch`.
-    fn rasterize<S: SpanSink>(&self, p: &Binned, tile: Rect, scratch: &mut Scratch, sink: &mut S) {
-        if let Kind::Triangle = p.kind {
-            let t = &self.tris[p.first as usize];
-            let planes = &self.planes[t.planes as usize..][..t.n as usize];
-            // The box is within the bounds already.
-            t.prep.cover(tile, p.params.height, sink, |to| {
-                copy_planes(to, planes);
-                match p.params.depth {
-                    Some(f @ DepthFormat::D32) => planes.last().map(|z| (f, z.plane)),
-                    _ => None,
-                }
-            });
+    /// Rasterizes the triangle recorded at `records[at]`, whose first
+    /// word is `w0` and class `class`, inside `tile` into `sink`.
+    #[inline(always)]
+    fn cover<S: SpanSink>(&self, at: usize, w0: u32, class: &Class, tile: Rect, sink: &mut S) {
+        let Some(words) = self.records.get(at + 1..) else {
             return;
-        }
+        };
+        let Some((prep, n)) = Prepared::decode(w0 >> 30, words) else {
+            return;
+        };
+        let planes = words.get(n..n + 3 * usize::from(class.n)).unwrap_or(&[]);
+        let slots = &class.slots[..usize::from(class.n)];
+        // The box is within the bounds already.
+        prep.cover(tile, class.params.height, sink, |to| {
+            copy_planes(to, slots, planes);
+            match class.params.depth {
+                Some(f @ DepthFormat::D32) => planes.last_chunk::<3>().map(|&[a0, dadx, dady]| {
+                    let plane = Plane {
+                        a0: f32::from_bits(a0),
+                        dadx: f32::from_bits(dadx),
+                        dady: f32::from_bits(dady),
+                    };
+                    (f, plane)
+                }),
+                _ => None,
+            }
+        });
+    }
+
+    /// Rasterizes line or point `p`'s pixels inside `tile` into `sink`,
+    /// rebuilding its vertices in `scratch`.
+    fn rasterize<S: SpanSink>(&self, p: &Binned, tile: Rect, scratch: &mut Scratch, sink: &mut S) {
         let params = RasterParams {
             bounds: p.params.bounds.intersect(tile),
             ..p.params
@@ -411,8 +458,6 @@ impl Scene {
         match p.kind {
             Kind::Line { width } => sink.line(&v[0], &v[1], width, f, &params),
             Kind::Point { size } => sink.point(&v[0], size, &params),
-            // Set up when recorded: above.
-            Kind::Triangle => {}
         }
     }
 
@@ -433,35 +478,35 @@ impl Scene {
         p.flat
     }
 
-    /// Reads what the primitives of `bin` recorded (their entries, set-ups
-    /// and planes) once before they run, in a loop whose loads do not wait
-    /// for one another: the scene is read in the bins' order, not the
+    /// Reads what the primitives of `bin` recorded (their records, or
+    /// their entries) once before they run, in a loop whose loads do not
+    /// wait for one another: the scene is read in the bins' order, not the
     /// recorded one, so a tile of small triangles from all over a frame
-    /// missed the cache three times a triangle, one miss after the other
+    /// missed the cache several times a triangle, one miss after the other
     /// (`perf`, `thrash`: 96% of `with_planes`' cycles on the planes' first
-    /// load, most of `run_band`'s on the entry's and the set-up's). A few
-    /// instructions an entry; `black_box` keeps the loads.
+    /// load). A few instructions an entry; `black_box` keeps the loads.
     fn warm(&self, bin: &[u32]) {
-        let mut next = u32::MAX;
+        let mut last = u32::MAX;
         for &e in bin {
-            // An entry recorded just after the previous one is read after
-            // it too, which the hardware prefetches (a strip's triangles,
-            // `lit16`: 25 instructions an entry saved).
-            let near = e == next;
-            next = e.wrapping_add(1);
-            if near {
+            if e & CLEAR != 0 {
                 continue;
             }
-            let Some(p) = self.prims.get(e as usize) else { continue };
-            if let Kind::Triangle = p.kind {
-                if let Some(t) = self.tris.get(p.first as usize) {
-                    // Whole records: one may straddle two cache lines.
-                    std::hint::black_box(*t);
-                    let last = (t.planes + t.n).saturating_sub(1) as usize;
-                    std::hint::black_box([t.planes as usize, last].map(|i| self.planes.get(i).map(|p| p.k)));
+            if e & TRI != 0 {
+                // A record starting at most 64 words after the previous
+                // one is read after it too, which the hardware prefetches
+                // (a strip's triangles, `lit16`).
+                let near = e.wrapping_sub(last) <= 64;
+                last = e;
+                if near {
+                    continue;
                 }
+                // A lit triangle's record (about 90 bytes) may straddle
+                // three cache lines.
+                let at = (e & !TRI) as usize;
+                std::hint::black_box([at, at + 15, at + 22].map(|i| self.records.get(i).copied()));
+            } else if let Some(p) = self.prims.get(e as usize) {
+                std::hint::black_box(*p);
             }
-            std::hint::black_box(*p);
         }
     }
 
@@ -488,38 +533,67 @@ impl Scene {
             };
             let bin = &self.bins[(ty * self.tiles_x + tx) as usize];
             self.warm(bin);
-            let mut i = 0;
-            while i < bin.len() {
-                let e = bin[i];
+            // The draw the stage runs (set again at each tile and after a
+            // clear: a no-op while it stays the same), and whether its
+            // stage was made.
+            let (mut current, mut ok) = (usize::MAX, false);
+            for &e in bin {
                 if e & CLEAR != 0 {
-                    stage.clear(&self.clears[(e & !CLEAR) as usize], tile);
-                    i += 1;
+                    if let Some(c) = self.clears.get((e & !CLEAR) as usize) {
+                        stage.clear(c, tile);
+                    }
+                    current = usize::MAX;
                     continue;
                 }
-                // The run of this draw's primitives.
-                let d = self.prims[e as usize].draw as usize;
-                let end = bin[i..]
-                    .iter()
-                    .position(|&e| e & CLEAR != 0 || self.prims[e as usize].draw as usize != d)
-                    .map_or(bin.len(), |n| i + n);
-                match &stages[d] {
-                    Ok(draw) => {
-                        let view = views[d].get_or_init(|| {
-                            draw.specialist()
-                                .map_or(DrawTextures::None, |s| s.texture_view(draw.textures()))
-                        });
-                        stage.set_draw(draw, view);
-                        for &e in &bin[i..end] {
-                            let p = &self.prims[e as usize];
-                            self.rasterize(p, tile, &mut scratch, &mut stage);
+                let (d, tri) = if e & TRI != 0 {
+                    let at = (e & !TRI) as usize;
+                    let Some(&w0) = self.records.get(at) else { continue };
+                    let Some(class) = self.classes.get((w0 & !(3 << 30)) as usize) else {
+                        continue;
+                    };
+                    (class.draw as usize, Some((at, w0, class)))
+                } else {
+                    let Some(p) = self.prims.get(e as usize) else { continue };
+                    (p.draw as usize, None)
+                };
+                if d != current {
+                    current = d;
+                    ok = match stages.get(d) {
+                        Some(Ok(draw)) => {
+                            let view = views[d].get_or_init(|| {
+                                draw.specialist()
+                                    .map_or(DrawTextures::None, |s| s.texture_view(draw.textures()))
+                            });
+                            stage.set_draw(draw, view);
+                            true
                         }
-                    }
-                    Err(e) => stage.fail(*e),
+                        Some(Err(e)) => {
+                            stage.fail(*e);
+                            false
+                        }
+                        None => false,
+                    };
                 }
-                i = end;
+                if !ok {
+                    continue;
+                }
+                match tri {
+                    Some((at, w0, class)) => self.cover(at, w0, class, tile, &mut stage),
+                    None => self.rasterize(&self.prims[e as usize], tile, &mut scratch, &mut stage),
+                }
             }
         }
         stage.finish()
+    }
+}
+
+/// A triangle's record being made ([`RECORD`] words).
+#[derive(Debug)]
+struct Record([u32; RECORD]);
+
+impl Default for Record {
+    fn default() -> Self {
+        Record([0; RECORD])
     }
 }
 
@@ -612,7 +686,7 @@ impl Binner<'_> {
         self.push(r, draw, kind, (first, vary), flat, params);
     }
 
-    /// Records the primitive and bins it into the tiles `r` touches;
+    /// Records the line or point and bins it into the tiles `r` touches;
     /// flushes past the bounds (out of line).
     #[inline(always)]
     fn push(&mut self, r: Rect, draw: u32, kind: Kind, (first, vary): (u32, u32), flat: bool, params: &RasterParams) {
@@ -628,7 +702,7 @@ impl Binner<'_> {
         });
         scene.bytes += std::mem::size_of::<Binned>();
         scene.bin(r, entry);
-        if scene.bytes > scene.bound() || scene.texture_bytes > TEXTURE_BOUND {
+        if scene.full() {
             self.flush();
         }
     }
@@ -644,30 +718,93 @@ impl Binner<'_> {
     }
 }
 
+impl Scene {
+    /// The class of a triangle of draw `draw` with `params`: the last
+    /// triangle's when it is the same draw and what a flush reads of the
+    /// parameters is the same (the height, the depth format and the
+    /// layout: the bounds and the offset are spent at recording; comparing
+    /// all of them, floats included, was 39 instructions a triangle), else
+    /// a new one.
+    #[inline(always)]
+    fn class(&mut self, draw: u32, params: &RasterParams, v: [&RasterVertex; 3], swap: bool) -> u32 {
+        let same = |k: &Class| {
+            k.draw == draw
+                && k.params.height == params.height
+                && k.params.depth == params.depth
+                && k.params.layout == params.layout
+        };
+        match self.class {
+            Some(c) if self.classes.get(c as usize).is_some_and(same) => c,
+            _ => self.new_class(draw, params, v, swap),
+        }
+    }
+
+    /// Records a class of triangles; its slots are those `setup_planes`
+    /// puts for `v` (the same for any triangle with `params`).
+    #[inline(never)]
+    fn new_class(&mut self, draw: u32, params: &RasterParams, v: [&RasterVertex; 3], swap: bool) -> u32 {
+        let mut class = Class {
+            draw,
+            params: *params,
+            slots: [0; PLANES],
+            n: 0,
+        };
+        setup_planes(v, swap, None, params, &mut |k, _| {
+            if let Some(s) = class.slots.get_mut(usize::from(class.n)) {
+                *s = k as u8;
+                class.n += 1;
+            }
+        });
+        let c = self.classes.len() as u32;
+        self.classes.push(class);
+        self.bytes += std::mem::size_of::<Class>();
+        self.class = Some(c);
+        c
+    }
+
+    /// Whether a draw flushes the scene now, on `threads` threads.
+    #[inline(always)]
+    fn full(&self) -> bool {
+        self.bytes > self.bound() || self.texture_bytes > TEXTURE_BOUND
+    }
+}
+
 impl PrimSink for Binner<'_> {
-    /// Sets the triangle up once ([`Tri`]); one that no pixel is inside
-    /// is not recorded.
+    /// Sets the triangle up once (its coverage and planes) and records
+    /// it; one that no pixel is inside is not recorded.
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
         let p = Edges::window_points(v, params.height);
         let Some(prep) = Prepared::new(p, params.bounds) else {
             return;
         };
         let draw = self.draw();
+        let swap = plane_swap(p);
         let scene = &mut *self.scene;
-        let at = scene.planes.len();
-        let planes = &mut scene.planes;
-        setup_planes(v, plane_swap(p), flat, params, &mut |k, plane| {
-            planes.push(SlotPlane { k: k as u32, plane })
+        let class = scene.class(draw, params, v, swap);
+        // The record is made aside, then appended at once (appending it
+        // in pieces of a known length, with their inline stores, was 9
+        // instructions a triangle more: each piece tests the capacity).
+        let rec = &mut scene.record.0;
+        let Some(cover) = rec[1..].first_chunk_mut::<{ Prepared::WORDS }>() else {
+            return;
+        };
+        let (n, tag) = prep.encode(cover);
+        rec[0] = class | tag << 30;
+        let mut len = 1 + n;
+        setup_planes(v, swap, flat, params, &mut |_, plane| {
+            if let Some(to) = rec.get_mut(len..len + 3) {
+                to.copy_from_slice(&[plane.a0.to_bits(), plane.dadx.to_bits(), plane.dady.to_bits()]);
+                len += 3;
+            }
         });
-        let n = scene.planes.len() - at;
-        let first = scene.tris.len() as u32;
-        scene.tris.push(Tri {
-            prep,
-            planes: at as u32,
-            n: n as u32,
-        });
-        scene.bytes += std::mem::size_of::<Tri>() + n * std::mem::size_of::<SlotPlane>();
-        self.push(prep.rect(), draw, Kind::Triangle, (first, 0), false, params);
+        let entry = TRI | scene.records.len() as u32;
+        scene.records.extend_from_slice(&rec[..len]);
+        scene.triangles += 1;
+        scene.bytes += 4 * len;
+        scene.bin(prep.rect(), entry);
+        if scene.full() {
+            self.flush();
+        }
     }
 
     fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
@@ -688,8 +825,9 @@ mod tests {
     use super::*;
 
     /// What a recorded primitive costs, against a copy of its vertices: a
-    /// line with its vertices, a lit triangle with its set-up and its six
-    /// planes (1/w, the colour, depth).
+    /// line with its vertices; a lit triangle (1/w, the colour and depth:
+    /// six planes) of one pixel, of a 2×2 box partly covered, and a large
+    /// one, with their coverage, as [`Binner::triangle`] records them.
     #[test]
     fn a_recorded_primitive_is_smaller_than_its_raster_vertices() {
         let line = std::mem::size_of::<Binned>() + 2 * std::mem::size_of::<Vert>();
@@ -697,10 +835,43 @@ mod tests {
             line * 3 < 2 * std::mem::size_of::<RasterVertex>(),
             "{line} bytes a line"
         );
-        let triangle =
-            std::mem::size_of::<Binned>() + std::mem::size_of::<Tri>() + 6 * std::mem::size_of::<SlotPlane>();
+        let params = RasterParams {
+            bounds: Rect {
+                x0: 0,
+                y0: 0,
+                x1: 1024,
+                y1: 1024,
+            },
+            depth: Some(DepthFormat::D24),
+            height: 1024,
+            layout: crate::geometry::varying::VaryingLayout {
+                color: true,
+                ..Default::default()
+            },
+            offset: None,
+        };
+        let at = |x: f32, y: f32| RasterVertex {
+            x,
+            y,
+            y_down: 1024.0 - y,
+            z: 0.5,
+            inv_w: 1.0,
+            v: [0.5; MAX_VARYINGS],
+        };
+        let bytes = |v: [RasterVertex; 3]| {
+            let v = [&v[0], &v[1], &v[2]];
+            let p = Edges::window_points(v, params.height);
+            let prep = Prepared::new(p, params.bounds).expect("some pixel is inside");
+            let (n, _) = prep.encode(&mut [0; Prepared::WORDS]);
+            let mut planes = 0;
+            setup_planes(v, plane_swap(p), None, &params, &mut |_, _| planes += 1);
+            4 * (1 + n + 3 * planes)
+        };
         let copied = 3 * std::mem::size_of::<RasterVertex>();
-        assert!(triangle * 2 < copied, "{triangle} bytes recorded, {copied} copied");
-        assert_eq!(triangle, 240);
+        let one = bytes([at(10.2, 10.2), at(10.9, 10.3), at(10.4, 10.9)]);
+        let masked = bytes([at(10.2, 10.2), at(12.4, 10.3), at(10.4, 12.4)]);
+        let large = bytes([at(10.0, 10.0), at(500.0, 10.0), at(10.0, 500.0)]);
+        assert_eq!((one, masked, large), (84, 92, 132));
+        assert!(masked * 6 < copied, "{masked} bytes recorded, {copied} copied");
     }
 }

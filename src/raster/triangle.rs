@@ -277,6 +277,55 @@ impl Prepared {
         Some(Prepared { px, py, cover })
     }
 
+    /// The most words [`Prepared::encode`] writes.
+    pub(crate) const WORDS: usize = 14;
+
+    /// Writes the set-up into `out` as 32-bit words, returning how many
+    /// (at most [`Prepared::WORDS`]) and a 2-bit tag [`Prepared::decode`]
+    /// takes back: the box as four u16 (a framebuffer side is at most
+    /// 16384), then a mask's 64 bits or the vertices' i64 coordinates.
+    /// A one-pixel or wholly covered triangle is 2 words, a masked one 4.
+    #[inline(always)]
+    pub(crate) fn encode(&self, out: &mut [u32; Prepared::WORDS]) -> (usize, u32) {
+        out[0] = self.px.0 | self.px.1 << 16;
+        out[1] = self.py.0 | self.py.1 << 16;
+        match self.cover {
+            Cover::Inside => (2, 0),
+            Cover::Masks(m) => {
+                (out[2], out[3]) = (m as u32, (m >> 32) as u32);
+                (4, 1)
+            }
+            Cover::Edges(p) => {
+                for (i, c) in p.iter().flat_map(|&(x, y)| [x, y]).enumerate() {
+                    (out[2 + 2 * i], out[3 + 2 * i]) = (c as u32, (c >> 32) as u32);
+                }
+                (14, 2)
+            }
+        }
+    }
+
+    /// The set-up [`Prepared::encode`] wrote at the start of `words` with
+    /// `tag`, and the words it took; `None` when `words` is short.
+    #[inline(always)]
+    pub(crate) fn decode(tag: u32, words: &[u32]) -> Option<(Prepared, usize)> {
+        let (&[a, b], rest) = words.split_first_chunk::<2>()?;
+        let (px, py) = ((a & 0xffff, a >> 16), (b & 0xffff, b >> 16));
+        let wide = |lo: u32, hi: u32| u64::from(lo) | u64::from(hi) << 32;
+        let (cover, n) = match tag {
+            0 => (Cover::Inside, 2),
+            1 => {
+                let &[lo, hi] = rest.first_chunk::<2>()?;
+                (Cover::Masks(wide(lo, hi)), 4)
+            }
+            _ => {
+                let w = rest.first_chunk::<12>()?;
+                let c = |i: usize| wide(w[2 * i], w[2 * i + 1]) as i64;
+                (Cover::Edges([(c(0), c(1)), (c(2), c(3)), (c(4), c(5))]), 14)
+            }
+        };
+        Some((Prepared { px, py, cover }, n))
+    }
+
     /// The pixels the triangle may cover (its box within the bounds).
     pub(crate) fn rect(&self) -> Rect {
         Rect {
