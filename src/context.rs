@@ -26,7 +26,7 @@ use crate::texture::texgen::TexCoordStage;
 use crate::texture::unit::{TexturePlan, TextureUnits};
 use crate::texture::TextureStore;
 use crate::tracked::Tracked;
-use glam::{Mat4, Vec3, Vec4};
+use glam::{Mat4, Vec3, Vec3A, Vec4};
 use softgl_jit::interp;
 use softgl_jit::texture::MAX_UNITS;
 use softgl_jit::FragmentUniforms;
@@ -206,7 +206,7 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVer
         fog_coord: arrays.fog_coord.map_or(current.fog_coord, |c| c.get(i, Vec4::ZERO).x),
         normal: arrays
             .normal
-            .map_or(current.normal, |n| n.get(i, Vec4::ZERO).truncate()),
+            .map_or(current.normal.into(), |n| n.get(i, Vec4::ZERO).truncate()),
         edge: arrays
             .edge_flag
             .map_or(current.edge_flag, |e| e.get(i, Vec4::ONE).x != 0.0),
@@ -224,7 +224,11 @@ fn fetch_tex(arrays: &VertexArrays<'_>, i: usize, u: usize, current: &CurrentAtt
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CurrentAttribs {
     pub color: Vec4,
-    pub normal: Vec3,
+    /// 16 bytes, written by `glNormal` as one store and read by `glVertex`
+    /// as one load: as a `Vec3`, its three 4-byte stores were read back by
+    /// an 8-byte load spanning two of them, which the store cannot forward
+    /// (a stall of about 30% of `glVertex3f`'s samples on the lit16 frame).
+    pub normal: Vec3A,
     /// `glMultiTexCoord` per unit (`glTexCoord`: unit 0).
     pub tex_coords: [Vec4; MAX_UNITS],
     /// RGB and 1 (GL 1.4's initial `(0, 0, 0, 1)`).
@@ -236,6 +240,14 @@ pub struct CurrentAttribs {
     pub edge_flag: bool,
 }
 
+/// Room for more vertices of `glBegin`/`glEnd` (amortized doubling), out
+/// of the way of `glVertex`.
+#[cold]
+#[inline(never)]
+fn grow(verts: &mut Vec<InVertex>) {
+    verts.reserve(verts.len().max(64));
+}
+
 impl CurrentAttribs {
     /// A vertex at `pos` with these attributes.
     pub fn vertex(&self, pos: Vec4) -> InVertex {
@@ -244,7 +256,7 @@ impl CurrentAttribs {
             color: self.color,
             secondary: self.secondary,
             fog_coord: self.fog_coord,
-            normal: self.normal,
+            normal: self.normal.into(),
             edge: self.edge_flag,
             material: 0,
         }
@@ -410,7 +422,7 @@ impl Context {
             tex_units: Tracked::default(),
             current: CurrentAttribs {
                 color: Vec4::ONE,
-                normal: Vec3::Z,
+                normal: Vec3A::Z,
                 tex_coords: [Vec4::W; MAX_UNITS],
                 secondary: Vec4::W,
                 fog_coord: 0.0,
@@ -1130,10 +1142,25 @@ impl Context {
     /// `glVertex4f`: outside `begin`/`end` it is ignored, as in GL.
     #[inline]
     pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) {
-        let v = self.current.vertex(Vec4::new(x, y, z, w));
         if let Some(b) = &mut self.begun {
+            // Room made first (out of line), so that the current attributes
+            // are read once room is there and written straight into the
+            // vertex: read before a possible call, they were copied to the
+            // stack and back (glVertex3f, lit16).
+            if b.verts.len() == b.verts.capacity() {
+                grow(&mut b.verts);
+            }
+            let c = &self.current;
             let material = b.materials.len().saturating_sub(1) as u16;
-            b.verts.push(InVertex { material, ..v });
+            b.verts.push(InVertex {
+                pos: Vec4::new(x, y, z, w),
+                color: c.color,
+                secondary: c.secondary,
+                fog_coord: c.fog_coord,
+                normal: c.normal.into(),
+                edge: c.edge_flag,
+                material,
+            });
             self.format.vertex();
             if b.tex_units != 0 {
                 b.tex.push(self.current.tex_coords);
@@ -1177,7 +1204,7 @@ impl Context {
     /// `glNormal3f`: kept as current state for lighting.
     #[inline]
     pub fn normal3(&mut self, x: f32, y: f32, z: f32) {
-        self.current.normal = Vec3::new(x, y, z);
+        self.current.normal = Vec3A::new(x, y, z);
     }
 
     /// `glIndexf`: the current colour index, kept for `GL_CURRENT_INDEX`

@@ -300,7 +300,7 @@ impl ImmediateRun {
     /// The current attributes after the run's calls.
     pub(crate) fn apply_last(&self, current: &mut CurrentAttribs) {
         if self.normal.first.is_some() {
-            current.normal = self.normal.last;
+            current.normal = self.normal.last.into();
         }
         if self.color.first.is_some() {
             current.color = self.color.last;

@@ -181,6 +181,11 @@ pub struct Geometry<'s> {
     finite_len: usize,
     /// `layout.fog()`, asked at every lit vertex.
     fog_slot: Option<usize>,
+    /// `state.front_face == Ccw` and `state.culls(front)` for a front and a
+    /// back face, read once a draw rather than through `state` at every
+    /// triangle.
+    ccw: bool,
+    culls: [bool; 2],
 }
 
 impl<'s> Geometry<'s> {
@@ -255,6 +260,8 @@ impl<'s> Geometry<'s> {
             user: UserPlanes::default(),
             finite_len: layout.finite_len(),
             fog_slot: layout.fog(),
+            ccw: state.front_face == FrontFace::Ccw,
+            culls: [state.culls(false), state.culls(true)],
         }
     }
 
@@ -513,8 +520,8 @@ impl<'s> Geometry<'s> {
     #[inline(always)]
     fn triangle(&self, v: [&RasterVertex; 3], flat: Option<&Varyings>, sink: &mut dyn PrimSink) {
         let area = signed_area(3, |i| (v[i].x, v[i].y));
-        let front = (area > 0.0) == (self.state.front_face == FrontFace::Ccw);
-        if self.state.culls(front) || area == 0.0 {
+        let front = (area > 0.0) == self.ccw;
+        if self.culls[usize::from(front)] || area == 0.0 {
             return;
         }
         let params = &self.fill_params;
