@@ -240,17 +240,17 @@ pub struct CurrentAttribs {
     pub edge_flag: bool,
 }
 
-/// Room for more vertices of `glBegin`/`glEnd` (amortized doubling), out
-/// of the way of `glVertex`.
+/// `verts.push(v)` when `verts` is full, out of the way of `glVertex`.
 #[cold]
 #[inline(never)]
-fn grow(verts: &mut Vec<InVertex>) {
-    verts.reserve(verts.len().max(64));
+fn push_growing(verts: &mut Vec<InVertex>, v: InVertex) {
+    verts.push(v);
 }
 
 impl CurrentAttribs {
-    /// A vertex at `pos` with these attributes.
-    pub fn vertex(&self, pos: Vec4) -> InVertex {
+    /// A vertex at `pos` with these attributes (and vertex material `material`).
+    #[inline(always)]
+    pub fn vertex(&self, pos: Vec4, material: u16) -> InVertex {
         InVertex {
             pos,
             color: self.color,
@@ -258,7 +258,7 @@ impl CurrentAttribs {
             fog_coord: self.fog_coord,
             normal: self.normal.into(),
             edge: self.edge_flag,
-            material: 0,
+            material,
         }
     }
 }
@@ -1143,24 +1143,18 @@ impl Context {
     #[inline]
     pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) {
         if let Some(b) = &mut self.begun {
-            // Room made first (out of line), so that the current attributes
-            // are read once room is there and written straight into the
-            // vertex: read before a possible call, they were copied to the
-            // stack and back (glVertex3f, lit16).
-            if b.verts.len() == b.verts.capacity() {
-                grow(&mut b.verts);
-            }
+            // Written straight into the buffer when it has room (the
+            // common case, where the compiler then sees no call to grow it
+            // and reads the current attributes into the vertex in place:
+            // read before a possible call, they went through the stack).
             let c = &self.current;
             let material = b.materials.len().saturating_sub(1) as u16;
-            b.verts.push(InVertex {
-                pos: Vec4::new(x, y, z, w),
-                color: c.color,
-                secondary: c.secondary,
-                fog_coord: c.fog_coord,
-                normal: c.normal.into(),
-                edge: c.edge_flag,
-                material,
-            });
+            let pos = Vec4::new(x, y, z, w);
+            if b.verts.len() < b.verts.capacity() {
+                b.verts.push(c.vertex(pos, material));
+            } else {
+                push_growing(&mut b.verts, c.vertex(pos, material));
+            }
             self.format.vertex();
             if b.tex_units != 0 {
                 b.tex.push(self.current.tex_coords);
