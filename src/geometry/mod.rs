@@ -359,9 +359,11 @@ impl<'s> Geometry<'s> {
             for q in (0..count.saturating_sub(3)).step_by(2) {
                 let [v0, v1, v2, v3] = [q, q + 1, q + 2, q + 3];
                 // Boundary in polygon order v0 v1 v3 v2.
-                for (v, edges) in [([v0, v1, v3], [true, true, false]), ([v0, v3, v2], [false, true, true])] {
-                    self.batch_triangle(&mut batch, (v, v3, edges), (unfilled, flat_shaded), &mut scratch, sink);
-                }
+                // (Two calls, not a loop over the two: the loop's array of
+                // indices went through the stack, its reads stalling.)
+                let (u, f) = (unfilled, flat_shaded);
+                self.batch_triangle(&mut batch, ([v0, v1, v3], v3, [true, true, false]), (u, f), &mut scratch, sink);
+                self.batch_triangle(&mut batch, ([v0, v3, v2], v3, [false, true, true]), (u, f), &mut scratch, sink);
             }
             batch.finish(window);
             return;
