@@ -362,8 +362,20 @@ impl<'s> Geometry<'s> {
                 // (Two calls, not a loop over the two: the loop's array of
                 // indices went through the stack, its reads stalling.)
                 let (u, f) = (unfilled, flat_shaded);
-                self.batch_triangle(&mut batch, ([v0, v1, v3], v3, [true, true, false]), (u, f), &mut scratch, sink);
-                self.batch_triangle(&mut batch, ([v0, v3, v2], v3, [false, true, true]), (u, f), &mut scratch, sink);
+                self.batch_triangle(
+                    &mut batch,
+                    ([v0, v1, v3], v3, [true, true, false]),
+                    (u, f),
+                    &mut scratch,
+                    sink,
+                );
+                self.batch_triangle(
+                    &mut batch,
+                    ([v0, v3, v2], v3, [false, true, true]),
+                    (u, f),
+                    &mut scratch,
+                    sink,
+                );
             }
             batch.finish(window);
             return;
@@ -388,9 +400,13 @@ impl<'s> Geometry<'s> {
                     self.line(&va.clip(), &vb.clip(), flat.copied(), sink)
                 }
             }
-            Primitive::Triangle { v, provoking, edges } => {
-                self.batch_triangle(&mut batch, (v, provoking, edges), (unfilled, flat_shaded), &mut scratch, sink)
-            }
+            Primitive::Triangle { v, provoking, edges } => self.batch_triangle(
+                &mut batch,
+                (v, provoking, edges),
+                (unfilled, flat_shaded),
+                &mut scratch,
+                sink,
+            ),
         });
         batch.finish(window);
     }
