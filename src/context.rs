@@ -27,7 +27,7 @@ use crate::texture::texgen::TexCoordStage;
 use crate::texture::unit::{TexturePlan, TextureUnits};
 use crate::texture::TextureStore;
 use crate::tracked::Tracked;
-use glam::{Mat4, Vec3, Vec4};
+use glam::{Mat4, Vec3, Vec3A, Vec4};
 use softgl_jit::texture::MAX_UNITS;
 use softgl_jit::FragmentUniforms;
 use softgl_jit::{
@@ -206,7 +206,7 @@ fn fetch(arrays: &VertexArrays<'_>, i: usize, current: &CurrentAttribs) -> InVer
         fog_coord: arrays.fog_coord.map_or(current.fog_coord, |c| c.get(i, Vec4::ZERO).x),
         normal: arrays
             .normal
-            .map_or(current.normal, |n| n.get(i, Vec4::ZERO).truncate()),
+            .map_or(current.normal.into(), |n| n.get(i, Vec4::ZERO).truncate()),
         edge: arrays
             .edge_flag
             .map_or(current.edge_flag, |e| e.get(i, Vec4::ONE).x != 0.0),
@@ -224,7 +224,11 @@ fn fetch_tex(arrays: &VertexArrays<'_>, i: usize, u: usize, current: &CurrentAtt
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CurrentAttribs {
     pub color: Vec4,
-    pub normal: Vec3,
+    /// 16 bytes, written by `glNormal` as one store and read by `glVertex`
+    /// as one load: as a `Vec3`, its three 4-byte stores were read back by
+    /// an 8-byte load spanning two of them, which the store cannot forward
+    /// (a stall of about 30% of `glVertex3f`'s samples on the lit16 frame).
+    pub normal: Vec3A,
     /// `glMultiTexCoord` per unit (`glTexCoord`: unit 0).
     pub tex_coords: [Vec4; MAX_UNITS],
     /// RGB and 1 (GL 1.4's initial `(0, 0, 0, 1)`).
@@ -236,17 +240,25 @@ pub struct CurrentAttribs {
     pub edge_flag: bool,
 }
 
+/// `verts.push(v)` when `verts` is full, out of the way of `glVertex`.
+#[cold]
+#[inline(never)]
+fn push_growing(verts: &mut Vec<InVertex>, v: InVertex) {
+    verts.push(v);
+}
+
 impl CurrentAttribs {
-    /// A vertex at `pos` with these attributes.
-    pub fn vertex(&self, pos: Vec4) -> InVertex {
+    /// A vertex at `pos` with these attributes (and vertex material `material`).
+    #[inline(always)]
+    pub fn vertex(&self, pos: Vec4, material: u16) -> InVertex {
         InVertex {
             pos,
             color: self.color,
             secondary: self.secondary,
             fog_coord: self.fog_coord,
-            normal: self.normal,
+            normal: self.normal.into(),
             edge: self.edge_flag,
-            material: 0,
+            material,
         }
     }
 }
@@ -414,7 +426,7 @@ impl Context {
             tex_units: Tracked::default(),
             current: CurrentAttribs {
                 color: Vec4::ONE,
-                normal: Vec3::Z,
+                normal: Vec3A::Z,
                 tex_coords: [Vec4::W; MAX_UNITS],
                 secondary: Vec4::W,
                 fog_coord: 0.0,
@@ -1135,10 +1147,19 @@ impl Context {
     /// `glVertex4f`: outside `begin`/`end` it is ignored, as in GL.
     #[inline]
     pub fn vertex4(&mut self, x: f32, y: f32, z: f32, w: f32) {
-        let v = self.current.vertex(Vec4::new(x, y, z, w));
         if let Some(b) = &mut self.begun {
+            // Written straight into the buffer when it has room (the
+            // common case, where the compiler then sees no call to grow it
+            // and reads the current attributes into the vertex in place:
+            // read before a possible call, they went through the stack).
+            let c = &self.current;
             let material = b.materials.len().saturating_sub(1) as u16;
-            b.verts.push(InVertex { material, ..v });
+            let pos = Vec4::new(x, y, z, w);
+            if b.verts.len() < b.verts.capacity() {
+                b.verts.push(c.vertex(pos, material));
+            } else {
+                push_growing(&mut b.verts, c.vertex(pos, material));
+            }
             self.format.vertex();
             if b.tex_units != 0 {
                 b.tex.push(self.current.tex_coords);
@@ -1182,7 +1203,7 @@ impl Context {
     /// `glNormal3f`: kept as current state for lighting.
     #[inline]
     pub fn normal3(&mut self, x: f32, y: f32, z: f32) {
-        self.current.normal = Vec3::new(x, y, z);
+        self.current.normal = Vec3A::new(x, y, z);
     }
 
     /// `glIndexf`: the current colour index, kept for `GL_CURRENT_INDEX`

@@ -279,7 +279,7 @@ impl ImmediateRun {
     /// over an L2-sized buffer, no call per vertex.
     pub(crate) fn fill(&self, before: &CurrentAttribs, out: &mut Vec<InVertex>) {
         out.clear();
-        let t = before.vertex(Vec4::ZERO);
+        let t = before.vertex(Vec4::ZERO, 0);
         // Positions and normals in one pass (lit16list: a normal per
         // vertex), the colours, when given, in a second.
         let (f, normals) = self.normal.per_vertex().unwrap_or((self.pos.len(), &[]));
@@ -300,7 +300,7 @@ impl ImmediateRun {
     /// The current attributes after the run's calls.
     pub(crate) fn apply_last(&self, current: &mut CurrentAttribs) {
         if self.normal.first.is_some() {
-            current.normal = self.normal.last;
+            current.normal = self.normal.last.into();
         }
         if self.color.first.is_some() {
             current.color = self.color.last;
