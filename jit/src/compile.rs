@@ -126,24 +126,22 @@ pub struct SpanCall {
     pub count: u32,
     /// In: the first span to run; out: the first span not run.
     pub next: u32,
-    /// The colour of pixel `(0, y0)` of the view's first stored row (row
-    /// `r` of the view is stored at `r · stride`, or `(rows − 1 − r) ·
-    /// stride` when `top_down`).
+    /// The colour of pixel `(0, y0)`; row `y0 + r` is `r · stride` bytes
+    /// from it (`stride` is negative for a top-down target: the caller
+    /// folds the flip in, five instructions a span fewer).
     pub color: *mut u8,
-    pub stride: u64,
+    pub stride: i64,
     /// The depth value (`u16` or `u32`) of pixel `(0, y0)` (rows of
     /// `width` values, bottom up), or null.
     pub depth: *mut u8,
     /// The stencil value of pixel `(0, y0)` (as depth), or null.
     pub stencil: *mut u8,
-    /// The view's width, its rows `y0..y0 + rows`, the whole target's height
-    /// (for the planes' row) and whether its colour rows are top-down (0 or 1).
+    /// The view's width, its rows `y0..y0 + rows` and the whole target's
+    /// height (for the planes' row).
     pub width: u32,
     pub y0: u32,
     pub rows: u32,
     pub height: u32,
-    pub top_down: u32,
-    pub _pad: u32,
     /// The dither bias of lanes `0..4` (the pattern repeats every four
     /// pixels; a key that dithers is given one span a call).
     pub dither: [u32; 4],
@@ -474,13 +472,10 @@ impl<'a> Gen<'a> {
         self.b.switch_to_block(check);
         self.b.ins().brif(fits, placed, &[], stop, &[i.into()]);
         self.b.switch_to_block(placed);
-        // The span's pixels (`Target::color_offset`, `Target::index`): colour row `r` (flipped
-        // when top-down), depth and stencil index `r · width + x`.
-        let top_down = i32_at(self, offset_of!(SpanCall, top_down));
-        let last_row = self.b.ins().iadd_imm_u(rows, -1);
-        let flipped = self.b.ins().isub(last_row, r);
-        let row_c = self.b.ins().select(top_down, flipped, r);
-        let row_c = self.b.ins().uextend(ptr, row_c);
+        // The span's pixels (`Target::color_offset`, `Target::index`):
+        // colour row `r` (the stride's sign flips it when top-down), depth
+        // and stencil index `r · width + x`.
+        let row_c = self.b.ins().uextend(ptr, r);
         let stride = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, stride) as i32);
         let color_row = self.b.ins().imul(row_c, stride);
         let x_p = self.b.ins().uextend(ptr, x0);

@@ -392,20 +392,30 @@ impl Specialist {
                 .map(|u| 1 << u)
                 .sum()
         });
+        // Row 0 of the view (the step to the next row up is `stride`).
+        let row0 = |color: *mut u8| {
+            if lay.top_down {
+                color.wrapping_add(lay.rows.saturating_sub(1) as usize * lay.stride)
+            } else {
+                color
+            }
+        };
         let mut call = SpanCall {
             spans: std::ptr::null(),
             count: 0,
             next: 0,
-            color: parts.color,
-            stride: lay.stride as u64,
+            color: row0(parts.color),
+            stride: if lay.top_down {
+                (lay.stride as i64).wrapping_neg()
+            } else {
+                lay.stride as i64
+            },
             depth: parts.depth,
             stencil: parts.stencil,
             width: lay.width,
             y0: lay.y0,
             rows: lay.rows,
             height: lay.height,
-            top_down: u32::from(lay.top_down),
-            _pad: 0,
             dither: [0; 4],
             planes: std::ptr::null(),
             tex,
@@ -457,7 +467,7 @@ impl Specialist {
                 self.run_span(func, (splats, &call), (span, table[next]), target);
                 // (`run_span` borrowed the buffers again.)
                 let parts = target.raw_parts();
-                (call.color, call.depth, call.stencil) = (parts.color, parts.depth, parts.stencil);
+                (call.color, call.depth, call.stencil) = (row0(parts.color), parts.depth, parts.stencil);
                 next += 1;
             }
         }
@@ -503,8 +513,6 @@ impl Specialist {
             y0: span.y,
             rows: 1,
             height: t.height(),
-            top_down: 0,
-            _pad: 0,
             dither: [0; 4],
             planes: if batch.planes.is_null() {
                 std::ptr::null()
