@@ -46,7 +46,7 @@
 //! Then (issue 13, fourth session; same method, `fill.c CASE 1` and `CASE 3`
 //! runs, the difference halved: a frame's instructions): whether the 1/w
 //! and q/w planes are exactly 1 comes from the caller once a primitive
-//! (`SpanCall::ones`, `Planes::ones`) rather than from six plane loads a
+//! (`SpanPlanes::ones`, `Planes::ones`) rather than from six plane loads a
 //! span; untextured keys keep the unorm8 conversion's 255.0 in a register
 //! across the span; textured keys make zero where it is used (kept for the
 //! group it was spilled); and the caller's per-span path reads the target
@@ -62,9 +62,29 @@
 //! instructions fewer a group): Cranelift then folded no plane's `a0` into
 //! its multiply-add (5 instructions a plane, not 4), which cost more.
 //!
-//! The function reads and writes whole groups of four pixels from the pointers
-//! in [`SpanCall`]: the caller (the `specialist` module) guarantees that
-//! `4 * groups` pixels are addressable from each of them.
+//! Then (fifth session; callgrind, `fill.c CASE 1`, one thread,
+//! `SOFTGL_JIT_TIER=optimized`: two frames): one call runs a batch of
+//! spans (up to 32, a `FragmentStage` batch) instead of one. The code finds
+//! each span's live lanes (`Target::owned_mask`) and its pixels from the
+//! target's geometry in [`SpanCall`], and its planes and their exactly-1
+//! flags from a table ([`SpanPlanes`]) the caller fills once a primitive;
+//! a span whose last group crosses the view's right edge stops the batch
+//! and the caller runs it on a copy. Per span, the caller's record, the
+//! call and the function's entry took about 150 instructions (113 in
+//! `run_splatted`, 25–42 in the entry and exit); now about 80 in the
+//! generated code and 25 in the caller. The top-down flip comes folded
+//! into the colour pointer and a negative stride (five instructions a
+//! span). `tex` 2627.6 M -> 2550.6 M (its 2.41 M spans), `fill` 598.7 M
+//! -> 584.5 M. Tried and dropped: the batch's geometry (spans, y0, rows,
+//! width) loaded once in the entry block rather than once a span: the
+//! textured key spilled and reloaded them around the group loop's callout
+//! (`tex` +13 M), `fill` gained 0.5 M.
+//!
+//! The function reads and writes whole groups of four pixels of the spans it
+//! runs: the caller (the `specialist` module) guarantees that every pixel of
+//! the view's rows `y0..y0 + rows` and columns `0..width` is addressable
+//! from the pointers in [`SpanCall`] at the offsets it computes, and the
+//! code runs a span only when its groups end inside those columns.
 
 use crate::key::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
@@ -291,7 +311,7 @@ enum Factor {
     Value(Value),
 }
 
-/// Per-span values loaded once in the entry block.
+/// Per-span values, made once a span before its group loop.
 struct SpanValues {
     /// The `SpanCall` pointer.
     call: Value,
@@ -321,7 +341,7 @@ struct Group {
     /// from `bits` by [`Gen::live`]): a key without tests never makes it in
     /// a group whose four lanes are all live.
     live: Option<Value>,
-    /// The group's four bits of `SpanCall::live` (an `i32`, not zero).
+    /// The group's four bits of the span's live lanes (an `i32`, not zero).
     bits: Value,
     rgba: [Value; 4],
     packed: Option<Value>,

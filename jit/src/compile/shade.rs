@@ -60,7 +60,7 @@ impl Gen<'_> {
     /// Planes `ks` at the lanes, each divided by the 1/w plane (times
     /// `w = 1 / (1/w)`, made once a group and kept in `g.w`), as
     /// `crate::shade::fragment`. When the span's 1/w plane is exactly 1
-    /// (bit 0 of `SpanCall::ones`, [`crate::Planes::is_one`]: then `1 / 1` is 1
+    /// (bit 0 of `SpanPlanes::ones`, [`crate::Planes::is_one`]: then `1 / 1` is 1
     /// and `v · 1` is `v`) the planes' values are taken as they are: the
     /// same bits without the division and the multiplies (the `fill`
     /// frame's groups: 11 instructions fewer of 66).
