@@ -168,13 +168,13 @@ impl TexView<'_> {
 #[derive(Clone, Copy, Debug)]
 pub struct TexCall {
     /// The lanes' pixel columns and their row, in llvmpipe's top-down frame
-    /// (`SpanCall::row`), as the specialist evaluates the planes at them.
+    /// (`interp::row_of`), as the specialist evaluates the planes at them.
     pub px: [f32; 4],
     pub row: [f32; 4],
     /// `samples[u][channel][lane]`: unit `u`'s filtered RGBA, for the units
     /// of `units` and the lanes of `live` (the rest is left as it is).
     pub samples: [[[f32; 4]; 4]; MAX_UNITS],
-    /// The planes of the group's primitive (`SpanCall::planes`).
+    /// The planes of the group's primitive (`SpanPlanes::planes`).
     pub planes: *const Planes,
     /// The [`TexView`] of the call (`SpanCall::tex`).
     pub view: *const TexView<'static>,
@@ -206,7 +206,7 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
     let Some(view) = (unsafe { call.view.as_ref() }) else {
         return;
     };
-    // SAFETY: `planes` is null or `SpanCall::planes`, the span's planes, which
+    // SAFETY: `planes` is null or `SpanPlanes::planes`, the span's planes, which
     // `Specialist::run_splatted` keeps borrowed across the call.
     let Some(planes) = (unsafe { call.planes.as_ref() }) else {
         return;

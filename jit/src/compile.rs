@@ -46,7 +46,7 @@
 //! Then (issue 13, fourth session; same method, `fill.c CASE 1` and `CASE 3`
 //! runs, the difference halved: a frame's instructions): whether the 1/w
 //! and q/w planes are exactly 1 comes from the caller once a primitive
-//! (`SpanCall::ones`, `Planes::ones`) rather than from six plane loads a
+//! (`SpanPlanes::ones`, `Planes::ones`) rather than from six plane loads a
 //! span; untextured keys keep the unorm8 conversion's 255.0 in a register
 //! across the span; textured keys make zero where it is used (kept for the
 //! group it was spilled); and the caller's per-span path reads the target
@@ -62,9 +62,29 @@
 //! instructions fewer a group): Cranelift then folded no plane's `a0` into
 //! its multiply-add (5 instructions a plane, not 4), which cost more.
 //!
-//! The function reads and writes whole groups of four pixels from the pointers
-//! in [`SpanCall`]: the caller (the `specialist` module) guarantees that
-//! `4 * groups` pixels are addressable from each of them.
+//! Then (fifth session; callgrind, `fill.c CASE 1`, one thread,
+//! `SOFTGL_JIT_TIER=optimized`: two frames): one call runs a batch of
+//! spans (up to 32, a `FragmentStage` batch) instead of one. The code finds
+//! each span's live lanes (`Target::owned_mask`) and its pixels from the
+//! target's geometry in [`SpanCall`], and its planes and their exactly-1
+//! flags from a table ([`SpanPlanes`]) the caller fills once a primitive;
+//! a span whose last group crosses the view's right edge stops the batch
+//! and the caller runs it on a copy. Per span, the caller's record, the
+//! call and the function's entry took about 150 instructions (113 in
+//! `run_splatted`, 25–42 in the entry and exit); now about 80 in the
+//! generated code and 25 in the caller. The top-down flip comes folded
+//! into the colour pointer and a negative stride (five instructions a
+//! span). `tex` 2627.6 M -> 2550.6 M (its 2.41 M spans), `fill` 598.7 M
+//! -> 584.5 M. Tried and dropped: the batch's geometry (spans, y0, rows,
+//! width) loaded once in the entry block rather than once a span: the
+//! textured key spilled and reloaded them around the group loop's callout
+//! (`tex` +13 M), `fill` gained 0.5 M.
+//!
+//! The function reads and writes whole groups of four pixels of the spans it
+//! runs: the caller (the `specialist` module) guarantees that every pixel of
+//! the view's rows `y0..y0 + rows` and columns `0..width` is addressable
+//! from the pointers in [`SpanCall`] at the offsets it computes, and the
+//! code runs a span only when its groups end inside those columns.
 
 use crate::key::{
     BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
@@ -72,7 +92,7 @@ use crate::key::{
 };
 use crate::pixel;
 use crate::shade::Planes;
-use crate::span::FragmentSpan;
+use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::uniforms::FragmentUniforms;
 use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::immediates::V128Imm;
@@ -80,7 +100,7 @@ use cranelift_codegen::ir::{types, AbiParam, Block, InstBuilder, MemFlagsData, S
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
-use std::mem::offset_of;
+use std::mem::{offset_of, size_of};
 
 mod sample;
 mod shade;
@@ -110,41 +130,62 @@ static LIVE_MASKS: LiveMasks = LiveMasks({
     t
 });
 
-/// What the compiled function is given for one span. `#[repr(C)]`: the
-/// generated code reads its fields at their `offset_of!` offsets.
+/// What the compiled function is given: a batch of spans and the target
+/// they are written into. `#[repr(C)]`: the generated code reads its fields
+/// at their `offset_of!` offsets.
+///
+/// The code runs `spans[next..count]` in order, each span's pixels found
+/// from the target's geometry here (as `Target::offsets` finds them), and
+/// stores in `next` the first span it did not run: `count`, or a span whose
+/// last group of four crosses the view's right edge (the caller runs that
+/// one on a copy of its pixels and calls again from the span after it).
 #[repr(C)]
 #[derive(Debug)]
 pub struct SpanCall {
-    pub span: *const FragmentSpan,
-    /// The color of pixel `(span.x, span.y)`.
+    pub spans: *const FragmentSpan,
+    pub count: u32,
+    /// In: the first span to run; out: the first span not run.
+    pub next: u32,
+    /// The colour of pixel `(0, y0)`; row `y0 + r` is `r · stride` bytes
+    /// from it (`stride` is negative for a top-down target: the caller
+    /// folds the flip in, five instructions a span fewer).
     pub color: *mut u8,
-    /// The depth value of pixel `(span.x, span.y)` (`u16` or `u32`), or null.
+    pub stride: i64,
+    /// The depth value (`u16` or `u32`) of pixel `(0, y0)` (rows of
+    /// `width` values, bottom up), or null.
     pub depth: *mut u8,
-    /// The stencil value of pixel `(span.x, span.y)`, or null.
+    /// The stencil value of pixel `(0, y0)` (as depth), or null.
     pub stencil: *mut u8,
-    /// Fragments to process: covered and inside the target; no bit at or
-    /// above `4 * groups`.
-    pub live: u64,
-    /// Groups of four lanes addressable from the pointers, from lane 0 (the
-    /// code visits groups until no live lane remains).
-    pub groups: u32,
-    pub _pad: u32,
-    /// The dither bias of lanes `0..4` (the pattern repeats every four pixels).
+    /// The view's width, its rows `y0..y0 + rows` and the whole target's
+    /// height (for the planes' row).
+    pub width: u32,
+    pub y0: u32,
+    pub rows: u32,
+    pub height: u32,
+    /// The dither bias of lanes `0..4` (the pattern repeats every four
+    /// pixels; a key that dithers is given one span a call).
     pub dither: [u32; 4],
-    /// The span's primitive's planes (keys with a shading stage), or null.
-    pub planes: *const Planes,
-    /// The span's row in llvmpipe's top-down frame, for the planes.
-    pub row: f32,
-    /// [`Planes::ones`] of the span's planes for the key's natively sampled
-    /// units (`native_units`): which planes are exactly 1, found once a
-    /// primitive rather than once a span.
-    pub ones: u32,
+    /// Each span's planes and their exactly-1 flags (keys with a shading
+    /// stage; [`SpanPlanes`]), indexed like `spans`, or null.
+    pub planes: *const SpanPlanes,
     /// The draw's textures (keys with texture units), or null.
     pub tex: *const crate::callout::TexView<'static>,
 }
 
+/// A span's primitive's planes, for the generated code ([`SpanCall::planes`]).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct SpanPlanes {
+    pub planes: *const Planes,
+    /// [`Planes::ones`] of those planes for the key's natively sampled
+    /// units: which planes are exactly 1, found once a primitive rather
+    /// than once a span.
+    pub ones: u32,
+    pub _pad: u32,
+}
+
 /// The signature of a compiled specialist.
-pub type SpanFn = unsafe extern "C" fn(call: *const SpanCall, uniforms: *const SplatUniforms);
+pub type SpanFn = unsafe extern "C" fn(call: *mut SpanCall, uniforms: *const SplatUniforms);
 
 /// Why a key could not be compiled.
 #[derive(Debug, thiserror::Error)]
@@ -270,7 +311,7 @@ enum Factor {
     Value(Value),
 }
 
-/// Per-span values loaded once in the entry block.
+/// Per-span values, made once a span before its group loop.
 struct SpanValues {
     /// The `SpanCall` pointer.
     call: Value,
@@ -300,7 +341,7 @@ struct Group {
     /// from `bits` by [`Gen::live`]): a key without tests never makes it in
     /// a group whose four lanes are all live.
     live: Option<Value>,
-    /// The group's four bits of `SpanCall::live` (an `i32`, not zero).
+    /// The group's four bits of the span's live lanes (an `i32`, not zero).
     bits: Value,
     rgba: [Value; 4],
     packed: Option<Value>,
@@ -370,20 +411,121 @@ impl<'a> Gen<'a> {
         let call = self.b.block_params(entry)[0];
         let u = self.b.block_params(entry)[1];
         let ptr = self.ptr;
+        let i32_at = |g: &mut Self, off: usize| g.b.ins().load(types::I32, mem(), call, off as i32);
 
-        let load_ptr = |g: &mut Self, off: usize| g.b.ins().load(ptr, mem(), call, off as i32);
-        let span = load_ptr(self, offset_of!(SpanCall, span));
-        let color = load_ptr(self, offset_of!(SpanCall, color));
-        let depth = load_ptr(self, offset_of!(SpanCall, depth));
-        let stencil = load_ptr(self, offset_of!(SpanCall, stencil));
-        let live = self
+        // The batch's spans in order: `span_head` takes span `i`, `next_span`
+        // goes on to `i + 1`, `stop` returns with `i` in `SpanCall::next`.
+        // The target's geometry is loaded in each span's own block (no value
+        // lives across the group loop but the span's: loads that hit L1).
+        let first = i32_at(self, offset_of!(SpanCall, next));
+        let span_head = self.b.create_block();
+        let i = self.b.append_block_param(span_head, types::I32);
+        let stop = self.b.create_block();
+        let stop_at = self.b.append_block_param(stop, types::I32);
+        let next_span = self.b.create_block();
+        self.b.ins().jump(span_head, &[first.into()]);
+
+        self.b.switch_to_block(stop);
+        self.b
+            .ins()
+            .store(mem(), stop_at, call, offset_of!(SpanCall, next) as i32);
+        self.b.ins().return_(&[]);
+
+        self.b.switch_to_block(next_span);
+        let i1 = self.b.ins().iadd_imm_u(i, 1);
+        self.b.ins().jump(span_head, &[i1.into()]);
+
+        self.b.switch_to_block(span_head);
+        let count = i32_at(self, offset_of!(SpanCall, count));
+        let more = self.b.ins().icmp(IntCC::UnsignedLessThan, i, count);
+        let run = self.b.create_block();
+        self.b.ins().brif(more, run, &[], stop, &[i.into()]);
+        self.b.switch_to_block(run);
+        let spans = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, spans) as i32);
+        let i_p = self.b.ins().uextend(ptr, i);
+        let off = self.b.ins().imul_imm_u(i_p, size_of::<FragmentSpan>() as i64);
+        let span = self.b.ins().iadd(spans, off);
+        let span_i32 = |g: &mut Self, off: usize| g.b.ins().load(types::I32, mem(), span, off as i32);
+        let x0 = span_i32(self, offset_of!(FragmentSpan, x));
+        let y = span_i32(self, offset_of!(FragmentSpan, y));
+        // The view's rows and columns (`Target::owned_mask`).
+        let y0 = i32_at(self, offset_of!(SpanCall, y0));
+        let rows = i32_at(self, offset_of!(SpanCall, rows));
+        let width = i32_at(self, offset_of!(SpanCall, width));
+        let r = self.b.ins().isub(y, y0);
+        let in_rows = self.b.ins().icmp(IntCC::UnsignedLessThan, r, rows);
+        let in_cols = self.b.ins().icmp(IntCC::UnsignedLessThan, x0, width);
+        let owned = self.b.ins().band(in_rows, in_cols);
+        let go = self.b.create_block();
+        self.b.ins().brif(owned, go, &[], next_span, &[]);
+        self.b.switch_to_block(go);
+        // The live lanes: the first `min(len, inside)` slots of the mask.
+        let right = self.b.ins().isub(width, x0);
+        let max = self.b.ins().iconst(types::I32, SPAN_MAX as i64);
+        let inside = self.b.ins().umin(right, max);
+        let len = span_i32(self, offset_of!(FragmentSpan, len));
+        let n = self.b.ins().umin(len, inside);
+        let mask = self
             .b
             .ins()
-            .load(types::I64, mem(), call, offset_of!(SpanCall, live) as i32);
-        let x0 = self
-            .b
-            .ins()
-            .load(types::I32, mem(), span, offset_of!(FragmentSpan, x) as i32);
+            .load(types::I64, mem(), span, offset_of!(FragmentSpan, mask) as i32);
+        let n64 = self.b.ins().uextend(types::I64, n);
+        let one = self.b.ins().iconst(types::I64, 1);
+        let bit = self.b.ins().ishl(one, n64);
+        let below = self.b.ins().iadd_imm_u(bit, -1);
+        let every = self.b.ins().icmp_imm_u(IntCC::UnsignedGreaterThanOrEqual, n64, 64);
+        let all = self.b.ins().iconst(types::I64, -1);
+        let below = self.b.ins().select(every, all, below);
+        let live = self.b.ins().band(mask, below);
+        // Groups addressable from lane 0: a span whose last live group
+        // crosses the right edge stops the batch (the caller runs it on a copy).
+        let lz = self.b.ins().clz(live);
+        let k67 = self.b.ins().iconst(types::I64, 64 + 3);
+        let top = self.b.ins().isub(k67, lz);
+        let lanes = self.b.ins().band_imm_u(top, !3);
+        let lanes = self.b.ins().ireduce(types::I32, lanes);
+        let fits = self.b.ins().icmp(IntCC::UnsignedLessThanOrEqual, lanes, inside);
+        let any = self.b.ins().icmp_imm_u(IntCC::NotEqual, live, 0);
+        let placed = self.b.create_block();
+        let check = self.b.create_block();
+        self.b.ins().brif(any, check, &[], next_span, &[]);
+        self.b.switch_to_block(check);
+        self.b.ins().brif(fits, placed, &[], stop, &[i.into()]);
+        self.b.switch_to_block(placed);
+        // The span's pixels (`Target::color_offset`, `Target::index`):
+        // colour row `r` (the stride's sign flips it when top-down), depth
+        // and stencil index `r · width + x`.
+        let row_c = self.b.ins().uextend(ptr, r);
+        let stride = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, stride) as i32);
+        let color_row = self.b.ins().imul(row_c, stride);
+        let x_p = self.b.ins().uextend(ptr, x0);
+        let bpp = self.key.color_format.bytes_per_pixel() as i64;
+        let x_bytes = self.scale(x_p, bpp);
+        let color_base = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, color) as i32);
+        let color = self.b.ins().iadd(color_base, color_row);
+        let color = self.b.ins().iadd(color, x_bytes);
+        let index = self.b.ins().imul(r, width);
+        let index = self.b.ins().iadd(index, x0);
+        let index = self.b.ins().uextend(ptr, index);
+        // Only the buffers the stages read (the loads are not removed when unused).
+        let depth = match self.key.depth_format.filter(|_| self.key.depth.is_some()) {
+            Some(f) => {
+                let base = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, depth) as i32);
+                let dbytes = if f == DepthFormat::D16 { 2 } else { 4 };
+                let off = self.scale(index, dbytes);
+                self.b.ins().iadd(base, off)
+            }
+            None => self.b.ins().iconst(ptr, 0),
+        };
+        let stencil = if self.key.stencil_buffer && self.key.stencil.is_some() {
+            let base = self
+                .b
+                .ins()
+                .load(ptr, mem(), call, offset_of!(SpanCall, stencil) as i32);
+            self.b.ins().iadd(base, index)
+        } else {
+            self.b.ins().iconst(ptr, 0)
+        };
         let sv = SpanValues {
             call,
             u,
@@ -398,14 +540,19 @@ impl<'a> Gen<'a> {
         };
         let mut sv = sv;
         if let Some(shade) = self.key.shade {
-            let (planes, row, px0) = self.planes_and_row(call, x0);
+            // The span's entry of `SpanCall::planes`.
+            let table = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, planes) as i32);
+            let off = self.b.ins().imul_imm_u(i_p, size_of::<SpanPlanes>() as i64);
+            let entry = self.b.ins().iadd(table, off);
+            let height = i32_at(self, offset_of!(SpanCall, height));
+            let (planes, row, px0) = self.planes_and_row(entry, (x0, y, height));
             sv.planes = Some((planes, row, px0));
             if shade.color && !shade.flat {
-                // The caller found which planes are exactly 1 (`SpanCall::ones`).
+                // The caller found which planes are exactly 1 (`SpanPlanes::ones`).
                 let ones = self
                     .b
                     .ins()
-                    .load(types::I32, mem(), call, offset_of!(SpanCall, ones) as i32);
+                    .load(types::I32, mem(), entry, offset_of!(SpanPlanes, ones) as i32);
                 sv.w_one = Some(self.b.ins().band_imm_u(ones, 1));
                 for (u, unit) in shade.tex.iter().enumerate() {
                     if unit.as_ref().is_some_and(|t| self.native_sampling && native_unit(t)) {
@@ -414,14 +561,10 @@ impl<'a> Gen<'a> {
                 }
             }
         }
-        let exit = self.b.create_block();
+        let exit = next_span;
 
         // The scissor's rows are tested once per span.
         if self.key.scissor {
-            let y = self
-                .b
-                .ins()
-                .load(types::I32, mem(), span, offset_of!(FragmentSpan, y) as i32);
             let sy0 = self.uniform_i32(u, uniform_offset(offset_of!(FragmentUniforms, scissor) + 4));
             let sy1 = self.uniform_i32(u, uniform_offset(offset_of!(FragmentUniforms, scissor) + 12));
             let lo = self.b.ins().icmp(IntCC::SignedGreaterThanOrEqual, y, sy0);
@@ -499,9 +642,6 @@ impl<'a> Gen<'a> {
             args.push(self.b.ins().fadd(p, four).into());
         }
         self.b.ins().jump(head, &args);
-
-        self.b.switch_to_block(exit);
-        self.b.ins().return_(&[]);
     }
 
     /// The bits of the span's lanes inside the scissor box's columns

@@ -220,7 +220,7 @@ impl Planes {
         a0 == 1.0f32.to_bits() && (dadx | dady) & 0x7fff_ffff == 0
     }
 
-    /// What compiled code reads as `SpanCall::ones`: bit 0 the 1/w plane
+    /// What compiled code reads as `SpanPlanes::ones`: bit 0 the 1/w plane
     /// [`Self::is_one`] (colours and coordinates need no division by it),
     /// bit `1 + u` for each unit `u` of `units` (a bit mask) that and unit
     /// `u`'s q/w plane too (its s and t are its planes' values).

@@ -1,8 +1,8 @@
 //! A compiled specialist and the one place softgl calls into generated code.
 
 use crate::callout::TexView;
-use crate::compile::{self, CompileError, RegAlloc, SpanCall, SpanFn, SplatUniforms};
-use crate::interp::{check_key, check_planes, row_of, FragmentError};
+use crate::compile::{self, CompileError, RegAlloc, SpanCall, SpanFn, SpanPlanes, SplatUniforms};
+use crate::interp::{check_key, check_planes, FragmentError};
 use crate::key::FragmentKey;
 use crate::pixel;
 use crate::shade::Planes;
@@ -377,102 +377,114 @@ impl Specialist {
             }
         };
         let func = self.code().func;
-        // One call record for the batch: a span sets only its own fields.
-        let mut call = SpanCall {
-            span: std::ptr::null(),
-            color: std::ptr::null_mut(),
-            depth: std::ptr::null_mut(),
-            stencil: std::ptr::null_mut(),
-            live: 0,
-            groups: 0,
-            _pad: 0,
-            dither: [0; 4],
-            planes: std::ptr::null(),
-            row: 0.0,
-            ones: 0,
-            tex,
-        };
-        // The per-span path reads the target's geometry and buffers once a
-        // batch (pointers and lengths, no slicing or depth-format match a
-        // span), and finds a span's live lanes with one mask; the planes
-        // and their exactly-1 flags (`SpanCall::ones`) are looked up when
-        // the primitive changes: 130 -> 113 instructions a span outside the
-        // specialist (callgrind, `fill.c fill`, one thread; 131 -> 115 on
-        // the `tex` frame's 1.2 M spans).
+        // The batch runs in one call (a chunk of `CHUNK` spans a call): the
+        // generated code finds each span's live lanes and pixels from the
+        // target's geometry (`SpanCall`), and takes each span's planes and
+        // their exactly-1 flags (`SpanPlanes`) from a table made here once a
+        // primitive. Per span, the call and its record cost 113 + 25
+        // instructions outside the groups where this costs about 35
+        // (module docs of `compile`).
         let lay = target.layout();
-        let mut parts = target.raw_parts();
-        let dither = self.key.dither;
-        // The planes, and which of them are exactly 1, change with the
-        // primitive, not with every span.
+        let parts = target.raw_parts();
         let units = self.key.shade.as_ref().map_or(0, |s| {
             (0..crate::texture::MAX_UNITS)
                 .filter(|&u| s.tex[u].as_ref().is_some_and(compile::native_unit))
                 .map(|u| 1 << u)
                 .sum()
         });
+        // Row 0 of the view (the step to the next row up is `stride`).
+        let row0 = |color: *mut u8| {
+            if lay.top_down {
+                color.wrapping_add(lay.rows.saturating_sub(1) as usize * lay.stride)
+            } else {
+                color
+            }
+        };
+        let mut call = SpanCall {
+            spans: std::ptr::null(),
+            count: 0,
+            next: 0,
+            color: row0(parts.color),
+            stride: if lay.top_down {
+                (lay.stride as i64).wrapping_neg()
+            } else {
+                lay.stride as i64
+            },
+            depth: parts.depth,
+            stencil: parts.stencil,
+            width: lay.width,
+            y0: lay.y0,
+            rows: lay.rows,
+            height: lay.height,
+            dither: [0; 4],
+            planes: std::ptr::null(),
+            tex,
+        };
+        // Whether every pixel of the view's rows is inside its buffers: then
+        // so is every group the code runs (a span's groups end at or before
+        // the view's width). Else (and for keys that dither, whose bias is
+        // the span's) one span a call, from checked slices.
+        let fits = lay.fits(&parts) && !self.key.dither;
+        let mut table = [SpanPlanes {
+            planes: std::ptr::null(),
+            ones: 0,
+            _pad: 0,
+        }; CHUNK];
         let mut last = None;
-        for span in spans {
-            if last != Some(span.planes) {
-                last = Some(span.planes);
-                let p = planes.get(span.planes as usize);
-                call.planes = p.map_or(std::ptr::null(), |p| p as *const Planes);
-                call.ones = p.map_or(0, |p| p.ones(units));
+        let mut entry = table[0];
+        for chunk in spans.chunks(CHUNK) {
+            if self.key.shade.is_some() {
+                // The planes change with the primitive, not with every span.
+                for (t, span) in table.iter_mut().zip(chunk) {
+                    if last != Some(span.planes) {
+                        last = Some(span.planes);
+                        let p = planes.get(span.planes as usize);
+                        entry = SpanPlanes {
+                            planes: p.map_or(std::ptr::null(), |p| p as *const Planes),
+                            ones: p.map_or(0, |p| p.ones(units)),
+                            _pad: 0,
+                        };
+                    }
+                    *t = entry;
+                }
+                call.planes = table.as_ptr();
             }
-            let (live, inside) = lay.owned(span);
-            if live == 0 {
-                continue;
-            }
-            let groups = (64 - live.leading_zeros()).div_ceil(4);
-            let n = 4 * groups;
-            if n > inside {
-                // The last group crosses the right edge: on a copy.
-                self.run_span(func, (splats, &mut call), span, target);
+            call.spans = chunk.as_ptr();
+            call.count = chunk.len() as u32;
+            let mut next = 0;
+            while next < chunk.len() {
+                if fits {
+                    call.next = next as u32;
+                    self.call(func, &mut call, splats);
+                    next = call.next as usize;
+                    if next >= chunk.len() {
+                        break;
+                    }
+                }
+                // The span's last group crosses the right edge (or the batch
+                // runs a span a call): from checked slices, on a copy if so.
+                let Some(span) = chunk.get(next) else { break };
+                self.run_span(func, (splats, &call), (span, table[next]), target);
                 // (`run_span` borrowed the buffers again.)
-                parts = target.raw_parts();
-                continue;
+                let parts = target.raw_parts();
+                (call.color, call.depth, call.stencil) = (row0(parts.color), parts.depth, parts.stencil);
+                next += 1;
             }
-            let n = n as usize;
-            let (color_at, index) = lay.offsets(span.x, span.y);
-            // Each buffer's `n` pixels must be inside it (they are: the view
-            // owns the row's first `inside` pixels; checked all the same).
-            if color_at + n * lay.bpp > parts.color_len
-                || (!parts.depth.is_null() && index + n > parts.depth_len)
-                || (!parts.stencil.is_null() && index + n > parts.stencil_len)
-            {
-                continue;
-            }
-            call.color = parts.color.wrapping_add(color_at);
-            call.depth = if parts.depth.is_null() {
-                parts.depth
-            } else {
-                parts.depth.wrapping_add(index << parts.depth_shift)
-            };
-            call.stencil = if parts.stencil.is_null() {
-                parts.stencil
-            } else {
-                parts.stencil.wrapping_add(index)
-            };
-            call.span = span;
-            call.live = live;
-            call.groups = groups;
-            call.row = row_of(span.y, lay.height);
-            if dither {
-                call.dither = std::array::from_fn(|i| pixel::dither_bias(span.x + i as u32, span.y));
-            }
-            self.call(func, &call, splats);
         }
         Ok(())
     }
 
-    /// Runs `func` over `span` with `call` (whose `planes` and `tex` the
-    /// caller set). A span sets only what is its own in the batch's call
-    /// record (the `ops` frame's 2.4 M spans a two-frame run: 143 -> 131
-    /// instructions each outside the specialist).
+    /// Runs `func` over `span` alone (`batch`: the batch's call, for its
+    /// textures), whose pixels are taken from checked slices of `t`: in
+    /// place, or when its last group crosses the right edge on a copy of
+    /// the row's end padded to whole groups. The call's target is made to
+    /// look like a one-row view whose row starts at the pixels (pointers
+    /// offset back by `span.x` pixels, which the code adds again).
     fn run_span(
         &self,
         func: SpanFn,
-        (u, call): (&SplatUniforms, &mut SpanCall),
-        span: &FragmentSpan,
+        (u, batch): (&SplatUniforms, &SpanCall),
+        (span, entry): (&FragmentSpan, SpanPlanes),
         t: &mut Target<'_>,
     ) {
         let live = t.owned_mask(span);
@@ -483,10 +495,32 @@ impl Specialist {
         let n = 4 * groups as usize;
         // `owned_mask` is zero for spans at or right of the width.
         let inside = (t.width() - span.x).min(SPAN_MAX as u32) as usize;
-        call.span = span;
-        call.live = live;
-        call.groups = groups;
-        call.row = row_of(span.y, t.height());
+        // The span with its live lanes only (the code clips nothing more).
+        let mut one = span.clone();
+        one.mask = live;
+        one.len = SPAN_MAX as u32;
+        let entry = [entry];
+        let x = span.x as usize;
+        let mut call = SpanCall {
+            spans: &one,
+            count: 1,
+            next: 0,
+            color: std::ptr::null_mut(),
+            stride: 0,
+            depth: std::ptr::null_mut(),
+            stencil: std::ptr::null_mut(),
+            width: span.x + n as u32,
+            y0: span.y,
+            rows: 1,
+            height: t.height(),
+            dither: [0; 4],
+            planes: if batch.planes.is_null() {
+                std::ptr::null()
+            } else {
+                entry.as_ptr()
+            },
+            tex: batch.tex,
+        };
         if self.key.dither {
             call.dither = std::array::from_fn(|i| pixel::dither_bias(span.x + i as u32, span.y));
         }
@@ -514,35 +548,45 @@ impl Specialist {
             },
             None => None,
         };
+        // Each buffer's pointer `x` elements before the span's first pixel.
+        let back = |p: *mut u8, size: usize| if p.is_null() { p } else { p.wrapping_sub(x * size) };
+        let dsize = |d: &DepthRow| match d {
+            DepthRow::U16(_) => 2,
+            DepthRow::U32(_) => 4,
+        };
         if n <= inside {
-            call.color = color.as_mut_ptr();
-            call.depth = depth.as_mut().map_or(std::ptr::null_mut(), DepthRow::as_mut_ptr);
-            call.stencil = stencil.as_mut().map_or(std::ptr::null_mut(), |s| s.as_mut_ptr());
-            self.call(func, call, u);
+            call.color = back(color.as_mut_ptr(), bpp);
+            call.depth = depth
+                .as_mut()
+                .map_or(std::ptr::null_mut(), |d| back(d.as_mut_ptr(), dsize(d)));
+            call.stencil = stencil
+                .as_mut()
+                .map_or(std::ptr::null_mut(), |s| back(s.as_mut_ptr(), 1));
+            self.call(func, &mut call, u);
             return;
         }
         let mut scratch = Scratch::default();
         scratch.color[..len * bpp].copy_from_slice(color);
-        call.color = scratch.color.as_mut_ptr();
+        call.color = back(scratch.color.as_mut_ptr(), bpp);
         call.depth = match &depth {
             Some(DepthRow::U16(d)) => {
                 scratch.depth16[..len].copy_from_slice(d);
-                scratch.depth16.as_mut_ptr().cast()
+                back(scratch.depth16.as_mut_ptr().cast(), 2)
             }
             Some(DepthRow::U32(d)) => {
                 scratch.depth32[..len].copy_from_slice(d);
-                scratch.depth32.as_mut_ptr().cast()
+                back(scratch.depth32.as_mut_ptr().cast(), 4)
             }
             None => std::ptr::null_mut(),
         };
         call.stencil = match &stencil {
             Some(s) => {
                 scratch.stencil[..len].copy_from_slice(s);
-                scratch.stencil.as_mut_ptr()
+                back(scratch.stencil.as_mut_ptr(), 1)
             }
             None => std::ptr::null_mut(),
         };
-        self.call(func, call, u);
+        self.call(func, &mut call, u);
         color.copy_from_slice(&scratch.color[..len * bpp]);
         match depth {
             Some(DepthRow::U16(d)) => d.copy_from_slice(&scratch.depth16[..len]),
@@ -555,25 +599,33 @@ impl Specialist {
     }
 
     /// Calls `func`, which is [`Self::code`]'s function, read once for the whole `run*` call.
-    fn call(&self, func: SpanFn, call: &SpanCall, u: &SplatUniforms) {
+    fn call(&self, func: SpanFn, call: &mut SpanCall, u: &SplatUniforms) {
         // SAFETY: `func` is the code of one of this specialist's `Compiled`s, both
-        // compiled from `self.key`, which `run` checked against the target's formats;
-        // `&self` keeps its module alive across the call (`OwnedModule`'s drop). The
-        // generated code reads the span and the uniforms through these references
-        // (and the planes, non-null whenever the key has a shading stage:
-        // `check_planes`), and reads and writes `4 * call.groups` pixels from each
-        // non-null buffer pointer (and no buffer the key does not use): `run_span`
-        // set each pointer of the batch's reused record for this span, from a slice
-        // of at least that many pixels (or null), or `run_splatted` did, from the
-        // target's `raw_parts` taken after any `run_span` borrowed the buffers
-        // again, an offset it checked to leave that many elements before the
-        // buffer's length. Keys with
-        // texture units read `call.tex`, a `TexView` made for their units (`run_splatted`
-        // checked `is_for`) and alive across the call, and pass it to
-        // `callout::texture_group` with a stack slot of their own.
+        // compiled from `self.key`, which `run_splatted` checked against the target's
+        // formats; `&self` keeps its module alive across the call (`OwnedModule`'s
+        // drop). The generated code reads the spans `call.spans[next..count]` and the
+        // uniforms through these references, writes only `call.next`, and reads each
+        // span's `SpanPlanes` entry (non-null whenever the key has a shading stage,
+        // and then each entry's planes too: `check_planes`). It writes the pixels of
+        // a span's groups only when they lie in the view's rows `y0..y0 + rows` and
+        // columns `0..width`, at the offsets `Target::color_offset` and `Target::index` give from the
+        // buffer pointers: `run_splatted` passes the target's `raw_parts` (taken
+        // after any `run_span` borrowed the buffers again) only when
+        // `Layout::fits` found every such pixel inside each buffer, and
+        // `run_span` passes a one-row view of `n` columns from `span.x` whose
+        // pointers, offset back by `span.x` elements (wrapping), point at a
+        // checked slice of at least `n` elements (or null, for a buffer the key
+        // does not use). Keys with texture units read `call.tex`, a `TexView`
+        // made for their units (`run_splatted` checked `is_for`) and alive across
+        // the call, and pass it to `callout::texture_group` with a stack slot of
+        // their own.
         unsafe { func(call, u) }
     }
 }
+
+/// Spans a call of the generated code takes at most (the `SpanPlanes` table
+/// is on the stack): a `FragmentStage` batch.
+const CHUNK: usize = 32;
 
 /// A draw's textures as a specialist reads them ([`Specialist::texture_view`]).
 pub enum DrawTextures<'a> {

@@ -316,14 +316,14 @@ impl<'a> Target<'a> {
         }
     }
 
-    /// Each buffer's first element and length in elements (depth: with
-    /// `log2` of its element size; null and 0 for a buffer the view lacks),
-    /// for the per-span path: no slicing or enum match a span.
+    /// Each buffer's first element and length in elements (null and 0 for
+    /// a buffer the view lacks), for the batched path: no slicing or enum
+    /// match a span.
     pub(crate) fn raw_parts(&mut self) -> RawParts {
-        let (depth, depth_len, depth_shift) = match &mut self.depth {
-            Some(DepthTarget::D16(d)) => (d.as_mut_ptr().cast(), d.len(), 1),
-            Some(DepthTarget::D24(d) | DepthTarget::D32(d)) => (d.as_mut_ptr().cast(), d.len(), 2),
-            None => (std::ptr::null_mut(), 0, 0),
+        let (depth, depth_len) = match &mut self.depth {
+            Some(DepthTarget::D16(d)) => (d.as_mut_ptr().cast(), d.len()),
+            Some(DepthTarget::D24(d) | DepthTarget::D32(d)) => (d.as_mut_ptr().cast(), d.len()),
+            None => (std::ptr::null_mut(), 0),
         };
         let (stencil, stencil_len) = match &mut self.stencil {
             Some(s) => (s.as_mut_ptr(), s.len()),
@@ -334,7 +334,6 @@ impl<'a> Target<'a> {
             color_len: self.color.len(),
             depth,
             depth_len,
-            depth_shift,
             stencil,
             stencil_len,
         }
@@ -359,34 +358,22 @@ pub(crate) struct Layout {
 }
 
 impl Layout {
-    /// `Target::owned_mask` of `span`, and the fragments of its row inside
-    /// the view (`min(width - x, 64)`, 0 outside).
-    #[inline]
-    pub fn owned(&self, span: &crate::FragmentSpan) -> (u64, u32) {
-        if span.y.wrapping_sub(self.y0) >= self.rows || span.x >= self.width {
-            return (0, 0);
+    /// Whether every pixel of the view (rows `0..rows`, columns
+    /// `0..width`) is inside each of `parts`' buffers, at the offsets
+    /// `Target::color_offset` and `Target::index` give.
+    pub fn fits(&self, parts: &RawParts) -> bool {
+        let (rows, width) = (self.rows as usize, self.width as usize);
+        if rows == 0 || width == 0 {
+            return true;
         }
-        let inside = (self.width - span.x).min(crate::SPAN_MAX as u32);
-        // `live_mask` and the view's right edge at once: the first
-        // `min(len, inside)` slots.
-        let n = span.len.min(inside);
-        let live = if n >= 64 {
-            span.mask
-        } else {
-            span.mask & ((1u64 << n) - 1)
-        };
-        (live, inside)
-    }
-
-    /// `Target::color_offset` and `Target::index` of a pixel the view owns.
-    #[inline]
-    pub fn offsets(&self, x: u32, y: u32) -> (usize, usize) {
-        let r = y - self.y0;
-        let row = if self.top_down { self.rows - 1 - r } else { r };
-        (
-            row as usize * self.stride + x as usize * self.bpp,
-            r as usize * self.width as usize + x as usize,
-        )
+        let color = (rows - 1)
+            .checked_mul(self.stride)
+            .and_then(|r| r.checked_add(width.checked_mul(self.bpp)?));
+        let pixels = rows.checked_mul(width);
+        color.is_some_and(|c| c <= parts.color_len)
+            && pixels.is_some_and(|p| {
+                (parts.depth.is_null() || p <= parts.depth_len) && (parts.stencil.is_null() || p <= parts.stencil_len)
+            })
     }
 }
 
@@ -397,7 +384,6 @@ pub(crate) struct RawParts {
     pub color_len: usize,
     pub depth: *mut u8,
     pub depth_len: usize,
-    pub depth_shift: u32,
     pub stencil: *mut u8,
     pub stencil_len: usize,
 }

@@ -4,27 +4,35 @@
 //! multiply-adds exactly where it has them), so the bits equal the
 //! interpreter's.
 
-use super::{le, mem, Gen, Group, SpanCall, SpanValues, SplatUniforms, I32X4};
+use super::{le, mem, Gen, Group, SpanPlanes, SpanValues, SplatUniforms, I32X4};
 use crate::key::{ColorFormat, DepthFormat, ShadeKey};
 use crate::shade::{exp2_coeffs, slot, FogMode, Planes};
-use cranelift_codegen::ir::condcodes::FloatCC;
+use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
 use cranelift_codegen::ir::{types, BlockArg, InstBuilder, MemFlagsData, Value};
 use std::mem::offset_of;
 
 const F32X4: cranelift_codegen::ir::Type = types::F32X4;
 
 impl Gen<'_> {
-    /// The span's planes pointer, its row splatted and the x of its first
-    /// four pixels as f32, made once a span.
-    pub(super) fn planes_and_row(&mut self, call: Value, x0: Value) -> (Value, Value, Value) {
+    /// The span's planes pointer (from its [`SpanPlanes`] `entry`), its
+    /// row in llvmpipe's top-down frame (`interp::row_of(y, height)`)
+    /// splatted, and the x of its first four pixels as f32, made once a span.
+    pub(super) fn planes_and_row(
+        &mut self,
+        entry: Value,
+        (x0, y, height): (Value, Value, Value),
+    ) -> (Value, Value, Value) {
         let planes = self
             .b
             .ins()
-            .load(self.ptr, mem(), call, offset_of!(SpanCall, planes) as i32);
-        let row = self
-            .b
-            .ins()
-            .load(types::F32, mem(), call, offset_of!(SpanCall, row) as i32);
+            .load(self.ptr, mem(), entry, offset_of!(SpanPlanes, planes) as i32);
+        // `height.saturating_sub(y + 1)`.
+        let below = self.b.ins().isub(height, y);
+        let below = self.b.ins().iadd_imm_u(below, -1);
+        let above = self.b.ins().icmp(IntCC::UnsignedGreaterThan, height, y);
+        let zero = self.b.ins().iconst(types::I32, 0);
+        let row = self.b.ins().select(above, below, zero);
+        let row = self.b.ins().fcvt_from_uint(types::F32, row);
         let row = self.b.ins().splat(F32X4, row);
         let x = self.b.ins().splat(I32X4, x0);
         let idx = self.vconst([0, 1, 2, 3]);
@@ -52,7 +60,7 @@ impl Gen<'_> {
     /// Planes `ks` at the lanes, each divided by the 1/w plane (times
     /// `w = 1 / (1/w)`, made once a group and kept in `g.w`), as
     /// `crate::shade::fragment`. When the span's 1/w plane is exactly 1
-    /// (bit 0 of `SpanCall::ones`, [`crate::Planes::is_one`]: then `1 / 1` is 1
+    /// (bit 0 of `SpanPlanes::ones`, [`crate::Planes::is_one`]: then `1 / 1` is 1
     /// and `v · 1` is `v`) the planes' values are taken as they are: the
     /// same bits without the division and the multiplies (the `fill`
     /// frame's groups: 11 instructions fewer of 66).
