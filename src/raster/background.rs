@@ -50,11 +50,6 @@ pub struct Background {
 }
 
 impl Background {
-    /// Whether a flush is in flight (the context's framebuffer is hollow).
-    pub fn busy(&self) -> bool {
-        self.inflight.is_some()
-    }
-
     /// Waits for the flush in flight, if any, and puts its framebuffer
     /// back into `fb`. Returns that flush's first error; a panic in it is
     /// raised again here.

@@ -344,18 +344,19 @@ impl Scene {
         }
     }
 
-    /// Bytes past which a draw flushes (unless set, to at most
-    /// `MOST_BYTES`, 1 GiB: [`SCENE_BOUND`]).
+    /// Bytes past which a draw flushes (unless set: [`SCENE_BOUND`]).
     pub fn bound(&self) -> usize {
         match self.bound {
             0 => SCENE_BOUND,
-            set => set.min(MOST_BYTES),
+            set => set,
         }
     }
 
-    /// Sets the bytes past which a draw flushes (0: [`Self::bound`]'s default).
+    /// Sets the bytes past which a draw flushes (0: [`Self::bound`]'s
+    /// default), at most `MOST_BYTES` (1 GiB), so that the checked-per-
+    /// primitive bound needs no clamp.
     pub fn set_bound(&mut self, bytes: usize) {
-        self.bound = bytes;
+        self.bound = bytes.min(MOST_BYTES);
     }
 
     /// The most bytes held at once since the scene was made, and the flushes run.
