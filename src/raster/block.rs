@@ -30,9 +30,10 @@
 //! Classifying the 4×4 blocks of a 16×16 one branch-free, as bit masks,
 //! took 2000-px triangles from 3.3x to 1.4–2x the row loop's time.
 
-use super::edges::Edges;
+use super::edges::{Edge, Edges};
 use super::ONE;
 use crate::framebuffer::Rect;
+use wide::i32x4;
 
 /// Side of a tile in pixels.
 pub const TILE: u32 = 64;
@@ -112,9 +113,11 @@ type Live = u8;
 
 /// Bit `l` set for the cells `(l % 4, l / 4)` of a 4×4 grid within the
 /// inclusive ranges `i` and `j`.
+#[inline(always)]
 fn grid_mask(i: (u32, u32), j: (u32, u32)) -> u32 {
     let row = (0xf >> (3 - (i.1 - i.0))) << i.0;
-    (j.0..=j.1).fold(0, |m, sj| m | row << (4 * sj))
+    // The row repeated in rows j.0..=j.1 (a product of nibbles: no carry).
+    row * ((0x1111 >> (4 * (3 - (j.1 - j.0)))) << (4 * j.0))
 }
 
 /// The pixels of the tile `tile` (at most 64×64) that the triangle of `edges`
@@ -136,11 +139,54 @@ pub fn tile_coverage(edges: &Edges, tile: Rect, clip: Rect) -> TileMask {
     if lo_x >= hi_x || lo_y >= hi_y {
         return mask;
     }
-    let (cx0, cx1, cy0, cy1) = (lo_x as u32, hi_x as u32, lo_y as u32, hi_y as u32);
+    let area = Area::new((lo_x as u32, hi_x as u32), (lo_y as u32, hi_y as u32));
+    cover(&edges.edges, (ox, oy), &area, &mut mask.rows);
+    // (`cover` may set bits in rows outside the area.)
+    for (j, r) in mask.rows.iter_mut().enumerate() {
+        if !(area.y.0..area.y.1).contains(&(j as u32)) {
+            *r = 0;
+        }
+    }
+    mask
+}
 
-    let mut steps = [Step::default(); 3];
+/// The pixels to decide, relative to a tile: columns `x.0..x.1` (as the
+/// mask `cols`) of rows `y.0..y.1`. Blocks may reach past it; their bits
+/// outside are never set.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Area {
+    cols: u64,
+    x: (u32, u32),
+    y: (u32, u32),
+}
+
+impl Area {
+    /// The half-open, non-empty ranges `x` and `y` within `0..TILE`.
+    #[inline]
+    pub(crate) fn new(x: (u32, u32), y: (u32, u32)) -> Area {
+        debug_assert!(x.0 < x.1 && x.1 <= TILE && y.0 < y.1 && y.1 <= TILE);
+        Area {
+            cols: (u64::MAX >> (64 - (x.1 - x.0))) << x.0,
+            x,
+            y,
+        }
+    }
+}
+
+/// Sets the bits (in `rows`, as [`TileMask::rows`]) of the pixels of `area`
+/// of the tile whose lower-left pixel is `origin` that the counter-clockwise
+/// triangle of `edges` covers. Bits of the area's columns in rows outside
+/// it may be set too (a 4×4 block's four rows are written together): only
+/// the area's rows are to be read. `false` when no pixel of the area may be
+/// inside (nothing set).
+#[inline]
+pub(crate) fn cover(edges: &[Edge; 3], (ox, oy): (i64, i64), area: &Area, rows: &mut [u64; 64]) -> bool {
+    let (cx0, cx1, cy0, cy1) = (area.x.0, area.x.1, area.y.0, area.y.1);
+    let mut origin = [0i128; 3];
     let mut live: Live = 0;
-    for (n, e) in edges.edges.iter().enumerate() {
+    // The narrow form holds while every live edge's |dx| + |dy| is below this.
+    let mut narrow = true;
+    for (n, e) in edges.iter().enumerate() {
         let (sx, sy) = (-e.dy * ONE, e.dx * ONE);
         let w = i128::from;
         let c0 = w(e.dx) * w(oy * ONE - e.a.1) - w(e.dy) * w(ox * ONE - e.a.0) - w(e.k);
@@ -150,27 +196,221 @@ pub fn tile_coverage(edges: &Edges, tile: Rect, clip: Rect) -> TileMask {
         let least = c0 + w(ax.min(bx) + ay.min(by));
         let most = c0 + w(ax.max(bx) + ay.max(by));
         if most < 0 {
-            return mask;
+            return false;
         }
         if least < 0 {
-            // Both signs occur over the rectangle, so c0 is small (module docs).
-            steps[n] = Step::new(c0 as i64, sx, sy);
+            origin[n] = c0;
             live |= 1 << n;
+            narrow &= e.dx.abs() + e.dy.abs() < NARROW;
+        }
+    }
+    if live == 0 {
+        // Every edge accepts the whole area.
+        fill(rows, area, cy0, cy1 - cy0, u64::MAX);
+    } else if narrow {
+        Narrow::new(edges, origin, live).cover(area, rows);
+    } else {
+        let mut steps = [Step::default(); 3];
+        for (n, e) in edges.iter().enumerate().filter(|&(n, _)| live >> n & 1 == 1) {
+            // Both signs occur over the area, so c0 is small (module docs).
+            steps[n] = Step::new(origin[n] as i64, -e.dy * ONE, e.dx * ONE);
+        }
+        wide(&steps, live, area, rows);
+    }
+    true
+}
+
+/// Below this `|dx| + |dy|` (2^24 units, 65536 pixels: every edge of a
+/// triangle within the largest viewport, 16384 pixels) a live edge's
+/// values over a tile fit in i32 ([`Narrow`]).
+const NARROW: i64 = 1 << 24;
+
+/// The live edges of a tile in i32. A pixel centre is inside an edge when
+/// `E − k >= 0`; at pixel `(i, j)` of the tile `E − k = c0 + ONE·(i·a + j·b)`
+/// with `a = −dy`, `b = dx`, so it is inside exactly when
+/// `floor(c0 / ONE) + i·a + j·b >= 0`: the sub-pixel bits drop out of the
+/// steps. A live edge has both signs over the tile, so that value is within
+/// `±126·(|a| + |b|)` everywhere in it: below 2^31 when `|a| + |b| < 2^24`.
+/// Sixteen values (a 4×4 grid of pixels or of blocks) are tested at once,
+/// four lanes a vector, their signs gathered into a mask ([`grid_bits`]).
+struct Narrow {
+    live: Live,
+    /// `floor(c0 / ONE)` at the tile's lower-left pixel, and the steps.
+    q: [i32; 3],
+    a: [i32; 3],
+    b: [i32; 3],
+    /// A 4×4 grid's offsets from its first cell, for cells of a pixel and
+    /// of 4×4 pixels: lane `l` is `(l % 4)·a·w + (l / 4)·b·w`.
+    px: [Grid; 3],
+    b4: [Grid; 3],
+    /// The least and greatest offset from a 4×4 (`[0]`) and a 16×16 (`[1]`)
+    /// block's lower-left pixel over its pixels.
+    lo: [[i32; 3]; 2],
+    hi: [[i32; 3]; 2],
+}
+
+/// Sixteen lanes: a 4×4 grid, row by row.
+type Grid = [i32x4; 4];
+
+/// Bits `4·f .. 4·f + 4` set for each bit `f` of a nibble: a strip's full
+/// 4×4 blocks as the columns of its rows.
+const NIBBLE_COLUMNS: [u64; 16] = {
+    let mut t = [0; 16];
+    let mut n = 0;
+    while n < 16 {
+        let mut f = 0;
+        while f < 4 {
+            if n >> f & 1 == 1 {
+                t[n] |= 0xf << (4 * f);
+            }
+            f += 1;
+        }
+        n += 1;
+    }
+    t
+};
+
+impl Narrow {
+    #[inline(always)]
+    fn new(edges: &[Edge; 3], origin: [i128; 3], live: Live) -> Narrow {
+        let zero = [i32x4::ZERO; 4];
+        let mut n = Narrow {
+            live,
+            q: [0; 3],
+            a: [0; 3],
+            b: [0; 3],
+            px: [zero; 3],
+            b4: [zero; 3],
+            lo: [[0; 3]; 2],
+            hi: [[0; 3]; 2],
+        };
+        for (e, edge) in edges.iter().enumerate().filter(|&(e, _)| live >> e & 1 == 1) {
+            // Both in i32: |dx| + |dy| < NARROW.
+            let (a, b) = (-edge.dy as i32, edge.dx as i32);
+            (n.q[e], n.a[e], n.b[e]) = ((origin[e] >> super::SUBPIXEL_BITS) as i32, a, b);
+            let row = i32x4::new([0, a, 2 * a, 3 * a]);
+            let px: Grid = [0, 1, 2, 3].map(|j| row + i32x4::splat(j * b));
+            n.px[e] = px;
+            n.b4[e] = px.map(|v| v << 2);
+            for (s, w) in [(0, 3), (1, 15)] {
+                n.lo[s][e] = (w * a).min(0) + (w * b).min(0);
+                n.hi[s][e] = (w * a).max(0) + (w * b).max(0);
+            }
+        }
+        n
+    }
+
+    /// The tile's 16×16 blocks, each edge on its own: the blocks an edge
+    /// rejects cost nothing more, those every edge accepts set their bits,
+    /// and the rest are split ([`Narrow::block16`]) with only the edges
+    /// that do not accept all of them.
+    #[inline]
+    fn cover(&self, area: &Area, rows: &mut [u64; 64]) {
+        let mut any = grid_mask((area.x.0 / 16, (area.x.1 - 1) / 16), (area.y.0 / 16, (area.y.1 - 1) / 16));
+        let mut full = [0xffff; 3];
+        for e in (0..3).filter(|&e| self.live >> e & 1 == 1) {
+            let b16 = self.b4[e].map(|v| v << 2);
+            any &= grid_bits([self.q[e] + self.hi[1][e]], [&b16]);
+            full[e] = grid_bits([self.q[e] + self.lo[1][e]], [&b16]);
+        }
+        let mut f = any & full[0] & full[1] & full[2];
+        let mut p = any & !f;
+        while f != 0 {
+            let l = f.trailing_zeros();
+            f &= f - 1;
+            fill(rows, area, l / 4 * 16, 16, 0xffff << (l % 4 * 16));
+        }
+        while p != 0 {
+            let l = p.trailing_zeros();
+            p &= p - 1;
+            let (i, j) = (l % 4 * 16, l / 4 * 16);
+            // The edges that do not accept the whole block.
+            let split = (0..3).fold(0, |s, e| s | (!full[e] >> l & 1) << e);
+            match split {
+                1 => self.block16([0], area, rows, i, j),
+                2 => self.block16([1], area, rows, i, j),
+                4 => self.block16([2], area, rows, i, j),
+                3 => self.block16([0, 1], area, rows, i, j),
+                5 => self.block16([0, 2], area, rows, i, j),
+                6 => self.block16([1, 2], area, rows, i, j),
+                _ => self.block16([0, 1, 2], area, rows, i, j),
+            }
         }
     }
 
-    let area = Area {
-        cols: (u64::MAX >> (64 - (cx1 - cx0))) << cx0,
-        x: (cx0, cx1),
-        y: (cy0, cy1),
-    };
-    if live == 0 {
-        // Every edge accepts the whole rectangle.
-        fill(&mut mask.rows, &area, cy0, cy1 - cy0, u64::MAX);
-        return mask;
+    /// A partial 16×16 block at `(i, j)` of the tile, tested against the
+    /// edges `es`: its 4×4 blocks classified together (the full ones set a
+    /// strip at a time), then the partial ones evaluated per pixel.
+    #[inline(always)]
+    fn block16<const N: usize>(&self, es: [usize; N], area: &Area, rows: &mut [u64; 64], i: u32, j: u32) {
+        let c = es.map(|e| self.q[e] + i as i32 * self.a[e] + j as i32 * self.b[e]);
+        let b4 = es.map(|e| &self.b4[e]);
+        // The 4x4 blocks that meet the area (all, mostly).
+        let within = i >= area.x.0 && i + 16 <= area.x.1 && j >= area.y.0 && j + 16 <= area.y.1;
+        let (meet, sj0, sj1) = if within {
+            (0xffff, 0, 3)
+        } else {
+            let (si0, si1) = ((i.max(area.x.0) - i) / 4, ((i + 16).min(area.x.1) - 1 - i) / 4);
+            let (sj0, sj1) = ((j.max(area.y.0) - j) / 4, ((j + 16).min(area.y.1) - 1 - j) / 4);
+            (grid_mask((si0, si1), (sj0, sj1)), sj0, sj1)
+        };
+        let any = grid_bits(add(c, es.map(|e| self.hi[0][e])), b4) & meet;
+        let full = grid_bits(add(c, es.map(|e| self.lo[0][e])), b4) & any;
+        for s in sj0..=sj1 {
+            let f = full >> (4 * s) & 0xf;
+            if f != 0 {
+                fill(rows, area, j + 4 * s, 4, NIBBLE_COLUMNS[f as usize] << i);
+            }
+        }
+        let mut p = any & !full;
+        let px = es.map(|e| &self.px[e]);
+        let c16 = c;
+        while p != 0 {
+            let l = p.trailing_zeros();
+            p &= p - 1;
+            let mut c = c16;
+            for (c, &e) in c.iter_mut().zip(&es) {
+                *c += self.b4[e][l as usize / 4].to_array()[l as usize % 4];
+            }
+            let bits = u64::from(grid_bits(c, px));
+            // All four rows: those outside the area are not read (`cover`).
+            let (i, j) = ((i + l % 4 * 4) as usize, (j + l / 4 * 4) as usize);
+            for (r, row) in rows[j..j + 4].iter_mut().enumerate() {
+                *row |= (bits >> (4 * r) & 0xf) << i & area.cols;
+            }
+        }
     }
-    // The tile's 16x16 blocks, classified together as the 4x4 blocks of a
-    // 16x16 one are (block16).
+}
+
+#[inline(always)]
+fn add<const N: usize>(a: [i32; N], b: [i32; N]) -> [i32; N] {
+    let mut s = a;
+    for (s, b) in s.iter_mut().zip(b) {
+        *s += b;
+    }
+    s
+}
+
+/// Bit `l` set when every edge's `c[e] + off[e]`'s lane `l` is `>= 0` (no
+/// sign bit in their or).
+#[inline(always)]
+fn grid_bits<const N: usize>(c: [i32; N], off: [&Grid; N]) -> u32 {
+    let c = c.map(i32x4::splat);
+    let lanes = |k: usize| {
+        let mut v = c[0] + off[0][k];
+        for e in 1..N {
+            v |= c[e] + off[e][k];
+        }
+        v.to_bitmask() as u32
+    };
+    !(lanes(0) | lanes(1) << 4 | lanes(2) << 8 | lanes(3) << 12) & 0xffff
+}
+
+/// The general form, in i64, for live edges too long for [`Narrow`]: the
+/// tile's 16×16 blocks classified together as the 4×4 blocks of a 16×16 one
+/// are ([`block16`]).
+fn wide(steps: &[Step; 3], live: Live, area: &Area, rows: &mut [u64; 64]) {
+    let (cx0, cx1, cy0, cy1) = (area.x.0, area.x.1, area.y.0, area.y.1);
     let meet = grid_mask((cx0 / 16, (cx1 - 1) / 16), (cy0 / 16, (cy1 - 1) / 16));
     let (mut any, mut full) = (meet, meet);
     for (e, s) in steps.iter().enumerate() {
@@ -183,24 +423,14 @@ pub fn tile_coverage(edges: &Edges, tile: Rect, clip: Rect) -> TileMask {
     while f != 0 {
         let l = f.trailing_zeros();
         f &= f - 1;
-        fill(&mut mask.rows, &area, l / 4 * 16, 16, 0xffff << (l % 4 * 16));
+        fill(rows, area, l / 4 * 16, 16, 0xffff << (l % 4 * 16));
     }
     let mut p = any & !full;
     while p != 0 {
         let l = p.trailing_zeros();
         p &= p - 1;
-        block16(&steps, live, &mut mask.rows, &area, l % 4 * 16, l / 4 * 16);
+        block16(steps, live, rows, area, l % 4 * 16, l / 4 * 16);
     }
-    mask
-}
-
-/// The pixels to decide, relative to the tile: columns `x.0..x.1` (as the
-/// mask `cols`) of rows `y.0..y.1`. Blocks may reach past it; their bits
-/// outside are never set.
-struct Area {
-    cols: u64,
-    x: (u32, u32),
-    y: (u32, u32),
 }
 
 /// Sets `bits` (within the area) in `n` rows from row `j`.

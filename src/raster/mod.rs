@@ -13,12 +13,14 @@ mod edges;
 mod line;
 mod point;
 pub mod pool;
+mod rows;
 pub mod scene;
 mod triangle;
 
 pub use block::{tile_coverage, TileMask, TILE};
 pub use edges::{Edge, Edges};
 pub use line::line;
+pub use rows::row_coverage;
 pub use point::point;
 pub use triangle::{offset, triangle, triangle_box};
 

@@ -49,18 +49,30 @@ fn intersect(a: Rect, b: Rect) -> Rect {
     }
 }
 
-/// The row rasterizer's coverage of `tile` within `clip`, from the snapped points `p`.
+/// The row rasterizer's coverage of `tile` within `clip`, from the snapped
+/// points `p`: the oracle.
 fn oracle(p: [(i64, i64); 3], tile: Rect, clip: Rect) -> TileMask {
+    super::super::row_coverage(p, tile, clip)
+}
+
+/// What the render path emits for `tile` within `clip`: the triangle set
+/// up within the bounds `clip` (a framebuffer's, many tiles wide) and
+/// rasterized at once ([`cover`]), its spans cut to the tile.
+fn render(p: [(i64, i64); 3], tile: Rect, clip: Rect) -> TileMask {
     let v = vertex(0.0, 0.0, 1024);
     let mut m = TileMask::empty(tile.x0, tile.y0);
-    let mut sink = |s: &FragmentSpan| add_span(&mut m, tile, s);
-    cover(
-        (p, None),
-        [&v; 3],
-        None,
-        &params(intersect(tile, clip), 1024),
-        &mut sink,
-    );
+    let mut sink = |s: &FragmentSpan| {
+        let mut cut = FragmentSpan::new(s.x, s.y);
+        (cut.len, cut.mask) = (s.len, s.mask);
+        for b in 0..s.len {
+            let x = s.x + b;
+            if x < tile.x0 || x >= tile.x1 || s.y < tile.y0 || s.y >= tile.y1 {
+                cut.mask &= !(1 << b);
+            }
+        }
+        add_span(&mut m, tile, &cut)
+    };
+    cover((p, None), [&v; 3], None, &params(clip, 1024), &mut sink);
     m
 }
 
@@ -131,12 +143,21 @@ fn show(m: &TileMask) -> String {
         .collect()
 }
 
+/// Block coverage (one tile, and the render path over many) against the
+/// row rasterizer's.
 fn check(p: [(i64, i64); 3], tile: Rect, clip: Rect) -> TileMask {
     let (b, o) = (block(p, tile, clip), oracle(p, tile, clip));
     assert!(
         b == o,
         "p = {p:?}, tile {tile:?}, clip {clip:?}\nblock:\n{}oracle:\n{}",
         show(&b),
+        show(&o)
+    );
+    let r = render(p, tile, clip);
+    assert!(
+        r == o,
+        "p = {p:?}, tile {tile:?}, clip {clip:?}\nrender path:\n{}oracle:\n{}",
+        show(&r),
         show(&o)
     );
     b
@@ -390,6 +411,33 @@ proptest! {
         // One vertex near the tile, so that edges cross it.
         p[which] = (i64::from(tx * 64 + 32) * ONE + i64::from(near.0), i64::from(ty * 64 + 32) * ONE + i64::from(near.1));
         prop_assert_eq!(block(p, t, t), brute(p, t, t));
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+    /// Edges just inside the i32 form's limit (`|dx| + |dy|` up to
+    /// 2^24 − 2 units, 65535 pixels) and just past it: block coverage and
+    /// the render path == per-pixel i128.
+    #[test]
+    fn block_exact_at_narrow_limit(
+        (tx, ty) in (0..64u32, 0..64u32),
+        far in any::<[(i32, i32); 2]>(),
+        near in any::<(i16, i16)>(),
+        past in any::<bool>(),
+    ) {
+        let t = tile_rect(tx, ty);
+        let reach = (1i64 << 23) - 1 + i64::from(past) * 4;
+        let a = (i64::from(tx * 64 + 32) * ONE + i64::from(near.0), i64::from(ty * 64 + 32) * ONE + i64::from(near.1));
+        let p = [
+            a,
+            (a.0 + i64::from(far[0].0) % reach, a.1 + i64::from(far[0].1) % reach),
+            (a.0 + i64::from(far[1].0) % reach, a.1 + i64::from(far[1].1) % reach),
+        ];
+        let want = brute(p, t, t);
+        prop_assert_eq!(block(p, t, t), want);
+        prop_assert_eq!(prepared(p, t, t), want);
     }
 }
 
