@@ -1,7 +1,8 @@
 //! Coverage of one 64x64 tile: the block rasterizer (`Edges::window` +
-//! `tile_coverage`, a mask) against the row rasterizer (`triangle` with the
-//! tile as bounds, into a sink that drops the spans; it also sets up the 1/w
-//! plane, as the tile loop does today), on (a) a triangle covering the whole
+//! `tile_coverage`, a mask) against the row rasterizer it replaced
+//! (`row_coverage` of the same snapped points, a mask), and the render
+//! path's whole triangle (`triangle` with the tile as bounds, into a sink
+//! that drops the spans; it also sets up the 1/w plane), on (a) a triangle covering the whole
 //! tile, (b) random ~2000-pixel triangles and (c) random ~20-pixel triangles
 //! centred in the tile. Throughput is in covered pixels; time per
 //! tile-triangle is the time of an iteration over the triangle count.
@@ -9,7 +10,7 @@
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use softgl::framebuffer::Rect;
 use softgl::geometry::varying::{VaryingLayout, MAX_VARYINGS};
-use softgl::raster::{tile_coverage, triangle, Edges, RasterParams, RasterVertex, SpanSink};
+use softgl::raster::{row_coverage, tile_coverage, triangle, Edges, RasterParams, RasterVertex, SpanSink};
 use softgl_jit::shade::Planes;
 use softgl_jit::FragmentSpan;
 
@@ -110,8 +111,16 @@ fn bench(c: &mut Criterion) {
                 }
             })
         });
-        let mut sink = Null(Box::default());
         group.bench_function(format!("{name}/rows"), |b| {
+            b.iter(|| {
+                for t in tris {
+                    let p = Edges::window_points([&t[0], &t[1], &t[2]], HEIGHT);
+                    black_box(row_coverage(p, TILE, TILE));
+                }
+            })
+        });
+        let mut sink = Null(Box::default());
+        group.bench_function(format!("{name}/triangle"), |b| {
             b.iter(|| {
                 for t in tris {
                     triangle([&t[0], &t[1], &t[2]], None, &params, &mut sink);

@@ -1,34 +1,40 @@
 //! The block rasterizer: a triangle's coverage of one 64×64 tile as row
 //! masks, found hierarchically from the same [`Edges`] the row rasterizer
-//! (`triangle::cover`, the oracle) walks, with the same exact test per pixel.
+//! (`rows::row_coverage`, the oracle) walks, with the same exact test per
+//! pixel. It is what a flush's tiles find their triangles' pixels with
+//! (`triangle::Prepared::cover`, for a triangle whose pixels were not all
+//! decided when it was set up); each covered row becomes one span with its
+//! mask for the specialist (a triangle's pixels in a row are one run).
 //!
-//! The tile's 16×16 blocks are classified against each edge from the edge
-//! function at a corner and its extreme over the block: rejected blocks cost
-//! nothing more, fully covered ones set their bits without a per-pixel test,
-//! and partial ones are split into 4×4 blocks, classified the same way; only
-//! partial 4×4 blocks are evaluated per pixel (16 values per edge, each the
-//! corner's value plus a precomputed step). An edge that accepts all of a
-//! block is not tested inside it.
+//! The tile is classified against each edge at its corners first: a tile
+//! no pixel of which is inside costs nothing more, one wholly inside sets
+//! its rows. Otherwise its 16×16 blocks are classified against each edge
+//! that does not accept the whole tile, from the edge function at a corner
+//! and its extreme over the block: rejected blocks cost nothing more, fully
+//! covered ones set their bits without a per-pixel test, and partial ones
+//! are split into 4×4 blocks, classified the same way against the edges
+//! that do not accept the whole 16×16 block; only partial 4×4 blocks are
+//! evaluated per pixel.
 //!
-//! Exactness: snapped coordinates are within ±2^40 (`snap`), so an edge
-//! function can reach 2^82; its value at the tile's origin is computed in
-//! i128 once per edge and tile. An edge kept for the tile has both signs of
-//! `E − k` on it, so `|E − k| ≤ 63·(|dx| + |dy|)·ONE + 1 < 2^57` at the
-//! origin and everywhere inside: all later sums are exact in i64. (The row
-//! rasterizer's i64 products overflow past about ±2^30 units, 4M pixels;
-//! clipping keeps window coordinates within the viewport, far below.)
+//! Exactness: an edge's value at the tile's origin is computed in i128
+//! (snapped coordinates are within ±2^40, so it can reach 2^82). An edge
+//! kept for the tile has both signs over it, so its values there are small.
+//! Edges shorter than 2^24 units (every edge within the largest viewport)
+//! are tested in i32 with the sub-pixel bits divided out ([`Narrow`]),
+//! sixteen values at once in four `wide::i32x4` lanes; longer ones in i64
+//! (`wide`, the exact general form, tested at the snap limits).
 //!
-//! Speed (`cargo bench -p softgl --bench raster`, 2 shared cores, two runs,
-//! medians; per tile-triangle, then per covered pixel), block vs rows:
-//! a triangle covering the tile 159–167 ns vs 0.73–0.83 µs (0.04 vs
-//! 0.18–0.20 ns/px); random 2000-px triangles (1192 px in the tile on
-//! average) 1.39–1.66 µs vs 0.67–0.72 µs (1.2–1.4 vs 0.56–0.60 ns/px);
-//! 20-px triangles 359–426 ns vs 209–223 ns (19–22 vs 11–12 ns/px). Full
-//! blocks pay off 5x; partial ones cost about 2x the row loop's divisions
-//! still: the i64 lanes of the 4×4 tests (SSE2 has no 64-bit compare) are
-//! the next thing to narrow (i32 is exact when both steps are below 2^27).
-//! Classifying the 4×4 blocks of a 16×16 one branch-free, as bit masks,
-//! took 2000-px triangles from 3.3x to 1.4–2x the row loop's time.
+//! Speed: the hierarchy pays where blocks are whole; where a tile is crossed
+//! by edges, finding runs of a row by walking each edge (the row
+//! rasterizer: about 12 instructions a row) is cheaper than testing blocks.
+//! Measured with callgrind, one thread, instructions a frame of
+//! `osmesa/bench/fill.c` against the row rasterizer: tris 626 M → 655 M,
+//! ops 857 M → 891 M, thrash 78.6 M → 82.9 M; in time (medians of 5
+//! interleaved runs, 2 shared cores) tris 1.20x and tex 1.08x the row
+//! rasterizer's at one thread. (The i64 form with scalar lanes cost 722 M on
+//! tris; the i32 form made 4x4 tests 20 instructions.) Evaluating a partial
+//! 16×16 block's rows sixteen pixels at a time instead of its 4×4 blocks
+//! cost more (tris 1.25x and 1.30x).
 
 use super::edges::{Edge, Edges};
 use super::ONE;
@@ -122,7 +128,8 @@ fn grid_mask(i: (u32, u32), j: (u32, u32)) -> u32 {
 
 /// The pixels of the tile `tile` (at most 64×64) that the triangle of `edges`
 /// covers, within `clip` (the tile is usually intersected with the raster
-/// bounds): exactly the pixels `triangle::cover` emits with those bounds.
+/// bounds): exactly the pixels the row rasterizer finds
+/// ([`super::row_coverage`]).
 pub fn tile_coverage(edges: &Edges, tile: Rect, clip: Rect) -> TileMask {
     debug_assert!(
         tile.x1 - tile.x0 <= TILE && tile.y1 - tile.y0 <= TILE,
@@ -151,8 +158,8 @@ pub fn tile_coverage(edges: &Edges, tile: Rect, clip: Rect) -> TileMask {
 }
 
 /// The pixels to decide, relative to a tile: columns `x.0..x.1` (as the
-/// mask `cols`) of rows `y.0..y.1`. Blocks may reach past it; their bits
-/// outside are never set.
+/// mask `cols`) of rows `y.0..y.1`. Blocks may reach past it; no bit
+/// outside its columns is set (rows outside it are not read).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Area {
     cols: u64,
@@ -306,7 +313,10 @@ impl Narrow {
     /// that do not accept all of them.
     #[inline]
     fn cover(&self, area: &Area, rows: &mut [u64; 64]) {
-        let mut any = grid_mask((area.x.0 / 16, (area.x.1 - 1) / 16), (area.y.0 / 16, (area.y.1 - 1) / 16));
+        let mut any = grid_mask(
+            (area.x.0 / 16, (area.x.1 - 1) / 16),
+            (area.y.0 / 16, (area.y.1 - 1) / 16),
+        );
         let mut full = [0xffff; 3];
         for e in (0..3).filter(|&e| self.live >> e & 1 == 1) {
             let b16 = self.b4[e].map(|v| v << 2);
@@ -363,20 +373,28 @@ impl Narrow {
             }
         }
         let mut p = any & !full;
+        if p == 0 {
+            return;
+        }
         let px = es.map(|e| &self.px[e]);
-        let c16 = c;
-        while p != 0 {
-            let l = p.trailing_zeros();
-            p &= p - 1;
-            let mut c = c16;
-            for (c, &e) in c.iter_mut().zip(&es) {
-                *c += self.b4[e][l as usize / 4].to_array()[l as usize % 4];
+        // Each 4x4 block's first pixel's values, lane by lane.
+        let corners: [[i32; 16]; N] = std::array::from_fn(|k| {
+            let (c, b4) = (i32x4::splat(c[k]), &self.b4[es[k]]);
+            let mut out = [0; 16];
+            for (q, v) in b4.iter().enumerate() {
+                out[4 * q..4 * q + 4].copy_from_slice(&(c + *v).to_array());
             }
-            let bits = u64::from(grid_bits(c, px));
+            out
+        });
+        while p != 0 {
+            let l = p.trailing_zeros() as usize;
+            p &= p - 1;
+            let bits = u64::from(grid_bits(corners.map(|c| c[l]), px));
             // All four rows: those outside the area are not read (`cover`).
-            let (i, j) = ((i + l % 4 * 4) as usize, (j + l / 4 * 4) as usize);
+            let (i, j) = (i as usize + l % 4 * 4, (j as usize + l / 4 * 4) & 60);
+            let cols = area.cols >> i;
             for (r, row) in rows[j..j + 4].iter_mut().enumerate() {
-                *row |= (bits >> (4 * r) & 0xf) << i & area.cols;
+                *row |= (bits >> (4 * r) & 0xf & cols) << i;
             }
         }
     }
@@ -401,7 +419,7 @@ fn grid_bits<const N: usize>(c: [i32; N], off: [&Grid; N]) -> u32 {
         for e in 1..N {
             v |= c[e] + off[e][k];
         }
-        v.to_bitmask() as u32
+        v.to_bitmask()
     };
     !(lanes(0) | lanes(1) << 4 | lanes(2) << 8 | lanes(3) << 12) & 0xffff
 }

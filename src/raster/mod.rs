@@ -20,8 +20,8 @@ mod triangle;
 pub use block::{tile_coverage, TileMask, TILE};
 pub use edges::{Edge, Edges};
 pub use line::line;
-pub use rows::row_coverage;
 pub use point::point;
+pub use rows::row_coverage;
 pub use triangle::{offset, triangle, triangle_box};
 
 use crate::framebuffer::Rect;

@@ -1,15 +1,16 @@
 //! Triangles: exact fixed-point edge functions, one span interval per row.
 //!
-//! Within a box (a tile of a flush), `cover` first classifies the box
-//! against the edges at its corners: a box no pixel is in costs nothing more
-//! (no plane set-up, no row); a box wholly inside needs no edge per row.
-//! Otherwise each edge that is not horizontal is walked from row to row as
-//! an exact quotient and remainder (no 64-bit division per row), and the
-//! horizontal ones bound the rows once. Rows with nothing but planes go to
-//! the sink as headers ([`SpanSink::row`]). Measured with callgrind, one
-//! thread, instructions per frame of `osmesa/bench/fill.c` (with the plane
-//! set-up taking the snapped points it is given): tris 939 M → 843 M, ops
-//! 1596 M → 1501 M, fill 415 M → 381 M, the images byte-identical.
+//! Within a box (a tile of a flush), `cover` finds the triangle's pixels
+//! with the block rasterizer ([`super::block`]): a tile no pixel is in
+//! costs nothing more (no plane set-up, no row), a tile wholly inside needs
+//! no test per pixel, and the rest is decided by 16×16 and 4×4 blocks. Each
+//! row with pixels is one run, handed to the sink with nothing but planes
+//! ([`SpanSink::row`]). Until then the rows were found by walking each edge
+//! from row to row ([`super::rows`], kept as the block rasterizer's oracle):
+//! measured with callgrind, one thread, instructions per frame of
+//! `osmesa/bench/fill.c` (with the plane set-up taking the snapped points
+//! it is given), that walk took tris 939 M → 843 M, ops 1596 M → 1501 M,
+//! fill 415 M → 381 M against a division per row.
 //!
 //! A triangle is set up once ([`Prepared`]; a scene does it when it
 //! records the triangle): its snapped vertices made counter-clockwise, its
@@ -19,7 +20,7 @@
 //! two). A triangle no pixel of which is inside goes no further (no planes,
 //! no bin entry). A tile then only cuts that coverage to itself and finds
 //! its rows (the mask's bytes, the box's rows when every pixel is inside,
-//! else the row walk below); the scene records the planes
+//! else the block rasterizer's masks); the scene records the planes
 //! ([`setup_planes`]) rather than the vertices, so nothing is snapped or set
 //! up twice. Measured with callgrind, one thread, instructions a frame of
 //! `lit16` (1.6 M triangles): 5317 M → 2936 M (3323 → 1835 a triangle;
