@@ -355,15 +355,10 @@ impl Narrow {
     fn block16<const N: usize>(&self, es: [usize; N], area: &Area, rows: &mut [u64; 64], i: u32, j: u32) {
         let c = es.map(|e| self.q[e] + i as i32 * self.a[e] + j as i32 * self.b[e]);
         let b4 = es.map(|e| &self.b4[e]);
-        // The 4x4 blocks that meet the area (all, mostly).
-        let within = i >= area.x.0 && i + 16 <= area.x.1 && j >= area.y.0 && j + 16 <= area.y.1;
-        let (meet, sj0, sj1) = if within {
-            (0xffff, 0, 3)
-        } else {
-            let (si0, si1) = ((i.max(area.x.0) - i) / 4, ((i + 16).min(area.x.1) - 1 - i) / 4);
-            let (sj0, sj1) = ((j.max(area.y.0) - j) / 4, ((j + 16).min(area.y.1) - 1 - j) / 4);
-            (grid_mask((si0, si1), (sj0, sj1)), sj0, sj1)
-        };
+        // The 4x4 blocks that meet the area.
+        let (si0, si1) = ((i.max(area.x.0) - i) / 4, ((i + 16).min(area.x.1) - 1 - i) / 4);
+        let (sj0, sj1) = ((j.max(area.y.0) - j) / 4, ((j + 16).min(area.y.1) - 1 - j) / 4);
+        let meet = grid_mask((si0, si1), (sj0, sj1));
         let any = grid_bits(add(c, es.map(|e| self.hi[0][e])), b4) & meet;
         let full = grid_bits(add(c, es.map(|e| self.lo[0][e])), b4) & any;
         for s in sj0..=sj1 {
@@ -377,19 +372,18 @@ impl Narrow {
             return;
         }
         let px = es.map(|e| &self.px[e]);
-        // Each 4x4 block's first pixel's values, lane by lane.
-        let corners: [[i32; 16]; N] = std::array::from_fn(|k| {
-            let (c, b4) = (i32x4::splat(c[k]), &self.b4[es[k]]);
-            let mut out = [0; 16];
-            for (q, v) in b4.iter().enumerate() {
-                out[4 * q..4 * q + 4].copy_from_slice(&(c + *v).to_array());
-            }
-            out
-        });
+        let (a4, b4) = (es.map(|e| 4 * self.a[e]), es.map(|e| 4 * self.b[e]));
         while p != 0 {
             let l = p.trailing_zeros() as usize;
             p &= p - 1;
-            let bits = u64::from(grid_bits(corners.map(|c| c[l]), px));
+            // The block's first pixel's values, in registers (read back
+            // from a lane in memory, a splat stalled on store forwarding).
+            let (u, v) = ((l % 4) as i32, (l / 4) as i32);
+            let mut corner = c;
+            for k in 0..N {
+                corner[k] += u * a4[k] + v * b4[k];
+            }
+            let bits = u64::from(grid_bits(corner, px));
             // All four rows: those outside the area are not read (`cover`).
             let (i, j) = (i as usize + l % 4 * 4, (j as usize + l / 4 * 4) & 60);
             let cols = area.cols >> i;
@@ -413,15 +407,16 @@ fn add<const N: usize>(a: [i32; N], b: [i32; N]) -> [i32; N] {
 /// sign bit in their or).
 #[inline(always)]
 fn grid_bits<const N: usize>(c: [i32; N], off: [&Grid; N]) -> u32 {
-    let c = c.map(i32x4::splat);
-    let lanes = |k: usize| {
-        let mut v = c[0] + off[0][k];
-        for e in 1..N {
-            v |= c[e] + off[e][k];
+    // One edge's four vectors at a time, their splat made in a register (an
+    // array of splats went through memory and stalled on store forwarding).
+    let mut v = [i32x4::ZERO; 4];
+    for e in 0..N {
+        let s = i32x4::splat(c[e]);
+        for (v, o) in v.iter_mut().zip(off[e]) {
+            *v |= s + *o;
         }
-        v.to_bitmask()
-    };
-    !(lanes(0) | lanes(1) << 4 | lanes(2) << 8 | lanes(3) << 12) & 0xffff
+    }
+    !(v[0].to_bitmask() | v[1].to_bitmask() << 4 | v[2].to_bitmask() << 8 | v[3].to_bitmask() << 12) & 0xffff
 }
 
 /// The general form, in i64, for live edges too long for [`Narrow`]: the
