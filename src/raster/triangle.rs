@@ -441,9 +441,9 @@ impl TileRows<'_> {
     /// Runs `row(py, first, last)` for each row that has pixels inside,
     /// bottom to top.
     #[inline]
-    fn each(&self, mut row: impl FnMut(u32, u32, u32)) {
+    fn each(self, mut row: impl FnMut(u32, u32, u32)) {
         let (px, py) = (self.px, self.py);
-        match &self.kind {
+        match self.kind {
             RowsKind::Box => {
                 for y in py.0..=py.1 {
                     row(y, px.0, px.1);
@@ -458,7 +458,7 @@ impl TileRows<'_> {
                     }
                 }
             }
-            RowsKind::Tile(origin, rows) => tile_rows(*origin, rows, py, &mut row),
+            RowsKind::Tile(origin, rows) => tile_rows(origin, rows, py, &mut row),
             RowsKind::Tiles(edges) => {
                 for ty in py.0 / TILE..=py.1 / TILE {
                     for tx in px.0 / TILE..=px.1 / TILE {
@@ -467,7 +467,7 @@ impl TileRows<'_> {
                         let (y0, y1) = (py.0.max(oy), py.1.min(oy + TILE - 1));
                         let mut rows = [0; TILE as usize];
                         let area = Area::new((x0 - ox, x1 + 1 - ox), (y0 - oy, y1 + 1 - oy));
-                        if block::cover(edges, (i64::from(ox), i64::from(oy)), &area, &mut rows) {
+                        if block::cover(&edges, (i64::from(ox), i64::from(oy)), &area, &mut rows) {
                             tile_rows((ox, oy), &rows, (y0, y1), &mut row);
                         }
                     }
