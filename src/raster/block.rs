@@ -25,16 +25,20 @@
 //! (`wide`, the exact general form, tested at the snap limits).
 //!
 //! Speed: the hierarchy pays where blocks are whole; where a tile is crossed
-//! by edges, finding runs of a row by walking each edge (the row
-//! rasterizer: about 12 instructions a row) is cheaper than testing blocks.
-//! Measured with callgrind, one thread, instructions a frame of
-//! `osmesa/bench/fill.c` against the row rasterizer: tris 626 M → 655 M,
-//! ops 857 M → 891 M, thrash 78.6 M → 82.9 M; in time (medians of 5
-//! interleaved runs, 2 shared cores) tris 1.20x and tex 1.08x the row
-//! rasterizer's at one thread. (The i64 form with scalar lanes cost 722 M on
-//! tris; the i32 form made 4x4 tests 20 instructions.) Evaluating a partial
-//! 16×16 block's rows sixteen pixels at a time instead of its 4×4 blocks
-//! cost more (tris 1.25x and 1.30x).
+//! by edges, finding a row's run by walking each edge (the row rasterizer:
+//! about 12 instructions a row) is cheaper than testing blocks. Against the
+//! row rasterizer, callgrind, one thread, instructions a frame of
+//! `osmesa/bench/fill.c`: tris 626 M → 654 M, thrash 78.6 M → 82.6 M, lit16
+//! 2285 M → 2280 M; in time, medians of 5 interleaved runs (2 shared
+//! cores), one thread and two: tris 1.13x and 1.11x, ops 1.11x and 1.00x,
+//! tex 1.05x and 1.01x, thrash 1.06x and 0.96x. On the way there: the i64
+//! form with scalar lanes cost 722 M on tris; sixteen values a test in i32
+//! lanes, 660 M; the splats of an array of corner values went through
+//! memory and stalled on store forwarding (a quarter of this function's
+//! time: 1.20x → 1.13x on tris). Evaluating a partial 16×16 block's rows
+//! sixteen pixels at a time instead of its 4×4 blocks cost more (tris 1.25x
+//! and, without the 4×4 level, 1.30x), and so did testing a partial block
+//! against all the tile's live edges rather than those it splits.
 
 use super::edges::{Edge, Edges};
 use super::ONE;
