@@ -91,7 +91,7 @@ impl Rows {
     }
 
     /// `None` when no pixel centre of the box is inside the triangle of `edges`.
-    fn new(edges: &[Edge; 3], px: (i64, i64), py: (i64, i64)) -> Option<Rows> {
+    pub(crate) fn new(edges: &[Edge; 3], px: (i64, i64), py: (i64, i64)) -> Option<Rows> {
         let inside = Rows::classify(edges, px, py)?;
         let mut rows = Rows {
             px,
@@ -143,7 +143,7 @@ impl Rows {
     /// Runs `row(py, first, last)` for each row of the box that has pixels
     /// inside, bottom to top.
     #[inline]
-    fn each(self, mut row: impl FnMut(u32, u32, u32)) {
+    pub(crate) fn each(self, mut row: impl FnMut(u32, u32, u32)) {
         let (px0, px1) = self.px;
         if self.inside {
             for py in self.py.0..=self.py.1 {

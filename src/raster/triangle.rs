@@ -373,6 +373,13 @@ impl Prepared {
                 }
                 RowsKind::Masks(m)
             }
+            Cover::Edges(p) if rows_oracle() => {
+                let wide = |(a, b): (u32, u32)| (i64::from(a), i64::from(b));
+                match Rows::new(&edges_of(p), wide(px), wide(py)) {
+                    Some(rows) => RowsKind::Walk(rows),
+                    None => return,
+                }
+            }
             Cover::Edges(p) => {
                 let edges = edges_of(p);
                 let (ox, oy) = (px.0 & !(TILE - 1), py.0 & !(TILE - 1));
@@ -435,6 +442,25 @@ enum RowsKind<'t> {
     /// A box over several tiles (a triangle rasterized at once, not
     /// binned): each tile's coverage found in turn.
     Tiles([Edge; 3]),
+    /// The row rasterizer's rows (tests only: [`rows_oracle`]).
+    Walk(Rows),
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Tests: whether this thread's triangles are covered by the row
+    /// rasterizer (the oracle) rather than the block rasterizer, so that a
+    /// test can draw the same lines, points and triangles both ways.
+    pub(crate) static ROWS_ORACLE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Whether [`ROWS_ORACLE`] is set (never, outside tests).
+#[inline(always)]
+fn rows_oracle() -> bool {
+    #[cfg(test)]
+    return ROWS_ORACLE.with(std::cell::Cell::get);
+    #[cfg(not(test))]
+    false
 }
 
 impl TileRows<'_> {
@@ -459,6 +485,7 @@ impl TileRows<'_> {
                 }
             }
             RowsKind::Tile(origin, rows) => tile_rows(origin, rows, py, &mut row),
+            RowsKind::Walk(rows) => rows.each(row),
             RowsKind::Tiles(edges) => {
                 for ty in py.0 / TILE..=py.1 / TILE {
                     for tx in px.0 / TILE..=px.1 / TILE {
