@@ -560,12 +560,12 @@ fn drawn(draw: &dyn Fn(&mut dyn SpanSink)) -> BTreeSet<(u32, u32)> {
 
 /// The pixels of a draw with the block rasterizer and with the row
 /// rasterizer (the oracle) covering its triangles.
-fn both_ways(draw: &dyn Fn(&mut dyn SpanSink)) -> (BTreeSet<(u32, u32)>, BTreeSet<(u32, u32)>) {
+fn both_ways(draw: &dyn Fn(&mut dyn SpanSink)) -> [BTreeSet<(u32, u32)>; 2] {
     let blocks = drawn(draw);
     ROWS_ORACLE.with(|o| o.set(true));
     let rows = drawn(draw);
     ROWS_ORACLE.with(|o| o.set(false));
-    (blocks, rows)
+    [blocks, rows]
 }
 
 /// A window coordinate: on a pixel centre, on a pixel edge, on the
@@ -596,11 +596,11 @@ proptest! {
         let bounds = Rect { x0: bx, y0: by, x1: (bx + bw).min(300), y1: (by + bh).min(300) };
         let params = params(bounds, height);
         let v = p.map(|(x, y)| vertex(x, y, height));
-        let (b, r) = both_ways(&|s| triangle([&v[0], &v[1], &v[2]], None, &params, s));
+        let [b, r] = both_ways(&|s| triangle([&v[0], &v[1], &v[2]], None, &params, s));
         prop_assert_eq!(b, r, "triangle {:?}", p);
-        let (b, r) = both_ways(&|s| line(&v[0], &v[1], width, None, &params, s));
+        let [b, r] = both_ways(&|s| line(&v[0], &v[1], width, None, &params, s));
         prop_assert_eq!(b, r, "line {:?} width {}", &p[..2], width);
-        let (b, r) = both_ways(&|s| point(&v[2], width, &params, s));
+        let [b, r] = both_ways(&|s| point(&v[2], width, &params, s));
         prop_assert_eq!(b, r, "point {:?} size {}", p[2], width);
     }
 }
