@@ -186,6 +186,13 @@ pub mod slot {
     }
 }
 
+/// Bit of [`Planes::ones`]: the primary colour's planes are
+/// [`Planes::colour_bounded`].
+pub const COLOUR_BOUNDED: u32 = 1 << 31;
+
+/// The bound of [`Planes::colour_bounded`]: 2^22.
+const COLOUR_BOUND: f64 = 4_194_304.0;
+
 /// Plane slots in a [`Planes`].
 pub const PLANES: usize = slot::TEX0 + 4 * crate::texture::MAX_UNITS;
 
@@ -224,11 +231,14 @@ impl Planes {
     /// [`Self::is_one`] (colours and coordinates need no division by it),
     /// bit `1 + u` for each unit `u` of `units` (a bit mask) that and unit
     /// `u`'s q/w plane too (its s and t are its planes' values).
-    pub fn ones(&self, units: u32) -> u32 {
+    ///
+    /// And bit [`COLOUR_BOUNDED`] when [`Self::colour_bounded`] at `extent`.
+    pub fn ones(&self, units: u32, extent: u32) -> u32 {
+        let bounded = if self.colour_bounded(extent) { COLOUR_BOUNDED } else { 0 };
         if !self.is_one(slot::INV_W) {
-            return 0;
+            return bounded;
         }
-        let mut bits = 1;
+        let mut bits = 1 | bounded;
         let mut rest = units;
         while rest != 0 {
             let u = rest.trailing_zeros() as usize;
@@ -238,6 +248,23 @@ impl Planes {
             }
         }
         bits
+    }
+
+    /// Whether the primary colour's four planes stay below 2^22 in
+    /// magnitude at every pixel `(px, row)` with both in `0..=extent`:
+    /// `|a0| + (|dadx| + |dady|) · extent <= 2^22` (false for NaN or
+    /// infinite coefficients). Each of the two fused multiply-adds then
+    /// rounds once, so a plane's value is below `2^22 · (1 + 2^-24)^2` and
+    /// times 255 below 2^31: its conversion to an integer cannot overflow
+    /// (the compiled code then leaves out the clamp to 255 before it: the
+    /// saturating narrowings clamp, `compile::shade`).
+    pub fn colour_bounded(&self, extent: u32) -> bool {
+        let e = f64::from(extent);
+        (0..4).all(|c| {
+            let (a0, dadx, dady) = self.get(slot::COLOR + c);
+            let (a0, dadx, dady) = (f64::from(a0).abs(), f64::from(dadx).abs(), f64::from(dady).abs());
+            a0 + (dadx + dady) * e <= COLOUR_BOUND
+        })
     }
 
     /// Sets slot `k`'s plane.

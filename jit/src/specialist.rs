@@ -425,6 +425,9 @@ impl Specialist {
         // the view's width). Else (and for keys that dither, whose bias is
         // the span's) one span a call, from checked slices.
         let fits = lay.fits(&parts) && !self.key.dither;
+        // Every pixel the code shades has `px` below the width (plus a
+        // group's overhang) and `row` below the height (`Planes::ones`).
+        let extent = lay.width.saturating_add(SPAN_MAX as u32).max(lay.height);
         let mut table = [SpanPlanes {
             planes: std::ptr::null(),
             ones: 0,
@@ -441,7 +444,7 @@ impl Specialist {
                         let p = planes.get(span.planes as usize);
                         entry = SpanPlanes {
                             planes: p.map_or(std::ptr::null(), |p| p as *const Planes),
-                            ones: p.map_or(0, |p| p.ones(units)),
+                            ones: p.map_or(0, |p| p.ones(units, extent)),
                             _pad: 0,
                         };
                     }
