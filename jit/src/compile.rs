@@ -267,6 +267,20 @@ pub fn signature(isa: &OwnedTargetIsa) -> Signature {
     sig
 }
 
+/// Whether `key`'s code reads [`COLOUR_BOUNDED`] of `SpanPlanes::ones`:
+/// its loop over full groups runs only where the colour is bounded and
+/// converts it without the clamp to 255 ([`SpanValues::colour_bounded`]).
+/// Keys whose packed pixels are their primary colour as the planes give it
+/// (smooth, no colour sum, fog or texture, packed by the shading stage) and
+/// which test no lane.
+pub fn reads_colour_bound(key: &FragmentKey) -> bool {
+    Gen::full_loop_of(key)
+        && Gen::packs_from_shade_of(key)
+        && key
+            .shade
+            .is_some_and(|s| s.color && !s.flat && !s.color_sum && s.fog.is_none() && !s.textured())
+}
+
 /// Builds the body of `key`'s specialist into `func` (whose signature is [`signature`]).
 /// The key must be valid ([`FragmentKey::validate`]).
 pub fn build(key: &FragmentKey, isa: &OwnedTargetIsa, func: &mut cranelift_codegen::ir::Function) {
@@ -674,22 +688,20 @@ impl<'a> Gen<'a> {
     /// (their groups differ only in the store) and sample no texture (whose
     /// bodies are large: a second copy would cost compile time).
     fn full_loop(&self) -> bool {
-        let k = &self.key;
+        Self::full_loop_of(&self.key)
+    }
+
+    /// [`Self::full_loop`] of `k`.
+    fn full_loop_of(k: &FragmentKey) -> bool {
         let tests = k.alpha_test.is_some()
             || (k.stencil.is_some() && k.stencil_buffer)
             || (k.depth.is_some() && k.depth_format.is_some());
         !tests && !k.shade.is_some_and(|s| s.textured())
     }
 
-    /// Whether the loop over full groups runs only where the colour is
-    /// bounded and converts it without the clamp to 255
-    /// ([`SpanValues::colour_bounded`]): keys whose packed pixels are their
-    /// primary colour as the planes give it (smooth, no colour sum, fog or
-    /// texture, packed by the shading stage).
+    /// [`reads_colour_bound`] of the key.
     fn bounded_colour(&self) -> bool {
-        self.key.shade.is_some_and(|s| {
-            s.color && !s.flat && !s.color_sum && s.fog.is_none() && !s.textured() && self.packs_from_shade()
-        })
+        reads_colour_bound(&self.key)
     }
 
     /// Ends the span's block with the loop over its leading full groups

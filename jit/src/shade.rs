@@ -186,12 +186,9 @@ pub mod slot {
     }
 }
 
-/// Bit of [`Planes::ones`]: the primary colour's planes are
-/// [`Planes::colour_bounded`].
+/// Bit of `SpanPlanes::ones` (`compile`) beside [`Planes::ones`]'s: the
+/// primary colour's planes are [`Planes::colour_bounded`].
 pub const COLOUR_BOUNDED: u32 = 1 << 31;
-
-/// The bound of [`Planes::colour_bounded`]: 2^22.
-const COLOUR_BOUND: f64 = 4_194_304.0;
 
 /// Plane slots in a [`Planes`].
 pub const PLANES: usize = slot::TEX0 + 4 * crate::texture::MAX_UNITS;
@@ -231,14 +228,11 @@ impl Planes {
     /// [`Self::is_one`] (colours and coordinates need no division by it),
     /// bit `1 + u` for each unit `u` of `units` (a bit mask) that and unit
     /// `u`'s q/w plane too (its s and t are its planes' values).
-    ///
-    /// And bit [`COLOUR_BOUNDED`] when [`Self::colour_bounded`] at `extent`.
-    pub fn ones(&self, units: u32, extent: u32) -> u32 {
-        let bounded = if self.colour_bounded(extent) { COLOUR_BOUNDED } else { 0 };
+    pub fn ones(&self, units: u32) -> u32 {
         if !self.is_one(slot::INV_W) {
-            return bounded;
+            return 0;
         }
-        let mut bits = 1 | bounded;
+        let mut bits = 1;
         let mut rest = units;
         while rest != 0 {
             let u = rest.trailing_zeros() as usize;
@@ -250,21 +244,22 @@ impl Planes {
         bits
     }
 
-    /// Whether the primary colour's four planes stay below 2^22 in
+    /// Whether the primary colour's four planes stay below about 2^22 in
     /// magnitude at every pixel `(px, row)` with both in `0..=extent`:
-    /// `|a0| + (|dadx| + |dady|) · extent <= 2^22` (false for NaN or
-    /// infinite coefficients). Each of the two fused multiply-adds then
-    /// rounds once, so a plane's value is below `2^22 · (1 + 2^-24)^2` and
-    /// times 255 below 2^31: its conversion to an integer cannot overflow
-    /// (the compiled code then leaves out the clamp to 255 before it: the
-    /// saturating narrowings clamp, `compile::shade`).
+    /// `|a0| + (|dadx| + |dady|) · extent <= 2^22` in f32 (false for NaN
+    /// or infinite coefficients; its three roundings and the planes' two
+    /// leave the values below `2^22 · (1 + 2^-21)`). A value times 255 is
+    /// then below 2^31 and converts to an integer without overflow: the
+    /// compiled code leaves out the clamp to 255 before that conversion
+    /// and lets its saturating narrowings clamp (`compile::shade`).
     pub fn colour_bounded(&self, extent: u32) -> bool {
-        let e = f64::from(extent);
-        (0..4).all(|c| {
+        let e = extent as f32;
+        let mut bounded = true;
+        for c in 0..4 {
             let (a0, dadx, dady) = self.get(slot::COLOR + c);
-            let (a0, dadx, dady) = (f64::from(a0).abs(), f64::from(dadx).abs(), f64::from(dady).abs());
-            a0 + (dadx + dady) * e <= COLOUR_BOUND
-        })
+            bounded &= a0.abs() + (dadx.abs() + dady.abs()) * e <= 4_194_304.0;
+        }
+        bounded
     }
 
     /// Sets slot `k`'s plane.

@@ -5,7 +5,7 @@ use crate::compile::{self, CompileError, RegAlloc, SpanCall, SpanFn, SpanPlanes,
 use crate::interp::{check_key, check_planes, FragmentError};
 use crate::key::FragmentKey;
 use crate::pixel;
-use crate::shade::Planes;
+use crate::shade::{Planes, COLOUR_BOUNDED};
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::target::{DepthTarget, Target};
 use crate::texture::TextureSet;
@@ -425,9 +425,11 @@ impl Specialist {
         // the view's width). Else (and for keys that dither, whose bias is
         // the span's) one span a call, from checked slices.
         let fits = lay.fits(&parts) && !self.key.dither;
-        // Every pixel the code shades has `px` below the width (plus a
-        // group's overhang) and `row` below the height (`Planes::ones`).
-        let extent = lay.width.saturating_add(SPAN_MAX as u32).max(lay.height);
+        // For keys whose code asks (`compile::reads_colour_bound`), whether
+        // each primitive's colour is bounded at the pixels the code shades:
+        // `px` below the width (plus a group's overhang), `row` below the height.
+        let bound = compile::reads_colour_bound(&self.key)
+            .then(|| lay.width.saturating_add(SPAN_MAX as u32).max(lay.height));
         let mut table = [SpanPlanes {
             planes: std::ptr::null(),
             ones: 0,
@@ -444,7 +446,13 @@ impl Specialist {
                         let p = planes.get(span.planes as usize);
                         entry = SpanPlanes {
                             planes: p.map_or(std::ptr::null(), |p| p as *const Planes),
-                            ones: p.map_or(0, |p| p.ones(units, extent)),
+                            ones: p.map_or(0, |p| {
+                                let ones = p.ones(units);
+                                match bound {
+                                    Some(e) if ones & 1 != 0 && p.colour_bounded(e) => ones | COLOUR_BOUNDED,
+                                    _ => ones,
+                                }
+                            }),
                             _pad: 0,
                         };
                     }

@@ -5,7 +5,7 @@
 //! interpreter's.
 
 use super::{le, mem, Gen, Group, SpanPlanes, SpanValues, SplatUniforms, I32X4};
-use crate::key::{ColorFormat, DepthFormat, ShadeKey};
+use crate::key::{ColorFormat, DepthFormat, FragmentKey, ShadeKey};
 use crate::shade::{exp2_coeffs, slot, FogMode, Planes};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
 use cranelift_codegen::ir::{types, BlockArg, InstBuilder, MemFlagsData, Value};
@@ -264,7 +264,11 @@ impl Gen<'_> {
     /// the four channels: no later stage reads them (no alpha test, no
     /// blend) and the format holds one byte a channel.
     pub(super) fn packs_from_shade(&self) -> bool {
-        let k = &self.key;
+        Self::packs_from_shade_of(&self.key)
+    }
+
+    /// [`Self::packs_from_shade`] of `k`.
+    pub(super) fn packs_from_shade_of(k: &FragmentKey) -> bool {
         k.alpha_test.is_none()
             && (k.blend.is_none() || k.logic_op.is_some())
             && matches!(
