@@ -718,11 +718,11 @@ impl<'a> Gen<'a> {
         (args, head, exit): (&[BlockArg], Block, Block),
     ) {
         let ptr = self.ptr;
-        // The lanes of the full groups from lane 0: the trailing live bits
-        // (64 when all are) rounded down to fours.
+        // The lanes of the pairs of full groups from lane 0: the trailing
+        // live bits (64 when all are) rounded down to eights.
         let dead = self.b.ins().bnot(sv.live);
         let ones = self.b.ins().ctz(dead);
-        let end = self.b.ins().band_imm_u(ones, !3);
+        let end = self.b.ins().band_imm_u(ones, !7);
         // Where the key asks, only spans whose 1/w plane is exactly 1 (and
         // whose colour is bounded, for keys that then skip the clamp).
         let bounded = self.bounded_colour();
@@ -763,21 +763,43 @@ impl<'a> Gen<'a> {
             colour_bounded: bounded && sv.ones.is_some(),
             ..*sv
         };
-        let bits = self.b.ins().iconst(types::I32, 15);
-        let mut group = self.group(&fast, lane0, bits);
-        group.px = px_body;
-        group.full = true;
-        let next = self.b.create_block();
-        self.stages(group, &fast, &uniforms, next);
+        // Two groups a turn: the loop's lane, compare and branch once for
+        // both.
+        let mut px_group = px_body;
+        for half in 0..2 {
+            let bits = self.b.ins().iconst(types::I32, 15);
+            let mut group = self.group(&fast, lane0, bits);
+            if half == 1 {
+                self.consts.clear();
+                self.fconsts.clear();
+                self.fconsts.extend(seeded);
+                // The second group's pixels at constant offsets from the
+                // first's (folded into the addresses: no add a turn).
+                let bpp = self.key.color_format.bytes_per_pixel() as i64;
+                let dbytes = match self.key.depth_format {
+                    Some(DepthFormat::D16) => 2,
+                    _ => 4,
+                };
+                group.color_p = self.b.ins().iadd_imm_u(group.color_p, 4 * bpp);
+                group.depth_p = self.b.ins().iadd_imm_u(group.depth_p, 4 * dbytes);
+                group.stencil_p = self.b.ins().iadd_imm_u(group.stencil_p, 4);
+                group.lane0 = self.b.ins().iadd_imm_u(lane0, 4);
+            }
+            group.px = px_group;
+            group.full = true;
+            let next = self.b.create_block();
+            self.stages(group, &fast, &uniforms, next);
+            self.b.switch_to_block(next);
+            if let (Some(p), Some((_, four))) = (px_group, px) {
+                px_group = Some(self.b.ins().fadd(p, four));
+            }
+        }
         self.pshufb_mask = None;
 
-        self.b.switch_to_block(next);
-        let lane4 = self.b.ins().iadd_imm_u(lane0, 4);
-        let mut again: Vec<BlockArg> = vec![lane4.into()];
-        if let (Some(p), Some((_, four))) = (px_body, px) {
-            again.push(self.b.ins().fadd(p, four).into());
-        }
-        let more = self.b.ins().icmp(IntCC::UnsignedLessThan, lane4, end);
+        let lane8 = self.b.ins().iadd_imm_u(lane0, 8);
+        let mut again: Vec<BlockArg> = vec![lane8.into()];
+        again.extend(px_group.map(BlockArg::from));
+        let more = self.b.ins().icmp(IntCC::UnsignedLessThan, lane8, end);
         self.b.ins().brif(more, body, &again, after, &again);
 
         // The rest of the span's lanes from `end` on, if any.
