@@ -80,6 +80,31 @@
 //! textured key spilled and reloaded them around the group loop's callout
 //! (`tex` +13 M), `fill` gained 0.5 M.
 //!
+//! Then (sixth session; callgrind, `fill.c fill 1`, one thread,
+//! `SOFTGL_JIT_TIER=optimized`: two frames, the specialist's own
+//! instructions): keys that test no lane and sample no texture run a span's
+//! leading full groups in a loop of their own ([`Gen::full_groups`]), two
+//! groups a turn, where the span's 1/w plane is exactly 1: no live bits to
+//! shift and test, no test of w, the store with no choice, one compare a
+//! turn. Where the primitive's colour is bounded (`Planes::colour_bounded`,
+//! a bit of [`SpanPlanes::ones`] the caller sets for keys that read it,
+//! [`reads_colour_bound`]) the unorm8 conversion leaves out its clamp to
+//! 255 (the saturating narrowings clamp). The pixels' interleave is one
+//! `pshufb` whose mask stays in a register: with `shuffle` of one value
+//! twice, or the clamp's two reads of a value, Cranelift folds no load of
+//! the values it is made from (`compute_use_states` counts every use of
+//! a value made from a load; a block parameter with one predecessor does
+//! not stop the count, `remove_constant_phis` removes it), so each plane's
+//! `a0` took a load of its own. The `fill` group: 49 -> 35.5 instructions
+//! (4 a plane, 3 a channel's conversion, 4 to pack, a store, 2.5 of the
+//! loop); the specialist 457.4 M -> 349.9 M, the frame 15.8 -> 12.1
+//! instructions a fragment (`instructions.sh fill`). Spans of other keys,
+//! and the groups after a span's first partial one, take the loop above.
+//! The price is compile time for those keys only (a second copy of the
+//! group's stages, two in the loop): the `fill` key 250 -> ~450 µs
+//! (`compile_time` below, loaded machine); the `thrash` frame's keys all
+//! test depth and are unchanged.
+//!
 //! The function reads and writes whole groups of four pixels of the spans it
 //! runs: the caller (the `specialist` module) guarantees that every pixel of
 //! the view's rows `y0..y0 + rows` and columns `0..width` is addressable
@@ -644,7 +669,7 @@ impl<'a> Gen<'a> {
             .filter(|s| !s.textured())
             .map(|_| (255.0f32.to_bits(), self.fconst(255.0)));
         if self.full_loop() {
-            self.full_groups((&sv, seeded, px), (&args, head, exit));
+            self.full_groups(&sv, seeded, px, (&args, head, exit));
         } else {
             self.b.ins().jump(head, &args);
         }
@@ -704,17 +729,23 @@ impl<'a> Gen<'a> {
         reads_colour_bound(&self.key)
     }
 
-    /// Ends the span's block with the loop over its leading full groups
-    /// (where the 1/w plane is exactly 1, for keys that divide by it), then
+    /// Ends the span's block with the loop over its leading pairs of full
+    /// groups (where the 1/w plane is exactly 1, for keys that divide by
+    /// it, and the colour bounded, for keys that read the bound), then
     /// hands the rest of its live lanes to the general loop at `head`
     /// (whose arguments from lane 0 are `args`), or goes to `exit`.
+    /// `seeded` is the 255.0 kept for the span, `px` the pixel x of lane 0
+    /// and the step of four (keys with a shading stage).
     ///
-    /// The loop's group knows its four lanes live and its w one: no live
-    /// bits to shift and test, no test of w, the store with no choice, the
-    /// next group's lane compared with the last's.
+    /// The loop's groups know their four lanes live and their w one: no
+    /// live bits to shift and test, no test of w, the store with no choice;
+    /// two groups a turn, the second's pixels at constant offsets from the
+    /// first's, one compare of the lane with the last pair's.
     fn full_groups(
         &mut self,
-        (sv, seeded, px): (&SpanValues, Option<(u32, Value)>, Option<(Value, Value)>),
+        sv: &SpanValues,
+        seeded: Option<(u32, Value)>,
+        px: Option<(Value, Value)>,
         (args, head, exit): (&[BlockArg], Block, Block),
     ) {
         let ptr = self.ptr;
