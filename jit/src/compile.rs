@@ -97,7 +97,7 @@
 //! not stop the count, `remove_constant_phis` removes it), so each plane's
 //! `a0` took a load of its own. The `fill` group: 49 -> 35.5 instructions
 //! (4 a plane, 3 a channel's conversion, 4 to pack, a store, 2.5 of the
-//! loop); the specialist 457.4 M -> 349.9 M, the frame 15.8 -> 12.1
+//! loop); the specialist 457.4 M -> 349.9 M, the frame 15.8 -> 12.5
 //! instructions a fragment (`instructions.sh fill`). Spans of other keys,
 //! and the groups after a span's first partial one, take the loop above.
 //! The price is compile time for those keys only (a second copy of the
