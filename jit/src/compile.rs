@@ -80,6 +80,31 @@
 //! textured key spilled and reloaded them around the group loop's callout
 //! (`tex` +13 M), `fill` gained 0.5 M.
 //!
+//! Then (sixth session; callgrind, `fill.c fill 1`, one thread,
+//! `SOFTGL_JIT_TIER=optimized`: two frames, the specialist's own
+//! instructions): keys that test no lane and sample no texture run a span's
+//! leading full groups in a loop of their own ([`Gen::full_groups`]), two
+//! groups a turn, where the span's 1/w plane is exactly 1: no live bits to
+//! shift and test, no test of w, the store with no choice, one compare a
+//! turn. Where the primitive's colour is bounded (`Planes::colour_bounded`,
+//! a bit of [`SpanPlanes::ones`] the caller sets for keys that read it,
+//! [`reads_colour_bound`]) the unorm8 conversion leaves out its clamp to
+//! 255 (the saturating narrowings clamp). The pixels' interleave is one
+//! `pshufb` whose mask stays in a register: with `shuffle` of one value
+//! twice, or the clamp's two reads of a value, Cranelift folds no load of
+//! the values it is made from (`compute_use_states` counts every use of
+//! a value made from a load; a block parameter with one predecessor does
+//! not stop the count, `remove_constant_phis` removes it), so each plane's
+//! `a0` took a load of its own. The `fill` group: 49 -> 35.5 instructions
+//! (4 a plane, 3 a channel's conversion, 4 to pack, a store, 2.5 of the
+//! loop); the specialist 457.4 M -> 349.9 M, the frame 15.8 -> 12.5
+//! instructions a fragment (`instructions.sh fill`). Spans of other keys,
+//! and the groups after a span's first partial one, take the loop above.
+//! The price is compile time for those keys only (a second copy of the
+//! group's stages, two in the loop): the `fill` key 250 -> ~450 µs
+//! (`compile_time` below, loaded machine); the `thrash` frame's keys all
+//! test depth and are unchanged.
+//!
 //! The function reads and writes whole groups of four pixels of the spans it
 //! runs: the caller (the `specialist` module) guarantees that every pixel of
 //! the view's rows `y0..y0 + rows` and columns `0..width` is addressable
@@ -91,12 +116,12 @@ use crate::key::{
     Stage, StencilKey, StencilOp,
 };
 use crate::pixel;
-use crate::shade::Planes;
+use crate::shade::{Planes, COLOUR_BOUNDED};
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::uniforms::FragmentUniforms;
 use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::immediates::V128Imm;
-use cranelift_codegen::ir::{types, AbiParam, Block, InstBuilder, MemFlagsData, Signature, Type, Value};
+use cranelift_codegen::ir::{types, AbiParam, Block, BlockArg, InstBuilder, MemFlagsData, Signature, Type, Value};
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
@@ -267,6 +292,20 @@ pub fn signature(isa: &OwnedTargetIsa) -> Signature {
     sig
 }
 
+/// Whether `key`'s code reads [`COLOUR_BOUNDED`] of `SpanPlanes::ones`:
+/// its loop over full groups runs only where the colour is bounded and
+/// converts it without the clamp to 255 ([`SpanValues::colour_bounded`]).
+/// Keys whose packed pixels are their primary colour as the planes give it
+/// (smooth, no colour sum, fog or texture, packed by the shading stage) and
+/// which test no lane.
+pub fn reads_colour_bound(key: &FragmentKey) -> bool {
+    Gen::full_loop_of(key)
+        && Gen::packs_from_shade_of(key)
+        && key
+            .shade
+            .is_some_and(|s| s.color && !s.flat && !s.color_sum && s.fog.is_none() && !s.textured())
+}
+
 /// Builds the body of `key`'s specialist into `func` (whose signature is [`signature`]).
 /// The key must be valid ([`FragmentKey::validate`]).
 pub fn build(key: &FragmentKey, isa: &OwnedTargetIsa, func: &mut cranelift_codegen::ir::Function) {
@@ -312,6 +351,7 @@ enum Factor {
 }
 
 /// Per-span values, made once a span before its group loop.
+#[derive(Clone, Copy)]
 struct SpanValues {
     /// The `SpanCall` pointer.
     call: Value,
@@ -329,6 +369,15 @@ struct SpanValues {
     /// (`a0 == 1`, `dadx == dady == 0`: every `glOrtho` draw), for keys that
     /// divide colours by it ([`Gen::perspective`]).
     w_one: Option<Value>,
+    /// Whether the code runs only where `w_one` holds (the loop over a
+    /// span's full groups, [`Gen::full_groups`]): no test, no second arm.
+    w_is_one: bool,
+    /// The span's `SpanPlanes::ones`, for keys with a smooth colour.
+    ones: Option<Value>,
+    /// Whether the code runs only where the primary colour's planes are
+    /// bounded (`Planes::colour_bounded`): the unorm8 conversion then needs
+    /// no clamp to 255 ([`Gen::full_groups`]).
+    colour_bounded: bool,
     /// For each natively sampled unit of such a key: whether w and the
     /// unit's q/w plane are both exactly 1 over the span (the unit's s and t
     /// are then its planes' values).
@@ -360,6 +409,9 @@ struct Group {
     px: Option<Value>,
     /// `1 / (1/w)` at the lanes, once the shading stage has made it.
     w: Option<Value>,
+    /// Whether the group's four lanes are known live (the loop over a
+    /// span's full groups): `bits` is 15 and no branch asks.
+    full: bool,
     /// Whether the alpha channel (`rgba[3]`) is already shaded: the alpha
     /// test reads it before the stencil and depth tests, the other channels
     /// wait for the groups that pass them.
@@ -386,6 +438,9 @@ struct Gen<'a> {
     tex_slot: Option<cranelift_codegen::ir::StackSlot>,
     /// The native sampler's slot for gather offsets, once made.
     gather_slot: Option<cranelift_codegen::ir::StackSlot>,
+    /// The mask of the pixel interleave's `pshufb`, made before the loop
+    /// over full groups and kept in a register across it (x86-64).
+    pshufb_mask: Option<Value>,
 }
 
 impl<'a> Gen<'a> {
@@ -401,6 +456,7 @@ impl<'a> Gen<'a> {
             fconsts: Vec::new(),
             tex_slot: None,
             gather_slot: None,
+            pshufb_mask: None,
         }
     }
 
@@ -536,6 +592,9 @@ impl<'a> Gen<'a> {
             live,
             planes: None,
             w_one: None,
+            w_is_one: false,
+            ones: None,
+            colour_bounded: false,
             tex_one: [None; crate::texture::MAX_UNITS],
         };
         let mut sv = sv;
@@ -554,6 +613,7 @@ impl<'a> Gen<'a> {
                     .ins()
                     .load(types::I32, mem(), entry, offset_of!(SpanPlanes, ones) as i32);
                 sv.w_one = Some(self.b.ins().band_imm_u(ones, 1));
+                sv.ones = Some(ones);
                 for (u, unit) in shade.tex.iter().enumerate() {
                     if unit.as_ref().is_some_and(|t| self.native_sampling && native_unit(t)) {
                         sv.tex_one[u] = Some(self.b.ins().band_imm_u(ones, 2 << u));
@@ -608,7 +668,11 @@ impl<'a> Gen<'a> {
             .shade
             .filter(|s| !s.textured())
             .map(|_| (255.0f32.to_bits(), self.fconst(255.0)));
-        self.b.ins().jump(head, &args);
+        if self.full_loop() {
+            self.full_groups(&sv, seeded, px, (&args, head, exit));
+        } else {
+            self.b.ins().jump(head, &args);
+        }
         // A group with live lanes goes straight to work; only one without
         // asks whether any live lane is left (two instructions fewer a group
         // than asking first).
@@ -642,6 +706,148 @@ impl<'a> Gen<'a> {
             args.push(self.b.ins().fadd(p, four).into());
         }
         self.b.ins().jump(head, &args);
+    }
+
+    /// Whether the key's spans run their leading full groups in a loop of
+    /// their own ([`Self::full_groups`]): keys whose stages test no lane
+    /// (their groups differ only in the store) and sample no texture (whose
+    /// bodies are large: a second copy would cost compile time).
+    fn full_loop(&self) -> bool {
+        Self::full_loop_of(&self.key)
+    }
+
+    /// [`Self::full_loop`] of `k`.
+    fn full_loop_of(k: &FragmentKey) -> bool {
+        let tests = k.alpha_test.is_some()
+            || (k.stencil.is_some() && k.stencil_buffer)
+            || (k.depth.is_some() && k.depth_format.is_some());
+        !tests && !k.shade.is_some_and(|s| s.textured())
+    }
+
+    /// [`reads_colour_bound`] of the key.
+    fn bounded_colour(&self) -> bool {
+        reads_colour_bound(&self.key)
+    }
+
+    /// Ends the span's block with the loop over its leading pairs of full
+    /// groups (where the 1/w plane is exactly 1, for keys that divide by
+    /// it, and the colour bounded, for keys that read the bound), then
+    /// hands the rest of its live lanes to the general loop at `head`
+    /// (whose arguments from lane 0 are `args`), or goes to `exit`.
+    /// `seeded` is the 255.0 kept for the span, `px` the pixel x of lane 0
+    /// and the step of four (keys with a shading stage).
+    ///
+    /// The loop's groups know their four lanes live and their w one: no
+    /// live bits to shift and test, no test of w, the store with no choice;
+    /// two groups a turn, the second's pixels at constant offsets from the
+    /// first's, one compare of the lane with the last pair's.
+    fn full_groups(
+        &mut self,
+        sv: &SpanValues,
+        seeded: Option<(u32, Value)>,
+        px: Option<(Value, Value)>,
+        (args, head, exit): (&[BlockArg], Block, Block),
+    ) {
+        let ptr = self.ptr;
+        // The lanes of the pairs of full groups from lane 0: the trailing
+        // live bits (64 when all are) rounded down to eights.
+        let dead = self.b.ins().bnot(sv.live);
+        let ones = self.b.ins().ctz(dead);
+        let end = self.b.ins().band_imm_u(ones, !7);
+        // Where the key asks, only spans whose 1/w plane is exactly 1 (and
+        // whose colour is bounded, for keys that then skip the clamp).
+        let bounded = self.bounded_colour();
+        let end = match sv.ones {
+            Some(ones) => {
+                let need = i64::from(if bounded { 1 | COLOUR_BOUNDED } else { 1 });
+                let has = self.b.ins().band_imm_u(ones, need);
+                let ok = self.b.ins().icmp_imm_u(IntCC::Equal, has, need);
+                let none = self.b.ins().iconst(types::I64, 0);
+                self.b.ins().select(ok, end, none)
+            }
+            None => end,
+        };
+        let end = if ptr == types::I64 {
+            end
+        } else {
+            self.b.ins().ireduce(ptr, end)
+        };
+        let body = self.b.create_block();
+        let lane0 = self.b.append_block_param(body, ptr);
+        let px_body = px.map(|_| self.b.append_block_param(body, types::F32X4));
+        let after = self.b.create_block();
+        let lane_after = self.b.append_block_param(after, ptr);
+        let px_after = px.map(|_| self.b.append_block_param(after, types::F32X4));
+        let mut first = vec![args[0]];
+        first.extend(args.get(2).copied());
+        self.pshufb_mask = self.make_pshufb_mask();
+        self.b.ins().brif(end, body, &first, head, args);
+
+        self.b.switch_to_block(body);
+        self.consts.clear();
+        self.fconsts.clear();
+        self.fconsts.extend(seeded);
+        let uniforms = Uniforms::load(self, sv.u, sv.call);
+        // The loop runs only where w is one, for keys that ask.
+        let fast = SpanValues {
+            w_is_one: sv.w_one.is_some(),
+            colour_bounded: bounded && sv.ones.is_some(),
+            ..*sv
+        };
+        // Two groups a turn: the loop's lane, compare and branch once for
+        // both.
+        let mut px_group = px_body;
+        for half in 0..2 {
+            let bits = self.b.ins().iconst(types::I32, 15);
+            let mut group = self.group(&fast, lane0, bits);
+            if half == 1 {
+                self.consts.clear();
+                self.fconsts.clear();
+                self.fconsts.extend(seeded);
+                // The second group's pixels at constant offsets from the
+                // first's (folded into the addresses: no add a turn).
+                let bpp = self.key.color_format.bytes_per_pixel() as i64;
+                let dbytes = match self.key.depth_format {
+                    Some(DepthFormat::D16) => 2,
+                    _ => 4,
+                };
+                group.color_p = self.b.ins().iadd_imm_u(group.color_p, 4 * bpp);
+                group.depth_p = self.b.ins().iadd_imm_u(group.depth_p, 4 * dbytes);
+                group.stencil_p = self.b.ins().iadd_imm_u(group.stencil_p, 4);
+                group.lane0 = self.b.ins().iadd_imm_u(lane0, 4);
+            }
+            group.px = px_group;
+            group.full = true;
+            let next = self.b.create_block();
+            self.stages(group, &fast, &uniforms, next);
+            self.b.switch_to_block(next);
+            if let (Some(p), Some((_, four))) = (px_group, px) {
+                px_group = Some(self.b.ins().fadd(p, four));
+            }
+        }
+        self.pshufb_mask = None;
+
+        let lane8 = self.b.ins().iadd_imm_u(lane0, 8);
+        let mut again: Vec<BlockArg> = vec![lane8.into()];
+        again.extend(px_group.map(BlockArg::from));
+        let more = self.b.ins().icmp(IntCC::UnsignedLessThan, lane8, end);
+        self.b.ins().brif(more, body, &again, after, &again);
+
+        // The rest of the span's lanes from `end` on, if any.
+        self.b.switch_to_block(after);
+        let done = self.b.ins().icmp_imm_u(IntCC::Equal, lane_after, 64);
+        let rest_block = self.b.create_block();
+        self.b.ins().brif(done, exit, &[], rest_block, &[]);
+        self.b.switch_to_block(rest_block);
+        let shift = if ptr == types::I64 {
+            lane_after
+        } else {
+            self.b.ins().uextend(types::I64, lane_after)
+        };
+        let rest = self.b.ins().ushr(sv.live, shift);
+        let mut to_head: Vec<BlockArg> = vec![lane_after.into(), rest.into()];
+        to_head.extend(px_after.map(BlockArg::from));
+        self.b.ins().jump(head, &to_head);
     }
 
     /// The bits of the span's lanes inside the scissor box's columns
@@ -748,6 +954,7 @@ impl<'a> Gen<'a> {
             z: None,
             px: None,
             w: None,
+            full: false,
             alpha_shaded: false,
         }
     }
@@ -757,6 +964,11 @@ impl<'a> Gen<'a> {
     fn live(&mut self, g: &mut Group) -> Value {
         if let Some(l) = g.live {
             return l;
+        }
+        if g.full {
+            let all = self.splat(-1);
+            g.live = Some(all);
+            return all;
         }
         // One load from the table of the 16 masks (3 instructions where
         // splatting and comparing the bits take 5).
@@ -935,6 +1147,10 @@ impl<'a> Gen<'a> {
                         let m = self.splat(i64::from(bits));
                         self.b.ins().bitselect(m, s, dst)
                     };
+                    if g.live.is_none() && g.full {
+                        self.store_color(g.color_p, value);
+                        continue;
+                    }
                     if g.live.is_none() {
                         // No test ran: a group whose four lanes are live stores
                         // its pixels without reading them (the `fill` frame's

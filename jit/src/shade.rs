@@ -186,6 +186,10 @@ pub mod slot {
     }
 }
 
+/// Bit of `SpanPlanes::ones` (`compile`) beside [`Planes::ones`]'s: the
+/// primary colour's planes are [`Planes::colour_bounded`].
+pub const COLOUR_BOUNDED: u32 = 1 << 31;
+
 /// Plane slots in a [`Planes`].
 pub const PLANES: usize = slot::TEX0 + 4 * crate::texture::MAX_UNITS;
 
@@ -238,6 +242,24 @@ impl Planes {
             }
         }
         bits
+    }
+
+    /// Whether the primary colour's four planes stay below about 2^22 in
+    /// magnitude at every pixel `(px, row)` with both in `0..=extent`:
+    /// `|a0| + (|dadx| + |dady|) · extent <= 2^22` in f32 (false for NaN
+    /// or infinite coefficients; its three roundings and the planes' two
+    /// leave the values below `2^22 · (1 + 2^-21)`). A value times 255 is
+    /// then below 2^31 and converts to an integer without overflow: the
+    /// compiled code leaves out the clamp to 255 before that conversion
+    /// and lets its saturating narrowings clamp (`compile::shade`).
+    pub fn colour_bounded(&self, extent: u32) -> bool {
+        let e = extent as f32;
+        let mut bounded = true;
+        for c in 0..4 {
+            let (a0, dadx, dady) = self.get(slot::COLOR + c);
+            bounded &= a0.abs() + (dadx.abs() + dady.abs()) * e <= 4_194_304.0;
+        }
+        bounded
     }
 
     /// Sets slot `k`'s plane.

@@ -5,7 +5,7 @@ use crate::compile::{self, CompileError, RegAlloc, SpanCall, SpanFn, SpanPlanes,
 use crate::interp::{check_key, check_planes, FragmentError};
 use crate::key::FragmentKey;
 use crate::pixel;
-use crate::shade::Planes;
+use crate::shade::{Planes, COLOUR_BOUNDED};
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::target::{DepthTarget, Target};
 use crate::texture::TextureSet;
@@ -164,6 +164,11 @@ impl Drop for UpgradeJob {
 /// slot is a `OnceLock`.
 pub struct Specialist {
     key: FragmentKey,
+    /// The key's natively sampled units (a bit mask) and whether its code
+    /// reads [`COLOUR_BOUNDED`] (`compile::reads_colour_bound`): found once
+    /// here, not once a batch (some 50 instructions each).
+    units: u32,
+    colour_bound: bool,
     first: Compiled,
     upgrade: Option<Upgrade>,
 }
@@ -179,6 +184,31 @@ impl std::fmt::Debug for Specialist {
             .field("key", &self.key)
             .field("optimized", &self.is_optimized())
             .finish_non_exhaustive()
+    }
+}
+
+/// The [`SpanPlanes`] entry of a primitive's planes `p` for code that
+/// samples `units` natively and, with `bound` (the extent of the pixels it
+/// shades), reads [`COLOUR_BOUNDED`]. Not inlined: made once a primitive,
+/// it kept the per-span loop that copies it from being as tight (the
+/// `fill` frame's caller took 3 M instructions more inlined).
+#[inline(never)]
+fn span_planes(p: Option<&Planes>, units: u32, bound: Option<u32>) -> SpanPlanes {
+    let Some(p) = p else {
+        return SpanPlanes {
+            planes: std::ptr::null(),
+            ones: 0,
+            _pad: 0,
+        };
+    };
+    let mut ones = p.ones(units);
+    if bound.is_some_and(|e| ones & 1 != 0 && p.colour_bounded(e)) {
+        ones |= COLOUR_BOUNDED;
+    }
+    SpanPlanes {
+        planes: p,
+        ones,
+        _pad: 0,
     }
 }
 
@@ -210,8 +240,16 @@ impl Specialist {
             let _ = tier::background(Box::new(move || job.run()));
             upgrade
         });
+        let units = key.shade.as_ref().map_or(0, |s| {
+            (0..crate::texture::MAX_UNITS)
+                .filter(|&u| s.tex[u].as_ref().is_some_and(compile::native_unit))
+                .map(|u| 1 << u)
+                .sum()
+        });
         Ok(Specialist {
             key: *key,
+            units,
+            colour_bound: compile::reads_colour_bound(key),
             first,
             upgrade,
         })
@@ -386,12 +424,7 @@ impl Specialist {
         // (module docs of `compile`).
         let lay = target.layout();
         let parts = target.raw_parts();
-        let units = self.key.shade.as_ref().map_or(0, |s| {
-            (0..crate::texture::MAX_UNITS)
-                .filter(|&u| s.tex[u].as_ref().is_some_and(compile::native_unit))
-                .map(|u| 1 << u)
-                .sum()
-        });
+        let units = self.units;
         // Row 0 of the view (the step to the next row up is `stride`).
         let row0 = |color: *mut u8| {
             if lay.top_down {
@@ -425,6 +458,12 @@ impl Specialist {
         // the view's width). Else (and for keys that dither, whose bias is
         // the span's) one span a call, from checked slices.
         let fits = lay.fits(&parts) && !self.key.dither;
+        // For keys whose code asks (`compile::reads_colour_bound`), whether
+        // each primitive's colour is bounded at the pixels the code shades:
+        // `px` below the width (plus a group's overhang), `row` below the height.
+        let bound = self
+            .colour_bound
+            .then(|| lay.width.saturating_add(SPAN_MAX as u32).max(lay.height));
         let mut table = [SpanPlanes {
             planes: std::ptr::null(),
             ones: 0,
@@ -438,12 +477,7 @@ impl Specialist {
                 for (t, span) in table.iter_mut().zip(chunk) {
                     if last != Some(span.planes) {
                         last = Some(span.planes);
-                        let p = planes.get(span.planes as usize);
-                        entry = SpanPlanes {
-                            planes: p.map_or(std::ptr::null(), |p| p as *const Planes),
-                            ones: p.map_or(0, |p| p.ones(units)),
-                            _pad: 0,
-                        };
+                        entry = span_planes(planes.get(span.planes as usize), units, bound);
                     }
                     *t = entry;
                 }

@@ -341,6 +341,98 @@ proptest! {
     }
 }
 
+/// Planes for the loop over a span's full groups: 1/w mostly exactly 1,
+/// colours mostly in range, else up to and across the bound under which
+/// that loop converts them without the clamp to 255
+/// (`Planes::colour_bounded`: `|a0| + (|dadx| + |dady|) · extent <= 2^22`).
+fn loop_planes(rng: &mut Rng) -> Planes {
+    let mut p = planes(rng);
+    if rng.below(8) != 0 {
+        p.constant(softgl_jit::shade::slot::INV_W, 1.0);
+    }
+    // `n / div` of either sign, `n` below `below`.
+    let signed = |rng: &mut Rng, below: u64, div: f32| {
+        let v = rng.below(below) as f32 / div;
+        if rng.next() & 1 == 0 {
+            v
+        } else {
+            -v
+        }
+    };
+    for c in 0..4 {
+        let k = softgl_jit::shade::slot::COLOR + c;
+        let (a0, dx, dy) = match rng.below(6) {
+            // In range, across the pixels of a span or two.
+            0..=2 => (
+                rng.below(1000) as f32 / 999.0,
+                signed(rng, 100, 4000.0),
+                signed(rng, 100, 400.0),
+            ),
+            // Near the bound: 2^22 with the extent's slopes, either side.
+            3 => {
+                let a0 = 4_194_304.0 - rng.below(20_000) as f32;
+                let a0 = if rng.next() & 1 == 0 { a0 } else { -a0 };
+                (a0, signed(rng, 40, 1.0), signed(rng, 40, 1.0))
+            }
+            // Past 2^31 / 255 (the conversion's overflow) at some pixels.
+            4 => (signed(rng, 2, 1.0) * 8.5e6, signed(rng, 2, 1.0) * 1e5, 0.0),
+            _ => (float(rng), float(rng), float(rng)),
+        };
+        p.set(k, a0, dx, dy);
+    }
+    p
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// Keys that test no lane (whose spans' leading full groups run in a
+    /// loop of their own) with a smooth colour or none, spans mostly whole
+    /// or whole to some lane: the loop, its bounded conversion and the
+    /// general loop after it equal the interpreter.
+    #[test]
+    fn full_group_loop_equals_interpreter(
+        key in key(),
+        shade in shade_key(),
+        shaded in 0u32..4,
+        seed in any::<u64>(),
+    ) {
+        let shade = ShadeKey { color: shaded != 0, flat: shade.flat && shaded == 1, ..shade };
+        let key = FragmentKey {
+            alpha_test: None,
+            stencil: None,
+            depth: None,
+            shade: (shaded != 3 || shade.fog.is_some()).then_some(shade),
+            ..key
+        }
+        .normalized();
+        let mut rng = Rng(softgl_jit::rng::Rng::new((seed ^ (seed >> 32)) as u32));
+        let mut interp_buf = Buffers::random(&key, &mut rng);
+        let mut spans = spans(&interp_buf, &key, &mut rng);
+        for s in &mut spans {
+            let n = rng.below(65);
+            s.mask = match rng.below(4) {
+                0 | 1 => u64::MAX,
+                2 => u64::MAX.checked_shr(64 - n as u32).unwrap_or(0),
+                _ => u64::MAX.checked_shr(64 - n as u32).unwrap_or(0) | (rng.next() << n.min(63)),
+            };
+        }
+        let planes: Vec<Planes> = (0..1 + rng.below(3)).map(|_| loop_planes(&mut rng)).collect();
+        for s in &mut spans {
+            s.planes = rng.below(planes.len() as u64) as u32;
+        }
+        let u = FragmentUniforms::default();
+        let mut jit_buf = interp_buf.clone();
+        let specialist = Specialist::compile_tier(&key, Tier::Optimized).expect("a valid key compiles");
+        interp::run_with_planes(&key, &u, &TextureSet::default(), &spans, &planes, &mut interp_buf.target())
+            .expect("the key names the buffers");
+        specialist
+            .run_with_planes(&u, &TextureSet::default(), &spans, &planes, &mut jit_buf.target())
+            .expect("the key names the buffers");
+        prop_assert_eq!(&jit_buf.color, &interp_buf.color, "color differs");
+    }
+}
+
 #[test]
 fn a_span_without_its_planes_is_an_error() {
     let key = FragmentKey {

@@ -5,7 +5,7 @@
 //! interpreter's.
 
 use super::{le, mem, Gen, Group, SpanPlanes, SpanValues, SplatUniforms, I32X4};
-use crate::key::{ColorFormat, DepthFormat, ShadeKey};
+use crate::key::{ColorFormat, DepthFormat, FragmentKey, ShadeKey};
 use crate::shade::{exp2_coeffs, slot, FogMode, Planes};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
 use cranelift_codegen::ir::{types, BlockArg, InstBuilder, MemFlagsData, Value};
@@ -76,6 +76,12 @@ impl Gen<'_> {
                 })
                 .collect()
         };
+        if sv.w_is_one {
+            if keep_w && g.w.is_none() {
+                g.w = Some(self.fconst(1.0));
+            }
+            return ks.iter().map(|&k| self.plane(planes, k, px, row)).collect();
+        }
         let Some(w_one) = sv.w_one else {
             let w = self.w(g, planes, px, row);
             g.w = Some(w);
@@ -244,7 +250,7 @@ impl Gen<'_> {
         }
         if self.packs_from_shade() {
             // Straight to the packed pixels: no later stage reads the channels.
-            g.packed = Some(self.unorm8_packed(c));
+            g.packed = Some(self.unorm8_packed(c, sv.colour_bounded));
         } else if alpha_shaded {
             for (k, ck) in c.iter().take(3).enumerate() {
                 g.rgba[k] = self.unorm_lanes_small(*ck, 255);
@@ -257,8 +263,12 @@ impl Gen<'_> {
     /// Whether the shading stage may hand over the packed colour instead of
     /// the four channels: no later stage reads them (no alpha test, no
     /// blend) and the format holds one byte a channel.
-    fn packs_from_shade(&self) -> bool {
-        let k = &self.key;
+    pub(super) fn packs_from_shade(&self) -> bool {
+        Self::packs_from_shade_of(&self.key)
+    }
+
+    /// [`Self::packs_from_shade`] of `k`.
+    pub(super) fn packs_from_shade_of(k: &FragmentKey) -> bool {
         k.alpha_test.is_none()
             && (k.blend.is_none() || k.logic_op.is_some())
             && matches!(
@@ -273,11 +283,20 @@ impl Gen<'_> {
     /// narrowings then make negatives and NaN (converted to `i32::MIN`) 0, and
     /// one byte shuffle interleaves the channels. 16 instructions a group of
     /// four where the channel by channel path takes 30.
-    fn unorm8_packed(&mut self, c: [Value; 4]) -> Value {
+    ///
+    /// With `bounded` (the channels are below 2^22 in magnitude,
+    /// `Planes::colour_bounded`) without the clamp to 255: `v · 255` is then
+    /// below 2^31, converts without overflow, and the narrowings make lanes
+    /// above 255 255 (as the clamp does) and NaN 0 (as it does). 12 + 4
+    /// instructions where the clamp makes it 16 + 4; and the plane value
+    /// is then used once, so Cranelift folds each plane's `a0` load into
+    /// its multiply-add (a value used twice, as `min_const` uses it, makes
+    /// every value it is made from count as used twice).
+    fn unorm8_packed(&mut self, c: [Value; 4], bounded: bool) -> Value {
         let [r, g, b, a] = c.map(|v| {
             let m = self.fconst(255.0);
             let t = self.b.ins().fmul(v, m);
-            let t = self.min_const(m, t);
+            let t = if bounded { t } else { self.min_const(m, t) };
             let t = self.b.ins().nearest(t);
             self.int_lanes(t)
         });
@@ -288,9 +307,8 @@ impl Gen<'_> {
         self.interleave(planar)
     }
 
-    /// Bytes `r0..r3 g0..g3 b0..b3 a0..a3` as four pixels of the format
-    /// (one with a byte a channel): one byte shuffle.
-    pub(super) fn interleave(&mut self, planar: Value) -> Value {
+    /// The byte indices of [`Self::interleave`]'s shuffle: 16 for a zero byte.
+    fn interleave_mask(&self) -> [u8; 16] {
         let (c0, c2) = if self.key.color_format == ColorFormat::Bgra8 {
             (8, 0)
         } else {
@@ -302,6 +320,30 @@ impl Gen<'_> {
         for i in 0..4u8 {
             let alpha = if has_alpha { 12 + i } else { 16 };
             mask[4 * i as usize..4 * i as usize + 4].copy_from_slice(&[c0 + i, 4 + i, c2 + i, alpha]);
+        }
+        mask
+    }
+
+    /// On x86-64, [`Self::interleave`]'s shuffle as the mask of one
+    /// `pshufb` (an index with its top bit set makes a zero byte), made
+    /// where it is kept in a register for a loop ([`Gen::pshufb_mask`]).
+    pub(super) fn make_pshufb_mask(&mut self) -> Option<Value> {
+        let m = self.interleave_mask().map(|i| if i == 16 { 0x80 } else { i });
+        self.x86.then(|| self.vconst_bytes(m))
+    }
+
+    /// Bytes `r0..r3 g0..g3 b0..b3 a0..a3` as four pixels of the format
+    /// (one with a byte a channel): one byte shuffle.
+    pub(super) fn interleave(&mut self, planar: Value) -> Value {
+        let mask = self.interleave_mask();
+        let has_alpha = self.key.color_format.has_alpha();
+        if let Some(m) = self.pshufb_mask {
+            // `pshufb` itself, its mask kept in a register for the loop
+            // ([`Gen::pshufb_mask`]): `shuffle` reads `planar` twice, and
+            // Cranelift then folds no load of the values it is made from
+            // (every plane's `a0`: 4 instructions a group).
+            let bytes = self.b.ins().x86_pshufb(planar, m);
+            return self.b.ins().bitcast(I32X4, le(), bytes);
         }
         let m = self.b.func.dfg.immediates.push(mask.to_vec().into());
         let other = if has_alpha { planar } else { self.vconst_bytes([0; 16]) };
