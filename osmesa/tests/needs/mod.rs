@@ -1,5 +1,5 @@
 //! What the client tests need from the machine (a C compiler, Mesa's OSMesa,
-//! GLU, binutils, PyOpenGL, EGL headers, piglit), looked for once per test
+//! GLU, binutils, PyOpenGL, EGL headers, piglit, MuJoCo), looked for once per test
 //! process; a missing one is skipped loudly or, under
 //! `SOFTGL_REQUIRE_REFERENCES=1`, fails (`conformance/src/missing.rs` decides).
 //! Each test binary uses part of it.
@@ -33,10 +33,12 @@ pub enum Need {
     Egl,
     /// piglit with waffle and Mesa's EGL.
     Piglit,
+    /// `python3` with MuJoCo's Python package and PyOpenGL (`MUJOCO_GL=osmesa`).
+    Mujoco,
 }
 
 impl Need {
-    const ALL: [Need; 7] = [
+    const ALL: [Need; 8] = [
         Need::Cc,
         Need::OsMesa,
         Need::Glu,
@@ -44,6 +46,7 @@ impl Need {
         Need::PyOpenGl,
         Need::Egl,
         Need::Piglit,
+        Need::Mujoco,
     ];
 
     /// Looks once per test process.
@@ -91,6 +94,11 @@ impl Need {
             )
             .then_some(())
             .ok_or_else(|| Missing::new("EGL headers and libEGL (EGL/egl.h)", "apt-get install -y libegl-dev")),
+            Need::Mujoco if ok("python3", &["-c", "import mujoco, OpenGL.version"]) => Ok(()),
+            Need::Mujoco => Err(Missing::new(
+                "MuJoCo's Python package with PyOpenGL",
+                "python3 -m pip install mujoco PyOpenGL",
+            )),
             Need::Piglit if Path::new(PIGLIT_BIN).is_dir() && ok("piglit", &["--help"]) => Ok(()),
             Need::Piglit => Err(Missing::new(
                 "piglit",
