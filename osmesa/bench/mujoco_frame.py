@@ -50,8 +50,7 @@ def main():
             for row in rows:
                 r.disable_depth_rendering()
                 r.update_scene(data, camera="cam")
-                if row == "noshadow":
-                    r.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = False
+                r.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = row != "noshadow"
                 if row == "depth":
                     r.enable_depth_rendering()
                 t0 = time.perf_counter()
