@@ -78,7 +78,11 @@ impl Backend {
 fn lib_dir() -> PathBuf {
     let dir = std::env::var_os("SOFTGL_MUJOCO_LIB").map_or_else(|| profile_dir().join("osmesa"), PathBuf::from);
     for name in ["libOSMesa.so.8", "libOSMesa.so"] {
-        assert!(dir.join(name).exists(), "{} is missing: build softgl-osmesa first", dir.join(name).display());
+        assert!(
+            dir.join(name).exists(),
+            "{} is missing: build softgl-osmesa first",
+            dir.join(name).display()
+        );
     }
     dir
 }
@@ -147,8 +151,12 @@ fn run(backend: Backend, tag: &str, disable: &[&str]) -> Run {
         .env("PYOPENGL_PLATFORM", "osmesa")
         .env_remove("LD_LIBRARY_PATH")
         .env_remove("MESA_EXTENSION_OVERRIDE")
-        .stdout(Stdio::from(std::fs::File::create(dir.join("stdout.txt")).expect("stdout file")))
-        .stderr(Stdio::from(std::fs::File::create(dir.join("stderr.txt")).expect("stderr file")));
+        .stdout(Stdio::from(
+            std::fs::File::create(dir.join("stdout.txt")).expect("stdout file"),
+        ))
+        .stderr(Stdio::from(
+            std::fs::File::create(dir.join("stderr.txt")).expect("stderr file"),
+        ));
     match backend {
         Backend::Llvmpipe | Backend::Softpipe => {
             cmd.env("GALLIUM_DRIVER", backend.name());
@@ -225,7 +233,14 @@ fn run(backend: Backend, tag: &str, disable: &[&str]) -> Run {
                     Some(p) if p.gl_errors != "-" => format!("{} {e}", p.gl_errors),
                     _ => e,
                 };
-                r.frames.insert(name.to_owned(), Status { error, gl_errors, warnings });
+                r.frames.insert(
+                    name.to_owned(),
+                    Status {
+                        error,
+                        gl_errors,
+                        warnings,
+                    },
+                );
             } else {
                 // The Renderer could not be made: every mode of the key fails with it.
                 for mode in MODES {
@@ -279,7 +294,11 @@ struct Npy {
 impl Npy {
     fn read(path: &Path) -> Option<Npy> {
         let bytes = std::fs::read(path).ok()?;
-        assert!(bytes.starts_with(b"\x93NUMPY"), "{} is not an .npy file", path.display());
+        assert!(
+            bytes.starts_with(b"\x93NUMPY"),
+            "{} is not an .npy file",
+            path.display()
+        );
         let (len, start) = if bytes[6] == 1 {
             (usize::from(u16::from_le_bytes([bytes[8], bytes[9]])), 10)
         } else {
@@ -308,12 +327,18 @@ impl Npy {
 
     fn f32s(&self) -> Vec<f32> {
         assert_eq!(self.descr, "<f4");
-        self.data.chunks_exact(4).map(|c| f32::from_le_bytes(c.try_into().unwrap())).collect()
+        self.data
+            .chunks_exact(4)
+            .map(|c| f32::from_le_bytes(c.try_into().unwrap()))
+            .collect()
     }
 
     fn i32s(&self) -> Vec<i32> {
         assert_eq!(self.descr, "<i4");
-        self.data.chunks_exact(4).map(|c| i32::from_le_bytes(c.try_into().unwrap())).collect()
+        self.data
+            .chunks_exact(4)
+            .map(|c| i32::from_le_bytes(c.try_into().unwrap()))
+            .collect()
     }
 }
 
@@ -322,7 +347,12 @@ impl Npy {
 enum Diff {
     /// RGB: share of pixels with every channel within 2 LSB, pixels beyond, the
     /// largest channel difference, the mean absolute channel difference.
-    Rgb { within2: f64, over2: usize, max: u8, mae: f64 },
+    Rgb {
+        within2: f64,
+        over2: usize,
+        max: u8,
+        mae: f64,
+    },
     /// Depth: the largest absolute and relative difference.
     Depth { max_abs: f64, max_rel: f64 },
     /// Segmentation: pixels whose (object id, type) differ.
@@ -377,7 +407,12 @@ fn diff(mode: &str, a: &Npy, b: &Npy) -> Diff {
 impl std::fmt::Display for Diff {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match *self {
-            Diff::Rgb { within2, over2, max, mae } => write!(
+            Diff::Rgb {
+                within2,
+                over2,
+                max,
+                mae,
+            } => write!(
                 f,
                 "{:7.3}% within 2 LSB ({over2} beyond), max {max:3}, mean {mae:.3}",
                 100.0 * within2
@@ -398,11 +433,22 @@ fn targets(mode: &str, d: Diff, softpipe: Option<Diff>) -> Vec<String> {
             f.push(format!("window depth off by {max_abs:.3e} > {ZBUF_TOL:e}"));
         }
         (Diff::Depth { max_rel, .. }, _) if mode == "depth" && max_rel > DEPTH_REL_TOL => {
-            f.push(format!("metric depth off by {max_rel:.3e} relative > {DEPTH_REL_TOL:e}"));
+            f.push(format!(
+                "metric depth off by {max_rel:.3e} relative > {DEPTH_REL_TOL:e}"
+            ));
         }
-        (Diff::Rgb { within2, over2, mae, .. }, sp) => {
+        (
+            Diff::Rgb {
+                within2, over2, mae, ..
+            },
+            sp,
+        ) => {
             if within2 < RGB_WITHIN_2 {
-                f.push(format!("{:.3}% within 2 LSB < {}%", 100.0 * within2, 100.0 * RGB_WITHIN_2));
+                f.push(format!(
+                    "{:.3}% within 2 LSB < {}%",
+                    100.0 * within2,
+                    100.0 * RGB_WITHIN_2
+                ));
             }
             if let Some(Diff::Rgb {
                 over2: sp_over2,
@@ -431,12 +477,21 @@ fn gl_error_warnings(r: &Run) -> Vec<&String> {
 /// Every frame of `r` rendered, with no GL error (MuJoCo's other warnings, e.g.
 /// the one about depth accuracy without `GL_ARB_clip_control`, are allowed).
 fn assert_clean(r: &Run) {
-    assert!(r.ended.is_none(), "{} run did not finish: {:?}", r.backend.name(), r.ended);
+    assert!(
+        r.ended.is_none(),
+        "{} run did not finish: {:?}",
+        r.backend.name(),
+        r.ended
+    );
     let gl = gl_error_warnings(r);
     assert!(gl.is_empty(), "{}: {gl:?}", r.backend.name());
     for name in frame_names() {
         let s = r.status(&name);
-        assert!(s.error.is_none() && s.gl_errors == "-", "{} {name}: {s:?}", r.backend.name());
+        assert!(
+            s.error.is_none() && s.gl_errors == "-",
+            "{} {name}: {s:?}",
+            r.backend.name()
+        );
     }
 }
 
@@ -456,12 +511,20 @@ fn harness_llvmpipe_against_softpipe() {
     assert!(soft.renderer.contains("softpipe"), "{}", soft.renderer);
     for r in [&llvm, &again, &soft] {
         assert_clean(r);
-        assert!(r.warnings.is_empty(), "{}: MuJoCo warnings {:?}", r.backend.name(), r.warnings);
+        assert!(
+            r.warnings.is_empty(),
+            "{}: MuJoCo warnings {:?}",
+            r.backend.name(),
+            r.warnings
+        );
     }
     for name in frame_names() {
         let a = llvm.npy(&name).expect("llvmpipe frame");
         let b = again.npy(&name).expect("second llvmpipe frame");
-        assert!(a.data == b.data, "{name}: llvmpipe differs from itself between processes");
+        assert!(
+            a.data == b.data,
+            "{name}: llvmpipe differs from itself between processes"
+        );
     }
 
     // What the scenes show: every geom (objtype 5) and the skin (11) in segmentation,
@@ -478,14 +541,22 @@ fn harness_llvmpipe_against_softpipe() {
         set.dedup();
         set
     };
-    assert_eq!(objects("basic_s0_320x240_seg"), [(-1, -1), (0, 5), (1, 5), (2, 5), (3, 5)]);
+    assert_eq!(
+        objects("basic_s0_320x240_seg"),
+        [(-1, -1), (0, 5), (1, 5), (2, 5), (3, 5)]
+    );
     assert_eq!(
         objects("full_s4_640x480_seg"),
         [(0, 5), (0, 11), (1, 5), (2, 5), (3, 5), (4, 5)]
     );
     for key in ["basic_s0_320x240", "full_s4_640x480"] {
-        let (rgb, overlay) = (llvm.npy(&format!("{key}_rgb")).unwrap(), llvm.npy(&format!("{key}_overlay")).unwrap());
-        let Diff::Rgb { over2, .. } = diff("rgb", &rgb, &overlay) else { unreachable!() };
+        let (rgb, overlay) = (
+            llvm.npy(&format!("{key}_rgb")).unwrap(),
+            llvm.npy(&format!("{key}_overlay")).unwrap(),
+        );
+        let Diff::Rgb { over2, .. } = diff("rgb", &rgb, &overlay) else {
+            unreachable!()
+        };
         // Two lines of 28-pixel text on a box, a big line and a shadowed line.
         assert!(over2 > 2000, "{key}: the overlay changed only {over2} pixels");
     }
@@ -531,7 +602,11 @@ fn softgl_against_llvmpipe() {
         return;
     }
     let sg = run(Backend::Softgl, "a", &[]);
-    assert!(sg.renderer.contains("softgl"), "softgl's library was not loaded: {:?}", sg.renderer);
+    assert!(
+        sg.renderer.contains("softgl"),
+        "softgl's library was not loaded: {:?}",
+        sg.renderer
+    );
     let disable: Vec<&str> = PATH_EXTENSIONS
         .into_iter()
         .filter(|e| !sg.extensions.iter().any(|s| s == e))
@@ -576,5 +651,10 @@ fn softgl_against_llvmpipe() {
         };
         println!("  {name:28} {line}");
     }
-    assert!(failures.is_empty(), "{} targets missed; first: {}", failures.len(), failures[0]);
+    assert!(
+        failures.is_empty(),
+        "{} targets missed; first: {}",
+        failures.len(),
+        failures[0]
+    );
 }
