@@ -423,6 +423,33 @@ impl std::fmt::Display for Diff {
     }
 }
 
+/// Writes `<name>-llvmpipe.ppm`, `<name>-softgl.ppm` and `<name>-diff.ppm` (the
+/// largest channel difference ×16 in red over llvmpipe's image darkened) into
+/// `dir`; returns the diff's path. The arrays are the Renderer's, top row first.
+fn write_diff(dir: &Path, name: &str, reference: &Npy, cand: &Npy) -> PathBuf {
+    let (h, w) = (reference.shape[0], reference.shape[1]);
+    let ppm = |file: &str, rgb: &[u8]| {
+        let mut out = format!("P6\n{w} {h}\n255\n").into_bytes();
+        out.extend_from_slice(rgb);
+        std::fs::write(dir.join(file), out).expect("write a .ppm");
+    };
+    ppm(&format!("{name}-llvmpipe.ppm"), &reference.data);
+    ppm(&format!("{name}-softgl.ppm"), &cand.data);
+    let diff: Vec<u8> = reference
+        .data
+        .chunks_exact(3)
+        .zip(cand.data.chunks_exact(3))
+        .flat_map(|(p, q)| {
+            let d = p.iter().zip(q).map(|(x, y)| x.abs_diff(*y)).fold(0, u8::max);
+            let grey = (p.iter().map(|&c| u16::from(c)).sum::<u16>() / 9) as u8;
+            [d.saturating_mul(16).max(grey), grey, grey]
+        })
+        .collect();
+    let path = dir.join(format!("{name}-diff.ppm"));
+    ppm(&format!("{name}-diff.ppm"), &diff);
+    path
+}
+
 /// The targets for one frame of `cand` against `reference`, with
 /// softpipe's distance as the bound for RGB: the failures, empty when met.
 fn targets(mode: &str, d: Diff, softpipe: Option<Diff>) -> Vec<String> {
@@ -561,6 +588,14 @@ fn harness_llvmpipe_against_softpipe() {
         assert!(over2 > 2000, "{key}: the overlay changed only {over2} pixels");
     }
 
+    // The diff images the softgl comparison writes for a missed RGB frame.
+    let name = "full_s0_320x240_rgb";
+    let ppm = write_diff(&soft.dir, name, &llvm.npy(name).unwrap(), &soft.npy(name).unwrap());
+    assert_eq!(
+        std::fs::read(ppm).unwrap().len(),
+        "P6\n320 240\n255\n".len() + 320 * 240 * 3
+    );
+
     println!("softpipe against llvmpipe:");
     for name in frame_names() {
         let mode = name.rsplit('_').next().unwrap();
@@ -639,7 +674,13 @@ fn softgl_against_llvmpipe() {
                 if s.gl_errors != "-" {
                     f.push(format!("GL errors {}", s.gl_errors));
                 }
-                let verdict = if f.is_empty() { "ok" } else { "MISSES" };
+                let verdict = if f.is_empty() {
+                    "ok".to_owned()
+                } else if matches!(d, Diff::Rgb { .. }) {
+                    format!("MISSES ({})", write_diff(&sg.dir, &name, &reference, &a).display())
+                } else {
+                    "MISSES".to_owned()
+                };
                 failures.extend(f.into_iter().map(|x| format!("{name}: {x}")));
                 format!("{verdict} {d}   [softpipe: {sp}]")
             }
