@@ -3,6 +3,7 @@
 (Mesa's by default) and logs what a client asks of it.
 
     python3 gltrace.py OUTDIR            # writes OUTDIR/gltrace.c, OUTDIR/libOSMesa.so.8
+    python3 gltrace.py --condense LOG    # the log, list bodies counted, pointers hidden
 
 Run a client with `LD_LIBRARY_PATH=OUTDIR`. Environment:
   GLTRACE_REAL  the OSMesa to forward to (default Debian's Mesa libOSMesa.so.8)
@@ -274,7 +275,33 @@ OSMESAproc OSMesaGetProcAddress(const char *name) {
     return "".join(out)
 
 
+def condense(path):
+    """Prints a log with pointers as `ptr` and each display list's body as one
+    line counting its calls by name."""
+    body = None
+    for line in open(path):
+        line = re.sub(r"0x[0-9a-f]{8,}", "ptr", line.rstrip("\n"))
+        if line.startswith("proc "):
+            continue
+        if body is not None:
+            if line.startswith("glEndList("):
+                counts = " ".join(f"{n}×{c}" for n, c in body.items())
+                print(f"  [{sum(body.values())} calls: {counts}]")
+                print(line)
+                body = None
+            else:
+                name = line.split("(")[0]
+                body[name] = body.get(name, 0) + 1
+            continue
+        print(line)
+        if line.startswith("glNewList("):
+            body = {}
+
+
 def main():
+    if sys.argv[1] == "--condense":
+        condense(sys.argv[2])
+        return
     outdir = sys.argv[1]
     os.makedirs(outdir, exist_ok=True)
     protos = prototypes()
@@ -284,6 +311,10 @@ def main():
     lib = os.path.join(outdir, "libOSMesa.so.8")
     subprocess.run(["cc", "-O1", "-w", "-shared", "-fPIC", "-DGL_GLEXT_PROTOTYPES", "-o", lib, src,
                     "-ldl", "-lpthread"], check=True)
+    # PyOpenGL dlopens libOSMesa.so before libOSMesa.so.8.
+    link = os.path.join(outdir, "libOSMesa.so")
+    if not os.path.lexists(link):
+        os.symlink("libOSMesa.so.8", link)
     print(lib)
 
 

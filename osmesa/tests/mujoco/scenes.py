@@ -16,8 +16,9 @@ and OUTDIR/results.json: GL strings, per frame the GL errors left after it
 (glGetError until 0), MuJoCo's warnings, the first exception, times.
 A failure in one frame is recorded and the next frame is tried.
 
-With the tracing libOSMesa of gltrace.py loaded and GLTRACE_FRAMES=1, each
-first frame of a (scene, samples, size, mode) is traced between marks.
+With the tracing libOSMesa of gltrace.py loaded, each first frame of a (scene,
+samples, size, mode) starts with a `mark` line; GLTRACE_FRAMES=1 traces those
+frames only (GLTRACE_CALLS=1: everything).
 """
 
 import json
@@ -153,8 +154,9 @@ class GL:
         return {"version": s(g.GL_VERSION), "renderer": s(g.GL_RENDERER), "vendor": s(g.GL_VENDOR)}
 
     def begin(self, name):
-        if self.trace:
+        if self.mark is not None:
             self.mark(name.encode())
+        if self.trace:
             self.enable(1)
 
     def end(self):
