@@ -21,8 +21,10 @@
 //! softgl cannot run MuJoCo yet, so its comparison is `#[ignore]`d and prints,
 //! per frame, how far it gets (`cargo test -p softgl-osmesa --test mujoco --
 //! --ignored --nocapture`; `SOFTGL_MUJOCO_LIB=<dir>` runs another build of the
-//! library, e.g. `target/release/osmesa`). The llvmpipe/softpipe comparison runs
-//! now and checks the harness itself.
+//! library, e.g. `target/release/osmesa`; a missed RGB frame leaves
+//! `<frame>-{llvmpipe,softgl,diff}.ppm` beside the arrays in
+//! `target/tmp/osmesa-clients/mujoco-softgl-a/`). The llvmpipe/softpipe
+//! comparison runs now and checks the harness itself.
 //!
 //! MuJoCo picks its depth format and projection from the extensions listed
 //! (`GL_ARB_depth_buffer_float`: DEPTH32F_STENCIL8 instead of DEPTH24_STENCIL8;
@@ -119,6 +121,8 @@ struct Status {
 struct Run {
     backend: Backend,
     dir: PathBuf,
+    /// MuJoCo's version (the figures here are 4.0.0's, which `.ci/run` installs).
+    mujoco: String,
     renderer: String,
     extensions: Vec<String>,
     frames: BTreeMap<String, Status>,
@@ -191,6 +195,7 @@ fn run(backend: Backend, tag: &str, disable: &[&str]) -> Run {
     let mut r = Run {
         backend,
         dir,
+        mujoco: String::new(),
         renderer: String::new(),
         extensions: Vec::new(),
         frames: BTreeMap::new(),
@@ -198,7 +203,9 @@ fn run(backend: Backend, tag: &str, disable: &[&str]) -> Run {
         warnings: Vec::new(),
     };
     for line in stdout.lines() {
-        if let Some(rest) = line.strip_prefix("gl ") {
+        if let Some(rest) = line.strip_prefix("mujoco ") {
+            r.mujoco = rest.to_owned();
+        } else if let Some(rest) = line.strip_prefix("gl ") {
             r.renderer = rest.to_owned();
         } else if let Some(rest) = line.strip_prefix("extensions") {
             r.extensions = rest.split_whitespace().map(str::to_owned).collect();
@@ -596,7 +603,7 @@ fn harness_llvmpipe_against_softpipe() {
         "P6\n320 240\n255\n".len() + 320 * 240 * 3
     );
 
-    println!("softpipe against llvmpipe:");
+    println!("MuJoCo {}; softpipe against llvmpipe:", llvm.mujoco);
     for name in frame_names() {
         let mode = name.rsplit('_').next().unwrap();
         let d = diff(mode, &llvm.npy(&name).unwrap(), &soft.npy(&name).unwrap());
@@ -650,7 +657,10 @@ fn softgl_against_llvmpipe() {
     let soft = run(Backend::Softpipe, "ref", &disable);
     assert_clean(&llvm);
     assert_clean(&soft);
-    println!("softgl: {} (MuJoCo's extensions: {:?})", sg.renderer, sg.extensions);
+    println!(
+        "MuJoCo {}; softgl: {} (MuJoCo's extensions: {:?})",
+        sg.mujoco, sg.renderer, sg.extensions
+    );
     println!("references with {disable:?} turned off");
     if let Some(e) = &sg.ended {
         println!("softgl's run: {e}");

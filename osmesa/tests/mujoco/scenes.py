@@ -184,6 +184,7 @@ def probe_gl():
     ext = (g.gl.glGetString(g.gl.GL_EXTENSIONS) or b"").decode().split()
     ctx.free()
     strings["glad_extensions"] = [e for e in GLAD_EXTENSIONS if e in ext]
+    print(f"mujoco {mujoco.__version__}", flush=True)
     print(f"gl {strings['version']} | {strings['renderer']}", flush=True)
     print("extensions " + " ".join(strings["glad_extensions"]), flush=True)
     return strings
