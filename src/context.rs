@@ -362,6 +362,8 @@ pub struct Context {
     ordered_dither: bool,
     /// Texture objects, their bindings per unit, the active unit (`texture/`).
     pub(crate) textures: Tracked<crate::texture::TextureStore>,
+    /// Buffer objects and their bindings (`buffer.rs`).
+    buffers: crate::buffer::BufferStore,
     /// Draws and clears not yet rasterized (`raster/scene.rs`).
     scene: Scene,
     /// A scene flushing on the pool while `scene` records, holding the
@@ -440,6 +442,7 @@ impl Context {
             specialists: SpecialistCache::from_env(),
             ordered_dither: std::env::var("SOFTGL_DITHER").is_ok_and(|v| v.trim() == "1"),
             textures: Tracked::new(crate::texture::TextureStore::new()),
+            buffers: crate::buffer::BufferStore::new(),
             scene: Scene::default(),
             background: Background::default(),
             spare: Spare::default(),
@@ -453,6 +456,16 @@ impl Context {
     pub fn framebuffer(&mut self) -> &Framebuffer {
         self.finish_scene();
         &self.fb
+    }
+
+    /// The buffer objects (GL 1.5) and their bindings.
+    pub fn buffers(&self) -> &crate::buffer::BufferStore {
+        &self.buffers
+    }
+
+    /// The buffer objects, to change.
+    pub fn buffers_mut(&mut self) -> &mut crate::buffer::BufferStore {
+        &mut self.buffers
     }
 
     /// The framebuffer's size and formats (no flush needed).

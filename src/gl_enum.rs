@@ -7,6 +7,7 @@
 //! (a new variant without a value does not compile) and a `match` for
 //! [`GlEnum::from_gl`] (a value listed twice is an unreachable-pattern lint).
 
+use crate::buffer::{BufferAccess, BufferParamName, BufferTarget, BufferUsage};
 use crate::fog::{FogCoordSrc, FogMode};
 use crate::lighting::{ColorControl, ColorMaterialMode, LightParamName, MaterialParamName};
 use crate::matrix::MatrixMode;
@@ -59,6 +60,32 @@ macro_rules! gl_enums {
 }
 
 gl_enums! {
+    BufferTarget {
+        Array = GL_ARRAY_BUFFER 0x8892,
+        ElementArray = GL_ELEMENT_ARRAY_BUFFER 0x8893,
+    }
+    BufferUsage {
+        StreamDraw = GL_STREAM_DRAW 0x88E0,
+        StreamRead = GL_STREAM_READ 0x88E1,
+        StreamCopy = GL_STREAM_COPY 0x88E2,
+        StaticDraw = GL_STATIC_DRAW 0x88E4,
+        StaticRead = GL_STATIC_READ 0x88E5,
+        StaticCopy = GL_STATIC_COPY 0x88E6,
+        DynamicDraw = GL_DYNAMIC_DRAW 0x88E8,
+        DynamicRead = GL_DYNAMIC_READ 0x88E9,
+        DynamicCopy = GL_DYNAMIC_COPY 0x88EA,
+    }
+    BufferAccess {
+        ReadOnly = GL_READ_ONLY 0x88B8,
+        WriteOnly = GL_WRITE_ONLY 0x88B9,
+        ReadWrite = GL_READ_WRITE 0x88BA,
+    }
+    BufferParamName {
+        Size = GL_BUFFER_SIZE 0x8764,
+        Usage = GL_BUFFER_USAGE 0x8765,
+        Access = GL_BUFFER_ACCESS 0x88BB,
+        Mapped = GL_BUFFER_MAPPED 0x88BC,
+    }
     PrimitiveMode {
         Points = GL_POINTS 0x0000,
         Lines = GL_LINES 0x0001,

@@ -20,7 +20,10 @@ pub struct ClientArray {
     pub size: i32,
     pub ty: GLenum,
     pub stride: i32,
+    /// A client pointer, or an offset into `buffer` when that is not 0.
     pub ptr: *const u8,
+    /// The `GL_ARRAY_BUFFER` bound when the pointer was set (GL 1.5).
+    pub buffer: u32,
 }
 
 impl ClientArray {
@@ -31,6 +34,7 @@ impl ClientArray {
             ty: GL_FLOAT,
             stride: 0,
             ptr: std::ptr::null(),
+            buffer: 0,
         }
     }
 }
@@ -107,6 +111,9 @@ pub struct ClientArrays {
     pub fog_coord: ClientArray,
     pub edge_flag: ClientArray,
     pub client_active: usize,
+    /// The `GL_ARRAY_BUFFER` and `GL_ELEMENT_ARRAY_BUFFER` bindings (the
+    /// GL context holds them: `gl::attrib` fills them in).
+    pub buffers: (u32, u32),
 }
 
 /// The state one `glPushClientAttrib` saved.
@@ -190,6 +197,7 @@ impl GlState {
             fog_coord: self.fog_coord,
             edge_flag: self.edge_flag,
             client_active: self.client_active,
+            buffers: (0, 0),
         }
     }
 
@@ -203,6 +211,14 @@ impl GlState {
     /// The client active unit's texture coordinate array.
     pub fn tex_coord(&self) -> &ClientArray {
         &self.tex_coords[self.client_active]
+    }
+
+    /// Every client array, to visit (`glDeleteBuffers` unbinds them).
+    pub fn all_arrays_mut(&mut self) -> impl Iterator<Item = &mut ClientArray> {
+        [&mut self.vertex, &mut self.color, &mut self.normal]
+            .into_iter()
+            .chain(self.tex_coords.iter_mut())
+            .chain([&mut self.secondary, &mut self.fog_coord, &mut self.edge_flag])
     }
 
     /// The client array `glEnableClientState` names, if softgl has it.

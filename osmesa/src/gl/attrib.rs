@@ -6,7 +6,7 @@
 use super::texture::TARGETS;
 use super::{now, rec};
 use crate::consts::*;
-use crate::gl_state::{GlState, SavedAttrib, SavedClient, SavedTextures, MAX_UNITS};
+use crate::gl_state::{ClientArrays, GlState, SavedAttrib, SavedClient, SavedTextures, MAX_UNITS};
 use softgl::lighting::LightingState;
 use softgl::texture::TexParamName;
 use softgl::GlEnum;
@@ -302,7 +302,10 @@ exports! {
                 mask,
                 pack: os.pack,
                 unpack: os.unpack,
-                arrays: os.arrays(),
+                arrays: ClientArrays {
+                    buffers: super::buffers::bindings(gl),
+                    ..os.arrays()
+                },
             };
             os.client_attrib_stack.push(saved);
             Ok(())
@@ -317,6 +320,7 @@ exports! {
             }
             if s.mask & CLIENT_VERTEX_ARRAY_BIT != 0 {
                 os.set_arrays(s.arrays);
+                super::buffers::restore_bindings(os, gl, s.arrays.buffers);
             }
             Ok(())
         })

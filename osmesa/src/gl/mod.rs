@@ -23,6 +23,7 @@ macro_rules! exports {
 
 mod arrays;
 mod attrib;
+mod buffers;
 mod enums;
 mod extra_attribs;
 mod fog;
@@ -38,6 +39,7 @@ mod texunit;
 
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
+pub use buffers::*;
 pub use extra_attribs::*;
 pub use fog::*;
 pub use get::*;
@@ -55,6 +57,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
     [
         arrays::table,
         attrib::table,
+        buffers::table,
         extra_attribs::table,
         fog::table,
         fog::color_table,
