@@ -270,10 +270,7 @@ fn get<T: Copy>(pname: GLenum, out: *mut T, conv: impl FnOnce(&Val) -> Vec<T>) {
 const VENDOR: &std::ffi::CStr = c"softgl";
 const RENDERER_INTERP: &std::ffi::CStr = c"softgl (interpreter)";
 const RENDERER_JIT: &std::ffi::CStr = c"softgl (Cranelift JIT)";
-pub(crate) const VERSION: &std::ffi::CStr = c"1.1 softgl 0.1.0";
-/// Each name followed by a space, the last one too, as Mesa's (docs/llvmpipe-facts.md §13).
-const EXTENSIONS: &std::ffi::CStr =
-    c"GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract ";
+pub(crate) use super::extensions::VERSION;
 
 exports! {
     /// `GL_VENDOR`, `GL_RENDERER`, `GL_VERSION` ("1.1 softgl …") and
@@ -285,7 +282,7 @@ exports! {
                 GL_RENDERER if gl.backend() == Backend::Jit => RENDERER_JIT,
                 GL_RENDERER => RENDERER_INTERP,
                 GL_VERSION => VERSION,
-                GL_EXTENSIONS => EXTENSIONS,
+                GL_EXTENSIONS => super::extensions::extensions_string(),
                 _ => {
                     gl.record_error(GlError::InvalidEnum);
                     return std::ptr::null();

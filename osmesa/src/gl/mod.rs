@@ -25,6 +25,7 @@ mod arrays;
 mod attrib;
 mod buffers;
 mod enums;
+mod extensions;
 mod extra_attribs;
 mod fog;
 pub(crate) mod get;
@@ -77,8 +78,11 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
 }
 
 /// The address of the export called `name`.
+/// The address of the export called `name`, or of the core function that
+/// answers an advertised extension's entry point (`gl::extensions`).
 pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
-    all_exports().find(|(n, _)| *n == name).map(|(_, p)| p)
+    let find = |name: &str| all_exports().find(|(n, _)| *n == name).map(|(_, p)| p);
+    find(name).or_else(|| find(extensions::core_name(name)?))
 }
 
 /// Every `gl*` name this library exports.
