@@ -11,6 +11,7 @@ use crate::buffer::{BufferAccess, BufferParamName, BufferTarget, BufferUsage};
 use crate::fog::{FogCoordSrc, FogMode};
 use crate::lighting::{ColorControl, ColorMaterialMode, LightParamName, MaterialParamName};
 use crate::matrix::MatrixMode;
+use crate::query::{QueryObjectParam, QueryParam, QueryTarget};
 use crate::state::{Capability, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};
 use crate::texture::unit::{TexCoordName, TexGenMode};
 use softgl_jit::texture::{CombineFn, CombineSrc, EnvMode, Operand};
@@ -60,6 +61,17 @@ macro_rules! gl_enums {
 }
 
 gl_enums! {
+    QueryTarget {
+        SamplesPassed = GL_SAMPLES_PASSED 0x8914,
+    }
+    QueryParam {
+        CounterBits = GL_QUERY_COUNTER_BITS 0x8864,
+        CurrentQuery = GL_CURRENT_QUERY 0x8865,
+    }
+    QueryObjectParam {
+        Result = GL_QUERY_RESULT 0x8866,
+        ResultAvailable = GL_QUERY_RESULT_AVAILABLE 0x8867,
+    }
     BufferTarget {
         Array = GL_ARRAY_BUFFER 0x8892,
         ElementArray = GL_ELEMENT_ARRAY_BUFFER 0x8893,

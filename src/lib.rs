@@ -32,6 +32,7 @@ pub(crate) mod immediate;
 pub mod inverse;
 pub mod lighting;
 pub mod matrix;
+pub mod query;
 pub mod raster;
 pub mod state;
 pub mod texture;
@@ -48,6 +49,7 @@ pub use lighting::{
     ColorControl, ColorMaterialMode, LightModelParam, LightParam, LightParamName, MaterialParam, MaterialParamName,
 };
 pub use matrix::MatrixMode;
+pub use query::{QueryObjectParam, QueryParam, QueryStore, QueryTarget};
 pub use softgl_jit::rng;
 pub use softgl_jit::{
     BlendEquation, BlendFactor, CacheStats, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,

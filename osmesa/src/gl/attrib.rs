@@ -163,6 +163,7 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
     }
     if m & POINT_BIT != 0 {
         gl.point_size(st.point_size)?;
+        gl.point_parameters(st.point_params)?;
     }
     if m & LINE_BIT != 0 {
         gl.line_width(st.line_width)?;

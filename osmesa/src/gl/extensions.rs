@@ -62,6 +62,23 @@ pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
         ],
     ),
     ("GL_ARB_depth_texture", &[]),
+    (
+        "GL_ARB_occlusion_query",
+        &[
+            "glGenQueriesARB",
+            "glDeleteQueriesARB",
+            "glIsQueryARB",
+            "glBeginQueryARB",
+            "glEndQueryARB",
+            "glGetQueryivARB",
+            "glGetQueryObjectivARB",
+            "glGetQueryObjectuivARB",
+        ],
+    ),
+    (
+        "GL_ARB_point_parameters",
+        &["glPointParameterfARB", "glPointParameterfvARB"],
+    ),
     ("GL_ARB_shadow", &[]),
     ("GL_ARB_texture_border_clamp", &[]),
     (
@@ -83,6 +100,15 @@ pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
     ("GL_ARB_texture_env_dot3", &[]),
     ("GL_ARB_texture_mirrored_repeat", &[]),
     ("GL_ARB_texture_non_power_of_two", &[]),
+    (
+        "GL_ARB_transpose_matrix",
+        &[
+            "glLoadTransposeMatrixfARB",
+            "glLoadTransposeMatrixdARB",
+            "glMultTransposeMatrixfARB",
+            "glMultTransposeMatrixdARB",
+        ],
+    ),
     (
         "GL_ARB_vertex_buffer_object",
         &[
@@ -131,6 +157,10 @@ pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
         &["glMultiDrawArraysEXT", "glMultiDrawElementsEXT"],
     ),
     ("GL_EXT_packed_pixels", &[]),
+    (
+        "GL_EXT_point_parameters",
+        &["glPointParameterfEXT", "glPointParameterfvEXT"],
+    ),
     ("GL_EXT_rescale_normal", &[]),
     (
         "GL_EXT_secondary_color",

@@ -130,6 +130,9 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     if let Some(h) = HINTS.iter().position(|&t| t == pname) {
         return Ok(e(os.hints[h]));
     }
+    if let Some(v) = super::gl14::value(os, gl, pname) {
+        return Ok(v);
+    }
     if let Some(v) = super::buffers::value(os, gl, pname) {
         return Ok(v);
     }

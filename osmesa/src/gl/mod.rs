@@ -29,11 +29,13 @@ mod extensions;
 mod extra_attribs;
 mod fog;
 pub(crate) mod get;
+mod gl14;
 mod immediate;
 mod lighting;
 mod lists;
 mod missing;
 mod pixels;
+mod queries;
 mod state;
 mod texture;
 mod texunit;
@@ -44,11 +46,13 @@ pub use buffers::*;
 pub use extra_attribs::*;
 pub use fog::*;
 pub use get::*;
+pub use gl14::*;
 pub use immediate::*;
 pub use lighting::*;
 pub use lists::*;
 pub use missing::*;
 pub use pixels::*;
+pub use queries::*;
 pub use state::*;
 pub use texture::*;
 pub use texunit::*;
@@ -62,12 +66,14 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         extra_attribs::table,
         fog::table,
         fog::color_table,
+        gl14::table,
         get::table,
         immediate::table,
         lighting::table,
         lists::table,
         missing::table,
         pixels::table,
+        queries::table,
         state::table,
         texture::table,
         texunit::table,
