@@ -64,6 +64,13 @@ fn source(a: &ClientArray, buffers: &BufferStore) -> GlResult<Option<Source>> {
     }))
 }
 
+/// `n` zeros: an element past its buffer's end. Out of the element loop's way.
+#[cold]
+#[inline(never)]
+fn zeros(n: usize, out: &mut Vec<f32>) {
+    out.extend(std::iter::repeat_n(0.0, n));
+}
+
 /// Element `i` of `s` as floats, integer colours normalised when
 /// `normalize`. An element that does not lie wholly inside its buffer
 /// object reads as zeros, as llvmpipe reads it (docs/llvmpipe-facts.md §23).
@@ -71,6 +78,7 @@ fn source(a: &ClientArray, buffers: &BufferStore) -> GlResult<Option<Source>> {
 /// # Safety
 /// `s.a.ptr` holds element `i` when `s.limit` is `usize::MAX` (GL's
 /// contract for enabled client arrays); otherwise `s.limit` bytes exist there.
+#[inline(always)]
 unsafe fn fetch(s: &Source, i: usize, normalize: bool, out: &mut Vec<f32>) {
     let a = &s.a;
     let size = type_size(a.ty).unwrap_or(4);
@@ -79,8 +87,7 @@ unsafe fn fetch(s: &Source, i: usize, normalize: bool, out: &mut Vec<f32>) {
     if s.limit != usize::MAX {
         let end = i.checked_mul(stride).and_then(|o| o.checked_add(n * size));
         if end.is_none_or(|e| e > s.limit) {
-            out.extend(std::iter::repeat_n(0.0, n));
-            return;
+            return zeros(n, out);
         }
     }
     // SAFETY: element `i` lies at `i * stride` in the caller's array.
@@ -380,13 +387,7 @@ pub(super) fn pointer(
 fn client_state(array: GLenum, on: bool) {
     now(|os, gl| {
         outside(gl)?;
-        let a = match (os.array_mut(array), array) {
-            (Some(a), _) => a,
-            // Colour-index arrays do not exist in softgl yet.
-            (None, GL_INDEX_ARRAY) if on => return Err(GlError::InvalidOperation),
-            (None, GL_INDEX_ARRAY) => return Ok(()),
-            (None, _) => return Err(GlError::InvalidEnum),
-        };
+        let a = os.array_mut(array).ok_or(GlError::InvalidEnum)?;
         a.enabled = on;
         Ok(())
     })
@@ -430,6 +431,14 @@ exports! {
     /// `ptr` stays valid while drawing reads it (GL's contract).
     [unsafe] fn glEdgeFlagPointer(stride: i32, ptr: *const c_void) {
         pointer(|o| &mut o.edge_flag, &[1], 1, GL_UNSIGNED_BYTE, &[GL_UNSIGNED_BYTE], stride, ptr)
+    }
+    /// Kept and queried; an RGBA context draws without colour indices.
+    ///
+    /// # Safety
+    /// `ptr` stays valid while drawing reads it (GL's contract).
+    [unsafe] fn glIndexPointer(ty: GLenum, stride: i32, ptr: *const c_void) {
+        let types = [GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+        pointer(|o| &mut o.index, &[1], 1, ty, &types, stride, ptr)
     }
     [] fn glEnableClientState(array: GLenum) {
         client_state(array, true)
@@ -562,6 +571,7 @@ exports! {
                 GL_NORMAL_ARRAY_POINTER => os.normal.ptr,
                 GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord().ptr,
                 GL_EDGE_FLAG_ARRAY_POINTER => os.edge_flag.ptr,
+                0x8091 => os.index.ptr, // GL_INDEX_ARRAY_POINTER
                 0x845D => os.secondary.ptr, // GL_SECONDARY_COLOR_ARRAY_POINTER
                 0x8456 => os.fog_coord.ptr, // GL_FOG_COORD_ARRAY_POINTER
                 _ => return Err(GlError::InvalidEnum),

@@ -224,6 +224,7 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         set_cap(gl, Capability::ColorLogicOp, st.color_logic_op)?;
     }
     if m & COLOR_BIT != 0 {
+        (os.clear_index, os.index_mask) = s.index;
         gl.alpha_func(st.alpha_func, st.alpha_ref)?;
         let b = st.blend_func;
         gl.blend_func_separate(b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha)?;
@@ -279,6 +280,7 @@ exports! {
                 matrix_mode: gl.current_matrix_mode(),
                 hints: os.hints,
                 inert_caps: os.inert_caps.clone(),
+                index: (os.clear_index, os.index_mask),
             };
             os.attrib_stack.push(saved);
             Ok(())

@@ -46,7 +46,7 @@ pub(super) fn value(os: &GlState, gl: &Context, pname: GLenum) -> Option<Val> {
         0x8896 => os.vertex.buffer,
         0x8897 => os.normal.buffer,
         0x8898 => os.color.buffer,
-        0x8899 => 0, // INDEX_ARRAY_BUFFER_BINDING: no colour-index arrays
+        0x8899 => os.index.buffer,
         0x889A => os.tex_coord().buffer,
         0x889B => os.edge_flag.buffer,
         0x889C => os.secondary.buffer,

@@ -79,7 +79,8 @@ pub(super) fn is_enabled(os: &GlState, gl: &Context, cap: GLenum) -> GlResult<bo
         GL_TEXTURE_COORD_ARRAY => os.tex_coord().enabled,
         super::fog::GL_SECONDARY_COLOR_ARRAY => os.secondary.enabled,
         super::fog::GL_FOG_COORD_ARRAY => os.fog_coord.enabled,
-        GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY => false,
+        GL_INDEX_ARRAY => os.index.enabled,
+        GL_EDGE_FLAG_ARRAY => os.edge_flag.enabled,
         _ => match enums::cap(cap)? {
             Cap::Core(c) => gl.is_enabled(c),
             Cap::Inert(c) => os.inert_caps.contains(&c),
@@ -238,7 +239,12 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x807E => e(os.normal.ty), // NORMAL_ARRAY_TYPE
         0x807F => i(os.normal.stride),
         GL_EDGE_FLAG_ARRAY => Val::B(vec![os.edge_flag.enabled]),
-        0x808C => i(os.edge_flag.stride),               // EDGE_FLAG_ARRAY_STRIDE
+        0x808C => i(os.edge_flag.stride), // EDGE_FLAG_ARRAY_STRIDE
+        GL_INDEX_ARRAY => Val::B(vec![os.index.enabled]),
+        0x8085 => e(os.index.ty),                       // INDEX_ARRAY_TYPE
+        0x8086 => i(os.index.stride),                   // INDEX_ARRAY_STRIDE
+        0x0C20 => f(os.clear_index),                    // INDEX_CLEAR_VALUE
+        0x0C21 => i(i64::from(os.index_mask as i32)),   // INDEX_WRITEMASK
         0x0B01 => f(gl.current().index),                // CURRENT_INDEX
         0x0B43 => Val::B(vec![gl.current().edge_flag]), // EDGE_FLAG
         _ => match enums::cap(pname)? {

@@ -31,6 +31,7 @@ mod fog;
 pub(crate) mod get;
 mod gl14;
 mod immediate;
+mod index;
 mod lighting;
 mod lists;
 mod missing;
@@ -48,6 +49,7 @@ pub use fog::*;
 pub use get::*;
 pub use gl14::*;
 pub use immediate::*;
+pub use index::*;
 pub use lighting::*;
 pub use lists::*;
 pub use missing::*;
@@ -69,6 +71,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         gl14::table,
         get::table,
         immediate::table,
+        index::table,
         lighting::table,
         lists::table,
         missing::table,

@@ -160,6 +160,44 @@ int main(int argc, char **argv) {
   glGetFloatv(GL_SAMPLE_COVERAGE_VALUE, &cv);
   printf("coverage clamped %g\n", cv);
 
+  /* Colour-index state of an RGBA context: kept, queried, without effect. */
+  GLint iv = 7;
+  GLfloat fv = 7;
+  glGetFloatv(GL_INDEX_CLEAR_VALUE, &fv);
+  glGetIntegerv(GL_INDEX_WRITEMASK, &iv);
+  printf("index clear %g mask %d\n", fv, iv);
+  E(glClearIndex(3.5f));
+  E(glIndexMask(0x0f));
+  E(glPushAttrib(GL_COLOR_BUFFER_BIT));
+  glClearIndex(1);
+  glIndexMask(0xff);
+  E(glPopAttrib());
+  glGetFloatv(GL_INDEX_CLEAR_VALUE, &fv);
+  glGetIntegerv(GL_INDEX_WRITEMASK, &iv);
+  printf("index clear %g mask %d after pop\n", fv, iv);
+  static const GLshort idx[8] = {1, 2, 3, 4, 5, 6, 7, 8};
+  E(glIndexPointer(GL_SHORT, 4, idx));
+  E(glIndexPointer(GL_BYTE, 0, idx));
+  E(glIndexPointer(GL_SHORT, -1, idx));
+  E(glEnableClientState(GL_INDEX_ARRAY));
+  GLint ty = 0;
+  glGetIntegerv(GL_INDEX_ARRAY_TYPE, &ty);
+  void *ip = NULL;
+  glGetPointerv(GL_INDEX_ARRAY_POINTER, &ip);
+  printf("index array on %d type 0x%x pointer same %d error 0x%x\n", glIsEnabled(GL_INDEX_ARRAY), ty,
+         ip == (void *)idx, glGetError());
+  static const GLfloat tri3[6] = {0.9f, 0.9f, 0.95f, 0.9f, 0.9f, 0.95f};
+  glLoadIdentity();
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glVertexPointer(2, GL_FLOAT, 0, tri3);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  E(glDrawArrays(GL_TRIANGLES, 0, 3));
+  E(glDisableClientState(GL_INDEX_ARRAY));
+  E(glEnableClientState(GL_EDGE_FLAG_ARRAY));
+  printf("edge flag array on %d\n", glIsEnabled(GL_EDGE_FLAG_ARRAY));
+  glDisableClientState(GL_EDGE_FLAG_ARRAY);
+
   glFinish();
   dump("gl14.color", buf, sizeof buf);
   OSMesaDestroyContext(ctx);
