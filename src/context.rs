@@ -362,6 +362,10 @@ pub struct Context {
     ordered_dither: bool,
     /// Texture objects, their bindings per unit, the active unit (`texture/`).
     pub(crate) textures: Tracked<crate::texture::TextureStore>,
+    /// Buffer objects and their bindings (`buffer.rs`).
+    buffers: crate::buffer::BufferStore,
+    /// Occlusion queries (`query.rs`).
+    queries: crate::query::QueryStore,
     /// Draws and clears not yet rasterized (`raster/scene.rs`).
     scene: Scene,
     /// A scene flushing on the pool while `scene` records, holding the
@@ -440,6 +444,8 @@ impl Context {
             specialists: SpecialistCache::from_env(),
             ordered_dither: std::env::var("SOFTGL_DITHER").is_ok_and(|v| v.trim() == "1"),
             textures: Tracked::new(crate::texture::TextureStore::new()),
+            buffers: crate::buffer::BufferStore::new(),
+            queries: crate::query::QueryStore::new(),
             scene: Scene::default(),
             background: Background::default(),
             spare: Spare::default(),
@@ -453,6 +459,46 @@ impl Context {
     pub fn framebuffer(&mut self) -> &Framebuffer {
         self.finish_scene();
         &self.fb
+    }
+
+    /// The buffer objects (GL 1.5) and their bindings.
+    pub fn buffers(&self) -> &crate::buffer::BufferStore {
+        &self.buffers
+    }
+
+    /// The buffer objects, to change.
+    pub fn buffers_mut(&mut self) -> &mut crate::buffer::BufferStore {
+        &mut self.buffers
+    }
+
+    /// The occlusion queries (GL 1.5).
+    pub fn queries(&self) -> &crate::query::QueryStore {
+        &self.queries
+    }
+
+    /// The occlusion queries, to make, begin, end and delete.
+    pub fn queries_mut(&mut self) -> &mut crate::query::QueryStore {
+        &mut self.queries
+    }
+
+    /// The number of fragments query `name` counted: the scene is flushed
+    /// first, so the count is whole (GL's `GL_QUERY_RESULT`).
+    pub fn query_result(&mut self, name: u32) -> GlResult<u64> {
+        self.queries.samples(name)?;
+        self.finish_scene();
+        self.queries.settled(name);
+        self.queries.samples(name)
+    }
+
+    /// Whether query `name`'s result is available (GL's
+    /// `GL_QUERY_RESULT_AVAILABLE`), as llvmpipe answers: not the first
+    /// time after `end_query`, which flushes the scene; yes from then on.
+    pub fn query_available(&mut self, name: u32) -> GlResult<bool> {
+        let available = self.queries.available(name)?;
+        if !available {
+            self.finish_scene();
+        }
+        Ok(available)
     }
 
     /// The framebuffer's size and formats (no flush needed).
@@ -850,6 +896,15 @@ impl Context {
     }
 
     /// `glPointSize`; `InvalidValue` unless positive.
+    /// GL 1.4's `glPointParameter`: the size bounds, fade threshold and
+    /// distance attenuation. `GL_INVALID_VALUE` for a negative bound or
+    /// threshold.
+    pub fn point_parameters(&mut self, params: crate::state::PointParams) -> GlResult {
+        let p = params;
+        self.require(p.size_min >= 0.0 && p.size_max >= 0.0 && p.fade_threshold >= 0.0)?;
+        self.set(|s| s.point_params = p)
+    }
+
     pub fn point_size(&mut self, size: f32) -> GlResult {
         self.require(size > 0.0)?;
         self.set(|s| s.point_size = size)
@@ -1373,6 +1428,7 @@ impl Context {
         vertex_stage.tex_coords = tex_coords.as_ref().map(|t| (t, TexFetch(tex)));
         let mut geometry = Geometry::new(&self.state, &self.fb, reads_depth, layout);
         geometry.set_user_planes(self.projection.top());
+        geometry.set_point_projection(self.projection.top());
         // The framebuffer may be hollow (its buffers with a background
         // flush): the key is checked against its formats.
         let fb = &self.fb;
@@ -1382,6 +1438,9 @@ impl Context {
         {
             return self.record(Err(GlError::InvalidOperation));
         }
+        // An active occlusion query: the draw's fragments are counted into its counter.
+        let samples = self.queries.counter();
+        key.count = samples.is_some();
         let specialist = match self.backend {
             Backend::Jit => self.specialists.get(&key).cloned(),
             Backend::Interpreter => None,
@@ -1391,6 +1450,7 @@ impl Context {
             uniforms,
             specialist,
             textures: textures.share(),
+            samples,
         };
         let mut binner = self.scene.draw(&mut self.fb, &mut self.background, self.threads, state);
         geometry.draw(&vertex_stage, mode, count, fetch, &mut binner, &mut self.window);

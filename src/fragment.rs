@@ -22,6 +22,7 @@ use softgl_jit::{
     interp, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target,
     SPAN_MAX,
 };
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// Spans handed to the back end at once.
 const BATCH: usize = 32;
@@ -71,6 +72,8 @@ pub struct DrawStage<'t> {
     span_z: bool,
     /// Bit `u` set when unit `u` samples (its coordinate slots are read).
     tex_units: u8,
+    /// The occlusion query counter the key's counted fragments go to.
+    samples: Option<&'t AtomicU64>,
 }
 
 impl<'t> DrawStage<'t> {
@@ -98,7 +101,16 @@ impl<'t> DrawStage<'t> {
                     .filter(|&u| s.tex[u].is_some())
                     .fold(0, |m, u| m | 1 << u)
             }),
+            samples: None,
         })
+    }
+
+    /// The same stages, their counted fragments (keys that count) added to `samples`.
+    pub fn counting_into(self, samples: Option<&'t AtomicU64>) -> Self {
+        DrawStage {
+            samples: samples.filter(|_| self.key.count),
+            ..self
+        }
     }
 
     /// The specialist that runs, if any (else the interpreter).
@@ -163,6 +175,7 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
             }
         }
         self.run();
+        self.hand_over_count();
         // A new draw's primitives write their planes before their spans.
         self.planes_len = 0;
         self.draw = Some((draw, view));
@@ -243,9 +256,20 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
         }
     }
 
+    /// Adds what the target counted for the current draw to its query's
+    /// counter: once a band leaves a draw, not once a batch.
+    fn hand_over_count(&mut self) {
+        if let Some((d, _)) = self.draw {
+            if let Some(c) = d.samples {
+                c.fetch_add(self.target.take_samples_passed(), Ordering::Relaxed);
+            }
+        }
+    }
+
     /// Runs what is left and reports the first error, if any.
     pub fn finish(mut self) -> Result<(), FragmentError> {
         self.run();
+        self.hand_over_count();
         self.error.map_or(Ok(()), Err)
     }
 }

@@ -7,9 +7,11 @@
 //! (a new variant without a value does not compile) and a `match` for
 //! [`GlEnum::from_gl`] (a value listed twice is an unreachable-pattern lint).
 
+use crate::buffer::{BufferAccess, BufferParamName, BufferTarget, BufferUsage};
 use crate::fog::{FogCoordSrc, FogMode};
 use crate::lighting::{ColorControl, ColorMaterialMode, LightParamName, MaterialParamName};
 use crate::matrix::MatrixMode;
+use crate::query::{QueryObjectParam, QueryParam, QueryTarget};
 use crate::state::{Capability, Face, FrontFace, PolygonMode, PrimitiveMode, ShadeModel};
 use crate::texture::unit::{TexCoordName, TexGenMode};
 use softgl_jit::texture::{CombineFn, CombineSrc, EnvMode, Operand};
@@ -59,6 +61,43 @@ macro_rules! gl_enums {
 }
 
 gl_enums! {
+    QueryTarget {
+        SamplesPassed = GL_SAMPLES_PASSED 0x8914,
+    }
+    QueryParam {
+        CounterBits = GL_QUERY_COUNTER_BITS 0x8864,
+        CurrentQuery = GL_CURRENT_QUERY 0x8865,
+    }
+    QueryObjectParam {
+        Result = GL_QUERY_RESULT 0x8866,
+        ResultAvailable = GL_QUERY_RESULT_AVAILABLE 0x8867,
+    }
+    BufferTarget {
+        Array = GL_ARRAY_BUFFER 0x8892,
+        ElementArray = GL_ELEMENT_ARRAY_BUFFER 0x8893,
+    }
+    BufferUsage {
+        StreamDraw = GL_STREAM_DRAW 0x88E0,
+        StreamRead = GL_STREAM_READ 0x88E1,
+        StreamCopy = GL_STREAM_COPY 0x88E2,
+        StaticDraw = GL_STATIC_DRAW 0x88E4,
+        StaticRead = GL_STATIC_READ 0x88E5,
+        StaticCopy = GL_STATIC_COPY 0x88E6,
+        DynamicDraw = GL_DYNAMIC_DRAW 0x88E8,
+        DynamicRead = GL_DYNAMIC_READ 0x88E9,
+        DynamicCopy = GL_DYNAMIC_COPY 0x88EA,
+    }
+    BufferAccess {
+        ReadOnly = GL_READ_ONLY 0x88B8,
+        WriteOnly = GL_WRITE_ONLY 0x88B9,
+        ReadWrite = GL_READ_WRITE 0x88BA,
+    }
+    BufferParamName {
+        Size = GL_BUFFER_SIZE 0x8764,
+        Usage = GL_BUFFER_USAGE 0x8765,
+        Access = GL_BUFFER_ACCESS 0x88BB,
+        Mapped = GL_BUFFER_MAPPED 0x88BC,
+    }
     PrimitiveMode {
         Points = GL_POINTS 0x0000,
         Lines = GL_LINES 0x0001,

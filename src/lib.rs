@@ -19,6 +19,7 @@
 //! ```
 #![forbid(unsafe_code)]
 
+pub mod buffer;
 pub mod context;
 pub mod demo;
 pub mod error;
@@ -31,11 +32,13 @@ pub(crate) mod immediate;
 pub mod inverse;
 pub mod lighting;
 pub mod matrix;
+pub mod query;
 pub mod raster;
 pub mod state;
 pub mod texture;
 pub mod tracked;
 
+pub use buffer::{Buffer, BufferAccess, BufferParamName, BufferStore, BufferTarget, BufferUsage};
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, SceneStats, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fog::{FogCoordSrc, FogMode, FogParam};
@@ -46,6 +49,7 @@ pub use lighting::{
     ColorControl, ColorMaterialMode, LightModelParam, LightParam, LightParamName, MaterialParam, MaterialParamName,
 };
 pub use matrix::MatrixMode;
+pub use query::{QueryObjectParam, QueryParam, QueryStore, QueryTarget};
 pub use softgl_jit::rng;
 pub use softgl_jit::{
     BlendEquation, BlendFactor, CacheStats, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,

@@ -208,6 +208,8 @@ pub struct RasterState {
     pub offset_units: f32,
     pub shade_model: ShadeModel,
     pub point_size: f32,
+    /// GL 1.4's `glPointParameter` state.
+    pub point_params: PointParams,
     pub line_width: f32,
 
     pub clear_color: [f32; 4],
@@ -269,6 +271,7 @@ impl RasterState {
             offset_units: 0.0,
             shade_model: ShadeModel::Smooth,
             point_size: 1.0,
+            point_params: PointParams::DEFAULT,
             line_width: 1.0,
             clear_color: [0.0; 4],
             clear_depth: 1.0,
@@ -368,6 +371,7 @@ impl RasterState {
             logic_op: (self.color_logic_op && self.logic_op != LogicOp::Copy).then_some(self.logic_op),
             color_mask: self.color_mask,
             shade: None,
+            count: false,
         };
         key.normalized()
     }
@@ -432,4 +436,49 @@ impl RasterState {
 /// `SRC_ALPHA_SATURATE`, which is a source factor only.
 pub fn valid_dst_factor(f: BlendFactor) -> bool {
     f != BlendFactor::SrcAlphaSaturate
+}
+
+/// GL 1.4's point parameters (`glPointParameter`): the size bounds, the
+/// fade threshold (state only: it acts under multisampling, which Mesa's
+/// fixed-function points ignore) and the distance attenuation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointParams {
+    pub size_min: f32,
+    pub size_max: f32,
+    pub fade_threshold: f32,
+    /// Constant, linear and quadratic coefficients.
+    pub attenuation: [f32; 3],
+}
+
+impl PointParams {
+    /// GL's initial values; the largest size is llvmpipe's (Mesa sets it to
+    /// the larger of `MaxPointSize` and `MaxLineWidth`, `st_context.c`: 255).
+    pub const DEFAULT: PointParams = PointParams {
+        size_min: 0.0,
+        size_max: 255.0,
+        fade_threshold: 1.0,
+        attenuation: [1.0, 0.0, 0.0],
+    };
+
+    /// Whether the size depends on the distance (coefficients other than 1, 0, 0).
+    pub fn attenuated(&self) -> bool {
+        self.attenuation != [1.0, 0.0, 0.0]
+    }
+
+    /// The size a point of `size` is drawn with at eye depth `z_eye`, as
+    /// Mesa's fixed-function vertex program makes it
+    /// (`ffvertex_prog.c` `build_atten_pointsize`, the bounds of
+    /// `STATE_POINT_SIZE_CLAMPED` with llvmpipe's limits 1 and 255):
+    /// `size / sqrt(a + b·|z| + c·z²)` within the bounds; without
+    /// attenuation the size within the bounds (`st_atom_rasterizer.c`).
+    pub fn size(&self, size: f32, z_eye: f32) -> f32 {
+        if !self.attenuated() {
+            return size.max(self.size_min).min(self.size_max);
+        }
+        let [a, b, c] = self.attenuation;
+        let d = z_eye.abs();
+        let f = d * (d * c + b) + a;
+        let s = size * (1.0 / f.sqrt());
+        s.max(self.size_min.max(1.0)).min(self.size_max.min(255.0))
+    }
 }

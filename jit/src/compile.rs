@@ -195,6 +195,9 @@ pub struct SpanCall {
     pub planes: *const SpanPlanes,
     /// The draw's textures (keys with texture units), or null.
     pub tex: *const crate::callout::TexView<'static>,
+    /// Keys that count ([`FragmentKey::count`]): the fragments that passed
+    /// every test, added to by each group.
+    pub passed: u64,
 }
 
 /// A span's primitive's planes, for the generated code ([`SpanCall::planes`]).
@@ -1115,6 +1118,18 @@ impl<'a> Gen<'a> {
                     }
                     g.live = Some(pass);
                     self.skip_if_dead(&g, next);
+                }
+                Stage::Count => {
+                    // The live lanes' sign bits as a 4-bit mask, counted
+                    // (movmskps, popcnt) and added to `SpanCall::passed`.
+                    let live = self.live(&mut g);
+                    let bits = self.b.ins().vhigh_bits(types::I32, live);
+                    let n = self.b.ins().popcnt(bits);
+                    let n = self.b.ins().uextend(types::I64, n);
+                    let at = offset_of!(SpanCall, passed) as i32;
+                    let sum = self.b.ins().load(types::I64, mem(), sv.call, at);
+                    let sum = self.b.ins().iadd(sum, n);
+                    self.b.ins().store(mem(), sum, sv.call, at);
                 }
                 Stage::Blend(blend) => {
                     let dst = self.load_dst(&mut g);

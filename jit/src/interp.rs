@@ -175,6 +175,7 @@ fn run_span(
                     }
                 }
             }
+            Stage::Count => t.add_samples_passed(u64::from(live.count_ones())),
             Stage::Blend(blend) => {
                 let off0 = t.color_offset(x0, y);
                 let color = t.color();

@@ -415,6 +415,10 @@ pub struct FragmentKey {
     /// Colour and depth computed from the primitive's planes; `None`: taken
     /// from the span (`FragmentSpan::r` … `z`).
     pub shade: Option<ShadeKey>,
+    /// Count the fragments that pass every test (scissor, alpha, stencil,
+    /// depth: GL 1.5 §4.1.7) into the target (`Target::samples_passed`),
+    /// for an active occlusion query; off, the stage emits no code.
+    pub count: bool,
 }
 
 /// The shading stage: which attributes a fragment interpolates from its
@@ -477,6 +481,7 @@ impl FragmentKey {
             logic_op: None,
             color_mask: ColorMask::ALL,
             shade: None,
+            count: false,
         }
     }
 
@@ -549,6 +554,9 @@ impl FragmentKey {
                 stencil: self.stencil,
             });
         }
+        if self.count {
+            s.push(Stage::Count);
+        }
         let mask = self.color_mask.for_format(self.color_format);
         if !mask.writes_nothing(self.color_format) {
             if let (Some(blend), None) = (self.blend, self.logic_op) {
@@ -567,7 +575,7 @@ impl FragmentKey {
 }
 
 /// Longest possible stage list.
-pub const MAX_STAGES: usize = 9;
+pub const MAX_STAGES: usize = 10;
 
 /// One per-fragment stage with the part of the key it needs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -589,6 +597,8 @@ pub enum Stage {
         depth: DepthKey,
         stencil: Option<StencilKey>,
     },
+    /// Count the live fragments (they passed every test) into the target.
+    Count,
     /// Blend the fragment color with the stored color.
     Blend(BlendKey),
     /// Convert the 8-bit color to the buffer's format, dithering if asked.

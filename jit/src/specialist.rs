@@ -452,6 +452,7 @@ impl Specialist {
             dither: [0; 4],
             planes: std::ptr::null(),
             tex,
+            passed: 0,
         };
         // Whether every pixel of the view's rows is inside its buffers: then
         // so is every group the code runs (a span's groups end at or before
@@ -498,13 +499,15 @@ impl Specialist {
                 // The span's last group crosses the right edge (or the batch
                 // runs a span a call): from checked slices, on a copy if so.
                 let Some(span) = chunk.get(next) else { break };
-                self.run_span(func, (splats, &call), (span, table[next]), target);
+                let passed = self.run_span(func, (splats, &call), (span, table[next]), target);
+                call.passed += passed;
                 // (`run_span` borrowed the buffers again.)
                 let parts = target.raw_parts();
                 (call.color, call.depth, call.stencil) = (row0(parts.color), parts.depth, parts.stencil);
                 next += 1;
             }
         }
+        target.add_samples_passed(call.passed);
         Ok(())
     }
 
@@ -520,10 +523,10 @@ impl Specialist {
         (u, batch): (&SplatUniforms, &SpanCall),
         (span, entry): (&FragmentSpan, SpanPlanes),
         t: &mut Target<'_>,
-    ) {
+    ) -> u64 {
         let live = t.owned_mask(span);
         if live == 0 {
-            return;
+            return 0;
         }
         let groups = (64 - live.leading_zeros()).div_ceil(4);
         let n = 4 * groups as usize;
@@ -554,6 +557,7 @@ impl Specialist {
                 entry.as_ptr()
             },
             tex: batch.tex,
+            passed: 0,
         };
         if self.key.dither {
             call.dither = std::array::from_fn(|i| pixel::dither_bias(span.x + i as u32, span.y));
@@ -566,19 +570,19 @@ impl Specialist {
         // crosses the right edge, on a copy of the row's end padded to whole groups.
         let len = n.min(inside);
         let Some(color) = color.get_mut(color_at..color_at + len * bpp) else {
-            return;
+            return 0;
         };
         let mut depth = match depth {
             Some(d) => match depth_row(d, index, len) {
                 Some(row) => Some(row),
-                None => return,
+                None => return 0,
             },
             None => None,
         };
         let mut stencil = match stencil {
             Some(s) => match s.get_mut(index..index + len) {
                 Some(row) => Some(row),
-                None => return,
+                None => return 0,
             },
             None => None,
         };
@@ -597,7 +601,7 @@ impl Specialist {
                 .as_mut()
                 .map_or(std::ptr::null_mut(), |s| back(s.as_mut_ptr(), 1));
             self.call(func, &mut call, u);
-            return;
+            return call.passed;
         }
         let mut scratch = Scratch::default();
         scratch.color[..len * bpp].copy_from_slice(color);
@@ -630,6 +634,7 @@ impl Specialist {
         if let Some(s) = stencil {
             s.copy_from_slice(&scratch.stencil[..len]);
         }
+        call.passed
     }
 
     /// Calls `func`, which is [`Self::code`]'s function, read once for the whole `run*` call.

@@ -85,6 +85,9 @@ pub struct Target<'a> {
     top_down: bool,
     depth: Option<DepthTarget<'a>>,
     stencil: Option<&'a mut [u8]>,
+    /// Fragments that passed every test under keys that count them
+    /// (`FragmentKey::count`), since the view was made or last taken.
+    samples_passed: u64,
 }
 
 /// Buffers too small for the size a target claims.
@@ -154,7 +157,24 @@ impl<'a> Target<'a> {
             top_down: false,
             depth,
             stencil,
+            samples_passed: 0,
         })
+    }
+
+    /// Fragments counted by keys with [`FragmentKey::count`](crate::FragmentKey::count)
+    /// since the view was made or the count last taken.
+    pub fn samples_passed(&self) -> u64 {
+        self.samples_passed
+    }
+
+    /// The count of [`Self::samples_passed`], reset to 0.
+    pub fn take_samples_passed(&mut self) -> u64 {
+        std::mem::take(&mut self.samples_passed)
+    }
+
+    /// Adds `n` fragments to [`Self::samples_passed`] (the back ends' count).
+    pub fn add_samples_passed(&mut self, n: u64) {
+        self.samples_passed = self.samples_passed.wrapping_add(n);
     }
 
     /// The same view with color row 0 at the top of the image (`OSMESA_Y_UP` false).
@@ -237,6 +257,7 @@ impl<'a> Target<'a> {
                 top_down: self.top_down,
                 depth: d,
                 stencil: s,
+                samples_passed: 0,
             });
         }
         bands

@@ -75,9 +75,10 @@ fn key() -> impl Strategy<Value = FragmentKey> {
         stencil,
         depth,
         color,
+        any::<bool>(),
     )
         .prop_map(
-            |((format, depth_format, stencil_buffer), scissor, alpha, stencil, depth, color)| {
+            |((format, depth_format, stencil_buffer), scissor, alpha, stencil, depth, color, count)| {
                 let (blend, logic_op, dither, [r, g, b, a]) = color;
                 FragmentKey {
                     scissor,
@@ -94,6 +95,7 @@ fn key() -> impl Strategy<Value = FragmentKey> {
                     logic_op: if blend.is_some() && !dither { None } else { logic_op },
                     dither,
                     color_mask: ColorMask { r, g, b, a },
+                    count,
                     ..FragmentKey::new(format, depth_format, stencil_buffer)
                 }
                 .normalized()
@@ -168,9 +170,19 @@ struct Buffers {
     depth16: Option<Vec<u16>>,
     depth32: Option<(DepthFormat, Vec<u32>)>,
     stencil: Option<Vec<u8>>,
+    /// The fragments counted by keys that count (`FragmentKey::count`).
+    passed: u64,
 }
 
 impl Buffers {
+    /// Runs `f` on the buffers' target, adding what it counts to `passed`.
+    fn counted(&mut self, f: impl FnOnce(&mut Target<'_>)) {
+        let mut t = self.target();
+        f(&mut t);
+        let n = t.samples_passed();
+        self.passed += n;
+    }
+
     fn random(key: &FragmentKey, rng: &mut Rng) -> Buffers {
         let width = 1 + rng.below(90) as u32;
         let height = 1 + rng.below(5) as u32;
@@ -196,6 +208,7 @@ impl Buffers {
             depth16,
             depth32,
             stencil,
+            passed: 0,
         }
     }
 
@@ -253,8 +266,10 @@ proptest! {
         let spans = spans(&interp_buf, &key, &mut rng);
         let mut jit_buf = interp_buf.clone();
         let specialist = Specialist::compile(&key).expect("a valid key compiles");
-        interp::run(&key, &u, &spans, &mut interp_buf.target()).expect("the key names the buffers");
-        specialist.run(&u, &spans, &mut jit_buf.target()).expect("the key names the buffers");
+        interp_buf.counted(|t| interp::run(&key, &u, &spans, t).expect("the key names the buffers"));
+        jit_buf.counted(|t| specialist.run(&u, &spans, t).expect("the key names the buffers"));
+        prop_assert_eq!(jit_buf.passed, interp_buf.passed, "counts differ");
+        prop_assert!(key.count || interp_buf.passed == 0, "only counting keys count");
         prop_assert_eq!(&jit_buf.color, &interp_buf.color, "color differs");
         prop_assert_eq!(&jit_buf.depth16, &interp_buf.depth16, "depth differs");
         prop_assert_eq!(&jit_buf.depth32, &interp_buf.depth32, "depth differs");
@@ -424,11 +439,16 @@ proptest! {
         let u = FragmentUniforms::default();
         let mut jit_buf = interp_buf.clone();
         let specialist = Specialist::compile_tier(&key, Tier::Optimized).expect("a valid key compiles");
-        interp::run_with_planes(&key, &u, &TextureSet::default(), &spans, &planes, &mut interp_buf.target())
-            .expect("the key names the buffers");
-        specialist
-            .run_with_planes(&u, &TextureSet::default(), &spans, &planes, &mut jit_buf.target())
-            .expect("the key names the buffers");
+        interp_buf.counted(|t| {
+            interp::run_with_planes(&key, &u, &TextureSet::default(), &spans, &planes, t)
+                .expect("the key names the buffers")
+        });
+        jit_buf.counted(|t| {
+            specialist
+                .run_with_planes(&u, &TextureSet::default(), &spans, &planes, t)
+                .expect("the key names the buffers")
+        });
+        prop_assert_eq!(jit_buf.passed, interp_buf.passed, "counts differ");
         prop_assert_eq!(&jit_buf.color, &interp_buf.color, "color differs");
     }
 }
@@ -941,11 +961,13 @@ fn run_both(
     }
     let mut jit_buf = interp_buf.clone();
     let specialist = Specialist::compile_tier(key, tier).expect("a valid key compiles");
-    interp::run_with_planes(key, u, textures, &spans, &planes, &mut interp_buf.target())
-        .expect("the key names the buffers");
-    specialist
-        .run_with_planes(u, textures, &spans, &planes, &mut jit_buf.target())
-        .expect("the key names the buffers");
+    interp_buf
+        .counted(|t| interp::run_with_planes(key, u, textures, &spans, &planes, t).expect("the key names the buffers"));
+    jit_buf.counted(|t| {
+        specialist
+            .run_with_planes(u, textures, &spans, &planes, t)
+            .expect("the key names the buffers")
+    });
     (jit_buf, interp_buf)
 }
 

@@ -20,7 +20,10 @@ pub struct ClientArray {
     pub size: i32,
     pub ty: GLenum,
     pub stride: i32,
+    /// A client pointer, or an offset into `buffer` when that is not 0.
     pub ptr: *const u8,
+    /// The `GL_ARRAY_BUFFER` bound when the pointer was set (GL 1.5).
+    pub buffer: u32,
 }
 
 impl ClientArray {
@@ -31,6 +34,7 @@ impl ClientArray {
             ty: GL_FLOAT,
             stride: 0,
             ptr: std::ptr::null(),
+            buffer: 0,
         }
     }
 }
@@ -80,6 +84,8 @@ pub struct SavedAttrib {
     pub inert_caps: Vec<GLenum>,
     /// For `GL_TEXTURE_BIT` and `GL_ENABLE_BIT`.
     pub textures: Option<SavedTextures>,
+    /// `glClearIndex` and `glIndexMask`, for `GL_COLOR_BUFFER_BIT`.
+    pub index: (f32, u32),
 }
 
 /// The texture state `glPushAttrib` saved: every unit (enables,
@@ -106,7 +112,11 @@ pub struct ClientArrays {
     pub secondary: ClientArray,
     pub fog_coord: ClientArray,
     pub edge_flag: ClientArray,
+    pub index: ClientArray,
     pub client_active: usize,
+    /// The `GL_ARRAY_BUFFER` and `GL_ELEMENT_ARRAY_BUFFER` bindings (the
+    /// GL context holds them: `gl::attrib` fills them in).
+    pub buffers: (u32, u32),
 }
 
 /// The state one `glPushClientAttrib` saved.
@@ -132,6 +142,12 @@ pub struct GlState {
     pub fog_coord: ClientArray,
     /// `glEdgeFlagPointer`: `GLboolean`s.
     pub edge_flag: ClientArray,
+    /// `glIndexPointer`: colour indices, kept and queried (RGBA contexts
+    /// draw without them, as GL says).
+    pub index: ClientArray,
+    /// `glClearIndex` and `glIndexMask` (state only in RGBA).
+    pub clear_index: f32,
+    pub index_mask: u32,
     pub pack: PixelStore,
     pub unpack: PixelStore,
     /// `glHint` modes, in the order of [`HINTS`].
@@ -148,6 +164,9 @@ pub struct GlState {
     pub compiling: Option<Compiling>,
     pub list_base: u32,
     pub call_depth: u32,
+    /// `glSampleCoverage`'s value and invert flag (state only here: the
+    /// multisampling that reads them is not in softgl yet).
+    pub sample_coverage: (f32, bool),
 }
 
 impl Default for GlState {
@@ -164,6 +183,9 @@ impl Default for GlState {
                 ty: GL_UNSIGNED_BYTE,
                 ..ClientArray::new(1)
             },
+            index: ClientArray::new(1),
+            clear_index: 0.0,
+            index_mask: u32::MAX,
             pack: PixelStore::DEFAULT,
             unpack: PixelStore::DEFAULT,
             hints: [GL_DONT_CARE; 7],
@@ -174,6 +196,7 @@ impl Default for GlState {
             compiling: None,
             list_base: 0,
             call_depth: 0,
+            sample_coverage: (1.0, false),
         }
     }
 }
@@ -189,7 +212,9 @@ impl GlState {
             secondary: self.secondary,
             fog_coord: self.fog_coord,
             edge_flag: self.edge_flag,
+            index: self.index,
             client_active: self.client_active,
+            buffers: (0, 0),
         }
     }
 
@@ -198,11 +223,25 @@ impl GlState {
         (self.vertex, self.color, self.normal) = (a.vertex, a.color, a.normal);
         (self.tex_coords, self.client_active) = (a.tex_coords, a.client_active);
         (self.secondary, self.fog_coord, self.edge_flag) = (a.secondary, a.fog_coord, a.edge_flag);
+        self.index = a.index;
     }
 
     /// The client active unit's texture coordinate array.
     pub fn tex_coord(&self) -> &ClientArray {
         &self.tex_coords[self.client_active]
+    }
+
+    /// Every client array, to visit (`glDeleteBuffers` unbinds them).
+    pub fn all_arrays_mut(&mut self) -> impl Iterator<Item = &mut ClientArray> {
+        [&mut self.vertex, &mut self.color, &mut self.normal]
+            .into_iter()
+            .chain(self.tex_coords.iter_mut())
+            .chain([
+                &mut self.secondary,
+                &mut self.fog_coord,
+                &mut self.edge_flag,
+                &mut self.index,
+            ])
     }
 
     /// The client array `glEnableClientState` names, if softgl has it.
@@ -213,6 +252,7 @@ impl GlState {
             GL_NORMAL_ARRAY => &mut self.normal,
             GL_TEXTURE_COORD_ARRAY => &mut self.tex_coords[self.client_active],
             GL_EDGE_FLAG_ARRAY => &mut self.edge_flag,
+            GL_INDEX_ARRAY => &mut self.index,
             0x845E => &mut self.secondary, // GL_SECONDARY_COLOR_ARRAY
             0x8457 => &mut self.fog_coord, // GL_FOG_COORD_ARRAY
             _ => return None,

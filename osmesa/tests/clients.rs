@@ -411,6 +411,80 @@ fn display_lists_match_mesa() {
 }
 
 #[test]
+fn buffer_objects_match_mesa() {
+    let Some(exe) = build("buffers") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // Arrays and indices in buffer objects, every way GL 1.5 draws them, and
+    // reads past a buffer's end (zeros, index 0, as llvmpipe): the same
+    // image, byte for byte, and the same state, queries and errors.
+    let image = soft.file("buffers.color");
+    let differ = image
+        .chunks_exact(4)
+        .zip(mesa.file("buffers.color").chunks_exact(4))
+        .filter(|(a, b)| a != b)
+        .count();
+    assert_eq!(differ, 0, "pixels differing from llvmpipe's");
+    let lit = image.chunks_exact(4).filter(|p| p[..3] != [0, 0, 0]).count();
+    assert!(lit > 3000, "only {lit} pixels drawn");
+    // Mesa 22 does not check a draw that reads a mapped buffer; GL 1.5
+    // (§2.9.3) makes it GL_INVALID_OPERATION, as softgl does.
+    let mapped = |r: &Run| r.lines.iter().position(|l| l.starts_with("mapped draw")).unwrap();
+    assert_eq!(soft.lines[mapped(&soft)], "mapped draw 0x0502");
+    let rest = |r: &Run| {
+        let m = mapped(r);
+        r.lines[1..]
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| i + 1 != m)
+            .map(|(_, l)| l.clone())
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(rest(&soft), rest(&mesa));
+}
+
+#[test]
+fn occlusion_query_counts_match_mesa() {
+    let Some(exe) = build("queries") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // Exact GL_SAMPLES_PASSED counts (every primitive type; scissor, alpha,
+    // stencil and depth rejecting; none drawn; several draws; a list), the
+    // availability as llvmpipe answers it, the state and the errors.
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+    let counted = |r: &Run, what: &str| -> u32 {
+        let l = r.lines.iter().find(|l| l.starts_with(what)).unwrap();
+        l[what.len()..].split_whitespace().next().unwrap().parse().unwrap()
+    };
+    assert_eq!(counted(&soft, "nearer"), 1001);
+    assert_eq!(counted(&soft, "all again, depth rejects"), 0);
+    let image = soft.file("queries.color");
+    let differ = image
+        .chunks_exact(4)
+        .zip(mesa.file("queries.color").chunks_exact(4))
+        .filter(|(a, b)| a != b)
+        .count();
+    assert_eq!(differ, 0, "pixels differing from llvmpipe's");
+}
+
+#[test]
+fn point_parameters_transposed_matrices_and_sample_coverage_match_mesa() {
+    let Some(exe) = build("gl14") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // Points bounded and attenuated with distance under a perspective
+    // projection (the sizes as Mesa's fixed-function vertex program makes
+    // them): the same image, byte for byte; the state, queries and errors.
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+    let image = soft.file("gl14.color");
+    let differ = image
+        .chunks_exact(4)
+        .zip(mesa.file("gl14.color").chunks_exact(4))
+        .filter(|(a, b)| a != b)
+        .count();
+    assert_eq!(differ, 0, "pixels differing from llvmpipe's");
+    let lit = image.chunks_exact(4).filter(|p| p[..3] != [0, 0, 0]).count();
+    assert!(lit > 3000, "only {lit} pixels drawn");
+}
+
+#[test]
 fn fog_and_the_colour_sum_match_mesa() {
     let Some(exe) = build("fog") else { return };
     let (mesa, soft) = (run(&exe, false), run(&exe, true));

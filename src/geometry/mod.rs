@@ -205,6 +205,9 @@ pub struct Geometry<'s> {
     finite_len: usize,
     /// `layout.fog()`, asked at every lit vertex.
     fog_slot: Option<usize>,
+    /// Row 2 of the inverse projection (a vertex's eye z from its clip
+    /// position), when points are attenuated (`PointParams`).
+    point_eye_z: Option<glam::Vec4>,
 }
 
 impl<'s> Geometry<'s> {
@@ -298,12 +301,28 @@ impl<'s> Geometry<'s> {
             user: UserPlanes::default(),
             finite_len: layout.finite_len(),
             fog_slot: layout.fog(),
+            point_eye_z: None,
         }
     }
 
     /// Enables the user clip planes of the state for this draw: each eye
     /// plane times the inverse `projection` (Mesa's `_ClipUserPlane`,
     /// `main/clip.c`), in f32.
+    /// Prepares the point sizes of attenuated points (GL 1.4), which need
+    /// each vertex's eye depth: found from its clip position through the
+    /// inverse of `projection`.
+    pub fn set_point_projection(&mut self, projection: &glam::Mat4) {
+        if self.state.point_params.attenuated() {
+            self.point_eye_z = Some(crate::inverse::inverse(projection).row(2));
+        }
+    }
+
+    /// The size of a point whose vertex is at clip position `clip`.
+    fn point_size_at(&self, clip: glam::Vec4) -> f32 {
+        let z_eye = self.point_eye_z.map_or(0.0, |r| r.dot(clip));
+        self.state.point_params.size(self.state.point_size, z_eye)
+    }
+
     pub fn set_user_planes(&mut self, projection: &glam::Mat4) {
         let l = &self.state.lighting;
         if !l.clipping() {
@@ -385,7 +404,7 @@ impl<'s> Geometry<'s> {
                 batch.load(i);
                 let v = batch.vertex(i);
                 if v.inside {
-                    sink.point(&v.win, self.state.point_size, &self.wide_params);
+                    sink.point(&v.win, self.point_size_at(v.pos), &self.wide_params);
                 }
             }
             Primitive::Line { a, b, provoking } => {
@@ -743,7 +762,13 @@ impl<'s> Geometry<'s> {
                         if let (Some(f), Some(o)) = (flat, self.layout.secondary()) {
                             copy_slots(&mut v.v, o, f, o, 4);
                         }
-                        sink.point(&v, self.state.point_size, &self.params);
+                        // (Polygon-mode points are sized as at eye depth 0:
+                        // their clip position is not at hand here.)
+                        sink.point(
+                            &v,
+                            self.state.point_params.size(self.state.point_size, 0.0),
+                            &self.params,
+                        );
                     }
                 }
             }

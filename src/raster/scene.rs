@@ -41,6 +41,7 @@ use softgl_jit::texture::TextureSet;
 use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Planes, Specialist, Target};
 use std::cell::OnceCell;
 use std::collections::HashSet;
+use std::sync::atomic::AtomicU64;
 use std::sync::Arc;
 
 /// Side of a tile, in pixels.
@@ -84,6 +85,9 @@ pub struct DrawState {
     /// `None`: the interpreter runs the key.
     pub specialist: Option<Arc<Specialist>>,
     pub textures: SharedPlan,
+    /// The active occlusion query's counter (with `key.count`): each band
+    /// adds the fragments it counted to it.
+    pub samples: Option<Arc<AtomicU64>>,
 }
 
 /// A recorded vertex's window position, depth and 1/w; its varyings (the
@@ -126,6 +130,11 @@ impl DrawState {
             }
             && self.textures.is_empty()
             && other.textures.is_empty()
+            && match (&self.samples, &other.samples) {
+                (Some(a), Some(b)) => Arc::ptr_eq(a, b),
+                (None, None) => true,
+                _ => false,
+            }
     }
 }
 
@@ -412,7 +421,10 @@ impl Scene {
             .draws
             .iter()
             .zip(&sets)
-            .map(|(d, set)| DrawStage::new(&d.key, &d.uniforms, set, d.specialist.as_deref(), &target))
+            .map(|(d, set)| {
+                DrawStage::new(&d.key, &d.uniforms, set, d.specialist.as_deref(), &target)
+                    .map(|s| s.counting_into(d.samples.as_deref()))
+            })
             .collect();
         let bands = target.into_bands(TILE);
         let run_band = |(ty, mut band): (usize, Target<'_>)| self.run_band(ty as u32, &mut band, &stages);

@@ -8,7 +8,9 @@ use super::enums::decode;
 use super::{now, outside, run_or_record};
 use crate::consts::*;
 use crate::gl_state::{ClientArray, Cmd, GlState, MAX_UNITS};
-use softgl::{AttribArray, Context, GlError, GlResult, Indices, PrimitiveMode, VertexArrays};
+use softgl::{
+    AttribArray, BufferStore, BufferTarget, Context, GlError, GlResult, Indices, PrimitiveMode, VertexArrays,
+};
 use std::ffi::c_void;
 
 fn type_size(ty: GLenum) -> Option<usize> {
@@ -21,14 +23,73 @@ fn type_size(ty: GLenum) -> Option<usize> {
     })
 }
 
-/// Element `i` of `a` as floats, integer colours normalised when `normalize`.
+/// An enabled array, ready to read: a client array, or one in a buffer
+/// object with the bytes it may read.
+#[derive(Clone, Copy)]
+struct Source {
+    /// The array, its `ptr` resolved to an address.
+    a: ClientArray,
+    /// How many bytes from `a.ptr` exist: `usize::MAX` for client memory
+    /// (GL's contract bounds it), the rest of the buffer for a buffer object.
+    limit: usize,
+}
+
+/// The array `a` as a [`Source`] if it is enabled and names memory;
+/// `GL_INVALID_OPERATION` if it reads a mapped buffer (GL 1.5 §2.9.3).
+fn source(a: &ClientArray, buffers: &BufferStore) -> GlResult<Option<Source>> {
+    if !a.enabled {
+        return Ok(None);
+    }
+    if a.buffer == 0 {
+        return Ok((!a.ptr.is_null()).then_some(Source {
+            a: *a,
+            limit: usize::MAX,
+        }));
+    }
+    // A deleted buffer's arrays were reset to 0 (`gl::buffers`), so the name has an object.
+    let Some(b) = buffers.get(a.buffer) else {
+        return Ok(None);
+    };
+    if b.mapped() {
+        return Err(GlError::InvalidOperation);
+    }
+    let offset = a.ptr as usize;
+    let bytes = b.bytes();
+    Ok(Some(Source {
+        a: ClientArray {
+            ptr: bytes.as_ptr().wrapping_add(offset.min(bytes.len())),
+            ..*a
+        },
+        limit: bytes.len().saturating_sub(offset),
+    }))
+}
+
+/// `n` zeros: an element past its buffer's end. Out of the element loop's way.
+#[cold]
+#[inline(never)]
+fn zeros(n: usize, out: &mut Vec<f32>) {
+    out.extend(std::iter::repeat_n(0.0, n));
+}
+
+/// Element `i` of `s` as floats, integer colours normalised when
+/// `normalize`. An element that does not lie wholly inside its buffer
+/// object reads as zeros, as llvmpipe reads it (docs/llvmpipe-facts.md §23).
 ///
 /// # Safety
-/// `a.ptr` holds element `i` (GL's contract for enabled client arrays).
-unsafe fn fetch(a: &ClientArray, i: usize, normalize: bool, out: &mut Vec<f32>) {
+/// `s.a.ptr` holds element `i` when `s.limit` is `usize::MAX` (GL's
+/// contract for enabled client arrays); otherwise `s.limit` bytes exist there.
+#[inline(always)]
+unsafe fn fetch(s: &Source, i: usize, normalize: bool, out: &mut Vec<f32>) {
+    let a = &s.a;
     let size = type_size(a.ty).unwrap_or(4);
     let n = a.size as usize;
     let stride = if a.stride > 0 { a.stride as usize } else { n * size };
+    if s.limit != usize::MAX {
+        let end = i.checked_mul(stride).and_then(|o| o.checked_add(n * size));
+        if end.is_none_or(|e| e > s.limit) {
+            return zeros(n, out);
+        }
+    }
     // SAFETY: element `i` lies at `i * stride` in the caller's array.
     let base = unsafe { a.ptr.add(i * stride) };
     if a.ty == GL_FLOAT {
@@ -123,38 +184,47 @@ struct Fetched {
     tex_coords: [Option<(usize, Vec<f32>)>; MAX_UNITS],
 }
 
-/// Reads the vertices `indices` names; `None` without a vertex array (GL then draws nothing).
-fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) -> GlResult<Option<Fetched>> {
+/// Reads the vertices `indices` names; `None` without a vertex array (GL
+/// then draws nothing). `GL_INVALID_OPERATION` if an array it reads is in a
+/// mapped buffer.
+fn gather(
+    os: &GlState,
+    buffers: &BufferStore,
+    mode: GLenum,
+    indices: &mut dyn Iterator<Item = usize>,
+) -> GlResult<Option<Fetched>> {
     let mode = decode::<PrimitiveMode>(mode)?;
-    if !os.vertex.enabled || os.vertex.ptr.is_null() {
-        return Ok(None);
+    let color = source(&os.color, buffers)?;
+    let edge_flag = source(&os.edge_flag, buffers)?;
+    let normal = source(&os.normal, buffers)?;
+    let secondary = source(&os.secondary, buffers)?;
+    let fog_coord = source(&os.fog_coord, buffers)?;
+    let mut tex: [Option<Source>; MAX_UNITS] = [None; MAX_UNITS];
+    for (t, a) in tex.iter_mut().zip(&os.tex_coords) {
+        *t = source(a, buffers)?;
     }
-    let color = (os.color.enabled && !os.color.ptr.is_null()).then_some(&os.color);
-    let edge_flag = (os.edge_flag.enabled && !os.edge_flag.ptr.is_null()).then_some(&os.edge_flag);
-    let normal = (os.normal.enabled && !os.normal.ptr.is_null()).then_some(&os.normal);
-    let secondary = (os.secondary.enabled && !os.secondary.ptr.is_null()).then_some(&os.secondary);
-    let fog_coord = (os.fog_coord.enabled && !os.fog_coord.ptr.is_null()).then_some(&os.fog_coord);
+    let Some(vertex) = source(&os.vertex, buffers)? else {
+        return Ok(None);
+    };
     let (mut pos, mut col, mut nrm) = (Vec::new(), Vec::new(), Vec::new());
     let (mut sec, mut fog, mut edges) = (Vec::new(), Vec::new(), Vec::new());
-    let tex: [Option<&ClientArray>; MAX_UNITS] =
-        std::array::from_fn(|u| Some(&os.tex_coords[u]).filter(|a| a.enabled && !a.ptr.is_null()));
     let mut coords: [Vec<f32>; MAX_UNITS] = Default::default();
     // Each array's values allocated once (a growing `Vec` reallocates
     // several times for a draw's vertices).
     let hint = indices.size_hint().0;
-    let reserve = |v: &mut Vec<f32>, a: Option<&ClientArray>| {
-        if let Some(a) = a {
-            v.reserve(hint * a.size.max(0) as usize);
+    let reserve = |v: &mut Vec<f32>, a: Option<&Source>| {
+        if let Some(s) = a {
+            v.reserve(hint * s.a.size.max(0) as usize);
         }
     };
-    reserve(&mut pos, Some(&os.vertex));
-    reserve(&mut col, color);
-    reserve(&mut edges, edge_flag);
-    reserve(&mut nrm, normal);
-    reserve(&mut sec, secondary);
-    reserve(&mut fog, fog_coord);
-    for (v, a) in coords.iter_mut().zip(tex) {
-        reserve(v, a);
+    reserve(&mut pos, Some(&vertex));
+    reserve(&mut col, color.as_ref());
+    reserve(&mut edges, edge_flag.as_ref());
+    reserve(&mut nrm, normal.as_ref());
+    reserve(&mut sec, secondary.as_ref());
+    reserve(&mut fog, fog_coord.as_ref());
+    for (v, a) in coords.iter_mut().zip(&tex) {
+        reserve(v, a.as_ref());
     }
     // (Untextured draws skip the units' loop at every vertex: with the
     // reservations above, `draw`'s own instructions over 6 thrash frames
@@ -162,22 +232,23 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
     let any_tex = tex.iter().any(Option::is_some);
     let mut count = 0;
     for i in indices {
-        // SAFETY: the enabled arrays hold every element the draw names (GL's contract).
+        // SAFETY: the enabled client arrays hold every element the draw
+        // names (GL's contract); buffer objects' reads are bounded by `fetch`.
         unsafe {
-            fetch(&os.vertex, i, false, &mut pos);
-            if let Some(c) = color {
+            fetch(&vertex, i, false, &mut pos);
+            if let Some(c) = &color {
                 fetch(c, i, true, &mut col);
             }
-            if let Some(e) = edge_flag {
+            if let Some(e) = &edge_flag {
                 fetch(e, i, false, &mut edges);
             }
-            if let Some(n) = normal {
+            if let Some(n) = &normal {
                 fetch(n, i, true, &mut nrm);
             }
-            if let Some(c) = secondary {
+            if let Some(c) = &secondary {
                 fetch(c, i, true, &mut sec);
             }
-            if let Some(c) = fog_coord {
+            if let Some(c) = &fog_coord {
                 fetch(c, i, false, &mut fog);
             }
             if any_tex {
@@ -193,14 +264,14 @@ fn gather(os: &GlState, mode: GLenum, indices: &mut dyn Iterator<Item = usize>) 
     Ok(Some(Fetched {
         mode,
         count,
-        pos_size: os.vertex.size as usize,
+        pos_size: vertex.a.size as usize,
         pos,
-        color: color.map(|c| (c.size as usize, col)),
+        color: color.map(|c| (c.a.size as usize, col)),
         edge_flag: edge_flag.map(|_| edges),
         normal: normal.map(|_| nrm),
         secondary: secondary.map(|_| sec),
         fog_coord: fog_coord.map(|_| fog),
-        tex_coords: std::array::from_fn(|u| tex[u].map(|a| (a.size as usize, std::mem::take(&mut coords[u])))),
+        tex_coords: std::array::from_fn(|u| tex[u].map(|a| (a.a.size as usize, std::mem::take(&mut coords[u])))),
     }))
 }
 
@@ -212,7 +283,7 @@ fn draw(
     (mode, indexed): (GLenum, bool),
     indices: &mut dyn Iterator<Item = usize>,
 ) -> GlResult {
-    let Some(f) = gather(os, mode, indices)? else {
+    let Some(f) = gather(os, gl.buffers(), mode, indices)? else {
         // Without a vertex array GL draws nothing, but the draw is still a
         // draw: between glBegin and glEnd (now, or when a list holding it
         // runs) it is GL_INVALID_OPERATION.
@@ -224,26 +295,68 @@ fn draw(
         run_or_record(os, gl, cmd);
         return Ok(());
     };
-    let cmd: Cmd = std::sync::Arc::new(move |_: &mut GlState, gl: &mut Context| {
-        let arrays = VertexArrays {
-            position: AttribArray::new(f.pos_size, &f.pos),
-            color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
-            edge_flag: f.edge_flag.as_ref().map(|e| AttribArray::new(1, e)),
-            normal: f.normal.as_ref().map(|n| AttribArray::new(3, n)),
-            secondary: f.secondary.as_ref().map(|c| AttribArray::new(3, c)),
-            fog_coord: f.fog_coord.as_ref().map(|c| AttribArray::new(1, c)),
-            tex_coords: std::array::from_fn(|u| f.tex_coords[u].as_ref().map(|(size, c)| AttribArray::new(*size, c))),
-        };
-        // The context records its own errors (inside begin/end, …).
-        let _ = if indexed {
-            let order: Vec<u32> = (0..f.count as u32).collect();
-            gl.draw_elements(f.mode, Indices::U32(&order), &arrays)
-        } else {
-            gl.draw_arrays(f.mode, 0, f.count, &arrays)
-        };
-    });
-    run_or_record(os, gl, cmd);
+    let f = std::sync::Arc::new(f);
+    let make = |indexed: bool| -> Cmd {
+        let f = f.clone();
+        std::sync::Arc::new(move |_: &mut GlState, gl: &mut Context| {
+            let arrays = VertexArrays {
+                position: AttribArray::new(f.pos_size, &f.pos),
+                color: f.color.as_ref().map(|(size, c)| AttribArray::new(*size, c)),
+                edge_flag: f.edge_flag.as_ref().map(|e| AttribArray::new(1, e)),
+                normal: f.normal.as_ref().map(|n| AttribArray::new(3, n)),
+                secondary: f.secondary.as_ref().map(|c| AttribArray::new(3, c)),
+                fog_coord: f.fog_coord.as_ref().map(|c| AttribArray::new(1, c)),
+                tex_coords: std::array::from_fn(|u| {
+                    f.tex_coords[u].as_ref().map(|(size, c)| AttribArray::new(*size, c))
+                }),
+            };
+            // The context records its own errors (inside begin/end, …).
+            let _ = if indexed {
+                let order: Vec<u32> = (0..f.count as u32).collect();
+                gl.draw_elements(f.mode, Indices::U32(&order), &arrays)
+            } else {
+                gl.draw_arrays(f.mode, 0, f.count, &arrays)
+            };
+        })
+    };
+    // Mesa compiles a draw into a list as indexed vertices (`vbo/vbo_save_api.c`,
+    // `compile_vertex_list`), so a list replays it on the glDrawElements path
+    // (its quads split as §12 says); GL_COMPILE_AND_EXECUTE runs the draw itself.
+    let execute = os.compiling.as_mut().map(|l| std::mem::replace(&mut l.execute, false));
+    run_or_record(os, gl, make(indexed || execute.is_some()));
+    if let Some(execute) = execute {
+        if let Some(l) = os.compiling.as_mut() {
+            l.execute = execute;
+        }
+        if execute {
+            make(indexed)(os, gl);
+        }
+    }
     Ok(())
+}
+
+/// The `count` indices of `size` bytes at byte `offset` of element buffer
+/// `name`. As llvmpipe (docs/llvmpipe-facts.md §23): the indices start at
+/// index `offset / size`, and an index past the buffer's end reads as 0.
+/// `GL_INVALID_OPERATION` if the buffer is mapped.
+fn buffer_indices(buffers: &BufferStore, name: u32, offset: usize, count: usize, size: usize) -> GlResult<Vec<usize>> {
+    let b = buffers.get(name).ok_or(GlError::InvalidOperation)?;
+    if b.mapped() {
+        return Err(GlError::InvalidOperation);
+    }
+    let bytes = b.bytes();
+    let first = offset / size;
+    Ok((0..count)
+        .map(|k| {
+            let at = first.saturating_add(k).saturating_mul(size);
+            match bytes.get(at..at.saturating_add(size)) {
+                Some(&[v]) => usize::from(v),
+                Some(&[a, b]) => usize::from(u16::from_ne_bytes([a, b])),
+                Some(&[a, b, c, d]) => u32::from_ne_bytes([a, b, c, d]) as usize,
+                _ => 0,
+            }
+        })
+        .collect())
 }
 
 /// Sets a client array pointer after checking its arguments.
@@ -264,8 +377,9 @@ pub(super) fn pointer(
         if !sizes.contains(&size) || stride < 0 {
             return Err(GlError::InvalidValue);
         }
+        let buffer = gl.buffers().binding(BufferTarget::Array);
         let a = which(os);
-        (a.size, a.ty, a.stride, a.ptr) = (size, ty, stride, ptr.cast());
+        (a.size, a.ty, a.stride, a.ptr, a.buffer) = (size, ty, stride, ptr.cast(), buffer);
         Ok(())
     })
 }
@@ -273,13 +387,7 @@ pub(super) fn pointer(
 fn client_state(array: GLenum, on: bool) {
     now(|os, gl| {
         outside(gl)?;
-        let a = match (os.array_mut(array), array) {
-            (Some(a), _) => a,
-            // Colour-index arrays do not exist in softgl yet.
-            (None, GL_INDEX_ARRAY) if on => return Err(GlError::InvalidOperation),
-            (None, GL_INDEX_ARRAY) => return Ok(()),
-            (None, _) => return Err(GlError::InvalidEnum),
-        };
+        let a = os.array_mut(array).ok_or(GlError::InvalidEnum)?;
         a.enabled = on;
         Ok(())
     })
@@ -324,6 +432,14 @@ exports! {
     [unsafe] fn glEdgeFlagPointer(stride: i32, ptr: *const c_void) {
         pointer(|o| &mut o.edge_flag, &[1], 1, GL_UNSIGNED_BYTE, &[GL_UNSIGNED_BYTE], stride, ptr)
     }
+    /// Kept and queried; an RGBA context draws without colour indices.
+    ///
+    /// # Safety
+    /// `ptr` stays valid while drawing reads it (GL's contract).
+    [unsafe] fn glIndexPointer(ty: GLenum, stride: i32, ptr: *const c_void) {
+        let types = [GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE];
+        pointer(|o| &mut o.index, &[1], 1, ty, &types, stride, ptr)
+    }
     [] fn glEnableClientState(array: GLenum) {
         client_state(array, true)
     }
@@ -353,6 +469,11 @@ exports! {
                 GL_UNSIGNED_INT => 4,
                 _ => return Err(GlError::InvalidEnum),
             };
+            let element = gl.buffers().binding(BufferTarget::ElementArray);
+            if element != 0 {
+                let order = buffer_indices(gl.buffers(), element, indices as usize, count as usize, size)?;
+                return draw(os, gl, (mode, true), &mut order.into_iter());
+            }
             if indices.is_null() {
                 return if count == 0 { Ok(()) } else { Err(GlError::InvalidValue) };
             }
@@ -390,11 +511,16 @@ exports! {
             }
             let i = i as usize;
             // Read now (GL's rule for lists too), applied by the command.
-            let read = |a: &ClientArray, normalize: bool| -> Option<Vec<f32>> {
+            let buffers = gl.buffers();
+            let read = |a: &ClientArray, normalize: bool| -> GlResult<Option<Vec<f32>>> {
+                let Some(s) = source(a, buffers)? else {
+                    return Ok(None);
+                };
                 let mut v = Vec::with_capacity(4);
-                // SAFETY: the enabled arrays hold element `i` (GL's contract).
-                (a.enabled && !a.ptr.is_null()).then(|| unsafe { fetch(a, i, normalize, &mut v) })?;
-                Some(v)
+                // SAFETY: the enabled client arrays hold element `i` (GL's
+                // contract); buffer objects' reads are bounded by `fetch`.
+                unsafe { fetch(&s, i, normalize, &mut v) };
+                Ok(Some(v))
             };
             let pad = |mut v: Vec<f32>, size: i32| -> [f32; 4] {
                 v.resize(4, 0.0);
@@ -403,11 +529,14 @@ exports! {
                 }
                 [v[0], v[1], v[2], v[3]]
             };
-            let color = read(&os.color, true).map(|v| pad(v, os.color.size));
-            let normal = read(&os.normal, true);
-            let tex: Vec<Option<[f32; 4]>> = os.tex_coords.iter().map(|a| read(a, false).map(|v| pad(v, a.size))).collect();
-            let edge_flag = read(&os.edge_flag, false).map(|v| v[0] != 0.0);
-            let vertex = read(&os.vertex, false).map(|v| pad(v, os.vertex.size));
+            let color = read(&os.color, true)?.map(|v| pad(v, os.color.size));
+            let normal = read(&os.normal, true)?;
+            let mut tex: Vec<Option<[f32; 4]>> = Vec::with_capacity(MAX_UNITS);
+            for a in &os.tex_coords {
+                tex.push(read(a, false)?.map(|v| pad(v, a.size)));
+            }
+            let edge_flag = read(&os.edge_flag, false)?.map(|v| v[0] != 0.0);
+            let vertex = read(&os.vertex, false)?.map(|v| pad(v, os.vertex.size));
             let cmd: Cmd = std::sync::Arc::new(move |_: &mut GlState, gl: &mut Context| {
                 if let Some([r, g, b, a]) = color {
                     gl.color4(r, g, b, a);
@@ -442,6 +571,7 @@ exports! {
                 GL_NORMAL_ARRAY_POINTER => os.normal.ptr,
                 GL_TEXTURE_COORD_ARRAY_POINTER => os.tex_coord().ptr,
                 GL_EDGE_FLAG_ARRAY_POINTER => os.edge_flag.ptr,
+                0x8091 => os.index.ptr, // GL_INDEX_ARRAY_POINTER
                 0x845D => os.secondary.ptr, // GL_SECONDARY_COLOR_ARRAY_POINTER
                 0x8456 => os.fog_coord.ptr, // GL_FOG_COORD_ARRAY_POINTER
                 _ => return Err(GlError::InvalidEnum),
@@ -478,11 +608,13 @@ exports! {
             let total = t as usize * f + c_bytes + if n { 3 * f } else { 0 } + v as usize * f;
             let stride = if stride == 0 { total as i32 } else { stride };
             let base = ptr.cast::<u8>();
+            let buffer = gl.buffers().binding(BufferTarget::Array);
             let mut at = 0usize;
             let mut set = |a: &mut ClientArray, size: i32, ty: GLenum, on: bool, bytes: usize| {
                 a.enabled = on;
                 if on {
                     (a.size, a.ty, a.stride, a.ptr) = (size, ty, stride, base.wrapping_add(at));
+                    a.buffer = buffer;
                     at += bytes;
                 }
             };

@@ -6,7 +6,7 @@
 use super::texture::TARGETS;
 use super::{now, rec};
 use crate::consts::*;
-use crate::gl_state::{GlState, SavedAttrib, SavedClient, SavedTextures, MAX_UNITS};
+use crate::gl_state::{ClientArrays, GlState, SavedAttrib, SavedClient, SavedTextures, MAX_UNITS};
 use softgl::lighting::LightingState;
 use softgl::texture::TexParamName;
 use softgl::GlEnum;
@@ -163,6 +163,7 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
     }
     if m & POINT_BIT != 0 {
         gl.point_size(st.point_size)?;
+        gl.point_parameters(st.point_params)?;
     }
     if m & LINE_BIT != 0 {
         gl.line_width(st.line_width)?;
@@ -223,6 +224,7 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         set_cap(gl, Capability::ColorLogicOp, st.color_logic_op)?;
     }
     if m & COLOR_BIT != 0 {
+        (os.clear_index, os.index_mask) = s.index;
         gl.alpha_func(st.alpha_func, st.alpha_ref)?;
         let b = st.blend_func;
         gl.blend_func_separate(b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha)?;
@@ -278,6 +280,7 @@ exports! {
                 matrix_mode: gl.current_matrix_mode(),
                 hints: os.hints,
                 inert_caps: os.inert_caps.clone(),
+                index: (os.clear_index, os.index_mask),
             };
             os.attrib_stack.push(saved);
             Ok(())
@@ -302,7 +305,10 @@ exports! {
                 mask,
                 pack: os.pack,
                 unpack: os.unpack,
-                arrays: os.arrays(),
+                arrays: ClientArrays {
+                    buffers: super::buffers::bindings(gl),
+                    ..os.arrays()
+                },
             };
             os.client_attrib_stack.push(saved);
             Ok(())
@@ -317,6 +323,7 @@ exports! {
             }
             if s.mask & CLIENT_VERTEX_ARRAY_BIT != 0 {
                 os.set_arrays(s.arrays);
+                super::buffers::restore_bindings(os, gl, s.arrays.buffers);
             }
             Ok(())
         })

@@ -79,7 +79,8 @@ pub(super) fn is_enabled(os: &GlState, gl: &Context, cap: GLenum) -> GlResult<bo
         GL_TEXTURE_COORD_ARRAY => os.tex_coord().enabled,
         super::fog::GL_SECONDARY_COLOR_ARRAY => os.secondary.enabled,
         super::fog::GL_FOG_COORD_ARRAY => os.fog_coord.enabled,
-        GL_INDEX_ARRAY | GL_EDGE_FLAG_ARRAY => false,
+        GL_INDEX_ARRAY => os.index.enabled,
+        GL_EDGE_FLAG_ARRAY => os.edge_flag.enabled,
         _ => match enums::cap(cap)? {
             Cap::Core(c) => gl.is_enabled(c),
             Cap::Inert(c) => os.inert_caps.contains(&c),
@@ -129,6 +130,12 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     }
     if let Some(h) = HINTS.iter().position(|&t| t == pname) {
         return Ok(e(os.hints[h]));
+    }
+    if let Some(v) = super::gl14::value(os, gl, pname) {
+        return Ok(v);
+    }
+    if let Some(v) = super::buffers::value(os, gl, pname) {
+        return Ok(v);
     }
     if let Some(v) = super::fog::value(os, gl, pname)
         .or_else(|| super::texture::value(os, gl, pname))
@@ -232,7 +239,12 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x807E => e(os.normal.ty), // NORMAL_ARRAY_TYPE
         0x807F => i(os.normal.stride),
         GL_EDGE_FLAG_ARRAY => Val::B(vec![os.edge_flag.enabled]),
-        0x808C => i(os.edge_flag.stride),               // EDGE_FLAG_ARRAY_STRIDE
+        0x808C => i(os.edge_flag.stride), // EDGE_FLAG_ARRAY_STRIDE
+        GL_INDEX_ARRAY => Val::B(vec![os.index.enabled]),
+        0x8085 => e(os.index.ty),                       // INDEX_ARRAY_TYPE
+        0x8086 => i(os.index.stride),                   // INDEX_ARRAY_STRIDE
+        0x0C20 => f(os.clear_index),                    // INDEX_CLEAR_VALUE
+        0x0C21 => i(i64::from(os.index_mask as i32)),   // INDEX_WRITEMASK
         0x0B01 => f(gl.current().index),                // CURRENT_INDEX
         0x0B43 => Val::B(vec![gl.current().edge_flag]), // EDGE_FLAG
         _ => match enums::cap(pname)? {
@@ -267,10 +279,7 @@ fn get<T: Copy>(pname: GLenum, out: *mut T, conv: impl FnOnce(&Val) -> Vec<T>) {
 const VENDOR: &std::ffi::CStr = c"softgl";
 const RENDERER_INTERP: &std::ffi::CStr = c"softgl (interpreter)";
 const RENDERER_JIT: &std::ffi::CStr = c"softgl (Cranelift JIT)";
-pub(crate) const VERSION: &std::ffi::CStr = c"1.1 softgl 0.1.0";
-/// Each name followed by a space, the last one too, as Mesa's (docs/llvmpipe-facts.md §13).
-const EXTENSIONS: &std::ffi::CStr =
-    c"GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract ";
+pub(crate) use super::extensions::VERSION;
 
 exports! {
     /// `GL_VENDOR`, `GL_RENDERER`, `GL_VERSION` ("1.1 softgl …") and
@@ -282,7 +291,7 @@ exports! {
                 GL_RENDERER if gl.backend() == Backend::Jit => RENDERER_JIT,
                 GL_RENDERER => RENDERER_INTERP,
                 GL_VERSION => VERSION,
-                GL_EXTENSIONS => EXTENSIONS,
+                GL_EXTENSIONS => super::extensions::extensions_string(),
                 _ => {
                     gl.record_error(GlError::InvalidEnum);
                     return std::ptr::null();

@@ -252,16 +252,4 @@ exports! {
     [] fn glGetMapiv(_target: GLenum, _query: GLenum, _v: *mut i32) {
         missing_now()
     }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexMask(_mask: u32) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glClearIndex(_c: f32) {
-        missing()
-    }
-    /// Colour index (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glIndexPointer(_ty: GLenum, _stride: i32, _ptr: *const c_void) {
-        missing_now()
-    }
 }

@@ -23,29 +23,38 @@ macro_rules! exports {
 
 mod arrays;
 mod attrib;
+mod buffers;
 mod enums;
+mod extensions;
 mod extra_attribs;
 mod fog;
 pub(crate) mod get;
+mod gl14;
 mod immediate;
+mod index;
 mod lighting;
 mod lists;
 mod missing;
 mod pixels;
+mod queries;
 mod state;
 mod texture;
 mod texunit;
 
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
+pub use buffers::*;
 pub use extra_attribs::*;
 pub use fog::*;
 pub use get::*;
+pub use gl14::*;
 pub use immediate::*;
+pub use index::*;
 pub use lighting::*;
 pub use lists::*;
 pub use missing::*;
 pub use pixels::*;
+pub use queries::*;
 pub use state::*;
 pub use texture::*;
 pub use texunit::*;
@@ -55,15 +64,19 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
     [
         arrays::table,
         attrib::table,
+        buffers::table,
         extra_attribs::table,
         fog::table,
         fog::color_table,
+        gl14::table,
         get::table,
         immediate::table,
+        index::table,
         lighting::table,
         lists::table,
         missing::table,
         pixels::table,
+        queries::table,
         state::table,
         texture::table,
         texunit::table,
@@ -74,8 +87,11 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
 }
 
 /// The address of the export called `name`.
+/// The address of the export called `name`, or of the core function that
+/// answers an advertised extension's entry point (`gl::extensions`).
 pub(crate) fn proc_address(name: &str) -> Option<*const std::ffi::c_void> {
-    all_exports().find(|(n, _)| *n == name).map(|(_, p)| p)
+    let find = |name: &str| all_exports().find(|(n, _)| *n == name).map(|(_, p)| p);
+    find(name).or_else(|| find(extensions::core_name(name)?))
 }
 
 /// Every `gl*` name this library exports.
