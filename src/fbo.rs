@@ -367,6 +367,16 @@ impl FboState {
         self.renderbuffer
     }
 
+    /// Whether `glDrawBuffer(GL_NONE)` turned the window's colour writes off.
+    pub fn window_draw_none(&self) -> bool {
+        self.window_draw_none
+    }
+
+    /// Whether `glReadBuffer(GL_NONE)` was called on the window.
+    pub fn window_read_none(&self) -> bool {
+        self.window_read_none
+    }
+
     /// Whether the draw framebuffer holds the texture `name`'s images.
     fn holds_texture(&self, name: u32) -> bool {
         self.checkout.is_some_and(|c| {
@@ -505,8 +515,8 @@ fn status(fbo: &FboState, textures: &crate::texture::TextureStore, name: u32) ->
     S::Complete
 }
 
-/// A read framebuffer made for one read (see [`Context::with_read_framebuffer`]).
-pub(crate) enum ReadFb {
+/// The read framebuffer, made for one read ([`Context::read_framebuffer`]).
+pub enum ReadFb {
     /// Reads come from `Context::fb`.
     Draw,
     /// From the window framebuffer, waiting in [`FboState::window`].
@@ -857,7 +867,7 @@ impl Context {
         self.outside()?;
         let name = self.fbo.draw;
         if buffer.is_some_and(|i| i as usize >= MAX_COLOR_ATTACHMENTS) {
-            return self.record(Err(GlError::InvalidValue));
+            return self.record(Err(GlError::InvalidOperation));
         }
         if name == 0 {
             if buffer.is_some() {
@@ -894,7 +904,7 @@ impl Context {
         self.outside()?;
         let name = self.fbo.read;
         if buffer.is_some_and(|i| i as usize >= MAX_COLOR_ATTACHMENTS) {
-            return self.record(Err(GlError::InvalidValue));
+            return self.record(Err(GlError::InvalidOperation));
         }
         if name == 0 {
             if buffer.is_some() {
@@ -1319,7 +1329,7 @@ impl Context {
     // ----- reading -----
 
     /// The read framebuffer for one read: `InvalidFramebufferOperation` when incomplete.
-    pub(crate) fn take_read(&mut self, need_color: bool) -> GlResult<ReadFb> {
+    fn take_read(&mut self, need_color: bool) -> GlResult<ReadFb> {
         self.ensure_draw()?;
         let (read, draw) = (self.fbo.read, self.fbo.draw);
         if read == 0 {
@@ -1349,6 +1359,27 @@ impl Context {
         }
         let fb = self.assemble(c, false)?;
         Ok(ReadFb::Assembled(fb))
+    }
+
+    /// The framebuffer reads come from now (`GL_READ_FRAMEBUFFER`'s, its
+    /// read buffer as colour), every draw rasterized; view it with
+    /// [`Context::read_view`]. `need_color`: `InvalidOperation` when the
+    /// read buffer is `GL_NONE` or empty; `InvalidFramebufferOperation` for
+    /// an incomplete object. Errors are recorded.
+    pub fn read_framebuffer(&mut self, need_color: bool) -> GlResult<ReadFb> {
+        self.outside()?;
+        self.finish_scene();
+        let r = self.take_read(need_color);
+        self.record(r)
+    }
+
+    /// The framebuffer of a [`Context::read_framebuffer`].
+    pub fn read_view<'a>(&'a self, r: &'a ReadFb) -> &'a Framebuffer {
+        self.read_ref(r)
+    }
+
+    pub(crate) fn take_read_unflushed(&mut self, need_color: bool) -> GlResult<ReadFb> {
+        self.take_read(need_color)
     }
 
     pub(crate) fn read_ref<'a>(&'a self, r: &'a ReadFb) -> &'a Framebuffer {
@@ -1473,10 +1504,49 @@ impl Context {
     }
 }
 
-/// Copies `src`'s rectangle to `dst`'s, scaled and flipped, inside `clip`:
-/// each destination pixel centre maps back to a source position (in f32,
-/// as llvmpipe's blit quad interpolates its texture coordinates);
-/// destination pixels whose source is outside the read buffer are left.
+/// One axis of a blit as llvmpipe's blitter draws it (`util/u_blitter.c`
+/// `get_texcoords`, then the rectangle's linear interpolation): the source
+/// edges normalized by the source size in f32, a plane `a0 + dadx·x`
+/// evaluated at the destination pixel centre. Destination pixels `d0..d1`
+/// (`d0 < d1`) take source positions `s_first`…`s_last` (reversed for a flip).
+#[derive(Clone, Copy, Debug)]
+struct Axis {
+    a0: f32,
+    dadx: f32,
+    len: f32,
+}
+
+impl Axis {
+    fn new(d0: i32, d1: i32, s_first: i32, s_last: i32, len: u32) -> Axis {
+        let lenf = len as f32;
+        let (u0, u1) = (s_first as f32 / lenf, s_last as f32 / lenf);
+        let dadx = (u1 - u0) / (d1 - d0) as f32;
+        Axis {
+            a0: u0 - dadx * d0 as f32,
+            dadx,
+            len: lenf,
+        }
+    }
+
+    /// The normalized source coordinate at destination pixel `x`.
+    fn at(&self, x: u32) -> f32 {
+        self.a0 + self.dadx * (x as f32 + 0.5)
+    }
+
+    /// The nearest texel (`ifloor(u · len)`), `None` outside the source.
+    fn nearest(&self, x: u32) -> Option<u32> {
+        let i = (self.at(x) * self.len).floor();
+        (i >= 0.0 && i < self.len).then_some(i as u32)
+    }
+}
+
+/// Copies `src`'s rectangle to `dst`'s, scaled and flipped, inside `clip`,
+/// as llvmpipe's blitter draws it ([`Axis`]): NEAREST takes `ifloor(u·len)`;
+/// LINEAR samples the source as an RGBA8 texture with CLAMP_TO_EDGE on
+/// llvmpipe's AoS path (8.8 fixed-point coordinates, 8-bit lerps:
+/// `softgl_jit::texture::filter::aos`). Depth and stencil are copied
+/// nearest. Destination pixels whose nearest source texel is outside the
+/// read buffer are left as they are (Mesa clips such blits, `_mesa_clip_blit`).
 fn blit(
     from: &Framebuffer,
     to: &mut Framebuffer,
@@ -1486,44 +1556,64 @@ fn blit(
     (color, depth, stencil): (bool, bool, bool),
     filter: BlitFilter,
 ) {
-    let (dx0, dx1) = (d[0].min(d[2]), d[0].max(d[2]));
-    let (dy0, dy1) = (d[1].min(d[3]), d[1].max(d[3]));
-    if dx0 == dx1 || dy0 == dy1 {
+    use softgl_jit::texture::filter::{aos, Level};
+    use softgl_jit::texture::{Filter, Image, TexelFormat, Wrap};
+    // Destination rectangles are drawn left to right, bottom to top; the
+    // source edges follow the destination's (a reversed pair flips).
+    let (dx0, dx1, sxa, sxb) = if d[0] <= d[2] { (d[0], d[2], s[0], s[2]) } else { (d[2], d[0], s[2], s[0]) };
+    let (dy0, dy1, sya, syb) = if d[1] <= d[3] { (d[1], d[3], s[1], s[3]) } else { (d[3], d[1], s[3], s[1]) };
+    if dx0 == dx1 || dy0 == dy1 || s[0] == s[2] || s[1] == s[3] {
         return;
     }
-    // Flip when exactly one of the rectangles is reversed on an axis.
-    let flip_x = (s[2] < s[0]) != (d[2] < d[0]);
-    let flip_y = (s[3] < s[1]) != (d[3] < d[1]);
-    let (sx0, sx1) = (s[0].min(s[2]) as f64, s[0].max(s[2]) as f64);
-    let (sy0, sy1) = (s[1].min(s[3]) as f64, s[1].max(s[3]) as f64);
-    let scale_x = ((sx1 - sx0) / f64::from(dx1 - dx0)) as f32;
-    let scale_y = ((sy1 - sy0) / f64::from(dy1 - dy0)) as f32;
-    let out = clip.intersect(to.bounds());
-    let (fw, fh) = (from.width() as i64, from.height() as i64);
-    let map = |p: i32, d0: i32, s0: f64, s1: f64, scale: f32, flip: bool| -> f32 {
-        let t = (p - d0) as f32 + 0.5;
-        if flip {
-            (s1 as f32) - t * scale
-        } else {
-            (s0 as f32) + t * scale
-        }
+    let ax = Axis::new(dx0, dx1, sxa, sxb, from.width());
+    let ay = Axis::new(dy0, dy1, sya, syb, from.height());
+    let out = clip.intersect(to.bounds()).intersect(Rect {
+        x0: dx0.max(0) as u32,
+        y0: dy0.max(0) as u32,
+        x1: dx1.max(0) as u32,
+        y1: dy1.max(0) as u32,
+    });
+    if out.is_empty() {
+        return;
+    }
+    // The source as RGBA8 texels, for LINEAR.
+    let texels: Vec<u8> = if color && filter == BlitFilter::Linear {
+        let (w, h) = (from.width(), from.height());
+        (0..h)
+            .flat_map(|y| (0..w).map(move |x| (x, y)))
+            .flat_map(|(x, y)| from.pixel(x, y).unwrap_or([0; 4]))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let image = Image {
+        texels: &texels,
+        width: from.width(),
+        height: from.height(),
+        depth: 1,
+    };
+    let level = Level {
+        image: &image,
+        format: TexelFormat::Rgba8,
+        pot: [from.width().is_power_of_two(), from.height().is_power_of_two(), true],
     };
     let mut t = to.target();
     let cf = t.color_format();
-    for y in out.y0.max(dy0.max(0) as u32)..out.y1.min(dy1.max(0) as u32) {
-        let sy = map(y as i32, dy0, sy0, sy1, scale_y, flip_y);
-        for x in out.x0.max(dx0.max(0) as u32)..out.x1.min(dx1.max(0) as u32) {
-            let sx = map(x as i32, dx0, sx0, sx1, scale_x, flip_x);
-            let (nx, ny) = (sx.floor() as i64, sy.floor() as i64);
-            if nx < 0 || ny < 0 || nx >= fw || ny >= fh {
+    for y in out.y0..out.y1 {
+        let ny = ay.nearest(y);
+        for x in out.x0..out.x1 {
+            let nx = ax.nearest(x);
+            let (Some(nx), Some(ny)) = (nx, ny) else {
                 continue;
-            }
-            let (nx, ny) = (nx as u32, ny as u32);
+            };
             let i = t.index(x, y);
             if color {
                 let rgba = match filter {
                     BlitFilter::Nearest => from.pixel(nx, ny).unwrap_or([0; 4]),
-                    BlitFilter::Linear => bilinear(from, sx, sy),
+                    BlitFilter::Linear => {
+                        let coord = [ax.at(x), ay.at(y), 0.0];
+                        aos(&level, Filter::Linear, 2, coord, [Wrap::ClampToEdge; 3])
+                    }
                 };
                 let off = t.color_offset(x, y);
                 let v = pixel::pack(cf, rgba, None);
@@ -1545,27 +1635,6 @@ fn blit(
             }
         }
     }
-}
-
-/// The bilinear colour at source position `(sx, sy)`, edges clamped.
-fn bilinear(from: &Framebuffer, sx: f32, sy: f32) -> [u8; 4] {
-    let (w, h) = (from.width() as i64, from.height() as i64);
-    let (u, v) = (sx - 0.5, sy - 0.5);
-    let (x0, y0) = (u.floor(), v.floor());
-    let (fx, fy) = (u - x0, v - y0);
-    let at = |x: f32, y: f32| {
-        let xi = (x as i64).clamp(0, w - 1) as u32;
-        let yi = (y as i64).clamp(0, h - 1) as u32;
-        from.pixel(xi, yi).unwrap_or([0; 4]).map(f32::from)
-    };
-    let (a, b) = (at(x0, y0), at(x0 + 1.0, y0));
-    let (c, d) = (at(x0, y0 + 1.0), at(x0 + 1.0, y0 + 1.0));
-    std::array::from_fn(|k| {
-        let top = a[k] + (b[k] - a[k]) * fx;
-        let bottom = c[k] + (d[k] - c[k]) * fx;
-        let v = top + (bottom - top) * fy;
-        v.round().clamp(0.0, 255.0) as u8
-    })
 }
 
 fn depth_buffer(format: DepthFormat, n: usize) -> GlResult<DepthBuffer> {

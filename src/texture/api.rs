@@ -395,7 +395,7 @@ impl Context {
                 GlError::InvalidEnum,
             )?;
             let depth = internal.base() == BaseFormat::Depth;
-            let view = gl.take_read(!depth)?;
+            let view = gl.take_read_unflushed(!depth)?;
             check(
                 !depth || gl.read_ref(&view).depth_format().is_some(),
                 GlError::InvalidOperation,
@@ -451,7 +451,7 @@ impl Context {
             }
             let depth = img.internal.base() == BaseFormat::Depth;
             let mut img = img.clone();
-            let view = gl.take_read(!depth)?;
+            let view = gl.take_read_unflushed(!depth)?;
             let fb = gl.read_ref(&view);
             check(!depth || fb.depth_format().is_some(), GlError::InvalidOperation)?;
             let at = off.map(|o| o as usize);

@@ -25,6 +25,7 @@ mod arrays;
 mod attrib;
 mod enums;
 mod extra_attribs;
+mod fbo;
 mod fog;
 pub(crate) mod get;
 mod immediate;
@@ -39,6 +40,7 @@ mod texunit;
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
 pub use extra_attribs::*;
+pub use fbo::*;
 pub use fog::*;
 pub use get::*;
 pub use immediate::*;
@@ -56,6 +58,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         arrays::table,
         attrib::table,
         extra_attribs::table,
+        fbo::table,
         fog::table,
         fog::color_table,
         get::table,

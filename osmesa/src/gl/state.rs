@@ -115,27 +115,45 @@ exports! {
             Ok(())
         })
     }
-    /// `GL_FRONT` and its aliases: an OSMesa context is single-buffered.
+    /// `GL_FRONT` and its aliases: an OSMesa context is single-buffered;
+    /// `GL_NONE` turns colour writes off; on a framebuffer object
+    /// `GL_COLOR_ATTACHMENTi` or `GL_NONE` (`src/fbo.rs`).
     [] fn glDrawBuffer(mode: GLenum) {
-        checked(move |gl| match mode {
-            _ if gl.inside_begin() => Err(GlError::InvalidOperation),
-            GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK => Ok(()),
-            GL_NONE | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT => {
-                Err(GlError::InvalidOperation)
+        checked(move |gl| {
+            if gl.inside_begin() {
+                return Err(GlError::InvalidOperation);
             }
-            0x0409..=0x040C => Err(GlError::InvalidOperation),
-            _ => Err(GlError::InvalidEnum),
+            let object = gl.fbo_state().draw_binding() != 0;
+            match mode {
+                GL_NONE => gl.draw_buffer(None),
+                0x8CE0..=0x8CFF if object => gl.draw_buffer(Some(mode - 0x8CE0)),
+                0x8CE0..=0x8CFF => Err(GlError::InvalidOperation),
+                GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK if !object => gl.draw_buffer_window(),
+                GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK => Err(GlError::InvalidOperation),
+                GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT => Err(GlError::InvalidOperation),
+                0x0409..=0x040C => Err(GlError::InvalidOperation),
+                _ => Err(GlError::InvalidEnum),
+            }
         })
     }
     [] fn glReadBuffer(mode: GLenum) {
-        checked(move |gl| match mode {
-            _ if gl.inside_begin() => Err(GlError::InvalidOperation),
-            GL_FRONT | GL_FRONT_LEFT | GL_LEFT => Ok(()),
-            GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT | GL_FRONT_AND_BACK => {
-                Err(GlError::InvalidOperation)
+        checked(move |gl| {
+            if gl.inside_begin() {
+                return Err(GlError::InvalidOperation);
             }
-            0x0409..=0x040C => Err(GlError::InvalidOperation),
-            _ => Err(GlError::InvalidEnum),
+            let object = gl.fbo_state().read_binding() != 0;
+            match mode {
+                GL_NONE => gl.read_buffer(None, false),
+                0x8CE0..=0x8CFF if object => gl.read_buffer(Some(mode - 0x8CE0), false),
+                0x8CE0..=0x8CFF => Err(GlError::InvalidOperation),
+                GL_FRONT | GL_FRONT_LEFT | GL_LEFT if !object => gl.read_buffer(None, true),
+                GL_FRONT | GL_FRONT_LEFT | GL_LEFT => Err(GlError::InvalidOperation),
+                GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT | GL_FRONT_AND_BACK => {
+                    Err(GlError::InvalidOperation)
+                }
+                0x0409..=0x040C => Err(GlError::InvalidOperation),
+                _ => Err(GlError::InvalidEnum),
+            }
         })
     }
 
