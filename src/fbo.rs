@@ -285,6 +285,20 @@ pub struct FramebufferObject {
     pub read_buffer: Option<u32>,
     /// The colour bytes drawn when no colour attachment is (see the module doc).
     scratch: Vec<u8>,
+    /// The depth texture's pixels in depth-test units as the object last
+    /// wrote them back, with the texels they were written to: reused when
+    /// the image still holds those texels (every writer copies them first
+    /// while this holds a reference), which spares the conversion when a
+    /// shadow map is bound again (MuJoCo, every frame).
+    depth_cache: Option<DepthCache>,
+}
+
+/// See [`FramebufferObject::depth_cache`].
+#[derive(Clone, Debug)]
+struct DepthCache {
+    texels: std::sync::Arc<Vec<u8>>,
+    attachment: Attachment,
+    buffer: DepthBuffer,
 }
 
 impl Default for FramebufferObject {
@@ -296,6 +310,7 @@ impl Default for FramebufferObject {
             draw_buffer: Some(0),
             read_buffer: Some(0),
             scratch: Vec::new(),
+            depth_cache: None,
         }
     }
 }
@@ -459,12 +474,7 @@ fn status(fbo: &FboState, textures: &crate::texture::TextureStore, name: u32) ->
     let mut images = Vec::new();
     // Attachment completeness: each attached image exists with a non-zero
     // size and a format renderable at its point.
-    for (a, point) in f
-        .color
-        .iter()
-        .map(|a| (*a, 0))
-        .chain([(f.depth, 1), (f.stencil, 2)])
-    {
+    for (a, point) in f.color.iter().map(|a| (*a, 0)).chain([(f.depth, 1), (f.stencil, 2)]) {
         if a == Attachment::None {
             continue;
         }
@@ -768,7 +778,11 @@ impl Context {
             None => true,
             Some(t) => t.texture_target() == obj_target && !matches!(t, T::Proxy(_)),
         };
-        self.record(if ok_target { Ok(()) } else { Err(GlError::InvalidOperation) })?;
+        self.record(if ok_target {
+            Ok(())
+        } else {
+            Err(GlError::InvalidOperation)
+        })?;
         let max_level = crate::texture::max_levels(obj_target) as i32;
         let layer_ok = layer >= 0 && (obj_target == TexTarget::D3 || layer == 0);
         self.record(if (0..max_level).contains(&level) && layer_ok {
@@ -818,7 +832,11 @@ impl Context {
 
     /// What `point` of the `target` binding holds (`glGetFramebufferAttachmentParameteriv`);
     /// `InvalidOperation` on object 0.
-    pub fn framebuffer_attachment(&mut self, target: FramebufferTarget, point: AttachmentPoint) -> GlResult<Attachment> {
+    pub fn framebuffer_attachment(
+        &mut self,
+        target: FramebufferTarget,
+        point: AttachmentPoint,
+    ) -> GlResult<Attachment> {
         self.outside()?;
         let name = match target {
             FramebufferTarget::Read => self.fbo.read,
@@ -1100,9 +1118,14 @@ impl Context {
             }
             a => self.take_color(a, take)?,
         };
-        let depth = match c.depth {
-            Attachment::None => None,
-            a => Some(self.take_depth(a, take)?),
+        let cached = match (take, c.depth) {
+            (true, a @ Attachment::Texture { .. }) => self.cached_depth(c.fbo, a),
+            _ => None,
+        };
+        let depth = match (cached, c.depth) {
+            (Some(d), _) => Some(d),
+            (None, Attachment::None) => None,
+            (None, a) => Some(self.take_depth(a, take)?),
         };
         let stencil = match c.stencil {
             Attachment::None => None,
@@ -1161,14 +1184,17 @@ impl Context {
                     let bits = dv.format().bits();
                     self.write_texture(c.depth, w, h, |img, off| {
                         let t = &mut img.texels_mut()[off..];
-                        for (i, out) in t.chunks_exact_mut(4).take(w as usize * h as usize).enumerate() {
-                            let z = match &dv {
-                                DepthBuffer::D16(v) => u32::from(v[i]),
-                                DepthBuffer::D24(v) | DepthBuffer::D32(v) => v[i],
-                            };
-                            out.copy_from_slice(&depth_sampled(z, bits).to_ne_bytes());
-                        }
-                    })
+                        let n = w as usize * h as usize;
+                        convert_back(&dv, bits, &mut t[..4 * n]);
+                    });
+                    let texels = self.texture_texels(c.depth);
+                    if let (Some(texels), Some(f)) = (texels, self.fbo.framebuffer_mut(c.fbo)) {
+                        f.depth_cache = Some(DepthCache {
+                            texels,
+                            attachment: c.depth,
+                            buffer: dv,
+                        });
+                    }
                 }
                 _ => {}
             }
@@ -1208,6 +1234,23 @@ impl Context {
                 f(img, off);
             }
         }
+    }
+
+    /// The depth buffer [`FramebufferObject::depth_cache`] holds for
+    /// attachment `a` of object `fbo`, when the image still has its texels.
+    fn cached_depth(&mut self, fbo: u32, a: Attachment) -> Option<DepthBuffer> {
+        let cache = self.fbo.framebuffer_mut(fbo)?.depth_cache.take()?;
+        let current = self.texture_texels(a)?;
+        (cache.attachment == a && std::sync::Arc::ptr_eq(&cache.texels, &current)).then_some(cache.buffer)
+    }
+
+    /// The texels of texture attachment `a`'s image (shared).
+    fn texture_texels(&self, a: Attachment) -> Option<std::sync::Arc<Vec<u8>>> {
+        let Attachment::Texture { name, level, face, .. } = a else {
+            return None;
+        };
+        let img = self.textures.object(name)?.image(level as usize, face as usize)?;
+        Some(std::sync::Arc::clone(&img.texels))
     }
 
     /// The texels of texture attachment `a`'s layer.
@@ -1316,7 +1359,9 @@ impl Context {
         let fb = &self.fb;
         let a = Attachment::Renderbuffer(n);
         let depth = (c.depth == a).then(|| fb.depth_buffer().cloned()).flatten();
-        let stencil = (c.stencil == a).then(|| fb.stencil_buffer().map(<[u8]>::to_vec)).flatten();
+        let stencil = (c.stencil == a)
+            .then(|| fb.stencil_buffer().map(<[u8]>::to_vec))
+            .flatten();
         Ok(match (c.color == a, depth, stencil) {
             (true, _, _) => RbStorage::Color(fb.color_bytes().to_vec()),
             (_, Some(d), Some(s)) => RbStorage::DepthStencil(d, s),
@@ -1432,7 +1477,12 @@ impl Context {
         if read_samples > 0 && draw_samples > 0 && read_samples != draw_samples {
             return self.record(Err(GlError::InvalidOperation));
         }
-        let size = |r: [i32; 4]| ((i64::from(r[2]) - i64::from(r[0])).abs(), (i64::from(r[3]) - i64::from(r[1])).abs());
+        let size = |r: [i32; 4]| {
+            (
+                (i64::from(r[2]) - i64::from(r[0])).abs(),
+                (i64::from(r[3]) - i64::from(r[1])).abs(),
+            )
+        };
         if (read_samples > 0 || draw_samples > 0) && size(src) != size(dst) {
             return self.record(Err(GlError::InvalidOperation));
         }
@@ -1458,7 +1508,14 @@ impl Context {
             .unwrap_or(0)
     }
 
-    fn blit_from(&mut self, read: &ReadFb, src: [i32; 4], dst: [i32; 4], mask: BlitMask, filter: BlitFilter) -> GlResult {
+    fn blit_from(
+        &mut self,
+        read: &ReadFb,
+        src: [i32; 4],
+        dst: [i32; 4],
+        mask: BlitMask,
+        filter: BlitFilter,
+    ) -> GlResult {
         let draw_color = self.fb.color_enabled();
         let (read_color, depth_ok, stencil_ok) = {
             let s = self.read_ref(read);
@@ -1489,8 +1546,6 @@ impl Context {
         if !(color || depth_ok || stencil_ok) {
             return Ok(());
         }
-        // The source copied first: the read and draw framebuffers may be one.
-        let src_fb = self.read_ref(read).clone();
         let st = self.state();
         let clip = if st.scissor_test {
             let b = st.scissor;
@@ -1499,7 +1554,21 @@ impl Context {
         } else {
             self.fb.bounds()
         };
-        blit(&src_fb, &mut self.fb, src, dst, clip, (color, depth_ok, stencil_ok), filter);
+        let what = (color, depth_ok, stencil_ok);
+        match read {
+            // Its own buffers (copies of the objects').
+            ReadFb::Assembled(from) => blit(from, &mut self.fb, src, dst, clip, what, filter),
+            // The window's buffers, waiting beside the object drawn.
+            ReadFb::Window => match self.fbo.window.as_ref() {
+                Some(from) => blit(from, &mut self.fb, src, dst, clip, what, filter),
+                None => {}
+            },
+            // One framebuffer: the source is copied first.
+            ReadFb::Draw => {
+                let from = self.fb.clone();
+                blit(&from, &mut self.fb, src, dst, clip, what, filter);
+            }
+        }
         Ok(())
     }
 }
@@ -1560,8 +1629,16 @@ fn blit(
     use softgl_jit::texture::{Filter, Image, TexelFormat, Wrap};
     // Destination rectangles are drawn left to right, bottom to top; the
     // source edges follow the destination's (a reversed pair flips).
-    let (dx0, dx1, sxa, sxb) = if d[0] <= d[2] { (d[0], d[2], s[0], s[2]) } else { (d[2], d[0], s[2], s[0]) };
-    let (dy0, dy1, sya, syb) = if d[1] <= d[3] { (d[1], d[3], s[1], s[3]) } else { (d[3], d[1], s[3], s[1]) };
+    let (dx0, dx1, sxa, sxb) = if d[0] <= d[2] {
+        (d[0], d[2], s[0], s[2])
+    } else {
+        (d[2], d[0], s[2], s[0])
+    };
+    let (dy0, dy1, sya, syb) = if d[1] <= d[3] {
+        (d[1], d[3], s[1], s[3])
+    } else {
+        (d[3], d[1], s[3], s[1])
+    };
     if dx0 == dx1 || dy0 == dy1 || s[0] == s[2] || s[1] == s[3] {
         return;
     }
@@ -1637,6 +1714,42 @@ fn blit(
     }
 }
 
+/// Writes depth-test units back as the `Depth32F` texels llvmpipe's sampler
+/// would read (`unpack::depth_sampled`), on two threads for big images
+/// (4096²: a 64 MiB pass).
+fn convert_back(d: &DepthBuffer, bits: u32, out: &mut [u8]) {
+    // `depth_sampled` with its scale hoisted, for the loop to vectorize
+    // (up to 24 bits: `z · f32(1/max)`, exactly as `depth_sampled`).
+    let scale = (1.0 / ((1u64 << bits.min(24)) - 1) as f64) as f32;
+    let run = |range: std::ops::Range<usize>, out: &mut [u8]| match d {
+        DepthBuffer::D16(v) => {
+            for (o, &z) in out.chunks_exact_mut(4).zip(&v[range]) {
+                o.copy_from_slice(&(f32::from(z) * scale).to_ne_bytes());
+            }
+        }
+        DepthBuffer::D24(v) => {
+            for (o, &z) in out.chunks_exact_mut(4).zip(&v[range]) {
+                o.copy_from_slice(&(z as f32 * scale).to_ne_bytes());
+            }
+        }
+        DepthBuffer::D32(v) => {
+            for (o, &z) in out.chunks_exact_mut(4).zip(&v[range]) {
+                o.copy_from_slice(&depth_sampled(z, bits).to_ne_bytes());
+            }
+        }
+    };
+    let n = out.len() / 4;
+    if n < 1 << 16 {
+        return run(0..n, out);
+    }
+    let half = n / 2;
+    let (a, b) = out.split_at_mut(4 * half);
+    std::thread::scope(|s| {
+        s.spawn(|| run(0..half, a));
+        run(half..n, b);
+    });
+}
+
 fn depth_buffer(format: DepthFormat, n: usize) -> GlResult<DepthBuffer> {
     Ok(match format {
         DepthFormat::D16 => DepthBuffer::D16(alloc(n, u16::MAX)?),
@@ -1652,4 +1765,3 @@ fn alloc<T: Clone>(n: usize, value: T) -> GlResult<Vec<T>> {
     v.resize(n, value);
     Ok(v)
 }
-

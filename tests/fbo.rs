@@ -5,8 +5,7 @@ use softgl::fbo::{
     AttachmentPoint as P, BlitFilter, BlitMask, FramebufferStatus as S, FramebufferTarget as T, RenderbufferFormat as F,
 };
 use softgl::texture::{
-    Filter, InternalFormat, MipFilter, PixelFormat, PixelStore, PixelType, TexImageTarget, TexParam,
-    TextureTarget,
+    Filter, InternalFormat, MipFilter, PixelFormat, PixelStore, PixelType, TexImageTarget, TexParam, TextureTarget,
 };
 use softgl::{Capability, ClearMask, CompareFunc, Context, FramebufferDesc, GlError, PrimitiveMode, ReadFormat};
 
@@ -101,10 +100,16 @@ fn completeness_and_its_errors() {
     gl.draw_buffer(None).unwrap();
     assert_eq!(gl.check_framebuffer_status(T::Both), Ok(S::Complete));
     // Sizes and samples.
-    assert_eq!(gl.renderbuffer_storage(0, F::Rgba8, 16385, 1), Err(GlError::InvalidValue));
+    assert_eq!(
+        gl.renderbuffer_storage(0, F::Rgba8, 16385, 1),
+        Err(GlError::InvalidValue)
+    );
     assert_eq!(gl.renderbuffer_storage(5, F::Rgba8, 1, 1), Err(GlError::InvalidValue));
     gl.bind_renderbuffer(0).unwrap();
-    assert_eq!(gl.renderbuffer_storage(0, F::Rgba8, 1, 1), Err(GlError::InvalidOperation));
+    assert_eq!(
+        gl.renderbuffer_storage(0, F::Rgba8, 1, 1),
+        Err(GlError::InvalidOperation)
+    );
     gl.bind_framebuffer(T::Both, 0).unwrap();
     assert_eq!(gl.check_framebuffer_status(T::Both), Ok(S::Complete));
     assert_eq!(
@@ -167,8 +172,15 @@ fn a_depth_texture_is_rendered_and_read_back() {
     gl.bind_texture(TextureTarget::D2, 3).unwrap();
     gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Nearest, MipFilter::None))
         .unwrap();
-    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::DepthComponent24, [4, 4, 1], 0, None)
-        .unwrap();
+    gl.tex_image(
+        TexImageTarget::D2,
+        0,
+        InternalFormat::DepthComponent24,
+        [4, 4, 1],
+        0,
+        None,
+    )
+    .unwrap();
     let fb = gl.gen_framebuffers(1).unwrap()[0];
     gl.bind_framebuffer(T::Both, fb).unwrap();
     gl.framebuffer_texture(T::Both, P::Depth, Some(TexImageTarget::D2), 3, 0, 0)
@@ -269,4 +281,153 @@ fn large_and_tiny_framebuffers() {
     quad(&mut gl, [1.0, 0.0, 0.0], 0.0);
     let px = gl.read_pixels(4095, 8191, 2, 1, ReadFormat::Rgba8).unwrap();
     assert_eq!(px, [0, 255, 0, 255, 255, 0, 0, 255]);
+}
+
+/// The bound texture's level 0 of `target` as RGBA bytes.
+fn texels(gl: &mut Context, target: TexImageTarget, len: usize) -> Vec<u8> {
+    let mut out = vec![0u8; len];
+    gl.get_tex_image(
+        target,
+        0,
+        PixelFormat::Rgba,
+        PixelType::UnsignedByte,
+        &PixelStore::DEFAULT,
+        &mut out,
+    )
+    .unwrap();
+    out
+}
+
+#[test]
+fn cube_faces_and_3d_layers_are_rendered_into() {
+    let mut gl = context(4, 4);
+    gl.bind_texture(TextureTarget::Cube, 5).unwrap();
+    for f in 0..6 {
+        gl.tex_image(
+            TexImageTarget::CubeFace(f),
+            0,
+            InternalFormat::Rgba8,
+            [2, 2, 1],
+            0,
+            None,
+        )
+        .unwrap();
+    }
+    let fb = gl.gen_framebuffers(1).unwrap()[0];
+    gl.bind_framebuffer(T::Both, fb).unwrap();
+    gl.viewport(0, 0, 2, 2).unwrap();
+    for f in 0..6u8 {
+        gl.framebuffer_texture(T::Both, P::Color(0), Some(TexImageTarget::CubeFace(f)), 5, 0, 0)
+            .unwrap();
+        assert_eq!(gl.check_framebuffer_status(T::Both), Ok(S::Complete));
+        gl.clear_color(f32::from(f) / 5.0, 0.0, 0.0, 1.0).unwrap();
+        gl.clear(ClearMask::COLOR).unwrap();
+    }
+    // A cube face given to a 2D target: INVALID_OPERATION.
+    assert_eq!(
+        gl.framebuffer_texture(T::Both, P::Color(0), Some(TexImageTarget::D2), 5, 0, 0),
+        Err(GlError::InvalidOperation)
+    );
+    assert_eq!(gl.get_error(), Some(GlError::InvalidOperation));
+    gl.bind_framebuffer(T::Both, 0).unwrap();
+    for f in 0..6u8 {
+        let t = texels(&mut gl, TexImageTarget::CubeFace(f), 16);
+        let red = (f32::from(f) / 5.0 * 255.0).round_ties_even() as u8;
+        assert!(t.chunks(4).all(|p| p == [red, 0, 0, 255]), "face {f}: {t:?}");
+    }
+    // Slice 2 of a 3D texture.
+    gl.bind_texture(TextureTarget::D3, 6).unwrap();
+    gl.tex_image(TexImageTarget::D3, 0, InternalFormat::Rgba8, [2, 2, 3], 0, None)
+        .unwrap();
+    gl.bind_framebuffer(T::Both, fb).unwrap();
+    gl.framebuffer_texture(T::Both, P::Color(0), Some(TexImageTarget::D3), 6, 0, 2)
+        .unwrap();
+    gl.clear_color(0.0, 1.0, 0.0, 1.0).unwrap();
+    gl.clear(ClearMask::COLOR).unwrap();
+    assert_eq!(
+        gl.framebuffer_texture(T::Both, P::Color(0), Some(TexImageTarget::D3), 6, 0, 3),
+        Ok(())
+    );
+    assert_eq!(gl.check_framebuffer_status(T::Both), Ok(S::IncompleteAttachment));
+    gl.bind_framebuffer(T::Both, 0).unwrap();
+    let t = texels(&mut gl, TexImageTarget::D3, 48);
+    assert!(t[..32].iter().all(|&b| b == 0), "slices 0 and 1 untouched");
+    assert!(t[32..].chunks(4).all(|p| p == [0, 255, 0, 255]), "slice 2: {t:?}");
+    assert_eq!(gl.get_error(), None);
+}
+
+#[test]
+fn a_texture_redefined_while_attached_is_checked_again() {
+    let mut gl = context(4, 4);
+    rgba_texture(&mut gl, 2, 4, 4);
+    let fb = gl.gen_framebuffers(1).unwrap()[0];
+    gl.bind_framebuffer(T::Both, fb).unwrap();
+    gl.framebuffer_texture(T::Both, P::Color(0), Some(TexImageTarget::D2), 2, 0, 0)
+        .unwrap();
+    gl.clear_color(1.0, 1.0, 0.0, 1.0).unwrap();
+    gl.clear(ClearMask::COLOR).unwrap();
+    // Redefined as a luminance image: not colour-renderable here.
+    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Luminance8, [4, 4, 1], 0, None)
+        .unwrap();
+    assert_eq!(gl.check_framebuffer_status(T::Both), Ok(S::Unsupported));
+    assert_eq!(gl.clear(ClearMask::COLOR), Err(GlError::InvalidFramebufferOperation));
+    gl.tex_image(TexImageTarget::D2, 0, InternalFormat::Rgba8, [2, 2, 1], 0, None)
+        .unwrap();
+    gl.viewport(0, 0, 2, 2).unwrap();
+    gl.clear(ClearMask::COLOR).unwrap();
+    assert_eq!(
+        gl.read_pixels(1, 1, 1, 1, ReadFormat::Rgba8).unwrap(),
+        [255, 255, 0, 255]
+    );
+    // Deleting the texture detaches it.
+    gl.get_error();
+    gl.delete_textures(&[2]);
+    assert_eq!(gl.check_framebuffer_status(T::Both), Ok(S::MissingAttachment));
+}
+
+#[test]
+fn a_4096_shadow_map_bound_again_is_not_converted_again() {
+    // Figures (not assertions): the time of binding a 4096² depth texture
+    // for drawing and back, the first time (f32 texels converted to depth
+    // units) and again (the cached depth buffer reused).
+    let mut gl = context(4, 4);
+    gl.bind_texture(TextureTarget::D2, 9).unwrap();
+    gl.tex_image(
+        TexImageTarget::D2,
+        0,
+        InternalFormat::DepthComponent24,
+        [4096, 4096, 1],
+        0,
+        None,
+    )
+    .unwrap();
+    let fb = gl.gen_framebuffers(1).unwrap()[0];
+    gl.bind_framebuffer(T::Both, fb).unwrap();
+    gl.framebuffer_texture(T::Both, P::Depth, Some(TexImageTarget::D2), 9, 0, 0)
+        .unwrap();
+    gl.bind_framebuffer(T::Both, 0).unwrap();
+    for pass in 0..3 {
+        let t = std::time::Instant::now();
+        gl.bind_framebuffer(T::Both, fb).unwrap();
+        let acquire = t.elapsed();
+        gl.viewport(0, 0, 4096, 4096).unwrap();
+        gl.clear_depth(0.25).unwrap();
+        gl.clear(ClearMask::DEPTH).unwrap();
+        gl.flush().unwrap();
+        let t = std::time::Instant::now();
+        gl.bind_framebuffer(T::Both, 0).unwrap();
+        println!("pass {pass}: bind {acquire:?}, unbind (write back) {:?}", t.elapsed());
+    }
+    let mut out = vec![0u8; 4096 * 4096 * 4];
+    gl.get_tex_image(
+        TexImageTarget::D2,
+        0,
+        PixelFormat::DepthComponent,
+        PixelType::Float,
+        &PixelStore::DEFAULT,
+        &mut out,
+    )
+    .unwrap();
+    let z = 0x40_0000 as f32 * (1.0 / 16_777_215.0f64) as f32;
+    assert!(out.chunks(4).all(|c| f32::from_ne_bytes(c.try_into().unwrap()) == z));
 }

@@ -108,7 +108,14 @@ fn read_source(fb: &Framebuffer, depth: bool, x: i32, y: i32) -> Option<[Raw; 4]
 
 /// Copies the framebuffer rectangle at `xy` of `fb` into `img` at `offset`
 /// (slice `offset[2]` for 3D); pixels outside the framebuffer are left as they are.
-fn copy_into_slice(fb: &Framebuffer, img: &mut TexImage, offset: [usize; 3], xy: [i32; 2], size: [i32; 2], depth: bool) {
+fn copy_into_slice(
+    fb: &Framebuffer,
+    img: &mut TexImage,
+    offset: [usize; 3],
+    xy: [i32; 2],
+    size: [i32; 2],
+    depth: bool,
+) {
     for j in 0..size[1].max(0) {
         for i in 0..size[0].max(0) {
             let (x, y) = (i64::from(xy[0]) + i64::from(i), i64::from(xy[1]) + i64::from(j));
@@ -374,7 +381,10 @@ impl Context {
         size: [i32; 2],
         border: i32,
     ) -> GlResult {
-        self.sync_texture(self.textures.binding(self.textures.active_unit(), target.texture_target()));
+        self.sync_texture(
+            self.textures
+                .binding(self.textures.active_unit(), target.texture_target()),
+        );
         self.finish_scene();
         self.tex_call(|gl| {
             check(
@@ -419,7 +429,6 @@ impl Context {
         })
     }
 
-
     /// `glCopyTexSubImage1D/2D/3D`: `offset` `[x, 0, 0]` for 1D, `[x, y, 0]`
     /// for 2D and cube faces, `[x, y, z]` for 3D (one slice).
     pub fn copy_tex_sub_image(
@@ -430,7 +439,10 @@ impl Context {
         xy: [i32; 2],
         size: [i32; 2],
     ) -> GlResult {
-        self.sync_texture(self.textures.binding(self.textures.active_unit(), target.texture_target()));
+        self.sync_texture(
+            self.textures
+                .binding(self.textures.active_unit(), target.texture_target()),
+        );
         self.finish_scene();
         self.tex_call(|gl| {
             check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
@@ -474,7 +486,10 @@ impl Context {
         pack: &PixelStore,
         out: &mut [u8],
     ) -> GlResult {
-        self.sync_texture(self.textures.binding(self.textures.active_unit(), target.texture_target()));
+        self.sync_texture(
+            self.textures
+                .binding(self.textures.active_unit(), target.texture_target()),
+        );
         self.tex_call(|gl| {
             check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
             let tt = target.texture_target();

@@ -172,7 +172,14 @@ unsafe fn read_names(n: i32, names: *const u32) -> GlResult<Vec<u32>> {
 
 /// `glFramebufferTexture{1D,2D,3D}`: `dims` the call's; the texture target
 /// must be one of those dimensions (cube faces for 2D).
-fn framebuffer_texture(target: GLenum, attachment: GLenum, textarget: Option<(GLenum, u32)>, texture: u32, level: i32, layer: i32) {
+fn framebuffer_texture(
+    target: GLenum,
+    attachment: GLenum,
+    textarget: Option<(GLenum, u32)>,
+    texture: u32,
+    level: i32,
+    layer: i32,
+) {
     now(|_, gl| {
         outside(gl)?;
         let t = fb_target(target)?;
@@ -302,12 +309,12 @@ pub(super) fn value(gl: &mut Context, pname: GLenum) -> Option<super::get::Val> 
     let (draw, read) = (s.draw_binding(), s.read_binding());
     let int = |v: i64| Some(Val::I(vec![v]));
     match pname {
-        0x8CA6 => int(draw.into()),                          // (DRAW_)FRAMEBUFFER_BINDING
-        0x8CAA => int(read.into()),                          // READ_FRAMEBUFFER_BINDING
-        0x8CA7 => int(s.renderbuffer_binding().into()),      // RENDERBUFFER_BINDING
-        0x84E8 => int(MAX_RENDERBUFFER_SIZE.into()),         // MAX_RENDERBUFFER_SIZE
-        0x8CDF => int(MAX_COLOR_ATTACHMENTS as i64),         // MAX_COLOR_ATTACHMENTS
-        0x8D57 => int(MAX_SAMPLES.into()),                   // MAX_SAMPLES
+        0x8CA6 => int(draw.into()),                     // (DRAW_)FRAMEBUFFER_BINDING
+        0x8CAA => int(read.into()),                     // READ_FRAMEBUFFER_BINDING
+        0x8CA7 => int(s.renderbuffer_binding().into()), // RENDERBUFFER_BINDING
+        0x84E8 => int(MAX_RENDERBUFFER_SIZE.into()),    // MAX_RENDERBUFFER_SIZE
+        0x8CDF => int(MAX_COLOR_ATTACHMENTS as i64),    // MAX_COLOR_ATTACHMENTS
+        0x8D57 => int(MAX_SAMPLES.into()),              // MAX_SAMPLES
         0x80A9 if draw != 0 => int(gl.draw_framebuffer_samples().into()), // SAMPLES
         0x80A8 if draw != 0 => int(i64::from(gl.draw_framebuffer_samples() > 0)), // SAMPLE_BUFFERS
         0x0C01 | 0x0C02 => {
