@@ -1559,10 +1559,11 @@ impl Context {
             // Its own buffers (copies of the objects').
             ReadFb::Assembled(from) => blit(from, &mut self.fb, src, dst, clip, what, filter),
             // The window's buffers, waiting beside the object drawn.
-            ReadFb::Window => match self.fbo.window.as_ref() {
-                Some(from) => blit(from, &mut self.fb, src, dst, clip, what, filter),
-                None => {}
-            },
+            ReadFb::Window => {
+                if let Some(from) = self.fbo.window.as_ref() {
+                    blit(from, &mut self.fb, src, dst, clip, what, filter);
+                }
+            }
             // One framebuffer: the source is copied first.
             ReadFb::Draw => {
                 let from = self.fb.clone();

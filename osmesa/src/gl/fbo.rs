@@ -221,7 +221,7 @@ fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname:
             Attachment::Renderbuffer(n) | Attachment::Texture { name: n, .. } => n as i32,
         },
         _ if none => return Err(err),
-        0x8CD2 | 0x8CD3 | 0x8CD4 => match a {
+        0x8CD2..=0x8CD4 => match a {
             Attachment::Texture {
                 name,
                 level,
