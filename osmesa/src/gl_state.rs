@@ -80,6 +80,8 @@ pub struct SavedAttrib {
     pub inert_caps: Vec<GLenum>,
     /// For `GL_TEXTURE_BIT` and `GL_ENABLE_BIT`.
     pub textures: Option<SavedTextures>,
+    /// `GL_DRAW_BUFFER` (`GL_COLOR_BUFFER_BIT`) and `GL_READ_BUFFER` (`GL_PIXEL_MODE_BIT`).
+    pub buffers: (GLenum, GLenum),
 }
 
 /// The texture state `glPushAttrib` saved: every unit (enables,

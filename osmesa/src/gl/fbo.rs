@@ -202,6 +202,58 @@ fn framebuffer_texture(
     })
 }
 
+/// `glDrawBuffer`: `GL_FRONT` and its aliases on the window (an OSMesa
+/// context is single-buffered), `GL_COLOR_ATTACHMENTi` on an object, and
+/// `GL_NONE` on either (colour writes off).
+pub(super) fn draw_buffer(gl: &mut Context, mode: GLenum) -> GlResult {
+    outside(gl)?;
+    let object = gl.fbo_state().draw_binding() != 0;
+    match mode {
+        GL_NONE => gl.draw_buffer(None),
+        0x8CE0..=0x8CFF if object => gl.draw_buffer(Some(mode - GL_COLOR_ATTACHMENT0)),
+        0x8CE0..=0x8CFF => Err(GlError::InvalidOperation),
+        GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK if !object => gl.draw_buffer_window(),
+        GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK => Err(GlError::InvalidOperation),
+        GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT => Err(GlError::InvalidOperation),
+        0x0409..=0x040C => Err(GlError::InvalidOperation),
+        _ => Err(GlError::InvalidEnum),
+    }
+}
+
+/// `glReadBuffer`, as [`draw_buffer`] for reads.
+pub(super) fn read_buffer(gl: &mut Context, mode: GLenum) -> GlResult {
+    outside(gl)?;
+    let object = gl.fbo_state().read_binding() != 0;
+    match mode {
+        GL_NONE => gl.read_buffer(None, false),
+        0x8CE0..=0x8CFF if object => gl.read_buffer(Some(mode - GL_COLOR_ATTACHMENT0), false),
+        0x8CE0..=0x8CFF => Err(GlError::InvalidOperation),
+        GL_FRONT | GL_FRONT_LEFT | GL_LEFT if !object => gl.read_buffer(None, true),
+        GL_FRONT | GL_FRONT_LEFT | GL_LEFT => Err(GlError::InvalidOperation),
+        GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT | GL_FRONT_AND_BACK => {
+            Err(GlError::InvalidOperation)
+        }
+        0x0409..=0x040C => Err(GlError::InvalidOperation),
+        _ => Err(GlError::InvalidEnum),
+    }
+}
+
+/// `GL_DRAW_BUFFER` and `GL_READ_BUFFER` now (what `glPushAttrib` saves
+/// with `GL_COLOR_BUFFER_BIT` and `GL_PIXEL_MODE_BIT`, as Mesa's
+/// `main/attrib.c`, from the bound objects).
+pub(super) fn buffers(gl: &Context) -> (GLenum, GLenum) {
+    let s = gl.fbo_state();
+    let of = |name: u32, draw: bool| match s.framebuffer(name) {
+        Some(f) => {
+            let b = if draw { f.draw_buffer } else { f.read_buffer };
+            b.map_or(GL_NONE, |i| GL_COLOR_ATTACHMENT0 + i)
+        }
+        None if (draw && s.window_draw_none()) || (!draw && s.window_read_none()) => GL_NONE,
+        None => GL_FRONT,
+    };
+    (of(s.draw_binding(), true), of(s.read_binding(), false))
+}
+
 /// `glGetFramebufferAttachmentParameteriv`'s value.
 fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname: GLenum) -> GlResult<i32> {
     let t = fb_target(target)?;
@@ -317,29 +369,8 @@ pub(super) fn value(gl: &mut Context, pname: GLenum) -> Option<super::get::Val> 
         0x8D57 => int(MAX_SAMPLES.into()),              // MAX_SAMPLES
         0x80A9 if draw != 0 => int(gl.draw_framebuffer_samples().into()), // SAMPLES
         0x80A8 if draw != 0 => int(i64::from(gl.draw_framebuffer_samples() > 0)), // SAMPLE_BUFFERS
-        0x0C01 | 0x0C02 => {
-            // DRAW_BUFFER, READ_BUFFER
-            let name = if pname == 0x0C01 { draw } else { read };
-            let v = match s.framebuffer(name) {
-                Some(f) => {
-                    let b = if pname == 0x0C01 { f.draw_buffer } else { f.read_buffer };
-                    b.map_or(GL_NONE, |i| GL_COLOR_ATTACHMENT0 + i)
-                }
-                None => {
-                    let none = if pname == 0x0C01 {
-                        s.window_draw_none()
-                    } else {
-                        s.window_read_none()
-                    };
-                    if none {
-                        GL_NONE
-                    } else {
-                        GL_FRONT
-                    }
-                }
-            };
-            int(v.into())
-        }
+        0x0C01 => int(buffers(gl).0.into()),            // DRAW_BUFFER
+        0x0C02 => int(buffers(gl).1.into()),            // READ_BUFFER
         0x0D52..=0x0D57 if draw != 0 => {
             // RED_BITS … STENCIL_BITS of the bound object (0 when incomplete).
             let (desc, color) = gl.draw_framebuffer_desc()?;

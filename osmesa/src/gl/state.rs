@@ -119,42 +119,10 @@ exports! {
     /// `GL_NONE` turns colour writes off; on a framebuffer object
     /// `GL_COLOR_ATTACHMENTi` or `GL_NONE` (`src/fbo.rs`).
     [] fn glDrawBuffer(mode: GLenum) {
-        checked(move |gl| {
-            if gl.inside_begin() {
-                return Err(GlError::InvalidOperation);
-            }
-            let object = gl.fbo_state().draw_binding() != 0;
-            match mode {
-                GL_NONE => gl.draw_buffer(None),
-                0x8CE0..=0x8CFF if object => gl.draw_buffer(Some(mode - 0x8CE0)),
-                0x8CE0..=0x8CFF => Err(GlError::InvalidOperation),
-                GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK if !object => gl.draw_buffer_window(),
-                GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK => Err(GlError::InvalidOperation),
-                GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT => Err(GlError::InvalidOperation),
-                0x0409..=0x040C => Err(GlError::InvalidOperation),
-                _ => Err(GlError::InvalidEnum),
-            }
-        })
+        checked(move |gl| super::fbo::draw_buffer(gl, mode))
     }
     [] fn glReadBuffer(mode: GLenum) {
-        checked(move |gl| {
-            if gl.inside_begin() {
-                return Err(GlError::InvalidOperation);
-            }
-            let object = gl.fbo_state().read_binding() != 0;
-            match mode {
-                GL_NONE => gl.read_buffer(None, false),
-                0x8CE0..=0x8CFF if object => gl.read_buffer(Some(mode - 0x8CE0), false),
-                0x8CE0..=0x8CFF => Err(GlError::InvalidOperation),
-                GL_FRONT | GL_FRONT_LEFT | GL_LEFT if !object => gl.read_buffer(None, true),
-                GL_FRONT | GL_FRONT_LEFT | GL_LEFT => Err(GlError::InvalidOperation),
-                GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT | GL_FRONT_AND_BACK => {
-                    Err(GlError::InvalidOperation)
-                }
-                0x0409..=0x040C => Err(GlError::InvalidOperation),
-                _ => Err(GlError::InvalidEnum),
-            }
-        })
+        checked(move |gl| super::fbo::read_buffer(gl, mode))
     }
 
     [] fn glClear(mask: u32) {

@@ -422,6 +422,14 @@ int main(int argc, char **argv) {
   E(BindFramebuffer(0x1234, f));
   E(BindRenderbuffer(0x1234, r[0]));
   E(CheckFramebufferStatus(0x1234));
+  /* The draw and read buffers in the attribute stack. */
+  glPushAttrib(GL_COLOR_BUFFER_BIT | GL_PIXEL_MODE_BIT);
+  glDrawBuffer(GL_NONE);
+  glReadBuffer(GL_NONE);
+  geti("DRAW_BUFFER pushed, set", GL_DRAW_BUFFER);
+  glPopAttrib();
+  geti("DRAW_BUFFER popped", GL_DRAW_BUFFER);
+  geti("READ_BUFFER popped", GL_READ_BUFFER);
   /* Blit errors. */
   BindFramebuffer(GL_READ_FRAMEBUFFER, a);
   BindFramebuffer(GL_DRAW_FRAMEBUFFER, f);
@@ -439,6 +447,20 @@ int main(int argc, char **argv) {
   E(BlitFramebuffer(0, 0, 8, 4, 0, 0, 8, 4, GL_COLOR_BUFFER_BIT, GL_LINEAR));
   BindFramebufferEXT(GL_FRAMEBUFFER, 0);
   geti("FRAMEBUFFER_BINDING after EXT", GL_FRAMEBUFFER_BINDING);
+  geti("DRAW_BUFFER window", GL_DRAW_BUFFER);
+  glPushAttrib(GL_COLOR_BUFFER_BIT);
+  E(glDrawBuffer(GL_NONE));
+  geti("DRAW_BUFFER window none", GL_DRAW_BUFFER);
+  glPopAttrib();
+  geti("DRAW_BUFFER window popped", GL_DRAW_BUFFER);
+  {
+    /* The window draws again after GL_NONE was popped. */
+    glViewport(0, 0, W, H);
+    glClearColor(1, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glFinish();
+    printf("window cleared %d %d %d\n", window[0], window[1], window[2]);
+  }
   DeleteFramebuffers(1, &a);
   DeleteRenderbuffers(1, &rb[0]);
   printf("deleted %d %d 0x%04x\n", IsFramebuffer(a), IsRenderbuffer(rb[0]), glGetError());
