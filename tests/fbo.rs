@@ -431,3 +431,35 @@ fn a_4096_shadow_map_bound_again_is_not_converted_again() {
     let z = 0x40_0000 as f32 * (1.0 / 16_777_215.0f64) as f32;
     assert!(out.chunks(4).all(|c| f32::from_ne_bytes(c.try_into().unwrap()) == z));
 }
+
+#[test]
+fn the_window_is_read_and_blitted_while_an_object_is_drawn() {
+    let mut gl = context(4, 4);
+    gl.clear_color(0.0, 0.0, 1.0, 1.0).unwrap();
+    gl.clear(ClearMask::ALL).unwrap();
+    let fb = rb_fbo(&mut gl, 4, 4);
+    gl.bind_framebuffer(T::Read, 0).unwrap();
+    assert_eq!(gl.read_pixels(3, 3, 1, 1, ReadFormat::Rgba8).unwrap(), [0, 0, 255, 255]);
+    let color = BlitMask {
+        color: true,
+        ..Default::default()
+    };
+    gl.blit_framebuffer([0, 0, 4, 4], [0, 0, 4, 4], color, BlitFilter::Nearest)
+        .unwrap();
+    gl.bind_framebuffer(T::Read, fb).unwrap();
+    assert_eq!(gl.read_pixels(0, 0, 1, 1, ReadFormat::Rgba8).unwrap(), [0, 0, 255, 255]);
+    // Sampling the texture drawn into (a feedback loop, undefined in GL):
+    // the draw samples what was rendered before it, and nothing panics.
+    rgba_texture(&mut gl, 4, 4, 4);
+    gl.framebuffer_texture(T::Both, P::Color(0), Some(TexImageTarget::D2), 4, 0, 0)
+        .unwrap();
+    gl.viewport(0, 0, 4, 4).unwrap();
+    gl.clear_color(0.0, 1.0, 0.0, 1.0).unwrap();
+    gl.clear(ClearMask::COLOR).unwrap();
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    gl.disable(Capability::DepthTest).unwrap();
+    // White modulated by the texels: green where it was cleared green.
+    quad(&mut gl, [1.0, 1.0, 1.0], 0.0);
+    assert_eq!(gl.read_pixels(1, 1, 1, 1, ReadFormat::Rgba8).unwrap(), [0, 255, 0, 255]);
+    assert_eq!(gl.get_error(), None);
+}
