@@ -343,7 +343,12 @@ struct Begun {
 
 /// A software GL 1.x context with its own framebuffer. `Send`: it owns all its data.
 pub struct Context {
-    fb: Framebuffer,
+    /// The framebuffer drawn into: the window's, or a framebuffer object's
+    /// attachments assembled (`src/fbo.rs`).
+    pub(crate) fb: Framebuffer,
+    /// Framebuffer and renderbuffer objects, and the window framebuffer
+    /// while an object is drawn into (`src/fbo.rs`).
+    pub(crate) fbo: crate::fbo::FboState,
     state: Tracked<RasterState>,
     modelview: MatrixStack,
     projection: MatrixStack,
@@ -387,7 +392,7 @@ pub struct Context {
 /// no texture (a textured plan borrows the texels).
 #[derive(Clone, Copy, Debug)]
 struct CachedPlan {
-    made_of: (u64, u64, u64, FramebufferDesc, bool),
+    made_of: (u64, u64, u64, (FramebufferDesc, bool), bool),
     key: FragmentKey,
     layout: VaryingLayout,
     uniforms: FragmentUniforms,
@@ -424,6 +429,7 @@ impl Context {
         Context {
             state: Tracked::new(RasterState::new(desc.width, desc.height)),
             fb,
+            fbo: Default::default(),
             modelview: MatrixStack::new(matrix::MAX_MODELVIEW_DEPTH),
             projection: MatrixStack::new(matrix::MAX_PROJECTION_DEPTH),
             matrix_mode: MatrixMode::Modelview,
@@ -455,10 +461,11 @@ impl Context {
         }
     }
 
-    /// The framebuffer, with every draw made so far rasterized into it.
+    /// The window framebuffer (the context's own, object 0), with every
+    /// draw made so far rasterized into it.
     pub fn framebuffer(&mut self) -> &Framebuffer {
         self.finish_scene();
-        &self.fb
+        self.fbo.window.as_ref().unwrap_or(&self.fb)
     }
 
     /// The buffer objects (GL 1.5) and their bindings.
@@ -501,25 +508,29 @@ impl Context {
         Ok(available)
     }
 
-    /// The framebuffer's size and formats (no flush needed).
+    /// The window framebuffer's size and formats (no flush needed).
     pub fn framebuffer_desc(&self) -> &FramebufferDesc {
-        self.fb.desc()
+        self.fbo.window.as_ref().unwrap_or(&self.fb).desc()
     }
 
-    /// The framebuffer, for callers that lend or hand out its memory (the C
-    /// ABI), with every draw made so far rasterized into it.
+    /// The window framebuffer, for callers that lend or hand out its memory
+    /// (the C ABI), with every draw made so far rasterized into it.
     pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
         self.finish_scene();
-        &mut self.fb
+        self.fbo.window.as_mut().unwrap_or(&mut self.fb)
     }
 
-    /// Draws into `fb` from now on and returns the previous framebuffer,
-    /// with every draw made so far rasterized into it. The state (viewport,
+    /// Makes `fb` the window framebuffer and returns the previous one, with
+    /// every draw made so far rasterized into it. The state (viewport,
     /// scissor box, …) is kept, as when a GL context is made current on
-    /// another drawable.
-    pub fn replace_framebuffer(&mut self, fb: Framebuffer) -> Framebuffer {
+    /// another drawable; a bound framebuffer object stays bound.
+    pub fn replace_framebuffer(&mut self, mut fb: Framebuffer) -> Framebuffer {
         self.finish_scene();
-        std::mem::replace(&mut self.fb, fb)
+        fb.set_color_enabled(!self.fbo.window_draw_none);
+        match self.fbo.window.as_mut() {
+            Some(w) => std::mem::replace(w, fb),
+            None => std::mem::replace(&mut self.fb, fb),
+        }
     }
 
     /// Threads a flush rasterizes tiles on (`SOFTGL_THREADS` at creation,
@@ -554,7 +565,7 @@ impl Context {
     /// The framebuffer as the draws rasterized so far left it, without
     /// rasterizing the pending ones: for its sizes and formats.
     pub fn framebuffer_pending(&self) -> &Framebuffer {
-        &self.fb
+        self.fbo.window.as_ref().unwrap_or(&self.fb)
     }
 
     /// Rasterizes every recorded draw and clear into the framebuffer; a
@@ -728,6 +739,7 @@ impl Context {
     /// the stencil write mask.
     pub fn clear(&mut self, mask: ClearMask) -> GlResult {
         self.outside()?;
+        self.ensure_draw()?;
         let s = &self.state;
         let rect = if s.scissor_test {
             let b = s.scissor;
@@ -1377,11 +1389,15 @@ impl Context {
         vertex_materials: &[LightSetup],
         varying: Varying,
     ) -> GlResult {
+        self.ensure_draw()?;
+        if self.fbo.draw != 0 {
+            self.sync_sampled();
+        }
         let made_of = (
             self.state.generation(),
             self.tex_units.generation(),
             self.textures.generation(),
-            *self.fb.desc(),
+            (*self.fb.desc(), self.fb.color_enabled()),
             self.ordered_dither,
         );
         let (mut key, mut layout, textures, uniforms) = match self.plan_cache {
@@ -1471,17 +1487,13 @@ impl Context {
 
     /// `glReadPixels` into bytes, rows bottom-up.
     pub fn read_pixels(&mut self, x: i32, y: i32, w: i32, h: i32, format: ReadFormat) -> GlResult<Vec<u8>> {
-        self.outside()?;
-        self.finish_scene();
-        let r = self.fb.read_pixels(x, y, w, h, format);
+        let r = self.with_read_framebuffer(true, |fb| fb.read_pixels(x, y, w, h, format))?;
         self.record(r)
     }
 
     /// `glReadPixels` with `GL_FLOAT`, rows bottom-up.
     pub fn read_pixels_f32(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<Vec<[f32; 4]>> {
-        self.outside()?;
-        self.finish_scene();
-        let r = self.fb.read_pixels_f32(x, y, w, h);
+        let r = self.with_read_framebuffer(true, |fb| fb.read_pixels_f32(x, y, w, h))?;
         self.record(r)
     }
 }

@@ -22,6 +22,10 @@ pub enum GlError {
     /// `GL_OUT_OF_MEMORY`: a buffer could not be allocated.
     #[error("GL_OUT_OF_MEMORY: buffer allocation failed")]
     OutOfMemory,
+    /// `GL_INVALID_FRAMEBUFFER_OPERATION`: a draw, clear or read on an
+    /// incomplete framebuffer object.
+    #[error("GL_INVALID_FRAMEBUFFER_OPERATION: framebuffer is not complete")]
+    InvalidFramebufferOperation,
 }
 
 impl GlError {
@@ -34,6 +38,7 @@ impl GlError {
             GlError::StackOverflow => 0x0503,
             GlError::StackUnderflow => 0x0504,
             GlError::OutOfMemory => 0x0505,
+            GlError::InvalidFramebufferOperation => 0x0506,
         }
     }
 }

@@ -130,7 +130,7 @@ impl Clear {
     pub fn color(mut self, fb: &Framebuffer, rgba: [f32; 4], mask: ColorMask) -> Clear {
         let format = fb.desc.color;
         let bits = pixel::mask_bits(format, mask);
-        if bits == 0 {
+        if bits == 0 || !fb.color_enabled {
             return self;
         }
         let rgb_written = mask.r && mask.g && mask.b;
@@ -378,6 +378,11 @@ pub struct Framebuffer {
     color_top_down: bool,
     depth: Option<DepthBuffer>,
     stencil: Option<Vec<u8>>,
+    /// Whether draws and clears write the colour buffer: false for a
+    /// framebuffer object whose draw buffer is `GL_NONE` or that has no
+    /// colour attachment (its colour bytes are then a scratch buffer no one
+    /// reads, `src/fbo.rs`).
+    color_enabled: bool,
 }
 
 impl Framebuffer {
@@ -426,7 +431,60 @@ impl Framebuffer {
             color_top_down: top_down,
             depth,
             stencil,
+            color_enabled: true,
         })
+    }
+
+    /// A framebuffer over buffers made elsewhere (a framebuffer object's
+    /// attachments, `src/fbo.rs`): colour rows bottom-up and tightly packed.
+    /// `InvalidValue` when a buffer's length does not fit `desc`.
+    pub fn from_parts(
+        desc: FramebufferDesc,
+        color: Vec<u8>,
+        depth: Option<DepthBuffer>,
+        stencil: Option<Vec<u8>>,
+    ) -> GlResult<Framebuffer> {
+        desc.validate()?;
+        let n = desc.width as usize * desc.height as usize;
+        let depth_len = depth.as_ref().map(|d| match d {
+            DepthBuffer::D16(v) => v.len(),
+            DepthBuffer::D24(v) | DepthBuffer::D32(v) => v.len(),
+        });
+        let ok = color.len() == n * desc.color.bytes_per_pixel()
+            && depth.as_ref().map(DepthBuffer::format) == desc.depth_format()?
+            && depth_len.is_none_or(|l| l == n)
+            && stencil.as_ref().map(Vec::len) == (desc.stencil_bits == 8).then_some(n);
+        if !ok {
+            return Err(GlError::InvalidValue);
+        }
+        Ok(Framebuffer {
+            desc,
+            color_stride: desc.width as usize * desc.color.bytes_per_pixel(),
+            color: ColorStore::Owned(color),
+            color_top_down: false,
+            depth,
+            stencil,
+            color_enabled: true,
+        })
+    }
+
+    /// The buffers back (lent colour memory is copied), as [`Framebuffer::from_parts`] takes them.
+    pub fn into_parts(self) -> (Vec<u8>, Option<DepthBuffer>, Option<Vec<u8>>) {
+        let color = match self.color {
+            ColorStore::Owned(v) => v,
+            ColorStore::Lent(m) => m.bytes().to_vec(),
+        };
+        (color, self.depth, self.stencil)
+    }
+
+    /// Whether draws and clears write the colour buffer.
+    pub fn color_enabled(&self) -> bool {
+        self.color_enabled
+    }
+
+    /// Turns colour writes on or off (a framebuffer object's `GL_NONE` draw buffer).
+    pub fn set_color_enabled(&mut self, on: bool) {
+        self.color_enabled = on;
     }
 
     /// A framebuffer of the same size, layout and formats that holds no
@@ -447,6 +505,7 @@ impl Framebuffer {
                 DepthBuffer::D32(_) => DepthBuffer::D32(Vec::new()),
             }),
             stencil: self.stencil.as_ref().map(|_| Vec::new()),
+            color_enabled: self.color_enabled,
         }
     }
 

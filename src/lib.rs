@@ -23,6 +23,7 @@ pub mod buffer;
 pub mod context;
 pub mod demo;
 pub mod error;
+pub mod fbo;
 pub mod fog;
 pub mod fragment;
 pub mod framebuffer;

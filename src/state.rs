@@ -369,7 +369,11 @@ impl RasterState {
             blend: (self.blend && self.blend_func != BlendKey::DEFAULT).then_some(self.blend_func),
             dither: self.dither && ordered_dither,
             logic_op: (self.color_logic_op && self.logic_op != LogicOp::Copy).then_some(self.logic_op),
-            color_mask: self.color_mask,
+            color_mask: if fb.color_enabled() {
+                self.color_mask
+            } else {
+                ColorMask::NONE
+            },
             shade: None,
             count: false,
         };

@@ -86,6 +86,8 @@ pub struct SavedAttrib {
     pub textures: Option<SavedTextures>,
     /// `glClearIndex` and `glIndexMask`, for `GL_COLOR_BUFFER_BIT`.
     pub index: (f32, u32),
+    /// `GL_DRAW_BUFFER` (`GL_COLOR_BUFFER_BIT`) and `GL_READ_BUFFER` (`GL_PIXEL_MODE_BIT`).
+    pub buffers: (GLenum, GLenum),
 }
 
 /// The texture state `glPushAttrib` saved: every unit (enables,

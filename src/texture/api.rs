@@ -106,6 +106,30 @@ fn read_source(fb: &Framebuffer, depth: bool, x: i32, y: i32) -> Option<[Raw; 4]
     }
 }
 
+/// Copies the framebuffer rectangle at `xy` of `fb` into `img` at `offset`
+/// (slice `offset[2]` for 3D); pixels outside the framebuffer are left as they are.
+fn copy_into_slice(
+    fb: &Framebuffer,
+    img: &mut TexImage,
+    offset: [usize; 3],
+    xy: [i32; 2],
+    size: [i32; 2],
+    depth: bool,
+) {
+    for j in 0..size[1].max(0) {
+        for i in 0..size[0].max(0) {
+            let (x, y) = (i64::from(xy[0]) + i64::from(i), i64::from(xy[1]) + i64::from(j));
+            let (Ok(x), Ok(y)) = (i32::try_from(x), i32::try_from(y)) else {
+                continue;
+            };
+            if let Some(rgba) = read_source(fb, depth, x, y) {
+                let at = (offset[0] + i as usize, offset[1] + j as usize, offset[2]);
+                unpack::store_texel(img, at, rgba, Route::Direct);
+            }
+        }
+    }
+}
+
 impl Context {
     /// Records `r`'s error GL-style and passes `r` on; every texture call
     /// starts by refusing to run between `begin` and `end`.
@@ -157,6 +181,9 @@ impl Context {
 
     /// `glDeleteTextures`: bindings of deleted objects revert to 0; unknown names are ignored.
     pub fn delete_textures(&mut self, names: &[u32]) {
+        for &name in names {
+            self.forget_texture(name);
+        }
         let _ = self.tex_call(|gl| {
             gl.textures.get_mut().delete(names);
             Ok(())
@@ -202,6 +229,7 @@ impl Context {
     /// of a texture (a client streaming uploads between draws would
     /// otherwise pile them up).
     fn before_texture_write(&mut self, target: TexTarget) {
+        self.sync_texture(self.textures.binding(self.textures.active_unit(), target));
         let obj = self.textures.bound(self.textures.active_unit(), target);
         if obj
             .images
@@ -353,6 +381,10 @@ impl Context {
         size: [i32; 2],
         border: i32,
     ) -> GlResult {
+        self.sync_texture(
+            self.textures
+                .binding(self.textures.active_unit(), target.texture_target()),
+        );
         self.finish_scene();
         self.tex_call(|gl| {
             check(
@@ -373,8 +405,9 @@ impl Context {
                 GlError::InvalidEnum,
             )?;
             let depth = internal.base() == BaseFormat::Depth;
+            let view = gl.take_read_unflushed(!depth)?;
             check(
-                !depth || gl.framebuffer_pending().depth_format().is_some(),
+                !depth || gl.read_ref(&view).depth_format().is_some(),
                 GlError::InvalidOperation,
             )?;
             check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
@@ -387,33 +420,13 @@ impl Context {
                 (full, xy)
             };
             let mut img = TexImage::new(internal, stripped.map(|s| s as u32));
-            gl.copy_into(&mut img, [0, 0], xy, [stripped[0], stripped[1]], depth);
+            let region = [stripped[0], stripped[1]];
+            copy_into_slice(gl.read_ref(&view), &mut img, [0, 0, 0], xy, region, depth);
             if let Some(slot) = gl.textures.get_mut().current_mut(tt).image_mut(level, target.face()) {
                 *slot = Some(img);
             }
             gl.check_gen_mipmap(target, level)
         })
-    }
-
-    /// Copies the framebuffer rectangle at `xy` into `img` at `offset`
-    /// (slice `offset[2]` for 3D); pixels outside the framebuffer are left as they are.
-    fn copy_into(&self, img: &mut TexImage, offset: [usize; 2], xy: [i32; 2], size: [i32; 2], depth: bool) {
-        self.copy_into_slice(img, [offset[0], offset[1], 0], xy, size, depth);
-    }
-
-    fn copy_into_slice(&self, img: &mut TexImage, offset: [usize; 3], xy: [i32; 2], size: [i32; 2], depth: bool) {
-        for j in 0..size[1].max(0) {
-            for i in 0..size[0].max(0) {
-                let (x, y) = (i64::from(xy[0]) + i64::from(i), i64::from(xy[1]) + i64::from(j));
-                let (Ok(x), Ok(y)) = (i32::try_from(x), i32::try_from(y)) else {
-                    continue;
-                };
-                if let Some(rgba) = read_source(self.framebuffer_pending(), depth, x, y) {
-                    let at = (offset[0] + i as usize, offset[1] + j as usize, offset[2]);
-                    unpack::store_texel(img, at, rgba, Route::Direct);
-                }
-            }
-        }
     }
 
     /// `glCopyTexSubImage1D/2D/3D`: `offset` `[x, 0, 0]` for 1D, `[x, y, 0]`
@@ -426,6 +439,10 @@ impl Context {
         xy: [i32; 2],
         size: [i32; 2],
     ) -> GlResult {
+        self.sync_texture(
+            self.textures
+                .binding(self.textures.active_unit(), target.texture_target()),
+        );
         self.finish_scene();
         self.tex_call(|gl| {
             check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
@@ -445,13 +462,12 @@ impl Context {
                 check(o >= 0 && o + s <= i64::from(img.size()[d]), GlError::InvalidValue)?;
             }
             let depth = img.internal.base() == BaseFormat::Depth;
-            check(
-                !depth || gl.framebuffer_pending().depth_format().is_some(),
-                GlError::InvalidOperation,
-            )?;
             let mut img = img.clone();
+            let view = gl.take_read_unflushed(!depth)?;
+            let fb = gl.read_ref(&view);
+            check(!depth || fb.depth_format().is_some(), GlError::InvalidOperation)?;
             let at = off.map(|o| o as usize);
-            gl.copy_into_slice(&mut img, at, xy, [region[0], region[1]], depth);
+            copy_into_slice(fb, &mut img, at, xy, [region[0], region[1]], depth);
             if let Some(slot) = gl.textures.get_mut().current_mut(tt).image_mut(level, target.face()) {
                 *slot = Some(img);
             }
@@ -470,6 +486,10 @@ impl Context {
         pack: &PixelStore,
         out: &mut [u8],
     ) -> GlResult {
+        self.sync_texture(
+            self.textures
+                .binding(self.textures.active_unit(), target.texture_target()),
+        );
         self.tex_call(|gl| {
             check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
             let tt = target.texture_target();

@@ -19,6 +19,7 @@ const CURRENT_BIT: u32 = 0x1;
 const POINT_BIT: u32 = 0x2;
 const LINE_BIT: u32 = 0x4;
 const POLYGON_BIT: u32 = 0x8;
+const PIXEL_MODE_BIT: u32 = 0x20;
 const LIGHTING_BIT: u32 = 0x40;
 const FOG_BIT: u32 = 0x80;
 const DEPTH_BIT: u32 = 0x100;
@@ -237,6 +238,14 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         let [r, g, bl, a] = st.clear_color;
         gl.clear_color(r, g, bl, a)?;
     }
+    // The bound objects' buffers, as Mesa's pop calls glDrawBuffer/glReadBuffer.
+    let now = super::fbo::buffers(gl);
+    if m & COLOR_BIT != 0 && now.0 != s.buffers.0 {
+        super::fbo::draw_buffer(gl, s.buffers.0)?;
+    }
+    if m & PIXEL_MODE_BIT != 0 && now.1 != s.buffers.1 {
+        super::fbo::read_buffer(gl, s.buffers.1)?;
+    }
     if m & (SCISSOR_BIT | ENABLE_BIT) != 0 {
         set_cap(gl, Capability::ScissorTest, st.scissor_test)?;
     }
@@ -281,6 +290,7 @@ exports! {
                 hints: os.hints,
                 inert_caps: os.inert_caps.clone(),
                 index: (os.clear_index, os.index_mask),
+                buffers: super::fbo::buffers(gl),
             };
             os.attrib_stack.push(saved);
             Ok(())

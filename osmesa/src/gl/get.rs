@@ -269,7 +269,11 @@ unsafe fn write<T: Copy>(out: *mut T, vals: &[T]) {
 
 /// Runs a `glGet*v`: converts the value of `pname` with `conv` and writes it.
 fn get<T: Copy>(pname: GLenum, out: *mut T, conv: impl FnOnce(&Val) -> Vec<T>) {
-    with_gl((), |os, gl| match value(os, gl, pname) {
+    let fbo = |gl: &mut Context| match gl.inside_begin() {
+        true => None,
+        false => super::fbo::value(gl, pname),
+    };
+    with_gl((), |os, gl| match fbo(gl).map_or_else(|| value(os, gl, pname), Ok) {
         // SAFETY: `out` has room for the value of `pname` (GL's contract).
         Ok(v) => unsafe { write(out, &conv(&v)) },
         Err(err) => gl.record_error(err),

@@ -27,6 +27,7 @@ mod buffers;
 mod enums;
 mod extensions;
 mod extra_attribs;
+mod fbo;
 mod fog;
 pub(crate) mod get;
 mod gl14;
@@ -45,6 +46,7 @@ pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
 pub use buffers::*;
 pub use extra_attribs::*;
+pub use fbo::*;
 pub use fog::*;
 pub use get::*;
 pub use gl14::*;
@@ -66,6 +68,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         attrib::table,
         buffers::table,
         extra_attribs::table,
+        fbo::table,
         fog::table,
         fog::color_table,
         gl14::table,

@@ -233,7 +233,8 @@ unsafe fn read_pixels(
     if gl.inside_begin() {
         return Err(GlError::InvalidOperation);
     }
-    let fb = gl.framebuffer();
+    let view = gl.read_framebuffer(matches!(src, Source::Color(_)))?;
+    let fb = gl.read_view(&view);
     match src {
         Source::Depth if fb.depth_format().is_none() => return Err(GlError::InvalidOperation),
         Source::Stencil if !fb.has_stencil() => return Err(GlError::InvalidOperation),

@@ -115,28 +115,14 @@ exports! {
             Ok(())
         })
     }
-    /// `GL_FRONT` and its aliases: an OSMesa context is single-buffered.
+    /// `GL_FRONT` and its aliases: an OSMesa context is single-buffered;
+    /// `GL_NONE` turns colour writes off; on a framebuffer object
+    /// `GL_COLOR_ATTACHMENTi` or `GL_NONE` (`src/fbo.rs`).
     [] fn glDrawBuffer(mode: GLenum) {
-        checked(move |gl| match mode {
-            _ if gl.inside_begin() => Err(GlError::InvalidOperation),
-            GL_FRONT | GL_FRONT_LEFT | GL_LEFT | GL_FRONT_AND_BACK => Ok(()),
-            GL_NONE | GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT => {
-                Err(GlError::InvalidOperation)
-            }
-            0x0409..=0x040C => Err(GlError::InvalidOperation),
-            _ => Err(GlError::InvalidEnum),
-        })
+        checked(move |gl| super::fbo::draw_buffer(gl, mode))
     }
     [] fn glReadBuffer(mode: GLenum) {
-        checked(move |gl| match mode {
-            _ if gl.inside_begin() => Err(GlError::InvalidOperation),
-            GL_FRONT | GL_FRONT_LEFT | GL_LEFT => Ok(()),
-            GL_FRONT_RIGHT | GL_BACK_LEFT | GL_BACK_RIGHT | GL_BACK | GL_RIGHT | GL_FRONT_AND_BACK => {
-                Err(GlError::InvalidOperation)
-            }
-            0x0409..=0x040C => Err(GlError::InvalidOperation),
-            _ => Err(GlError::InvalidEnum),
-        })
+        checked(move |gl| super::fbo::read_buffer(gl, mode))
     }
 
     [] fn glClear(mask: u32) {

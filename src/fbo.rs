@@ -1,0 +1,1768 @@
+//! Framebuffer objects (ARB_framebuffer_object, GL 3.0 §4.4): renderbuffers,
+//! attachments, the draw and read bindings, completeness, `glBlitFramebuffer`.
+//!
+//! # Design
+//!
+//! A context renders into exactly one [`Framebuffer`] (`Context::fb`), which
+//! the deferred tiled rasterizer (`raster/scene.rs`) flushes into. Binding a
+//! framebuffer object for drawing does not teach the rasterizer anything new:
+//! the object's attachments are *assembled* into a `Framebuffer`
+//! ([`Framebuffer::from_parts`]) that takes the context's place, and the
+//! window framebuffer (OSMesa's or EGL's buffer, object 0) waits in
+//! [`FboState::window`] until object 0 is bound again. Every path that draws,
+//! clears or reads therefore works on an object unchanged.
+//!
+//! Where an attachment's pixels live:
+//! - **Renderbuffers** own their storage; assembling *moves* it into the
+//!   framebuffer (O(1): a `Vec` changes hands) and releasing moves it back.
+//!   While it is out, [`Renderbuffer::storage`] is `None`; a read framebuffer
+//!   that shares it copies it from the draw framebuffer.
+//! - **Texture images** keep their texels (a sampler may read them at any
+//!   time, so a texture image is never hollow). The framebuffer holds a copy
+//!   in render format (RGBA8 bytes as they are; `Depth32F` texels converted to
+//!   the 16/24/32-bit integers the depth test compares, with
+//!   `unpack::depth_unsampled`), written back into the image
+//!   (`unpack::depth_sampled`, llvmpipe's sampler conversion) at the *sync
+//!   points*: when the draw binding changes, before a texture call reads or
+//!   writes an attached texture (`glTexImage`, `glTexSubImage`, `glCopyTex*`,
+//!   `glGetTexImage`, `glGenerateMipmap`, `glDeleteTextures`), and before a
+//!   draw that samples an attached texture (a feedback loop, undefined in GL:
+//!   the draw then samples what was rendered before it). Each sync point
+//!   flushes the pending scene first. After a texture call the framebuffer is
+//!   released and assembled again at the next draw, clear or read, so that a
+//!   redefined image re-runs the completeness rules.
+//! - An object without a colour attachment to draw (a depth-only shadow map,
+//!   or draw buffer `GL_NONE`) draws into a 2-byte-per-pixel scratch colour
+//!   buffer with colour writes off ([`Framebuffer::set_color_enabled`]): the
+//!   fragment key gets a `NONE` colour mask, so no colour stage runs. The
+//!   scratch buffer is kept in the object and reused (32 MiB at 4096²).
+//!
+//! Colour formats the rasterizer writes: RGBA8 (`GL_RGBA`, `GL_RGBA8`), RGB8
+//! (`GL_RGB`, `GL_RGB8`: alpha reads 1, as llvmpipe's `R8G8B8X8`) and RGB565.
+//! Depth: 16, 24 and 32-bit unorm; stencil: 8 bits, only together with depth
+//! in one `GL_DEPTH24_STENCIL8` renderbuffer or alone (Mesa's gallium
+//! framebuffers take no separate depth and stencil renderbuffers:
+//! `main/fbobject.c` `do_validate_framebuffer`, `GL_FRAMEBUFFER_UNSUPPORTED`).
+//! Other formats are accepted by `glRenderbufferStorage` (they are GL's) and
+//! make the framebuffer `GL_FRAMEBUFFER_UNSUPPORTED`, which GL allows for any
+//! combination an implementation cannot render: their pixels would differ
+//! from llvmpipe's (it stores `GL_RGBA4` at 4 bits, for instance).
+//!
+//! Multisampling: `glRenderbufferStorageMultisample` records the sample
+//! count (up to [`MAX_SAMPLES`]) and the object's `GL_SAMPLES`; rendering is
+//! single-sampled until the framebuffer grows samples (the `msaa` work): the
+//! seam is [`Renderbuffer::samples`], read when assembling, and
+//! [`Context::blit_framebuffer`]'s resolve, which is then a copy.
+
+use crate::context::Context;
+use crate::error::{GlError, GlResult};
+use crate::framebuffer::{DepthBuffer, Framebuffer, FramebufferDesc, Rect};
+use crate::texture::jit::{BaseFormat, TexTarget, TexelFormat};
+use crate::texture::unpack::{depth_sampled, depth_unsampled};
+use crate::texture::TexImage;
+use softgl_jit::{pixel, ColorFormat, DepthFormat};
+use std::collections::HashMap;
+
+/// `GL_MAX_RENDERBUFFER_SIZE` (llvmpipe: 16384, its largest texture).
+pub const MAX_RENDERBUFFER_SIZE: u32 = 16384;
+/// `GL_MAX_COLOR_ATTACHMENTS`.
+pub const MAX_COLOR_ATTACHMENTS: usize = 8;
+/// `GL_MAX_SAMPLES` (llvmpipe's).
+pub const MAX_SAMPLES: u32 = 4;
+
+/// A renderbuffer internal format (`glRenderbufferStorage`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum RenderbufferFormat {
+    Rgba,
+    Rgba8,
+    Rgb,
+    Rgb8,
+    Rgb565,
+    Rgba2,
+    Rgba4,
+    Rgb5A1,
+    R3G3B2,
+    Rgb4,
+    Rgb5,
+    Rgb10,
+    Rgb10A2,
+    Rgb12,
+    Rgba12,
+    Rgb16,
+    Rgba16,
+    DepthComponent,
+    DepthComponent16,
+    DepthComponent24,
+    DepthComponent32,
+    DepthStencil,
+    Depth24Stencil8,
+    StencilIndex,
+    StencilIndex1,
+    StencilIndex4,
+    StencilIndex8,
+    StencilIndex16,
+}
+
+/// What a renderbuffer format is stored as, when the rasterizer can write it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RenderbufferKind {
+    Color(ColorFormat),
+    Depth(DepthFormat),
+    DepthStencil(DepthFormat),
+    Stencil,
+}
+
+impl RenderbufferFormat {
+    /// The storage, or `None` for a format the rasterizer cannot write.
+    pub fn kind(self) -> Option<RenderbufferKind> {
+        use RenderbufferFormat as F;
+        use RenderbufferKind as K;
+        Some(match self {
+            F::Rgba | F::Rgba8 => K::Color(ColorFormat::Rgba8),
+            F::Rgb | F::Rgb8 => K::Color(ColorFormat::Rgb8),
+            F::Rgb565 => K::Color(ColorFormat::Rgb565),
+            F::DepthComponent | F::DepthComponent24 => K::Depth(DepthFormat::D24),
+            F::DepthComponent16 => K::Depth(DepthFormat::D16),
+            F::DepthComponent32 => K::Depth(DepthFormat::D32),
+            F::DepthStencil | F::Depth24Stencil8 => K::DepthStencil(DepthFormat::D24),
+            F::StencilIndex | F::StencilIndex8 => K::Stencil,
+            _ => return None,
+        })
+    }
+
+    /// `GL_RENDERBUFFER_{RED,GREEN,BLUE,ALPHA,DEPTH,STENCIL}_SIZE`.
+    pub fn bits(self) -> [u32; 6] {
+        use RenderbufferFormat as F;
+        match self {
+            F::Rgba | F::Rgba8 => [8, 8, 8, 8, 0, 0],
+            F::Rgb | F::Rgb8 => [8, 8, 8, 0, 0, 0],
+            F::Rgb565 => [5, 6, 5, 0, 0, 0],
+            F::Rgba2 => [2, 2, 2, 2, 0, 0],
+            F::Rgba4 => [4, 4, 4, 4, 0, 0],
+            F::Rgb5A1 => [5, 5, 5, 1, 0, 0],
+            F::R3G3B2 => [3, 3, 2, 0, 0, 0],
+            F::Rgb4 => [4, 4, 4, 0, 0, 0],
+            F::Rgb5 => [5, 5, 5, 0, 0, 0],
+            F::Rgb10 => [10, 10, 10, 0, 0, 0],
+            F::Rgb10A2 => [10, 10, 10, 2, 0, 0],
+            F::Rgb12 => [12, 12, 12, 0, 0, 0],
+            F::Rgba12 => [12, 12, 12, 12, 0, 0],
+            F::Rgb16 => [16, 16, 16, 0, 0, 0],
+            F::Rgba16 => [16, 16, 16, 16, 0, 0],
+            F::DepthComponent | F::DepthComponent24 => [0, 0, 0, 0, 24, 0],
+            F::DepthComponent16 => [0, 0, 0, 0, 16, 0],
+            F::DepthComponent32 => [0, 0, 0, 0, 32, 0],
+            F::DepthStencil | F::Depth24Stencil8 => [0, 0, 0, 0, 24, 8],
+            F::StencilIndex1 => [0, 0, 0, 0, 0, 1],
+            F::StencilIndex4 => [0, 0, 0, 0, 0, 4],
+            F::StencilIndex | F::StencilIndex8 => [0, 0, 0, 0, 0, 8],
+            F::StencilIndex16 => [0, 0, 0, 0, 0, 16],
+        }
+    }
+
+    fn has_depth(self) -> bool {
+        self.bits()[4] > 0
+    }
+
+    fn has_stencil(self) -> bool {
+        self.bits()[5] > 0
+    }
+
+    fn has_color(self) -> bool {
+        !self.has_depth() && !self.has_stencil()
+    }
+}
+
+/// A renderbuffer's pixels.
+#[derive(Clone, Debug)]
+enum RbStorage {
+    Color(Vec<u8>),
+    Depth(DepthBuffer),
+    Stencil(Vec<u8>),
+    DepthStencil(DepthBuffer, Vec<u8>),
+}
+
+/// A renderbuffer object.
+#[derive(Clone, Debug)]
+pub struct Renderbuffer {
+    pub format: RenderbufferFormat,
+    pub width: u32,
+    pub height: u32,
+    /// `GL_RENDERBUFFER_SAMPLES`: what `glRenderbufferStorageMultisample`
+    /// asked for (0: single-sampled). Rendering is single-sampled for now.
+    pub samples: u32,
+    /// `None` before `glRenderbufferStorage`, for an unsupported format, and
+    /// while a framebuffer holds the pixels.
+    storage: Option<RbStorage>,
+    /// Whether storage was defined (`glRenderbufferStorage` ran).
+    defined: bool,
+}
+
+impl Default for Renderbuffer {
+    fn default() -> Self {
+        Renderbuffer {
+            format: RenderbufferFormat::Rgba,
+            width: 0,
+            height: 0,
+            samples: 0,
+            storage: None,
+            defined: false,
+        }
+    }
+}
+
+/// What an attachment point holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Attachment {
+    #[default]
+    None,
+    Renderbuffer(u32),
+    /// A texture image: `face` is the cube face (0 otherwise), `layer` the
+    /// slice of a 3D texture.
+    Texture {
+        name: u32,
+        level: u32,
+        face: u32,
+        layer: u32,
+    },
+}
+
+/// An attachment point of a framebuffer object.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AttachmentPoint {
+    Color(u32),
+    Depth,
+    Stencil,
+    /// `GL_DEPTH_STENCIL_ATTACHMENT`: depth and stencil at once.
+    DepthStencil,
+}
+
+/// The draw and read bindings (`glBindFramebuffer`'s targets).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FramebufferTarget {
+    /// `GL_FRAMEBUFFER`: both.
+    Both,
+    Draw,
+    Read,
+}
+
+/// `glCheckFramebufferStatus`'s answers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FramebufferStatus {
+    Complete,
+    IncompleteAttachment,
+    MissingAttachment,
+    IncompleteDrawBuffer,
+    IncompleteReadBuffer,
+    Unsupported,
+    IncompleteMultisample,
+}
+
+impl FramebufferStatus {
+    /// The GL enumerant.
+    pub const fn code(self) -> u32 {
+        match self {
+            FramebufferStatus::Complete => 0x8CD5,
+            FramebufferStatus::IncompleteAttachment => 0x8CD6,
+            FramebufferStatus::MissingAttachment => 0x8CD7,
+            FramebufferStatus::IncompleteDrawBuffer => 0x8CDB,
+            FramebufferStatus::IncompleteReadBuffer => 0x8CDC,
+            FramebufferStatus::Unsupported => 0x8CDD,
+            FramebufferStatus::IncompleteMultisample => 0x8D56,
+        }
+    }
+}
+
+/// A framebuffer object.
+#[derive(Clone, Debug)]
+pub struct FramebufferObject {
+    pub color: [Attachment; MAX_COLOR_ATTACHMENTS],
+    pub depth: Attachment,
+    pub stencil: Attachment,
+    /// `glDrawBuffer`: the colour attachment drawn, `None` for `GL_NONE`.
+    pub draw_buffer: Option<u32>,
+    /// `glReadBuffer`: the colour attachment read, `None` for `GL_NONE`.
+    pub read_buffer: Option<u32>,
+    /// The colour bytes drawn when no colour attachment is (see the module doc).
+    scratch: Vec<u8>,
+    /// The depth texture's pixels in depth-test units as the object last
+    /// wrote them back, with the texels they were written to: reused when
+    /// the image still holds those texels (every writer copies them first
+    /// while this holds a reference), which spares the conversion when a
+    /// shadow map is bound again (MuJoCo, every frame).
+    depth_cache: Option<DepthCache>,
+}
+
+/// See [`FramebufferObject::depth_cache`].
+#[derive(Clone, Debug)]
+struct DepthCache {
+    texels: std::sync::Arc<Vec<u8>>,
+    attachment: Attachment,
+    buffer: DepthBuffer,
+}
+
+impl Default for FramebufferObject {
+    fn default() -> Self {
+        FramebufferObject {
+            color: [Attachment::None; MAX_COLOR_ATTACHMENTS],
+            depth: Attachment::None,
+            stencil: Attachment::None,
+            draw_buffer: Some(0),
+            read_buffer: Some(0),
+            scratch: Vec::new(),
+            depth_cache: None,
+        }
+    }
+}
+
+/// One attachment as the framebuffer sees it: its size and format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Image {
+    width: u32,
+    height: u32,
+    samples: u32,
+    kind: Option<RenderbufferKind>,
+}
+
+/// What a draw framebuffer was assembled from, to put its buffers back.
+#[derive(Clone, Copy, Debug)]
+struct Checkout {
+    fbo: u32,
+    color: Attachment,
+    depth: Attachment,
+    stencil: Attachment,
+}
+
+/// Framebuffer and renderbuffer objects, the bindings, and the window
+/// framebuffer while an object is drawn into.
+#[derive(Debug, Default)]
+pub struct FboState {
+    framebuffers: HashMap<u32, Option<FramebufferObject>>,
+    renderbuffers: HashMap<u32, Option<Renderbuffer>>,
+    max_framebuffer: u32,
+    max_renderbuffer: u32,
+    pub(crate) draw: u32,
+    pub(crate) read: u32,
+    pub(crate) renderbuffer: u32,
+    /// The window framebuffer while `Context::fb` holds an object's buffers.
+    pub(crate) window: Option<Framebuffer>,
+    /// What `Context::fb` was assembled from (with `window` set).
+    checkout: Option<Checkout>,
+    /// The window's draw/read buffers are `GL_NONE` (`glDrawBuffer(GL_NONE)` on object 0).
+    pub(crate) window_draw_none: bool,
+    pub(crate) window_read_none: bool,
+}
+
+impl FboState {
+    /// The object `name` (`None` for 0 or an unknown name).
+    pub fn framebuffer(&self, name: u32) -> Option<&FramebufferObject> {
+        self.framebuffers.get(&name)?.as_ref()
+    }
+
+    fn framebuffer_mut(&mut self, name: u32) -> Option<&mut FramebufferObject> {
+        self.framebuffers.get_mut(&name)?.as_mut()
+    }
+
+    pub fn renderbuffer(&self, name: u32) -> Option<&Renderbuffer> {
+        self.renderbuffers.get(&name)?.as_ref()
+    }
+
+    /// `GL_DRAW_FRAMEBUFFER_BINDING`.
+    pub fn draw_binding(&self) -> u32 {
+        self.draw
+    }
+
+    /// `GL_READ_FRAMEBUFFER_BINDING`.
+    pub fn read_binding(&self) -> u32 {
+        self.read
+    }
+
+    /// `GL_RENDERBUFFER_BINDING`.
+    pub fn renderbuffer_binding(&self) -> u32 {
+        self.renderbuffer
+    }
+
+    /// Whether `glDrawBuffer(GL_NONE)` turned the window's colour writes off.
+    pub fn window_draw_none(&self) -> bool {
+        self.window_draw_none
+    }
+
+    /// Whether `glReadBuffer(GL_NONE)` was called on the window.
+    pub fn window_read_none(&self) -> bool {
+        self.window_read_none
+    }
+
+    /// Whether the draw framebuffer holds the texture `name`'s images.
+    fn holds_texture(&self, name: u32) -> bool {
+        self.checkout.is_some_and(|c| {
+            [c.color, c.depth, c.stencil]
+                .iter()
+                .any(|a| matches!(a, Attachment::Texture { name: n, .. } if *n == name))
+        })
+    }
+
+    fn holds_any_texture(&self) -> bool {
+        self.checkout.is_some_and(|c| {
+            [c.color, c.depth, c.stencil]
+                .iter()
+                .any(|a| matches!(a, Attachment::Texture { .. }))
+        })
+    }
+}
+
+/// The image an attachment names, if it exists.
+fn image_of(fbo: &FboState, textures: &crate::texture::TextureStore, a: Attachment) -> Option<Image> {
+    match a {
+        Attachment::None => None,
+        Attachment::Renderbuffer(name) => {
+            let rb = fbo.renderbuffer(name)?;
+            Some(Image {
+                width: rb.width,
+                height: rb.height,
+                samples: rb.samples,
+                kind: if rb.defined { rb.format.kind() } else { None },
+            })
+        }
+        Attachment::Texture {
+            name,
+            level,
+            face,
+            layer,
+        } => {
+            let img = textures.object(name)?.image(level as usize, face as usize)?;
+            if layer >= img.depth.max(1) {
+                return Some(Image {
+                    width: 0,
+                    height: 0,
+                    samples: 0,
+                    kind: None,
+                });
+            }
+            Some(Image {
+                width: img.width,
+                height: img.height,
+                samples: 0,
+                kind: texture_kind(img),
+            })
+        }
+    }
+}
+
+/// How a texture image renders, when the rasterizer writes its format
+/// exactly: 8-bit RGBA/RGB (stored as RGBA8 texels) and depth.
+fn texture_kind(img: &TexImage) -> Option<RenderbufferKind> {
+    let s = img.internal.storage();
+    match (s.base, img.texel_format()) {
+        (BaseFormat::Depth, _) => Some(RenderbufferKind::Depth(match s.bits[0] {
+            16 => DepthFormat::D16,
+            32 => DepthFormat::D32,
+            _ => DepthFormat::D24,
+        })),
+        (BaseFormat::Rgba | BaseFormat::Rgb, TexelFormat::Rgba8) if s.bits[..3] == [8, 8, 8] => {
+            Some(RenderbufferKind::Color(ColorFormat::Rgba8))
+        }
+        _ => None,
+    }
+}
+
+/// GL 3.0 §4.4.4's completeness of object `name` (0: the window, complete).
+fn status(fbo: &FboState, textures: &crate::texture::TextureStore, name: u32) -> FramebufferStatus {
+    use FramebufferStatus as S;
+    let Some(f) = fbo.framebuffer(name) else {
+        return S::Complete;
+    };
+    let mut images = Vec::new();
+    // Attachment completeness: each attached image exists with a non-zero
+    // size and a format renderable at its point.
+    for (a, point) in f.color.iter().map(|a| (*a, 0)).chain([(f.depth, 1), (f.stencil, 2)]) {
+        if a == Attachment::None {
+            continue;
+        }
+        let Some(img) = image_of(fbo, textures, a) else {
+            return S::IncompleteAttachment;
+        };
+        if img.width == 0 || img.height == 0 {
+            return S::IncompleteAttachment;
+        }
+        let fits = match (point, a) {
+            (0, Attachment::Renderbuffer(n)) => fbo.renderbuffer(n).is_some_and(|r| r.format.has_color()),
+            (1, Attachment::Renderbuffer(n)) => fbo.renderbuffer(n).is_some_and(|r| r.format.has_depth()),
+            (2, Attachment::Renderbuffer(n)) => fbo.renderbuffer(n).is_some_and(|r| r.format.has_stencil()),
+            (0, _) => !matches!(img.kind, Some(RenderbufferKind::Depth(_))),
+            (1, _) => matches!(img.kind, Some(RenderbufferKind::Depth(_)) | None),
+            // No stencil textures.
+            _ => false,
+        };
+        if !fits {
+            return S::IncompleteAttachment;
+        }
+        images.push((a, img));
+    }
+    if images.is_empty() {
+        return S::MissingAttachment;
+    }
+    if images.iter().any(|(_, i)| i.samples != images[0].1.samples) {
+        return S::IncompleteMultisample;
+    }
+    // No INCOMPLETE_DRAW_BUFFER / INCOMPLETE_READ_BUFFER: Mesa skips GL
+    // 3.0's draw- and read-buffer rules when ARB_ES2_compatibility is on, as
+    // on llvmpipe (`main/fbobject.c`, docs/llvmpipe-facts.md): a buffer
+    // naming an empty attachment draws nothing and reads are errors.
+    // Mesa's gallium check (`do_validate_framebuffer`): depth and stencil one buffer.
+    let ds_split = match (f.depth, f.stencil) {
+        (Attachment::None, _) | (_, Attachment::None) => false,
+        (Attachment::Renderbuffer(a), Attachment::Renderbuffer(b)) => a != b,
+        _ => true,
+    };
+    // Images of different sizes (ARB_framebuffer_object allows them, the
+    // framebuffer is their intersection) are not rendered by softgl yet.
+    let mixed = images
+        .iter()
+        .any(|(_, i)| (i.width, i.height) != (images[0].1.width, images[0].1.height));
+    if ds_split || mixed || images.iter().any(|(_, i)| i.kind.is_none()) {
+        return S::Unsupported;
+    }
+    S::Complete
+}
+
+/// The read framebuffer, made for one read ([`Context::read_framebuffer`]).
+pub enum ReadFb {
+    /// Reads come from `Context::fb`.
+    Draw,
+    /// From the window framebuffer, waiting in [`FboState::window`].
+    Window,
+    /// Assembled from object attachments, put back after the read.
+    Assembled(Framebuffer),
+}
+
+/// Which buffers `glBlitFramebuffer` copies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct BlitMask {
+    pub color: bool,
+    pub depth: bool,
+    pub stencil: bool,
+}
+
+/// `glBlitFramebuffer`'s filter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BlitFilter {
+    Nearest,
+    Linear,
+}
+
+impl Context {
+    /// The framebuffer objects and bindings.
+    pub fn fbo_state(&self) -> &FboState {
+        &self.fbo
+    }
+
+    /// `glGenFramebuffers`.
+    pub fn gen_framebuffers(&mut self, n: i32) -> GlResult<Vec<u32>> {
+        self.outside()?;
+        let n = self.record(usize::try_from(n).map_err(|_| GlError::InvalidValue))?;
+        let s = &mut self.fbo;
+        let names: Vec<u32> = (1..=n as u32).map(|i| s.max_framebuffer + i).collect();
+        for &name in &names {
+            s.framebuffers.insert(name, None);
+        }
+        s.max_framebuffer += n as u32;
+        Ok(names)
+    }
+
+    /// `glIsFramebuffer`: a name bound at least once.
+    pub fn is_framebuffer(&self, name: u32) -> bool {
+        self.fbo.framebuffer(name).is_some()
+    }
+
+    /// `glBindFramebuffer`: a name never generated is created on bind (the
+    /// compatibility profile's rule, as Mesa's).
+    pub fn bind_framebuffer(&mut self, target: FramebufferTarget, name: u32) -> GlResult {
+        self.outside()?;
+        if name != 0 {
+            let s = &mut self.fbo;
+            let slot = s.framebuffers.entry(name).or_insert(None);
+            slot.get_or_insert_with(FramebufferObject::default);
+            s.max_framebuffer = s.max_framebuffer.max(name);
+        }
+        if matches!(target, FramebufferTarget::Both | FramebufferTarget::Draw) && self.fbo.draw != name {
+            self.release_draw();
+            self.fbo.draw = name;
+            self.acquire_draw();
+        }
+        if matches!(target, FramebufferTarget::Both | FramebufferTarget::Read) {
+            self.fbo.read = name;
+        }
+        Ok(())
+    }
+
+    /// `glDeleteFramebuffers`: a bound object reverts to 0.
+    pub fn delete_framebuffers(&mut self, names: &[u32]) -> GlResult {
+        self.outside()?;
+        for &name in names {
+            if name == 0 || !self.fbo.framebuffers.contains_key(&name) {
+                continue;
+            }
+            if self.fbo.draw == name {
+                self.bind_framebuffer(FramebufferTarget::Draw, 0)?;
+            }
+            if self.fbo.read == name {
+                self.fbo.read = 0;
+            }
+            self.fbo.framebuffers.remove(&name);
+        }
+        Ok(())
+    }
+
+    /// `glCheckFramebufferStatus` of the draw or read binding.
+    pub fn check_framebuffer_status(&mut self, target: FramebufferTarget) -> GlResult<FramebufferStatus> {
+        self.outside()?;
+        let name = match target {
+            FramebufferTarget::Read => self.fbo.read,
+            _ => self.fbo.draw,
+        };
+        Ok(status(&self.fbo, &self.textures, name))
+    }
+
+    /// `glGenRenderbuffers`.
+    pub fn gen_renderbuffers(&mut self, n: i32) -> GlResult<Vec<u32>> {
+        self.outside()?;
+        let n = self.record(usize::try_from(n).map_err(|_| GlError::InvalidValue))?;
+        let s = &mut self.fbo;
+        let names: Vec<u32> = (1..=n as u32).map(|i| s.max_renderbuffer + i).collect();
+        for &name in &names {
+            s.renderbuffers.insert(name, None);
+        }
+        s.max_renderbuffer += n as u32;
+        Ok(names)
+    }
+
+    /// `glIsRenderbuffer`: a name bound at least once.
+    pub fn is_renderbuffer(&self, name: u32) -> bool {
+        self.fbo.renderbuffer(name).is_some()
+    }
+
+    /// `glBindRenderbuffer` (creating the object on first bind).
+    pub fn bind_renderbuffer(&mut self, name: u32) -> GlResult {
+        self.outside()?;
+        if name != 0 {
+            let s = &mut self.fbo;
+            s.renderbuffers
+                .entry(name)
+                .or_insert(None)
+                .get_or_insert_with(Renderbuffer::default);
+            s.max_renderbuffer = s.max_renderbuffer.max(name);
+        }
+        self.fbo.renderbuffer = name;
+        Ok(())
+    }
+
+    /// `glDeleteRenderbuffers`: detached from the bound framebuffers (GL
+    /// 3.0 §4.4.2), unbound.
+    pub fn delete_renderbuffers(&mut self, names: &[u32]) -> GlResult {
+        self.outside()?;
+        for &name in names {
+            if name == 0 || !self.fbo.renderbuffers.contains_key(&name) {
+                continue;
+            }
+            self.release_draw();
+            for fb in [self.fbo.draw, self.fbo.read] {
+                if let Some(f) = self.fbo.framebuffer_mut(fb) {
+                    for a in f.color.iter_mut().chain([&mut f.depth, &mut f.stencil]) {
+                        if *a == Attachment::Renderbuffer(name) {
+                            *a = Attachment::None;
+                        }
+                    }
+                }
+            }
+            if self.fbo.renderbuffer == name {
+                self.fbo.renderbuffer = 0;
+            }
+            self.fbo.renderbuffers.remove(&name);
+        }
+        self.acquire_draw();
+        Ok(())
+    }
+
+    /// `glRenderbufferStorageMultisample` (`samples` 0: `glRenderbufferStorage`)
+    /// on the bound renderbuffer: its pixels are undefined in GL; softgl
+    /// clears them to zero (depth to 1.0).
+    pub fn renderbuffer_storage(
+        &mut self,
+        samples: i32,
+        format: RenderbufferFormat,
+        width: i32,
+        height: i32,
+    ) -> GlResult {
+        self.outside()?;
+        let name = self.fbo.renderbuffer;
+        let r = if name == 0 {
+            Err(GlError::InvalidOperation)
+        } else if !(0..=MAX_RENDERBUFFER_SIZE as i32).contains(&width)
+            || !(0..=MAX_RENDERBUFFER_SIZE as i32).contains(&height)
+            || !(0..=MAX_SAMPLES as i32).contains(&samples)
+        {
+            Err(GlError::InvalidValue)
+        } else {
+            Ok(())
+        };
+        self.record(r)?;
+        self.release_draw();
+        let n = width as usize * height as usize;
+        let storage = match format.kind() {
+            None => Ok(None),
+            Some(RenderbufferKind::Color(c)) => alloc(n * c.bytes_per_pixel(), 0u8).map(|v| Some(RbStorage::Color(v))),
+            Some(RenderbufferKind::Depth(d)) => depth_buffer(d, n).map(|d| Some(RbStorage::Depth(d))),
+            Some(RenderbufferKind::DepthStencil(d)) => {
+                depth_buffer(d, n).and_then(|d| Ok(Some(RbStorage::DepthStencil(d, alloc(n, 0u8)?))))
+            }
+            Some(RenderbufferKind::Stencil) => alloc(n, 0u8).map(|s| Some(RbStorage::Stencil(s))),
+        };
+        let r = storage.map(|storage| {
+            if let Some(rb) = self.fbo.renderbuffers.get_mut(&name).and_then(Option::as_mut) {
+                *rb = Renderbuffer {
+                    format,
+                    width: width as u32,
+                    height: height as u32,
+                    samples: samples as u32,
+                    storage,
+                    defined: true,
+                };
+            }
+        });
+        self.acquire_draw();
+        self.record(r)
+    }
+
+    /// `glFramebufferRenderbuffer` on the `target` binding (`Both`: draw).
+    pub fn framebuffer_renderbuffer(&mut self, target: FramebufferTarget, point: AttachmentPoint, rb: u32) -> GlResult {
+        self.outside()?;
+        let r = if rb != 0 && self.fbo.renderbuffer(rb).is_none() {
+            Err(GlError::InvalidOperation)
+        } else {
+            Ok(())
+        };
+        self.record(r)?;
+        let a = if rb == 0 {
+            Attachment::None
+        } else {
+            Attachment::Renderbuffer(rb)
+        };
+        self.attach(target, point, a)
+    }
+
+    /// `glFramebufferTexture1D/2D/3D` and `glFramebufferTextureLayer`:
+    /// `target` the texture's (`CubeFace` for cube maps), `name` 0 detaches.
+    /// `layer` is the slice of a 3D texture.
+    pub fn framebuffer_texture(
+        &mut self,
+        fb_target: FramebufferTarget,
+        point: AttachmentPoint,
+        tex_target: Option<crate::texture::TexImageTarget>,
+        name: u32,
+        level: i32,
+        layer: i32,
+    ) -> GlResult {
+        use crate::texture::TexImageTarget as T;
+        self.outside()?;
+        if name == 0 {
+            return self.attach(fb_target, point, Attachment::None);
+        }
+        let Some(obj_target) = self.textures.object(name).map(|o| o.target) else {
+            return self.record(Err(GlError::InvalidOperation));
+        };
+        let face = match tex_target {
+            Some(T::CubeFace(f)) => u32::from(f),
+            _ => 0,
+        };
+        let ok_target = match tex_target {
+            None => true,
+            Some(t) => t.texture_target() == obj_target && !matches!(t, T::Proxy(_)),
+        };
+        self.record(if ok_target {
+            Ok(())
+        } else {
+            Err(GlError::InvalidOperation)
+        })?;
+        let max_level = crate::texture::max_levels(obj_target) as i32;
+        let layer_ok = layer >= 0 && (obj_target == TexTarget::D3 || layer == 0);
+        self.record(if (0..max_level).contains(&level) && layer_ok {
+            Ok(())
+        } else {
+            Err(GlError::InvalidValue)
+        })?;
+        let a = Attachment::Texture {
+            name,
+            level: level as u32,
+            face,
+            layer: layer as u32,
+        };
+        self.attach(fb_target, point, a)
+    }
+
+    fn attach(&mut self, target: FramebufferTarget, point: AttachmentPoint, a: Attachment) -> GlResult {
+        let name = match target {
+            FramebufferTarget::Read => self.fbo.read,
+            _ => self.fbo.draw,
+        };
+        if name == 0 {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        if let AttachmentPoint::Color(i) = point {
+            if i as usize >= MAX_COLOR_ATTACHMENTS {
+                return self.record(Err(GlError::InvalidEnum));
+            }
+        }
+        let redraw = name == self.fbo.draw;
+        if redraw {
+            self.release_draw();
+        }
+        if let Some(f) = self.fbo.framebuffer_mut(name) {
+            match point {
+                AttachmentPoint::Color(i) => f.color[i as usize] = a,
+                AttachmentPoint::Depth => f.depth = a,
+                AttachmentPoint::Stencil => f.stencil = a,
+                AttachmentPoint::DepthStencil => (f.depth, f.stencil) = (a, a),
+            }
+        }
+        if redraw {
+            self.acquire_draw();
+        }
+        Ok(())
+    }
+
+    /// What `point` of the `target` binding holds (`glGetFramebufferAttachmentParameteriv`);
+    /// `InvalidOperation` on object 0.
+    pub fn framebuffer_attachment(
+        &mut self,
+        target: FramebufferTarget,
+        point: AttachmentPoint,
+    ) -> GlResult<Attachment> {
+        self.outside()?;
+        let name = match target {
+            FramebufferTarget::Read => self.fbo.read,
+            _ => self.fbo.draw,
+        };
+        let r = match self.fbo.framebuffer(name) {
+            None => Err(GlError::InvalidOperation),
+            Some(f) => match point {
+                AttachmentPoint::Color(i) => f.color.get(i as usize).copied().ok_or(GlError::InvalidEnum),
+                AttachmentPoint::Depth => Ok(f.depth),
+                AttachmentPoint::Stencil => Ok(f.stencil),
+                // Only when both are the same image (GL 3.0 §6.1.13).
+                AttachmentPoint::DepthStencil if f.depth == f.stencil => Ok(f.depth),
+                AttachmentPoint::DepthStencil => Err(GlError::InvalidOperation),
+            },
+        };
+        self.record(r)
+    }
+
+    /// The bits of red, green, blue, alpha, depth and stencil of `point`'s image.
+    pub fn attachment_bits(&self, a: Attachment) -> [u32; 6] {
+        match a {
+            Attachment::None => [0; 6],
+            Attachment::Renderbuffer(n) => self.fbo.renderbuffer(n).map_or([0; 6], |r| r.format.bits()),
+            Attachment::Texture { name, level, face, .. } => {
+                let img = self
+                    .textures
+                    .object(name)
+                    .and_then(|o| o.image(level as usize, face as usize));
+                img.map_or([0; 6], |i| {
+                    let s = i.internal.storage();
+                    if s.base == BaseFormat::Depth {
+                        [0, 0, 0, 0, s.bits[0], 0]
+                    } else {
+                        [s.bits[0], s.bits[1], s.bits[2], s.bits[3], 0, 0]
+                    }
+                })
+            }
+        }
+    }
+
+    /// `glDrawBuffer` on an object: `Some(i)` is `GL_COLOR_ATTACHMENTi`, `None` `GL_NONE`.
+    /// On object 0 only `None` and the window's buffers (the caller's
+    /// business) are taken; here `None` turns the window's colour writes off.
+    pub fn draw_buffer(&mut self, buffer: Option<u32>) -> GlResult {
+        self.outside()?;
+        let name = self.fbo.draw;
+        if buffer.is_some_and(|i| i as usize >= MAX_COLOR_ATTACHMENTS) {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        if name == 0 {
+            if buffer.is_some() {
+                return self.record(Err(GlError::InvalidOperation));
+            }
+            self.finish_scene();
+            self.fbo.window_draw_none = true;
+            self.fb.set_color_enabled(false);
+            return Ok(());
+        }
+        self.release_draw();
+        if let Some(f) = self.fbo.framebuffer_mut(name) {
+            f.draw_buffer = buffer;
+        }
+        self.acquire_draw();
+        Ok(())
+    }
+
+    /// The window's colour buffer drawn again (`glDrawBuffer(GL_FRONT/BACK/…)` on object 0).
+    pub fn draw_buffer_window(&mut self) -> GlResult {
+        self.outside()?;
+        if self.fbo.draw != 0 {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        self.finish_scene();
+        self.fbo.window_draw_none = false;
+        self.fb.set_color_enabled(true);
+        Ok(())
+    }
+
+    /// `glReadBuffer`: as [`Context::draw_buffer`], for reads; `window` is a
+    /// window buffer name on object 0.
+    pub fn read_buffer(&mut self, buffer: Option<u32>, window: bool) -> GlResult {
+        self.outside()?;
+        let name = self.fbo.read;
+        if buffer.is_some_and(|i| i as usize >= MAX_COLOR_ATTACHMENTS) {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        if name == 0 {
+            if buffer.is_some() {
+                return self.record(Err(GlError::InvalidOperation));
+            }
+            self.fbo.window_read_none = !window;
+            return Ok(());
+        }
+        if window {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        if name == self.fbo.draw {
+            self.release_draw();
+        }
+        if let Some(f) = self.fbo.framebuffer_mut(name) {
+            f.read_buffer = buffer;
+        }
+        self.acquire_draw();
+        Ok(())
+    }
+
+    /// The description (size, formats) of the draw framebuffer, and whether
+    /// it has a colour buffer drawn: what `GL_RED_BITS`, `GL_DEPTH_BITS`, …
+    /// answer. `None` for an incomplete object.
+    pub fn draw_framebuffer_desc(&mut self) -> Option<(FramebufferDesc, bool)> {
+        self.acquire_draw();
+        if self.fbo.draw != 0 && self.fbo.checkout.is_none() {
+            return None;
+        }
+        Some((*self.fb.desc(), self.fb.color_enabled()))
+    }
+
+    /// `GL_SAMPLES` of the draw framebuffer (the samples of its renderbuffers).
+    pub fn draw_framebuffer_samples(&self) -> u32 {
+        let Some(f) = self.fbo.framebuffer(self.fbo.draw) else {
+            return 0;
+        };
+        f.color
+            .iter()
+            .chain([&f.depth, &f.stencil])
+            .find_map(|a| match a {
+                Attachment::Renderbuffer(n) => self.fbo.renderbuffer(*n).map(|r| r.samples),
+                _ => None,
+            })
+            .unwrap_or(0)
+    }
+
+    // ----- assembling and releasing -----
+
+    /// Makes sure the draw framebuffer is assembled; `InvalidFramebufferOperation`
+    /// when the bound object is incomplete. Draws, clears and reads call it.
+    pub(crate) fn ensure_draw(&mut self) -> GlResult {
+        if self.fbo.draw == 0 {
+            return Ok(());
+        }
+        self.acquire_draw();
+        if self.fbo.checkout.is_none() {
+            return self.record(Err(GlError::InvalidFramebufferOperation));
+        }
+        Ok(())
+    }
+
+    /// Before a texture call that reads or writes texture `name`'s images:
+    /// writes the draw framebuffer's copy back and releases it (assembled
+    /// again at the next draw).
+    pub(crate) fn sync_texture(&mut self, name: u32) {
+        if self.fbo.holds_texture(name) {
+            self.release_draw();
+        }
+    }
+
+    /// `glDeleteTextures` of `name`: written back, then detached from the
+    /// bound framebuffer objects (GL 3.0 §4.4.2).
+    pub(crate) fn forget_texture(&mut self, name: u32) {
+        if name == 0 || !self.textures.is_texture(name) {
+            return;
+        }
+        self.release_draw();
+        for fb in [self.fbo.draw, self.fbo.read] {
+            if let Some(f) = self.fbo.framebuffer_mut(fb) {
+                for a in f.color.iter_mut().chain([&mut f.depth, &mut f.stencil]) {
+                    if matches!(a, Attachment::Texture { name: n, .. } if *n == name) {
+                        *a = Attachment::None;
+                    }
+                }
+            }
+        }
+        self.acquire_draw();
+    }
+
+    /// Before a draw sampling the textures `names`: writes back an attached
+    /// one (a feedback loop), keeping the framebuffer assembled.
+    pub(crate) fn sync_sampled(&mut self) {
+        if !self.fbo.holds_any_texture() {
+            return;
+        }
+        let mask = self.tex_units.enabled_mask();
+        let targets = [TexTarget::D1, TexTarget::D2, TexTarget::D3, TexTarget::Cube];
+        let held = (0..softgl_jit::texture::MAX_UNITS)
+            .filter(|u| mask & (1 << u) != 0)
+            .flat_map(|u| targets.map(|t| self.textures.binding(u, t)))
+            .any(|n| n != 0 && self.fbo.holds_texture(n));
+        if held {
+            self.release_draw();
+            self.acquire_draw();
+        }
+    }
+
+    /// Assembles the bound draw object into `self.fb` when complete and not yet done.
+    fn acquire_draw(&mut self) {
+        let name = self.fbo.draw;
+        if name == 0 || self.fbo.checkout.is_some() {
+            return;
+        }
+        if status(&self.fbo, &self.textures, name) != FramebufferStatus::Complete {
+            return;
+        }
+        let Some(f) = self.fbo.framebuffer(name) else {
+            return;
+        };
+        let color = f.draw_buffer.map_or(Attachment::None, |i| f.color[i as usize]);
+        let (depth, stencil) = (f.depth, f.stencil);
+        let checkout = Checkout {
+            fbo: name,
+            color,
+            depth,
+            stencil,
+        };
+        match self.assemble(checkout, true) {
+            Ok(fb) => {
+                self.finish_scene();
+                let window = std::mem::replace(&mut self.fb, fb);
+                self.fbo.window = Some(window);
+                self.fbo.checkout = Some(checkout);
+            }
+            Err(e) => {
+                self.record_error(e);
+            }
+        }
+    }
+
+    /// Puts the draw framebuffer's buffers back where they live (writing
+    /// texture copies back), and the window framebuffer in its place.
+    pub(crate) fn release_draw(&mut self) {
+        let Some(checkout) = self.fbo.checkout else {
+            return;
+        };
+        self.finish_scene();
+        let Some(window) = self.fbo.window.take() else {
+            return;
+        };
+        let fb = std::mem::replace(&mut self.fb, window);
+        self.fbo.checkout = None;
+        self.disassemble(fb, checkout, true);
+    }
+
+    /// A framebuffer of `c`'s attachments. `take`: renderbuffer storage is
+    /// moved out (the draw framebuffer); otherwise copied from wherever it
+    /// is (a read framebuffer while the draw one holds it).
+    fn assemble(&mut self, c: Checkout, take: bool) -> GlResult<Framebuffer> {
+        let images: Vec<Option<Image>> = [c.color, c.depth, c.stencil]
+            .iter()
+            .map(|a| image_of(&self.fbo, &self.textures, *a))
+            .collect();
+        let present: Vec<&Image> = images.iter().flatten().collect();
+        let width = present.iter().map(|i| i.width).min().unwrap_or(0);
+        let height = present.iter().map(|i| i.height).min().unwrap_or(0);
+        // Images larger than the framebuffer (ARB_framebuffer_object allows
+        // mixed sizes) are not supported by the single-size Framebuffer:
+        // the caller reports such objects unsupported.
+        if present.iter().any(|i| i.width != width || i.height != height) || width == 0 {
+            return Err(GlError::InvalidFramebufferOperation);
+        }
+        let n = width as usize * height as usize;
+        let color_format = match images[0].and_then(|i| i.kind) {
+            Some(RenderbufferKind::Color(f)) => f,
+            _ => ColorFormat::Rgb565,
+        };
+        let depth_format = match images[1].and_then(|i| i.kind) {
+            Some(RenderbufferKind::Depth(d) | RenderbufferKind::DepthStencil(d)) => Some(d),
+            _ => None,
+        };
+        let has_stencil = c.stencil != Attachment::None;
+        // The colour bytes.
+        let color = match c.color {
+            Attachment::None => {
+                let f = self.fbo.framebuffer_mut(c.fbo).ok_or(GlError::InvalidOperation)?;
+                let mut v = std::mem::take(&mut f.scratch);
+                if v.len() != n * 2 {
+                    v = alloc(n * 2, 0u8)?;
+                }
+                v
+            }
+            a => self.take_color(a, take)?,
+        };
+        let cached = match (take, c.depth) {
+            (true, a @ Attachment::Texture { .. }) => self.cached_depth(c.fbo, a),
+            _ => None,
+        };
+        let depth = match (cached, c.depth) {
+            (Some(d), _) => Some(d),
+            (None, Attachment::None) => None,
+            (None, a) => Some(self.take_depth(a, take)?),
+        };
+        let stencil = match c.stencil {
+            Attachment::None => None,
+            a => Some(self.take_stencil(a, take)?),
+        };
+        let desc = FramebufferDesc {
+            width,
+            height,
+            color: color_format,
+            depth_bits: depth_format.map_or(0, |d| d.bits()),
+            stencil_bits: if has_stencil { 8 } else { 0 },
+        };
+        let mut fb = Framebuffer::from_parts(desc, color, depth, stencil)?;
+        fb.set_color_enabled(c.color != Attachment::None);
+        Ok(fb)
+    }
+
+    /// The inverse of [`Context::assemble`]: `write`: texture copies are written back.
+    fn disassemble(&mut self, fb: Framebuffer, c: Checkout, write: bool) {
+        let (w, h) = (fb.width(), fb.height());
+        let (color, depth, stencil) = fb.into_parts();
+        match c.color {
+            Attachment::None => {
+                if let Some(f) = self.fbo.framebuffer_mut(c.fbo) {
+                    f.scratch = color;
+                }
+            }
+            Attachment::Renderbuffer(n) => self.put_rb(n, |s| match s {
+                None => Some(RbStorage::Color(color)),
+                other => other,
+            }),
+            Attachment::Texture { .. } if write => self.write_texture(c.color, w, h, |img, off| {
+                let len = w as usize * h as usize * 4;
+                img.texels_mut()[off..off + len].copy_from_slice(&color[..len]);
+            }),
+            Attachment::Texture { .. } => {}
+        }
+        // Depth and stencil may be one renderbuffer.
+        let mut depth = depth;
+        let mut stencil = stencil;
+        if let (Attachment::Renderbuffer(d), Attachment::Renderbuffer(s)) = (c.depth, c.stencil) {
+            if d == s {
+                if let (Some(dv), Some(sv)) = (depth.take(), stencil.take()) {
+                    self.put_rb(d, |_| Some(RbStorage::DepthStencil(dv, sv)));
+                }
+            }
+        }
+        if let Some(dv) = depth {
+            match c.depth {
+                Attachment::Renderbuffer(n) => self.put_rb(n, |s| match s {
+                    Some(RbStorage::Stencil(sv)) => Some(RbStorage::DepthStencil(dv, sv)),
+                    None => Some(RbStorage::Depth(dv)),
+                    other => other,
+                }),
+                Attachment::Texture { .. } if write => {
+                    let bits = dv.format().bits();
+                    self.write_texture(c.depth, w, h, |img, off| {
+                        let t = &mut img.texels_mut()[off..];
+                        let n = w as usize * h as usize;
+                        convert_back(&dv, bits, &mut t[..4 * n]);
+                    });
+                    let texels = self.texture_texels(c.depth);
+                    if let (Some(texels), Some(f)) = (texels, self.fbo.framebuffer_mut(c.fbo)) {
+                        f.depth_cache = Some(DepthCache {
+                            texels,
+                            attachment: c.depth,
+                            buffer: dv,
+                        });
+                    }
+                }
+                _ => {}
+            }
+        }
+        if let (Some(sv), Attachment::Renderbuffer(n)) = (stencil, c.stencil) {
+            self.put_rb(n, |s| match s {
+                Some(RbStorage::Depth(dv)) => Some(RbStorage::DepthStencil(dv, sv)),
+                None => Some(RbStorage::Stencil(sv)),
+                other => other,
+            });
+        }
+    }
+
+    fn put_rb(&mut self, name: u32, f: impl FnOnce(Option<RbStorage>) -> Option<RbStorage>) {
+        if let Some(rb) = self.fbo.renderbuffers.get_mut(&name).and_then(Option::as_mut) {
+            rb.storage = f(rb.storage.take());
+        }
+    }
+
+    /// Runs `f` on texture attachment `a`'s image and the byte offset of its layer.
+    fn write_texture(&mut self, a: Attachment, w: u32, h: u32, f: impl FnOnce(&mut TexImage, usize)) {
+        let Attachment::Texture {
+            name,
+            level,
+            face,
+            layer,
+        } = a
+        else {
+            return;
+        };
+        let Some(obj) = self.textures.get_mut().object_mut(name) else {
+            return;
+        };
+        if let Some(Some(img)) = obj.image_mut(level as usize, face as usize) {
+            if img.width == w && img.height == h {
+                let off = img.offset(0, 0, layer as usize);
+                f(img, off);
+            }
+        }
+    }
+
+    /// The depth buffer [`FramebufferObject::depth_cache`] holds for
+    /// attachment `a` of object `fbo`, when the image still has its texels.
+    fn cached_depth(&mut self, fbo: u32, a: Attachment) -> Option<DepthBuffer> {
+        let cache = self.fbo.framebuffer_mut(fbo)?.depth_cache.take()?;
+        let current = self.texture_texels(a)?;
+        (cache.attachment == a && std::sync::Arc::ptr_eq(&cache.texels, &current)).then_some(cache.buffer)
+    }
+
+    /// The texels of texture attachment `a`'s image (shared).
+    fn texture_texels(&self, a: Attachment) -> Option<std::sync::Arc<Vec<u8>>> {
+        let Attachment::Texture { name, level, face, .. } = a else {
+            return None;
+        };
+        let img = self.textures.object(name)?.image(level as usize, face as usize)?;
+        Some(std::sync::Arc::clone(&img.texels))
+    }
+
+    /// The texels of texture attachment `a`'s layer.
+    fn texture_layer(&self, a: Attachment) -> Option<(&[u8], usize)> {
+        let Attachment::Texture {
+            name,
+            level,
+            face,
+            layer,
+        } = a
+        else {
+            return None;
+        };
+        let img = self.textures.object(name)?.image(level as usize, face as usize)?;
+        let n = img.width as usize * img.height as usize;
+        let off = img.offset(0, 0, layer as usize);
+        Some((img.texels.get(off..off + n * 4)?, n))
+    }
+
+    fn take_color(&mut self, a: Attachment, take: bool) -> GlResult<Vec<u8>> {
+        match a {
+            Attachment::Renderbuffer(n) => match self.rb_storage(n, take)? {
+                RbStorage::Color(v) => Ok(v),
+                _ => Err(GlError::InvalidOperation),
+            },
+            _ => {
+                let (t, _) = self.texture_layer(a).ok_or(GlError::InvalidOperation)?;
+                let mut v = alloc(t.len(), 0u8)?;
+                v.copy_from_slice(t);
+                Ok(v)
+            }
+        }
+    }
+
+    fn take_depth(&mut self, a: Attachment, take: bool) -> GlResult<DepthBuffer> {
+        match a {
+            Attachment::Renderbuffer(n) => {
+                let s = self.rb_storage(n, take)?;
+                match s {
+                    RbStorage::Depth(d) => Ok(d),
+                    RbStorage::DepthStencil(d, s) => {
+                        // The stencil half stays for `take_stencil`.
+                        if take {
+                            self.put_rb(n, |_| Some(RbStorage::Stencil(s)));
+                        }
+                        Ok(d)
+                    }
+                    _ => Err(GlError::InvalidOperation),
+                }
+            }
+            _ => {
+                let kind = image_of(&self.fbo, &self.textures, a).and_then(|i| i.kind);
+                let Some(RenderbufferKind::Depth(format)) = kind else {
+                    return Err(GlError::InvalidOperation);
+                };
+                let (t, n) = self.texture_layer(a).ok_or(GlError::InvalidOperation)?;
+                let bits = format.bits();
+                let z = |i: usize| {
+                    let f = f32::from_ne_bytes([t[4 * i], t[4 * i + 1], t[4 * i + 2], t[4 * i + 3]]);
+                    // The nearest integer is the answer unless neighbours share an f32.
+                    let max = ((1u64 << bits) - 1) as f64;
+                    let guess = (f64::from(f) * max).round().clamp(0.0, max) as u32;
+                    if depth_sampled(guess, bits) == f {
+                        guess
+                    } else {
+                        depth_unsampled(f, bits)
+                    }
+                };
+                let mut out = alloc(n, 0u32)?;
+                for (i, o) in out.iter_mut().enumerate() {
+                    *o = z(i);
+                }
+                Ok(match format {
+                    DepthFormat::D16 => DepthBuffer::D16(out.into_iter().map(|v| v as u16).collect()),
+                    DepthFormat::D24 => DepthBuffer::D24(out),
+                    DepthFormat::D32 => DepthBuffer::D32(out),
+                })
+            }
+        }
+    }
+
+    fn take_stencil(&mut self, a: Attachment, take: bool) -> GlResult<Vec<u8>> {
+        match a {
+            Attachment::Renderbuffer(n) => match self.rb_storage(n, take)? {
+                RbStorage::Stencil(s) | RbStorage::DepthStencil(_, s) => Ok(s),
+                _ => Err(GlError::InvalidOperation),
+            },
+            _ => Err(GlError::InvalidOperation),
+        }
+    }
+
+    /// Renderbuffer `n`'s storage: moved out (`take`), or copied; when the
+    /// draw framebuffer holds it, copied from there.
+    fn rb_storage(&mut self, n: u32, take: bool) -> GlResult<RbStorage> {
+        let rb = self.fbo.renderbuffer(n).ok_or(GlError::InvalidOperation)?;
+        if let Some(s) = &rb.storage {
+            if take {
+                let rb = self.fbo.renderbuffers.get_mut(&n).and_then(Option::as_mut);
+                return rb.and_then(|r| r.storage.take()).ok_or(GlError::InvalidOperation);
+            }
+            return Ok(s.clone());
+        }
+        // Held by the draw framebuffer: copy its buffers (a read of a
+        // renderbuffer that is also drawn into).
+        let c = self.fbo.checkout.ok_or(GlError::InvalidOperation)?;
+        let fb = &self.fb;
+        let a = Attachment::Renderbuffer(n);
+        let depth = (c.depth == a).then(|| fb.depth_buffer().cloned()).flatten();
+        let stencil = (c.stencil == a)
+            .then(|| fb.stencil_buffer().map(<[u8]>::to_vec))
+            .flatten();
+        Ok(match (c.color == a, depth, stencil) {
+            (true, _, _) => RbStorage::Color(fb.color_bytes().to_vec()),
+            (_, Some(d), Some(s)) => RbStorage::DepthStencil(d, s),
+            (_, Some(d), None) => RbStorage::Depth(d),
+            (_, None, Some(s)) => RbStorage::Stencil(s),
+            _ => return Err(GlError::InvalidOperation),
+        })
+    }
+
+    // ----- reading -----
+
+    /// The read framebuffer for one read: `InvalidFramebufferOperation` when incomplete.
+    fn take_read(&mut self, need_color: bool) -> GlResult<ReadFb> {
+        self.ensure_draw()?;
+        let (read, draw) = (self.fbo.read, self.fbo.draw);
+        if read == 0 {
+            if need_color && self.fbo.window_read_none {
+                return Err(GlError::InvalidOperation);
+            }
+            return Ok(if draw == 0 { ReadFb::Draw } else { ReadFb::Window });
+        }
+        if status(&self.fbo, &self.textures, read) != FramebufferStatus::Complete {
+            return Err(GlError::InvalidFramebufferOperation);
+        }
+        let f = self.fbo.framebuffer(read).ok_or(GlError::InvalidOperation)?;
+        let color = f.read_buffer.map_or(Attachment::None, |i| f.color[i as usize]);
+        if need_color && color == Attachment::None {
+            return Err(GlError::InvalidOperation);
+        }
+        let c = Checkout {
+            fbo: read,
+            color,
+            depth: f.depth,
+            stencil: f.stencil,
+        };
+        if let Some(d) = self.fbo.checkout {
+            if d.fbo == read && d.color == color {
+                return Ok(ReadFb::Draw);
+            }
+        }
+        let fb = self.assemble(c, false)?;
+        Ok(ReadFb::Assembled(fb))
+    }
+
+    /// The framebuffer reads come from now (`GL_READ_FRAMEBUFFER`'s, its
+    /// read buffer as colour), every draw rasterized; view it with
+    /// [`Context::read_view`]. `need_color`: `InvalidOperation` when the
+    /// read buffer is `GL_NONE` or empty; `InvalidFramebufferOperation` for
+    /// an incomplete object. Errors are recorded.
+    pub fn read_framebuffer(&mut self, need_color: bool) -> GlResult<ReadFb> {
+        self.outside()?;
+        self.finish_scene();
+        let r = self.take_read(need_color);
+        self.record(r)
+    }
+
+    /// The framebuffer of a [`Context::read_framebuffer`].
+    pub fn read_view<'a>(&'a self, r: &'a ReadFb) -> &'a Framebuffer {
+        self.read_ref(r)
+    }
+
+    pub(crate) fn take_read_unflushed(&mut self, need_color: bool) -> GlResult<ReadFb> {
+        self.take_read(need_color)
+    }
+
+    pub(crate) fn read_ref<'a>(&'a self, r: &'a ReadFb) -> &'a Framebuffer {
+        match r {
+            ReadFb::Draw => &self.fb,
+            ReadFb::Window => self.fbo.window.as_ref().unwrap_or(&self.fb),
+            ReadFb::Assembled(fb) => fb,
+        }
+    }
+
+    /// Runs `f` on the read framebuffer (`GL_READ_FRAMEBUFFER`'s, through
+    /// its read buffer), with every draw rasterized. `need_color`: a colour
+    /// read, `InvalidOperation` when the read buffer is `GL_NONE`.
+    pub fn with_read_framebuffer<R>(&mut self, need_color: bool, f: impl FnOnce(&Framebuffer) -> R) -> GlResult<R> {
+        self.outside()?;
+        self.finish_scene();
+        let r = self.take_read(need_color);
+        let r = self.record(r)?;
+        let out = f(self.read_ref(&r));
+        // Nothing was moved out of the objects for a read (copies only).
+        drop(r);
+        Ok(out)
+    }
+
+    // ----- blits -----
+
+    /// Whether both bound framebuffers are complete (`glBlitFramebuffer`
+    /// checks it before its arguments).
+    pub fn framebuffers_complete(&self) -> bool {
+        let c = |n| status(&self.fbo, &self.textures, n) == FramebufferStatus::Complete;
+        c(self.fbo.draw) && c(self.fbo.read)
+    }
+
+    /// `glBlitFramebuffer`: `src` and `dst` are `[x0, y0, x1, y1]`; the
+    /// scissor test applies to the destination. Errors in Mesa's order
+    /// (`main/blit.c`), after the caller's enum checks.
+    pub fn blit_framebuffer(&mut self, src: [i32; 4], dst: [i32; 4], mask: BlitMask, filter: BlitFilter) -> GlResult {
+        self.outside()?;
+        if !self.framebuffers_complete() {
+            return self.record(Err(GlError::InvalidFramebufferOperation));
+        }
+        if (mask.depth || mask.stencil) && filter != BlitFilter::Nearest {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        let read_samples = self
+            .fbo
+            .framebuffer(self.fbo.read)
+            .map_or(0, |_| self.samples_of(self.fbo.read));
+        let draw_samples = self.draw_framebuffer_samples();
+        if read_samples > 0 && draw_samples > 0 && read_samples != draw_samples {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        let size = |r: [i32; 4]| {
+            (
+                (i64::from(r[2]) - i64::from(r[0])).abs(),
+                (i64::from(r[3]) - i64::from(r[1])).abs(),
+            )
+        };
+        if (read_samples > 0 || draw_samples > 0) && size(src) != size(dst) {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        self.ensure_draw()?;
+        self.finish_scene();
+        let read = self.take_read(false);
+        let read = self.record(read)?;
+        let r = self.blit_from(&read, src, dst, mask, filter);
+        self.record(r)
+    }
+
+    fn samples_of(&self, name: u32) -> u32 {
+        let Some(f) = self.fbo.framebuffer(name) else {
+            return 0;
+        };
+        f.color
+            .iter()
+            .chain([&f.depth, &f.stencil])
+            .find_map(|a| match a {
+                Attachment::Renderbuffer(n) => self.fbo.renderbuffer(*n).map(|r| r.samples),
+                _ => None,
+            })
+            .unwrap_or(0)
+    }
+
+    fn blit_from(
+        &mut self,
+        read: &ReadFb,
+        src: [i32; 4],
+        dst: [i32; 4],
+        mask: BlitMask,
+        filter: BlitFilter,
+    ) -> GlResult {
+        let draw_color = self.fb.color_enabled();
+        let (read_color, depth_ok, stencil_ok) = {
+            let s = self.read_ref(read);
+            let color = match read {
+                ReadFb::Draw | ReadFb::Window => {
+                    if self.fbo.read == 0 {
+                        !self.fbo.window_read_none
+                    } else {
+                        s.color_enabled()
+                    }
+                }
+                ReadFb::Assembled(fb) => fb.color_enabled(),
+            };
+            let d = self.fb.depth_format();
+            let sd = s.depth_format();
+            let depth = match (mask.depth, sd, d) {
+                (true, Some(a), Some(b)) if a != b => return Err(GlError::InvalidOperation),
+                (true, Some(_), Some(_)) => true,
+                _ => false,
+            };
+            let stencil = mask.stencil && s.has_stencil() && self.fb.has_stencil();
+            if stencil && sd.is_some() && d.is_some() && sd != d {
+                return Err(GlError::InvalidOperation);
+            }
+            (color, depth, stencil)
+        };
+        let color = mask.color && read_color && draw_color;
+        if !(color || depth_ok || stencil_ok) {
+            return Ok(());
+        }
+        let st = self.state();
+        let clip = if st.scissor_test {
+            let b = st.scissor;
+            self.fb
+                .clip_rect(i64::from(b.x), i64::from(b.y), i64::from(b.width), i64::from(b.height))
+        } else {
+            self.fb.bounds()
+        };
+        let what = (color, depth_ok, stencil_ok);
+        match read {
+            // Its own buffers (copies of the objects').
+            ReadFb::Assembled(from) => blit(from, &mut self.fb, src, dst, clip, what, filter),
+            // The window's buffers, waiting beside the object drawn.
+            ReadFb::Window => {
+                if let Some(from) = self.fbo.window.as_ref() {
+                    blit(from, &mut self.fb, src, dst, clip, what, filter);
+                }
+            }
+            // One framebuffer: the source is copied first.
+            ReadFb::Draw => {
+                let from = self.fb.clone();
+                blit(&from, &mut self.fb, src, dst, clip, what, filter);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// One axis of a blit as llvmpipe's blitter draws it (`util/u_blitter.c`
+/// `get_texcoords`, then the rectangle's linear interpolation): the source
+/// edges normalized by the source size in f32, a plane `a0 + dadx·x`
+/// evaluated at the destination pixel centre. Destination pixels `d0..d1`
+/// (`d0 < d1`) take source positions `s_first`…`s_last` (reversed for a flip).
+#[derive(Clone, Copy, Debug)]
+struct Axis {
+    a0: f32,
+    dadx: f32,
+    len: f32,
+}
+
+impl Axis {
+    fn new(d0: i32, d1: i32, s_first: i32, s_last: i32, len: u32) -> Axis {
+        let lenf = len as f32;
+        let (u0, u1) = (s_first as f32 / lenf, s_last as f32 / lenf);
+        let dadx = (u1 - u0) / (d1 - d0) as f32;
+        Axis {
+            a0: u0 - dadx * d0 as f32,
+            dadx,
+            len: lenf,
+        }
+    }
+
+    /// The normalized source coordinate at destination pixel `x`.
+    fn at(&self, x: u32) -> f32 {
+        self.a0 + self.dadx * (x as f32 + 0.5)
+    }
+
+    /// The nearest texel (`ifloor(u · len)`), `None` outside the source.
+    fn nearest(&self, x: u32) -> Option<u32> {
+        let i = (self.at(x) * self.len).floor();
+        (i >= 0.0 && i < self.len).then_some(i as u32)
+    }
+}
+
+/// Copies `src`'s rectangle to `dst`'s, scaled and flipped, inside `clip`,
+/// as llvmpipe's blitter draws it ([`Axis`]): NEAREST takes `ifloor(u·len)`;
+/// LINEAR samples the source as an RGBA8 texture with CLAMP_TO_EDGE on
+/// llvmpipe's AoS path (8.8 fixed-point coordinates, 8-bit lerps:
+/// `softgl_jit::texture::filter::aos`). Depth and stencil are copied
+/// nearest. Destination pixels whose nearest source texel is outside the
+/// read buffer are left as they are (Mesa clips such blits, `_mesa_clip_blit`).
+fn blit(
+    from: &Framebuffer,
+    to: &mut Framebuffer,
+    s: [i32; 4],
+    d: [i32; 4],
+    clip: Rect,
+    (color, depth, stencil): (bool, bool, bool),
+    filter: BlitFilter,
+) {
+    use softgl_jit::texture::filter::{aos, Level};
+    use softgl_jit::texture::{Filter, Image, TexelFormat, Wrap};
+    // Destination rectangles are drawn left to right, bottom to top; the
+    // source edges follow the destination's (a reversed pair flips).
+    let (dx0, dx1, sxa, sxb) = if d[0] <= d[2] {
+        (d[0], d[2], s[0], s[2])
+    } else {
+        (d[2], d[0], s[2], s[0])
+    };
+    let (dy0, dy1, sya, syb) = if d[1] <= d[3] {
+        (d[1], d[3], s[1], s[3])
+    } else {
+        (d[3], d[1], s[3], s[1])
+    };
+    if dx0 == dx1 || dy0 == dy1 || s[0] == s[2] || s[1] == s[3] {
+        return;
+    }
+    let ax = Axis::new(dx0, dx1, sxa, sxb, from.width());
+    let ay = Axis::new(dy0, dy1, sya, syb, from.height());
+    let out = clip.intersect(to.bounds()).intersect(Rect {
+        x0: dx0.max(0) as u32,
+        y0: dy0.max(0) as u32,
+        x1: dx1.max(0) as u32,
+        y1: dy1.max(0) as u32,
+    });
+    if out.is_empty() {
+        return;
+    }
+    // The source as RGBA8 texels, for LINEAR.
+    let texels: Vec<u8> = if color && filter == BlitFilter::Linear {
+        let (w, h) = (from.width(), from.height());
+        (0..h)
+            .flat_map(|y| (0..w).map(move |x| (x, y)))
+            .flat_map(|(x, y)| from.pixel(x, y).unwrap_or([0; 4]))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let image = Image {
+        texels: &texels,
+        width: from.width(),
+        height: from.height(),
+        depth: 1,
+    };
+    let level = Level {
+        image: &image,
+        format: TexelFormat::Rgba8,
+        pot: [from.width().is_power_of_two(), from.height().is_power_of_two(), true],
+    };
+    let mut t = to.target();
+    let cf = t.color_format();
+    for y in out.y0..out.y1 {
+        let ny = ay.nearest(y);
+        for x in out.x0..out.x1 {
+            let nx = ax.nearest(x);
+            let (Some(nx), Some(ny)) = (nx, ny) else {
+                continue;
+            };
+            let i = t.index(x, y);
+            if color {
+                let rgba = match filter {
+                    BlitFilter::Nearest => from.pixel(nx, ny).unwrap_or([0; 4]),
+                    BlitFilter::Linear => {
+                        let coord = [ax.at(x), ay.at(y), 0.0];
+                        aos(&level, Filter::Linear, 2, coord, [Wrap::ClampToEdge; 3])
+                    }
+                };
+                let off = t.color_offset(x, y);
+                let v = pixel::pack(cf, rgba, None);
+                pixel::store(cf, &mut t.color_mut()[off..], v);
+            }
+            if depth {
+                if let Some(z) = from.depth_at(nx, ny) {
+                    match t.depth_mut() {
+                        Some(softgl_jit::DepthTarget::D16(dd)) => dd[i] = z as u16,
+                        Some(softgl_jit::DepthTarget::D24(dd) | softgl_jit::DepthTarget::D32(dd)) => dd[i] = z,
+                        None => {}
+                    }
+                }
+            }
+            if stencil {
+                if let (Some(v), Some(ss)) = (from.stencil_at(nx, ny), t.stencil_mut()) {
+                    ss[i] = v;
+                }
+            }
+        }
+    }
+}
+
+/// Writes depth-test units back as the `Depth32F` texels llvmpipe's sampler
+/// would read (`unpack::depth_sampled`), on two threads for big images
+/// (4096²: a 64 MiB pass).
+fn convert_back(d: &DepthBuffer, bits: u32, out: &mut [u8]) {
+    // `depth_sampled` with its scale hoisted, for the loop to vectorize
+    // (up to 24 bits: `z · f32(1/max)`, exactly as `depth_sampled`).
+    let scale = (1.0 / ((1u64 << bits.min(24)) - 1) as f64) as f32;
+    let run = |range: std::ops::Range<usize>, out: &mut [u8]| match d {
+        DepthBuffer::D16(v) => {
+            for (o, &z) in out.chunks_exact_mut(4).zip(&v[range]) {
+                o.copy_from_slice(&(f32::from(z) * scale).to_ne_bytes());
+            }
+        }
+        DepthBuffer::D24(v) => {
+            for (o, &z) in out.chunks_exact_mut(4).zip(&v[range]) {
+                o.copy_from_slice(&(z as f32 * scale).to_ne_bytes());
+            }
+        }
+        DepthBuffer::D32(v) => {
+            for (o, &z) in out.chunks_exact_mut(4).zip(&v[range]) {
+                o.copy_from_slice(&depth_sampled(z, bits).to_ne_bytes());
+            }
+        }
+    };
+    let n = out.len() / 4;
+    if n < 1 << 16 {
+        return run(0..n, out);
+    }
+    let half = n / 2;
+    let (a, b) = out.split_at_mut(4 * half);
+    std::thread::scope(|s| {
+        s.spawn(|| run(0..half, a));
+        run(half..n, b);
+    });
+}
+
+fn depth_buffer(format: DepthFormat, n: usize) -> GlResult<DepthBuffer> {
+    Ok(match format {
+        DepthFormat::D16 => DepthBuffer::D16(alloc(n, u16::MAX)?),
+        DepthFormat::D24 => DepthBuffer::D24(alloc(n, format.max_value())?),
+        DepthFormat::D32 => DepthBuffer::D32(alloc(n, format.max_value())?),
+    })
+}
+
+/// A vector of `n` `value`s, or `OutOfMemory` instead of an abort.
+fn alloc<T: Clone>(n: usize, value: T) -> GlResult<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n).map_err(|_| GlError::OutOfMemory)?;
+    v.resize(n, value);
+    Ok(v)
+}
