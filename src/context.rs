@@ -268,7 +268,7 @@ impl CurrentAttribs {
 /// layout carries; texture units take part only when a stage reads the
 /// fragment colour. (A function of the fields, so that the draw can borrow
 /// the textures while it compiles a specialist.)
-fn plan<'a>(
+pub(crate) fn plan<'a>(
     state: &RasterState,
     fb: &Framebuffer,
     ordered_dither: bool,
@@ -343,10 +343,10 @@ struct Begun {
 
 /// A software GL 1.x context with its own framebuffer. `Send`: it owns all its data.
 pub struct Context {
-    fb: Framebuffer,
-    state: Tracked<RasterState>,
-    modelview: MatrixStack,
-    projection: MatrixStack,
+    pub(crate) fb: Framebuffer,
+    pub(crate) state: Tracked<RasterState>,
+    pub(crate) modelview: MatrixStack,
+    pub(crate) projection: MatrixStack,
     matrix_mode: MatrixMode,
     pub(crate) current: CurrentAttribs,
     /// Texture units: enables, environment, generation, matrices.
@@ -356,25 +356,27 @@ pub struct Context {
     /// Which colours `begin`/`end` draws carry per vertex (Mesa's vertex format).
     format: VertexFormat,
     error: Option<GlError>,
-    backend: Backend,
-    specialists: SpecialistCache,
+    pub(crate) backend: Backend,
+    pub(crate) specialists: SpecialistCache,
     /// Whether `GL_DITHER` dithers (see [`Context::set_ordered_dither`]).
-    ordered_dither: bool,
+    pub(crate) ordered_dither: bool,
     /// Texture objects, their bindings per unit, the active unit (`texture/`).
     pub(crate) textures: Tracked<crate::texture::TextureStore>,
     /// Draws and clears not yet rasterized (`raster/scene.rs`).
-    scene: Scene,
+    pub(crate) scene: Scene,
     /// A scene flushing on the pool while `scene` records, holding the
     /// framebuffer's buffers (`fb` is hollow meanwhile: `raster/background.rs`).
-    background: Background,
+    pub(crate) background: Background,
     /// The vertex, material and texture-coordinate storage `begin` reuses.
     spare: Spare,
     /// Threads a flush rasterizes tiles on.
-    threads: usize,
+    pub(crate) threads: usize,
     /// The last untextured draw's plan, reused while nothing it was made of changes.
     plan_cache: Option<CachedPlan>,
     /// The geometry's vertex window, reused by every draw (`batch::Window`).
     window: crate::geometry::batch::Window,
+    /// `glRasterPos`/`glWindowPos` and what they latched (`raster_pos.rs`).
+    pub(crate) raster: crate::raster_pos::RasterPos,
 }
 
 /// A draw's plan (`plan`) and uniforms, and what they were made of: the
@@ -446,6 +448,7 @@ impl Context {
             threads: crate::raster::pool::default_threads(),
             plan_cache: None,
             window: Default::default(),
+            raster: crate::raster_pos::RasterPos::default(),
         }
     }
 

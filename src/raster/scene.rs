@@ -101,13 +101,15 @@ struct Vert {
 enum Kind {
     Line { width: f32 },
     Point { size: f32 },
+    /// A bitmap at the vertex (the raster position): `Scene::bitmaps[index]`.
+    Bitmap { index: u32 },
 }
 
 impl Kind {
     fn vertices(self) -> usize {
         match self {
             Kind::Line { .. } => 2,
-            Kind::Point { .. } => 1,
+            Kind::Point { .. } | Kind::Bitmap { .. } => 1,
         }
     }
 }
@@ -237,6 +239,8 @@ pub struct Scene {
     /// The varyings of `verts` and of flat primitives, the layout's slots only.
     vary: Vec<f32>,
     clears: Vec<Clear>,
+    /// The bitmaps recorded (`Kind::Bitmap`).
+    bitmaps: Vec<crate::pixel_rect::PlacedBitmap>,
     /// Per tile, row by row from the bottom: entries into `prims`, or into
     /// `clears` with [`CLEAR`] set, in the order recorded.
     bins: Vec<Vec<u32>>,
@@ -395,6 +399,7 @@ impl Scene {
         self.verts.clear();
         self.vary.clear();
         self.clears.clear();
+        self.bitmaps.clear();
         for b in &mut self.bins {
             b.clear();
         }
@@ -466,6 +471,11 @@ impl Scene {
         match p.kind {
             Kind::Line { width } => sink.line(&v[0], &v[1], width, f, &params),
             Kind::Point { size } => sink.point(&v[0], size, &params),
+            Kind::Bitmap { index } => {
+                if let Some(b) = self.bitmaps.get(index as usize) {
+                    super::pixels::bitmap(&v[0], b, &params, sink.0)
+                }
+            }
         }
     }
 
@@ -723,6 +733,21 @@ impl Binner<'_> {
             self.error.get_or_insert(e);
         }
         self.draw = None;
+    }
+}
+
+impl Binner<'_> {
+    /// Records bitmap `b` drawn with the constants of `v` (the raster
+    /// position's).
+    pub fn bitmap(&mut self, v: &RasterVertex, b: crate::pixel_rect::PlacedBitmap, params: &RasterParams) {
+        let r = b.rect(params.bounds);
+        if r.is_none() {
+            return;
+        }
+        let index = self.scene.bitmaps.len() as u32;
+        self.scene.bytes += std::mem::size_of_val(&b) + b.image.bytes();
+        self.scene.bitmaps.push(b);
+        self.record(r, params, Kind::Bitmap { index }, &[v], None);
     }
 }
 

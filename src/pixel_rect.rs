@@ -1,0 +1,328 @@
+//! Bitmaps and pixel rectangles drawn at the raster position (GL 1.5 §3.6,
+//! §3.7): their fragments run the draw's fragment specialist as a
+//! primitive's do (scissor, alpha, stencil, depth, blend, logic op, masks),
+//! recorded in the deferred scene in order with the primitives
+//! (`raster/scene.rs`), rasterized per tile.
+//!
+//! What llvmpipe runs for them (Mesa's `state_tracker/st_cb_bitmap.c`): a
+//! bitmap is a screen-aligned quad at `floor(raster + 1e-4 - orig)`, whose
+//! fragments are the bitmap's set bits, at the raster position's depth,
+//! with the raster colour as a constant: the current fragment shader runs
+//! on them (texture environment, colour sum, fog), `docs/llvmpipe-facts.md`.
+
+use crate::context::Context;
+use crate::error::{GlError, GlResult};
+use crate::framebuffer::Rect;
+use crate::geometry::varying::{Varyings, MAX_VARYINGS};
+use crate::raster::scene::DrawState;
+use crate::raster::{RasterParams, RasterVertex};
+use crate::texture::PixelStore;
+use crate::Backend;
+use std::sync::Arc;
+
+/// A `glBitmap` image, unpacked: bit `x` of row `y` (bottom-up) says whether
+/// the pixel at `(x, y)` from the image's origin makes a fragment.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct BitmapImage {
+    width: u32,
+    height: u32,
+    /// 64-bit words a row.
+    words: u32,
+    bits: Arc<[u64]>,
+}
+
+impl BitmapImage {
+    /// An empty (`0×0`) bitmap.
+    pub fn empty() -> BitmapImage {
+        BitmapImage {
+            width: 0,
+            height: 0,
+            words: 0,
+            bits: Arc::from(Vec::new()),
+        }
+    }
+
+    /// Bytes a `width`×`height` bitmap reads from client memory under
+    /// `store` (rows padded to the alignment, skipped rows and pixels
+    /// counted); `None` when negative.
+    pub fn client_bytes(width: i32, height: i32, store: &PixelStore) -> Option<usize> {
+        if width < 0 || height < 0 {
+            return None;
+        }
+        if width == 0 || height == 0 {
+            return Some(0);
+        }
+        let (stride, skip_pixels, skip_rows) = Self::layout(width, store);
+        let last_row = (skip_rows + height as usize - 1) * stride;
+        Some(last_row + (skip_pixels + width as usize).div_ceil(8))
+    }
+
+    /// Bytes a row, bits skipped at the start of a row, rows skipped.
+    fn layout(width: i32, store: &PixelStore) -> (usize, usize, usize) {
+        let row_length = if store.row_length > 0 { store.row_length } else { width } as usize;
+        let align = store.alignment.max(1) as usize;
+        let stride = row_length.div_ceil(8).div_ceil(align) * align;
+        (stride, store.skip_pixels.max(0) as usize, store.skip_rows.max(0) as usize)
+    }
+
+    /// Unpacks a `width`×`height` bitmap from `data` as GL reads client
+    /// memory under `store` (`GL_UNPACK_LSB_FIRST`, alignment, row length,
+    /// skipped rows and pixels): negative sizes are `InvalidValue`, data
+    /// shorter than [`Self::client_bytes`] `InvalidOperation`.
+    pub fn unpack(width: i32, height: i32, data: &[u8], store: &PixelStore) -> GlResult<BitmapImage> {
+        let need = Self::client_bytes(width, height, store).ok_or(GlError::InvalidValue)?;
+        if data.len() < need {
+            return Err(GlError::InvalidOperation);
+        }
+        let (w, h) = (width as u32, height as u32);
+        let words = w.div_ceil(64);
+        let mut bits = vec![0u64; words as usize * h as usize];
+        let (stride, skip_pixels, skip_rows) = Self::layout(width, store);
+        for y in 0..h as usize {
+            let row = &data[(skip_rows + y) * stride..];
+            for x in 0..w as usize {
+                let b = skip_pixels + x;
+                let byte = row[b / 8];
+                let bit = if store.lsb_first { b % 8 } else { 7 - b % 8 };
+                if byte >> bit & 1 != 0 {
+                    bits[y * words as usize + x / 64] |= 1 << (x % 64);
+                }
+            }
+        }
+        Ok(BitmapImage {
+            width: w,
+            height: h,
+            words,
+            bits: Arc::from(bits),
+        })
+    }
+
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Bytes of its bits.
+    pub fn bytes(&self) -> usize {
+        self.bits.len() * 8
+    }
+
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// Whether the pixel at `(x, y)` of the image makes a fragment.
+    pub fn get(&self, x: u32, y: u32) -> bool {
+        x < self.width && y < self.height && self.row_bits(y, x) & 1 != 0
+    }
+
+    /// The 64 bits of row `y` from column `x` on (zeros past the width).
+    pub fn row_bits(&self, y: u32, x: u32) -> u64 {
+        let row = &self.bits[(y * self.words) as usize..][..self.words as usize];
+        let (w, b) = ((x / 64) as usize, x % 64);
+        let lo = row.get(w).copied().unwrap_or(0) >> b;
+        let hi = match b {
+            0 => 0,
+            _ => row.get(w + 1).copied().unwrap_or(0) << (64 - b),
+        };
+        let bits = lo | hi;
+        let left = self.width.saturating_sub(x);
+        if left >= 64 {
+            bits
+        } else {
+            bits & ((1u64 << left) - 1)
+        }
+    }
+}
+
+/// A bitmap placed in the window: its image and the window position of its
+/// lower-left pixel.
+#[derive(Clone, Debug)]
+pub struct PlacedBitmap {
+    pub image: BitmapImage,
+    pub x: i64,
+    pub y: i64,
+}
+
+impl PlacedBitmap {
+    /// The window pixels it may cover inside `bounds`.
+    pub fn rect(&self, bounds: Rect) -> Option<Rect> {
+        let clamp = |v: i64, lo: u32, hi: u32| v.clamp(i64::from(lo), i64::from(hi)) as u32;
+        let r = Rect {
+            x0: clamp(self.x, bounds.x0, bounds.x1),
+            y0: clamp(self.y, bounds.y0, bounds.y1),
+            x1: clamp(self.x + i64::from(self.image.width), bounds.x0, bounds.x1),
+            y1: clamp(self.y + i64::from(self.image.height), bounds.y0, bounds.y1),
+        };
+        (!r.is_empty()).then_some(r)
+    }
+}
+
+impl Context {
+    /// What the fragments of a bitmap or pixel rectangle run with, as a
+    /// draw made now would (its key, uniforms, specialist and textures),
+    /// the raster parameters (the whole framebuffer, llvmpipe's viewport for
+    /// them) and the raster position as a vertex carrying its colours,
+    /// fog distance and texture coordinates in the draw's layout.
+    fn raster_draw(&mut self) -> GlResult<(DrawState, RasterParams, RasterVertex)> {
+        let textures = (&*self.tex_units, &*self.textures);
+        let (mut key, mut layout, textures) =
+            crate::context::plan(&self.state, &self.fb, self.ordered_dither, textures);
+        if layout.color {
+            layout.uniform_colors = true;
+            if let Some(shade) = key.shade.as_mut() {
+                shade.flat = true;
+            }
+        }
+        let fb = &self.fb;
+        if key.validate().is_err()
+            || (key.color_format, key.depth_format, key.stencil_buffer)
+                != (fb.color_format(), fb.depth_format(), fb.has_stencil())
+        {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        let r = self.raster;
+        let mut v: Varyings = [0.0; MAX_VARYINGS];
+        let mut put = |o: Option<usize>, c: &[f32]| {
+            if let Some(o) = o {
+                v[o..o + c.len()].copy_from_slice(c);
+            }
+        };
+        let clamp = |c: glam::Vec4| c.to_array().map(|c| if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) });
+        put(layout.color(), &clamp(r.color));
+        put(layout.back_color(), &clamp(r.color));
+        put(layout.secondary(), &clamp(r.secondary));
+        put(layout.back_secondary(), &clamp(r.secondary));
+        put(layout.fog(), &[r.distance.abs()]);
+        for (u, o) in layout.tex_units() {
+            put(Some(o), &r.tex_coords[u].to_array());
+        }
+        let height = fb.height();
+        let vertex = RasterVertex {
+            x: r.window[0],
+            y: r.window[1],
+            y_down: height as f32 - r.window[1],
+            z: f64::from(r.window[2]),
+            inv_w: 1.0,
+            v,
+        };
+        let params = RasterParams {
+            bounds: fb.bounds(),
+            depth: fb.depth_format().filter(|_| key.depth.is_some()),
+            height,
+            layout,
+            offset: None,
+        };
+        let specialist = match self.backend {
+            Backend::Jit => self.specialists.get(&key).cloned(),
+            Backend::Interpreter => None,
+        };
+        let uniforms = self.state.fragment_uniforms();
+        let state = DrawState {
+            key,
+            uniforms,
+            specialist,
+            textures: textures.share(),
+        };
+        Ok((state, params, vertex))
+    }
+
+    /// `glBitmap`: draws `image` with its origin `orig` at the raster
+    /// position, then moves the raster position by `moves`. Nothing at all
+    /// (no move either) when the raster position is invalid.
+    pub fn bitmap(&mut self, image: &BitmapImage, orig: [f32; 2], moves: [f32; 2]) -> GlResult {
+        self.outside()?;
+        if !self.raster.valid {
+            return Ok(());
+        }
+        if image.width > 0 && image.height > 0 {
+            const EPSILON: f32 = 0.0001;
+            let [rx, ry, ..] = self.raster.window;
+            let x = (rx + EPSILON - orig[0]).floor();
+            let y = (ry + EPSILON - orig[1]).floor();
+            if x.is_finite() && y.is_finite() {
+                let placed = PlacedBitmap {
+                    image: image.clone(),
+                    x: x as i64,
+                    y: y as i64,
+                };
+                let (state, params, vertex) = self.raster_draw()?;
+                let mut binner = self.scene.draw(&mut self.fb, &mut self.background, self.threads, state);
+                binner.bitmap(&vertex, placed, &params);
+                let r = binner.finish();
+                self.record(r.map_err(|_| GlError::InvalidOperation))?;
+            }
+        }
+        self.raster.window[0] += moves[0];
+        self.raster.window[1] += moves[1];
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{FramebufferDesc, PixelStore};
+
+    #[test]
+    fn unpacking_follows_the_unpack_state() {
+        // 10×2, MSB first, alignment 1: rows of 2 bytes.
+        let data = [0b1000_0001, 0b0100_0000, 0b1111_1111, 0b1100_0000];
+        let store = PixelStore {
+            alignment: 1,
+            ..PixelStore::DEFAULT
+        };
+        let b = BitmapImage::unpack(10, 2, &data, &store).unwrap();
+        let row = |y| (0..10).map(|x| b.get(x, y) as u8).collect::<Vec<_>>();
+        assert_eq!(row(0), [1, 0, 0, 0, 0, 0, 0, 1, 0, 1]);
+        assert_eq!(row(1), [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]);
+        // LSB first, skipping one pixel and one row, alignment 4.
+        let store = PixelStore {
+            lsb_first: true,
+            skip_pixels: 1,
+            skip_rows: 1,
+            ..PixelStore::DEFAULT
+        };
+        let data = [0, 0, 0, 0, 0b0000_0110, 0, 0, 0];
+        assert_eq!(BitmapImage::client_bytes(3, 1, &store), Some(5));
+        let b = BitmapImage::unpack(3, 1, &data, &store).unwrap();
+        assert_eq!((0..3).map(|x| b.get(x, 0)).collect::<Vec<_>>(), [true, true, false]);
+        assert_eq!(BitmapImage::unpack(3, 1, &data[..4], &store), Err(GlError::InvalidOperation));
+        assert_eq!(BitmapImage::unpack(-1, 1, &data, &store), Err(GlError::InvalidValue));
+    }
+
+    #[test]
+    fn a_bitmap_draws_its_bits_in_the_raster_colour_and_moves() {
+        let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(80, 70)).unwrap();
+        gl.ortho(0.0, 80.0, 0.0, 70.0, -1.0, 1.0).unwrap();
+        gl.color3(1.0, 0.0, 0.0);
+        gl.raster_pos(10.0, 20.0, 0.0, 1.0).unwrap();
+        gl.color3(0.0, 1.0, 0.0);
+        // 70 wide: two words a row; a checker of its first row.
+        let mut data = vec![0u8; 9 * 2];
+        data[0] = 0b1010_0000;
+        data[8] = 0b0100_0000;
+        data[9] = 0xff;
+        let store = PixelStore {
+            alignment: 1,
+            ..PixelStore::DEFAULT
+        };
+        let b = BitmapImage::unpack(70, 2, &data, &store).unwrap();
+        gl.bitmap(&b, [2.0, 0.0], [5.0, 1.0]).unwrap();
+        assert_eq!(gl.raster_position().window[..2], [15.0, 21.0]);
+        let fb = gl.framebuffer();
+        let red = Some([255, 0, 0, 255]);
+        let black = Some([0, 0, 0, 0]);
+        assert_eq!(fb.pixel(8, 20), red);
+        assert_eq!(fb.pixel(9, 20), black);
+        assert_eq!(fb.pixel(10, 20), red);
+        assert_eq!(fb.pixel(8 + 65, 20), red);
+        assert_eq!(fb.pixel(8 + 64, 20), black);
+        assert_eq!(fb.pixel(8, 21), red);
+        assert_eq!(fb.pixel(15, 21), red);
+        assert_eq!(fb.pixel(16, 21), black);
+        // Invalid: nothing, and no move.
+        gl.raster_pos(100.0, 20.0, 0.0, 1.0).unwrap();
+        gl.bitmap(&b, [0.0, 0.0], [5.0, 1.0]).unwrap();
+        assert_eq!(gl.raster_position().window[..2], [15.0, 21.0]);
+    }
+}
