@@ -42,6 +42,19 @@ impl BitmapImage {
         }
     }
 
+    /// A `width`×`height` bitmap with no bit set (a null image: GL draws
+    /// nothing, and moves the raster position). Negative sizes count as 0.
+    pub fn empty_sized(width: i32, height: i32) -> BitmapImage {
+        let (w, h) = (width.max(0) as u32, height.max(0) as u32);
+        let words = w.div_ceil(64);
+        BitmapImage {
+            width: w,
+            height: h,
+            words,
+            bits: Arc::from(vec![0u64; words as usize * h as usize]),
+        }
+    }
+
     /// Bytes a `width`×`height` bitmap reads from client memory under
     /// `store` (rows padded to the alignment, skipped rows and pixels
     /// counted); `None` when negative.
@@ -101,6 +114,41 @@ impl BitmapImage {
         self.width
     }
 
+    /// A `width`×`height` bitmap of the rows `bits`, `width.div_ceil(64)`
+    /// words each (bits past the width ignored).
+    pub fn from_words(width: u32, height: u32, bits: Vec<u64>) -> BitmapImage {
+        let words = width.div_ceil(64);
+        debug_assert_eq!(bits.len(), words as usize * height as usize);
+        BitmapImage {
+            width,
+            height,
+            words,
+            bits: Arc::from(bits),
+        }
+    }
+
+    /// ORs the bits into `dst` (rows of `words` words) at column `px`, row `py`.
+    pub fn or_into(&self, dst: &mut [u64], words: u32, px: u32, py: u32) {
+        for y in 0..self.height {
+            let row = &mut dst[((py + y) * words) as usize..][..words as usize];
+            let mut x = 0;
+            while x < self.width {
+                let bits = self.row_bits(y, x);
+                let at = px + x;
+                let (w, b) = ((at / 64) as usize, at % 64);
+                if let Some(r) = row.get_mut(w) {
+                    *r |= bits << b;
+                }
+                if b != 0 {
+                    if let Some(r) = row.get_mut(w + 1) {
+                        *r |= bits >> (64 - b);
+                    }
+                }
+                x += 64;
+            }
+        }
+    }
+
     /// Bytes of its bits.
     pub fn bytes(&self) -> usize {
         self.bits.len() * 8
@@ -133,6 +181,19 @@ impl BitmapImage {
         }
     }
 }
+
+/// Mesa's bitmap cache (`st_cb_bitmap.c`, `accum_bitmap`): bitmaps drawn
+/// one after the other with the same raster colour and depth, whose boxes
+/// fit in a 512×32 window placed at the first (vertically centred on it),
+/// are merged into one bitmap (their bits ORed) and drawn as one quad:
+/// where two overlap, the pixel makes one fragment, not two (it is blended
+/// and counted by the stencil once). softgl merges them likewise while the
+/// fragment state stays the same; Mesa also merges across state changes
+/// (its cache is drawn with the state current when a draw, clear, flush,
+/// read or scissor change empties it), which softgl does not copy.
+pub const CACHE_WIDTH: u32 = 512;
+/// See [`CACHE_WIDTH`].
+pub const CACHE_HEIGHT: u32 = 32;
 
 /// A bitmap placed in the window: its image and the window position of its
 /// lower-left pixel.
@@ -192,7 +253,9 @@ impl Context {
         put(layout.back_color(), &clamp(r.color));
         put(layout.secondary(), &clamp(r.secondary));
         put(layout.back_secondary(), &clamp(r.secondary));
-        put(layout.fog(), &[r.distance.abs()]);
+        // llvmpipe's pass-through vertex shader for these quads writes no
+        // fog coordinate: the fragments read 0 (`docs/llvmpipe-facts.md`).
+        put(layout.fog(), &[0.0]);
         for (u, o) in layout.tex_units() {
             put(Some(o), &r.tex_coords[u].to_array());
         }
@@ -246,10 +309,11 @@ impl Context {
                     y: y as i64,
                 };
                 let (state, params, vertex) = self.raster_draw()?;
-                let mut binner = self.scene.draw(&mut self.fb, &mut self.background, self.threads, state);
-                binner.bitmap(&vertex, placed, &params);
-                let r = binner.finish();
-                self.record(r.map_err(|_| GlError::InvalidOperation))?;
+                let colour = self.raster.color.to_array();
+                self.scene.bitmap(state, &params, vertex, placed, colour);
+                if self.scene.bytes() > self.scene.bound() {
+                    self.finish_scene();
+                }
             }
         }
         self.raster.window[0] += moves[0];

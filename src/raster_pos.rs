@@ -169,6 +169,11 @@ impl Context {
     /// depth `z` clamped to `[0, 1]` and mapped into the depth range;
     /// always valid; the current colours (clamped) and texture coordinates.
     pub fn window_pos(&mut self, x: f32, y: f32, z: f32) -> GlResult {
+        self.window_pos4(x, y, z, 1.0)
+    }
+
+    /// `glWindowPos4fMESA`: [`Self::window_pos`] with the raster w set to `w`.
+    pub fn window_pos4(&mut self, x: f32, y: f32, z: f32, w: f32) -> GlResult {
         self.outside()?;
         let (n, f) = self.state.depth_range;
         let z = if z.is_nan() { 0.0 } else { z.clamp(0.0, 1.0) };
@@ -177,7 +182,7 @@ impl Context {
         let clamp = |v: Vec4| Vec4::from_array(v.to_array().map(|c| if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) }));
         self.raster = RasterPos {
             valid: true,
-            window: [x, y, z2, 1.0],
+            window: [x, y, z2, w],
             distance: match self.state.fog.coord_src {
                 FogCoordSrc::FogCoord => c.fog_coord,
                 FogCoordSrc::FragmentDepth => 0.0,

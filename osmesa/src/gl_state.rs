@@ -75,6 +75,8 @@ pub struct SavedAttrib {
     pub mask: u32,
     pub state: RasterState,
     pub current: CurrentAttribs,
+    /// The raster position (`GL_CURRENT_BIT`).
+    pub raster: softgl::raster_pos::RasterPos,
     pub matrix_mode: MatrixMode,
     pub hints: [GLenum; 7],
     pub inert_caps: Vec<GLenum>,

@@ -582,3 +582,26 @@ fn pyopengl_draws_and_reads_back() {
     assert!(stdout.contains("renderer softgl"), "{stdout}");
     assert!(stdout.lines().last() == Some("ok"), "{stdout}");
 }
+
+#[test]
+fn raster_positions_and_bitmaps_match_mesa() {
+    let Some(exe) = build("bitmaps") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // Text from glBitmap display lists placed with glRasterPos/glWindowPos,
+    // bitmaps with depth test, blending, alpha test, logic op, masks, fog,
+    // lighting, clip planes, unpack state, scissor and stencil, raster
+    // positions off-screen and on the boundary: byte for byte.
+    for k in 0..8 {
+        let name = format!("bitmaps.{k}");
+        let (m, s) = (mesa.file(&name), soft.file(&name));
+        let differing = m.chunks_exact(4).zip(s.chunks_exact(4)).filter(|(a, b)| a != b).count();
+        assert_eq!(differing, 0, "scene {k}: {differing} pixels differ");
+        // Something was drawn: pixels other than the clear colour.
+        let clear = s[s.len() - 4..].to_vec();
+        let drawn = s.chunks_exact(4).filter(|p| *p != clear.as_slice()).count();
+        assert!(drawn > 100, "scene {k}: only {drawn} pixels drawn");
+    }
+    // The raster state read back (position, validity, distance, colours,
+    // texture coordinates), through glPushAttrib, and the errors.
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+}

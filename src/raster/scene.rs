@@ -241,6 +241,9 @@ pub struct Scene {
     clears: Vec<Clear>,
     /// The bitmaps recorded (`Kind::Bitmap`).
     bitmaps: Vec<crate::pixel_rect::PlacedBitmap>,
+    /// Bitmaps merged as Mesa's bitmap cache merges them, not recorded yet
+    /// ([`Scene::bitmap`]): recorded before anything else is.
+    pending: Option<Box<PendingBitmap>>,
     /// Per tile, row by row from the bottom: entries into `prims`, or into
     /// `clears` with [`CLEAR`] set, in the order recorded.
     bins: Vec<Vec<u32>>,
@@ -257,7 +260,7 @@ pub struct Scene {
 impl Scene {
     /// Whether nothing waits to be drawn.
     pub fn is_empty(&self) -> bool {
-        self.prims.is_empty() && self.triangles == 0 && self.clears.is_empty()
+        self.prims.is_empty() && self.triangles == 0 && self.clears.is_empty() && self.pending.is_none()
     }
 
     /// Bytes held (primitives, bin entries, draws): the scene is flushed past [`Scene::bound`].
@@ -316,6 +319,7 @@ impl Scene {
     /// Records a clear of `fb` (whose size the scene takes).
     pub fn clear(&mut self, fb: &Framebuffer, clear: Clear) {
         self.fit(fb.width(), fb.height());
+        self.settle();
         if clear.is_empty() {
             return;
         }
@@ -337,6 +341,7 @@ impl Scene {
         state: DrawState,
     ) -> Binner<'s> {
         self.fit(fb.width(), fb.height());
+        self.settle();
         Binner {
             scene: self,
             fb,
@@ -372,6 +377,7 @@ impl Scene {
     /// with this one's size, bound and counters (the flush to come counted),
     /// and returns this one, to be flushed on another thread.
     pub(crate) fn swap_out(&mut self, mut spare: Scene) -> Scene {
+        self.settle();
         spare.fit(self.width, self.height);
         spare.bound = self.bound;
         spare.peak = self.peak.max(self.bytes);
@@ -382,6 +388,7 @@ impl Scene {
     /// Runs every tile into `fb` on `threads` threads and empties the scene.
     /// Returns the first error of a fragment stage (in tile order).
     pub fn flush(&mut self, fb: &mut Framebuffer, threads: usize) -> Result<(), FragmentError> {
+        self.settle();
         if self.is_empty() {
             return Ok(());
         }
@@ -736,18 +743,125 @@ impl Binner<'_> {
     }
 }
 
-impl Binner<'_> {
-    /// Records bitmap `b` drawn with the constants of `v` (the raster
-    /// position's).
-    pub fn bitmap(&mut self, v: &RasterVertex, b: crate::pixel_rect::PlacedBitmap, params: &RasterParams) {
-        let r = b.rect(params.bounds);
-        if r.is_none() {
+/// Bitmaps merged into one ([`Scene::bitmap`]), with what they run with.
+#[derive(Debug)]
+struct PendingBitmap {
+    state: DrawState,
+    params: RasterParams,
+    vertex: RasterVertex,
+    /// The raster colour and depth they were drawn with.
+    colour: [f32; 4],
+    z: f64,
+    /// The merged bits, [`CACHE_WIDTH`]×[`CACHE_HEIGHT`], at `(x, y)`.
+    x: i64,
+    y: i64,
+    bits: Vec<u64>,
+}
+
+impl Scene {
+    /// Records bitmap `b` drawn with `state` and the constants of `v` (the
+    /// raster position's, colour `colour`): merged with the bitmaps before
+    /// it as Mesa's bitmap cache merges them ([`crate::pixel_rect::CACHE_WIDTH`]).
+    pub fn bitmap(
+        &mut self,
+        state: DrawState,
+        params: &RasterParams,
+        v: RasterVertex,
+        b: crate::pixel_rect::PlacedBitmap,
+        colour: [f32; 4],
+    ) {
+        use crate::pixel_rect::{CACHE_HEIGHT, CACHE_WIDTH};
+        let (w, h) = (b.image.width(), b.image.height());
+        if w > CACHE_WIDTH || h > CACHE_HEIGHT {
+            self.settle();
+            self.record_bitmap(state, params, &v, b);
             return;
         }
-        let index = self.scene.bitmaps.len() as u32;
-        self.scene.bytes += std::mem::size_of_val(&b) + b.image.bytes();
-        self.scene.bitmaps.push(b);
-        self.record(r, params, Kind::Bitmap { index }, &[v], None);
+        let words = CACHE_WIDTH / 64;
+        if let Some(p) = self.pending.as_mut() {
+            let (px, py) = (b.x - p.x, b.y - p.y);
+            let fits = px >= 0
+                && py >= 0
+                && px + i64::from(w) <= i64::from(CACHE_WIDTH)
+                && py + i64::from(h) <= i64::from(CACHE_HEIGHT);
+            if fits
+                && p.colour == colour
+                && (p.z - v.z).abs() <= 1e-6
+                && p.state.same_as(&state)
+                && p.params == *params
+            {
+                b.image.or_into(&mut p.bits, words, px as u32, py as u32);
+                return;
+            }
+        }
+        self.settle();
+        let py = (CACHE_HEIGHT - h) / 2;
+        let mut bits = vec![0u64; (words * CACHE_HEIGHT) as usize];
+        b.image.or_into(&mut bits, words, 0, py);
+        self.pending = Some(Box::new(PendingBitmap {
+            state,
+            params: *params,
+            colour,
+            z: v.z,
+            vertex: v,
+            x: b.x,
+            y: b.y - i64::from(py),
+            bits,
+        }));
+    }
+
+    /// Records the merged bitmaps, if any.
+    fn settle(&mut self) {
+        let Some(p) = self.pending.take() else { return };
+        let image = crate::pixel_rect::BitmapImage::from_words(
+            crate::pixel_rect::CACHE_WIDTH,
+            crate::pixel_rect::CACHE_HEIGHT,
+            p.bits,
+        );
+        let placed = crate::pixel_rect::PlacedBitmap { image, x: p.x, y: p.y };
+        self.record_bitmap(p.state, &p.params, &p.vertex, placed);
+    }
+
+    /// Records bitmap `b` as a draw of its own.
+    fn record_bitmap(&mut self, state: DrawState, params: &RasterParams, v: &RasterVertex, b: crate::pixel_rect::PlacedBitmap) {
+        let Some(r) = b.rect(params.bounds) else { return };
+        let draw = match self.draws.last() {
+            Some(last) if last.same_as(&state) => self.draws.len() as u32 - 1,
+            _ => {
+                for t in state.textures.texels() {
+                    if self.textures.insert(Arc::as_ptr(t) as usize) {
+                        self.texture_bytes += t.len();
+                    }
+                }
+                self.bytes += std::mem::size_of::<DrawState>();
+                self.draws.push(state);
+                self.draws.len() as u32 - 1
+            }
+        };
+        let n = params.layout.len();
+        let (first, vary) = (self.verts.len() as u32, self.vary.len() as u32);
+        self.verts.push(Vert {
+            x: v.x,
+            y: v.y,
+            y_down: v.y_down,
+            inv_w: v.inv_w,
+            z: v.z,
+        });
+        self.vary.extend_from_slice(&v.v[..n]);
+        let index = self.bitmaps.len() as u32;
+        self.bytes += std::mem::size_of_val(&b) + b.image.bytes() + std::mem::size_of::<Vert>() + 4 * n;
+        self.bitmaps.push(b);
+        let entry = self.prims.len() as u32;
+        self.prims.push(Binned {
+            draw,
+            kind: Kind::Bitmap { index },
+            first,
+            vary,
+            flat: false,
+            params: *params,
+        });
+        self.bytes += std::mem::size_of::<Binned>();
+        self.bin(r, entry);
     }
 }
 

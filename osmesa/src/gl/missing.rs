@@ -40,111 +40,11 @@ exports! {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos2f(_x: f32, _y: f32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos2fv(_v: *const f32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos2d(_x: f64, _y: f64) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos2dv(_v: *const f64) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos2i(_x: i32, _y: i32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos2iv(_v: *const i32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos2s(_x: i16, _y: i16) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos2sv(_v: *const i16) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos3f(_x: f32, _y: f32, _z: f32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos3fv(_v: *const f32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos3d(_x: f64, _y: f64, _z: f64) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos3dv(_v: *const f64) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos3i(_x: i32, _y: i32, _z: i32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos3iv(_v: *const i32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos3s(_x: i16, _y: i16, _z: i16) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos3sv(_v: *const i16) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos4f(_x: f32, _y: f32, _z: f32, _w: f32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos4fv(_v: *const f32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos4d(_x: f64, _y: f64, _z: f64, _w: f64) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos4dv(_v: *const f64) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos4i(_x: i32, _y: i32, _z: i32, _w: i32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos4iv(_v: *const i32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos4s(_x: i16, _y: i16, _z: i16, _w: i16) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRasterPos4sv(_v: *const i16) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glDrawPixels(_width: i32, _height: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glCopyPixels(_x: i32, _y: i32, _width: i32, _height: i32, _ty: GLenum) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glBitmap(_width: i32, _height: i32, _xorig: f32, _yorig: f32, _xmove: f32, _ymove: f32, _bitmap: *const u8) {
         missing()
     }
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.

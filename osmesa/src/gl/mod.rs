@@ -32,6 +32,7 @@ mod lighting;
 mod lists;
 mod missing;
 mod pixels;
+mod raster_pos;
 mod state;
 mod texture;
 mod texunit;
@@ -46,6 +47,7 @@ pub use lighting::*;
 pub use lists::*;
 pub use missing::*;
 pub use pixels::*;
+pub use raster_pos::*;
 pub use state::*;
 pub use texture::*;
 pub use texunit::*;
@@ -64,6 +66,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         lists::table,
         missing::table,
         pixels::table,
+        raster_pos::table,
         state::table,
         texture::table,
         texunit::table,
