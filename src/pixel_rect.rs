@@ -75,7 +75,11 @@ impl BitmapImage {
         let row_length = if store.row_length > 0 { store.row_length } else { width } as usize;
         let align = store.alignment.max(1) as usize;
         let stride = row_length.div_ceil(8).div_ceil(align) * align;
-        (stride, store.skip_pixels.max(0) as usize, store.skip_rows.max(0) as usize)
+        (
+            stride,
+            store.skip_pixels.max(0) as usize,
+            store.skip_rows.max(0) as usize,
+        )
     }
 
     /// Unpacks a `width`×`height` bitmap from `data` as GL reads client
@@ -350,7 +354,10 @@ mod tests {
         assert_eq!(BitmapImage::client_bytes(3, 1, &store), Some(5));
         let b = BitmapImage::unpack(3, 1, &data, &store).unwrap();
         assert_eq!((0..3).map(|x| b.get(x, 0)).collect::<Vec<_>>(), [true, true, false]);
-        assert_eq!(BitmapImage::unpack(3, 1, &data[..4], &store), Err(GlError::InvalidOperation));
+        assert_eq!(
+            BitmapImage::unpack(3, 1, &data[..4], &store),
+            Err(GlError::InvalidOperation)
+        );
         assert_eq!(BitmapImage::unpack(-1, 1, &data, &store), Err(GlError::InvalidValue));
     }
 

@@ -99,10 +99,16 @@ struct Vert {
 
 #[derive(Clone, Copy, Debug)]
 enum Kind {
-    Line { width: f32 },
-    Point { size: f32 },
+    Line {
+        width: f32,
+    },
+    Point {
+        size: f32,
+    },
     /// A bitmap at the vertex (the raster position): `Scene::bitmaps[index]`.
-    Bitmap { index: u32 },
+    Bitmap {
+        index: u32,
+    },
 }
 
 impl Kind {
@@ -784,11 +790,7 @@ impl Scene {
                 && py >= 0
                 && px + i64::from(w) <= i64::from(CACHE_WIDTH)
                 && py + i64::from(h) <= i64::from(CACHE_HEIGHT);
-            if fits
-                && p.colour == colour
-                && (p.z - v.z).abs() <= 1e-6
-                && p.state.same_as(&state)
-                && p.params == *params
+            if fits && p.colour == colour && (p.z - v.z).abs() <= 1e-6 && p.state.same_as(&state) && p.params == *params
             {
                 b.image.or_into(&mut p.bits, words, px as u32, py as u32);
                 return;
@@ -823,7 +825,13 @@ impl Scene {
     }
 
     /// Records bitmap `b` as a draw of its own.
-    fn record_bitmap(&mut self, state: DrawState, params: &RasterParams, v: &RasterVertex, b: crate::pixel_rect::PlacedBitmap) {
+    fn record_bitmap(
+        &mut self,
+        state: DrawState,
+        params: &RasterParams,
+        v: &RasterVertex,
+        b: crate::pixel_rect::PlacedBitmap,
+    ) {
         let Some(r) = b.rect(params.bounds) else { return };
         let draw = match self.draws.last() {
             Some(last) if last.same_as(&state) => self.draws.len() as u32 - 1,

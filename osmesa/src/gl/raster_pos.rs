@@ -16,13 +16,13 @@ pub(super) fn value(gl: &Context, pname: u32) -> Option<Val> {
     let fl = |v: &[f32]| Val::F(v.iter().map(|&c| f64::from(c)).collect());
     let n = |v: &[f32]| Val::N(v.iter().map(|&c| f64::from(c)).collect());
     Some(match pname {
-        0x0B04 => n(&r.color.to_array()),                                        // CURRENT_RASTER_COLOR
-        0x0B05 => fl(&[r.index]),                                                // CURRENT_RASTER_INDEX
-        0x0B06 => fl(&r.tex_coords[gl.active_texture_unit()].to_array()),       // CURRENT_RASTER_TEXTURE_COORDS
-        0x0B07 => fl(&r.window),                                                 // CURRENT_RASTER_POSITION
-        0x0B08 => Val::B(vec![r.valid]),                                         // CURRENT_RASTER_POSITION_VALID
-        0x0B09 => fl(&[r.distance]),                                             // CURRENT_RASTER_DISTANCE
-        0x845F => n(&r.secondary.to_array()),                                    // CURRENT_RASTER_SECONDARY_COLOR
+        0x0B04 => n(&r.color.to_array()), // CURRENT_RASTER_COLOR
+        0x0B05 => fl(&[r.index]),         // CURRENT_RASTER_INDEX
+        0x0B06 => fl(&r.tex_coords[gl.active_texture_unit()].to_array()), // CURRENT_RASTER_TEXTURE_COORDS
+        0x0B07 => fl(&r.window),          // CURRENT_RASTER_POSITION
+        0x0B08 => Val::B(vec![r.valid]),  // CURRENT_RASTER_POSITION_VALID
+        0x0B09 => fl(&[r.distance]),      // CURRENT_RASTER_DISTANCE
+        0x845F => n(&r.secondary.to_array()), // CURRENT_RASTER_SECONDARY_COLOR
         _ => return None,
     })
 }
