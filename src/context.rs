@@ -377,6 +377,8 @@ pub struct Context {
     window: crate::geometry::batch::Window,
     /// `glRasterPos`/`glWindowPos` and what they latched (`raster_pos.rs`).
     pub(crate) raster: crate::raster_pos::RasterPos,
+    /// `glPixelZoom`, `glPixelTransfer`, `glPixelMap` (`pixel_transfer.rs`).
+    pub(crate) pixel: crate::pixel_transfer::PixelState,
 }
 
 /// A draw's plan (`plan`) and uniforms, and what they were made of: the
@@ -449,6 +451,7 @@ impl Context {
             plan_cache: None,
             window: Default::default(),
             raster: crate::raster_pos::RasterPos::default(),
+            pixel: crate::pixel_transfer::PixelState::default(),
         }
     }
 
@@ -621,7 +624,7 @@ impl Context {
     }
 
     /// Checks `ok`, recording `InvalidValue` when false.
-    fn require(&mut self, ok: bool) -> GlResult {
+    pub(crate) fn require(&mut self, ok: bool) -> GlResult {
         self.outside()?;
         self.record(if ok { Ok(()) } else { Err(GlError::InvalidValue) })
     }

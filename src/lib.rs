@@ -32,6 +32,7 @@ pub mod inverse;
 pub mod lighting;
 pub mod matrix;
 pub mod pixel_rect;
+pub mod pixel_transfer;
 pub mod raster;
 pub mod raster_pos;
 pub mod state;

@@ -228,11 +228,14 @@ impl Context {
     /// the raster parameters (the whole framebuffer, llvmpipe's viewport for
     /// them) and the raster position as a vertex carrying its colours,
     /// fog distance and texture coordinates in the draw's layout.
-    fn raster_draw(&mut self) -> GlResult<(DrawState, RasterParams, RasterVertex)> {
+    fn raster_draw(&mut self, pixels: bool) -> GlResult<(DrawState, RasterParams, RasterVertex)> {
         let textures = (&*self.tex_units, &*self.textures);
         let (mut key, mut layout, textures) =
             crate::context::plan(&self.state, &self.fb, self.ordered_dither, textures);
-        if layout.color {
+        if pixels {
+            // Pixel rectangles bring their colours and depths in the spans.
+            key.shade = None;
+        } else if layout.color {
             layout.uniform_colors = true;
             if let Some(shade) = key.shade.as_mut() {
                 shade.flat = true;
@@ -312,7 +315,7 @@ impl Context {
                     x: x as i64,
                     y: y as i64,
                 };
-                let (state, params, vertex) = self.raster_draw()?;
+                let (state, params, vertex) = self.raster_draw(false)?;
                 let colour = self.raster.color.to_array();
                 self.scene.bitmap(state, &params, vertex, placed, colour);
                 if self.scene.bytes() > self.scene.bound() {
@@ -323,6 +326,414 @@ impl Context {
         self.raster.window[0] += moves[0];
         self.raster.window[1] += moves[1];
         Ok(())
+    }
+}
+
+/// What a pixel rectangle writes, per source pixel.
+#[derive(Clone, Debug)]
+pub enum RectPixels {
+    /// Colours (`glDrawPixels` of a colour or index format, `GL_COLOR`
+    /// copies); the fragments' depth is `z` (buffer units).
+    Color { rgba: Arc<[[u8; 4]]>, z: u32 },
+    /// Depths in buffer units; the fragments' colour is `rgba`.
+    Depth { z: Arc<[u32]>, rgba: [u8; 4] },
+    /// Stencil values, written through `write_mask` inside `scissor` (when
+    /// on) with no other test, as llvmpipe writes them (`st_cb_drawpixels.c`:
+    /// stencil `ALWAYS`/`REPLACE`, depth test and colour writes off).
+    Stencil {
+        s: Arc<[u8]>,
+        write_mask: u8,
+        scissor: Option<Rect>,
+    },
+}
+
+/// A pixel rectangle placed in the window: `width`×`height` source pixels
+/// from window `(x, y)`, each `zoom` pixels wide and high (negative: to the
+/// left, down). A window pixel is covered when its centre is inside the
+/// zoomed rectangle, left and bottom edges included (llvmpipe's quad with
+/// `bottom_edge_rule`), and takes the source pixel under its centre.
+#[derive(Clone, Debug)]
+pub struct PlacedImage {
+    pub pixels: RectPixels,
+    pub width: u32,
+    pub height: u32,
+    pub x: f32,
+    pub y: f32,
+    pub zoom: [f32; 2],
+}
+
+impl PlacedImage {
+    /// Window pixels `lo..hi` whose centres are in `[a, a + n·zoom)` (or
+    /// `[a + n·zoom, a)`), as i64.
+    fn span(a: f32, n: u32, zoom: f32) -> Option<(i64, i64)> {
+        let b = f64::from(a) + f64::from(n) * f64::from(zoom);
+        let (lo, hi) = (f64::from(a).min(b), f64::from(a).max(b));
+        if !(lo.is_finite() && hi.is_finite()) {
+            return None;
+        }
+        let lo = (lo - 0.5).ceil().clamp(-1e12, 1e12) as i64;
+        let hi = (hi - 0.5).ceil().clamp(-1e12, 1e12) as i64;
+        (lo < hi).then_some((lo, hi))
+    }
+
+    /// The window pixels it covers inside `bounds`.
+    pub fn rect(&self, bounds: Rect) -> Option<Rect> {
+        let (x0, x1) = Self::span(self.x, self.width, self.zoom[0])?;
+        let (y0, y1) = Self::span(self.y, self.height, self.zoom[1])?;
+        let c = |v: i64, lo: u32, hi: u32| v.clamp(i64::from(lo), i64::from(hi)) as u32;
+        let r = Rect {
+            x0: c(x0, bounds.x0, bounds.x1),
+            y0: c(y0, bounds.y0, bounds.y1),
+            x1: c(x1, bounds.x0, bounds.x1),
+            y1: c(y1, bounds.y0, bounds.y1),
+        };
+        (!r.is_empty()).then_some(r)
+    }
+
+    /// The source column (or row) under window pixel `p`'s centre (GL's
+    /// `floor((centre - origin) / zoom)`, exact). llvmpipe interpolates a
+    /// texture coordinate over its quad's two triangles, each rounding a
+    /// centre exactly on a boundary between source pixels its own way: at
+    /// such ties (fractional zooms) it may take the neighbour.
+    fn source(p: u32, a: f32, zoom: f32, n: u32) -> u32 {
+        let i = ((f64::from(p) + 0.5 - f64::from(a)) / f64::from(zoom)).floor();
+        i.clamp(0.0, f64::from(n.saturating_sub(1))) as u32
+    }
+
+    /// The source pixel index under window pixel `(px, py)`.
+    pub fn at(&self, px: u32, py: u32) -> usize {
+        let i = Self::source(px, self.x, self.zoom[0], self.width);
+        let j = Self::source(py, self.y, self.zoom[1], self.height);
+        j as usize * self.width as usize + i as usize
+    }
+
+    /// Bytes it holds.
+    pub fn bytes(&self) -> usize {
+        let n = self.width as usize * self.height as usize;
+        match self.pixels {
+            RectPixels::Color { .. } => 4 * n,
+            RectPixels::Depth { .. } => 4 * n,
+            RectPixels::Stencil { .. } => n,
+        }
+    }
+}
+
+/// What `glDrawPixels` draws: its `format` decides (`GL_STENCIL_INDEX`,
+/// `GL_DEPTH_COMPONENT`, `GL_COLOR_INDEX`, or a colour format).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DrawKind {
+    /// The colour format of the data.
+    Color,
+    /// Colour indices (one component), through the `I_TO_*` maps.
+    Index,
+    Depth,
+    Stencil,
+}
+
+/// `glCopyPixels`' `type`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CopyKind {
+    Color,
+    Depth,
+    Stencil,
+}
+
+/// A unorm8 texel as llvmpipe samples it: times `1/255` (not divided by
+/// 255: 194 then gives 0.7607844, which scaled and biased by −0.5 rounds
+/// to 67, not 66, as in llvmpipe).
+fn unorm8_to_f32(u: u8) -> f32 {
+    f32::from(u) * (1.0 / 255.0)
+}
+
+/// Depth `d` as llvmpipe's fragments read it back from the texture Mesa
+/// puts the image in (`make_texture`, `st_cb_drawpixels.c`): 16 bits for
+/// 8- and 16-bit types (a `Z16_UNORM` texture, so scale and bias, applied
+/// before, are rounded to 16 bits), sampled as `v·(1/65535)`; the others as they are.
+fn through_texture(d: f32, ty: crate::PixelType) -> f32 {
+    use crate::PixelType as T;
+    match ty {
+        T::UnsignedByte | T::Byte | T::UnsignedShort | T::Short => {
+            crate::framebuffer::float_to_unorm(d, 65535) as f32 * (1.0 / 65535.0)
+        }
+        _ => d,
+    }
+}
+
+/// A stored depth `d` of a buffer whose largest value is `max`, as
+/// llvmpipe samples a depth texture: `d·(1/max)` in f32 (which does not
+/// give `d` back for about a third of 24-bit values).
+fn sampled_depth(d: u32, max: u32) -> f32 {
+    d as f32 * (1.0 / max as f32)
+}
+
+/// A one-component integer value (an index or a stencil value) as read.
+fn integer(raw: crate::texture::unpack::Raw) -> i64 {
+    use crate::texture::unpack::Raw;
+    match raw {
+        Raw::U(v, _) => i64::from(v),
+        Raw::S(v, _) => i64::from(v),
+        Raw::F(f) if f.is_finite() => f.clamp(-1e15, 1e15) as i64,
+        Raw::F(_) => 0,
+    }
+}
+
+/// Depth `z` (window, `[0, 1]`) in the buffer units of `format`, as llvmpipe
+/// converts a fragment's depth (f32; 32-bit depth as triangles do).
+fn depth_units(z: f32, format: Option<softgl_jit::DepthFormat>) -> u32 {
+    match format {
+        Some(f @ softgl_jit::DepthFormat::D32) => crate::raster::depth_value(f64::from(z), Some(f)),
+        Some(f) => softgl_jit::shade::unorm_depth(z, f.max_value()),
+        None => 0,
+    }
+}
+
+impl Context {
+    /// The pixel zoom, transfer parameters and maps.
+    pub fn pixel_state(&self) -> &crate::pixel_transfer::PixelState {
+        &self.pixel
+    }
+
+    /// `glPixelZoom`.
+    pub fn pixel_zoom(&mut self, x: f32, y: f32) -> GlResult {
+        self.outside()?;
+        self.pixel.zoom = [x, y];
+        Ok(())
+    }
+
+    /// `glPixelTransfer`.
+    pub fn pixel_transfer(&mut self, p: crate::pixel_transfer::PixelTransferParam) -> GlResult {
+        self.outside()?;
+        self.pixel.set(p);
+        Ok(())
+    }
+
+    /// `glPixelMap`.
+    pub fn pixel_map(&mut self, name: crate::pixel_transfer::PixelMapName, values: &[f32]) -> GlResult {
+        self.outside()?;
+        let r = self.pixel.set_map(name, values);
+        self.record(r)
+    }
+
+    /// Puts back the whole pixel state (`glPopAttrib(GL_PIXEL_MODE_BIT)`).
+    pub fn set_pixel_state(&mut self, p: crate::pixel_transfer::PixelState) -> GlResult {
+        self.outside()?;
+        self.pixel = p;
+        Ok(())
+    }
+
+    /// `glDrawPixels`: `width`×`height` pixels of `data` (its format read
+    /// as `kind` says; depth, stencil and index data have one component,
+    /// `data.format` is then ignored) drawn at the raster position with the
+    /// pixel zoom, after the pixel transfer operations. Nothing at an
+    /// invalid raster position. Texturing and fog do not apply (llvmpipe
+    /// textures them with the image's own coordinates and fogs them with
+    /// coordinate 0: `docs/llvmpipe-facts.md`).
+    pub fn draw_pixels(&mut self, width: i32, height: i32, kind: DrawKind, data: &crate::PixelData<'_>) -> GlResult {
+        use crate::texture::unpack::{fetch, ClientLayout, Raw};
+        self.outside()?;
+        self.require(width >= 0 && height >= 0)?;
+        let fb = &self.fb;
+        let missing = match kind {
+            DrawKind::Depth => fb.depth_format().is_none(),
+            DrawKind::Stencil => !fb.has_stencil(),
+            _ => false,
+        };
+        if missing {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        if !self.raster.valid || width == 0 || height == 0 {
+            return Ok(());
+        }
+        let format = match kind {
+            DrawKind::Color => data.format,
+            _ => crate::PixelFormat::DepthComponent,
+        };
+        let (w, h) = (width as usize, height as usize);
+        let layout = ClientLayout::new(format, data.ty, &data.store, 2, [w, h, 1]);
+        let Some(layout) = layout.filter(|l| l.len <= data.bytes.len()) else {
+            return self.record(Err(GlError::InvalidOperation));
+        };
+        let swap = data.store.swap_bytes;
+        let get = |i: usize, j: usize| fetch(data.bytes, layout.at(i, j, 0), format, data.ty, swap);
+        let depth_format = self.fb.depth_format();
+        let p = &self.pixel;
+        let raster_z = self.raster.window[2];
+        let pixels = match kind {
+            DrawKind::Color | DrawKind::Index => {
+                let mut rgba = Vec::with_capacity(w * h);
+                for j in 0..h {
+                    for i in 0..w {
+                        let raw = get(i, j);
+                        let c = match kind {
+                            DrawKind::Index => p.index_colour(integer(raw[0])),
+                            // Components of 8 bits or fewer become unorm8 first, their
+                            // bits replicated (Mesa's `_mesa_unorm_to_unorm` into the
+                            // image's RGBA8 texture: 5 bits 24 → 198, not 197),
+                            // sampled as llvmpipe samples unorm8.
+                            _ => p.colour(raw.map(|r| match r {
+                                Raw::U(_, b) if b <= 8 => unorm8_to_f32(r.to_unorm(8) as u8),
+                                r => r.to_f32(),
+                            })),
+                        };
+                        rgba.push(c.map(softgl_jit::shade::unorm8));
+                    }
+                }
+                RectPixels::Color {
+                    rgba: Arc::from(rgba),
+                    z: depth_units(raster_z, depth_format),
+                }
+            }
+            DrawKind::Depth => {
+                let mut z = Vec::with_capacity(w * h);
+                for j in 0..h {
+                    for i in 0..w {
+                        let d = p.depth(get(i, j)[0].to_f32());
+                        z.push(depth_units(through_texture(d, data.ty), depth_format));
+                    }
+                }
+                let c = self.raster.color.to_array();
+                RectPixels::Depth {
+                    z: Arc::from(z),
+                    rgba: c.map(softgl_jit::shade::unorm8),
+                }
+            }
+            DrawKind::Stencil => {
+                let mut s = Vec::with_capacity(w * h);
+                for j in 0..h {
+                    for i in 0..w {
+                        s.push(p.stencil(integer(get(i, j)[0])) as u8);
+                    }
+                }
+                RectPixels::Stencil {
+                    s: Arc::from(s),
+                    write_mask: self.state.stencil_write_mask as u8,
+                    scissor: self.scissor_rect(),
+                }
+            }
+        };
+        self.place(pixels, (width as u32, height as u32))
+    }
+
+    /// The scissor box as a rectangle of the framebuffer, when the test is on.
+    fn scissor_rect(&self) -> Option<Rect> {
+        let s = &self.state;
+        s.scissor_test.then(|| {
+            let b = s.scissor;
+            self.fb
+                .clip_rect(i64::from(b.x), i64::from(b.y), i64::from(b.width), i64::from(b.height))
+        })
+    }
+
+    /// Records `pixels` (`size` source pixels) at the raster position, rounded
+    /// as Mesa rounds it (`lroundf`), with the pixel zoom.
+    fn place(&mut self, pixels: RectPixels, (width, height): (u32, u32)) -> GlResult {
+        let [rx, ry, ..] = self.raster.window;
+        let zoom = self.pixel.zoom;
+        let (x, y) = (rx.round(), ry.round());
+        let image = PlacedImage {
+            pixels,
+            width,
+            height,
+            x,
+            y,
+            zoom,
+        };
+        let (state, params, vertex) = self.raster_draw(true)?;
+        self.scene.pixels(state, &params, vertex, image);
+        if self.scene.bytes() > self.scene.bound() {
+            self.finish_scene();
+        }
+        Ok(())
+    }
+
+    /// `glCopyPixels`: the `width`×`height` rectangle at window `(x, y)` of
+    /// the framebuffer as it is now, drawn as `glDrawPixels` draws (the
+    /// source read whole first, so that overlapping copies read what was
+    /// there before). Source pixels outside the framebuffer are not drawn.
+    pub fn copy_pixels(&mut self, x: i32, y: i32, width: i32, height: i32, kind: CopyKind) -> GlResult {
+        self.outside()?;
+        self.require(width >= 0 && height >= 0)?;
+        let missing = match kind {
+            CopyKind::Depth => self.fb.depth_format().is_none(),
+            CopyKind::Stencil => !self.fb.has_stencil(),
+            CopyKind::Color => false,
+        };
+        if missing {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        if !self.raster.valid {
+            return Ok(());
+        }
+        // The source clipped to the framebuffer; the destination moves with it.
+        let (fw, fh) = (i64::from(self.fb.width()), i64::from(self.fb.height()));
+        let (x0, y0) = (i64::from(x).max(0), i64::from(y).max(0));
+        let x1 = (i64::from(x) + i64::from(width)).min(fw);
+        let y1 = (i64::from(y) + i64::from(height)).min(fh);
+        if x0 >= x1 || y0 >= y1 {
+            return Ok(());
+        }
+        self.finish_scene();
+        let (w, h) = ((x1 - x0) as u32, (y1 - y0) as u32);
+        let (dx, dy) = ((x0 - i64::from(x)) as f32, (y0 - i64::from(y)) as f32);
+        let fb = &self.fb;
+        let p = &self.pixel;
+        let depth_format = fb.depth_format();
+        let coords = (y0..y1).flat_map(|j| (x0..x1).map(move |i| (i as u32, j as u32)));
+        let raster_z = self.raster.window[2];
+        let pixels = match kind {
+            CopyKind::Color => {
+                let rgba = coords
+                    .map(|(i, j)| {
+                        let c = fb.pixel(i, j).unwrap_or_default();
+                        if p.scales_or_biases() || p.map_color {
+                            p.colour(c.map(unorm8_to_f32)).map(softgl_jit::shade::unorm8)
+                        } else {
+                            c
+                        }
+                    })
+                    .collect::<Vec<_>>();
+                RectPixels::Color {
+                    rgba: Arc::from(rgba),
+                    z: depth_units(raster_z, depth_format),
+                }
+            }
+            CopyKind::Depth => {
+                let max = depth_format.map_or(1, |f| f.max_value());
+                let z = coords
+                    .map(|(i, j)| {
+                        let d = sampled_depth(fb.depth_at(i, j).unwrap_or(0), max);
+                        let d = if p.depth_scale == 1.0 && p.depth_bias == 0.0 {
+                            d
+                        } else {
+                            p.depth(d)
+                        };
+                        depth_units(d, depth_format)
+                    })
+                    .collect::<Vec<_>>();
+                let c = self.raster.color.to_array();
+                RectPixels::Depth {
+                    z: Arc::from(z),
+                    rgba: c.map(softgl_jit::shade::unorm8),
+                }
+            }
+            CopyKind::Stencil => {
+                let s = coords
+                    .map(|(i, j)| p.stencil(i64::from(fb.stencil_at(i, j).unwrap_or(0))) as u8)
+                    .collect::<Vec<_>>();
+                RectPixels::Stencil {
+                    s: Arc::from(s),
+                    write_mask: self.state.stencil_write_mask as u8,
+                    scissor: self.scissor_rect(),
+                }
+            }
+        };
+        let zoom = self.pixel.zoom;
+        let saved = self.raster.window;
+        self.raster.window[0] += dx * zoom[0];
+        self.raster.window[1] += dy * zoom[1];
+        let r = self.place(pixels, (w, h));
+        self.raster.window = saved;
+        r
     }
 }
 

@@ -109,13 +109,17 @@ enum Kind {
     Bitmap {
         index: u32,
     },
+    /// A pixel rectangle: `Scene::images[index]`.
+    Image {
+        index: u32,
+    },
 }
 
 impl Kind {
     fn vertices(self) -> usize {
         match self {
             Kind::Line { .. } => 2,
-            Kind::Point { .. } | Kind::Bitmap { .. } => 1,
+            Kind::Point { .. } | Kind::Bitmap { .. } | Kind::Image { .. } => 1,
         }
     }
 }
@@ -247,6 +251,8 @@ pub struct Scene {
     clears: Vec<Clear>,
     /// The bitmaps recorded (`Kind::Bitmap`).
     bitmaps: Vec<crate::pixel_rect::PlacedBitmap>,
+    /// The pixel rectangles recorded (`Kind::Image`).
+    images: Vec<crate::pixel_rect::PlacedImage>,
     /// Bitmaps merged as Mesa's bitmap cache merges them, not recorded yet
     /// ([`Scene::bitmap`]): recorded before anything else is.
     pending: Option<Box<PendingBitmap>>,
@@ -413,6 +419,7 @@ impl Scene {
         self.vary.clear();
         self.clears.clear();
         self.bitmaps.clear();
+        self.images.clear();
         for b in &mut self.bins {
             b.clear();
         }
@@ -487,6 +494,11 @@ impl Scene {
             Kind::Bitmap { index } => {
                 if let Some(b) = self.bitmaps.get(index as usize) {
                     super::pixels::bitmap(&v[0], b, &params, sink.0)
+                }
+            }
+            Kind::Image { index } => {
+                if let Some(img) = self.images.get(index as usize) {
+                    super::pixels::image(img, &params, sink.0)
                 }
             }
         }
@@ -610,7 +622,19 @@ impl Scene {
                 }
                 match tri {
                     Some((at, w0, class)) => self.cover(at, w0, class, tile, &mut stage),
-                    None => self.rasterize(&self.prims[e as usize], tile, &mut scratch, &mut stage),
+                    None => {
+                        let p = &self.prims[e as usize];
+                        if let Kind::Image { index } = p.kind {
+                            if let Some(img) = self.images.get(index as usize) {
+                                if matches!(img.pixels, crate::pixel_rect::RectPixels::Stencil { .. }) {
+                                    let bounds = p.params.bounds.intersect(tile);
+                                    stage.direct(|t| super::pixels::write_stencil(img, bounds, t));
+                                    continue;
+                                }
+                            }
+                        }
+                        self.rasterize(p, tile, &mut scratch, &mut stage)
+                    }
                 }
             }
         }
@@ -780,7 +804,11 @@ impl Scene {
         let (w, h) = (b.image.width(), b.image.height());
         if w > CACHE_WIDTH || h > CACHE_HEIGHT {
             self.settle();
-            self.record_bitmap(state, params, &v, b);
+            let r = b.rect(params.bounds);
+            let index = self.bitmaps.len() as u32;
+            self.bytes += std::mem::size_of_val(&b) + b.image.bytes();
+            self.bitmaps.push(b);
+            self.record_rect(state, params, &v, Kind::Bitmap { index }, r);
             return;
         }
         let words = CACHE_WIDTH / 64;
@@ -820,19 +848,35 @@ impl Scene {
             crate::pixel_rect::CACHE_HEIGHT,
             p.bits,
         );
-        let placed = crate::pixel_rect::PlacedBitmap { image, x: p.x, y: p.y };
-        self.record_bitmap(p.state, &p.params, &p.vertex, placed);
+        let b = crate::pixel_rect::PlacedBitmap { image, x: p.x, y: p.y };
+        let r = b.rect(p.params.bounds);
+        let index = self.bitmaps.len() as u32;
+        self.bytes += std::mem::size_of_val(&b) + b.image.bytes();
+        self.bitmaps.push(b);
+        self.record_rect(p.state, &p.params, &p.vertex, Kind::Bitmap { index }, r);
     }
 
-    /// Records bitmap `b` as a draw of its own.
-    fn record_bitmap(
+    /// Records pixel rectangle `img` drawn with `state` (after the bitmaps
+    /// before it), `v` its raster position.
+    pub fn pixels(
         &mut self,
         state: DrawState,
         params: &RasterParams,
-        v: &RasterVertex,
-        b: crate::pixel_rect::PlacedBitmap,
+        v: RasterVertex,
+        img: crate::pixel_rect::PlacedImage,
     ) {
-        let Some(r) = b.rect(params.bounds) else { return };
+        self.settle();
+        let r = img.rect(params.bounds);
+        let index = self.images.len() as u32;
+        self.bytes += std::mem::size_of_val(&img) + img.bytes();
+        self.images.push(img);
+        self.record_rect(state, params, &v, Kind::Image { index }, r);
+    }
+
+    /// Records a bitmap or pixel rectangle `kind` covering `r`, its
+    /// constants those of `v`.
+    fn record_rect(&mut self, state: DrawState, params: &RasterParams, v: &RasterVertex, kind: Kind, r: Option<Rect>) {
+        let Some(r) = r else { return };
         let draw = match self.draws.last() {
             Some(last) if last.same_as(&state) => self.draws.len() as u32 - 1,
             _ => {
@@ -856,13 +900,11 @@ impl Scene {
             z: v.z,
         });
         self.vary.extend_from_slice(&v.v[..n]);
-        let index = self.bitmaps.len() as u32;
-        self.bytes += std::mem::size_of_val(&b) + b.image.bytes() + std::mem::size_of::<Vert>() + 4 * n;
-        self.bitmaps.push(b);
+        self.bytes += std::mem::size_of::<Vert>() + 4 * n;
         let entry = self.prims.len() as u32;
         self.prims.push(Binned {
             draw,
-            kind: Kind::Bitmap { index },
+            kind,
             first,
             vary,
             flat: false,

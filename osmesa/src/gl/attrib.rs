@@ -19,6 +19,7 @@ const CURRENT_BIT: u32 = 0x1;
 const POINT_BIT: u32 = 0x2;
 const LINE_BIT: u32 = 0x4;
 const POLYGON_BIT: u32 = 0x8;
+const PIXEL_MODE_BIT: u32 = 0x20;
 const LIGHTING_BIT: u32 = 0x40;
 const FOG_BIT: u32 = 0x80;
 const DEPTH_BIT: u32 = 0x100;
@@ -162,6 +163,9 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         gl.fog_coord(c.fog_coord);
         gl.set_raster_position(s.raster)?;
     }
+    if let Some(p) = &s.pixel {
+        gl.set_pixel_state(p.clone())?;
+    }
     if m & POINT_BIT != 0 {
         gl.point_size(st.point_size)?;
     }
@@ -277,6 +281,7 @@ exports! {
                 state: gl.state().clone(),
                 current: *gl.current(),
                 raster: *gl.raster_position(),
+                pixel: (mask & PIXEL_MODE_BIT != 0).then(|| gl.pixel_state().clone()),
                 matrix_mode: gl.current_matrix_mode(),
                 hints: os.hints,
                 inert_caps: os.inert_caps.clone(),

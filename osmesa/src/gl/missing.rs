@@ -11,14 +11,6 @@ use crate::consts::*;
 use std::ffi::c_void;
 
 exports! {
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPixelTransferf(_pname: GLenum, _param: f32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPixelTransferi(_pname: GLenum, _param: i32) {
-        missing()
-    }
     /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glLineStipple(_factor: i32, _pattern: u16) {
         missing()
@@ -38,42 +30,6 @@ exports! {
     /// Accumulation buffer (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glClearAccum(_r: f32, _g: f32, _b: f32, _a: f32) {
         missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glDrawPixels(_width: i32, _height: i32, _format: GLenum, _ty: GLenum, _pixels: *const c_void) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glCopyPixels(_x: i32, _y: i32, _width: i32, _height: i32, _ty: GLenum) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPixelZoom(_xfactor: f32, _yfactor: f32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPixelMapfv(_map: GLenum, _size: i32, _values: *const f32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPixelMapuiv(_map: GLenum, _size: i32, _values: *const u32) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPixelMapusv(_map: GLenum, _size: i32, _values: *const u16) {
-        missing()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetPixelMapfv(_map: GLenum, _values: *mut f32) {
-        missing_now()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetPixelMapuiv(_map: GLenum, _values: *mut u32) {
-        missing_now()
-    }
-    /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetPixelMapusv(_map: GLenum, _values: *mut u16) {
-        missing_now()
     }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glRenderMode(_mode: GLenum) -> i32 {

@@ -31,6 +31,7 @@ mod immediate;
 mod lighting;
 mod lists;
 mod missing;
+mod pixel_rect;
 mod pixels;
 mod raster_pos;
 mod state;
@@ -46,6 +47,7 @@ pub use immediate::*;
 pub use lighting::*;
 pub use lists::*;
 pub use missing::*;
+pub use pixel_rect::*;
 pub use pixels::*;
 pub use raster_pos::*;
 pub use state::*;
@@ -65,6 +67,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         lighting::table,
         lists::table,
         missing::table,
+        pixel_rect::table,
         pixels::table,
         raster_pos::table,
         state::table,
