@@ -317,7 +317,7 @@ impl Context {
                 };
                 let (state, params, vertex) = self.raster_draw(false)?;
                 let colour = self.raster.color.to_array();
-                self.scene.bitmap(state, &params, vertex, placed, colour);
+                self.scene.bitmap(state, &params, vertex, placed, colour, &self.fb);
                 if self.scene.bytes() > self.scene.bound() {
                     self.finish_scene();
                 }
@@ -639,7 +639,7 @@ impl Context {
             zoom,
         };
         let (state, params, vertex) = self.raster_draw(true)?;
-        self.scene.pixels(state, &params, vertex, image);
+        self.scene.pixels(state, &params, vertex, image, &self.fb);
         if self.scene.bytes() > self.scene.bound() {
             self.finish_scene();
         }
@@ -806,5 +806,149 @@ mod tests {
         gl.raster_pos(100.0, 20.0, 0.0, 1.0).unwrap();
         gl.bitmap(&b, [0.0, 0.0], [5.0, 1.0]).unwrap();
         assert_eq!(gl.raster_position().window[..2], [15.0, 21.0]);
+    }
+}
+
+#[cfg(test)]
+mod pixel_tests {
+    use super::*;
+    use crate::pixel_transfer::{PixelMapName, PixelTransferParam};
+    use crate::{Capability, FramebufferDesc, PixelData, PixelFormat, PixelStore, PixelType};
+
+    fn ctx(backend: Backend) -> Context {
+        let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(40, 30)).unwrap();
+        gl.set_backend(backend);
+        gl.ortho(0.0, 40.0, 0.0, 30.0, -1.0, 1.0).unwrap();
+        gl
+    }
+
+    fn data(format: PixelFormat, bytes: &[u8]) -> PixelData<'_> {
+        PixelData {
+            format,
+            ty: PixelType::UnsignedByte,
+            store: PixelStore {
+                alignment: 1,
+                ..PixelStore::DEFAULT
+            },
+            bytes,
+        }
+    }
+
+    /// A 3×2 RGB image: pixel (i, j) is (10i, 10j, 7).
+    fn image() -> Vec<u8> {
+        (0..2)
+            .flat_map(|j| (0..3).flat_map(move |i| [10 * i, 10 * j, 7]))
+            .collect()
+    }
+
+    #[test]
+    fn zoom_places_and_repeats_source_pixels() {
+        let mut gl = ctx(Backend::Interpreter);
+        gl.raster_pos(10.0, 10.0, 0.0, 1.0).unwrap();
+        gl.pixel_zoom(2.0, -1.0).unwrap();
+        let img = image();
+        gl.draw_pixels(3, 2, DrawKind::Color, &data(PixelFormat::Rgb, &img))
+            .unwrap();
+        let fb = gl.framebuffer();
+        // Columns 10..16, each source column twice; rows 9 (source row 0) and 8.
+        assert_eq!(fb.pixel(10, 9), Some([0, 0, 7, 255]));
+        assert_eq!(fb.pixel(11, 9), Some([0, 0, 7, 255]));
+        assert_eq!(fb.pixel(12, 9), Some([10, 0, 7, 255]));
+        assert_eq!(fb.pixel(15, 8), Some([20, 10, 7, 255]));
+        assert_eq!(fb.pixel(16, 9), Some([0, 0, 0, 0]));
+        assert_eq!(fb.pixel(10, 10), Some([0, 0, 0, 0]));
+        assert_eq!(fb.pixel(10, 7), Some([0, 0, 0, 0]));
+    }
+
+    #[test]
+    fn stencil_images_take_shift_offset_map_write_mask_and_scissor() {
+        let mut gl = ctx(Backend::Interpreter);
+        gl.raster_pos(0.0, 0.0, 0.0, 1.0).unwrap();
+        gl.pixel_transfer(PixelTransferParam::IndexShift(1)).unwrap();
+        gl.pixel_transfer(PixelTransferParam::IndexOffset(3)).unwrap();
+        gl.stencil_mask(0x0f).unwrap();
+        gl.enable(Capability::ScissorTest).unwrap();
+        gl.scissor(1, 0, 10, 10).unwrap();
+        let s = [1u8, 2, 100];
+        gl.draw_pixels(3, 1, DrawKind::Stencil, &data(PixelFormat::DepthComponent, &s))
+            .unwrap();
+        let fb = gl.framebuffer();
+        assert_eq!(fb.stencil_at(0, 0), Some(0), "outside the scissor box");
+        assert_eq!(fb.stencil_at(1, 0), Some((2 * 2 + 3) & 0x0f));
+        assert_eq!(fb.stencil_at(2, 0), Some((2 * 100 + 3) & 0x0f));
+        gl.disable(Capability::ScissorTest).unwrap();
+        gl.pixel_map(PixelMapName::SToS, &[5.0, 6.0]).unwrap();
+        gl.pixel_transfer(PixelTransferParam::MapStencil(true)).unwrap();
+        gl.stencil_mask(0xff).unwrap();
+        gl.draw_pixels(3, 1, DrawKind::Stencil, &data(PixelFormat::DepthComponent, &s))
+            .unwrap();
+        // (1·2 + 3) & 1 = 1 → 6; (2·2 + 3) & 1 = 1 → 6.
+        assert_eq!(gl.framebuffer().stencil_at(0, 0), Some(6));
+    }
+
+    #[test]
+    fn depth_images_are_scaled_biased_and_depth_tested() {
+        let mut gl = ctx(Backend::Interpreter);
+        gl.raster_pos(0.0, 0.0, 0.0, 1.0).unwrap();
+        gl.pixel_transfer(PixelTransferParam::DepthScale(0.5)).unwrap();
+        gl.pixel_transfer(PixelTransferParam::DepthBias(0.25)).unwrap();
+        let z = [0.0f32, 1.0];
+        let bytes: Vec<u8> = z.iter().flat_map(|v| v.to_ne_bytes()).collect();
+        let d = PixelData {
+            ty: PixelType::Float,
+            ..data(PixelFormat::DepthComponent, &bytes)
+        };
+        gl.enable(Capability::DepthTest).unwrap();
+        gl.draw_pixels(2, 1, DrawKind::Depth, &d).unwrap();
+        let max = 16_777_215.0f32;
+        let fb = gl.framebuffer();
+        assert_eq!(fb.depth_at(0, 0), Some((0.25 * max).round_ties_even() as u32));
+        assert_eq!(fb.depth_at(1, 0), Some((0.75 * max).round_ties_even() as u32));
+        // The raster colour is the fragments'.
+        assert_eq!(fb.pixel(0, 0), Some([255, 255, 255, 255]));
+    }
+
+    #[test]
+    fn overlapping_copies_read_the_source_first() {
+        let mut gl = ctx(Backend::Interpreter);
+        gl.raster_pos(0.0, 0.0, 0.0, 1.0).unwrap();
+        let img = image();
+        gl.draw_pixels(3, 2, DrawKind::Color, &data(PixelFormat::Rgb, &img))
+            .unwrap();
+        gl.raster_pos(1.0, 0.0, 0.0, 1.0).unwrap();
+        gl.copy_pixels(0, 0, 3, 2, CopyKind::Color).unwrap();
+        let fb = gl.framebuffer();
+        let row: Vec<_> = (0..4).map(|x| fb.pixel(x, 1).unwrap()[0]).collect();
+        assert_eq!(row, [0, 0, 10, 20]);
+        // Invalid raster position: nothing.
+        gl.raster_pos(-5.0, 0.0, 0.0, 1.0).unwrap();
+        gl.copy_pixels(0, 0, 3, 2, CopyKind::Color).unwrap();
+        assert_eq!(gl.framebuffer().pixel(1, 1).unwrap()[0], 0);
+        assert_eq!(gl.copy_pixels(0, 0, -1, 2, CopyKind::Color), Err(GlError::InvalidValue));
+    }
+
+    /// Bitmaps and pixel rectangles through blending and the depth test:
+    /// the specialists leave the same bytes as the interpreter.
+    #[test]
+    fn the_jit_equals_the_interpreter() {
+        let draw = |backend| {
+            let mut gl = ctx(backend);
+            gl.clear_color(0.2, 0.4, 0.6, 0.8).unwrap();
+            gl.clear(crate::ClearMask::COLOR).unwrap();
+            gl.enable(Capability::Blend).unwrap();
+            gl.blend_func(crate::BlendFactor::SrcAlpha, crate::BlendFactor::OneMinusSrcAlpha)
+                .unwrap();
+            gl.color4(0.9, 0.3, 0.1, 0.6);
+            gl.raster_pos(3.0, 4.0, 0.0, 1.0).unwrap();
+            let bits: Vec<u8> = (0..13 * 2).map(|i| (i * 37 + 11) as u8).collect();
+            let b = BitmapImage::unpack(16, 13, &bits, &data(PixelFormat::Rgb, &[]).store).unwrap();
+            gl.bitmap(&b, [0.0, 0.0], [9.0, 0.0]).unwrap();
+            let rgba: Vec<u8> = (0..20 * 10 * 4).map(|i| (i * 13 + 5) as u8).collect();
+            gl.pixel_zoom(1.5, 1.0).unwrap();
+            gl.draw_pixels(20, 10, DrawKind::Color, &data(PixelFormat::Rgba, &rgba))
+                .unwrap();
+            gl.framebuffer().color_bytes().to_vec()
+        };
+        assert_eq!(draw(Backend::Jit), draw(Backend::Interpreter));
     }
 }

@@ -799,8 +799,10 @@ impl Scene {
         v: RasterVertex,
         b: crate::pixel_rect::PlacedBitmap,
         colour: [f32; 4],
+        fb: &Framebuffer,
     ) {
         use crate::pixel_rect::{CACHE_HEIGHT, CACHE_WIDTH};
+        self.fit(fb.width(), fb.height());
         let (w, h) = (b.image.width(), b.image.height());
         if w > CACHE_WIDTH || h > CACHE_HEIGHT {
             self.settle();
@@ -864,7 +866,9 @@ impl Scene {
         params: &RasterParams,
         v: RasterVertex,
         img: crate::pixel_rect::PlacedImage,
+        fb: &Framebuffer,
     ) {
+        self.fit(fb.width(), fb.height());
         self.settle();
         let r = img.rect(params.bounds);
         let index = self.images.len() as u32;

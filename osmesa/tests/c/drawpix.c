@@ -212,6 +212,22 @@ static void scene(int k) {
     glRasterPos2i(0, 0);
     glBitmap(0, 0, 0, 0, -20, -30, NULL); /* the raster position moves off the window */
     glDrawPixels(40, 50, GL_RGBA, GL_UNSIGNED_BYTE, src + 64);
+    { /* A display list keeps a copy of the image, with the unpack state of its compilation. */
+      GLuint l = glGenLists(1);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glNewList(l, GL_COMPILE);
+      glRasterPos2i(60, 5);
+      glPixelZoom(2, 2);
+      glDrawPixels(9, 10, GL_RGB, GL_UNSIGNED_BYTE, src + 512);
+      glPixelZoom(1, 1);
+      glEndList();
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+      unsigned char keep[270];
+      memcpy(keep, src + 512, sizeof keep);
+      memset(src + 512, 0, sizeof keep);
+      glCallList(l);
+      memcpy(src + 512, keep, sizeof keep);
+    }
     break;
   }
   glFinish();
