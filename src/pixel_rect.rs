@@ -614,6 +614,41 @@ impl Context {
         self.place(pixels, (width as u32, height as u32))
     }
 
+    /// `glDrawPixels` with type `GL_BITMAP`: each bit of `image` is a colour
+    /// index (`kind` [`DrawKind::Index`]) or a stencil value
+    /// ([`DrawKind::Stencil`]) of 0 or 1, then drawn as [`Self::draw_pixels`]
+    /// draws indices. Other kinds are `InvalidEnum`.
+    pub fn draw_pixels_bitmap(&mut self, image: &BitmapImage, kind: DrawKind) -> GlResult {
+        self.outside()?;
+        match kind {
+            DrawKind::Index => {}
+            DrawKind::Stencil if self.fb.has_stencil() => {}
+            DrawKind::Stencil => return self.record(Err(GlError::InvalidOperation)),
+            _ => return self.record(Err(GlError::InvalidEnum)),
+        }
+        let (w, h) = (image.width, image.height);
+        if !self.raster.valid || w == 0 || h == 0 {
+            return Ok(());
+        }
+        let bits = (0..h).flat_map(|j| (0..w).map(move |i| i64::from(image.get(i, j))));
+        let p = &self.pixel;
+        let pixels = match kind {
+            DrawKind::Stencil => RectPixels::Stencil {
+                s: Arc::from(bits.map(|b| p.stencil(b) as u8).collect::<Vec<_>>()),
+                write_mask: self.state.stencil_write_mask as u8,
+                scissor: self.scissor_rect(),
+            },
+            _ => RectPixels::Color {
+                rgba: Arc::from(
+                    bits.map(|b| p.index_colour(b).map(softgl_jit::shade::unorm8))
+                        .collect::<Vec<_>>(),
+                ),
+                z: depth_units(self.raster.window[2], self.fb.depth_format()),
+            },
+        };
+        self.place(pixels, (w, h))
+    }
+
     /// The scissor box as a rectangle of the framebuffer, when the test is on.
     fn scissor_rect(&self) -> Option<Rect> {
         let s = &self.state;
@@ -925,6 +960,23 @@ mod pixel_tests {
         gl.copy_pixels(0, 0, 3, 2, CopyKind::Color).unwrap();
         assert_eq!(gl.framebuffer().pixel(1, 1).unwrap()[0], 0);
         assert_eq!(gl.copy_pixels(0, 0, -1, 2, CopyKind::Color), Err(GlError::InvalidValue));
+    }
+
+    #[test]
+    fn bitmap_typed_images_are_one_bit_indices() {
+        let mut gl = ctx(Backend::Interpreter);
+        gl.pixel_map(PixelMapName::IToR, &[0.0, 1.0]).unwrap();
+        gl.pixel_map(PixelMapName::IToA, &[1.0, 1.0]).unwrap();
+        gl.raster_pos(2.0, 3.0, 0.0, 1.0).unwrap();
+        let b = BitmapImage::unpack(3, 1, &[0b1010_0000], &PixelStore::DEFAULT).unwrap();
+        gl.draw_pixels_bitmap(&b, DrawKind::Index).unwrap();
+        gl.draw_pixels_bitmap(&b, DrawKind::Stencil).unwrap();
+        assert_eq!(gl.draw_pixels_bitmap(&b, DrawKind::Depth), Err(GlError::InvalidEnum));
+        let fb = gl.framebuffer();
+        let reds: Vec<_> = (2..5).map(|x| fb.pixel(x, 3).unwrap()).collect();
+        assert_eq!(reds, [[255, 0, 0, 255], [0, 0, 0, 255], [255, 0, 0, 255]]);
+        let s: Vec<_> = (2..5).map(|x| fb.stencil_at(x, 3).unwrap()).collect();
+        assert_eq!(s, [1, 0, 1]);
     }
 
     /// Bitmaps and pixel rectangles through blending and the depth test:

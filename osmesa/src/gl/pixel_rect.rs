@@ -134,6 +134,45 @@ fn draw_format(
     Ok((kind, pf, ty, layout.len))
 }
 
+const GL_BITMAP: GLenum = 0x1A00;
+
+/// `glDrawPixels` of type `GL_BITMAP` (colour or stencil indices of one bit),
+/// the image unpacked now.
+///
+/// # Safety
+/// `pixels` is null (nothing drawn) or holds the bitmap as the unpack state lays it out.
+unsafe fn draw_bitmap_pixels(width: i32, height: i32, format: GLenum, pixels: *const u8) {
+    use softgl::pixel_rect::BitmapImage;
+    crate::state::with_gl((), |os, gl| {
+        let image = match (format, BitmapImage::client_bytes(width, height, &os.unpack)) {
+            (_, None) => Err(GlError::InvalidValue),
+            (GL_COLOR_INDEX | GL_STENCIL_INDEX, Some(_)) if pixels.is_null() => Ok(None),
+            (GL_COLOR_INDEX | GL_STENCIL_INDEX, Some(len)) => {
+                // SAFETY: `len` readable bytes (the bitmap under the unpack state) by GL's contract.
+                let data = unsafe { std::slice::from_raw_parts(pixels, len) };
+                BitmapImage::unpack(width, height, data, &os.unpack).map(Some)
+            }
+            _ => Err(GlError::InvalidEnum),
+        };
+        let kind = if format == GL_STENCIL_INDEX {
+            DrawKind::Stencil
+        } else {
+            DrawKind::Index
+        };
+        let cmd: Cmd = Arc::new(move |_, gl: &mut Context| {
+            let r = match &image {
+                Err(e) => Err(*e),
+                Ok(Some(b)) => gl.draw_pixels_bitmap(b, kind),
+                Ok(None) => super::outside(gl),
+            };
+            if let Err(e) = r {
+                gl.record_error(e);
+            }
+        });
+        run_or_record(os, gl, cmd);
+    })
+}
+
 exports! {
     [] fn glPixelZoom(xfactor: f32, yfactor: f32) {
         gl(move |gl| gl.pixel_zoom(xfactor, yfactor))
@@ -191,6 +230,10 @@ exports! {
     /// # Safety
     /// `pixels` is null (nothing drawn) or holds the image as the unpack state lays it out.
     [unsafe] fn glDrawPixels(width: i32, height: i32, format: GLenum, ty: GLenum, pixels: *const c_void) {
+        if ty == GL_BITMAP {
+            // SAFETY: as the caller's contract says.
+            return unsafe { draw_bitmap_pixels(width, height, format, pixels.cast()) };
+        }
         crate::state::with_gl((), |os, gl| {
             let store = os.unpack;
             let copy = draw_format(format, ty, width, height, &store).map(|(kind, pf, t, len)| {
