@@ -268,7 +268,7 @@ impl CurrentAttribs {
 /// layout carries; texture units take part only when a stage reads the
 /// fragment colour. (A function of the fields, so that the draw can borrow
 /// the textures while it compiles a specialist.)
-fn plan<'a>(
+pub(crate) fn plan<'a>(
     state: &RasterState,
     fb: &Framebuffer,
     ordered_dither: bool,
@@ -349,9 +349,9 @@ pub struct Context {
     /// Framebuffer and renderbuffer objects, and the window framebuffer
     /// while an object is drawn into (`src/fbo.rs`).
     pub(crate) fbo: crate::fbo::FboState,
-    state: Tracked<RasterState>,
-    modelview: MatrixStack,
-    projection: MatrixStack,
+    pub(crate) state: Tracked<RasterState>,
+    pub(crate) modelview: MatrixStack,
+    pub(crate) projection: MatrixStack,
     matrix_mode: MatrixMode,
     pub(crate) current: CurrentAttribs,
     /// Texture units: enables, environment, generation, matrices.
@@ -361,10 +361,10 @@ pub struct Context {
     /// Which colours `begin`/`end` draws carry per vertex (Mesa's vertex format).
     format: VertexFormat,
     error: Option<GlError>,
-    backend: Backend,
-    specialists: SpecialistCache,
+    pub(crate) backend: Backend,
+    pub(crate) specialists: SpecialistCache,
     /// Whether `GL_DITHER` dithers (see [`Context::set_ordered_dither`]).
-    ordered_dither: bool,
+    pub(crate) ordered_dither: bool,
     /// Texture objects, their bindings per unit, the active unit (`texture/`).
     pub(crate) textures: Tracked<crate::texture::TextureStore>,
     /// Buffer objects and their bindings (`buffer.rs`).
@@ -372,18 +372,22 @@ pub struct Context {
     /// Occlusion queries (`query.rs`).
     queries: crate::query::QueryStore,
     /// Draws and clears not yet rasterized (`raster/scene.rs`).
-    scene: Scene,
+    pub(crate) scene: Scene,
     /// A scene flushing on the pool while `scene` records, holding the
     /// framebuffer's buffers (`fb` is hollow meanwhile: `raster/background.rs`).
-    background: Background,
+    pub(crate) background: Background,
     /// The vertex, material and texture-coordinate storage `begin` reuses.
     spare: Spare,
     /// Threads a flush rasterizes tiles on.
-    threads: usize,
+    pub(crate) threads: usize,
     /// The last untextured draw's plan, reused while nothing it was made of changes.
     plan_cache: Option<CachedPlan>,
     /// The geometry's vertex window, reused by every draw (`batch::Window`).
     window: crate::geometry::batch::Window,
+    /// `glRasterPos`/`glWindowPos` and what they latched (`raster_pos.rs`).
+    pub(crate) raster: crate::raster_pos::RasterPos,
+    /// `glPixelZoom`, `glPixelTransfer`, `glPixelMap` (`pixel_transfer.rs`).
+    pub(crate) pixel: crate::pixel_transfer::PixelState,
 }
 
 /// A draw's plan (`plan`) and uniforms, and what they were made of: the
@@ -458,6 +462,8 @@ impl Context {
             threads: crate::raster::pool::default_threads(),
             plan_cache: None,
             window: Default::default(),
+            raster: crate::raster_pos::RasterPos::default(),
+            pixel: crate::pixel_transfer::PixelState::default(),
         }
     }
 
@@ -675,7 +681,7 @@ impl Context {
     }
 
     /// Checks `ok`, recording `InvalidValue` when false.
-    fn require(&mut self, ok: bool) -> GlResult {
+    pub(crate) fn require(&mut self, ok: bool) -> GlResult {
         self.outside()?;
         self.record(if ok { Ok(()) } else { Err(GlError::InvalidValue) })
     }

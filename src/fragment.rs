@@ -189,6 +189,13 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
         clear.apply(self.target, tile);
     }
 
+    /// Runs `f` on the target after the spans so far (writes that bypass
+    /// the fragment stages: stencil pixel rectangles).
+    pub fn direct(&mut self, f: impl FnOnce(&mut Target<'f>)) {
+        self.run();
+        f(self.target);
+    }
+
     /// Records `e` after what the batch so far reports.
     pub fn fail(&mut self, e: FragmentError) {
         self.run();

@@ -79,6 +79,10 @@ pub struct SavedAttrib {
     pub mask: u32,
     pub state: RasterState,
     pub current: CurrentAttribs,
+    /// The raster position (`GL_CURRENT_BIT`).
+    pub raster: softgl::raster_pos::RasterPos,
+    /// Pixel zoom, transfer and maps (`GL_PIXEL_MODE_BIT`), saved only with that bit.
+    pub pixel: Option<softgl::pixel_transfer::PixelState>,
     pub matrix_mode: MatrixMode,
     pub hints: [GLenum; 7],
     pub inert_caps: Vec<GLenum>,

@@ -170,8 +170,13 @@ fn unimplemented_commands_are_compiled_and_fail_when_the_list_runs() {
     // A query is never compiled: its error comes at once.
     glNewList(list, GL_COMPILE);
     let mut map = [0.0f32; 1];
-    glGetPixelMapfv(0x0C70, map.as_mut_ptr()); // GL_PIXEL_MAP_I_TO_I
+    glGetMapfv(0x0D97, 0x0A00, map.as_mut_ptr()); // GL_MAP1_VERTEX_3, GL_COEFF
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
+    // Implemented queries run at once too.
+    map[0] = 7.0;
+    // SAFETY: room for the map's one entry.
+    unsafe { glGetPixelMapfv(0x0C70, map.as_mut_ptr()) }; // GL_PIXEL_MAP_I_TO_I
+    assert_eq!((glGetError(), map[0]), (GL_NO_ERROR, 0.0));
     glEndList();
     glCallList(list);
     assert_eq!(glGetError(), GL_NO_ERROR);

@@ -11,6 +11,7 @@ pub mod background;
 mod block;
 mod edges;
 mod line;
+mod pixels;
 mod point;
 pub mod pool;
 mod rows;

@@ -103,15 +103,27 @@ struct Vert {
 
 #[derive(Clone, Copy, Debug)]
 enum Kind {
-    Line { width: f32 },
-    Point { size: f32 },
+    Line {
+        width: f32,
+    },
+    Point {
+        size: f32,
+    },
+    /// A bitmap at the vertex (the raster position): `Scene::bitmaps[index]`.
+    Bitmap {
+        index: u32,
+    },
+    /// A pixel rectangle: `Scene::images[index]`.
+    Image {
+        index: u32,
+    },
 }
 
 impl Kind {
     fn vertices(self) -> usize {
         match self {
             Kind::Line { .. } => 2,
-            Kind::Point { .. } => 1,
+            Kind::Point { .. } | Kind::Bitmap { .. } | Kind::Image { .. } => 1,
         }
     }
 }
@@ -246,6 +258,13 @@ pub struct Scene {
     /// The varyings of `verts` and of flat primitives, the layout's slots only.
     vary: Vec<f32>,
     clears: Vec<Clear>,
+    /// The bitmaps recorded (`Kind::Bitmap`).
+    bitmaps: Vec<crate::pixel_rect::PlacedBitmap>,
+    /// The pixel rectangles recorded (`Kind::Image`).
+    images: Vec<crate::pixel_rect::PlacedImage>,
+    /// Bitmaps merged as Mesa's bitmap cache merges them, not recorded yet
+    /// ([`Scene::bitmap`]): recorded before anything else is.
+    pending: Option<Box<PendingBitmap>>,
     /// Per tile, row by row from the bottom: entries into `prims`, or into
     /// `clears` with [`CLEAR`] set, in the order recorded.
     bins: Vec<Vec<u32>>,
@@ -262,7 +281,7 @@ pub struct Scene {
 impl Scene {
     /// Whether nothing waits to be drawn.
     pub fn is_empty(&self) -> bool {
-        self.prims.is_empty() && self.triangles == 0 && self.clears.is_empty()
+        self.prims.is_empty() && self.triangles == 0 && self.clears.is_empty() && self.pending.is_none()
     }
 
     /// Bytes held (primitives, bin entries, draws): the scene is flushed past [`Scene::bound`].
@@ -321,6 +340,7 @@ impl Scene {
     /// Records a clear of `fb` (whose size the scene takes).
     pub fn clear(&mut self, fb: &Framebuffer, clear: Clear) {
         self.fit(fb.width(), fb.height());
+        self.settle();
         if clear.is_empty() {
             return;
         }
@@ -342,6 +362,7 @@ impl Scene {
         state: DrawState,
     ) -> Binner<'s> {
         self.fit(fb.width(), fb.height());
+        self.settle();
         Binner {
             scene: self,
             fb,
@@ -377,6 +398,7 @@ impl Scene {
     /// with this one's size, bound and counters (the flush to come counted),
     /// and returns this one, to be flushed on another thread.
     pub(crate) fn swap_out(&mut self, mut spare: Scene) -> Scene {
+        self.settle();
         spare.fit(self.width, self.height);
         spare.bound = self.bound;
         spare.peak = self.peak.max(self.bytes);
@@ -387,6 +409,7 @@ impl Scene {
     /// Runs every tile into `fb` on `threads` threads and empties the scene.
     /// Returns the first error of a fragment stage (in tile order).
     pub fn flush(&mut self, fb: &mut Framebuffer, threads: usize) -> Result<(), FragmentError> {
+        self.settle();
         if self.is_empty() {
             return Ok(());
         }
@@ -404,6 +427,8 @@ impl Scene {
         self.verts.clear();
         self.vary.clear();
         self.clears.clear();
+        self.bitmaps.clear();
+        self.images.clear();
         for b in &mut self.bins {
             b.clear();
         }
@@ -478,6 +503,16 @@ impl Scene {
         match p.kind {
             Kind::Line { width } => sink.line(&v[0], &v[1], width, f, &params),
             Kind::Point { size } => sink.point(&v[0], size, &params),
+            Kind::Bitmap { index } => {
+                if let Some(b) = self.bitmaps.get(index as usize) {
+                    super::pixels::bitmap(&v[0], b, &params, sink.0)
+                }
+            }
+            Kind::Image { index } => {
+                if let Some(img) = self.images.get(index as usize) {
+                    super::pixels::image(img, &params, sink.0)
+                }
+            }
         }
     }
 
@@ -599,7 +634,19 @@ impl Scene {
                 }
                 match tri {
                     Some((at, w0, class)) => self.cover(at, w0, class, tile, &mut stage),
-                    None => self.rasterize(&self.prims[e as usize], tile, &mut scratch, &mut stage),
+                    None => {
+                        let p = &self.prims[e as usize];
+                        if let Kind::Image { index } = p.kind {
+                            if let Some(img) = self.images.get(index as usize) {
+                                if matches!(img.pixels, crate::pixel_rect::RectPixels::Stencil { .. }) {
+                                    let bounds = p.params.bounds.intersect(tile);
+                                    stage.direct(|t| super::pixels::write_stencil(img, bounds, t));
+                                    continue;
+                                }
+                            }
+                        }
+                        self.rasterize(p, tile, &mut scratch, &mut stage)
+                    }
                 }
             }
         }
@@ -735,6 +782,152 @@ impl Binner<'_> {
             self.error.get_or_insert(e);
         }
         self.draw = None;
+    }
+}
+
+/// Bitmaps merged into one ([`Scene::bitmap`]), with what they run with.
+#[derive(Debug)]
+struct PendingBitmap {
+    state: DrawState,
+    params: RasterParams,
+    vertex: RasterVertex,
+    /// The raster colour and depth they were drawn with.
+    colour: [f32; 4],
+    z: f64,
+    /// The merged bits, [`CACHE_WIDTH`]×[`CACHE_HEIGHT`], at `(x, y)`.
+    x: i64,
+    y: i64,
+    bits: Vec<u64>,
+}
+
+impl Scene {
+    /// Records bitmap `b` drawn with `state` and the constants of `v` (the
+    /// raster position's, colour `colour`): merged with the bitmaps before
+    /// it as Mesa's bitmap cache merges them ([`crate::pixel_rect::CACHE_WIDTH`]).
+    pub fn bitmap(
+        &mut self,
+        state: DrawState,
+        params: &RasterParams,
+        v: RasterVertex,
+        b: crate::pixel_rect::PlacedBitmap,
+        colour: [f32; 4],
+        fb: &Framebuffer,
+    ) {
+        use crate::pixel_rect::{CACHE_HEIGHT, CACHE_WIDTH};
+        self.fit(fb.width(), fb.height());
+        let (w, h) = (b.image.width(), b.image.height());
+        if w > CACHE_WIDTH || h > CACHE_HEIGHT {
+            self.settle();
+            let r = b.rect(params.bounds);
+            let index = self.bitmaps.len() as u32;
+            self.bytes += std::mem::size_of_val(&b) + b.image.bytes();
+            self.bitmaps.push(b);
+            self.record_rect(state, params, &v, Kind::Bitmap { index }, r);
+            return;
+        }
+        let words = CACHE_WIDTH / 64;
+        if let Some(p) = self.pending.as_mut() {
+            let (px, py) = (b.x - p.x, b.y - p.y);
+            let fits = px >= 0
+                && py >= 0
+                && px + i64::from(w) <= i64::from(CACHE_WIDTH)
+                && py + i64::from(h) <= i64::from(CACHE_HEIGHT);
+            if fits && p.colour == colour && (p.z - v.z).abs() <= 1e-6 && p.state.same_as(&state) && p.params == *params
+            {
+                b.image.or_into(&mut p.bits, words, px as u32, py as u32);
+                return;
+            }
+        }
+        self.settle();
+        let py = (CACHE_HEIGHT - h) / 2;
+        let mut bits = vec![0u64; (words * CACHE_HEIGHT) as usize];
+        b.image.or_into(&mut bits, words, 0, py);
+        self.pending = Some(Box::new(PendingBitmap {
+            state,
+            params: *params,
+            colour,
+            z: v.z,
+            vertex: v,
+            x: b.x,
+            y: b.y - i64::from(py),
+            bits,
+        }));
+    }
+
+    /// Records the merged bitmaps, if any.
+    fn settle(&mut self) {
+        let Some(p) = self.pending.take() else { return };
+        let image = crate::pixel_rect::BitmapImage::from_words(
+            crate::pixel_rect::CACHE_WIDTH,
+            crate::pixel_rect::CACHE_HEIGHT,
+            p.bits,
+        );
+        let b = crate::pixel_rect::PlacedBitmap { image, x: p.x, y: p.y };
+        let r = b.rect(p.params.bounds);
+        let index = self.bitmaps.len() as u32;
+        self.bytes += std::mem::size_of_val(&b) + b.image.bytes();
+        self.bitmaps.push(b);
+        self.record_rect(p.state, &p.params, &p.vertex, Kind::Bitmap { index }, r);
+    }
+
+    /// Records pixel rectangle `img` drawn with `state` (after the bitmaps
+    /// before it), `v` its raster position.
+    pub fn pixels(
+        &mut self,
+        state: DrawState,
+        params: &RasterParams,
+        v: RasterVertex,
+        img: crate::pixel_rect::PlacedImage,
+        fb: &Framebuffer,
+    ) {
+        self.fit(fb.width(), fb.height());
+        self.settle();
+        let r = img.rect(params.bounds);
+        let index = self.images.len() as u32;
+        self.bytes += std::mem::size_of_val(&img) + img.bytes();
+        self.images.push(img);
+        self.record_rect(state, params, &v, Kind::Image { index }, r);
+    }
+
+    /// Records a bitmap or pixel rectangle `kind` covering `r`, its
+    /// constants those of `v`.
+    fn record_rect(&mut self, state: DrawState, params: &RasterParams, v: &RasterVertex, kind: Kind, r: Option<Rect>) {
+        let Some(r) = r else { return };
+        let draw = match self.draws.last() {
+            Some(last) if last.same_as(&state) => self.draws.len() as u32 - 1,
+            _ => {
+                for t in state.textures.texels() {
+                    if self.textures.insert(Arc::as_ptr(t) as usize) {
+                        self.texture_bytes += t.len();
+                    }
+                }
+                self.bytes += std::mem::size_of::<DrawState>();
+                self.draws.push(state);
+                self.draws.len() as u32 - 1
+            }
+        };
+        let n = params.layout.len();
+        let (first, vary) = (self.verts.len() as u32, self.vary.len() as u32);
+        self.verts.push(Vert {
+            x: v.x,
+            y: v.y,
+            y_down: v.y_down,
+            inv_w: v.inv_w,
+            z: v.z,
+        });
+        self.vary.extend_from_slice(&v.v[..n]);
+        self.bytes += std::mem::size_of::<Vert>() + 4 * n;
+        let entry = self.prims.len() as u32;
+        self.prims.push(Binned {
+            draw,
+            kind,
+            first,
+            vary,
+            flat: false,
+            params: *params,
+        });
+        self.bytes += std::mem::size_of::<Binned>();
+        self.bin(r, entry);
     }
 }
 

@@ -161,6 +161,10 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         gl.edge_flag(c.edge_flag);
         gl.secondary_color3(c.secondary.x, c.secondary.y, c.secondary.z);
         gl.fog_coord(c.fog_coord);
+        gl.set_raster_position(s.raster)?;
+    }
+    if let Some(p) = &s.pixel {
+        gl.set_pixel_state(p.clone())?;
     }
     if m & POINT_BIT != 0 {
         gl.point_size(st.point_size)?;
@@ -286,6 +290,8 @@ exports! {
                 textures,
                 state: gl.state().clone(),
                 current: *gl.current(),
+                raster: *gl.raster_position(),
+                pixel: (mask & PIXEL_MODE_BIT != 0).then(|| gl.pixel_state().clone()),
                 matrix_mode: gl.current_matrix_mode(),
                 hints: os.hints,
                 inert_caps: os.inert_caps.clone(),

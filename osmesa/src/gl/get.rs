@@ -140,6 +140,8 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     if let Some(v) = super::fog::value(os, gl, pname)
         .or_else(|| super::texture::value(os, gl, pname))
         .or_else(|| super::texunit::value(gl, pname))
+        .or_else(|| super::raster_pos::value(gl, pname))
+        .or_else(|| super::pixel_rect::value(gl, pname))
     {
         return Ok(v);
     }

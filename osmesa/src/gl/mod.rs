@@ -36,8 +36,10 @@ mod index;
 mod lighting;
 mod lists;
 mod missing;
+mod pixel_rect;
 mod pixels;
 mod queries;
+mod raster_pos;
 mod state;
 mod texture;
 mod texunit;
@@ -55,8 +57,10 @@ pub use index::*;
 pub use lighting::*;
 pub use lists::*;
 pub use missing::*;
+pub use pixel_rect::*;
 pub use pixels::*;
 pub use queries::*;
+pub use raster_pos::*;
 pub use state::*;
 pub use texture::*;
 pub use texunit::*;
@@ -78,8 +82,10 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         lighting::table,
         lists::table,
         missing::table,
+        pixel_rect::table,
         pixels::table,
         queries::table,
+        raster_pos::table,
         state::table,
         texture::table,
         texunit::table,
