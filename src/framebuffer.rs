@@ -1,6 +1,7 @@
 //! The framebuffer: color, and only the depth and stencil buffers asked for.
 //! Rows are stored bottom-up (row 0 is window y 0), as GL addresses them.
 
+use crate::accum::{AccumBuffer, ColorRows};
 use crate::error::{GlError, GlResult};
 use softgl_jit::{pixel, ColorFormat, ColorMask, DepthFormat, DepthTarget, Target};
 
@@ -378,6 +379,8 @@ pub struct Framebuffer {
     color_top_down: bool,
     depth: Option<DepthBuffer>,
     stencil: Option<Vec<u8>>,
+    /// Only when asked for ([`Framebuffer::with_accum_buffer`]).
+    accum: Option<AccumBuffer>,
 }
 
 impl Framebuffer {
@@ -426,7 +429,44 @@ impl Framebuffer {
             color_top_down: top_down,
             depth,
             stencil,
+            accum: None,
         })
+    }
+
+    /// This framebuffer with an accumulation buffer (RGBA, 16 bits a
+    /// channel, as Mesa's OSMesa gives for any accumulation bits asked for),
+    /// cleared to zero. `OutOfMemory` when it cannot be allocated.
+    pub fn with_accum_buffer(mut self) -> GlResult<Framebuffer> {
+        if self.accum.is_none() {
+            self.accum = Some(AccumBuffer::new(self.desc.width, self.desc.height)?);
+        }
+        Ok(self)
+    }
+
+    /// Whether it has an accumulation buffer.
+    pub fn has_accum(&self) -> bool {
+        self.accum.is_some()
+    }
+
+    /// The accumulation buffer, if any.
+    pub fn accum_buffer(&self) -> Option<&AccumBuffer> {
+        self.accum.as_ref()
+    }
+
+    pub(crate) fn accum_mut_or_none(&mut self) -> Option<&mut AccumBuffer> {
+        self.accum.as_mut()
+    }
+
+    /// The colour rows and the accumulation buffer, both writable.
+    pub(crate) fn color_and_accum_mut(&mut self) -> (ColorRows<'_>, Option<&mut AccumBuffer>) {
+        let rows = ColorRows {
+            bytes: self.color.bytes_mut(),
+            stride: self.color_stride,
+            top_down: self.color_top_down,
+            height: self.desc.height,
+            bpp: self.desc.color.bytes_per_pixel(),
+        };
+        (rows, self.accum.as_mut())
     }
 
     /// A framebuffer of the same size, layout and formats that holds no
@@ -447,6 +487,7 @@ impl Framebuffer {
                 DepthBuffer::D32(_) => DepthBuffer::D32(Vec::new()),
             }),
             stencil: self.stencil.as_ref().map(|_| Vec::new()),
+            accum: self.accum.as_ref().map(AccumBuffer::hollow),
         }
     }
 

@@ -19,6 +19,7 @@
 //! ```
 #![forbid(unsafe_code)]
 
+pub mod accum;
 pub mod context;
 pub mod demo;
 pub mod error;
@@ -36,6 +37,7 @@ pub mod state;
 pub mod texture;
 pub mod tracked;
 
+pub use accum::{AccumBuffer, AccumOp};
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, SceneStats, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fog::{FogCoordSrc, FogMode, FogParam};

@@ -172,7 +172,12 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D55 => i(color_bits(3)),
         0x0D56 => i(fb.depth_format().map_or(0, |f| f.max_value().count_ones())), // DEPTH_BITS
         0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }),                        // STENCIL_BITS
-        0x0D58..=0x0D5B => i(0),                                                  // ACCUM_*_BITS: none yet
+        0x0D58..=0x0D5B => i(if fb.has_accum() {
+            i64::from(softgl::accum::ACCUM_BITS)
+        } else {
+            0
+        }), // ACCUM_*_BITS
+        0x0B80 => Val::N(s.clear_accum.iter().map(|&c| f64::from(c)).collect()),  // ACCUM_CLEAR_VALUE
         0x0C32 => Val::B(vec![false]),                                            // DOUBLEBUFFER
         0x0C33 => Val::B(vec![false]),                                            // STEREO
         0x0C31 => Val::B(vec![true]),                                             // RGBA_MODE

@@ -21,6 +21,7 @@ macro_rules! exports {
     };
 }
 
+mod accum;
 mod arrays;
 mod attrib;
 mod enums;
@@ -36,6 +37,7 @@ mod state;
 mod texture;
 mod texunit;
 
+pub use accum::*;
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
 pub use extra_attribs::*;
@@ -53,6 +55,7 @@ pub use texunit::*;
 /// Every `gl*` export of this library: each module's `exports!` table.
 fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)> {
     [
+        accum::table,
         arrays::table,
         attrib::table,
         extra_attribs::table,
