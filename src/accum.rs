@@ -10,7 +10,7 @@
 
 use crate::error::{GlError, GlResult};
 use crate::framebuffer::{Framebuffer, Rect};
-use softgl_jit::{pixel, ColorFormat, ColorMask};
+use softgl_jit::{deep, pixel, ColorFormat, ColorMask};
 
 /// Bits per channel of the accumulation buffer (`GL_ACCUM_RED_BITS`, …).
 pub const ACCUM_BITS: u32 = 16;
@@ -74,7 +74,11 @@ fn float_to_short(x: f32) -> i16 {
 
 /// Mesa's unpack of a stored pixel to float RGBA (`util_format`'s
 /// `unpack_rgba_float`: `v * (1.0f / max)`; alpha 1 where none is stored).
-fn unpack_float(format: ColorFormat, v: u32) -> [f32; 4] {
+fn unpack_float(format: ColorFormat, bytes: &[u8]) -> [f32; 4] {
+    if format.is_deep() {
+        return deep::to_float(format, deep::load(format, bytes));
+    }
+    let v = pixel::load(format, bytes);
     let n = |c: u32, max: u32| c as f32 * (1.0 / max as f32);
     match format {
         ColorFormat::Rgb565 => [n((v >> 11) & 31, 31), n((v >> 5) & 63, 63), n(v & 31, 31), 1.0],
@@ -119,8 +123,24 @@ fn c_int(f: f32) -> i32 {
     }
 }
 
-/// Mesa's pack of float RGBA into a stored pixel (`_mesa_pack_float_rgba_row`).
-fn pack_float(format: ColorFormat, [r, g, b, a]: [f32; 4]) -> u32 {
+/// Mesa's pack of float RGBA into the stored pixel at the start of `bytes`
+/// (`_mesa_pack_float_rgba_row`: 16-bit unorm by `util_iround`, floats as they are).
+fn pack_float(format: ColorFormat, rgba: [f32; 4], bytes: &mut [u8]) {
+    let v = match format {
+        ColorFormat::Rgba16 => rgba.map(|c| float_to_unorm_iround(c, 65535)),
+        _ => rgba.map(f32::to_bits),
+    };
+    if format.is_deep() {
+        for (c, v) in v.into_iter().enumerate() {
+            deep::store_channel(format, bytes, c, v);
+        }
+    } else {
+        pixel::store(format, bytes, pack_packed(format, rgba));
+    }
+}
+
+/// [`pack_float`] for the formats of one packed value.
+fn pack_packed(format: ColorFormat, [r, g, b, a]: [f32; 4]) -> u32 {
     match format {
         ColorFormat::Rgb565 => {
             (float_to_unorm_iround(r, 31) & 31) << 11
@@ -227,7 +247,7 @@ pub(crate) fn apply(fb: &mut Framebuffer, op: AccumOp, value: f32, rect: Rect, m
                 let src = &color.bytes[color.offset(rect.x0, y)..];
                 let row = accum.row_mut(y, rect.x0, rect.x1);
                 for (px, bytes) in row.iter_mut().zip(src.chunks(bpp)) {
-                    let rgba = unpack_float(format, pixel::load(format, bytes));
+                    let rgba = unpack_float(format, bytes);
                     for (acc, c) in px.iter_mut().zip(rgba) {
                         let v = c_short(c * scale);
                         *acc = if load { v } else { acc.wrapping_add(v) };
@@ -248,14 +268,14 @@ pub(crate) fn apply(fb: &mut Framebuffer, op: AccumOp, value: f32, rect: Rect, m
                 for (px, bytes) in row.iter().zip(dst.chunks_mut(bpp)) {
                     let mut rgba = px.map(|c| f32::from(c) * scale);
                     if masking {
-                        let old = unpack_float(format, pixel::load(format, bytes));
+                        let old = unpack_float(format, bytes);
                         for c in 0..4 {
                             if keep[c] {
                                 rgba[c] = old[c];
                             }
                         }
                     }
-                    pixel::store(format, bytes, pack_float(format, rgba));
+                    pack_float(format, rgba, bytes);
                 }
             }
         }

@@ -679,6 +679,14 @@ impl Context {
         self.set(|s| s.clear_stencil = value)
     }
 
+    /// Whether fragment colours are clamped to `[0, 1]` in float colour
+    /// buffers too (`GL_CLAMP_FRAGMENT_COLOR` `GL_TRUE`, what
+    /// `OSMesaColorClamp(GL_TRUE)` sets); false is GL's `GL_FIXED_ONLY`,
+    /// the default: only fixed-point buffers clamp.
+    pub fn set_clamp_fragment_color(&mut self, clamp: bool) -> GlResult {
+        self.set(|s| s.clamp_fragment_color = clamp)
+    }
+
     /// `glClearAccum`: each channel clamped to `[-1, 1]` (NaN reads as 0).
     pub fn clear_accum(&mut self, r: f32, g: f32, b: f32, a: f32) -> GlResult {
         self.set(|s| s.clear_accum = [r, g, b, a].map(|c| if c.is_nan() { 0.0 } else { c.clamp(-1.0, 1.0) }))

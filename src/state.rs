@@ -226,6 +226,9 @@ pub struct RasterState {
     pub clear_color: [f32; 4],
     pub clear_depth: f64,
     pub clear_stencil: i32,
+    /// `GL_CLAMP_FRAGMENT_COLOR` `GL_TRUE` (`OSMesaColorClamp(GL_TRUE)`): float
+    /// colour buffers get clamped colours too; false is GL's `GL_FIXED_ONLY`.
+    pub clamp_fragment_color: bool,
     /// `glClearAccum`'s colour, each channel in `[-1, 1]`.
     pub clear_accum: [f32; 4],
     /// `glFog` state with `GL_FOG`.
@@ -289,6 +292,7 @@ impl RasterState {
             clear_depth: 1.0,
             clear_stencil: 0,
             clear_accum: [0.0; 4],
+            clamp_fragment_color: false,
             fog: FogState::default(),
             color_sum: false,
             lighting: crate::lighting::LightingState::default(),
@@ -421,6 +425,11 @@ impl RasterState {
             stencil_value_mask: self.stencil_value_mask as u8,
             stencil_write_mask: self.stencil_write_mask as u8,
             fog: self.fog.uniforms(),
+            deep: softgl_jit::DeepUniforms {
+                alpha_ref: self.alpha_ref.to_bits(),
+                blend_color: self.blend_color.map(f32::to_bits),
+                clamp: u32::from(self.clamp_fragment_color),
+            },
         }
     }
 

@@ -303,8 +303,9 @@ fn osmesa_proc(name: &str) -> Option<*const c_void> {
     Some(p)
 }
 
-/// `OSMesaColorClamp`: recorded only. softgl's colour buffers hold unorm
-/// values, so colours are always clamped (Mesa leaves float buffers unclamped).
+/// `OSMesaColorClamp`: recorded, without effect, as in Mesa 22.3.6: fragment
+/// colours in a `GL_FLOAT` buffer are unclamped whatever it says (see
+/// `OsContext::set_clamp`).
 #[no_mangle]
 pub extern "C" fn OSMesaColorClamp(enable: u8) {
     with_current((), |os| os.set_clamp(enable != 0))

@@ -154,7 +154,7 @@ impl OsContext {
             binding: None,
             row_length: 0,
             y_up: true,
-            clamp: true,
+            clamp: false,
             depth_view: Vec::new(),
         }
     }
@@ -181,6 +181,12 @@ impl OsContext {
     }
 
     /// `OSMesaColorClamp`'s flag.
+    /// Records `OSMesaColorClamp`'s flag. It changes nothing, as in Mesa
+    /// 22.3.6: its OSMesa framebuffer never counts as a float one, so
+    /// `GL_CLAMP_FRAGMENT_COLOR` is ignored there and fragment colours in a
+    /// `GL_FLOAT` buffer stay unclamped either way (measured:
+    /// `osmesa/tests/c/deep.c`, docs/llvmpipe-facts.md, "Deep colour buffers").
+    /// The Rust API's `Context::set_clamp_fragment_color` is GL's clamp.
     pub fn set_clamp(&mut self, clamp: bool) {
         self.clamp = clamp;
     }

@@ -4,7 +4,7 @@ use super::enums::{self, Cap};
 use crate::consts::*;
 use crate::gl_state::{GlState, PixelStore, HINTS};
 use crate::state::with_gl;
-use softgl::{Backend, ColorFormat, Context, GlEnum, GlError, GlResult, MatrixMode};
+use softgl::{Backend, Context, GlEnum, GlError, GlResult, MatrixMode};
 use std::ffi::c_char;
 
 /// A queried value before conversion to the caller's type.
@@ -116,14 +116,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     let s = gl.state();
     let fb = gl.framebuffer_pending();
     let rect = |r: softgl::state::WindowRect| Val::I(vec![r.x.into(), r.y.into(), r.width.into(), r.height.into()]);
-    let color_bits = |c: usize| -> i64 {
-        match (fb.color_format(), c) {
-            (ColorFormat::Rgb565, 1) => 6,
-            (ColorFormat::Rgb565, 3) | (ColorFormat::Rgb8, 3) => 0,
-            (ColorFormat::Rgb565, _) => 5,
-            _ => 8,
-        }
-    };
+    let color_bits = |c: usize| -> i64 { fb.color_format().channel_bits(c).into() };
     if let Some(v) = store_value(&os.pack, pname, true).or_else(|| store_value(&os.unpack, pname, false)) {
         return Ok(v);
     }

@@ -125,8 +125,17 @@ fn read_pixel(fb: &Framebuffer, src: Source, x: i64, y: i64, out: &mut Vec<f64>)
     out.clear();
     match src {
         Source::Color(channels) => {
-            // `c * (1/255)` in f32: Mesa's unorm8-to-float, bit for bit.
-            let p = fb.pixel(x, y)?.map(|c| f64::from(f32::from(c) * (1.0 / 255.0)));
+            // `c * (1/255)` in f32: Mesa's unorm8-to-float, bit for bit; the
+            // deep formats' values as floats (a float buffer's unclamped).
+            // Mesa 22 clamps reads of its float OSMesa buffer to [0, 1] (its
+            // window-system framebuffer counts as fixed-point for
+            // GL_CLAMP_READ_COLOR: docs/llvmpipe-facts.md, "Deep colour buffers").
+            let p = if fb.color_format().is_deep() {
+                fb.pixel_f32(x, y)?
+                    .map(|c| f64::from(if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) }))
+            } else {
+                fb.pixel(x, y)?.map(|c| f64::from(f32::from(c) * (1.0 / 255.0)))
+            };
             out.extend(
                 channels
                     .iter()
