@@ -222,19 +222,8 @@ impl Clear {
                 }
             }
         }
-        if let Some((bytes, keep)) = self.deep {
-            let format = t.color_format();
-            let bpp = format.bytes_per_pixel();
-            let size = bpp / 4;
-            for y in r.y0..r.y1 {
-                let start = t.color_offset(r.x0, y);
-                let row = &mut t.color_mut()[start..][..(x1 - x0) * bpp];
-                for px in row.chunks_exact_mut(bpp) {
-                    for c in (0..4).filter(|&c| keep[c]) {
-                        px[c * size..][..size].copy_from_slice(&bytes[c * size..][..size]);
-                    }
-                }
-            }
+        if let Some(deep) = &self.deep {
+            clear_deep(t, r, deep);
         }
         if let Some(v) = self.depth {
             for y in r.y0..r.y1 {
@@ -259,6 +248,27 @@ impl Clear {
                         }
                     }
                 }
+            }
+        }
+    }
+}
+
+/// Clears `r` of a deep-format target to the pixel `bytes` through the
+/// channels `keep`. Apart from [`Clear::apply`], and never inlined into it:
+/// inline, it made the byte formats' clears 6% more instructions
+/// (callgrind, `fill clear`).
+#[inline(never)]
+fn clear_deep(t: &mut Target<'_>, r: Rect, (bytes, keep): &([u8; 16], [bool; 4])) {
+    let format = t.color_format();
+    let bpp = format.bytes_per_pixel();
+    let size = bpp / 4;
+    let n = (r.x1 - r.x0) as usize;
+    for y in r.y0..r.y1 {
+        let start = t.color_offset(r.x0, y);
+        let row = &mut t.color_mut()[start..][..n * bpp];
+        for px in row.chunks_exact_mut(bpp) {
+            for c in (0..4).filter(|&c| keep[c]) {
+                px[c * size..][..size].copy_from_slice(&bytes[c * size..][..size]);
             }
         }
     }

@@ -273,6 +273,7 @@ unsafe fn read_pixels(
     // which is exactly `len` bytes from `pixels`.
     let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
     let stencil = matches!(src, Source::Stencil);
+    let float_src = matches!(src, Source::Color(_)) && fb.color_format() == softgl::ColorFormat::Rgba32F;
     let depth_bits = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
     let mut vals = Vec::with_capacity(4);
     for j in 0..h {
@@ -287,6 +288,20 @@ unsafe fn read_pixels(
                 continue;
             }
             for (k, &v) in vals.iter().take(comps).enumerate() {
+                if float_src && matches!(ty, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT) {
+                    // Mesa's `_mesa_float_to_unorm`: f32 product, rounded half to even.
+                    let max = if ty == GL_UNSIGNED_BYTE { 255.0f32 } else { 65535.0 };
+                    let v = v as f32;
+                    let raw = if v < 0.0 {
+                        0.0
+                    } else if v > 1.0 {
+                        max
+                    } else {
+                        (v * max).round_ties_even()
+                    };
+                    put(&mut dst[at + k * size..], ty, f64::from(raw), true, pack.swap_bytes);
+                    continue;
+                }
                 put(&mut dst[at + k * size..], ty, v, stencil, pack.swap_bytes);
             }
         }

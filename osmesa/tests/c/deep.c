@@ -190,6 +190,14 @@ int main(int argc, char **argv) {
       glReadPixels(0, 0, W, H, GL_RGBA, GL_FLOAT, read);
       snprintf(file, sizeof file, "%s.%d.read", names[t], pass);
       dump(file, read, sizeof read);
+      static unsigned char bytes[W * H * 4];
+      static unsigned short shorts[W * H * 4];
+      glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, bytes);
+      snprintf(file, sizeof file, "%s.%d.read_ubyte", names[t], pass);
+      dump(file, bytes, sizeof bytes);
+      glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_SHORT, shorts);
+      snprintf(file, sizeof file, "%s.%d.read_ushort", names[t], pass);
+      dump(file, shorts, sizeof shorts);
       OSMesaDestroyContext(ctx);
       free(buf);
     }
