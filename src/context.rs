@@ -4,10 +4,11 @@
 //! the first error since the last [`Context::get_error`] is also kept, GL-style,
 //! for callers (such as the C ABI) that poll.
 
+use crate::accum::AccumOp;
 use crate::error::{GlError, GlResult};
 use crate::fog::{FogCoordSrc, FogParam, FogState};
 use crate::fragment::Backend;
-use crate::framebuffer::{Clear, Framebuffer, FramebufferDesc, ReadFormat};
+use crate::framebuffer::{Clear, Framebuffer, FramebufferDesc, ReadFormat, Rect};
 use crate::geometry::batch::{FogSource, TexFetch, VertexStage};
 use crate::geometry::lighting::LightSetup;
 use crate::geometry::varying::VaryingLayout;
@@ -741,19 +742,46 @@ impl Context {
         self.set(|s| s.clear_stencil = value)
     }
 
-    /// `glClear`: honours the scissor test, the color mask, the depth mask and
-    /// the stencil write mask.
-    pub fn clear(&mut self, mask: ClearMask) -> GlResult {
-        self.outside()?;
-        self.ensure_draw()?;
+    /// Whether fragment colours are clamped to `[0, 1]` in float colour
+    /// buffers too (`GL_CLAMP_FRAGMENT_COLOR` `GL_TRUE`, what
+    /// `OSMesaColorClamp(GL_TRUE)` sets); false is GL's `GL_FIXED_ONLY`,
+    /// the default: only fixed-point buffers clamp.
+    pub fn set_clamp_fragment_color(&mut self, clamp: bool) -> GlResult {
+        self.set(|s| s.clamp_fragment_color = clamp)
+    }
+
+    /// `glClearAccum`: each channel clamped to `[-1, 1]` (NaN reads as 0).
+    pub fn clear_accum(&mut self, r: f32, g: f32, b: f32, a: f32) -> GlResult {
+        self.set(|s| s.clear_accum = [r, g, b, a].map(|c| if c.is_nan() { 0.0 } else { c.clamp(-1.0, 1.0) }))
+    }
+
+    /// The framebuffer's bounds, cut by the scissor box when the scissor test is on.
+    fn scissored_bounds(&self) -> Rect {
         let s = &self.state;
-        let rect = if s.scissor_test {
+        if s.scissor_test {
             let b = s.scissor;
             self.fb
                 .clip_rect(i64::from(b.x), i64::from(b.y), i64::from(b.width), i64::from(b.height))
         } else {
             self.fb.bounds()
-        };
+        }
+    }
+
+    /// `glClear`: honours the scissor test, the color mask, the depth mask and
+    /// the stencil write mask. The accumulation buffer, if any, is cleared
+    /// at once (draws pending before it are rasterized first).
+    pub fn clear(&mut self, mask: ClearMask) -> GlResult {
+        self.outside()?;
+        self.ensure_draw()?;
+        let rect = self.scissored_bounds();
+        if mask.accum && self.fb.has_accum() {
+            self.finish_scene();
+            let color = self.state.clear_accum;
+            if let Some(a) = self.fb.accum_mut_or_none() {
+                a.clear(rect, color);
+            }
+        }
+        let s = &self.state;
         let mut clear = Clear::new(rect);
         if mask.color {
             clear = clear.color(&self.fb, s.clear_color, s.color_mask);
@@ -1486,6 +1514,20 @@ impl Context {
     pub fn flush(&mut self) -> GlResult {
         self.outside()?;
         self.finish_scene();
+        Ok(())
+    }
+
+    /// `glAccum`: `InvalidOperation` without an accumulation buffer (see
+    /// [`crate::accum`] for what each operation does).
+    pub fn accum(&mut self, op: AccumOp, value: f32) -> GlResult {
+        self.outside()?;
+        if !self.fb.has_accum() {
+            return self.record(Err(GlError::InvalidOperation));
+        }
+        self.finish_scene();
+        let rect = self.scissored_bounds();
+        let mask = self.state.color_mask;
+        crate::accum::apply(&mut self.fb, op, value, rect, mask);
         Ok(())
     }
 

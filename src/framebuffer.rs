@@ -1,8 +1,9 @@
 //! The framebuffer: color, and only the depth and stencil buffers asked for.
 //! Rows are stored bottom-up (row 0 is window y 0), as GL addresses them.
 
+use crate::accum::{AccumBuffer, ColorRows};
 use crate::error::{GlError, GlResult};
-use softgl_jit::{pixel, ColorFormat, ColorMask, DepthFormat, DepthTarget, Target};
+use softgl_jit::{deep, pixel, ColorFormat, ColorMask, DepthFormat, DepthTarget, Target};
 
 /// Largest framebuffer side, in pixels (Mesa's `GL_MAX_VIEWPORT_DIMS`).
 pub const MAX_FRAMEBUFFER_SIZE: u32 = 16384;
@@ -110,6 +111,8 @@ pub struct Clear {
     pub rect: Rect,
     /// The packed colour, the bits of it the colour mask writes, and its bytes.
     color: Option<(u32, u32, [u8; 4])>,
+    /// For the deep formats instead: the pixel's bytes and the channels written.
+    deep: Option<([u8; 16], [bool; 4])>,
     depth: Option<u32>,
     /// Value and write mask.
     stencil: Option<(u8, u8)>,
@@ -121,6 +124,7 @@ impl Clear {
         Clear {
             rect,
             color: None,
+            deep: None,
             depth: None,
             stencil: None,
         }
@@ -129,6 +133,26 @@ impl Clear {
     /// Also clears the color buffer to `rgba` through `mask`.
     pub fn color(mut self, fb: &Framebuffer, rgba: [f32; 4], mask: ColorMask) -> Clear {
         let format = fb.desc.color;
+        if format.is_deep() {
+            let keep = [mask.r, mask.g, mask.b, mask.a];
+            if keep.contains(&true) {
+                // A whole-buffer unmasked clear is llvmpipe's `pipe->clear`,
+                // packed by `util_format_pack_rgba` (`util_iround(c * 65535)`,
+                // half up in f32); a scissored or masked one draws a quad,
+                // whose colour converts as a fragment's (`deep::unorm16`).
+                let whole = self.rect == fb.bounds() && !keep.contains(&false);
+                let values = match format {
+                    ColorFormat::Rgba16 if whole => rgba.map(|c| (c.clamp(0.0, 1.0) * 65535.0 + 0.5) as u32),
+                    _ => deep::from_float(format, rgba),
+                };
+                let mut bytes = [0u8; 16];
+                for (c, v) in values.into_iter().enumerate() {
+                    deep::store_channel(format, &mut bytes, c, v);
+                }
+                self.deep = Some((bytes, keep));
+            }
+            return self;
+        }
         let bits = pixel::mask_bits(format, mask);
         if bits == 0 || !fb.color_enabled {
             return self;
@@ -164,7 +188,8 @@ impl Clear {
 
     /// Whether it clears anything.
     pub fn is_empty(&self) -> bool {
-        self.rect.is_empty() || (self.color.is_none() && self.depth.is_none() && self.stencil.is_none())
+        self.rect.is_empty()
+            || (self.color.is_none() && self.deep.is_none() && self.depth.is_none() && self.stencil.is_none())
     }
 
     /// Clears the part of `rect` inside `within` and the rows `t` holds.
@@ -197,6 +222,9 @@ impl Clear {
                 }
             }
         }
+        if let Some(deep) = &self.deep {
+            clear_deep(t, r, deep);
+        }
         if let Some(v) = self.depth {
             for y in r.y0..r.y1 {
                 let i = t.index(r.x0, y);
@@ -220,6 +248,26 @@ impl Clear {
                         }
                     }
                 }
+            }
+        }
+    }
+}
+
+/// Clears `r` of a deep-format target to the pixel `bytes` through the
+/// channels `keep`: a function apart, so that [`Clear::apply`]'s loops for
+/// the byte formats stay as they were.
+#[inline(never)]
+fn clear_deep(t: &mut Target<'_>, r: Rect, (bytes, keep): &([u8; 16], [bool; 4])) {
+    let format = t.color_format();
+    let bpp = format.bytes_per_pixel();
+    let size = bpp / 4;
+    let n = (r.x1 - r.x0) as usize;
+    for y in r.y0..r.y1 {
+        let start = t.color_offset(r.x0, y);
+        let row = &mut t.color_mut()[start..][..n * bpp];
+        for px in row.chunks_exact_mut(bpp) {
+            for c in (0..4).filter(|&c| keep[c]) {
+                px[c * size..][..size].copy_from_slice(&bytes[c * size..][..size]);
             }
         }
     }
@@ -383,6 +431,8 @@ pub struct Framebuffer {
     /// colour attachment (its colour bytes are then a scratch buffer no one
     /// reads, `src/fbo.rs`).
     color_enabled: bool,
+    /// Only when asked for ([`Framebuffer::with_accum_buffer`]).
+    accum: Option<AccumBuffer>,
 }
 
 impl Framebuffer {
@@ -432,6 +482,7 @@ impl Framebuffer {
             depth,
             stencil,
             color_enabled: true,
+            accum: None,
         })
     }
 
@@ -465,6 +516,7 @@ impl Framebuffer {
             depth,
             stencil,
             color_enabled: true,
+            accum: None,
         })
     }
 
@@ -487,6 +539,42 @@ impl Framebuffer {
         self.color_enabled = on;
     }
 
+    /// This framebuffer with an accumulation buffer (RGBA, 16 bits a
+    /// channel, as Mesa's OSMesa gives for any accumulation bits asked for),
+    /// cleared to zero. `OutOfMemory` when it cannot be allocated.
+    pub fn with_accum_buffer(mut self) -> GlResult<Framebuffer> {
+        if self.accum.is_none() {
+            self.accum = Some(AccumBuffer::new(self.desc.width, self.desc.height)?);
+        }
+        Ok(self)
+    }
+
+    /// Whether it has an accumulation buffer.
+    pub fn has_accum(&self) -> bool {
+        self.accum.is_some()
+    }
+
+    /// The accumulation buffer, if any.
+    pub fn accum_buffer(&self) -> Option<&AccumBuffer> {
+        self.accum.as_ref()
+    }
+
+    pub(crate) fn accum_mut_or_none(&mut self) -> Option<&mut AccumBuffer> {
+        self.accum.as_mut()
+    }
+
+    /// The colour rows and the accumulation buffer, both writable.
+    pub(crate) fn color_and_accum_mut(&mut self) -> (ColorRows<'_>, Option<&mut AccumBuffer>) {
+        let rows = ColorRows {
+            bytes: self.color.bytes_mut(),
+            stride: self.color_stride,
+            top_down: self.color_top_down,
+            height: self.desc.height,
+            bpp: self.desc.color.bytes_per_pixel(),
+        };
+        (rows, self.accum.as_mut())
+    }
+
     /// A framebuffer of the same size, layout and formats that holds no
     /// pixels: it stands in for this one while its buffers are with a flush
     /// on another thread (`raster/background.rs`), answering for the sizes
@@ -506,6 +594,7 @@ impl Framebuffer {
             }),
             stencil: self.stencil.as_ref().map(|_| Vec::new()),
             color_enabled: self.color_enabled,
+            accum: self.accum.as_ref().map(AccumBuffer::hollow),
         }
     }
 
@@ -631,14 +720,35 @@ impl Framebuffer {
         }
     }
 
-    /// The color at `(x, y)` as unorm RGBA (alpha 255 for formats without alpha).
+    /// The color at `(x, y)` as unorm RGBA (alpha 255 for formats without
+    /// alpha; the deep formats' channels rounded to 8 bits from their float
+    /// values, clamped).
     pub fn pixel(&self, x: u32, y: u32) -> Option<[u8; 4]> {
         if x >= self.desc.width || y >= self.desc.height {
             return None;
         }
         let format = self.desc.color;
         let off = self.color_offset(x, y);
-        Some(pixel::unpack(format, pixel::load(format, &self.color.bytes()[off..])))
+        let bytes = &self.color.bytes()[off..];
+        if format.is_deep() {
+            let c = deep::to_float(format, deep::load(format, bytes));
+            return Some(c.map(|v| float_to_unorm(v, 255) as u8));
+        }
+        Some(pixel::unpack(format, pixel::load(format, bytes)))
+    }
+
+    /// The color at `(x, y)` as float RGBA: unorm channels over their
+    /// maximum (8-bit ones `v / 255`), floats as stored.
+    pub fn pixel_f32(&self, x: u32, y: u32) -> Option<[f32; 4]> {
+        let format = self.desc.color;
+        if !format.is_deep() {
+            return self.pixel(x, y).map(|p| p.map(|c| f32::from(c) / 255.0));
+        }
+        if x >= self.desc.width || y >= self.desc.height {
+            return None;
+        }
+        let off = self.color_offset(x, y);
+        Some(deep::to_float(format, deep::load(format, &self.color.bytes()[off..])))
     }
 
     /// The stored depth at `(x, y)`, in buffer units.
@@ -688,8 +798,27 @@ impl Framebuffer {
         Ok(out)
     }
 
-    /// `glReadPixels` with `GL_FLOAT`: RGBA in `[0, 1]`, rows bottom-up.
+    /// `glReadPixels` with `GL_FLOAT`: RGBA in `[0, 1]` (a float buffer's
+    /// values as stored), rows bottom-up.
     pub fn read_pixels_f32(&self, x: i32, y: i32, w: i32, h: i32) -> GlResult<Vec<[f32; 4]>> {
+        if self.desc.color.is_deep() {
+            if w < 0 || h < 0 {
+                return Err(GlError::InvalidValue);
+            }
+            let mut out = alloc(w as usize * h as usize, [0.0f32; 4])?;
+            for j in 0..h {
+                for i in 0..w {
+                    let (px, py) = (i64::from(x) + i64::from(i), i64::from(y) + i64::from(j));
+                    let (Ok(px), Ok(py)) = (u32::try_from(px), u32::try_from(py)) else {
+                        continue;
+                    };
+                    if let Some(c) = self.pixel_f32(px, py) {
+                        out[j as usize * w as usize + i as usize] = c;
+                    }
+                }
+            }
+            return Ok(out);
+        }
         let bytes = self.read_pixels(x, y, w, h, ReadFormat::Rgba8)?;
         Ok(bytes
             .chunks_exact(4)

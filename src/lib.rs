@@ -20,6 +20,7 @@
 #![forbid(unsafe_code)]
 
 pub mod buffer;
+pub mod accum;
 pub mod context;
 pub mod demo;
 pub mod error;
@@ -43,6 +44,7 @@ pub mod texture;
 pub mod tracked;
 
 pub use buffer::{Buffer, BufferAccess, BufferParamName, BufferStore, BufferTarget, BufferUsage};
+pub use accum::{AccumBuffer, AccumOp};
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, SceneStats, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fog::{FogCoordSrc, FogMode, FogParam};

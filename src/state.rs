@@ -121,6 +121,8 @@ pub struct ClearMask {
     pub color: bool,
     pub depth: bool,
     pub stencil: bool,
+    /// The accumulation buffer (not in [`ClearMask::ALL`], which is colour, depth and stencil).
+    pub accum: bool,
 }
 
 impl ClearMask {
@@ -128,21 +130,31 @@ impl ClearMask {
         color: true,
         depth: false,
         stencil: false,
+        accum: false,
     };
     pub const DEPTH: ClearMask = ClearMask {
         color: false,
         depth: true,
         stencil: false,
+        accum: false,
     };
     pub const STENCIL: ClearMask = ClearMask {
         color: false,
         depth: false,
         stencil: true,
+        accum: false,
+    };
+    pub const ACCUM: ClearMask = ClearMask {
+        color: false,
+        depth: false,
+        stencil: false,
+        accum: true,
     };
     pub const ALL: ClearMask = ClearMask {
         color: true,
         depth: true,
         stencil: true,
+        accum: false,
     };
 }
 
@@ -153,6 +165,7 @@ impl std::ops::BitOr for ClearMask {
             color: self.color || o.color,
             depth: self.depth || o.depth,
             stencil: self.stencil || o.stencil,
+            accum: self.accum || o.accum,
         }
     }
 }
@@ -215,6 +228,11 @@ pub struct RasterState {
     pub clear_color: [f32; 4],
     pub clear_depth: f64,
     pub clear_stencil: i32,
+    /// `GL_CLAMP_FRAGMENT_COLOR` `GL_TRUE` (`OSMesaColorClamp(GL_TRUE)`): float
+    /// colour buffers get clamped colours too; false is GL's `GL_FIXED_ONLY`.
+    pub clamp_fragment_color: bool,
+    /// `glClearAccum`'s colour, each channel in `[-1, 1]`.
+    pub clear_accum: [f32; 4],
     /// `glFog` state with `GL_FOG`.
     pub fog: FogState,
     /// `GL_COLOR_SUM`.
@@ -276,6 +294,8 @@ impl RasterState {
             clear_color: [0.0; 4],
             clear_depth: 1.0,
             clear_stencil: 0,
+            clear_accum: [0.0; 4],
+            clamp_fragment_color: false,
             fog: FogState::default(),
             color_sum: false,
             lighting: crate::lighting::LightingState::default(),
@@ -413,6 +433,11 @@ impl RasterState {
             stencil_value_mask: self.stencil_value_mask as u8,
             stencil_write_mask: self.stencil_write_mask as u8,
             fog: self.fog.uniforms(),
+            deep: softgl_jit::DeepUniforms {
+                alpha_ref: self.alpha_ref.to_bits(),
+                blend_color: self.blend_color.map(f32::to_bits),
+                clamp: u32::from(self.clamp_fragment_color),
+            },
         }
     }
 

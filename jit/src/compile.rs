@@ -220,6 +220,10 @@ pub type SpanFn = unsafe extern "C" fn(call: *mut SpanCall, uniforms: *const Spl
 pub enum CompileError {
     #[error("no Cranelift back end for this CPU: {0}")]
     Isa(String),
+    /// A deep colour format (`ColorFormat::is_deep`): the interpreter runs
+    /// those keys (the slower path; the 8-bit code stays as it is).
+    #[error("no specialist for the deep colour format {0:?}")]
+    DeepFormat(crate::key::ColorFormat),
     #[error("Cranelift rejected the specialist: {0}")]
     Module(#[from] Box<cranelift_module::ModuleError>),
 }
@@ -1360,6 +1364,9 @@ impl<'a> Gen<'a> {
                 let spread = self.b.ins().shuffle(bytes, zero, m);
                 self.b.ins().bitcast(I32X4, le(), spread)
             }
+            ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+                unreachable!("deep formats are refused before any code is built (Specialist::compile_tier)")
+            }
         };
         g.dst = Some(d);
         d
@@ -1383,6 +1390,9 @@ impl<'a> Gen<'a> {
                 let words = self.b.ins().bitcast(I32X4, le(), packed);
                 let hi = self.b.ins().extractlane(words, 2);
                 self.b.ins().store(mem(), hi, p, 8);
+            }
+            ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+                unreachable!("deep formats are refused before any code is built (Specialist::compile_tier)")
             }
         }
     }
@@ -1429,6 +1439,9 @@ impl<'a> Gen<'a> {
                 let g = self.replicate(g6, 2, 4);
                 let b = self.replicate(b5, 3, 2);
                 [r, g, b, self.splat(255)]
+            }
+            ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+                unreachable!("deep formats are refused before any code is built (Specialist::compile_tier)")
             }
         }
     }
@@ -1480,6 +1493,9 @@ impl<'a> Gen<'a> {
                 let g = place(self, g, 5);
                 let v = self.b.ins().bor(r, g);
                 self.b.ins().bor(v, b)
+            }
+            ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+                unreachable!("deep formats are refused before any code is built (Specialist::compile_tier)")
             }
         }
     }

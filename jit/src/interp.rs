@@ -5,7 +5,7 @@
 //! exactly as this one does.
 
 use crate::key::{
-    BlendEquation, BlendFactor, BlendKey, ColorMask, FragmentKey, KeyError, Stage, StencilKey, StencilOp,
+    BlendEquation, BlendFactor, BlendKey, ColorMask, DepthKey, FragmentKey, KeyError, Stage, StencilKey, StencilOp,
 };
 use crate::pixel;
 use crate::shade::{self, Planes};
@@ -89,6 +89,9 @@ fn run_span(
     (span, planes): (&FragmentSpan, &Planes),
     t: &mut Target<'_>,
 ) {
+    if key.color_format.is_deep() {
+        return crate::deep::run_span(key, stages, (u, textures), (span, planes), t);
+    }
     let mut live = t.owned_mask(span);
     if live == 0 {
         return;
@@ -138,43 +141,8 @@ fn run_span(
                     }
                 }
             }
-            Stage::StencilTest { stencil, depth_on } => {
-                let idx0 = t.index(x0, y);
-                let Some(buf) = t.stencil_mut() else { continue };
-                for i in lanes(live) {
-                    let s = &mut buf[idx0 + i];
-                    let pass = stencil
-                        .func
-                        .test(u.stencil_ref & u.stencil_value_mask, *s & u.stencil_value_mask);
-                    if !pass {
-                        *s = stencil_write(stencil.fail, *s, u);
-                        live &= !(1 << i);
-                    } else if !depth_on {
-                        *s = stencil_write(stencil.zpass, *s, u);
-                    }
-                }
-            }
-            Stage::DepthTest { depth, stencil } => {
-                let idx0 = t.index(x0, y);
-                let (_, depth_buf, stencil_buf) = t.parts_mut();
-                let Some(dbuf) = depth_buf else { continue };
-                let max = dbuf.format().max_value();
-                let mut stencil_buf = stencil_buf;
-                for i in lanes(live) {
-                    let z = z[i].min(max);
-                    let pass = depth.func.test(z, dbuf.get(idx0 + i));
-                    if pass && depth.write {
-                        dbuf.set(idx0 + i, z);
-                    }
-                    if let (Some(StencilKey { zfail, zpass, .. }), Some(sbuf)) = (stencil, stencil_buf.as_deref_mut()) {
-                        let s = &mut sbuf[idx0 + i];
-                        *s = stencil_write(if pass { zpass } else { zfail }, *s, u);
-                    }
-                    if !pass {
-                        live &= !(1 << i);
-                    }
-                }
-            }
+            Stage::StencilTest { stencil, depth_on } => stencil_stage(stencil, depth_on, u, (x0, y), &mut live, t),
+            Stage::DepthTest { depth, stencil } => depth_stage(depth, stencil, u, (x0, y, &z), &mut live, t),
             Stage::Count => t.add_samples_passed(u64::from(live.count_ones())),
             Stage::Blend(blend) => {
                 let off0 = t.color_offset(x0, y);
@@ -218,8 +186,65 @@ fn run_span(
     }
 }
 
+/// The stencil test of the fragments `live` of the span at `(x0, y)`, and
+/// its `fail` op (with `zpass` too when the depth test is off).
+pub(crate) fn stencil_stage(
+    stencil: StencilKey,
+    depth_on: bool,
+    u: &FragmentUniforms,
+    (x0, y): (u32, u32),
+    live: &mut u64,
+    t: &mut Target<'_>,
+) {
+    let idx0 = t.index(x0, y);
+    let Some(buf) = t.stencil_mut() else { return };
+    for i in lanes(*live) {
+        let s = &mut buf[idx0 + i];
+        let pass = stencil
+            .func
+            .test(u.stencil_ref & u.stencil_value_mask, *s & u.stencil_value_mask);
+        if !pass {
+            *s = stencil_write(stencil.fail, *s, u);
+            *live &= !(1 << i);
+        } else if !depth_on {
+            *s = stencil_write(stencil.zpass, *s, u);
+        }
+    }
+}
+
+/// The depth test of the fragments `live` of the span at `(x0, y)` with
+/// depths `z`, its write, and the stencil's `zfail`/`zpass` ops.
+pub(crate) fn depth_stage(
+    depth: DepthKey,
+    stencil: Option<StencilKey>,
+    u: &FragmentUniforms,
+    (x0, y, z): (u32, u32, &[u32; SPAN_MAX]),
+    live: &mut u64,
+    t: &mut Target<'_>,
+) {
+    let idx0 = t.index(x0, y);
+    let (_, depth_buf, stencil_buf) = t.parts_mut();
+    let Some(dbuf) = depth_buf else { return };
+    let max = dbuf.format().max_value();
+    let mut stencil_buf = stencil_buf;
+    for i in lanes(*live) {
+        let z = z[i].min(max);
+        let pass = depth.func.test(z, dbuf.get(idx0 + i));
+        if pass && depth.write {
+            dbuf.set(idx0 + i, z);
+        }
+        if let (Some(StencilKey { zfail, zpass, .. }), Some(sbuf)) = (stencil, stencil_buf.as_deref_mut()) {
+            let s = &mut sbuf[idx0 + i];
+            *s = stencil_write(if pass { zpass } else { zfail }, *s, u);
+        }
+        if !pass {
+            *live &= !(1 << i);
+        }
+    }
+}
+
 /// The indices of the set bits of `mask`, lowest first.
-fn lanes(mask: u64) -> impl Iterator<Item = usize> {
+pub(crate) fn lanes(mask: u64) -> impl Iterator<Item = usize> {
     let mut m = mask;
     std::iter::from_fn(move || {
         if m == 0 {

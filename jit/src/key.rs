@@ -13,6 +13,12 @@ pub enum ColorFormat {
     Rgb8,
     /// One little-endian `u16`: R in bits 11..16, G in 5..11, B in 0..5 (no alpha).
     Rgb565,
+    /// R, G, B, A as native-endian `u16` unorm (OSMesa's `GL_UNSIGNED_SHORT`,
+    /// `GL_RGBA16`): a deep format ([`ColorFormat::is_deep`]).
+    Rgba16,
+    /// R, G, B, A as native-endian `f32` (OSMesa's `GL_FLOAT`, `GL_RGBA32F`):
+    /// a deep format.
+    Rgba32F,
 }
 
 impl ColorFormat {
@@ -22,13 +28,36 @@ impl ColorFormat {
             ColorFormat::Rgba8 | ColorFormat::Bgra8 => 4,
             ColorFormat::Rgb8 => 3,
             ColorFormat::Rgb565 => 2,
+            ColorFormat::Rgba16 => 8,
+            ColorFormat::Rgba32F => 16,
+        }
+    }
+
+    /// Whether channels are wider than a byte: no packed 32-bit pixel
+    /// (`pixel`), the interpreter's deep path (`deep`) and no specialist.
+    pub const fn is_deep(self) -> bool {
+        match self {
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8 | ColorFormat::Rgb565 => false,
+            ColorFormat::Rgba16 | ColorFormat::Rgba32F => true,
+        }
+    }
+
+    /// Bits a channel stores (`GL_RED_BITS`; alpha is 0 where none is stored).
+    pub const fn channel_bits(self, channel: usize) -> u32 {
+        match (self, channel) {
+            (ColorFormat::Rgb565, 1) => 6,
+            (ColorFormat::Rgb565 | ColorFormat::Rgb8, 3) => 0,
+            (ColorFormat::Rgb565, _) => 5,
+            (ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8, _) => 8,
+            (ColorFormat::Rgba16, _) => 16,
+            (ColorFormat::Rgba32F, _) => 32,
         }
     }
 
     /// Whether the buffer stores alpha.
     pub const fn has_alpha(self) -> bool {
         match self {
-            ColorFormat::Rgba8 | ColorFormat::Bgra8 => true,
+            ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgba16 | ColorFormat::Rgba32F => true,
             ColorFormat::Rgb8 | ColorFormat::Rgb565 => false,
         }
     }
@@ -36,7 +65,11 @@ impl ColorFormat {
     /// Whether converting 8-bit color to this format loses bits (so dithering matters).
     pub const fn is_reduced(self) -> bool {
         match self {
-            ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8 => false,
+            ColorFormat::Rgba8
+            | ColorFormat::Bgra8
+            | ColorFormat::Rgb8
+            | ColorFormat::Rgba16
+            | ColorFormat::Rgba32F => false,
             ColorFormat::Rgb565 => true,
         }
     }

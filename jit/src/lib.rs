@@ -11,6 +11,7 @@ pub mod cache;
 #[allow(unsafe_code)]
 pub mod callout;
 pub mod compile;
+pub mod deep;
 pub mod interp;
 pub mod key;
 pub mod pixel;
@@ -36,4 +37,4 @@ pub use specialist::{DrawTextures, Specialist, SpecialistError};
 pub use target::{DepthTarget, Target, TargetError};
 pub use texture::TextureSet;
 pub use tier::Tier;
-pub use uniforms::FragmentUniforms;
+pub use uniforms::{DeepUniforms, FragmentUniforms};

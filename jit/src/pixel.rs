@@ -1,5 +1,8 @@
 //! Color arithmetic shared by every back end: GL's unsigned normalized (unorm)
 //! rules on 8-bit channels, and conversion to and from each color format.
+//! The deep formats (`ColorFormat::is_deep`) have no packed 32-bit pixel:
+//! `load`, `pack`, `unpack` and `mask_bits` give 0 for them and `store`
+//! writes nothing; `crate::deep` reads and writes them.
 
 use crate::key::{ColorFormat, ColorMask};
 
@@ -58,15 +61,20 @@ pub fn load(format: ColorFormat, bytes: &[u8]) -> u32 {
         ColorFormat::Rgba8 | ColorFormat::Bgra8 => u32::from_le_bytes([bytes[0], bytes[1], bytes[2], bytes[3]]),
         ColorFormat::Rgb8 => u32::from_le_bytes([bytes[0], bytes[1], bytes[2], 0]),
         ColorFormat::Rgb565 => u32::from(u16::from_le_bytes([bytes[0], bytes[1]])),
+        // No packed value: `deep` reads these.
+        ColorFormat::Rgba16 | ColorFormat::Rgba32F => 0,
     }
 }
 
-/// Writes the packed value `v` to the start of `bytes`.
+/// Writes the packed value `v` to the start of `bytes` (nothing for the
+/// deep formats, which `deep` writes).
 #[inline]
 pub fn store(format: ColorFormat, bytes: &mut [u8], v: u32) {
     let le = v.to_le_bytes();
-    let n = format.bytes_per_pixel();
-    bytes[..n].copy_from_slice(&le[..n]);
+    let n = format.bytes_per_pixel().min(4);
+    if !format.is_deep() {
+        bytes[..n].copy_from_slice(&le[..n]);
+    }
 }
 
 /// Packs unorm bytes RGBA into `format`. Where bits are lost, `dither` is
@@ -88,6 +96,7 @@ pub fn pack(format: ColorFormat, [r, g, b, a]: [u8; 4], dither: Option<u32>) -> 
             };
             (r << 11) | (g << 5) | b
         }
+        ColorFormat::Rgba16 | ColorFormat::Rgba32F => 0,
     }
 }
 
@@ -100,6 +109,7 @@ pub fn unpack(format: ColorFormat, v: u32) -> [u8; 4] {
         ColorFormat::Bgra8 => [c2, c1, c0, c3],
         ColorFormat::Rgb8 => [c0, c1, c2, 255],
         ColorFormat::Rgb565 => [expand5((v >> 11) & 31), expand6((v >> 5) & 63), expand5(v & 31), 255],
+        ColorFormat::Rgba16 | ColorFormat::Rgba32F => [0; 4],
     }
 }
 
@@ -111,5 +121,6 @@ pub fn mask_bits(format: ColorFormat, mask: ColorMask) -> u32 {
         ColorFormat::Bgra8 => m(mask.b, 0xff) | m(mask.g, 0xff00) | m(mask.r, 0xff_0000) | m(mask.a, 0xff00_0000),
         ColorFormat::Rgb8 => m(mask.r, 0xff) | m(mask.g, 0xff00) | m(mask.b, 0xff_0000),
         ColorFormat::Rgb565 => m(mask.r, 0xf800) | m(mask.g, 0x07e0) | m(mask.b, 0x001f),
+        ColorFormat::Rgba16 | ColorFormat::Rgba32F => 0,
     }
 }

@@ -316,6 +316,19 @@ pub fn fragment(
     depth_max: u32,
     textures: &crate::texture::TextureSet<'_>,
 ) -> (Option<[u8; 4]>, Option<u32>) {
+    let (c, z) = fragment_f32(key, planes, (px, row), fog_u, depth_max, textures);
+    (c.map(|c| c.map(unorm8)), z)
+}
+
+/// [`fragment`] with the colour left in f32, unclamped (the deep formats').
+pub fn fragment_f32(
+    key: &crate::key::ShadeKey,
+    planes: &Planes,
+    (px, row): (f32, f32),
+    fog_u: &FogUniforms,
+    depth_max: u32,
+    textures: &crate::texture::TextureSet<'_>,
+) -> (Option<[f32; 4]>, Option<u32>) {
     let z = key.depth.then(|| unorm_depth(planes.at(slot::Z, px, row), depth_max));
     if !key.color {
         return (None, z);
@@ -335,7 +348,7 @@ pub fn fragment(
     }
     let secondary = key.color_sum.then(|| [0, 1, 2].map(|c| colour(slot::SECONDARY + c)));
     let fog = key.fog.map(|m| (m, planes.at(slot::FOG, px, row) * w, fog_u));
-    (Some(shade(primary, secondary, fog).map(unorm8)), z)
+    (Some(shade(primary, secondary, fog)), z)
 }
 
 /// Unit `u`'s texture coordinates (s, t, r, q) at pixel `(px, row)`:

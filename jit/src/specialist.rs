@@ -225,6 +225,9 @@ impl Specialist {
     /// thread (if that thread cannot run, the specialist keeps its quick code).
     pub fn compile_tier(key: &FragmentKey, tier: Tier) -> Result<Specialist, SpecialistError> {
         key.validate()?;
+        if key.color_format.is_deep() {
+            return Err(CompileError::DeepFormat(key.color_format).into());
+        }
         let first = Self::compile_code(key, tier.first())?;
         let upgrade = (tier == Tier::Tiered).then(|| {
             let upgrade = Upgrade {

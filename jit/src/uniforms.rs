@@ -19,6 +19,23 @@ pub struct FragmentUniforms {
     pub stencil_write_mask: u8,
     /// Fog parameters and colour (f32 bits), read by the shading stage.
     pub fog: crate::shade::FogUniforms,
+    /// What the deep colour formats read (`crate::deep`); specialists never do.
+    pub deep: DeepUniforms,
+}
+
+/// The values of [`FragmentUniforms`] at f32 precision, for the deep colour
+/// formats, as f32 bit patterns so that uniforms stay `Eq + Hash`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct DeepUniforms {
+    /// `glAlphaFunc`'s reference, in `[0, 1]`.
+    pub alpha_ref: u32,
+    /// `glBlendColor`.
+    pub blend_color: [u32; 4],
+    /// Non-zero when fragment colours are clamped to `[0, 1]` in float
+    /// buffers too (`GL_CLAMP_FRAGMENT_COLOR` `GL_TRUE`, `OSMesaColorClamp`);
+    /// 0 is GL's `GL_FIXED_ONLY`. Unorm buffers always clamp.
+    pub clamp: u32,
 }
 
 impl Default for FragmentUniforms {
@@ -33,6 +50,7 @@ impl Default for FragmentUniforms {
             stencil_value_mask: 0xff,
             stencil_write_mask: 0xff,
             fog: crate::shade::FogUniforms::default(),
+            deep: DeepUniforms::default(),
         }
     }
 }

@@ -121,6 +121,7 @@ fn uniforms() -> impl Strategy<Value = FragmentUniforms> {
                 stencil_value_mask: vm,
                 stencil_write_mask: wm,
                 fog: FogUniforms::default(),
+                deep: Default::default(),
             },
         )
 }
@@ -1230,4 +1231,165 @@ fn a_view_made_for_another_key_is_not_read() {
         });
         assert_eq!(got, want);
     }
+}
+
+/// The deep colour formats run on the interpreter only: the JIT refuses
+/// them (`CompileError::DeepFormat`), so a draw in them falls back to the
+/// interpreter and no specialist can disagree with it.
+#[test]
+fn the_jit_refuses_the_deep_formats() {
+    for format in [ColorFormat::Rgba16, ColorFormat::Rgba32F] {
+        let key = FragmentKey::new(format, Some(DepthFormat::D24), true);
+        let Err(err) = Specialist::compile(&key) else {
+            panic!("no specialist for a deep format")
+        };
+        assert!(
+            matches!(
+                err,
+                softgl_jit::SpecialistError::Compile(softgl_jit::compile::CompileError::DeepFormat(f)) if f == format
+            ),
+            "{err}"
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// The deep path's tests and their writes are the 8-bit path's: for a
+    /// key without alpha test (whose reference differs in precision), the
+    /// same spans leave depth and stencil identical in RGBA8 and in RGBA16
+    /// and RGBA32F, and without blending or logic op each written RGBA16
+    /// channel is the RGBA8 one widened (v * 257, the span's bytes being
+    /// exact in both) and each RGBA32F channel the byte over 255.
+    #[test]
+    fn the_deep_path_tests_and_writes_as_the_8_bit_path(key in key(), u in uniforms(), seed in any::<u64>()) {
+        let base = FragmentKey { alpha_test: None, color_format: ColorFormat::Rgba8, dither: false, ..key }.normalized();
+        let mut rng = Rng(softgl_jit::rng::Rng::new((seed ^ (seed >> 32)) as u32));
+        let mut b8 = Buffers::random(&base, &mut rng);
+        let spans = spans(&b8, &base, &mut rng);
+        let before = b8.clone();
+        interp::run(&base, &u, &spans, &mut b8.target()).expect("the key names the buffers");
+        for format in [ColorFormat::Rgba16, ColorFormat::Rgba32F] {
+            let deep = FragmentKey { color_format: format, ..base }.normalized();
+            let mut b = before.clone();
+            b.format = format;
+            let bpp = format.bytes_per_pixel();
+            b.stride = b.width as usize * bpp;
+            // The same colours, widened: v * 257, or v / 255 as f32.
+            b.color = before.color_pixels().iter().flat_map(|p| widen(format, *p)).collect();
+            b.color.resize(b.stride * b.height as usize, 0);
+            interp::run(&deep, &u, &spans, &mut b.target()).expect("the key names the buffers");
+            prop_assert_eq!(&b.depth16, &b8.depth16);
+            prop_assert_eq!(&b.depth32, &b8.depth32);
+            prop_assert_eq!(&b.stencil, &b8.stencil);
+            if base.blend.is_none() && base.logic_op.is_none() {
+                let want: Vec<u8> = b8.color_pixels().iter().flat_map(|p| widen(format, *p)).collect();
+                prop_assert_eq!(&b.color[..want.len()], &want[..], "{:?} colours", format);
+            }
+        }
+    }
+}
+
+/// RGBA bytes as a deep format stores them: `v * 257`, or `v / 255` in f32
+/// (what a span's byte becomes in the deep path, and back exactly).
+fn widen(format: ColorFormat, p: [u8; 4]) -> Vec<u8> {
+    match format {
+        ColorFormat::Rgba16 => p.iter().flat_map(|&v| (u16::from(v) * 257).to_ne_bytes()).collect(),
+        _ => p
+            .iter()
+            .flat_map(|&v| (f32::from(v) * (1.0 / 255.0)).to_ne_bytes())
+            .collect(),
+    }
+}
+
+impl Buffers {
+    /// The RGBA8 pixels, rows bottom-up as stored, without the row padding.
+    fn color_pixels(&self) -> Vec<[u8; 4]> {
+        assert_eq!(self.format, ColorFormat::Rgba8);
+        (0..self.height as usize)
+            .flat_map(|row| {
+                let line = &self.color[row * self.stride..][..self.width as usize * 4];
+                line.chunks_exact(4)
+                    .map(|p| [p[0], p[1], p[2], p[3]])
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    }
+}
+
+/// One shaded fragment by hand in each deep format: RGBA16 clamps (1.5 to
+/// 65535) and converts with llvmpipe's rounding, then blends `SRC_ALPHA,
+/// ONE_MINUS_SRC_ALPHA` in 16-bit unorm; RGBA32F adds unclamped.
+#[test]
+fn deep_fragments_by_hand() {
+    let shade = ShadeKey {
+        color: true,
+        ..ShadeKey::default()
+    };
+    let mut p = Planes::default();
+    for (k, v) in [(0, 1.0), (1, 0.25), (2, 1.5), (3, 0.1), (4, 0.5)] {
+        p.constant(k, v);
+    }
+    let mut span = FragmentSpan::new(0, 0);
+    span.set(0, [9, 9, 9, 9], 0);
+    let u = FragmentUniforms::default();
+    let run = |format: ColorFormat, blend: BlendKey, dst: &[u8]| {
+        let key = FragmentKey {
+            shade: Some(shade),
+            blend: Some(blend),
+            ..FragmentKey::new(format, None, false)
+        };
+        let mut color = dst.to_vec();
+        let bpp = format.bytes_per_pixel();
+        let mut target = Target::new(1, 1, format, &mut color, bpp, None, None).unwrap();
+        interp::run_with_planes(
+            &key,
+            &u,
+            &TextureSet::default(),
+            std::slice::from_ref(&span),
+            &[p],
+            &mut target,
+        )
+        .unwrap();
+        color
+    };
+    let over = BlendKey {
+        src_rgb: BlendFactor::SrcAlpha,
+        dst_rgb: BlendFactor::OneMinusSrcAlpha,
+        src_alpha: BlendFactor::SrcAlpha,
+        dst_alpha: BlendFactor::OneMinusSrcAlpha,
+        ..BlendKey::DEFAULT
+    };
+    let dst16: Vec<u8> = [0x1000u16, 0x8000, 0xffff, 0x4000]
+        .iter()
+        .flat_map(|v| v.to_ne_bytes())
+        .collect();
+    let out = run(ColorFormat::Rgba16, over, &dst16);
+    let got: Vec<u16> = out.chunks_exact(2).map(|c| u16::from_ne_bytes([c[0], c[1]])).collect();
+    // Source (0.25, 1.5→1, 0.1, 0.5): 16384, 65535, 6554, 32768; alpha 32768.
+    let m = softgl_jit::deep::mul_unorm16;
+    let want: Vec<u16> = [(16384u16, 0x1000u16), (65535, 0x8000), (6554, 0xffff), (32768, 0x4000)]
+        .iter()
+        .map(|&(s, d)| m(s, 32768).saturating_add(m(d, 65535 - 32768)))
+        .collect();
+    assert_eq!(got, want);
+    assert_eq!(softgl_jit::deep::unorm16(0.1), 6554);
+    let add = BlendKey {
+        src_rgb: BlendFactor::One,
+        dst_rgb: BlendFactor::One,
+        src_alpha: BlendFactor::One,
+        dst_alpha: BlendFactor::One,
+        ..BlendKey::DEFAULT
+    };
+    let dst32: Vec<u8> = [0.75f32, -0.5, 2.0, 0.25]
+        .iter()
+        .flat_map(|v| v.to_ne_bytes())
+        .collect();
+    let out = run(ColorFormat::Rgba32F, add, &dst32);
+    let got: Vec<f32> = out
+        .chunks_exact(4)
+        .map(|c| f32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+        .collect();
+    assert_eq!(got, vec![0.25 + 0.75, 1.5 - 0.5, 0.1 + 2.0, 0.5 + 0.25]);
 }

@@ -89,6 +89,8 @@ fn bpp(format: ColorFormat) -> usize {
         ColorFormat::Rgba8 | ColorFormat::Bgra8 => 4,
         ColorFormat::Rgb8 => 3,
         ColorFormat::Rgb565 => 2,
+        ColorFormat::Rgba16 => 8,
+        ColorFormat::Rgba32F => 16,
     }
 }
 
@@ -275,6 +277,9 @@ fn encode(format: ColorFormat, [r, g, b, a]: [u8; 4]) -> ([u8; 4], usize) {
             let [lo, hi] = spec_565([r, g, b, a]).to_le_bytes();
             ([lo, hi, 0, 0], 2)
         }
+        ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+            unreachable!("the byte formats only: the deep ones are tests/contract.rs's")
+        }
     }
 }
 
@@ -416,6 +421,9 @@ fn blend_cases(format: ColorFormat) -> Vec<([u8; 4], [u8; 4])> {
                     }
                     // No stored alpha: the destination reads alpha 1.
                     ColorFormat::Rgb8 => cases.push((pick(sc, sa), pick(dc, 255))),
+                    ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+                        unreachable!("the byte formats only: the deep ones are tests/contract.rs's")
+                    }
                     ColorFormat::Rgb565 => {
                         // Stored 5/6-bit values, read as the nearest byte.
                         const R5: [u32; 6] = [0, 1, 15, 16, 30, 31];

@@ -22,8 +22,8 @@ pub extern "C" fn OSMesaCreateContext(format: GLenum, sharelist: OSMesaContext) 
 }
 
 /// `OSMesaCreateContextExt`: `NULL` for an unknown format or negative sizes.
-/// Accumulation bits are accepted and ignored; softgl has no accumulation
-/// buffer yet (`glAccum` is `GL_INVALID_OPERATION`). `sharelist` is ignored:
+/// Any accumulation bits give an RGBA buffer of 16 bits a channel, as
+/// Mesa's (`GL_ACCUM_RED_BITS` 16). `sharelist` is ignored:
 /// softgl has no shareable objects (textures, display lists) yet.
 #[no_mangle]
 pub extern "C" fn OSMesaCreateContextExt(
@@ -41,7 +41,7 @@ pub extern "C" fn OSMesaCreateContextExt(
         if !known || depth_bits < 0 || stencil_bits < 0 || accum_bits < 0 {
             return std::ptr::null_mut();
         }
-        create_context(format, depth_bits, stencil_bits) as OSMesaContext
+        create_context(format, depth_bits, stencil_bits, accum_bits) as OSMesaContext
     })
 }
 
@@ -303,8 +303,9 @@ fn osmesa_proc(name: &str) -> Option<*const c_void> {
     Some(p)
 }
 
-/// `OSMesaColorClamp`: recorded only. softgl's colour buffers hold unorm
-/// values, so colours are always clamped (Mesa leaves float buffers unclamped).
+/// `OSMesaColorClamp`: recorded, without effect, as in Mesa 22.3.6: fragment
+/// colours in a `GL_FLOAT` buffer are unclamped whatever it says (see
+/// `OsContext::set_clamp`).
 #[no_mangle]
 pub extern "C" fn OSMesaColorClamp(enable: u8) {
     with_current((), |os| os.set_clamp(enable != 0))

@@ -90,6 +90,8 @@ impl UserFormat {
             UserFormat::Channels(Order::Rgba, Channel::U8) => Some(ColorFormat::Rgba8),
             UserFormat::Channels(Order::Bgra, Channel::U8) => Some(ColorFormat::Bgra8),
             UserFormat::Channels(Order::Rgb, Channel::U8) => Some(ColorFormat::Rgb8),
+            UserFormat::Channels(Order::Rgba, Channel::U16) => Some(ColorFormat::Rgba16),
+            UserFormat::Channels(Order::Rgba, Channel::F32) => Some(ColorFormat::Rgba32F),
             UserFormat::Channels(..) => None,
         }
     }
@@ -98,10 +100,14 @@ impl UserFormat {
         self.direct().is_some()
     }
 
-    /// The format softgl renders in: the caller's own, or RGBA8 (RGB8 when
-    /// the caller's has no alpha, so that destination alpha reads 1 as there).
+    /// The format softgl renders in: the caller's own, else RGBA at the
+    /// caller's precision (16-bit or float channels, as Mesa renders them),
+    /// or RGBA8 (RGB8 when the caller's bytes have no alpha, so that
+    /// destination alpha reads 1 as there).
     pub fn render_format(self) -> ColorFormat {
         self.direct().unwrap_or(match self {
+            UserFormat::Channels(_, Channel::U16) => ColorFormat::Rgba16,
+            UserFormat::Channels(_, Channel::F32) => ColorFormat::Rgba32F,
             UserFormat::Channels(Order::Rgb | Order::Bgr, _) => ColorFormat::Rgb8,
             _ => ColorFormat::Rgba8,
         })
@@ -109,8 +115,8 @@ impl UserFormat {
 }
 
 /// Writes `fb`'s colours into `dst` in `format`: rows `stride` bytes apart,
-/// the top row first when `top_down`. Bytes become `v * 257` in 16 bits and
-/// `v * (1/255)` in floats (Mesa's unorm8 to float, bit for bit).
+/// the top row first when `top_down`. 16-bit and float channels come from
+/// a buffer of their precision, exactly; bytes from a byte buffer.
 pub fn store(fb: &Framebuffer, format: UserFormat, dst: &mut [u8], stride: usize, top_down: bool) {
     let UserFormat::Channels(order, channel) = format else {
         return;
@@ -123,12 +129,13 @@ pub fn store(fb: &Framebuffer, format: UserFormat, dst: &mut [u8], stride: usize
         let line = &mut dst[row * stride..][..w as usize * bpp];
         for (x, px) in line.chunks_exact_mut(bpp).enumerate() {
             let rgba = fb.pixel(x as u32, y).unwrap_or([0; 4]);
+            let deep = fb.pixel_f32(x as u32, y).unwrap_or([0.0; 4]);
             for (out, &c) in px.chunks_exact_mut(size).zip(order.channels()) {
-                let v = rgba[c];
                 match channel {
-                    Channel::U8 => out[0] = v,
-                    Channel::U16 => out.copy_from_slice(&(u16::from(v) * 257).to_ne_bytes()),
-                    Channel::F32 => out.copy_from_slice(&(f32::from(v) * (1.0 / 255.0)).to_ne_bytes()),
+                    Channel::U8 => out[0] = rgba[c],
+                    // v / 65535 back to v: exact.
+                    Channel::U16 => out.copy_from_slice(&((deep[c] * 65535.0).round() as u16).to_ne_bytes()),
+                    Channel::F32 => out.copy_from_slice(&deep[c].to_ne_bytes()),
                 }
             }
         }

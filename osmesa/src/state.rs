@@ -114,6 +114,8 @@ pub struct OsContext {
     format: GLenum,
     depth_bits: i32,
     stencil_bits: i32,
+    /// Whether accumulation bits were asked for (Mesa then gives RGBA16 snorm).
+    accum: bool,
     /// Made at the first `OSMesaMakeCurrent` (GL sets the viewport then).
     /// Boxed: a replaced framebuffer or a moved `OsContext` moves a pointer,
     /// not the 464-byte context (moving it took memcpy calls: 60% of a
@@ -146,14 +148,21 @@ impl OsContext {
             format,
             depth_bits,
             stencil_bits,
+            accum: false,
             gl: None,
             gl_state: GlState::default(),
             binding: None,
             row_length: 0,
             y_up: true,
-            clamp: true,
+            clamp: false,
             depth_view: Vec::new(),
         }
+    }
+
+    /// Gives the framebuffers this context makes an accumulation buffer
+    /// (`accumBits` > 0 at creation).
+    pub fn set_accum(&mut self, accum: bool) {
+        self.accum = accum;
     }
 
     /// The OSMesa format it was created with.
@@ -172,6 +181,12 @@ impl OsContext {
     }
 
     /// `OSMesaColorClamp`'s flag.
+    /// Records `OSMesaColorClamp`'s flag. It changes nothing, as in Mesa
+    /// 22.3.6: its OSMesa framebuffer never counts as a float one, so
+    /// `GL_CLAMP_FRAGMENT_COLOR` is ignored there and fragment colours in a
+    /// `GL_FLOAT` buffer stay unclamped either way (measured:
+    /// `osmesa/tests/c/deep.c`, docs/llvmpipe-facts.md, "Deep colour buffers").
+    /// The Rust API's `Context::set_clamp_fragment_color` is GL's clamp.
     pub fn set_clamp(&mut self, clamp: bool) {
         self.clamp = clamp;
     }
@@ -271,7 +286,10 @@ impl OsContext {
             // Not the previous caller's memory: a buffer of softgl's own.
             Some(Framebuffer::new(desc)?)
         };
-        if let Some(fb) = fb {
+        if let Some(mut fb) = fb {
+            if self.accum {
+                fb = fb.with_accum_buffer()?;
+            }
             match &mut self.gl {
                 Some(gl) => {
                     gl.replace_framebuffer(fb);
@@ -392,11 +410,12 @@ pub fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
 
 /// Registers a new context (`format` one of the OSMesa formats; `depth_bits`
 /// and `stencil_bits` as `OSMesaCreateContextExt` takes them) and returns its
-/// handle, never 0.
-pub fn create_context(format: GLenum, depth_bits: i32, stencil_bits: i32) -> usize {
+/// handle, never 0. `accum_bits` > 0 asks for an accumulation buffer.
+pub fn create_context(format: GLenum, depth_bits: i32, stencil_bits: i32, accum_bits: i32) -> usize {
     static NEXT: AtomicUsize = AtomicUsize::new(1);
     let id = NEXT.fetch_add(1, Ordering::Relaxed) << 4;
-    let ctx = OsContext::new(format, depth_bits, stencil_bits);
+    let mut ctx = OsContext::new(format, depth_bits, stencil_bits);
+    ctx.set_accum(accum_bits > 0);
     lock(registry()).insert(id, share(ctx));
     id
 }
@@ -852,7 +871,7 @@ mod tests {
 
     #[test]
     fn with_gl_keeps_the_context_usable_after_a_panic() {
-        let h = create_context(OSMESA_RGBA, 0, 0);
+        let h = create_context(OSMESA_RGBA, 0, 0, 0);
         let mut buf = vec![0u8; 2 * 2 * 4];
         // SAFETY: `buf` holds 2×2 RGBA pixels and outlives the binding (released below).
         unsafe { make_current(h, buf.as_mut_ptr(), GL_UNSIGNED_BYTE, 2, 2) }.unwrap();
@@ -866,7 +885,7 @@ mod tests {
 
     /// A 2x2 RGBA context current on this thread, drawing into `buf`.
     fn current_2x2(buf: &mut [u8; 16]) -> usize {
-        let h = create_context(OSMESA_RGBA, 0, 0);
+        let h = create_context(OSMESA_RGBA, 0, 0, 0);
         // SAFETY: `buf` holds 2x2 RGBA pixels and outlives the binding (the
         // tests release or destroy the context before it goes).
         unsafe { make_current(h, buf.as_mut_ptr(), GL_UNSIGNED_BYTE, 2, 2) }.unwrap();

@@ -23,6 +23,7 @@ const PIXEL_MODE_BIT: u32 = 0x20;
 const LIGHTING_BIT: u32 = 0x40;
 const FOG_BIT: u32 = 0x80;
 const DEPTH_BIT: u32 = 0x100;
+const ACCUM_BUFFER_BIT: u32 = 0x200;
 const STENCIL_BIT: u32 = 0x400;
 const VIEWPORT_BIT: u32 = 0x800;
 const TRANSFORM_BIT: u32 = 0x1000;
@@ -204,6 +205,10 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         gl.depth_func(st.depth_func)?;
         gl.depth_mask(st.depth_write)?;
         gl.clear_depth(st.clear_depth)?;
+    }
+    if m & ACCUM_BUFFER_BIT != 0 {
+        let [r, g, b, a] = st.clear_accum;
+        gl.clear_accum(r, g, b, a)?;
     }
     if m & (STENCIL_BIT | ENABLE_BIT) != 0 {
         set_cap(gl, Capability::StencilTest, st.stencil_test)?;

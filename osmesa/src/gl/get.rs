@@ -4,7 +4,7 @@ use super::enums::{self, Cap};
 use crate::consts::*;
 use crate::gl_state::{GlState, PixelStore, HINTS};
 use crate::state::with_gl;
-use softgl::{Backend, ColorFormat, Context, GlEnum, GlError, GlResult, MatrixMode};
+use softgl::{Backend, Context, GlEnum, GlError, GlResult, MatrixMode};
 use std::ffi::c_char;
 
 /// A queried value before conversion to the caller's type.
@@ -117,14 +117,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     let s = gl.state();
     let fb = gl.framebuffer_pending();
     let rect = |r: softgl::state::WindowRect| Val::I(vec![r.x.into(), r.y.into(), r.width.into(), r.height.into()]);
-    let color_bits = |c: usize| -> i64 {
-        match (fb.color_format(), c) {
-            (ColorFormat::Rgb565, 1) => 6,
-            (ColorFormat::Rgb565, 3) | (ColorFormat::Rgb8, 3) => 0,
-            (ColorFormat::Rgb565, _) => 5,
-            _ => 8,
-        }
-    };
+    let color_bits = |c: usize| -> i64 { fb.color_format().channel_bits(c).into() };
     if let Some(v) = store_value(&os.pack, pname, true).or_else(|| store_value(&os.unpack, pname, false)) {
         return Ok(v);
     }
@@ -181,7 +174,12 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D55 => i(color_bits(3)),
         0x0D56 => i(fb.depth_format().map_or(0, |f| f.max_value().count_ones())), // DEPTH_BITS
         0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }),                        // STENCIL_BITS
-        0x0D58..=0x0D5B => i(0),                                                  // ACCUM_*_BITS: none yet
+        0x0D58..=0x0D5B => i(if fb.has_accum() {
+            i64::from(softgl::accum::ACCUM_BITS)
+        } else {
+            0
+        }), // ACCUM_*_BITS
+        0x0B80 => Val::N(s.clear_accum.iter().map(|&c| f64::from(c)).collect()),  // ACCUM_CLEAR_VALUE
         0x0C32 => Val::B(vec![false]),                                            // DOUBLEBUFFER
         0x0C33 => Val::B(vec![false]),                                            // STEREO
         0x0C31 => Val::B(vec![true]),                                             // RGBA_MODE

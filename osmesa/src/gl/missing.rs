@@ -23,14 +23,6 @@ exports! {
     [] fn glGetPolygonStipple(_mask: *mut u8) {
         missing_now()
     }
-    /// Accumulation buffer (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glAccum(_op: GLenum, _value: f32) {
-        missing()
-    }
-    /// Accumulation buffer (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glClearAccum(_r: f32, _g: f32, _b: f32, _a: f32) {
-        missing()
-    }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glRenderMode(_mode: GLenum) -> i32 {
         missing_now();

@@ -21,6 +21,7 @@ macro_rules! exports {
     };
 }
 
+mod accum;
 mod arrays;
 mod attrib;
 mod buffers;
@@ -44,6 +45,7 @@ mod state;
 mod texture;
 mod texunit;
 
+pub use accum::*;
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
 pub use buffers::*;
@@ -68,6 +70,7 @@ pub use texunit::*;
 /// Every `gl*` export of this library: each module's `exports!` table.
 fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)> {
     [
+        accum::table,
         arrays::table,
         attrib::table,
         buffers::table,

@@ -125,8 +125,17 @@ fn read_pixel(fb: &Framebuffer, src: Source, x: i64, y: i64, out: &mut Vec<f64>)
     out.clear();
     match src {
         Source::Color(channels) => {
-            // `c * (1/255)` in f32: Mesa's unorm8-to-float, bit for bit.
-            let p = fb.pixel(x, y)?.map(|c| f64::from(f32::from(c) * (1.0 / 255.0)));
+            // `c * (1/255)` in f32: Mesa's unorm8-to-float, bit for bit; the
+            // deep formats' values as floats (a float buffer's unclamped).
+            // Mesa 22 clamps reads of its float OSMesa buffer to [0, 1] (its
+            // window-system framebuffer counts as fixed-point for
+            // GL_CLAMP_READ_COLOR: docs/llvmpipe-facts.md, "Deep colour buffers").
+            let p = if fb.color_format().is_deep() {
+                fb.pixel_f32(x, y)?
+                    .map(|c| f64::from(if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) }))
+            } else {
+                fb.pixel(x, y)?.map(|c| f64::from(f32::from(c) * (1.0 / 255.0)))
+            };
             out.extend(
                 channels
                     .iter()
@@ -265,6 +274,7 @@ unsafe fn read_pixels(
     // which is exactly `len` bytes from `pixels`.
     let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
     let stencil = matches!(src, Source::Stencil);
+    let float_src = matches!(src, Source::Color(_)) && fb.color_format() == softgl::ColorFormat::Rgba32F;
     let depth_bits = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
     let mut vals = Vec::with_capacity(4);
     for j in 0..h {
@@ -279,6 +289,20 @@ unsafe fn read_pixels(
                 continue;
             }
             for (k, &v) in vals.iter().take(comps).enumerate() {
+                if float_src && matches!(ty, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT) {
+                    // Mesa's `_mesa_float_to_unorm`: f32 product, rounded half to even.
+                    let max = if ty == GL_UNSIGNED_BYTE { 255.0f32 } else { 65535.0 };
+                    let v = v as f32;
+                    let raw = if v < 0.0 {
+                        0.0
+                    } else if v > 1.0 {
+                        max
+                    } else {
+                        (v * max).round_ties_even()
+                    };
+                    put(&mut dst[at + k * size..], ty, f64::from(raw), true, pack.swap_bytes);
+                    continue;
+                }
                 put(&mut dst[at + k * size..], ty, v, stencil, pack.swap_bytes);
             }
         }

@@ -131,8 +131,9 @@ exports! {
             if mask & !known != 0 {
                 return Err(GlError::InvalidValue);
             }
-            // No accumulation buffer: clearing it has no effect, as for any absent buffer.
+            // Without an accumulation buffer, its bit has no effect, as for any absent buffer.
             gl.clear(ClearMask {
+                accum: mask & GL_ACCUM_BUFFER_BIT != 0,
                 color: mask & GL_COLOR_BUFFER_BIT != 0,
                 depth: mask & GL_DEPTH_BUFFER_BIT != 0,
                 stencil: mask & GL_STENCIL_BUFFER_BIT != 0,

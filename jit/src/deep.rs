@@ -1,0 +1,322 @@
+//! The deep colour formats ([`ColorFormat::Rgba16`], [`ColorFormat::Rgba32F`]),
+//! as Mesa 22.3.6's llvmpipe renders OSMesa's `GL_UNSIGNED_SHORT` and
+//! `GL_FLOAT` buffers (`docs/llvmpipe-facts.md`, "Deep colour buffers"):
+//! the fragment colour stays f32 from the planes on; RGBA16 clamps it to
+//! `[0, 1]` and converts it with llvmpipe's magic-number rounding, then
+//! blends in 16-bit unorm integers (`lp_build_mul_norm`); RGBA32F keeps it
+//! unclamped (GL's `GL_FIXED_ONLY` fragment clamping, unless the uniforms
+//! say to clamp) and blends in f32. Logic op works on RGBA16's 16-bit
+//! channels and does nothing on floats, as GL says.
+//!
+//! Only the interpreter runs these formats (the JIT refuses them:
+//! `CompileError::DeepFormat`): the slower path, leaving the 8-bit code as it is.
+
+use crate::interp::{depth_stage, lanes, row_of, stencil_stage};
+use crate::key::{BlendEquation, BlendFactor, BlendKey, ColorFormat, FragmentKey, Stage};
+use crate::shade::{self, saturate, Planes};
+use crate::span::{FragmentSpan, SPAN_MAX};
+use crate::target::Target;
+use crate::texture::TextureSet;
+use crate::uniforms::FragmentUniforms;
+
+/// A float channel to 16-bit unorm as llvmpipe converts it
+/// (`lp_build_clamped_float_to_unsigned_norm`, `lp_bld_conv.c`): clamped to
+/// `[0, 1]` (NaN as 0), times `65535/65536`, plus `2^7`, whose f32 mantissa's
+/// low 16 bits are then the value, rounded to nearest even.
+#[inline]
+pub fn unorm16(c: f32) -> u16 {
+    const SCALE: f32 = (65535.0f64 / 65536.0) as f32;
+    (saturate(c) * SCALE + 128.0).to_bits() as u16
+}
+
+/// A 16-bit unorm channel as a float (`v * (1 / 65535)`, `util_format`'s unpack).
+#[inline]
+pub fn unorm16_to_float(v: u16) -> f32 {
+    f32::from(v) * (1.0 / 65535.0)
+}
+
+/// `a * b / 65535` as llvmpipe's `lp_build_mul_norm` computes it on 32-bit
+/// lanes: `(t + (t >> 16) + 0x8000) >> 16` with `t = a * b`.
+#[inline]
+pub fn mul_unorm16(a: u16, b: u16) -> u16 {
+    let t = u32::from(a) * u32::from(b);
+    ((t + (t >> 16) + 0x8000) >> 16) as u16
+}
+
+/// The stored pixel at the start of `bytes` as RGBA channels: 16-bit values
+/// widened, or f32 bits.
+#[inline]
+pub fn load(format: ColorFormat, bytes: &[u8]) -> [u32; 4] {
+    match format {
+        ColorFormat::Rgba16 => std::array::from_fn(|c| u32::from(u16::from_ne_bytes([bytes[2 * c], bytes[2 * c + 1]]))),
+        ColorFormat::Rgba32F => std::array::from_fn(|c| {
+            u32::from_ne_bytes([bytes[4 * c], bytes[4 * c + 1], bytes[4 * c + 2], bytes[4 * c + 3]])
+        }),
+        _ => [0; 4],
+    }
+}
+
+/// Stores channel `c` of a pixel (as [`load`] gives it) at the start of `bytes`.
+#[inline]
+pub fn store_channel(format: ColorFormat, bytes: &mut [u8], c: usize, v: u32) {
+    match format {
+        ColorFormat::Rgba16 => bytes[2 * c..2 * c + 2].copy_from_slice(&(v as u16).to_ne_bytes()),
+        ColorFormat::Rgba32F => bytes[4 * c..4 * c + 4].copy_from_slice(&v.to_ne_bytes()),
+        _ => {}
+    }
+}
+
+/// The stored pixel as float RGBA.
+#[inline]
+pub fn to_float(format: ColorFormat, v: [u32; 4]) -> [f32; 4] {
+    match format {
+        ColorFormat::Rgba16 => v.map(|c| unorm16_to_float(c as u16)),
+        _ => v.map(f32::from_bits),
+    }
+}
+
+/// A float colour as the format stores it: [`unorm16`], or the f32 bits.
+#[inline]
+pub fn from_float(format: ColorFormat, c: [f32; 4]) -> [u32; 4] {
+    match format {
+        ColorFormat::Rgba16 => c.map(|v| u32::from(unorm16(v))),
+        _ => c.map(f32::to_bits),
+    }
+}
+
+/// GL's blend in 16-bit unorm integers, llvmpipe's way for RGBA16: factors
+/// in unorm16, products by [`mul_unorm16`], sums and differences saturated.
+pub fn blend16(key: &BlendKey, src: [u16; 4], dst: [u16; 4], k: [u16; 4]) -> [u16; 4] {
+    const ONE: u16 = u16::MAX;
+    let factor = |f: BlendFactor, c: usize| -> u16 {
+        match f {
+            BlendFactor::Zero => 0,
+            BlendFactor::One => ONE,
+            BlendFactor::SrcColor => src[c],
+            BlendFactor::OneMinusSrcColor => ONE - src[c],
+            BlendFactor::DstColor => dst[c],
+            BlendFactor::OneMinusDstColor => ONE - dst[c],
+            BlendFactor::SrcAlpha => src[3],
+            BlendFactor::OneMinusSrcAlpha => ONE - src[3],
+            BlendFactor::DstAlpha => dst[3],
+            BlendFactor::OneMinusDstAlpha => ONE - dst[3],
+            BlendFactor::ConstantColor => k[c],
+            BlendFactor::OneMinusConstantColor => ONE - k[c],
+            BlendFactor::ConstantAlpha => k[3],
+            BlendFactor::OneMinusConstantAlpha => ONE - k[3],
+            BlendFactor::SrcAlphaSaturate => {
+                if c == 3 {
+                    ONE
+                } else {
+                    src[3].min(ONE - dst[3])
+                }
+            }
+        }
+    };
+    std::array::from_fn(|c| {
+        let (sf, df, eq) = if c < 3 {
+            (key.src_rgb, key.dst_rgb, key.eq_rgb)
+        } else {
+            (key.src_alpha, key.dst_alpha, key.eq_alpha)
+        };
+        let s = mul_unorm16(src[c], factor(sf, c));
+        let d = mul_unorm16(dst[c], factor(df, c));
+        match eq {
+            BlendEquation::Add => s.saturating_add(d),
+            BlendEquation::Subtract => s.saturating_sub(d),
+            BlendEquation::ReverseSubtract => d.saturating_sub(s),
+            BlendEquation::Min => src[c].min(dst[c]),
+            BlendEquation::Max => src[c].max(dst[c]),
+        }
+    })
+}
+
+/// GL's blend in f32, unclamped, llvmpipe's way for RGBA32F: `src · sf`
+/// and `dst · df` rounded, then summed.
+pub fn blend_f32(key: &BlendKey, src: [f32; 4], dst: [f32; 4], k: [f32; 4]) -> [f32; 4] {
+    let factor = |f: BlendFactor, c: usize| -> f32 {
+        match f {
+            BlendFactor::Zero => 0.0,
+            BlendFactor::One => 1.0,
+            BlendFactor::SrcColor => src[c],
+            BlendFactor::OneMinusSrcColor => 1.0 - src[c],
+            BlendFactor::DstColor => dst[c],
+            BlendFactor::OneMinusDstColor => 1.0 - dst[c],
+            BlendFactor::SrcAlpha => src[3],
+            BlendFactor::OneMinusSrcAlpha => 1.0 - src[3],
+            BlendFactor::DstAlpha => dst[3],
+            BlendFactor::OneMinusDstAlpha => 1.0 - dst[3],
+            BlendFactor::ConstantColor => k[c],
+            BlendFactor::OneMinusConstantColor => 1.0 - k[c],
+            BlendFactor::ConstantAlpha => k[3],
+            BlendFactor::OneMinusConstantAlpha => 1.0 - k[3],
+            BlendFactor::SrcAlphaSaturate => {
+                if c == 3 {
+                    1.0
+                } else {
+                    src[3].min(1.0 - dst[3])
+                }
+            }
+        }
+    };
+    std::array::from_fn(|c| {
+        let (sf, df, eq) = if c < 3 {
+            (key.src_rgb, key.dst_rgb, key.eq_rgb)
+        } else {
+            (key.src_alpha, key.dst_alpha, key.eq_alpha)
+        };
+        let s = src[c] * factor(sf, c);
+        let d = dst[c] * factor(df, c);
+        match eq {
+            BlendEquation::Add => s + d,
+            BlendEquation::Subtract => s - d,
+            BlendEquation::ReverseSubtract => d - s,
+            BlendEquation::Min => src[c].min(dst[c]),
+            BlendEquation::Max => src[c].max(dst[c]),
+        }
+    })
+}
+
+/// The interpreter's run of `key`'s stages over one span into a deep-format
+/// `t` (`interp::run_span` hands these formats here).
+pub(crate) fn run_span(
+    key: &FragmentKey,
+    stages: &[Stage],
+    (u, textures): (&FragmentUniforms, &TextureSet<'_>),
+    (span, planes): (&FragmentSpan, &Planes),
+    t: &mut Target<'_>,
+) {
+    let mut live = t.owned_mask(span);
+    if live == 0 {
+        return;
+    }
+    let format = key.color_format;
+    let bpp = format.bytes_per_pixel();
+    let (y, x0) = (span.y, span.x);
+    // Unorm formats clamp fragment colours; floats only when asked (GL_FIXED_ONLY).
+    let clamp = format == ColorFormat::Rgba16 || u.deep.clamp != 0;
+    let clamped = |c: [f32; 4]| if clamp { c.map(saturate) } else { c };
+    let mut rgba = [[0f32; 4]; SPAN_MAX];
+    for (i, c) in rgba.iter_mut().enumerate() {
+        *c = [span.r[i], span.g[i], span.b[i], span.a[i]].map(|v| f32::from(v) * (1.0 / 255.0));
+    }
+    // The values to store, per channel (16-bit values or f32 bits), once packed.
+    let mut out = [[0u32; 4]; SPAN_MAX];
+    let mut blended = false;
+    let mut z = span.z;
+    let deep_u = &u.deep;
+    let alpha_ref = f32::from_bits(deep_u.alpha_ref);
+    let k = deep_u.blend_color.map(f32::from_bits);
+
+    for stage in stages {
+        match *stage {
+            Stage::Shade(shade) => {
+                let row = row_of(y, t.height());
+                let max = key.depth_format.map_or(0, |f| f.max_value());
+                for i in lanes(live) {
+                    let px = (x0 + i as u32) as f32;
+                    let (c, d) = shade::fragment_f32(&shade, planes, (px, row), &u.fog, max, textures);
+                    if let Some(c) = c {
+                        rgba[i] = c;
+                    }
+                    if let Some(d) = d {
+                        z[i] = d;
+                    }
+                }
+                for i in lanes(live) {
+                    rgba[i] = clamped(rgba[i]);
+                }
+            }
+            Stage::Scissor => {
+                let [sx0, sy0, sx1, sy1] = u.scissor;
+                let yi = i64::from(y);
+                for i in lanes(live) {
+                    let xi = i64::from(x0) + i as i64;
+                    let inside =
+                        xi >= i64::from(sx0) && xi < i64::from(sx1) && yi >= i64::from(sy0) && yi < i64::from(sy1);
+                    if !inside {
+                        live &= !(1 << i);
+                    }
+                }
+            }
+            Stage::AlphaTest(func) => {
+                for i in lanes(live) {
+                    if !func.test(rgba[i][3], alpha_ref) {
+                        live &= !(1 << i);
+                    }
+                }
+            }
+            Stage::StencilTest { stencil, depth_on } => stencil_stage(stencil, depth_on, u, (x0, y), &mut live, t),
+            Stage::DepthTest { depth, stencil } => depth_stage(depth, stencil, u, (x0, y, &z), &mut live, t),
+            Stage::Blend(blend) => {
+                let off0 = t.color_offset(x0, y);
+                let color = t.color();
+                for i in lanes(live) {
+                    let dst = load(format, &color[off0 + i * bpp..]);
+                    out[i] = match format {
+                        ColorFormat::Rgba16 => {
+                            let src = rgba[i].map(unorm16);
+                            let k = k.map(unorm16);
+                            blend16(&blend, src, dst.map(|v| v as u16), k).map(u32::from)
+                        }
+                        _ => blend_f32(&blend, rgba[i], dst.map(f32::from_bits), k).map(f32::to_bits),
+                    };
+                }
+                blended = true;
+            }
+            Stage::Pack { .. } => {
+                if !blended {
+                    for i in lanes(live) {
+                        out[i] = from_float(format, rgba[i]);
+                    }
+                }
+            }
+            Stage::LogicOp(op) => {
+                if format == ColorFormat::Rgba16 {
+                    let off0 = t.color_offset(x0, y);
+                    let color = t.color();
+                    for i in lanes(live) {
+                        let dst = load(format, &color[off0 + i * bpp..]);
+                        for c in 0..4 {
+                            out[i][c] = op.apply(out[i][c], dst[c]) & 0xffff;
+                        }
+                    }
+                }
+            }
+            Stage::ColorWrite(mask) => {
+                let keep = [mask.r, mask.g, mask.b, mask.a];
+                let off0 = t.color_offset(x0, y);
+                let color = t.color_mut();
+                for i in lanes(live) {
+                    let px = &mut color[off0 + i * bpp..];
+                    for c in 0..4 {
+                        if keep[c] {
+                            store_channel(format, px, c, out[i][c]);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unorm16_rounds_to_nearest_and_saturates() {
+        assert_eq!(unorm16(0.0), 0);
+        assert_eq!(unorm16(1.0), 65535);
+        assert_eq!(unorm16(2.0), 65535);
+        assert_eq!(unorm16(-1.0), 0);
+        assert_eq!(unorm16(f32::NAN), 0);
+        assert_eq!(unorm16(0.5), 32768);
+        for v in (0..=65535u16).step_by(7) {
+            assert_eq!(unorm16(unorm16_to_float(v)), v);
+        }
+        assert_eq!(mul_unorm16(65535, 65535), 65535);
+        assert_eq!(mul_unorm16(65535, 1234), 1234);
+        assert_eq!(mul_unorm16(0, 65535), 0);
+    }
+}
