@@ -378,6 +378,10 @@ pub struct Framebuffer {
     color_top_down: bool,
     depth: Option<DepthBuffer>,
     stencil: Option<Vec<u8>>,
+    /// Samples 1.. of a multisampled framebuffer, each a single-sampled
+    /// framebuffer of the same size and formats; this one holds sample 0
+    /// (`framebuffer/multisample.rs`). Empty when single-sampled.
+    pub(crate) samples: Vec<Framebuffer>,
 }
 
 impl Framebuffer {
@@ -426,6 +430,7 @@ impl Framebuffer {
             color_top_down: top_down,
             depth,
             stencil,
+            samples: Vec::new(),
         })
     }
 
@@ -447,6 +452,7 @@ impl Framebuffer {
                 DepthBuffer::D32(_) => DepthBuffer::D32(Vec::new()),
             }),
             stencil: self.stencil.as_ref().map(|_| Vec::new()),
+            samples: self.samples.iter().map(Framebuffer::hollow).collect(),
         }
     }
 
@@ -472,7 +478,7 @@ impl Framebuffer {
     }
 
     /// Byte offset of pixel `(x, y)` (window coordinates) in the color bytes.
-    fn color_offset(&self, x: u32, y: u32) -> usize {
+    pub(crate) fn color_offset(&self, x: u32, y: u32) -> usize {
         let row = if self.color_top_down {
             self.desc.height - 1 - y
         } else {

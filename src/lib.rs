@@ -31,6 +31,7 @@ pub(crate) mod immediate;
 pub mod inverse;
 pub mod lighting;
 pub mod matrix;
+pub mod multisample;
 pub mod raster;
 pub mod state;
 pub mod texture;

@@ -1,0 +1,222 @@
+//! 4× multisampling as llvmpipe does it (`docs/llvmpipe-facts.md` §23): a
+//! multisampled framebuffer is one single-sampled framebuffer per sample
+//! (sample 0 the framebuffer itself, samples 1.. in `Framebuffer::samples`).
+//! A draw into it is recorded once per sample, into a scene of its own
+//! (`context.rs`, "lanes"), with the triangle's coverage tested at that
+//! sample's position and its depth evaluated there; every other attribute
+//! is interpolated at the pixel centre, as llvmpipe's fragment shader runs
+//! once per pixel. The samples are independent (each sees the same
+//! fragments in the same order, tested against its own depth and stencil,
+//! blended with its own colour), so drawing them apart gives the bytes of
+//! drawing them together. [`Framebuffer::resolve`] averages them as
+//! `glBlitFramebuffer` does on llvmpipe.
+
+use crate::error::{GlError, GlResult};
+use crate::framebuffer::{rint_nonnegative, DepthBuffer, Framebuffer, FramebufferDesc};
+use softgl_jit::{pixel, ColorFormat, DepthTarget};
+
+/// `GL_MAX_SAMPLES`: llvmpipe supports 1 and 4 samples (`lp_screen.c`,
+/// `llvmpipe_is_format_supported`).
+pub const MAX_SAMPLES: u32 = 4;
+
+/// llvmpipe's 4× sample positions within a pixel (`lp_sample_pos_4x`,
+/// `lp_rast.c`), x right and y up from the pixel's lower-left corner in a
+/// framebuffer object (its rows are not flipped: y grows with GL's y).
+pub const SAMPLE_POSITIONS_4X: [(f32, f32); 4] = [(0.375, 0.125), (0.875, 0.375), (0.125, 0.625), (0.625, 0.875)];
+
+/// Where one sample of a multisampled framebuffer is tested: its offset from
+/// the pixel centre, in the rasterizer's fixed point (bottom-up, 8 sub-pixel
+/// bits: exact, the positions being multiples of 1/8) and in the attribute
+/// planes' frame (x right, y down), where depth is evaluated.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SampleAt {
+    pub fixed: (i64, i64),
+    pub plane: (f32, f32),
+}
+
+impl SampleAt {
+    /// Sample `s` (below 4) of llvmpipe's 4× pattern.
+    pub fn of_4x(s: usize) -> SampleAt {
+        let (x, y) = SAMPLE_POSITIONS_4X[s];
+        let one = crate::raster::ONE as f32;
+        SampleAt {
+            fixed: (((x - 0.5) * one) as i64, ((y - 0.5) * one) as i64),
+            plane: (x - 0.5, 0.5 - y),
+        }
+    }
+}
+
+/// The samples `glSampleCoverage(value, invert)` keeps, as llvmpipe's state
+/// tracker makes the mask (`st_update_sample_state`, `st_atom_msaa.c`): the
+/// first `(unsigned)(value · samples)` samples (f32 product, truncated),
+/// complemented when `invert`.
+pub fn sample_coverage_mask(value: f32, invert: bool, samples: u32) -> u32 {
+    let value = if value.is_nan() { 0.0 } else { value.clamp(0.0, 1.0) };
+    let bits = (value * samples as f32) as u32;
+    let mask = if bits >= 32 { u32::MAX } else { (1u32 << bits) - 1 };
+    if invert {
+        !mask
+    } else {
+        mask
+    }
+}
+
+impl Framebuffer {
+    /// A framebuffer of `samples` samples a pixel (1 or 4: `InvalidValue`
+    /// otherwise), each cleared as [`Framebuffer::new`] clears.
+    pub fn new_multisample(desc: FramebufferDesc, samples: u32) -> GlResult<Framebuffer> {
+        if !matches!(samples, 1 | MAX_SAMPLES) {
+            return Err(GlError::InvalidValue);
+        }
+        let mut fb = Framebuffer::new(desc)?;
+        for _ in 1..samples {
+            fb.samples.push(Framebuffer::new(desc)?);
+        }
+        Ok(fb)
+    }
+
+    /// Samples a pixel: 1, or 4 for a multisampled framebuffer.
+    pub fn samples(&self) -> u32 {
+        1 + self.samples.len() as u32
+    }
+
+    /// Sample `s`'s buffers as a single-sampled framebuffer (sample 0 is
+    /// this one's own buffers, read with the accessors that ignore the
+    /// other samples: [`Framebuffer::pixel`], [`Framebuffer::depth_at`], …).
+    pub fn sample(&self, s: u32) -> Option<&Framebuffer> {
+        match s {
+            0 => Some(self),
+            s => self.samples.get(s as usize - 1),
+        }
+    }
+
+    /// The colour at `(x, y)` of sample `s`, as [`Framebuffer::pixel`].
+    pub fn sample_pixel(&self, x: u32, y: u32, s: u32) -> Option<[u8; 4]> {
+        self.sample(s)?.pixel(x, y)
+    }
+
+    /// This framebuffer resolved to one sample a pixel, as llvmpipe's
+    /// `glBlitFramebuffer` resolves (`util_make_fs_msaa_resolve`,
+    /// `u_simple_shaders.c`): each colour channel the f32 sum of the
+    /// samples' unorm values times `1/max` (`lp_build_unsigned_norm_to_float`),
+    /// in sample order, times 0.25, then `rint(v · max)` as any fragment
+    /// colour; depth and stencil are sample 0's (`util_make_fs_blit_msaa_gen`
+    /// fetches sample 0 when the destination has one). A single-sampled
+    /// framebuffer resolves to a copy. The result owns its colour bytes,
+    /// rows bottom-up and tightly packed.
+    pub fn resolve(&self) -> GlResult<Framebuffer> {
+        let desc = *self.desc();
+        let mut out = Framebuffer::new(desc)?;
+        let format = desc.color;
+        let bpp = format.bytes_per_pixel();
+        {
+            let mut t = out.target();
+            let mut packed = Vec::with_capacity(self.samples() as usize);
+            for y in 0..desc.height {
+                for x in 0..desc.width {
+                    packed.clear();
+                    for s in 0..self.samples() {
+                        let fb = self.sample(s).expect("s < samples");
+                        let off = fb.color_offset(x, y);
+                        packed.push(pixel::load(format, &fb.color_bytes()[off..]));
+                    }
+                    let v = resolve_value(format, &packed);
+                    let o = t.color_offset(x, y);
+                    pixel::store(format, &mut t.color_mut()[o..o + bpp], v);
+                }
+            }
+            // Depth and stencil: sample 0's.
+            if let (Some(from), Some(to)) = (self.depth_buffer(), t.depth_mut()) {
+                match (from, to) {
+                    (DepthBuffer::D16(a), DepthTarget::D16(b)) => b.copy_from_slice(a),
+                    (DepthBuffer::D24(a), DepthTarget::D24(b)) | (DepthBuffer::D32(a), DepthTarget::D32(b)) => {
+                        b.copy_from_slice(a)
+                    }
+                    _ => return Err(GlError::InvalidOperation),
+                }
+            }
+            if let (Some(from), Some(to)) = (self.stencil_buffer(), t.stencil_mut()) {
+                to.copy_from_slice(from);
+            }
+        }
+        Ok(out)
+    }
+}
+
+/// The resolved packed colour of the packed sample colours `samples` of
+/// `format` ([`Framebuffer::resolve`]).
+pub fn resolve_value(format: ColorFormat, samples: &[u32]) -> u32 {
+    if samples.len() == 1 {
+        return samples[0];
+    }
+    let scale = 1.0 / samples.len() as f32;
+    // Each channel's bits (shift, width) in the packed value.
+    let channels: &[(u32, u32)] = match format {
+        ColorFormat::Rgb565 => &[(11, 5), (5, 6), (0, 5)],
+        ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8 => &[(0, 8), (8, 8), (16, 8), (24, 8)],
+    };
+    let mut out = 0u32;
+    for &(shift, width) in channels {
+        let max = (1u32 << width) - 1;
+        let to_float = (1.0f64 / f64::from(max)) as f32;
+        let mut sum = 0.0f32;
+        for &v in samples {
+            sum += ((v >> shift) & max) as f32 * to_float;
+        }
+        let avg = (sum * scale).clamp(0.0, 1.0);
+        let c = rint_nonnegative(avg * max as f32) as u32;
+        out |= c.min(max) << shift;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sample_offsets_are_exact_in_fixed_point() {
+        let fixed: Vec<_> = (0..4).map(|s| SampleAt::of_4x(s).fixed).collect();
+        assert_eq!(fixed, [(-32, -96), (96, -32), (-96, 32), (32, 96)]);
+        assert_eq!(SampleAt::of_4x(0).plane, (-0.125, 0.375));
+    }
+
+    #[test]
+    fn coverage_masks_as_mesa_makes_them() {
+        assert_eq!(sample_coverage_mask(1.0, false, 4), 0xf);
+        assert_eq!(sample_coverage_mask(0.5, false, 4), 0x3);
+        assert_eq!(sample_coverage_mask(0.74, false, 4), 0x3);
+        assert_eq!(sample_coverage_mask(0.75, false, 4), 0x7);
+        assert_eq!(sample_coverage_mask(0.0, false, 4), 0);
+        assert_eq!(sample_coverage_mask(0.5, true, 4) & 0xf, 0xc);
+    }
+
+    #[test]
+    fn resolving_averages_in_f32_and_rounds_to_even() {
+        let rgba = |c: [u8; 4]| u32::from_le_bytes(c);
+        // Equal samples stay.
+        assert_eq!(resolve_value(ColorFormat::Rgba8, &[rgba([7, 8, 9, 10]); 4]), rgba([7, 8, 9, 10]));
+        // 255 in one of four: 63.75 -> 64; in two: 127.5, a tie (in f32
+        // exactly) -> 128, even.
+        let one = resolve_value(ColorFormat::Rgba8, &[rgba([255, 0, 0, 255]), 0, 0, 0]);
+        assert_eq!(one.to_le_bytes(), [64, 0, 0, 64]);
+        let half = resolve_value(ColorFormat::Rgba8, &[rgba([255, 0, 0, 0]), rgba([255, 0, 0, 0]), 0, 0]);
+        assert_eq!(half.to_le_bytes()[0], 128);
+        // 2 in one sample of four: 0.5 -> 0 (ties to even).
+        let small = resolve_value(ColorFormat::Rgba8, &[rgba([2, 0, 0, 0]), 0, 0, 0]);
+        assert_eq!(small.to_le_bytes()[0], 0);
+    }
+
+    #[test]
+    fn a_multisampled_framebuffer_resolves_its_samples() {
+        let desc = FramebufferDesc::rgba8_d24s8(3, 2);
+        assert_eq!(Framebuffer::new_multisample(desc, 2).err(), Some(GlError::InvalidValue));
+        let fb = Framebuffer::new_multisample(desc, 4).unwrap();
+        assert_eq!(fb.samples(), 4);
+        assert!(fb.sample(3).is_some() && fb.sample(4).is_none());
+        let r = fb.resolve().unwrap();
+        assert_eq!(r.samples(), 1);
+        assert_eq!(r.pixel(2, 1), Some([0, 0, 0, 0]));
+        assert_eq!(r.depth_at(2, 1), Some(0xff_ffff));
+    }
+}
