@@ -13,6 +13,9 @@
 
 use crate::error::{GlError, GlResult};
 use crate::framebuffer::{rint_nonnegative, DepthBuffer, Framebuffer, FramebufferDesc};
+use crate::geometry::varying::Varyings;
+use crate::raster::scene::Binner;
+use crate::raster::{PrimSink, RasterParams, RasterVertex};
 use softgl_jit::{pixel, ColorFormat, DepthTarget};
 
 /// `GL_MAX_SAMPLES`: llvmpipe supports 1 and 4 samples (`lp_screen.c`,
@@ -58,6 +61,43 @@ pub fn sample_coverage_mask(value: f32, invert: bool, samples: u32) -> u32 {
         !mask
     } else {
         mask
+    }
+}
+
+/// Hands each primitive to the scene of each sample a draw writes
+/// (`Context::draw_multisample`): triangles covered at the sample's
+/// position when it has one (`GL_MULTISAMPLE` on); lines and points as at
+/// one sample a pixel, the same fragments in every sample (llvmpipe
+/// rasterizes them per sample as rectangles: not done yet).
+#[derive(Default)]
+pub(crate) struct Fan<'s> {
+    pub(crate) lanes: Vec<(Binner<'s>, Option<SampleAt>)>,
+}
+
+impl Fan<'_> {
+    /// Ends the draw in every sample: the first error of a flush.
+    pub(crate) fn finish(self) -> Result<(), softgl_jit::FragmentError> {
+        self.lanes.into_iter().map(|(b, _)| b.finish()).fold(Ok(()), Result::and)
+    }
+}
+
+impl PrimSink for Fan<'_> {
+    fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
+        for (b, at) in &mut self.lanes {
+            b.triangle_at(v, flat, params, at.as_ref());
+        }
+    }
+
+    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
+        for (sink, _) in &mut self.lanes {
+            sink.line(a, b, width, flat, params);
+        }
+    }
+
+    fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
+        for (sink, _) in &mut self.lanes {
+            sink.point(v, size, params);
+        }
     }
 }
 
