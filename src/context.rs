@@ -1445,7 +1445,9 @@ impl Context {
             let mut samples = std::mem::take(&mut self.fb.samples);
             let mut fan = crate::multisample::Fan::default();
             if mask & 1 != 0 {
-                let b = self.scene.draw(&mut self.fb, &mut self.background, self.threads, state.clone());
+                let b = self
+                    .scene
+                    .draw(&mut self.fb, &mut self.background, self.threads, state.clone());
                 fan.lanes.push((b, at(0)));
             }
             for (s, (lane, fb)) in self.lanes.iter_mut().zip(&mut samples).enumerate() {

@@ -77,7 +77,10 @@ pub(crate) struct Fan<'s> {
 impl Fan<'_> {
     /// Ends the draw in every sample: the first error of a flush.
     pub(crate) fn finish(self) -> Result<(), softgl_jit::FragmentError> {
-        self.lanes.into_iter().map(|(b, _)| b.finish()).fold(Ok(()), Result::and)
+        self.lanes
+            .into_iter()
+            .map(|(b, _)| b.finish())
+            .fold(Ok(()), Result::and)
     }
 }
 
@@ -235,7 +238,10 @@ mod tests {
     fn resolving_averages_in_f32_and_rounds_to_even() {
         let rgba = |c: [u8; 4]| u32::from_le_bytes(c);
         // Equal samples stay.
-        assert_eq!(resolve_value(ColorFormat::Rgba8, &[rgba([7, 8, 9, 10]); 4]), rgba([7, 8, 9, 10]));
+        assert_eq!(
+            resolve_value(ColorFormat::Rgba8, &[rgba([7, 8, 9, 10]); 4]),
+            rgba([7, 8, 9, 10])
+        );
         // 255 in one of four: 63.75 -> 64; in two: 127.5, a tie (in f32
         // exactly) -> 128, even.
         let one = resolve_value(ColorFormat::Rgba8, &[rgba([255, 0, 0, 255]), 0, 0, 0]);
@@ -258,5 +264,131 @@ mod tests {
         assert_eq!(r.samples(), 1);
         assert_eq!(r.pixel(2, 1), Some([0, 0, 0, 0]));
         assert_eq!(r.depth_at(2, 1), Some(0xff_ffff));
+    }
+
+    /// llvmpipe's coverage of sample `s` of pixel `(i, j)` in a framebuffer
+    /// object, from its own set-up (`lp_setup_tri.c`: positions snapped
+    /// with no pixel offset when multisampling, `rint(v · 256)`; the planes
+    /// `c = dcdx·x_i − dcdy·y_i`, plus one on left edges and, with the
+    /// top-left rule of a y-up framebuffer object, on horizontal edges with
+    /// `dcdy > 0`; `lp_rast_tri_tmp.h`: a sample is in when
+    /// `c + dcdy·sy − dcdx·sx − 1 >= 0` at its fixed-point position).
+    fn llvmpipe_sample(v: [(i64, i64); 3], i: i64, j: i64, s: usize) -> bool {
+        let (mut x, mut y) = (v.map(|p| p.0), v.map(|p| p.1));
+        let area = (x[0] - x[1]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[0] - y[1]);
+        if area == 0 {
+            return false;
+        }
+        if area < 0 {
+            x.swap(0, 1);
+            y.swap(0, 1);
+        }
+        let (fx, fy) = SAMPLE_POSITIONS_4X[s];
+        let (px, py) = (i * 256 + (fx * 256.0) as i64, j * 256 + (fy * 256.0) as i64);
+        (0..3).all(|k| {
+            let n = (k + 1) % 3;
+            let (dcdx, dcdy) = (y[k] - y[n], x[k] - x[n]);
+            let mut c = dcdx * x[k] - dcdy * y[k];
+            if dcdx < 0 || (dcdx == 0 && dcdy > 0) {
+                c += 1;
+            }
+            c + dcdy * py - dcdx * px - 1 >= 0
+        })
+    }
+
+    use crate::framebuffer::Rect;
+    use crate::raster::{row_coverage, tile_coverage, Edges, TileMask};
+    use proptest::prelude::*;
+
+    const W: u32 = 40;
+    const H: u32 = 36;
+
+    /// Sample `s`'s coverage of the framebuffer as softgl finds it for a
+    /// triangle of the fixed-point GL positions `v` (multiples of 1/256, so
+    /// that no snap rounds): the snapped points `Binner::triangle_at` moves,
+    /// covered by the block rasterizer and by the row rasterizer (which
+    /// must agree), and by the small-box set-up a scene records.
+    fn softgl_sample(v: [(i64, i64); 3], s: usize) -> TileMask {
+        let to = |(x, y): (i64, i64)| {
+            let mut r = crate::raster::RasterVertex {
+                x: x as f32 / 256.0,
+                y: y as f32 / 256.0,
+                y_down: 0.0,
+                z: 0.5,
+                inv_w: 1.0,
+                v: [0.0; crate::geometry::varying::MAX_VARYINGS],
+            };
+            r.y_down = H as f32 - r.y;
+            r
+        };
+        let rv = v.map(to);
+        let p = Edges::window_points([&rv[0], &rv[1], &rv[2]], H);
+        let at = SampleAt::of_4x(s);
+        let moved = p.map(|(x, y)| (x - at.fixed.0, y - at.fixed.1));
+        let tile = Rect {
+            x0: 0,
+            y0: 0,
+            x1: W,
+            y1: H,
+        };
+        let rows = row_coverage(moved, tile, tile);
+        let blocks = Edges::new(moved).map_or(TileMask::empty(0, 0), |e| tile_coverage(&e, tile, tile));
+        assert_eq!(rows, blocks, "sample {s}: rows and blocks");
+        let mut prepared = TileMask::empty(0, 0);
+        if let Some(prep) = crate::raster::triangle::Prepared::new(moved, tile) {
+            let mut sink = |span: &softgl_jit::FragmentSpan| {
+                for b in 0..span.len {
+                    if span.mask >> b & 1 == 1 {
+                        prepared.rows[span.y as usize] |= 1 << (span.x + b);
+                    }
+                }
+            };
+            prep.cover(tile, H, &mut sink, |_| None);
+        }
+        assert_eq!(rows, prepared, "sample {s}: rows and the scene's set-up");
+        rows
+    }
+
+    fn check(v: [(i64, i64); 3]) -> Result<(), TestCaseError> {
+        for s in 0..4 {
+            let got = softgl_sample(v, s);
+            for j in 0..H {
+                for i in 0..W {
+                    let want = llvmpipe_sample(v, i64::from(i), i64::from(j), s);
+                    prop_assert_eq!(got.covers(i, j), want, "sample {} of ({}, {}) of {:?}", s, i, j, v);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    #[test]
+    fn edges_through_sample_positions() {
+        // Edges on the samples' rows and columns (exact ties), both windings.
+        for v in [
+            [(1000, 2080), (8000, 2080), (4000, 6000)],
+            [(1000, 2080), (4000, 6000), (8000, 2080)],
+            [(2144, 1000), (2144, 7000), (6000, 4000)],
+            [(2144, 1000), (6000, 4000), (2144, 7000)],
+            [(512, 512), (5120, 512), (512, 5120)],
+            [(5120, 5120), (512, 5120), (5120, 512)],
+        ] {
+            check(v).unwrap();
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(400))]
+        /// Every sample of every pixel as llvmpipe decides it: vertices on
+        /// the 1/256 grid (sample positions and their rows and columns are
+        /// hit often), and on a coarse 1/8 grid (edges through them more).
+        #[test]
+        fn four_samples_as_llvmpipe_covers_them(
+            v in prop::array::uniform3((-512i64..(W as i64 + 2) * 256, -512i64..(H as i64 + 2) * 256)),
+            coarse in prop::array::uniform3((-4i64..(W as i64 + 2) * 8, -4i64..(H as i64 + 2) * 8)),
+        ) {
+            check(v)?;
+            check(coarse.map(|(x, y)| (x * 32, y * 32)))?;
+        }
     }
 }

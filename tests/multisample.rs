@@ -74,7 +74,8 @@ fn render_into(name: &str, fb: softgl::Framebuffer, backend: Backend) -> Context
         }
         "blend" => {
             gl.enable(Capability::Blend).unwrap();
-            gl.blend_func(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha).unwrap();
+            gl.blend_func(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha)
+                .unwrap();
             (0..3).for_each(|t| tri(&mut gl, t));
         }
         "smooth" => {
@@ -118,12 +119,14 @@ fn render_into(name: &str, fb: softgl::Framebuffer, backend: Backend) -> Context
         "stencil" => {
             gl.enable(Capability::StencilTest).unwrap();
             gl.stencil_func(CompareFunc::Always, 1, 0xff).unwrap();
-            gl.stencil_op(StencilOp::Keep, StencilOp::Keep, StencilOp::Replace).unwrap();
+            gl.stencil_op(StencilOp::Keep, StencilOp::Keep, StencilOp::Replace)
+                .unwrap();
             gl.color_mask(false, false, false, false).unwrap();
             tri(&mut gl, 0);
             gl.color_mask(true, true, true, true).unwrap();
             gl.stencil_func(CompareFunc::Equal, 1, 0xff).unwrap();
-            gl.stencil_op(StencilOp::Keep, StencilOp::Keep, StencilOp::Keep).unwrap();
+            gl.stencil_op(StencilOp::Keep, StencilOp::Keep, StencilOp::Keep)
+                .unwrap();
             gl.color4(1.0, 1.0, 0.6, 1.0);
             // glRectf(0, 0, N, N).
             gl.begin(PrimitiveMode::Quads).unwrap();
