@@ -365,7 +365,8 @@ mod tests {
             if dcdx < 0 || (dcdx == 0 && dcdy > 0) {
                 c += 1;
             }
-            c + dcdy * py - dcdx * px - 1 >= 0
+            // (`c − 1 >= 0` in llvmpipe's words.)
+            c + dcdy * py - dcdx * px > 0
         })
     }
 
