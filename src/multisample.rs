@@ -65,10 +65,10 @@ pub fn sample_coverage_mask(value: f32, invert: bool, samples: u32) -> u32 {
 }
 
 /// Hands each primitive to the scene of each sample a draw writes
-/// (`Context::draw_multisample`): triangles covered at the sample's
-/// position when it has one (`GL_MULTISAMPLE` on); lines and points as at
-/// one sample a pixel, the same fragments in every sample (llvmpipe
-/// rasterizes them per sample as rectangles: not done yet).
+/// (`Context::draw_with`): with `GL_MULTISAMPLE` on, triangles covered at
+/// the sample's position, lines as llvmpipe's rectangles and points as its
+/// squares, covered the same way; with it off, every primitive as at one
+/// sample a pixel (the same fragments in every sample).
 #[derive(Default)]
 pub(crate) struct Fan<'s> {
     pub(crate) lanes: Vec<(Binner<'s>, Option<SampleAt>)>,
@@ -92,15 +92,128 @@ impl PrimSink for Fan<'_> {
     }
 
     fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
-        for (sink, _) in &mut self.lanes {
-            sink.line(a, b, width, flat, params);
+        let quad = match self.lanes.first() {
+            Some((_, Some(_))) => line_rectangle(a, b, width, params),
+            _ => None,
+        };
+        for (sink, at) in &mut self.lanes {
+            match (&quad, at.as_ref()) {
+                (Some((p, v)), Some(at)) => {
+                    let params = RasterParams {
+                        offset: None,
+                        ..*params
+                    };
+                    sink.triangle_points([p[0], p[1], p[2]], [&v[0], &v[1], &v[2]], flat, &params, Some(at));
+                    sink.triangle_points([p[0], p[2], p[3]], [&v[0], &v[2], &v[3]], flat, &params, Some(at));
+                }
+                (None, Some(_)) => {}
+                (_, None) => sink.line(a, b, width, flat, params),
+            }
         }
     }
 
     fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
-        for (sink, _) in &mut self.lanes {
-            sink.point(v, size, params);
+        let square = match self.lanes.first() {
+            Some((_, Some(_))) => point_square(v, size, params),
+            _ => None,
+        };
+        for (sink, at) in &mut self.lanes {
+            match (&square, at.as_ref()) {
+                (Some((p, c)), Some(at)) => {
+                    let params = RasterParams {
+                        offset: None,
+                        ..*params
+                    };
+                    sink.triangle_points([p[0], p[1], p[2]], [&c[0], &c[1], &c[2]], None, &params, Some(at));
+                    sink.triangle_points([p[0], p[2], p[3]], [&c[0], &c[2], &c[3]], None, &params, Some(at));
+                }
+                (None, Some(_)) => {}
+                (_, None) => sink.point(v, size, params),
+            }
         }
+    }
+}
+
+/// The rectangle llvmpipe covers for a multisampled line `a → b`
+/// (`try_setup_line`, `lp_setup_line.c`, `rectangular_lines`): the
+/// endpoints snapped (no pixel offset), moved by `±t`, the snapped normal
+/// `(−dy, dx) · (width / 2) / |d|` with `d = a − b`, in the order
+/// `a − t, b − t, b + t, a + t`, covered by the triangle rule as two
+/// triangles (whose shared diagonal owns each sample once); `width`
+/// clamped to llvmpipe's `[1, 255]`. The corners' points in softgl's
+/// snapped bottom-up frame, and vertices carrying their endpoint's
+/// attributes for the planes. `None` for a zero-length or non-finite line.
+fn line_rectangle(
+    a: &RasterVertex,
+    b: &RasterVertex,
+    width: f32,
+    params: &RasterParams,
+) -> Option<([(i64, i64); 4], [RasterVertex; 4])> {
+    let (dx, dy) = (a.x - b.x, a.y - b.y);
+    let area = dx * dx + dy * dy;
+    if !(area.is_finite() && area > 0.0) {
+        return None;
+    }
+    let width = if width.is_nan() { 1.0 } else { width.clamp(1.0, 255.0) };
+    let scale = (width * 0.5) / area.sqrt();
+    let (tx, ty) = (subpixel_snap(-dy * scale), subpixel_snap(dx * scale));
+    // No pixel offset; moved to softgl's frame, whose integers are pixel centres.
+    let at = |v: &RasterVertex| (subpixel_snap(v.x) - 128, subpixel_snap(v.y) - 128);
+    let (pa, pb) = (at(a), at(b));
+    let p = [
+        (pa.0 - tx, pa.1 - ty),
+        (pb.0 - tx, pb.1 - ty),
+        (pb.0 + tx, pb.1 + ty),
+        (pa.0 + tx, pa.1 + ty),
+    ];
+    let v = [
+        corner(a, p[0], params),
+        corner(b, p[1], params),
+        corner(b, p[2], params),
+        corner(a, p[3], params),
+    ];
+    Some((p, v))
+}
+
+/// `subpixel_snap` of `lp_setup_line.c` and `lp_setup_point.c`:
+/// `util_iround(256 · v)`, half away from zero in f32 (x86-64's
+/// `util_iround`, `u_math.h`).
+fn subpixel_snap(v: f32) -> i64 {
+    let f = crate::raster::ONE as f32 * v;
+    if f >= 0.0 {
+        (f + 0.5) as i64
+    } else {
+        (f - 0.5) as i64
+    }
+}
+
+/// The square llvmpipe covers for a multisampled point (`try_setup_point`,
+/// `lp_setup_point.c`, not `legacy_points`): side `max(256,
+/// subpixel_snap(size))` (size at most 255), from the snapped centre (no
+/// pixel offset) minus half the side, its left and bottom edges owned, as
+/// two triangles; corners in softgl's frame and vertices with the point's
+/// attributes. `None` for a non-finite position.
+fn point_square(v: &RasterVertex, size: f32, params: &RasterParams) -> Option<([(i64, i64); 4], [RasterVertex; 4])> {
+    if !(v.x.is_finite() && v.y.is_finite()) {
+        return None;
+    }
+    let size = if size.is_nan() { 1.0 } else { size.clamp(0.0, 255.0) };
+    let side = subpixel_snap(size).max(crate::raster::ONE);
+    let (x0, y0) = (subpixel_snap(v.x) - side / 2 - 128, subpixel_snap(v.y) - side / 2 - 128);
+    let p = [(x0, y0), (x0 + side, y0), (x0 + side, y0 + side), (x0, y0 + side)];
+    Some((p, p.map(|q| corner(v, q, params))))
+}
+
+/// A vertex at the snapped point `q` (softgl's frame) with `from`'s
+/// attributes, for the plane set-up of a line's or a point's corners.
+fn corner(from: &RasterVertex, (x, y): (i64, i64), params: &RasterParams) -> RasterVertex {
+    let one = crate::raster::ONE as f32;
+    let (x, y) = ((x as f32 + 128.0) / one, (y as f32 + 128.0) / one);
+    RasterVertex {
+        x,
+        y,
+        y_down: params.height as f32 - y,
+        ..*from
     }
 }
 

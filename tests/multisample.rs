@@ -29,6 +29,8 @@ const SCENES: &[(&str, usize)] = &[
     ("coverage", 0),
     ("nomultisample", 0),
     ("stencil", 0),
+    ("lines", 0),
+    ("points", 0),
 ];
 
 fn vertex(gl: &mut Context, [x, y, z]: [f32; 3]) {
@@ -115,6 +117,45 @@ fn render_into(name: &str, fb: softgl::Framebuffer, backend: Backend) -> Context
             tri(&mut gl, 1);
             gl.enable(Capability::Multisample).unwrap();
             tri(&mut gl, 2);
+        }
+        "lines" => {
+            let l = [
+                [3.2, 4.7, 36.1, 9.3],
+                [5.6, 33.4, 30.2, 2.9],
+                [20.3, 1.8, 22.9, 38.1],
+                [2.5, 20.5, 37.5, 20.5],
+                [8.0, 8.0, 31.0, 31.0],
+            ];
+            let w = [1.0, 1.0, 2.0, 3.5, 6.0];
+            for i in 0..5 {
+                gl.line_width(w[i]).unwrap();
+                let [r, g, b, a] = C[i % 3];
+                gl.color4(r, g, b, a);
+                gl.begin(PrimitiveMode::Lines).unwrap();
+                gl.vertex2(l[i][0], l[i][1]);
+                gl.vertex2(l[i][2], l[i][3]);
+                gl.end().unwrap();
+            }
+            gl.line_width(1.0).unwrap();
+        }
+        "points" => {
+            let p = [
+                [5.3, 6.1, 1.0],
+                [12.7, 30.2, 2.5],
+                [20.5, 20.5, 4.0],
+                [31.1, 9.9, 7.3],
+                [33.0, 33.0, 3.0],
+                [8.2, 19.6, 0.5],
+            ];
+            for (i, [x, y, size]) in p.into_iter().enumerate() {
+                gl.point_size(size).unwrap();
+                let [r, g, b, a] = C[i % 3];
+                gl.color4(r, g, b, a);
+                gl.begin(PrimitiveMode::Points).unwrap();
+                gl.vertex2(x, y);
+                gl.end().unwrap();
+            }
+            gl.point_size(1.0).unwrap();
         }
         "stencil" => {
             gl.enable(Capability::StencilTest).unwrap();
@@ -229,6 +270,8 @@ fn the_scenes_single_sampled_are_not_llvmpipes_resolved_bytes() {
         ("coverage", 869),
         ("nomultisample", 82),
         ("stencil", 77),
+        ("lines", 261),
+        ("points", 66),
     ];
     assert_eq!(found, want);
 }

@@ -843,7 +843,21 @@ impl Binner<'_> {
         params: &RasterParams,
         at: Option<&crate::multisample::SampleAt>,
     ) {
-        let p = Edges::window_points(v, params.height);
+        self.triangle_points(Edges::window_points(v, params.height), v, flat, params, at)
+    }
+
+    /// [`Binner::triangle_at`] of the snapped bottom-up points `p` (the
+    /// corners of a multisampled line: `multisample::Fan`), whose planes
+    /// are set up from `v`.
+    #[inline(always)]
+    pub(crate) fn triangle_points(
+        &mut self,
+        p: [(i64, i64); 3],
+        v: [&RasterVertex; 3],
+        flat: Option<&Varyings>,
+        params: &RasterParams,
+        at: Option<&crate::multisample::SampleAt>,
+    ) {
         let covered = match at {
             None => p,
             Some(s) => p.map(|(x, y)| (x - s.fixed.0, y - s.fixed.1)),

@@ -81,6 +81,35 @@ static void scene(const char *name) {
     tri(0), tri(1);
     glEnable(GL_MULTISAMPLE);
     tri(2);
+  } else if (!strcmp(name, "lines")) {
+    /* Multisampled lines are rectangles covered per sample. */
+    static const float L[5][4] = {{3.2f, 4.7f, 36.1f, 9.3f},
+                                  {5.6f, 33.4f, 30.2f, 2.9f},
+                                  {20.3f, 1.8f, 22.9f, 38.1f},
+                                  {2.5f, 20.5f, 37.5f, 20.5f},
+                                  {8.0f, 8.0f, 31.0f, 31.0f}};
+    static const float W[5] = {1.0f, 1.0f, 2.0f, 3.5f, 6.0f};
+    for (int i = 0; i < 5; i++) {
+      glLineWidth(W[i]);
+      glColor4fv(C[i % 3]);
+      glBegin(GL_LINES);
+      glVertex2f(L[i][0], L[i][1]);
+      glVertex2f(L[i][2], L[i][3]);
+      glEnd();
+    }
+    glLineWidth(1.0f);
+  } else if (!strcmp(name, "points")) {
+    /* Multisampled points are squares covered per sample. */
+    static const float P[6][3] = {{5.3f, 6.1f, 1.0f},   {12.7f, 30.2f, 2.5f}, {20.5f, 20.5f, 4.0f},
+                                  {31.1f, 9.9f, 7.3f}, {33.0f, 33.0f, 3.0f},  {8.2f, 19.6f, 0.5f}};
+    for (int i = 0; i < 6; i++) {
+      glPointSize(P[i][2]);
+      glColor4fv(C[i % 3]);
+      glBegin(GL_POINTS);
+      glVertex2f(P[i][0], P[i][1]);
+      glEnd();
+    }
+    glPointSize(1.0f);
   } else if (!strcmp(name, "stencil")) {
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, 1, 0xff);
@@ -95,7 +124,7 @@ static void scene(const char *name) {
   }
 }
 
-static const char *NAMES[] = {"depth", "blend", "smooth", "intersect", "coverage", "nomultisample", "stencil"};
+static const char *NAMES[] = {"depth", "blend", "smooth", "intersect", "coverage", "nomultisample", "stencil", "lines", "points"};
 
 int main(void) {
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
