@@ -275,3 +275,35 @@ fn the_scenes_single_sampled_are_not_llvmpipes_resolved_bytes() {
     ];
     assert_eq!(found, want);
 }
+
+#[test]
+fn a_multisampled_framebuffer_swapped_in_draws_per_sample_and_resolves() {
+    // What a framebuffer object does: a context made on one framebuffer
+    // draws into another (4 samples) and back, with the state kept.
+    let desc = FramebufferDesc::rgba8_d24s8(N as u32, N as u32);
+    let mut gl = Context::new(desc).unwrap();
+    gl.set_threads(2);
+    gl.set_scene_bound(1); // flush in the background after every primitive
+    let window = gl.replace_framebuffer(softgl::Framebuffer::new_multisample(desc, 4).unwrap());
+    assert_eq!(gl.samples(), 4);
+    gl.viewport(0, 0, N, N).unwrap();
+    gl.matrix_mode(MatrixMode::Projection).unwrap();
+    gl.ortho(0.0, f64::from(N), 0.0, f64::from(N), -1.0, 1.0).unwrap();
+    gl.matrix_mode(MatrixMode::Modelview).unwrap();
+    gl.clear_color(0.1, 0.1, 0.2, 1.0).unwrap();
+    gl.clear(ClearMask {
+        color: true,
+        depth: true,
+        stencil: true,
+    })
+    .unwrap();
+    gl.enable(Capability::DepthTest).unwrap();
+    (0..3).for_each(|t| tri(&mut gl, t));
+    let ms = gl.replace_framebuffer(window);
+    assert_eq!((ms.samples(), gl.samples()), (4, 1));
+    let resolved = ms.resolve().unwrap();
+    let got = resolved.read_pixels(0, 0, N, N, ReadFormat::Rgba8).unwrap();
+    assert_eq!(differ(&got, &llvmpipe()["depth"]), (0, 0));
+    // The window is untouched.
+    assert_eq!(gl.framebuffer().pixel(20, 20), Some([0, 0, 0, 0]));
+}
