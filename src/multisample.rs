@@ -49,6 +49,22 @@ impl SampleAt {
     }
 }
 
+/// The samples a pixel of a renderbuffer `glRenderbufferStorageMultisample`
+/// asks `requested` of gets, as Mesa picks them for llvmpipe
+/// (`st_renderbuffer_alloc_storage`: the least supported count from
+/// `max(2, requested)`; probed, `docs/probes/multisample/samples.c`): 0 is
+/// one sample (`GL_RENDERBUFFER_SAMPLES` 0), 1 to 4 are 4; more than
+/// [`MAX_SAMPLES`] is `GL_INVALID_OPERATION` (Mesa's, measured), a negative
+/// count `GL_INVALID_VALUE`.
+pub fn renderbuffer_samples(requested: i32) -> GlResult<u32> {
+    match requested {
+        r if r < 0 => Err(GlError::InvalidValue),
+        0 => Ok(1),
+        r if r as u32 <= MAX_SAMPLES => Ok(MAX_SAMPLES),
+        _ => Err(GlError::InvalidOperation),
+    }
+}
+
 /// The samples `glSampleCoverage(value, invert)` keeps, as llvmpipe's state
 /// tracker makes the mask (`st_update_sample_state`, `st_atom_msaa.c`): the
 /// first `(unsigned)(value · samples)` samples (f32 product, truncated),
@@ -379,6 +395,24 @@ mod tests {
         let fixed: Vec<_> = (0..4).map(|s| SampleAt::of_4x(s).fixed).collect();
         assert_eq!(fixed, [(-32, -96), (96, -32), (-96, 32), (32, 96)]);
         assert_eq!(SampleAt::of_4x(0).plane, (-0.125, 0.375));
+    }
+
+    #[test]
+    fn renderbuffers_get_mesas_sample_counts() {
+        let got: Vec<_> = (-1..=5).map(renderbuffer_samples).collect();
+        use GlError::*;
+        assert_eq!(
+            got,
+            [
+                Err(InvalidValue),
+                Ok(1),
+                Ok(4),
+                Ok(4),
+                Ok(4),
+                Ok(4),
+                Err(InvalidOperation)
+            ]
+        );
     }
 
     #[test]
