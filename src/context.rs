@@ -389,6 +389,18 @@ pub struct Context {
     pub(crate) raster: crate::raster_pos::RasterPos,
     /// `glPixelZoom`, `glPixelTransfer`, `glPixelMap` (`pixel_transfer.rs`).
     pub(crate) pixel: crate::pixel_transfer::PixelState,
+    /// Samples 1.. of a multisampled framebuffer: each one's scene and
+    /// background flush (their buffers are `fb`'s other samples; `fb`
+    /// itself is sample 0: `multisample.rs`).
+    lanes: Vec<Lane>,
+}
+
+/// One more sample of a multisampled framebuffer: what it records into and
+/// flushes with, beside the context's own scene (sample 0).
+#[derive(Debug, Default)]
+struct Lane {
+    scene: Scene,
+    background: Background,
 }
 
 /// A draw's plan (`plan`) and uniforms, and what they were made of: the
@@ -416,8 +428,14 @@ impl Drop for Context {
     /// Rasterizes what is pending: a context's last draws reach its
     /// framebuffer (lent memory too) even without a `glFinish`.
     fn drop(&mut self) {
+        let mut samples = std::mem::take(&mut self.fb.samples);
         let _ = self.background.settle(&mut self.fb);
         let _ = self.scene.flush(&mut self.fb, self.threads);
+        for (lane, fb) in self.lanes.iter_mut().zip(&mut samples) {
+            let _ = lane.background.settle(fb);
+            let _ = lane.scene.flush(fb, self.threads);
+        }
+        self.fb.samples = samples;
     }
 }
 
@@ -427,10 +445,17 @@ impl Context {
         Ok(Context::with_framebuffer(Framebuffer::new(desc)?))
     }
 
+    /// A context drawing into a new framebuffer of `samples` samples a
+    /// pixel (1, or 4: `multisample.rs`).
+    pub fn new_multisample(desc: FramebufferDesc, samples: u32) -> GlResult<Context> {
+        Ok(Context::with_framebuffer(Framebuffer::new_multisample(desc, samples)?))
+    }
+
     /// A context drawing into `fb` (e.g. one over lent colour memory), with
     /// GL's initial state for its size.
     pub fn with_framebuffer(fb: Framebuffer) -> Context {
         let desc = *fb.desc();
+        let fb_samples = fb.samples();
         Context {
             state: Tracked::new(RasterState::new(desc.width, desc.height)),
             fb,
@@ -465,6 +490,7 @@ impl Context {
             window: Default::default(),
             raster: crate::raster_pos::RasterPos::default(),
             pixel: crate::pixel_transfer::PixelState::default(),
+            lanes: (1..fb_samples).map(|_| Lane::default()).collect(),
         }
     }
 
@@ -536,7 +562,10 @@ impl Context {
         fb.set_color_enabled(!self.fbo.window_draw_none);
         match self.fbo.window.as_mut() {
             Some(w) => std::mem::replace(w, fb),
-            None => std::mem::replace(&mut self.fb, fb),
+            None => {
+                self.lanes.resize_with(fb.samples() as usize - 1, Lane::default);
+                std::mem::replace(&mut self.fb, fb)
+            }
         }
     }
 
@@ -578,8 +607,16 @@ impl Context {
     /// Rasterizes every recorded draw and clear into the framebuffer; a
     /// fragment stage's failure is recorded as `GL_INVALID_OPERATION`.
     pub(crate) fn finish_scene(&mut self) {
+        // The other samples are out of `fb` while it may go to a flush.
+        let mut samples = std::mem::take(&mut self.fb.samples);
         let before = self.background.join(&mut self.fb);
-        if let Err(_e) = before.and(self.scene.flush(&mut self.fb, self.threads)) {
+        let mut r = before.and(self.scene.flush(&mut self.fb, self.threads));
+        for (lane, fb) in self.lanes.iter_mut().zip(&mut samples) {
+            let before = lane.background.join(fb);
+            r = r.and(before).and(lane.scene.flush(fb, self.threads));
+        }
+        self.fb.samples = samples;
+        if let Err(_e) = r {
             self.error.get_or_insert(GlError::InvalidOperation);
         }
     }
@@ -793,6 +830,9 @@ impl Context {
             clear = clear.stencil(&self.fb, s.clear_stencil as u8, s.stencil_write_mask as u8);
         }
         self.scene.clear(&self.fb, clear);
+        for (lane, fb) in self.lanes.iter_mut().zip(&self.fb.samples) {
+            lane.scene.clear(fb, clear);
+        }
         Ok(())
     }
 
@@ -1502,6 +1542,37 @@ impl Context {
             textures: textures.share(),
             samples,
         };
+        if !self.lanes.is_empty() {
+            // A multisampled framebuffer: the geometry runs once, each
+            // primitive is recorded into the scene of each sample that
+            // `glSampleCoverage` keeps, covered at the sample when
+            // `GL_MULTISAMPLE` is on (at the pixel centre when off).
+            let ms = self.state.multisample;
+            let n = self.fb.samples();
+            let mask = match (ms.enabled, ms.coverage) {
+                (true, true) => crate::multisample::sample_coverage_mask(ms.coverage_value, ms.coverage_invert, n),
+                _ => u32::MAX,
+            };
+            let at = |s: usize| ms.enabled.then(|| crate::multisample::SampleAt::of_4x(s));
+            let mut samples = std::mem::take(&mut self.fb.samples);
+            let mut fan = crate::multisample::Fan::default();
+            if mask & 1 != 0 {
+                let b = self
+                    .scene
+                    .draw(&mut self.fb, &mut self.background, self.threads, state.clone());
+                fan.lanes.push((b, at(0)));
+            }
+            for (s, (lane, fb)) in self.lanes.iter_mut().zip(&mut samples).enumerate() {
+                if mask >> (s + 1) & 1 != 0 {
+                    let b = lane.scene.draw(fb, &mut lane.background, self.threads, state.clone());
+                    fan.lanes.push((b, at(s + 1)));
+                }
+            }
+            geometry.draw(&vertex_stage, mode, count, fetch, &mut fan, &mut self.window);
+            let r = fan.finish();
+            self.fb.samples = samples;
+            return self.record(r.map_err(|_| GlError::InvalidOperation));
+        }
         let mut binner = self.scene.draw(&mut self.fb, &mut self.background, self.threads, state);
         geometry.draw(&vertex_stage, mode, count, fetch, &mut binner, &mut self.window);
         let r = binner.finish();
@@ -1533,15 +1604,37 @@ impl Context {
 
     // ----- reading -----
 
-    /// `glReadPixels` into bytes, rows bottom-up.
+    /// `glReadPixels` into bytes, rows bottom-up; a multisampled framebuffer
+    /// (a window's) is read resolved ([`Framebuffer::resolve`]).
     pub fn read_pixels(&mut self, x: i32, y: i32, w: i32, h: i32, format: ReadFormat) -> GlResult<Vec<u8>> {
-        let r = self.with_read_framebuffer(true, |fb| fb.read_pixels(x, y, w, h, format))?;
+        let r = self.with_read_framebuffer(true, |fb| match fb.samples() {
+            1 => fb.read_pixels(x, y, w, h, format),
+            _ => fb.resolve().and_then(|fb| fb.read_pixels(x, y, w, h, format)),
+        })?;
         self.record(r)
     }
 
-    /// `glReadPixels` with `GL_FLOAT`, rows bottom-up.
+    /// `glReadPixels` with `GL_FLOAT`, rows bottom-up (resolved, as [`Context::read_pixels`]).
     pub fn read_pixels_f32(&mut self, x: i32, y: i32, w: i32, h: i32) -> GlResult<Vec<[f32; 4]>> {
-        let r = self.with_read_framebuffer(true, |fb| fb.read_pixels_f32(x, y, w, h))?;
+        let r = self.with_read_framebuffer(true, |fb| match fb.samples() {
+            1 => fb.read_pixels_f32(x, y, w, h),
+            _ => fb.resolve().and_then(|fb| fb.read_pixels_f32(x, y, w, h)),
+        })?;
         self.record(r)
+    }
+
+    /// `glSampleCoverage`: the value is clamped to `[0, 1]` (NaN reads as 0).
+    pub fn sample_coverage(&mut self, value: f32, invert: bool) -> GlResult {
+        let value = if value.is_nan() { 0.0 } else { value.clamp(0.0, 1.0) };
+        self.set(|s| {
+            s.multisample.coverage_value = value;
+            s.multisample.coverage_invert = invert;
+        })
+    }
+
+    /// `GL_SAMPLES`: samples a pixel of the framebuffer (1 when single-sampled;
+    /// GL reports 0 then, and `GL_SAMPLE_BUFFERS` 0).
+    pub fn samples(&self) -> u32 {
+        self.fb.samples()
     }
 }

@@ -433,6 +433,10 @@ pub struct Framebuffer {
     color_enabled: bool,
     /// Only when asked for ([`Framebuffer::with_accum_buffer`]).
     accum: Option<AccumBuffer>,
+    /// Samples 1.. of a multisampled framebuffer, each a single-sampled
+    /// framebuffer of the same size and formats; this one holds sample 0
+    /// (`framebuffer/multisample.rs`). Empty when single-sampled.
+    pub(crate) samples: Vec<Framebuffer>,
 }
 
 impl Framebuffer {
@@ -483,6 +487,7 @@ impl Framebuffer {
             stencil,
             color_enabled: true,
             accum: None,
+            samples: Vec::new(),
         })
     }
 
@@ -595,6 +600,7 @@ impl Framebuffer {
             stencil: self.stencil.as_ref().map(|_| Vec::new()),
             color_enabled: self.color_enabled,
             accum: self.accum.as_ref().map(AccumBuffer::hollow),
+            samples: self.samples.iter().map(Framebuffer::hollow).collect(),
         }
     }
 
@@ -620,7 +626,7 @@ impl Framebuffer {
     }
 
     /// Byte offset of pixel `(x, y)` (window coordinates) in the color bytes.
-    fn color_offset(&self, x: u32, y: u32) -> usize {
+    pub(crate) fn color_offset(&self, x: u32, y: u32) -> usize {
         let row = if self.color_top_down {
             self.desc.height - 1 - y
         } else {

@@ -231,6 +231,10 @@ gl_enums! {
         TexGen(TexCoordName::T) = GL_TEXTURE_GEN_T 0x0C61,
         TexGen(TexCoordName::R) = GL_TEXTURE_GEN_R 0x0C62,
         TexGen(TexCoordName::Q) = GL_TEXTURE_GEN_Q 0x0C63,
+        Multisample = GL_MULTISAMPLE 0x809D,
+        SampleAlphaToCoverage = GL_SAMPLE_ALPHA_TO_COVERAGE 0x809E,
+        SampleAlphaToOne = GL_SAMPLE_ALPHA_TO_ONE 0x809F,
+        SampleCoverage = GL_SAMPLE_COVERAGE 0x80A0,
         Texture(TextureTarget::D1) = GL_TEXTURE_1D 0x0DE0,
         Texture(TextureTarget::D2) = GL_TEXTURE_2D 0x0DE1,
         Texture(TextureTarget::D3) = GL_TEXTURE_3D 0x806F,
@@ -543,7 +547,7 @@ mod tests {
         // refuses a table without one).
         assert_eq!(
             counts,
-            [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 39, 2, 5, 10, 5, 3, 2, 4, 5, 6, 8, 12, 4]
+            [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 43, 2, 5, 10, 5, 3, 2, 4, 5, 6, 8, 12, 4]
         );
     }
 

@@ -37,6 +37,7 @@ pub mod matrix;
 pub mod query;
 pub mod pixel_rect;
 pub mod pixel_transfer;
+pub mod multisample;
 pub mod raster;
 pub mod raster_pos;
 pub mod state;

@@ -41,6 +41,15 @@ pub enum Capability {
     Texture(TextureTarget),
     /// `GL_TEXTURE_GEN_S` … `Q` of the active texture unit.
     TexGen(TexCoordName),
+    /// `GL_MULTISAMPLE` (on by default): per-sample coverage and depth in
+    /// a multisampled framebuffer (`multisample.rs`).
+    Multisample,
+    /// `GL_SAMPLE_COVERAGE`: `glSampleCoverage`'s mask.
+    SampleCoverage,
+    /// `GL_SAMPLE_ALPHA_TO_COVERAGE` (state only: not applied yet).
+    SampleAlphaToCoverage,
+    /// `GL_SAMPLE_ALPHA_TO_ONE` (state only: not applied yet).
+    SampleAlphaToOne,
 }
 
 impl Capability {
@@ -179,6 +188,34 @@ pub struct WindowRect {
     pub height: i32,
 }
 
+/// GL's multisample state (GL 1.3 §3.2.1, §4.1.3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MultisampleState {
+    /// `GL_MULTISAMPLE`.
+    pub enabled: bool,
+    /// `GL_SAMPLE_COVERAGE`, and `glSampleCoverage`'s value (clamped to
+    /// `[0, 1]`) and invert flag.
+    pub coverage: bool,
+    pub coverage_value: f32,
+    pub coverage_invert: bool,
+    pub alpha_to_coverage: bool,
+    pub alpha_to_one: bool,
+}
+
+impl Default for MultisampleState {
+    /// GL's initial state: multisampling on, coverage 1 not inverted.
+    fn default() -> MultisampleState {
+        MultisampleState {
+            enabled: true,
+            coverage: false,
+            coverage_value: 1.0,
+            coverage_invert: false,
+            alpha_to_coverage: false,
+            alpha_to_one: false,
+        }
+    }
+}
+
 /// Every piece of state the fragment stages and the rasterizer read.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RasterState {
@@ -237,6 +274,8 @@ pub struct RasterState {
     pub fog: FogState,
     /// `GL_COLOR_SUM`.
     pub color_sum: bool,
+    /// Multisampling: `GL_MULTISAMPLE`, `GL_SAMPLE_*` and `glSampleCoverage`.
+    pub multisample: MultisampleState,
 
     /// Lighting, materials, normals and user clip planes.
     pub lighting: crate::lighting::LightingState,
@@ -298,6 +337,7 @@ impl RasterState {
             clamp_fragment_color: false,
             fog: FogState::default(),
             color_sum: false,
+            multisample: MultisampleState::default(),
             lighting: crate::lighting::LightingState::default(),
         }
     }
@@ -326,6 +366,10 @@ impl RasterState {
             Capability::Normalize => &mut self.lighting.normalize,
             Capability::RescaleNormal => &mut self.lighting.rescale_normal,
             Capability::ClipPlane(i) => &mut self.lighting.clip_enabled[usize::from(i)],
+            Capability::Multisample => &mut self.multisample.enabled,
+            Capability::SampleCoverage => &mut self.multisample.coverage,
+            Capability::SampleAlphaToCoverage => &mut self.multisample.alpha_to_coverage,
+            Capability::SampleAlphaToOne => &mut self.multisample.alpha_to_one,
             Capability::Texture(_) | Capability::TexGen(_) => return None,
         })
     }
@@ -352,6 +396,10 @@ impl RasterState {
             Capability::Normalize => self.lighting.normalize,
             Capability::RescaleNormal => self.lighting.rescale_normal,
             Capability::ClipPlane(i) => self.lighting.clip_enabled.get(usize::from(i)) == Some(&true),
+            Capability::Multisample => self.multisample.enabled,
+            Capability::SampleCoverage => self.multisample.coverage,
+            Capability::SampleAlphaToCoverage => self.multisample.alpha_to_coverage,
+            Capability::SampleAlphaToOne => self.multisample.alpha_to_one,
             // Per texture unit: the context answers for the active one.
             Capability::Texture(_) | Capability::TexGen(_) => false,
         }

@@ -16,7 +16,7 @@ mod point;
 pub mod pool;
 mod rows;
 pub mod scene;
-mod triangle;
+pub(crate) mod triangle;
 
 pub use block::{tile_coverage, TileMask, TILE};
 pub use edges::{Edge, Edges};

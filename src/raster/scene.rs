@@ -36,7 +36,7 @@ use crate::fragment::{DrawStage, FragmentStage};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
 use crate::geometry::varying::{Varyings, MAX_VARYINGS};
 use crate::texture::unit::{SharedPlan, TexturePlan};
-use softgl_jit::shade::PLANES;
+use softgl_jit::shade::{slot, PLANES};
 use softgl_jit::texture::TextureSet;
 use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Planes, Specialist, Target};
 use std::cell::OnceCell;
@@ -1017,8 +1017,57 @@ impl PrimSink for Binner<'_> {
     /// Sets the triangle up once (its coverage and planes) and records
     /// it; one that no pixel is inside is not recorded.
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
-        let p = Edges::window_points(v, params.height);
-        let Some(prep) = Prepared::new(p, params.bounds) else {
+        self.triangle_at(v, flat, params, None)
+    }
+
+    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
+        let reach = super::line::line_width_pixels(width) as f32 / 2.0 + 1.0;
+        let r = reach_box(&[(a.x, a.y), (b.x, b.y)], reach, params.bounds);
+        self.record(r, params, Kind::Line { width }, &[a, b], flat);
+    }
+
+    fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
+        let reach = super::point::point_size_pixels(size) as f32 / 2.0 + 1.0;
+        let r = reach_box(&[(v.x, v.y)], reach, params.bounds);
+        self.record(r, params, Kind::Point { size }, &[v], None);
+    }
+}
+
+impl Binner<'_> {
+    /// [`PrimSink::triangle`], covering at the sample `at` of a multisampled
+    /// framebuffer (`multisample.rs`) when given: the coverage of the
+    /// triangle moved by minus the sample's offset (exact in fixed point),
+    /// and the depth plane moved to the sample; the other planes stay at the
+    /// pixel centre. Inlined, so that the single-sampled path (`None`)
+    /// compiles to what it was.
+    #[inline(always)]
+    pub(crate) fn triangle_at(
+        &mut self,
+        v: [&RasterVertex; 3],
+        flat: Option<&Varyings>,
+        params: &RasterParams,
+        at: Option<&crate::multisample::SampleAt>,
+    ) {
+        self.triangle_points(Edges::window_points(v, params.height), v, flat, params, at)
+    }
+
+    /// [`Binner::triangle_at`] of the snapped bottom-up points `p` (the
+    /// corners of a multisampled line: `multisample::Fan`), whose planes
+    /// are set up from `v`.
+    #[inline(always)]
+    pub(crate) fn triangle_points(
+        &mut self,
+        p: [(i64, i64); 3],
+        v: [&RasterVertex; 3],
+        flat: Option<&Varyings>,
+        params: &RasterParams,
+        at: Option<&crate::multisample::SampleAt>,
+    ) {
+        let covered = match at {
+            None => p,
+            Some(s) => p.map(|(x, y)| (x - s.fixed.0, y - s.fixed.1)),
+        };
+        let Some(prep) = Prepared::new(covered, params.bounds) else {
             return;
         };
         let draw = self.draw();
@@ -1035,7 +1084,14 @@ impl PrimSink for Binner<'_> {
         let (n, tag) = prep.encode(cover);
         rec[0] = class | tag << 30;
         let mut len = 1 + n;
-        setup_planes(v, swap, flat, params, &mut |_, plane| {
+        setup_planes(v, swap, flat, params, &mut |k, plane| {
+            let plane = match at {
+                Some(s) if k == slot::Z => Plane {
+                    a0: plane.a0 + (plane.dadx * s.plane.0 + plane.dady * s.plane.1),
+                    ..plane
+                },
+                _ => plane,
+            };
             if let Some(to) = rec.get_mut(len..len + 3) {
                 to.copy_from_slice(&[plane.a0.to_bits(), plane.dadx.to_bits(), plane.dady.to_bits()]);
                 len += 3;
@@ -1049,18 +1105,6 @@ impl PrimSink for Binner<'_> {
         if scene.full() {
             self.flush();
         }
-    }
-
-    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
-        let reach = super::line::line_width_pixels(width) as f32 / 2.0 + 1.0;
-        let r = reach_box(&[(a.x, a.y), (b.x, b.y)], reach, params.bounds);
-        self.record(r, params, Kind::Line { width }, &[a, b], flat);
-    }
-
-    fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
-        let reach = super::point::point_size_pixels(size) as f32 / 2.0 + 1.0;
-        let r = reach_box(&[(v.x, v.y)], reach, params.bounds);
-        self.record(r, params, Kind::Point { size }, &[v], None);
     }
 }
 

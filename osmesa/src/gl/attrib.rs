@@ -33,6 +33,7 @@ const HINT_BIT: u32 = 0x8000;
 const EVAL_BIT: u32 = 0x10000;
 const TEXTURE_BIT: u32 = 0x40000;
 const SCISSOR_BIT: u32 = 0x80000;
+const MULTISAMPLE_BIT: u32 = 0x2000_0000;
 const CLIENT_PIXEL_STORE_BIT: u32 = 0x1;
 const CLIENT_VERTEX_ARRAY_BIT: u32 = 0x2;
 
@@ -257,6 +258,16 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
     }
     if m & (SCISSOR_BIT | ENABLE_BIT) != 0 {
         set_cap(gl, Capability::ScissorTest, st.scissor_test)?;
+    }
+    if m & (MULTISAMPLE_BIT | ENABLE_BIT) != 0 {
+        let ms = st.multisample;
+        set_cap(gl, Capability::Multisample, ms.enabled)?;
+        set_cap(gl, Capability::SampleCoverage, ms.coverage)?;
+        set_cap(gl, Capability::SampleAlphaToCoverage, ms.alpha_to_coverage)?;
+        set_cap(gl, Capability::SampleAlphaToOne, ms.alpha_to_one)?;
+    }
+    if m & MULTISAMPLE_BIT != 0 {
+        gl.sample_coverage(st.multisample.coverage_value, st.multisample.coverage_invert)?;
     }
     if m & SCISSOR_BIT != 0 {
         let b = st.scissor;

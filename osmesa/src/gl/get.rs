@@ -180,6 +180,11 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
             0
         }), // ACCUM_*_BITS
         0x0B80 => Val::N(s.clear_accum.iter().map(|&c| f64::from(c)).collect()),  // ACCUM_CLEAR_VALUE
+        0x80A8 => i(u32::from(gl.samples() > 1)),                                 // SAMPLE_BUFFERS
+        0x80A9 => i(if gl.samples() > 1 { gl.samples() } else { 0 }),             // SAMPLES
+        0x8D57 => i(softgl::multisample::MAX_SAMPLES),                            // MAX_SAMPLES
+        0x80AA => f(s.multisample.coverage_value),                                // SAMPLE_COVERAGE_VALUE
+        0x80AB => Val::B(vec![s.multisample.coverage_invert]),                    // SAMPLE_COVERAGE_INVERT
         0x0C32 => Val::B(vec![false]),                                            // DOUBLEBUFFER
         0x0C33 => Val::B(vec![false]),                                            // STEREO
         0x0C31 => Val::B(vec![true]),                                             // RGBA_MODE

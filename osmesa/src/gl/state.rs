@@ -245,6 +245,13 @@ exports! {
     [] fn glLineWidth(width: f32) {
         gl(move |gl| gl.line_width(width))
     }
+    /// GL 1.3 (and `glSampleCoverageARB`): compiled into display lists.
+    [] fn glSampleCoverage(value: f32, invert: u8) {
+        gl(move |gl| gl.sample_coverage(value, invert != 0))
+    }
+    [] fn glSampleCoverageARB(value: f32, invert: u8) {
+        gl(move |gl| gl.sample_coverage(value, invert != 0))
+    }
 
     [] fn glAlphaFunc(func: GLenum, reference: f32) {
         checked(move |gl| gl.alpha_func(decode(func)?, reference))
