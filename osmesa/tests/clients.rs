@@ -582,3 +582,23 @@ fn pyopengl_draws_and_reads_back() {
     assert!(stdout.contains("renderer softgl"), "{stdout}");
     assert!(stdout.lines().last() == Some("ok"), "{stdout}");
 }
+
+#[test]
+fn line_and_polygon_stipple_match_mesa() {
+    let Some(exe) = build("stipple") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    let mut report = Vec::new();
+    for k in 0..10 {
+        let name = format!("stipple.{k}");
+        let (m, s) = (mesa.file(&name), soft.file(&name));
+        let differing = m.chunks_exact(4).zip(s.chunks_exact(4)).filter(|(a, b)| a != b).count();
+        let drawn = s.chunks_exact(4).filter(|p| p[..3] != [26, 51, 76]).count();
+        report.push((k, differing, drawn));
+    }
+    for &(k, differing, drawn) in &report {
+        assert!(differing == 0, "scene {k}: {differing} pixels differ ({report:?})");
+        assert!(drawn > 100, "scene {k}: only {drawn} pixels drawn");
+    }
+    assert_eq!(soft.file("stipple.get"), mesa.file("stipple.get"));
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+}

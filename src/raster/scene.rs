@@ -31,6 +31,7 @@
 
 use super::background::Background;
 use super::triangle::{plane_swap, setup_planes, Plane, Prepared};
+use super::stipple::PolygonStipple;
 use super::{reach_box, Edges, PrimSink, RasterParams, RasterVertex, Rasterize, SpanSink};
 use crate::fragment::{DrawStage, FragmentStage};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
@@ -38,7 +39,7 @@ use crate::geometry::varying::{Varyings, MAX_VARYINGS};
 use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::shade::PLANES;
 use softgl_jit::texture::TextureSet;
-use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Planes, Specialist, Target};
+use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentSpan, FragmentKey, FragmentUniforms, Planes, Specialist, Target};
 use std::cell::OnceCell;
 use std::collections::HashSet;
 use std::sync::Arc;
@@ -84,6 +85,8 @@ pub struct DrawState {
     /// `None`: the interpreter runs the key.
     pub specialist: Option<Arc<Specialist>>,
     pub textures: SharedPlan,
+    /// The polygon stipple its triangles are masked with, when enabled.
+    pub polygon_stipple: Option<Box<[u32; 32]>>,
 }
 
 /// A recorded vertex's window position, depth and 1/w; its varyings (the
@@ -126,6 +129,7 @@ impl DrawState {
             }
             && self.textures.is_empty()
             && other.textures.is_empty()
+            && self.polygon_stipple == other.polygon_stipple
     }
 }
 
@@ -532,6 +536,7 @@ impl Scene {
         // band first runs the draw.
         let views: Vec<OnceCell<DrawTextures<'_>>> = std::iter::repeat_with(OnceCell::new).take(stages.len()).collect();
         let mut stage = FragmentStage::new(band);
+        let mut stipple_span = FragmentSpan::new(0, 0);
         for tx in 0..self.tiles_x {
             let tile = Rect {
                 x0: tx * TILE,
@@ -586,7 +591,17 @@ impl Scene {
                     continue;
                 }
                 match tri {
-                    Some((at, w0, class)) => self.cover(at, w0, class, tile, &mut stage),
+                    Some((at, w0, class)) => match self.draws.get(current).and_then(|d| d.polygon_stipple.as_deref()) {
+                        None => self.cover(at, w0, class, tile, &mut stage),
+                        Some(rows) => {
+                            let sink = &mut PolygonStipple {
+                                inner: &mut stage,
+                                rows,
+                                scratch: &mut stipple_span,
+                            };
+                            self.cover(at, w0, class, tile, sink)
+                        }
+                    },
                     None => self.rasterize(&self.prims[e as usize], tile, &mut scratch, &mut stage),
                 }
             }

@@ -19,18 +19,6 @@ exports! {
     [] fn glPixelTransferi(_pname: GLenum, _param: i32) {
         missing()
     }
-    /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLineStipple(_factor: i32, _pattern: u16) {
-        missing()
-    }
-    /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPolygonStipple(_mask: *const u8) {
-        missing()
-    }
-    /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetPolygonStipple(_mask: *mut u8) {
-        missing_now()
-    }
     /// Accumulation buffer (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glAccum(_op: GLenum, _value: f32) {
         missing()

@@ -33,6 +33,7 @@ mod lists;
 mod missing;
 mod pixels;
 mod state;
+mod stipple;
 mod texture;
 mod texunit;
 
@@ -47,6 +48,7 @@ pub use lists::*;
 pub use missing::*;
 pub use pixels::*;
 pub use state::*;
+pub use stipple::*;
 pub use texture::*;
 pub use texunit::*;
 
@@ -65,6 +67,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         missing::table,
         pixels::table,
         state::table,
+        stipple::table,
         texture::table,
         texunit::table,
         texunit::multi_table,
