@@ -550,6 +550,8 @@ impl Scene {
             // clear: a no-op while it stays the same), and whether its
             // stage was made.
             let (mut current, mut ok) = (usize::MAX, false);
+            // The draw's polygon stipple, if any: its triangles' spans are masked.
+            let mut stipple: Option<&[u32; 32]> = None;
             for &e in bin {
                 if e & CLEAR != 0 {
                     if let Some(c) = self.clears.get((e & !CLEAR) as usize) {
@@ -571,6 +573,7 @@ impl Scene {
                 };
                 if d != current {
                     current = d;
+                    stipple = self.draws.get(d).and_then(|d| d.polygon_stipple.as_deref());
                     ok = match stages.get(d) {
                         Some(Ok(draw)) => {
                             let view = views[d].get_or_init(|| {
@@ -591,7 +594,7 @@ impl Scene {
                     continue;
                 }
                 match tri {
-                    Some((at, w0, class)) => match self.draws.get(current).and_then(|d| d.polygon_stipple.as_deref()) {
+                    Some((at, w0, class)) => match stipple {
                         None => self.cover(at, w0, class, tile, &mut stage),
                         Some(rows) => {
                             let sink = &mut PolygonStipple {

@@ -57,21 +57,22 @@ pub fn unpack(bytes: &[u8], store: &PixelStore) -> Option<[u32; 32]> {
 }
 
 /// Writes `rows` into client memory as a 32×32 bitmap under the pack state
-/// `store`, bit by bit (the other bits of the bytes it touches are kept, as
-/// Mesa's `_mesa_pack_bitmap` keeps them). `None` (nothing written) when
-/// `out` is shorter than the layout.
+/// `store`. The bytes a row touches are written whole: the skipped bits of
+/// its first byte and the bits after its last are 0, as Mesa's
+/// `_mesa_pack_bitmap` leaves them. `None` (nothing written) when `out` is
+/// shorter than the layout.
 pub fn pack(rows: &[u32; 32], out: &mut [u8], store: &PixelStore) -> Option<()> {
     if out.len() < bitmap_len(store)? {
         return None;
     }
     for (y, row) in rows.iter().enumerate() {
+        let (first, _) = bit_at(store, 0, y)?;
+        let (last, _) = bit_at(store, 31, y)?;
+        out.get_mut(first..=last)?.fill(0);
         for x in 0..32 {
             let (byte, mask) = bit_at(store, x, y)?;
-            let b = out.get_mut(byte)?;
             if row & (1 << (31 - x)) != 0 {
-                *b |= mask;
-            } else {
-                *b &= !mask;
+                *out.get_mut(byte)? |= mask;
             }
         }
     }
@@ -236,6 +237,66 @@ mod tests {
         // From x = 31: pixel 31 is off, 32 (column 0) and 33 (column 1) on.
         assert_eq!(row_mask(row, 31) & 0b111, 0b110);
         assert_eq!(row_mask(row, 64), m);
+    }
+
+    /// Records the lines it is handed: their x ranges.
+    #[derive(Default)]
+    struct Dashes(Vec<(f32, f32)>);
+
+    impl PrimSink for Dashes {
+        fn triangle(&mut self, _: [&RasterVertex; 3], _: Option<&Varyings>, _: &RasterParams) {}
+        fn point(&mut self, _: &RasterVertex, _: f32, _: &RasterParams) {}
+        fn line(&mut self, a: &RasterVertex, b: &RasterVertex, _: f32, _: Option<&Varyings>, _: &RasterParams) {
+            self.0.push((a.x, b.x));
+        }
+    }
+
+    fn at(x: f32, y: f32) -> RasterVertex {
+        RasterVertex {
+            x,
+            y,
+            y_down: 64.0 - y,
+            z: 0.5,
+            inv_w: 1.0,
+            v: [0.0; crate::geometry::varying::MAX_VARYINGS],
+        }
+    }
+
+    fn params() -> RasterParams {
+        RasterParams {
+            bounds: crate::framebuffer::Rect {
+                x0: 0,
+                y0: 0,
+                x1: 64,
+                y1: 64,
+            },
+            depth: None,
+            height: 64,
+            layout: Default::default(),
+            offset: None,
+        }
+    }
+
+    #[test]
+    fn dashes_follow_the_counter_along_a_strip_and_restart_at_separate_lines() {
+        let mut out = Dashes::default();
+        // Factor 2, pattern 0x00FF: 16 pixels on, 16 off.
+        let mut s = LineStipple::new(&mut out, 2, 0x00FF, false);
+        let p = params();
+        // 20 pixels: on 0..16, off 16..20; then 20 more: off 20..32, on 32..40.
+        s.line(&at(0.5, 3.5), &at(20.5, 3.5), 1.0, None, &p);
+        s.line(&at(20.5, 3.5), &at(40.5, 3.5), 1.0, None, &p);
+        assert_eq!(s.counter, 40);
+        // Separate lines: each starts at the pattern's first bit.
+        s.reset_each = true;
+        s.line(&at(0.5, 9.5), &at(20.5, 9.5), 1.0, None, &p);
+        // A NaN line counts nothing and draws nothing.
+        s.line(&at(f32::NAN, 9.5), &at(20.5, 9.5), 1.0, None, &p);
+        assert_eq!(out.0, [(0.5, 16.5), (32.5, 40.5), (0.5, 16.5)]);
+        // Factors clamp to [1, 256].
+        let mut sink = Dashes::default();
+        assert_eq!(LineStipple::new(&mut sink, 0, 1, false).factor, 1);
+        assert_eq!(LineStipple::new(&mut sink, 1000, 1, false).factor, 256);
     }
 
     #[test]
