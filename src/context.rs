@@ -21,6 +21,7 @@ use crate::lighting::{
 use crate::matrix::{self, MatrixMode, MatrixStack};
 use crate::raster::background::Background;
 use crate::raster::scene::{DrawState, Scene};
+use crate::raster::stipple::LineStipple;
 use crate::state::{
     Capability, ClearMask, Face, FrontFace, PolygonMode, PrimitiveMode, RasterState, ShadeModel, WindowRect,
 };
@@ -1002,6 +1003,18 @@ impl Context {
         self.set(|s| s.line_width = width)
     }
 
+    /// `glLineStipple`: `factor` clamped to `[1, 256]`.
+    pub fn line_stipple(&mut self, factor: i32, pattern: u16) -> GlResult {
+        self.set(|s| (s.line_stipple_factor, s.line_stipple_pattern) = (factor.clamp(1, 256), pattern))
+    }
+
+    /// `glPolygonStipple`, the pattern unpacked: row `i` (window `y mod 32 = i`)
+    /// with column 0 in bit 31 ([`crate::raster::stipple::unpack`] reads GL's
+    /// bitmap layout).
+    pub fn polygon_stipple(&mut self, rows: [u32; 32]) -> GlResult {
+        self.set(|s| s.polygon_stipple_pattern = rows)
+    }
+
     // ----- per-fragment state -----
 
     /// `glAlphaFunc`; the reference is clamped to `[0, 1]`.
@@ -1541,6 +1554,7 @@ impl Context {
             specialist,
             textures: textures.share(),
             samples,
+            polygon_stipple: self.state.polygon_stipple.then(|| Box::new(self.state.polygon_stipple_pattern)),
         };
         if !self.lanes.is_empty() {
             // A multisampled framebuffer: the geometry runs once, each
@@ -1574,7 +1588,15 @@ impl Context {
             return self.record(r.map_err(|_| GlError::InvalidOperation));
         }
         let mut binner = self.scene.draw(&mut self.fb, &mut self.background, self.threads, state);
-        geometry.draw(&vertex_stage, mode, count, fetch, &mut binner, &mut self.window);
+        let s = &*self.state;
+        if s.line_stipple && s.line_stipple_pattern != 0xFFFF {
+            // Mesa's state tracker leaves an all-ones pattern out (`st_atom_rasterizer.c`).
+            let lines = mode.0 == PrimitiveMode::Lines;
+            let mut sink = LineStipple::new(&mut binner, s.line_stipple_factor, s.line_stipple_pattern, lines);
+            geometry.draw(&vertex_stage, mode, count, fetch, &mut sink, &mut self.window);
+        } else {
+            geometry.draw(&vertex_stage, mode, count, fetch, &mut binner, &mut self.window);
+        }
         let r = binner.finish();
         self.record(r.map_err(|_| GlError::InvalidOperation))
     }

@@ -209,6 +209,8 @@ gl_enums! {
         PolygonOffsetLine = GL_POLYGON_OFFSET_LINE 0x2A02,
         PolygonOffsetFill = GL_POLYGON_OFFSET_FILL 0x8037,
         ColorSum = GL_COLOR_SUM 0x8458,
+        LineStipple = GL_LINE_STIPPLE 0x0B24,
+        PolygonStipple = GL_POLYGON_STIPPLE 0x0B42,
         Lighting = GL_LIGHTING 0x0B50,
         ColorMaterial = GL_COLOR_MATERIAL 0x0B57,
         Normalize = GL_NORMALIZE 0x0BA1,

@@ -30,6 +30,10 @@ pub enum Capability {
     /// `GL_COLOR_SUM`: add the secondary colour to the primary one.
     ColorSum,
     Lighting,
+    /// `GL_LINE_STIPPLE`.
+    LineStipple,
+    /// `GL_POLYGON_STIPPLE`.
+    PolygonStipple,
     /// `GL_LIGHTi`, `i < 8`.
     Light(u8),
     ColorMaterial,
@@ -261,6 +265,14 @@ pub struct RasterState {
     /// GL 1.4's `glPointParameter` state.
     pub point_params: PointParams,
     pub line_width: f32,
+    /// `GL_LINE_STIPPLE` and `glLineStipple`'s factor (1 to 256) and pattern.
+    pub line_stipple: bool,
+    pub line_stipple_factor: i32,
+    pub line_stipple_pattern: u16,
+    /// `GL_POLYGON_STIPPLE` and `glPolygonStipple`'s pattern: row `y mod 32`
+    /// of window y (up), its bit 31 column `x mod 32 = 0` (Mesa's `ctx->PolygonStipple`).
+    pub polygon_stipple: bool,
+    pub polygon_stipple_pattern: [u32; 32],
 
     pub clear_color: [f32; 4],
     pub clear_depth: f64,
@@ -330,6 +342,11 @@ impl RasterState {
             point_size: 1.0,
             point_params: PointParams::DEFAULT,
             line_width: 1.0,
+            line_stipple: false,
+            line_stipple_factor: 1,
+            line_stipple_pattern: 0xFFFF,
+            polygon_stipple: false,
+            polygon_stipple_pattern: [!0; 32],
             clear_color: [0.0; 4],
             clear_depth: 1.0,
             clear_stencil: 0,
@@ -361,6 +378,8 @@ impl RasterState {
             Capability::Fog => &mut self.fog.enabled,
             Capability::ColorSum => &mut self.color_sum,
             Capability::Lighting => &mut self.lighting.enabled,
+            Capability::LineStipple => &mut self.line_stipple,
+            Capability::PolygonStipple => &mut self.polygon_stipple,
             Capability::Light(i) => &mut self.lighting.lights[usize::from(i)].enabled,
             Capability::ColorMaterial => &mut self.lighting.color_material,
             Capability::Normalize => &mut self.lighting.normalize,
@@ -391,6 +410,8 @@ impl RasterState {
             Capability::Fog => self.fog.enabled,
             Capability::ColorSum => self.color_sum,
             Capability::Lighting => self.lighting.enabled,
+            Capability::LineStipple => self.line_stipple,
+            Capability::PolygonStipple => self.polygon_stipple,
             Capability::Light(i) => self.lighting.lights.get(usize::from(i)).is_some_and(|l| l.enabled),
             Capability::ColorMaterial => self.lighting.color_material,
             Capability::Normalize => self.lighting.normalize,

@@ -91,16 +91,16 @@ fn unknown_and_destroyed_handles_are_refused() {
 fn unimplemented_functions_record_invalid_operation() {
     let mut buf = vec![0u8; 8 * 8 * 4];
     let ctx = current(&mut buf, 8, 8);
-    // GL_LINE_STIPPLE: a capability softgl does not implement yet.
-    const STIPPLE: u32 = 0x0B24;
-    glEnable(STIPPLE);
+    // GL_POLYGON_SMOOTH: a capability softgl does not implement yet.
+    const SMOOTH: u32 = 0x0B41;
+    glEnable(SMOOTH);
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
-    assert_eq!(glIsEnabled(STIPPLE), GL_FALSE);
-    glDisable(STIPPLE); // disabling what is off is fine
+    assert_eq!(glIsEnabled(SMOOTH), GL_FALSE);
+    glDisable(SMOOTH); // disabling what is off is fine
     assert_eq!(glGetError(), GL_NO_ERROR);
-    glEnable(STIPPLE);
+    glEnable(SMOOTH);
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
-    glLineStipple(1, 0xF0F0);
+    glPassThrough(1.0); // selection and feedback are not in softgl
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     // Inert (no evaluators): accepted and reported.
     glEnable(GL_AUTO_NORMAL);

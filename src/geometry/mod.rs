@@ -746,7 +746,23 @@ impl<'s> Geometry<'s> {
                     v.z += dz;
                 }
                 let shifted = &*win;
-                for i in 0..shifted.len() {
+                // Under line stipple, the edges in llvmpipe's order (its
+                // counter runs on along them): a triangle's last edge first,
+                // as draw's `draw_pipe_unfilled.c` emits v2→v0, v0→v1, v1→v2;
+                // a clipped polygon's from the first (`emit_poly` of
+                // `draw_pipe_clip.c` fans it, the stipple reset at the first).
+                let first = if mode == PolygonMode::Line && self.state.line_stipple {
+                    sink.reset_stipple();
+                    if was_clipped {
+                        0
+                    } else {
+                        shifted.len() - 1
+                    }
+                } else {
+                    0
+                };
+                for k in 0..shifted.len() {
+                    let i = (first + k) % shifted.len();
                     let (v, edge) = &shifted[i];
                     if !edge {
                         continue;

@@ -16,6 +16,7 @@ mod point;
 pub mod pool;
 mod rows;
 pub mod scene;
+pub mod stipple;
 pub(crate) mod triangle;
 
 pub use block::{tile_coverage, TileMask, TILE};
@@ -95,6 +96,9 @@ pub trait PrimSink {
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams);
     fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams);
     fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams);
+    /// Starts the line stipple's counter again (a polygon drawn as lines);
+    /// only a [`stipple::LineStipple`] keeps one.
+    fn reset_stipple(&mut self) {}
 }
 
 /// Rasterizes what it is handed at once into a sink of a known type: its

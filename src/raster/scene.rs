@@ -31,6 +31,7 @@
 
 use super::background::Background;
 use super::triangle::{plane_swap, setup_planes, Plane, Prepared};
+use super::stipple::PolygonStipple;
 use super::{reach_box, Edges, PrimSink, RasterParams, RasterVertex, Rasterize, SpanSink};
 use crate::fragment::{DrawStage, FragmentStage};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
@@ -38,7 +39,7 @@ use crate::geometry::varying::{Varyings, MAX_VARYINGS};
 use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::shade::{slot, PLANES};
 use softgl_jit::texture::TextureSet;
-use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentUniforms, Planes, Specialist, Target};
+use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentSpan, FragmentKey, FragmentUniforms, Planes, Specialist, Target};
 use std::cell::OnceCell;
 use std::collections::HashSet;
 use std::sync::atomic::AtomicU64;
@@ -88,6 +89,8 @@ pub struct DrawState {
     /// The active occlusion query's counter (with `key.count`): each band
     /// adds the fragments it counted to it.
     pub samples: Option<Arc<AtomicU64>>,
+    /// The polygon stipple its triangles are masked with, when enabled.
+    pub polygon_stipple: Option<Box<[u32; 32]>>,
 }
 
 /// A recorded vertex's window position, depth and 1/w; its varyings (the
@@ -147,6 +150,7 @@ impl DrawState {
                 (None, None) => true,
                 _ => false,
             }
+            && self.polygon_stipple == other.polygon_stipple
     }
 }
 
@@ -579,6 +583,7 @@ impl Scene {
         // band first runs the draw.
         let views: Vec<OnceCell<DrawTextures<'_>>> = std::iter::repeat_with(OnceCell::new).take(stages.len()).collect();
         let mut stage = FragmentStage::new(band);
+        let mut stipple_span = FragmentSpan::new(0, 0);
         for tx in 0..self.tiles_x {
             let tile = Rect {
                 x0: tx * TILE,
@@ -592,6 +597,8 @@ impl Scene {
             // clear: a no-op while it stays the same), and whether its
             // stage was made.
             let (mut current, mut ok) = (usize::MAX, false);
+            // The draw's polygon stipple, if any: its triangles' spans are masked.
+            let mut stipple: Option<&[u32; 32]> = None;
             for &e in bin {
                 if e & CLEAR != 0 {
                     if let Some(c) = self.clears.get((e & !CLEAR) as usize) {
@@ -613,6 +620,7 @@ impl Scene {
                 };
                 if d != current {
                     current = d;
+                    stipple = self.draws.get(d).and_then(|d| d.polygon_stipple.as_deref());
                     ok = match stages.get(d) {
                         Some(Ok(draw)) => {
                             let view = views[d].get_or_init(|| {
@@ -633,7 +641,17 @@ impl Scene {
                     continue;
                 }
                 match tri {
-                    Some((at, w0, class)) => self.cover(at, w0, class, tile, &mut stage),
+                    Some((at, w0, class)) => match stipple {
+                        None => self.cover(at, w0, class, tile, &mut stage),
+                        Some(rows) => {
+                            let sink = &mut PolygonStipple {
+                                inner: &mut stage,
+                                rows,
+                                scratch: &mut stipple_span,
+                            };
+                            self.cover(at, w0, class, tile, sink)
+                        }
+                    },
                     None => {
                         let p = &self.prims[e as usize];
                         if let Kind::Image { index } = p.kind {

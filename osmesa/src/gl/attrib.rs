@@ -1,7 +1,7 @@
 //! The attribute stacks: `glPushAttrib`/`glPopAttrib` and the client ones.
 //! A push saves the whole state; a pop restores the groups its mask named,
 //! through the context's own setters. Groups without state in softgl yet
-//! (pixel maps, stipple, …) save nothing.
+//! (pixel maps, …) save nothing.
 
 use super::texture::TARGETS;
 use super::{now, rec};
@@ -20,6 +20,7 @@ const POINT_BIT: u32 = 0x2;
 const LINE_BIT: u32 = 0x4;
 const POLYGON_BIT: u32 = 0x8;
 const PIXEL_MODE_BIT: u32 = 0x20;
+const POLYGON_STIPPLE_BIT: u32 = 0x10;
 const LIGHTING_BIT: u32 = 0x40;
 const FOG_BIT: u32 = 0x80;
 const DEPTH_BIT: u32 = 0x100;
@@ -174,8 +175,16 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
     }
     if m & LINE_BIT != 0 {
         gl.line_width(st.line_width)?;
+        gl.line_stipple(st.line_stipple_factor, st.line_stipple_pattern)?;
+    }
+    if m & (LINE_BIT | ENABLE_BIT) != 0 {
+        set_cap(gl, Capability::LineStipple, st.line_stipple)?;
+    }
+    if m & POLYGON_STIPPLE_BIT != 0 {
+        gl.polygon_stipple(st.polygon_stipple_pattern)?;
     }
     if m & (POLYGON_BIT | ENABLE_BIT) != 0 {
+        set_cap(gl, Capability::PolygonStipple, st.polygon_stipple)?;
         set_cap(gl, Capability::CullFace, st.cull)?;
         set_cap(gl, Capability::PolygonOffsetFill, st.offset_fill)?;
         set_cap(gl, Capability::PolygonOffsetLine, st.offset_line)?;

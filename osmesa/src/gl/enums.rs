@@ -27,9 +27,8 @@ pub fn cap(v: GLenum) -> GlResult<Cap> {
     match v {
         // AUTO_NORMAL (evaluators are not in softgl)
         0x0D80 => Ok(Cap::Inert(v)),
-        // LINE/POLYGON_STIPPLE, POINT/LINE/POLYGON_SMOOTH,
-        // MAP1_*, MAP2_*, INDEX_LOGIC_OP
-        0x0B24 | 0x0B42 | 0x0B10 | 0x0B20 | 0x0B41 | 0x0D90..=0x0D98 | 0x0DB0..=0x0DB8 | 0x0BF1 => Ok(Cap::Missing),
+        // POINT/LINE/POLYGON_SMOOTH, MAP1_*, MAP2_*, INDEX_LOGIC_OP
+        0x0B10 | 0x0B20 | 0x0B41 | 0x0D90..=0x0D98 | 0x0DB0..=0x0DB8 | 0x0BF1 => Ok(Cap::Missing),
         _ => Err(GlError::InvalidEnum),
     }
 }

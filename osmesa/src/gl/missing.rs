@@ -11,18 +11,6 @@ use crate::consts::*;
 use std::ffi::c_void;
 
 exports! {
-    /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLineStipple(_factor: i32, _pattern: u16) {
-        missing()
-    }
-    /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPolygonStipple(_mask: *const u8) {
-        missing()
-    }
-    /// Stipple (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetPolygonStipple(_mask: *mut u8) {
-        missing_now()
-    }
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glRenderMode(_mode: GLenum) -> i32 {
         missing_now();

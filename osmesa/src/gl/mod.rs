@@ -42,6 +42,7 @@ mod pixels;
 mod queries;
 mod raster_pos;
 mod state;
+mod stipple;
 mod texture;
 mod texunit;
 
@@ -64,6 +65,7 @@ pub use pixels::*;
 pub use queries::*;
 pub use raster_pos::*;
 pub use state::*;
+pub use stipple::*;
 pub use texture::*;
 pub use texunit::*;
 
@@ -90,6 +92,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         queries::table,
         raster_pos::table,
         state::table,
+        stipple::table,
         texture::table,
         texunit::table,
         texunit::multi_table,
