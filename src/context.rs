@@ -1554,7 +1554,10 @@ impl Context {
             specialist,
             textures: textures.share(),
             samples,
-            polygon_stipple: self.state.polygon_stipple.then(|| Box::new(self.state.polygon_stipple_pattern)),
+            polygon_stipple: self
+                .state
+                .polygon_stipple
+                .then(|| Box::new(self.state.polygon_stipple_pattern)),
         };
         if !self.lanes.is_empty() {
             // A multisampled framebuffer: the geometry runs once, each

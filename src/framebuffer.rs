@@ -522,6 +522,7 @@ impl Framebuffer {
             stencil,
             color_enabled: true,
             accum: None,
+            samples: Vec::new(),
         })
     }
 

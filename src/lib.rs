@@ -19,8 +19,8 @@
 //! ```
 #![forbid(unsafe_code)]
 
-pub mod buffer;
 pub mod accum;
+pub mod buffer;
 pub mod context;
 pub mod demo;
 pub mod error;
@@ -34,18 +34,18 @@ pub(crate) mod immediate;
 pub mod inverse;
 pub mod lighting;
 pub mod matrix;
-pub mod query;
+pub mod multisample;
 pub mod pixel_rect;
 pub mod pixel_transfer;
-pub mod multisample;
+pub mod query;
 pub mod raster;
 pub mod raster_pos;
 pub mod state;
 pub mod texture;
 pub mod tracked;
 
-pub use buffer::{Buffer, BufferAccess, BufferParamName, BufferStore, BufferTarget, BufferUsage};
 pub use accum::{AccumBuffer, AccumOp};
+pub use buffer::{Buffer, BufferAccess, BufferParamName, BufferStore, BufferTarget, BufferUsage};
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, SceneStats, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fog::{FogCoordSrc, FogMode, FogParam};

@@ -240,6 +240,9 @@ impl Framebuffer {
         if !matches!(samples, 1 | MAX_SAMPLES) {
             return Err(GlError::InvalidValue);
         }
+        if samples > 1 && desc.color.is_deep() {
+            return Err(GlError::InvalidOperation);
+        }
         let mut fb = Framebuffer::new(desc)?;
         for _ in 1..samples {
             fb.samples.push(Framebuffer::new(desc)?);
@@ -370,6 +373,9 @@ pub fn resolve_value(format: ColorFormat, samples: &[u32]) -> u32 {
     let channels: &[(u32, u32)] = match format {
         ColorFormat::Rgb565 => &[(11, 5), (5, 6), (0, 5)],
         ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8 => &[(0, 8), (8, 8), (16, 8), (24, 8)],
+        // Deep formats do not fit a packed u32 and are never multisampled
+        // (`Framebuffer::new_multisample` refuses them).
+        ColorFormat::Rgba16 | ColorFormat::Rgba32F => return samples[0],
     };
     let mut out = 0u32;
     for &(shift, width) in channels {

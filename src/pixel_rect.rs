@@ -282,6 +282,9 @@ impl Context {
             layout,
             offset: None,
         };
+        // An active occlusion query counts these fragments too.
+        let samples = self.queries().counter();
+        key.count = samples.is_some();
         let specialist = match self.backend {
             Backend::Jit => self.specialists.get(&key).cloned(),
             Backend::Interpreter => None,
@@ -292,6 +295,9 @@ impl Context {
             uniforms,
             specialist,
             textures: textures.share(),
+            samples,
+            // Polygon stipple applies to polygons only.
+            polygon_stipple: None,
         };
         Ok((state, params, vertex))
     }

@@ -67,6 +67,7 @@ fn render_into(name: &str, fb: softgl::Framebuffer, backend: Backend) -> Context
         color: true,
         depth: true,
         stencil: true,
+        accum: false,
     };
     gl.clear(all).unwrap();
     match name {
@@ -295,6 +296,7 @@ fn a_multisampled_framebuffer_swapped_in_draws_per_sample_and_resolves() {
         color: true,
         depth: true,
         stencil: true,
+        accum: false,
     })
     .unwrap();
     gl.enable(Capability::DepthTest).unwrap();

@@ -248,6 +248,7 @@ pub(crate) fn run_span(
             }
             Stage::StencilTest { stencil, depth_on } => stencil_stage(stencil, depth_on, u, (x0, y), &mut live, t),
             Stage::DepthTest { depth, stencil } => depth_stage(depth, stencil, u, (x0, y, &z), &mut live, t),
+            Stage::Count => t.add_samples_passed(u64::from(live.count_ones())),
             Stage::Blend(blend) => {
                 let off0 = t.color_offset(x0, y);
                 let color = t.color();

@@ -170,9 +170,6 @@ pub struct GlState {
     pub compiling: Option<Compiling>,
     pub list_base: u32,
     pub call_depth: u32,
-    /// `glSampleCoverage`'s value and invert flag (state only here: the
-    /// multisampling that reads them is not in softgl yet).
-    pub sample_coverage: (f32, bool),
 }
 
 impl Default for GlState {
@@ -202,7 +199,6 @@ impl Default for GlState {
             compiling: None,
             list_base: 0,
             call_depth: 0,
-            sample_coverage: (1.0, false),
         }
     }
 }

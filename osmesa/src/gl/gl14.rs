@@ -1,14 +1,12 @@
 //! Small GL 1.3 and 1.4 entry points: the transposed matrices
 //! (`glLoadTransposeMatrix`, `glMultTransposeMatrix`, GL 1.3 and
-//! `ARB_transpose_matrix`), the point parameters (`glPointParameter`, GL
-//! 1.4, `ARB_point_parameters`, `EXT_point_parameters`) and
-//! `glSampleCoverage`'s state (GL 1.3; `ARB_multisample`'s effect is not in
-//! softgl). Each is compiled into display lists as GL says.
+//! `ARB_transpose_matrix`) and the point parameters (`glPointParameter`, GL
+//! 1.4, `ARB_point_parameters`, `EXT_point_parameters`). Each is compiled
+//! into display lists as GL says.
 
 use super::get::Val;
 use super::{checked, rec};
 use crate::consts::*;
-use crate::gl_state::GlState;
 use glam::Mat4;
 use softgl::state::PointParams;
 use softgl::{Context, GlError, GlResult, MatrixMode};
@@ -17,8 +15,6 @@ const GL_POINT_SIZE_MIN: GLenum = 0x8126;
 const GL_POINT_SIZE_MAX: GLenum = 0x8127;
 const GL_POINT_FADE_THRESHOLD_SIZE: GLenum = 0x8128;
 const GL_POINT_DISTANCE_ATTENUATION: GLenum = 0x8129;
-const GL_SAMPLE_COVERAGE_VALUE: GLenum = 0x80AA;
-const GL_SAMPLE_COVERAGE_INVERT: GLenum = 0x80AB;
 
 /// 16 values at `m`, column major once transposed; `None` for null (the
 /// call then does nothing, as Mesa's `_mesa_LoadTransposeMatrixf`).
@@ -76,7 +72,7 @@ fn point_parameter_v(pname: GLenum, v: Option<[f32; 3]>) {
 }
 
 /// The point parameters and sample coverage `glGet*` answers.
-pub(super) fn value(os: &GlState, gl: &Context, pname: GLenum) -> Option<Val> {
+pub(super) fn value(gl: &Context, pname: GLenum) -> Option<Val> {
     let p: PointParams = gl.state().point_params;
     let f = |v: f32| Val::F(vec![f64::from(v)]);
     Some(match pname {
@@ -96,8 +92,6 @@ pub(super) fn value(os: &GlState, gl: &Context, pname: GLenum) -> Option<Val> {
                     .collect(),
             )
         }
-        GL_SAMPLE_COVERAGE_VALUE => f(os.sample_coverage.0),
-        GL_SAMPLE_COVERAGE_INVERT => Val::B(vec![os.sample_coverage.1]),
         _ => return None,
     })
 }
@@ -190,17 +184,5 @@ exports! {
     [unsafe] fn glPointParameterfvEXT(pname: GLenum, params: *const f32) {
         // SAFETY: the same contract.
         unsafe { glPointParameterfv(pname, params) }
-    }
-    /// `GL_SAMPLE_COVERAGE_VALUE` (clamped to 0..1) and `_INVERT`: state
-    /// and queries only.
-    [] fn glSampleCoverage(value: f32, invert: u8) {
-        rec(move |os, gl| {
-            super::outside(gl)?;
-            os.sample_coverage = (value.clamp(0.0, 1.0), invert != 0);
-            Ok(())
-        })
-    }
-    [] fn glSampleCoverageARB(value: f32, invert: u8) {
-        glSampleCoverage(value, invert)
     }
 }

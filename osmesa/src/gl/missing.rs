@@ -8,7 +8,6 @@
 
 use super::{missing, missing_now};
 use crate::consts::*;
-use std::ffi::c_void;
 
 exports! {
     /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
