@@ -812,38 +812,7 @@ impl PrimSink for Binner<'_> {
     /// Sets the triangle up once (its coverage and planes) and records
     /// it; one that no pixel is inside is not recorded.
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
-        let p = Edges::window_points(v, params.height);
-        let Some(prep) = Prepared::new(p, params.bounds) else {
-            return;
-        };
-        let draw = self.draw();
-        let swap = plane_swap(p);
-        let scene = &mut *self.scene;
-        let class = scene.class(draw, params, v, swap);
-        // The record is made aside, then appended at once (appending it
-        // in pieces of a known length, with their inline stores, was 9
-        // instructions a triangle more: each piece tests the capacity).
-        let rec = &mut scene.record.0;
-        let Some(cover) = rec[1..].first_chunk_mut::<{ Prepared::WORDS }>() else {
-            return;
-        };
-        let (n, tag) = prep.encode(cover);
-        rec[0] = class | tag << 30;
-        let mut len = 1 + n;
-        setup_planes(v, swap, flat, params, &mut |_, plane| {
-            if let Some(to) = rec.get_mut(len..len + 3) {
-                to.copy_from_slice(&[plane.a0.to_bits(), plane.dadx.to_bits(), plane.dady.to_bits()]);
-                len += 3;
-            }
-        });
-        let entry = TRI | scene.used as u32;
-        Scene::append(&mut scene.records, &mut scene.used, rec, len);
-        scene.triangles += 1;
-        scene.bytes += 4 * len;
-        scene.bin(prep.rect(), entry);
-        if scene.full() {
-            self.flush();
-        }
+        self.triangle_at(v, flat, params, None)
     }
 
     fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
@@ -864,10 +833,9 @@ impl Binner<'_> {
     /// framebuffer (`multisample.rs`) when given: the coverage of the
     /// triangle moved by minus the sample's offset (exact in fixed point),
     /// and the depth plane moved to the sample; the other planes stay at the
-    /// pixel centre. (The single-sampled [`PrimSink::triangle`] keeps its
-    /// own copy of this: through this one with `None`, inlined, `lit` took
-    /// 0.6% more instructions a frame, callgrind.)
-    #[inline]
+    /// pixel centre. Inlined, so that the single-sampled path (`None`)
+    /// compiles to what it was.
+    #[inline(always)]
     pub(crate) fn triangle_at(
         &mut self,
         v: [&RasterVertex; 3],
@@ -881,6 +849,7 @@ impl Binner<'_> {
     /// [`Binner::triangle_at`] of the snapped bottom-up points `p` (the
     /// corners of a multisampled line: `multisample::Fan`), whose planes
     /// are set up from `v`.
+    #[inline(always)]
     pub(crate) fn triangle_points(
         &mut self,
         p: [(i64, i64); 3],
