@@ -1404,7 +1404,10 @@ impl Context {
             uniforms,
             specialist,
             textures: textures.share(),
-            polygon_stipple: self.state.polygon_stipple.then(|| Box::new(self.state.polygon_stipple_pattern)),
+            polygon_stipple: self
+                .state
+                .polygon_stipple
+                .then(|| Box::new(self.state.polygon_stipple_pattern)),
         };
         let mut binner = self.scene.draw(&mut self.fb, &mut self.background, self.threads, state);
         let s = &*self.state;

@@ -606,7 +606,10 @@ fn line_and_polygon_stipple_match_mesa() {
             4 => 1,
             _ => 0,
         };
-        assert!(differing <= allowed, "scene {k}: {differing} pixels differ ({report:?})");
+        assert!(
+            differing <= allowed,
+            "scene {k}: {differing} pixels differ ({report:?})"
+        );
         assert!(drawn > 100, "scene {k}: only {drawn} pixels drawn");
     }
     assert_eq!(soft.file("stipple.get"), mesa.file("stipple.get"));

@@ -30,8 +30,8 @@
 //! its own, so the pixels are those of the whole primitive at once.
 
 use super::background::Background;
-use super::triangle::{plane_swap, setup_planes, Plane, Prepared};
 use super::stipple::PolygonStipple;
+use super::triangle::{plane_swap, setup_planes, Plane, Prepared};
 use super::{reach_box, Edges, PrimSink, RasterParams, RasterVertex, Rasterize, SpanSink};
 use crate::fragment::{DrawStage, FragmentStage};
 use crate::framebuffer::{Clear, Framebuffer, Rect};
@@ -39,7 +39,9 @@ use crate::geometry::varying::{Varyings, MAX_VARYINGS};
 use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::shade::PLANES;
 use softgl_jit::texture::TextureSet;
-use softgl_jit::{DepthFormat, DrawTextures, FragmentError, FragmentSpan, FragmentKey, FragmentUniforms, Planes, Specialist, Target};
+use softgl_jit::{
+    DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target,
+};
 use std::cell::OnceCell;
 use std::collections::HashSet;
 use std::sync::Arc;

@@ -1,5 +1,5 @@
 //! Line and polygon stipple, as llvmpipe draws them (`docs/llvmpipe-facts.md`
-//! §stipple). Each is a wrapper put around a sink only while its enable is on,
+//! §23). Each is a wrapper put around a sink only while its enable is on,
 //! so that a stage that is off costs nothing:
 //!
 //! - [`LineStipple`] wraps the draw's [`PrimSink`] and cuts each line into the
@@ -21,13 +21,21 @@ use softgl_jit::{FragmentSpan, Planes};
 /// and mask (GL 1.5 §3.6.4 for `GL_BITMAP`; Mesa's `_mesa_image_address`,
 /// `_mesa_image_row_stride`). `None` when the layout overflows.
 fn bit_at(store: &PixelStore, x: usize, y: usize) -> Option<(usize, u8)> {
-    let row_bits = if store.row_length > 0 { store.row_length as usize } else { 32 };
+    let row_bits = if store.row_length > 0 {
+        store.row_length as usize
+    } else {
+        32
+    };
     let align = store.alignment.max(1) as usize;
     let stride = row_bits.div_ceil(8).checked_next_multiple_of(align)?;
     let bit = (store.skip_pixels.max(0) as usize).checked_add(x)?;
     let row = (store.skip_rows.max(0) as usize).checked_add(y)?;
     let byte = row.checked_mul(stride)?.checked_add(bit / 8)?;
-    let mask = if store.lsb_first { 1 << (bit % 8) } else { 0x80 >> (bit % 8) };
+    let mask = if store.lsb_first {
+        1 << (bit % 8)
+    } else {
+        0x80 >> (bit % 8)
+    };
     Some((byte, mask))
 }
 

@@ -185,12 +185,12 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
             s.polygon_mode_front.to_gl().into(),
             s.polygon_mode_back.to_gl().into(),
         ]),
-        0x8038 => f(s.offset_factor), // POLYGON_OFFSET_FACTOR
-        0x2A00 => f(s.offset_units),  // POLYGON_OFFSET_UNITS
-        0x0B11 => f(s.point_size),    // POINT_SIZE
-        0x0B21 => f(s.line_width),    // LINE_WIDTH
+        0x8038 => f(s.offset_factor),                   // POLYGON_OFFSET_FACTOR
+        0x2A00 => f(s.offset_units),                    // POLYGON_OFFSET_UNITS
+        0x0B11 => f(s.point_size),                      // POINT_SIZE
+        0x0B21 => f(s.line_width),                      // LINE_WIDTH
         0x0B25 => i(i32::from(s.line_stipple_pattern)), // LINE_STIPPLE_PATTERN
-        0x0B26 => i(s.line_stipple_factor), // LINE_STIPPLE_REPEAT
+        0x0B26 => i(s.line_stipple_factor),             // LINE_STIPPLE_REPEAT
         // ALIASED_POINT/LINE ranges and the GL 1.1 POINT_SIZE_RANGE/LINE_WIDTH_RANGE.
         0x846D | 0x846E | 0x0B12 | 0x0B22 => Val::F(vec![1.0, 255.0]),
         0x0B13 | 0x0B23 => f(0.1),                      // granularities
