@@ -496,6 +496,28 @@ impl Scene {
         });
     }
 
+    /// [`Scene::cover`] through a polygon stipple's mask (out of line: the
+    /// tile loop's unstippled path stays as it was).
+    #[inline(never)]
+    #[allow(clippy::too_many_arguments)]
+    fn cover_stippled<S: SpanSink>(
+        &self,
+        at: usize,
+        w0: u32,
+        class: &Class,
+        tile: Rect,
+        sink: &mut S,
+        rows: &[u32; 32],
+        scratch: &mut FragmentSpan,
+    ) {
+        let sink = &mut PolygonStipple {
+            inner: sink,
+            rows,
+            scratch,
+        };
+        self.cover(at, w0, class, tile, sink)
+    }
+
     /// Rasterizes line or point `p`'s pixels inside `tile` into `sink`,
     /// rebuilding its vertices in `scratch`.
     fn rasterize<S: SpanSink>(&self, p: &Binned, tile: Rect, scratch: &mut Scratch, sink: &mut S) {
@@ -645,14 +667,7 @@ impl Scene {
                 match tri {
                     Some((at, w0, class)) => match stipple {
                         None => self.cover(at, w0, class, tile, &mut stage),
-                        Some(rows) => {
-                            let sink = &mut PolygonStipple {
-                                inner: &mut stage,
-                                rows,
-                                scratch: &mut stipple_span,
-                            };
-                            self.cover(at, w0, class, tile, sink)
-                        }
+                        Some(rows) => self.cover_stippled(at, w0, class, tile, &mut stage, rows, &mut stipple_span),
                     },
                     None => {
                         let p = &self.prims[e as usize];
