@@ -147,6 +147,22 @@ impl VertexStage<'_> {
     /// coordinate, the texture coordinates, the clip position.
     #[inline(always)]
     fn transform_rest(&self, slots: &Slots, i: usize, v: &InVertex, out: &mut Varyings) -> Vec4 {
+        let pos = self.transform_fog_pos(slots, v, out);
+        self.transform_tex(i, v, out);
+        pos
+    }
+
+    /// The texture coordinates of vertex `v` (index `i`), when the layout carries any.
+    #[inline(always)]
+    fn transform_tex(&self, i: usize, v: &InVertex, out: &mut Varyings) {
+        if let Some((t, fetch)) = self.tex_coords {
+            t.fill(v, |u| (fetch.0)(i, u), out);
+        }
+    }
+
+    /// The fog coordinate of `v` and its clip position.
+    #[inline(always)]
+    fn transform_fog_pos(&self, slots: &Slots, v: &InVertex, out: &mut Varyings) -> Vec4 {
         if let Some(o) = slots.fog {
             out[o] = match self.fog {
                 FogSource::EyeDepth { row } => match self.lighting.as_ref().and_then(|l| l.eye_position(v.pos)) {
@@ -155,9 +171,6 @@ impl VertexStage<'_> {
                 },
                 FogSource::FogCoord => v.fog_coord.abs(),
             };
-        }
-        if let Some((t, fetch)) = self.tex_coords {
-            t.fill(v, |u| (fetch.0)(i, u), out);
         }
         self.mvp * v.pos
     }
@@ -240,6 +253,11 @@ pub struct BatchVertex {
     pub inside: bool,
     /// `glEdgeFlag` of the vertex.
     pub edge: bool,
+    /// Whether its lit colours and texture coordinates are still to be
+    /// computed (the general lighting path computes them when a primitive
+    /// needs the vertex, [`VertexBatch::light_pending`]): until then
+    /// those slots hold stale values.
+    pub pending: bool,
 }
 
 impl BatchVertex {
@@ -267,6 +285,7 @@ const EMPTY: BatchVertex = BatchVertex {
     finite: false,
     inside: false,
     edge: true,
+    pending: false,
 };
 
 /// The vertex window's memory, kept across draws (by the context) so that a
@@ -439,37 +458,63 @@ impl<'a> VertexBatch<'a> {
     fn transform(&self, i: usize, v: &InVertex, out: &mut BatchVertex) {
         out.pos = self.stage.transform_slots(&self.slots, i, v, &mut out.win.v);
         out.edge = v.edge;
+        out.pending = false;
         self.geometry.classify(out);
     }
 
-    /// [`Self::transform`] of a draw lit by `light` through the general
-    /// path, whose colours `cache` keeps by input ([`LitCache`]).
+    /// [`Self::transform`] of a draw lit through the general path, but
+    /// neither lit nor given texture coordinates yet: [`Self::light_pending`]
+    /// does both for the vertices of the primitives drawn. Lit colours are finite (clamped, NaN made 0),
+    /// so the vertex is classified without them (`classify_lit`).
     #[inline]
-    fn transform_cached(&self, light: &LightSetup, cache: &mut LitCache, i: usize, v: &InVertex, out: &mut BatchVertex) {
-        let lit = cache.light(
-            light,
-            &LightInput {
+    fn transform_unlit(&self, v: &InVertex, out: &mut BatchVertex) {
+        out.pos = self.stage.transform_fog_pos(&self.slots, v, &mut out.win.v);
+        out.edge = v.edge;
+        out.pending = true;
+        self.geometry.classify_lit(out);
+    }
+
+    /// Lights the vertices `indices` of the current primitive (loaded by
+    /// [`Self::load`]) that are still pending, through the [`LitCache`],
+    /// and computes their texture coordinates.
+    #[inline]
+    pub fn light_pending(&mut self, indices: &[usize]) {
+        for &i in indices {
+            let at = if i == 0 { self.zero } else { i - self.base };
+            if !self.window.get(at).is_some_and(|v| v.pending) {
+                continue;
+            }
+            let Some(light) = &self.stage.lighting else {
+                continue;
+            };
+            let fetched;
+            let v = match self.fetch {
+                Vertices::Slice(s) => s.get(i),
+                Vertices::Fetch(f) => {
+                    fetched = f(i);
+                    Some(&fetched)
+                }
+            };
+            let Some(v) = v else {
+                continue;
+            };
+            let input = LightInput {
                 pos: v.pos,
                 normal: v.normal,
                 color: v.color,
-            },
-        );
-        self.slots.put_lit(&lit, &mut out.win.v);
-        out.pos = self.stage.transform_rest(&self.slots, i, v, &mut out.win.v);
-        out.edge = v.edge;
-        self.geometry.classify(out);
+            };
+            let lit = self.lit.light(light, &input);
+            let out = &mut self.window[at];
+            self.slots.put_lit(&lit, &mut out.win.v);
+            self.stage.transform_tex(i, v, &mut out.win.v);
+            out.pending = false;
+        }
     }
 
     /// Transforms vertices `first..first + out.len()` into `out`, each read
     /// by `get(i)` (a reference into the draw's vertices, or one made).
     #[inline(always)]
-    fn transform_run<V: Borrow<InVertex>>(
-        &self,
-        first: usize,
-        out: &mut [BatchVertex],
-        get: impl Fn(usize) -> V,
-        cache: &mut LitCache,
-    ) {
+    fn transform_run<V: Borrow<InVertex>>(&self, first: usize, out: &mut [BatchVertex], get: impl Fn(usize) -> V) {
         let one_setup = self.stage.vertex_materials.is_empty();
         let many = self
             .stage
@@ -483,9 +528,9 @@ impl<'a> VertexBatch<'a> {
                     self.transform_lit_chunk(light, first + c * CHUNK, chunk, &get);
                 }
             }
-            (None, Some(light)) => {
+            (None, Some(_)) => {
                 for (k, o) in out.iter_mut().enumerate() {
-                    self.transform_cached(light, cache, first + k, get(first + k).borrow(), o);
+                    self.transform_unlit(get(first + k).borrow(), o);
                 }
             }
             (None, None) => {
@@ -516,6 +561,7 @@ impl<'a> VertexBatch<'a> {
             (normals[0][k], normals[1][k], normals[2][k]) = (n[0], n[1], n[2]);
             o.pos = self.stage.transform_rest(&self.slots, first + k, v, &mut o.win.v);
             o.edge = v.edge;
+            o.pending = false;
         }
         let mut lit = ManyLit::default();
         light.light_many(&normals, out.len(), &mut lit);
@@ -580,14 +626,12 @@ impl<'a> VertexBatch<'a> {
             0
         };
         let mut window = std::mem::take(&mut self.window);
-        let mut cache = std::mem::take(&mut self.lit);
         let out = &mut window[kept..n];
         match self.fetch {
-            Vertices::Slice(s) => self.transform_run(base + kept, out, |i| &s[i], &mut cache),
-            Vertices::Fetch(f) => self.transform_run(base + kept, out, f, &mut cache),
+            Vertices::Slice(s) => self.transform_run(base + kept, out, |i| &s[i]),
+            Vertices::Fetch(f) => self.transform_run(base + kept, out, f),
         }
         self.window = window;
-        self.lit = cache;
         self.base = base;
         self.len = n;
     }
