@@ -21,6 +21,17 @@
 //! that is a power of two), the f32 outcode
 //! ([`super::clip::outcode_f32`]) and the finiteness of lit colours taken
 //! as given (`Geometry::classify_lit`).
+//!
+//! A draw lit through the general path (positional or spot lights, local
+//! viewer: [`LightSetup::is_fast`] false) is transformed and classified
+//! without its colours and texture coordinates; those are computed when a
+//! primitive that is not trivially rejected needs the vertex
+//! ([`VertexBatch::light_pending`]), the colours through a per-draw cache
+//! by input (`LitCache`). Measured on MuJoCo's floor plane
+//! (`osmesa/bench/mujoco_passes.c`, the plane pass: a list of 40,000
+//! quads, 3 lights, most of the plane outside the view; callgrind, 1
+//! thread): 2,640 instructions a vertex, 1,194 with the cache, 192 with
+//! both.
 
 use super::clip::{outcode_f32, ClipVertex};
 use super::lighting::{LightInput, LightSetup, LitColors, ManyLit, CHUNK};
