@@ -26,6 +26,16 @@
 //! polynomials' bits, not the exact power. (The benchmark frames have
 //! shininess 0, which takes Mesa's shortcut and computes no power.) Its
 //! `fmuladd` steps use the inline [`super::fma`], not an `fmaf` call.
+//!
+//! The general path (positional or spot lights, local viewer: MuJoCo's
+//! state) costs about 1,800 instructions a vertex with three lights, four
+//! `pow`s among them. Its callers light less rather than faster
+//! ([`super::batch`]): a vertex is lit only when a primitive that is drawn
+//! needs it (not for a triangle trivially rejected), and once a draw for
+//! each distinct input (`LitCache`). On MuJoCo's floor plane
+//! (`osmesa/bench/mujoco_passes.c`, 160,000 vertices, callgrind) the draw
+//! went from 2,640 instructions a vertex to 192; the colours are this
+//! path's, bit for bit.
 
 use super::fma::fma;
 use crate::lighting::{ColorControl, ColorMaterialMode, LightingState, Material, MAX_LIGHTS};

@@ -402,6 +402,7 @@ impl<'s> Geometry<'s> {
         assemble(mode, count, quads, |prim| match prim {
             Primitive::Point(i) => {
                 batch.load(i);
+                batch.light_pending(&[i]);
                 let v = batch.vertex(i);
                 if v.inside {
                     sink.point(&v.win, self.point_size_at(v.pos), &self.wide_params);
@@ -409,6 +410,7 @@ impl<'s> Geometry<'s> {
             }
             Primitive::Line { a, b, provoking } => {
                 batch.load(a.max(b).max(provoking));
+                batch.light_pending(&[a, b, provoking]);
                 let (va, vb) = (batch.vertex(a), batch.vertex(b));
                 let flat = flat_shaded.then(|| &batch.vertex(provoking).win.v);
                 if va.inside && vb.inside {
@@ -444,10 +446,8 @@ impl<'s> Geometry<'s> {
     ) {
         batch.load(v[0].max(v[1]).max(v[2]).max(provoking));
         let [a, b, c] = v.map(|i| batch.vertex(i));
-        let flat = flat_shaded.then(|| &batch.vertex(provoking).win.v);
-        if !unfilled && a.inside && b.inside && c.inside {
-            self.triangle([&a.win, &b.win, &c.win], flat, sink);
-        } else {
+        let direct = !unfilled && a.inside && b.inside && c.inside;
+        if !direct {
             // Trivially rejected (what `polygon` checks first) before
             // copying the vertices: a culled glBegin/glEnd quad.
             let codes = a.codes.0 & b.codes.0 & c.codes.0;
@@ -455,6 +455,16 @@ impl<'s> Geometry<'s> {
             if !(a.finite && b.finite && c.finite) || codes != 0 || user != 0 {
                 return;
             }
+        }
+        // Lit now that the triangle is drawn (a rejected one needs no colour).
+        if a.pending || b.pending || c.pending || batch.vertex(provoking).pending {
+            batch.light_pending(&[v[0], v[1], v[2], provoking]);
+        }
+        let [a, b, c] = v.map(|i| batch.vertex(i));
+        let flat = flat_shaded.then(|| &batch.vertex(provoking).win.v);
+        if direct {
+            self.triangle([&a.win, &b.win, &c.win], flat, sink);
+        } else {
             // A vertex's edge flag ANDs with the assembly's boundary flag
             // for every triangle mode, as llvmpipe's unfilled stage does
             // (docs/llvmpipe-facts.md, "Edge flags").
