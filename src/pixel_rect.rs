@@ -323,6 +323,9 @@ impl Context {
                 };
                 let (state, params, vertex) = self.raster_draw(false)?;
                 let colour = self.raster.color.to_array();
+                for (scene, fb) in self.lane_scenes() {
+                    scene.bitmap(state.clone(), &params, vertex, placed.clone(), colour, fb);
+                }
                 self.scene.bitmap(state, &params, vertex, placed, colour, &self.fb);
                 if self.scene.bytes() > self.scene.bound() {
                     self.finish_scene();
@@ -680,6 +683,9 @@ impl Context {
             zoom,
         };
         let (state, params, vertex) = self.raster_draw(true)?;
+        for (scene, fb) in self.lane_scenes() {
+            scene.pixels(state.clone(), &params, vertex, image.clone(), fb);
+        }
         self.scene.pixels(state, &params, vertex, image, &self.fb);
         if self.scene.bytes() > self.scene.bound() {
             self.finish_scene();
@@ -694,6 +700,10 @@ impl Context {
     pub fn copy_pixels(&mut self, x: i32, y: i32, width: i32, height: i32, kind: CopyKind) -> GlResult {
         self.outside()?;
         self.require(width >= 0 && height >= 0)?;
+        // From a multisampled object: Mesa's `_mesa_CopyPixels`.
+        if self.fbo.read != 0 && self.samples_of(self.fbo.read) > 0 {
+            return self.record(Err(GlError::InvalidOperation));
+        }
         let missing = match kind {
             CopyKind::Depth => self.fb.depth_format().is_none(),
             CopyKind::Stencil => !self.fb.has_stencil(),
