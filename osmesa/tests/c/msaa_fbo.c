@@ -230,6 +230,11 @@ int main(int argc, char **argv) {
   E(BlitFramebuffer(0, 0, W, H, 0, 0, W, H, GL_COLOR_BUFFER_BIT, GL_NEAREST));
   BindFramebuffer(GL_FRAMEBUFFER, 0);
   read_rgb("msaa.3.rgb");
+  /* The same frame single-sampled: the reference for GL_MULTISAMPLE off. */
+  BindFramebuffer(GL_FRAMEBUFFER, ss);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  scene(-0.2f);
+  read_rgb("msaa.3.single.rgb");
   printf("final error 0x%04x\n", glGetError());
   printf("done\n");
   OSMesaDestroyContext(ctx);
