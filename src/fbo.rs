@@ -1143,7 +1143,11 @@ impl Context {
             Attachment::None => {
                 let f = self.fbo.framebuffer_mut(c.fbo).ok_or(GlError::InvalidOperation)?;
                 // Samples 1.. of a multisampled object draw into scratch of their own.
-                let mut v = if s == 0 { std::mem::take(&mut f.scratch) } else { Vec::new() };
+                let mut v = if s == 0 {
+                    std::mem::take(&mut f.scratch)
+                } else {
+                    Vec::new()
+                };
                 if v.len() != n * 2 {
                     v = alloc(n * 2, 0u8)?;
                 }

@@ -150,6 +150,10 @@ impl PrimSink for Fan<'_> {
     }
 }
 
+/// Four snapped corners in softgl's frame, and vertices carrying the
+/// attributes there (a line's rectangle, a point's square).
+type Corners = ([(i64, i64); 4], [RasterVertex; 4]);
+
 /// The rectangle llvmpipe covers for a multisampled line `a → b`
 /// (`try_setup_line`, `lp_setup_line.c`, `rectangular_lines`): the
 /// endpoints snapped (no pixel offset), moved by `±t`, the snapped normal
@@ -159,12 +163,7 @@ impl PrimSink for Fan<'_> {
 /// clamped to llvmpipe's `[1, 255]`. The corners' points in softgl's
 /// snapped bottom-up frame, and vertices carrying their endpoint's
 /// attributes for the planes. `None` for a zero-length or non-finite line.
-fn line_rectangle(
-    a: &RasterVertex,
-    b: &RasterVertex,
-    width: f32,
-    params: &RasterParams,
-) -> Option<([(i64, i64); 4], [RasterVertex; 4])> {
+fn line_rectangle(a: &RasterVertex, b: &RasterVertex, width: f32, params: &RasterParams) -> Option<Corners> {
     let (dx, dy) = (a.x - b.x, a.y - b.y);
     let area = dx * dx + dy * dy;
     if !(area.is_finite() && area > 0.0) {
@@ -209,7 +208,7 @@ fn subpixel_snap(v: f32) -> i64 {
 /// pixel offset) minus half the side, its left and bottom edges owned, as
 /// two triangles; corners in softgl's frame and vertices with the point's
 /// attributes. `None` for a non-finite position.
-fn point_square(v: &RasterVertex, size: f32, params: &RasterParams) -> Option<([(i64, i64); 4], [RasterVertex; 4])> {
+fn point_square(v: &RasterVertex, size: f32, params: &RasterParams) -> Option<Corners> {
     if !(v.x.is_finite() && v.y.is_finite()) {
         return None;
     }
@@ -363,7 +362,9 @@ impl Framebuffer {
     /// where sample 0's do); [`Framebuffer::restore_tests`] puts theirs back
     /// after the draw is rasterized.
     pub(crate) fn tests_from_sample0(&mut self, r: crate::framebuffer::Rect) -> SavedTests {
-        let zero: Vec<(Option<u32>, Option<u8>)> = cells(r).map(|(x, y)| (self.depth_at(x, y), self.stencil_at(x, y))).collect();
+        let zero: Vec<(Option<u32>, Option<u8>)> = cells(r)
+            .map(|(x, y)| (self.depth_at(x, y), self.stencil_at(x, y)))
+            .collect();
         let mut saved = SavedTests {
             rect: r,
             depth: Vec::new(),
