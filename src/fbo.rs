@@ -1692,6 +1692,11 @@ fn blit_samples(
     filter: BlitFilter,
 ) -> GlResult {
     let (n_from, n_to) = (from.samples(), to.samples());
+    if n_from > 1 && n_to == 1 && !what.0 {
+        // Depth and stencil only: sample 0's are `from`'s own buffers.
+        blit(from, to, s, d, clip, what, filter);
+        return Ok(());
+    }
     if n_from > 1 && n_to == 1 {
         let resolved = from.resolve()?;
         blit(&resolved, to, s, d, clip, what, filter);
