@@ -570,6 +570,21 @@ impl Context {
         }
     }
 
+    /// The scenes of samples 1.. of a multisampled framebuffer, each with
+    /// its sample's buffers: a pixel rectangle or bitmap (whose quad covers
+    /// whole pixels, every sample of them: llvmpipe's `st_cb_bitmap.c` and
+    /// `st_cb_drawpixels.c` quads) is recorded into each as into `scene`.
+    pub(crate) fn lane_scenes(&mut self) -> impl Iterator<Item = (&mut Scene, &Framebuffer)> {
+        self.lanes.iter_mut().map(|l| &mut l.scene).zip(&self.fb.samples)
+    }
+
+    /// Gives the context a lane a sample of `fb` beyond the first, after
+    /// `fb` was replaced (a framebuffer object bound or released; every
+    /// lane's scene is empty then: the caller finished the scene first).
+    pub(crate) fn follow_samples(&mut self) {
+        self.lanes.resize_with(self.fb.samples() as usize - 1, Lane::default);
+    }
+
     /// Threads a flush rasterizes tiles on (`SOFTGL_THREADS` at creation,
     /// else the cores). Images are the same bytes for any count.
     pub fn threads(&self) -> usize {

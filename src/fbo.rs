@@ -188,12 +188,14 @@ pub struct Renderbuffer {
     pub format: RenderbufferFormat,
     pub width: u32,
     pub height: u32,
-    /// `GL_RENDERBUFFER_SAMPLES`: what `glRenderbufferStorageMultisample`
-    /// asked for (0: single-sampled). Rendering is single-sampled for now.
+    /// `GL_RENDERBUFFER_SAMPLES`: the samples a pixel Mesa gives the count
+    /// `glRenderbufferStorageMultisample` asked for (0: single-sampled; 1 to
+    /// 4: 4, `multisample::renderbuffer_samples`).
     pub samples: u32,
-    /// `None` before `glRenderbufferStorage`, for an unsupported format, and
-    /// while a framebuffer holds the pixels.
-    storage: Option<RbStorage>,
+    /// One storage a sample (one when single-sampled). `None` before
+    /// `glRenderbufferStorage`, for an unsupported format, and while a
+    /// framebuffer holds the pixels.
+    storage: Vec<Option<RbStorage>>,
     /// Whether storage was defined (`glRenderbufferStorage` ran).
     defined: bool,
 }
@@ -205,7 +207,7 @@ impl Default for Renderbuffer {
             width: 0,
             height: 0,
             samples: 0,
-            storage: None,
+            storage: vec![None],
             defined: false,
         }
     }
@@ -699,16 +701,17 @@ impl Context {
             Err(GlError::InvalidOperation)
         } else if !(0..=MAX_RENDERBUFFER_SIZE as i32).contains(&width)
             || !(0..=MAX_RENDERBUFFER_SIZE as i32).contains(&height)
-            || !(0..=MAX_SAMPLES as i32).contains(&samples)
         {
             Err(GlError::InvalidValue)
         } else {
-            Ok(())
+            crate::multisample::renderbuffer_samples(samples)
         };
-        self.record(r)?;
+        let per_pixel = self.record(r)?;
+        // A multisampled renderbuffer of a deep format is not rendered
+        // (`Framebuffer::new_multisample`): such formats are unsupported anyway.
         self.release_draw();
         let n = width as usize * height as usize;
-        let storage = match format.kind() {
+        let one = || match format.kind() {
             None => Ok(None),
             Some(RenderbufferKind::Color(c)) => alloc(n * c.bytes_per_pixel(), 0u8).map(|v| Some(RbStorage::Color(v))),
             Some(RenderbufferKind::Depth(d)) => depth_buffer(d, n).map(|d| Some(RbStorage::Depth(d))),
@@ -717,13 +720,15 @@ impl Context {
             }
             Some(RenderbufferKind::Stencil) => alloc(n, 0u8).map(|s| Some(RbStorage::Stencil(s))),
         };
+        let storage: GlResult<Vec<Option<RbStorage>>> = (0..per_pixel).map(|_| one()).collect();
+        let samples = if per_pixel > 1 { per_pixel } else { 0 };
         let r = storage.map(|storage| {
             if let Some(rb) = self.fbo.renderbuffers.get_mut(&name).and_then(Option::as_mut) {
                 *rb = Renderbuffer {
                     format,
                     width: width as u32,
                     height: height as u32,
-                    samples: samples as u32,
+                    samples,
                     storage,
                     defined: true,
                 };
@@ -1057,6 +1062,7 @@ impl Context {
                 let window = std::mem::replace(&mut self.fb, fb);
                 self.fbo.window = Some(window);
                 self.fbo.checkout = Some(checkout);
+                self.follow_samples();
             }
             Err(e) => {
                 self.record_error(e);
@@ -1076,6 +1082,7 @@ impl Context {
         };
         let fb = std::mem::replace(&mut self.fb, window);
         self.fbo.checkout = None;
+        self.follow_samples();
         self.disassemble(fb, checkout, true);
     }
 
@@ -1083,6 +1090,31 @@ impl Context {
     /// moved out (the draw framebuffer); otherwise copied from wherever it
     /// is (a read framebuffer while the draw one holds it).
     fn assemble(&mut self, c: Checkout, take: bool) -> GlResult<Framebuffer> {
+        let mut fb = self.assemble_sample(c, 0, take)?;
+        // A multisampled object (its images all have the same samples:
+        // `status`): samples 1.. beside sample 0, as `new_multisample`.
+        let samples = [c.color, c.depth, c.stencil]
+            .iter()
+            .filter_map(|a| image_of(&self.fbo, &self.textures, *a))
+            .map(|i| i.samples)
+            .max()
+            .unwrap_or(0);
+        for s in 1..samples as usize {
+            match self.assemble_sample(c, s, take) {
+                Ok(more) => fb.samples.push(more),
+                Err(e) => {
+                    if take {
+                        self.disassemble(fb, c, false);
+                    }
+                    return Err(e);
+                }
+            }
+        }
+        Ok(fb)
+    }
+
+    /// Sample `s`'s framebuffer of `c`'s attachments (see [`Context::assemble`]).
+    fn assemble_sample(&mut self, c: Checkout, s: usize, take: bool) -> GlResult<Framebuffer> {
         let images: Vec<Option<Image>> = [c.color, c.depth, c.stencil]
             .iter()
             .map(|a| image_of(&self.fbo, &self.textures, *a))
@@ -1110,26 +1142,31 @@ impl Context {
         let color = match c.color {
             Attachment::None => {
                 let f = self.fbo.framebuffer_mut(c.fbo).ok_or(GlError::InvalidOperation)?;
-                let mut v = std::mem::take(&mut f.scratch);
+                // Samples 1.. of a multisampled object draw into scratch of their own.
+                let mut v = if s == 0 {
+                    std::mem::take(&mut f.scratch)
+                } else {
+                    Vec::new()
+                };
                 if v.len() != n * 2 {
                     v = alloc(n * 2, 0u8)?;
                 }
                 v
             }
-            a => self.take_color(a, take)?,
+            a => self.take_color(a, s, take)?,
         };
         let cached = match (take, c.depth) {
-            (true, a @ Attachment::Texture { .. }) => self.cached_depth(c.fbo, a),
+            (true, a @ Attachment::Texture { .. }) if s == 0 => self.cached_depth(c.fbo, a),
             _ => None,
         };
         let depth = match (cached, c.depth) {
             (Some(d), _) => Some(d),
             (None, Attachment::None) => None,
-            (None, a) => Some(self.take_depth(a, take)?),
+            (None, a) => Some(self.take_depth(a, s, take)?),
         };
         let stencil = match c.stencil {
             Attachment::None => None,
-            a => Some(self.take_stencil(a, take)?),
+            a => Some(self.take_stencil(a, s, take)?),
         };
         let desc = FramebufferDesc {
             width,
@@ -1144,16 +1181,25 @@ impl Context {
     }
 
     /// The inverse of [`Context::assemble`]: `write`: texture copies are written back.
-    fn disassemble(&mut self, fb: Framebuffer, c: Checkout, write: bool) {
+    fn disassemble(&mut self, mut fb: Framebuffer, c: Checkout, write: bool) {
+        let more = std::mem::take(&mut fb.samples);
+        self.disassemble_sample(fb, c, 0, write);
+        for (s, fb) in more.into_iter().enumerate() {
+            self.disassemble_sample(fb, c, s + 1, write);
+        }
+    }
+
+    /// Puts sample `s`'s buffers back (see [`Context::disassemble`]).
+    fn disassemble_sample(&mut self, fb: Framebuffer, c: Checkout, s: usize, write: bool) {
         let (w, h) = (fb.width(), fb.height());
         let (color, depth, stencil) = fb.into_parts();
         match c.color {
             Attachment::None => {
-                if let Some(f) = self.fbo.framebuffer_mut(c.fbo) {
+                if let Some(f) = self.fbo.framebuffer_mut(c.fbo).filter(|_| s == 0) {
                     f.scratch = color;
                 }
             }
-            Attachment::Renderbuffer(n) => self.put_rb(n, |s| match s {
+            Attachment::Renderbuffer(n) => self.put_rb(n, s, |s| match s {
                 None => Some(RbStorage::Color(color)),
                 other => other,
             }),
@@ -1166,16 +1212,16 @@ impl Context {
         // Depth and stencil may be one renderbuffer.
         let mut depth = depth;
         let mut stencil = stencil;
-        if let (Attachment::Renderbuffer(d), Attachment::Renderbuffer(s)) = (c.depth, c.stencil) {
-            if d == s {
+        if let (Attachment::Renderbuffer(d), Attachment::Renderbuffer(st)) = (c.depth, c.stencil) {
+            if d == st {
                 if let (Some(dv), Some(sv)) = (depth.take(), stencil.take()) {
-                    self.put_rb(d, |_| Some(RbStorage::DepthStencil(dv, sv)));
+                    self.put_rb(d, s, |_| Some(RbStorage::DepthStencil(dv, sv)));
                 }
             }
         }
         if let Some(dv) = depth {
             match c.depth {
-                Attachment::Renderbuffer(n) => self.put_rb(n, |s| match s {
+                Attachment::Renderbuffer(n) => self.put_rb(n, s, |s| match s {
                     Some(RbStorage::Stencil(sv)) => Some(RbStorage::DepthStencil(dv, sv)),
                     None => Some(RbStorage::Depth(dv)),
                     other => other,
@@ -1200,7 +1246,7 @@ impl Context {
             }
         }
         if let (Some(sv), Attachment::Renderbuffer(n)) = (stencil, c.stencil) {
-            self.put_rb(n, |s| match s {
+            self.put_rb(n, s, |s| match s {
                 Some(RbStorage::Depth(dv)) => Some(RbStorage::DepthStencil(dv, sv)),
                 None => Some(RbStorage::Stencil(sv)),
                 other => other,
@@ -1208,9 +1254,16 @@ impl Context {
         }
     }
 
-    fn put_rb(&mut self, name: u32, f: impl FnOnce(Option<RbStorage>) -> Option<RbStorage>) {
-        if let Some(rb) = self.fbo.renderbuffers.get_mut(&name).and_then(Option::as_mut) {
-            rb.storage = f(rb.storage.take());
+    /// Puts sample `s`'s storage of renderbuffer `name` back through `f`.
+    fn put_rb(&mut self, name: u32, s: usize, f: impl FnOnce(Option<RbStorage>) -> Option<RbStorage>) {
+        if let Some(slot) = self
+            .fbo
+            .renderbuffers
+            .get_mut(&name)
+            .and_then(Option::as_mut)
+            .and_then(|rb| rb.storage.get_mut(s))
+        {
+            *slot = f(slot.take());
         }
     }
 
@@ -1270,9 +1323,9 @@ impl Context {
         Some((img.texels.get(off..off + n * 4)?, n))
     }
 
-    fn take_color(&mut self, a: Attachment, take: bool) -> GlResult<Vec<u8>> {
+    fn take_color(&mut self, a: Attachment, s: usize, take: bool) -> GlResult<Vec<u8>> {
         match a {
-            Attachment::Renderbuffer(n) => match self.rb_storage(n, take)? {
+            Attachment::Renderbuffer(n) => match self.rb_storage(n, s, take)? {
                 RbStorage::Color(v) => Ok(v),
                 _ => Err(GlError::InvalidOperation),
             },
@@ -1285,16 +1338,15 @@ impl Context {
         }
     }
 
-    fn take_depth(&mut self, a: Attachment, take: bool) -> GlResult<DepthBuffer> {
+    fn take_depth(&mut self, a: Attachment, s: usize, take: bool) -> GlResult<DepthBuffer> {
         match a {
             Attachment::Renderbuffer(n) => {
-                let s = self.rb_storage(n, take)?;
-                match s {
+                match self.rb_storage(n, s, take)? {
                     RbStorage::Depth(d) => Ok(d),
-                    RbStorage::DepthStencil(d, s) => {
+                    RbStorage::DepthStencil(d, st) => {
                         // The stencil half stays for `take_stencil`.
                         if take {
-                            self.put_rb(n, |_| Some(RbStorage::Stencil(s)));
+                            self.put_rb(n, s, |_| Some(RbStorage::Stencil(st)));
                         }
                         Ok(d)
                     }
@@ -1332,9 +1384,9 @@ impl Context {
         }
     }
 
-    fn take_stencil(&mut self, a: Attachment, take: bool) -> GlResult<Vec<u8>> {
+    fn take_stencil(&mut self, a: Attachment, s: usize, take: bool) -> GlResult<Vec<u8>> {
         match a {
-            Attachment::Renderbuffer(n) => match self.rb_storage(n, take)? {
+            Attachment::Renderbuffer(n) => match self.rb_storage(n, s, take)? {
                 RbStorage::Stencil(s) | RbStorage::DepthStencil(_, s) => Ok(s),
                 _ => Err(GlError::InvalidOperation),
             },
@@ -1342,21 +1394,23 @@ impl Context {
         }
     }
 
-    /// Renderbuffer `n`'s storage: moved out (`take`), or copied; when the
-    /// draw framebuffer holds it, copied from there.
-    fn rb_storage(&mut self, n: u32, take: bool) -> GlResult<RbStorage> {
+    /// Sample `s`'s storage of renderbuffer `n`: moved out (`take`), or
+    /// copied; when the draw framebuffer holds it, copied from there.
+    fn rb_storage(&mut self, n: u32, s: usize, take: bool) -> GlResult<RbStorage> {
         let rb = self.fbo.renderbuffer(n).ok_or(GlError::InvalidOperation)?;
-        if let Some(s) = &rb.storage {
+        if let Some(st) = rb.storage.get(s).ok_or(GlError::InvalidOperation)? {
             if take {
                 let rb = self.fbo.renderbuffers.get_mut(&n).and_then(Option::as_mut);
-                return rb.and_then(|r| r.storage.take()).ok_or(GlError::InvalidOperation);
+                return rb
+                    .and_then(|r| r.storage.get_mut(s)?.take())
+                    .ok_or(GlError::InvalidOperation);
             }
-            return Ok(s.clone());
+            return Ok(st.clone());
         }
         // Held by the draw framebuffer: copy its buffers (a read of a
         // renderbuffer that is also drawn into).
         let c = self.fbo.checkout.ok_or(GlError::InvalidOperation)?;
-        let fb = &self.fb;
+        let fb = self.fb.sample(s as u32).ok_or(GlError::InvalidOperation)?;
         let a = Attachment::Renderbuffer(n);
         let depth = (c.depth == a).then(|| fb.depth_buffer().cloned()).flatten();
         let stencil = (c.stencil == a)
@@ -1414,8 +1468,21 @@ impl Context {
     pub fn read_framebuffer(&mut self, need_color: bool) -> GlResult<ReadFb> {
         self.outside()?;
         self.finish_scene();
-        let r = self.take_read(need_color);
+        let r = self.take_read_single(need_color);
         self.record(r)
+    }
+
+    /// [`Context::take_read`] for the reads other than a blit:
+    /// `InvalidOperation` from a multisampled object (GL 3.0 §4.3.2,
+    /// Mesa's `_mesa_ReadnPixelsARB`, `copy_texture_sub_image_err`,
+    /// `_mesa_CopyPixels`: after the completeness check). A multisampled
+    /// window is read resolved.
+    fn take_read_single(&mut self, need_color: bool) -> GlResult<ReadFb> {
+        let r = self.take_read(need_color)?;
+        if self.fbo.read != 0 && self.samples_of(self.fbo.read) > 0 {
+            return Err(GlError::InvalidOperation);
+        }
+        Ok(r)
     }
 
     /// The framebuffer of a [`Context::read_framebuffer`].
@@ -1424,7 +1491,7 @@ impl Context {
     }
 
     pub(crate) fn take_read_unflushed(&mut self, need_color: bool) -> GlResult<ReadFb> {
-        self.take_read(need_color)
+        self.take_read_single(need_color)
     }
 
     pub(crate) fn read_ref<'a>(&'a self, r: &'a ReadFb) -> &'a Framebuffer {
@@ -1441,7 +1508,7 @@ impl Context {
     pub fn with_read_framebuffer<R>(&mut self, need_color: bool, f: impl FnOnce(&Framebuffer) -> R) -> GlResult<R> {
         self.outside()?;
         self.finish_scene();
-        let r = self.take_read(need_color);
+        let r = self.take_read_single(need_color);
         let r = self.record(r)?;
         let out = f(self.read_ref(&r));
         // Nothing was moved out of the objects for a read (copies only).
@@ -1494,7 +1561,8 @@ impl Context {
         self.record(r)
     }
 
-    fn samples_of(&self, name: u32) -> u32 {
+    /// `GL_SAMPLES` of object `name` (0 for the window and single-sampled objects).
+    pub(crate) fn samples_of(&self, name: u32) -> u32 {
         let Some(f) = self.fbo.framebuffer(name) else {
             return 0;
         };
@@ -1557,20 +1625,18 @@ impl Context {
         let what = (color, depth_ok, stencil_ok);
         match read {
             // Its own buffers (copies of the objects').
-            ReadFb::Assembled(from) => blit(from, &mut self.fb, src, dst, clip, what, filter),
+            ReadFb::Assembled(from) => blit_samples(from, &mut self.fb, src, dst, clip, what, filter),
             // The window's buffers, waiting beside the object drawn.
-            ReadFb::Window => {
-                if let Some(from) = self.fbo.window.as_ref() {
-                    blit(from, &mut self.fb, src, dst, clip, what, filter);
-                }
-            }
+            ReadFb::Window => match self.fbo.window.as_ref() {
+                Some(from) => blit_samples(from, &mut self.fb, src, dst, clip, what, filter),
+                None => Ok(()),
+            },
             // One framebuffer: the source is copied first.
             ReadFb::Draw => {
                 let from = self.fb.clone();
-                blit(&from, &mut self.fb, src, dst, clip, what, filter);
+                blit_samples(&from, &mut self.fb, src, dst, clip, what, filter)
             }
         }
-        Ok(())
     }
 }
 
@@ -1608,6 +1674,41 @@ impl Axis {
         let i = (self.at(x) * self.len).floor();
         (i >= 0.0 && i < self.len).then_some(i as u32)
     }
+}
+
+/// [`blit`] between framebuffers of any samples (the caller checked GL's
+/// rules: equal counts or one side single-sampled, unscaled when either is
+/// multisampled): a multisampled source into a single-sampled destination
+/// is resolved first ([`Framebuffer::resolve`]: colour averaged, depth and
+/// stencil sample 0's, as llvmpipe); equal counts copy sample to sample; a
+/// single-sampled source is written into every sample.
+fn blit_samples(
+    from: &Framebuffer,
+    to: &mut Framebuffer,
+    s: [i32; 4],
+    d: [i32; 4],
+    clip: Rect,
+    what: (bool, bool, bool),
+    filter: BlitFilter,
+) -> GlResult {
+    let (n_from, n_to) = (from.samples(), to.samples());
+    if n_from > 1 && n_to == 1 && !what.0 {
+        // Depth and stencil only: sample 0's are `from`'s own buffers.
+        blit(from, to, s, d, clip, what, filter);
+        return Ok(());
+    }
+    if n_from > 1 && n_to == 1 {
+        let resolved = from.resolve()?;
+        blit(&resolved, to, s, d, clip, what, filter);
+        return Ok(());
+    }
+    for k in 0..n_to {
+        let src = if n_from == n_to { from.sample(k) } else { Some(from) };
+        if let (Some(src), Some(dst)) = (src, to.sample_mut(k)) {
+            blit(src, dst, s, d, clip, what, filter);
+        }
+    }
+    Ok(())
 }
 
 /// Copies `src`'s rectangle to `dst`'s, scaled and flipped, inside `clip`,

@@ -339,6 +339,90 @@ impl Framebuffer {
     }
 }
 
+/// Depth and stencil of samples 1.. inside a rectangle, as
+/// [`Framebuffer::tests_from_sample0`] found them.
+pub(crate) struct SavedTests {
+    rect: crate::framebuffer::Rect,
+    depth: Vec<Vec<u32>>,
+    stencil: Vec<Vec<u8>>,
+}
+
+fn cells(r: crate::framebuffer::Rect) -> impl Iterator<Item = (u32, u32)> {
+    (r.y0..r.y1).flat_map(move |y| (r.x0..r.x1).map(move |x| (x, y)))
+}
+
+impl Framebuffer {
+    /// For a pixel rectangle or bitmap drawn with depth or stencil test into
+    /// a multisampled framebuffer: llvmpipe draws them with its rasterizer's
+    /// `multisample` off (`st_cb_bitmap.c`, `st_cb_drawpixels.c` memset their
+    /// rasterizer state), so depth and stencil are tested and written in
+    /// sample 0 only and the colour written to every sample with sample 0's
+    /// mask (`docs/llvmpipe-facts.md`, `GL_MULTISAMPLE` off). Samples 1..
+    /// get sample 0's depth and stencil inside `r` (their tests then pass
+    /// where sample 0's do); [`Framebuffer::restore_tests`] puts theirs back
+    /// after the draw is rasterized.
+    pub(crate) fn tests_from_sample0(&mut self, r: crate::framebuffer::Rect) -> SavedTests {
+        let zero: Vec<(Option<u32>, Option<u8>)> = cells(r)
+            .map(|(x, y)| (self.depth_at(x, y), self.stencil_at(x, y)))
+            .collect();
+        let mut saved = SavedTests {
+            rect: r,
+            depth: Vec::new(),
+            stencil: Vec::new(),
+        };
+        for fb in &mut self.samples {
+            let (mut d, mut s) = (Vec::new(), Vec::new());
+            let mut t = fb.target();
+            for ((x, y), (z0, s0)) in cells(r).zip(&zero) {
+                let i = t.index(x, y);
+                match t.depth_mut() {
+                    Some(DepthTarget::D16(v)) => {
+                        d.push(u32::from(v[i]));
+                        if let Some(z) = z0 {
+                            v[i] = *z as u16;
+                        }
+                    }
+                    Some(DepthTarget::D24(v) | DepthTarget::D32(v)) => {
+                        d.push(v[i]);
+                        if let Some(z) = z0 {
+                            v[i] = *z;
+                        }
+                    }
+                    None => {}
+                }
+                if let Some(st) = t.stencil_mut() {
+                    s.push(st[i]);
+                    if let Some(v) = s0 {
+                        st[i] = *v;
+                    }
+                }
+            }
+            saved.depth.push(d);
+            saved.stencil.push(s);
+        }
+        saved
+    }
+
+    /// Puts back what [`Framebuffer::tests_from_sample0`] saved.
+    pub(crate) fn restore_tests(&mut self, saved: SavedTests) {
+        let r = saved.rect;
+        for ((fb, d), s) in self.samples.iter_mut().zip(saved.depth).zip(saved.stencil) {
+            let mut t = fb.target();
+            for (k, (x, y)) in cells(r).enumerate() {
+                let i = t.index(x, y);
+                match t.depth_mut() {
+                    Some(DepthTarget::D16(v)) => v[i] = d[k] as u16,
+                    Some(DepthTarget::D24(v) | DepthTarget::D32(v)) => v[i] = d[k],
+                    None => {}
+                }
+                if let (Some(st), Some(&sv)) = (t.stencil_mut(), s.get(k)) {
+                    st[i] = sv;
+                }
+            }
+        }
+    }
+}
+
 /// [`resolve_value`] of four samples of an 8-bit-channel format, byte by
 /// byte over rows (a 640×480 resolve took 77 ms a pixel at a time): each
 /// byte `c` as `c · f32(1/255)` from a table, summed in sample order, times

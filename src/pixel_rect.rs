@@ -323,10 +323,12 @@ impl Context {
                 };
                 let (state, params, vertex) = self.raster_draw(false)?;
                 let colour = self.raster.color.to_array();
-                self.scene.bitmap(state, &params, vertex, placed, colour, &self.fb);
-                if self.scene.bytes() > self.scene.bound() {
-                    self.finish_scene();
+                let saved = self.one_sample_tests(placed.rect(params.bounds));
+                for (scene, fb) in self.lane_scenes() {
+                    scene.bitmap(state.clone(), &params, vertex, placed.clone(), colour, fb);
                 }
+                self.scene.bitmap(state, &params, vertex, placed, colour, &self.fb);
+                self.end_one_sample_tests(saved);
             }
         }
         self.raster.window[0] += moves[0];
@@ -680,11 +682,44 @@ impl Context {
             zoom,
         };
         let (state, params, vertex) = self.raster_draw(true)?;
-        self.scene.pixels(state, &params, vertex, image, &self.fb);
-        if self.scene.bytes() > self.scene.bound() {
-            self.finish_scene();
+        let saved = self.one_sample_tests(image.rect(params.bounds));
+        for (scene, fb) in self.lane_scenes() {
+            scene.pixels(state.clone(), &params, vertex, image.clone(), fb);
         }
+        self.scene.pixels(state, &params, vertex, image, &self.fb);
+        self.end_one_sample_tests(saved);
         Ok(())
+    }
+
+    /// Before a bitmap or pixel rectangle covering `rect` is recorded: in a
+    /// multisampled framebuffer with the depth or stencil test on, every
+    /// draw so far is rasterized and samples 1.. take sample 0's depth and
+    /// stencil there (llvmpipe tests them in sample 0 only:
+    /// [`Framebuffer::tests_from_sample0`]). Such a draw is rasterized at
+    /// once, in [`Context::end_one_sample_tests`] (Mesa's bitmap cache then
+    /// merges no glyphs: the bytes differ only where glyphs overlap).
+    fn one_sample_tests(&mut self, rect: Option<Rect>) -> Option<crate::multisample::SavedTests> {
+        let s = &self.state;
+        if self.fb.samples() == 1 || !(s.depth_test || s.stencil_test) {
+            return None;
+        }
+        let rect = rect?;
+        self.finish_scene();
+        Some(self.fb.tests_from_sample0(rect))
+    }
+
+    /// After the draw [`Context::one_sample_tests`] prepared: rasterizes it
+    /// and puts samples 1..'s depth and stencil back; otherwise flushes the
+    /// scene when it is over its bound.
+    fn end_one_sample_tests(&mut self, saved: Option<crate::multisample::SavedTests>) {
+        match saved {
+            Some(saved) => {
+                self.finish_scene();
+                self.fb.restore_tests(saved);
+            }
+            None if self.scene.bytes() > self.scene.bound() => self.finish_scene(),
+            None => {}
+        }
     }
 
     /// `glCopyPixels`: the `width`×`height` rectangle at window `(x, y)` of
@@ -694,6 +729,10 @@ impl Context {
     pub fn copy_pixels(&mut self, x: i32, y: i32, width: i32, height: i32, kind: CopyKind) -> GlResult {
         self.outside()?;
         self.require(width >= 0 && height >= 0)?;
+        // From a multisampled object: Mesa's `_mesa_CopyPixels`.
+        if self.fbo.read != 0 && self.samples_of(self.fbo.read) > 0 {
+            return self.record(Err(GlError::InvalidOperation));
+        }
         let missing = match kind {
             CopyKind::Depth => self.fb.depth_format().is_none(),
             CopyKind::Stencil => !self.fb.has_stencil(),

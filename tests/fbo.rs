@@ -104,7 +104,12 @@ fn completeness_and_its_errors() {
         gl.renderbuffer_storage(0, F::Rgba8, 16385, 1),
         Err(GlError::InvalidValue)
     );
-    assert_eq!(gl.renderbuffer_storage(5, F::Rgba8, 1, 1), Err(GlError::InvalidValue));
+    // More samples than GL_MAX_SAMPLES: Mesa's GL_INVALID_OPERATION (as the C ABI).
+    assert_eq!(
+        gl.renderbuffer_storage(5, F::Rgba8, 1, 1),
+        Err(GlError::InvalidOperation)
+    );
+    assert_eq!(gl.renderbuffer_storage(-1, F::Rgba8, 1, 1), Err(GlError::InvalidValue));
     gl.bind_renderbuffer(0).unwrap();
     assert_eq!(
         gl.renderbuffer_storage(0, F::Rgba8, 1, 1),
@@ -461,5 +466,106 @@ fn the_window_is_read_and_blitted_while_an_object_is_drawn() {
     // White modulated by the texels: green where it was cleared green.
     quad(&mut gl, [1.0, 1.0, 1.0], 0.0);
     assert_eq!(gl.read_pixels(1, 1, 1, 1, ReadFormat::Rgba8).unwrap(), [0, 255, 0, 255]);
+    assert_eq!(gl.get_error(), None);
+}
+
+/// An FBO of 4-sample RGBA8 and DEPTH24_STENCIL8 renderbuffers, bound.
+fn ms_fbo(gl: &mut Context, w: i32, h: i32) -> u32 {
+    let fb = gl.gen_framebuffers(1).unwrap()[0];
+    let rb = gl.gen_renderbuffers(2).unwrap();
+    gl.bind_framebuffer(T::Both, fb).unwrap();
+    gl.bind_renderbuffer(rb[0]).unwrap();
+    gl.renderbuffer_storage(4, F::Rgba8, w, h).unwrap();
+    gl.bind_renderbuffer(rb[1]).unwrap();
+    gl.renderbuffer_storage(2, F::Depth24Stencil8, w, h).unwrap();
+    gl.framebuffer_renderbuffer(T::Both, P::Color(0), rb[0]).unwrap();
+    gl.framebuffer_renderbuffer(T::Both, P::DepthStencil, rb[1]).unwrap();
+    fb
+}
+
+/// Two overlapping depth-tested triangles with edges across pixels.
+fn ms_scene(gl: &mut Context) {
+    gl.clear_color(0.1, 0.2, 0.3, 1.0).unwrap();
+    gl.clear(ClearMask::ALL).unwrap();
+    gl.enable(Capability::DepthTest).unwrap();
+    gl.begin(PrimitiveMode::Triangles).unwrap();
+    gl.color3(1.0, 0.5, 0.0);
+    gl.vertex3(-0.9, -0.7, 0.2);
+    gl.vertex3(0.8, -0.2, -0.3);
+    gl.vertex3(0.1, 0.9, 0.4);
+    gl.color3(0.0, 0.6, 1.0);
+    gl.vertex3(-0.6, 0.5, -0.5);
+    gl.vertex3(0.7, 0.7, 0.6);
+    gl.vertex3(0.0, -0.9, 0.0);
+    gl.end().unwrap();
+}
+
+#[test]
+fn a_multisampled_fbo_renders_multisampled_and_resolves_by_blit() {
+    let (w, h) = (24, 16);
+    // The reference: a 4-sample context, read resolved.
+    let mut reference = Context::new_multisample(FramebufferDesc::rgba8_d24s8(w, h), 4).unwrap();
+    ms_scene(&mut reference);
+    let want = reference
+        .read_pixels(0, 0, w as i32, h as i32, ReadFormat::Rgba8)
+        .unwrap();
+    let mut gl = context(w, h);
+    let single = rb_fbo(&mut gl, w as i32, h as i32);
+    let ms = ms_fbo(&mut gl, w as i32, h as i32);
+    assert_eq!(gl.check_framebuffer_status(T::Both), Ok(S::Complete));
+    assert_eq!((gl.samples(), gl.draw_framebuffer_samples()), (4, 4));
+    // Unbound and bound again before drawing: the samples follow.
+    gl.bind_framebuffer(T::Both, 0).unwrap();
+    assert_eq!(gl.samples(), 1);
+    gl.bind_framebuffer(T::Both, ms).unwrap();
+    ms_scene(&mut gl);
+    // Reads from a multisampled object: GL_INVALID_OPERATION.
+    assert_eq!(
+        gl.read_pixels(0, 0, 1, 1, ReadFormat::Rgba8),
+        Err(GlError::InvalidOperation)
+    );
+    assert_eq!(gl.get_error(), Some(GlError::InvalidOperation));
+    gl.bind_framebuffer(T::Draw, single).unwrap();
+    let all = [0, 0, w as i32, h as i32];
+    let colour = BlitMask {
+        color: true,
+        depth: false,
+        stencil: false,
+    };
+    // Scaled: GL_INVALID_OPERATION.
+    assert_eq!(
+        gl.blit_framebuffer(all, [0, 0, 12, 16], colour, BlitFilter::Nearest),
+        Err(GlError::InvalidOperation)
+    );
+    assert_eq!(gl.get_error(), Some(GlError::InvalidOperation));
+    gl.blit_framebuffer(all, all, colour, BlitFilter::Nearest).unwrap();
+    let depth = BlitMask {
+        color: false,
+        depth: true,
+        stencil: false,
+    };
+    gl.blit_framebuffer(all, all, depth, BlitFilter::Nearest).unwrap();
+    gl.bind_framebuffer(T::Read, single).unwrap();
+    let got = gl.read_pixels(0, 0, w as i32, h as i32, ReadFormat::Rgba8).unwrap();
+    assert_eq!(got, want, "resolved as a 4-sample context resolves");
+    // Antialiased: some pixels are neither the clear colour nor a triangle's.
+    let mixed = got
+        .chunks(4)
+        .filter(|p| ![[26, 51, 77, 255], [255, 128, 0, 255], [0, 153, 255, 255]].contains(&[p[0], p[1], p[2], p[3]]))
+        .count();
+    assert!(mixed > 10, "{mixed} mixed pixels");
+    // Depth: sample 0's, every pixel.
+    let coords: Vec<(u32, u32)> = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).collect();
+    let z = gl
+        .with_read_framebuffer(false, |fb| {
+            coords.iter().map(|&(x, y)| fb.depth_at(x, y)).collect::<Vec<_>>()
+        })
+        .unwrap();
+    let z0: Vec<_> = coords
+        .iter()
+        .map(|&(x, y)| reference.framebuffer().depth_at(x, y))
+        .collect();
+    assert_eq!(z, z0);
+    assert!(z.iter().any(|v| *v != Some(0xff_ffff)), "depth drawn");
     assert_eq!(gl.get_error(), None);
 }

@@ -458,7 +458,7 @@ exports! {
     [] fn glRenderbufferStorage(target: GLenum, internalformat: GLenum, width: i32, height: i32) {
         glRenderbufferStorageMultisample(target, 0, internalformat, width, height)
     }
-    /// Samples up to `GL_MAX_SAMPLES` are recorded; rendering is single-sampled for now.
+    /// 1 to `GL_MAX_SAMPLES` samples give a 4-sample renderbuffer (Mesa's choice on llvmpipe).
     [] fn glRenderbufferStorageMultisample(target: GLenum, samples: i32, internalformat: GLenum, width: i32, height: i32) {
         now(|_, gl| {
             outside(gl)?;
