@@ -56,7 +56,12 @@ fn pixel_store(pname: GLenum, param: i32) {
 /// `GL_INVALID_OPERATION`, whatever the format; any other unknown type or
 /// format `GL_INVALID_ENUM` (`GL_BITMAP` too: no texture or colour format takes it).
 pub(super) fn pixel_size(format: GLenum, ty: GLenum) -> GlResult<(usize, usize)> {
+    // GL_DEPTH_STENCIL takes GL_UNSIGNED_INT_24_8 only, checked first (GL 3.0 §4.3.1).
+    if format == GL_DEPTH_STENCIL && ty != GL_UNSIGNED_INT_24_8 {
+        return Err(GlError::InvalidEnum);
+    }
     let packed = match ty {
+        GL_UNSIGNED_INT_24_8 => Some((4, [GL_DEPTH_STENCIL, GL_DEPTH_STENCIL])),
         0x8032 | 0x8362 => Some((1, [GL_RGB, GL_RGB])), // UNSIGNED_BYTE_3_3_2, _2_3_3_REV
         0x8363 | 0x8364 => Some((2, [GL_RGB, GL_RGB])), // UNSIGNED_SHORT_5_6_5, _REV
         // UNSIGNED_SHORT_4_4_4_4, _5_5_5_1, _4_4_4_4_REV, _1_5_5_5_REV
