@@ -1363,8 +1363,13 @@ impl Context {
                 layer,
             } => {
                 // A depth-stencil texture's stencil plane (a copy: the image keeps its own).
-                let img = self.textures.object(name).and_then(|o| o.image(level as usize, face as usize));
-                let img = img.filter(|i| i.internal.stencil_bits() > 0).ok_or(GlError::InvalidOperation)?;
+                let img = self
+                    .textures
+                    .object(name)
+                    .and_then(|o| o.image(level as usize, face as usize));
+                let img = img
+                    .filter(|i| i.internal.stencil_bits() > 0)
+                    .ok_or(GlError::InvalidOperation)?;
                 let n = img.width as usize * img.height as usize;
                 let off = img.stencil_offset(0, 0, layer as usize);
                 Ok(img.texels.get(off..off + n).ok_or(GlError::InvalidOperation)?.to_vec())

@@ -929,13 +929,28 @@ fn packed_depth_stencil_matches_mesa() {
     // 2 units of 2^24, the rasterizer's known depth difference on sloped
     // triangles (see the formats and fbo tests); the clear is exact.
     let (a, b) = (soft.u32s("packed.fbo.ds"), mesa.u32s("packed.fbo.ds"));
-    assert_eq!(a.iter().map(|v| v & 0xff).collect::<Vec<_>>(), b.iter().map(|v| v & 0xff).collect::<Vec<_>>());
+    assert_eq!(
+        a.iter().map(|v| v & 0xff).collect::<Vec<_>>(),
+        b.iter().map(|v| v & 0xff).collect::<Vec<_>>()
+    );
     let (max, n) = diff(
         &a.iter().map(|v| v >> 8).collect::<Vec<_>>(),
         &b.iter().map(|v| v >> 8).collect::<Vec<_>>(),
     );
     println!("packed.fbo.ds depth: max {max} over {n} of {}", a.len());
     assert!(max <= 2.0, "packed.fbo.ds depth: {max}");
+    // glReadPixels of DEPTH_STENCIL after a sloped triangle, then glDrawPixels
+    // (zoomed, stencil write mask 0x7f; again with the depth mask off) and
+    // glCopyPixels of DEPTH_STENCIL: stencil exact, depth within the same 2 units.
+    for name in ["packed.read", "packed.draw", "packed.draw.nodepth", "packed.copy"] {
+        let (a, b) = (soft.u32s(name), mesa.u32s(name));
+        let stencil = |v: &[u32]| v.iter().map(|v| v & 0xff).collect::<Vec<_>>();
+        assert_eq!(stencil(&a), stencil(&b), "{name} stencil");
+        let depth = |v: &[u32]| v.iter().map(|v| v >> 8).collect::<Vec<_>>();
+        let (max, n) = diff(&depth(&a), &depth(&b));
+        println!("{name} depth: max {max} over {n} of {}", a.len());
+        assert!(max <= 2.0, "{name} depth: {max}");
+    }
     // Both stencil outcomes occur: REPLACE (0x5a) where depth passed, INCR (3 + 1) where it failed.
     assert!(b.iter().any(|v| v & 0xff == 0x5a) && b.iter().any(|v| v & 0xff == 4));
     let shadow = soft.file("packed.shadow");

@@ -224,6 +224,71 @@ int main(int argc, char **argv) {
   printf("shadow pass 0x%04x\n", glGetError());
   glFinish();
   dump("packed.shadow", window, sizeof window);
+
+  /* 5. glReadPixels, glDrawPixels and glCopyPixels of DEPTH_STENCIL on the window. */
+  glDisable(GL_TEXTURE_GEN_S);
+  glDisable(GL_TEXTURE_GEN_T);
+  glDisable(GL_TEXTURE_GEN_R);
+  glDisable(GL_TEXTURE_GEN_Q);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glClearDepth(0.25);
+  glClearStencil(9);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 0x33, 0xff);
+  glStencilOp(GL_KEEP, GL_DECR, GL_REPLACE);
+  glDepthFunc(GL_GREATER);
+  glBegin(GL_TRIANGLES);
+  glVertex3f(-1, -1, -0.8f); glVertex3f(1, -1, 0.6f); glVertex3f(-1, 1, 0.3f);
+  glEnd();
+  glDisable(GL_STENCIL_TEST);
+  {
+    static GLuint px[W * H];
+    E(glReadPixels(0, 0, W, H, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, px));
+    dump("packed.read", px, sizeof px);
+    E(glReadPixels(0, 0, W, H, GL_DEPTH_STENCIL, GL_UNSIGNED_INT, px));
+    E(glReadPixels(0, 0, W, H, GL_DEPTH_STENCIL, GL_FLOAT, px));
+    E(glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_INT_24_8, px));
+    E(glReadPixels(0, 0, W, H, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_24_8, px));
+    /* Draw an image of DEPTH_STENCIL at the raster position, zoomed. */
+    GLuint img[16 * 8];
+    for (int i = 0; i < 16 * 8; i++) img[i] = ((GLuint)(i * 104729u) & 0xffffffu) << 8 | (GLuint)(i * 7);
+    glRasterPos2f(-0.5f, -0.5f);
+    glPixelZoom(2, 3);
+    glStencilMask(0x7f);
+    E(glDrawPixels(16, 8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, img));
+    glStencilMask(0xff);
+    glPixelZoom(1, 1);
+    E(glDrawPixels(16, 8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT, img));
+    E(glDrawPixels(16, 8, GL_RGBA, GL_UNSIGNED_INT_24_8, img));
+    glReadPixels(0, 0, W, H, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, px);
+    dump("packed.draw", px, sizeof px);
+    /* Depth mask off: stencil only. */
+    glDepthMask(GL_FALSE);
+    glRasterPos2f(0.5f, 0.2f);
+    E(glDrawPixels(16, 8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, img));
+    glDepthMask(GL_TRUE);
+    glReadPixels(0, 0, W, H, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, px);
+    dump("packed.draw.nodepth", px, sizeof px);
+    glRasterPos2f(0.1f, -0.9f);
+    E(glCopyPixels(10, 20, 40, 30, GL_DEPTH_STENCIL));
+    glReadPixels(0, 0, W, H, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, px);
+    dump("packed.copy", px, sizeof px);
+  }
+  OSMesaDestroyContext(ctx);
+
+  /* 6. No stencil buffer: INVALID_OPERATION. */
+  ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+  CHECK(ctx && OSMesaMakeCurrent(ctx, window, GL_UNSIGNED_BYTE, W, H));
+  {
+    GLuint px[4] = {0}, img[4] = {0};
+    E(glReadPixels(0, 0, 2, 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, px));
+    E(glDrawPixels(2, 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, img));
+    E(glCopyPixels(0, 0, 2, 2, GL_DEPTH_STENCIL));
+  }
   OSMesaDestroyContext(ctx);
   printf("done\n");
   return 0;
