@@ -583,6 +583,6 @@ mod tests {
             round_trip::<TexParamName>(),
             round_trip::<TexLevelParamName>(),
         ];
-        assert_eq!(counts, [4, 2, 5, 3, 11, 19, 60, 17, 14]);
+        assert_eq!(counts, [4, 2, 5, 3, 12, 20, 62, 17, 14]);
     }
 }
