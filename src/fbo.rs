@@ -467,6 +467,17 @@ fn texture_kind(img: &TexImage) -> Option<RenderbufferKind> {
     }
 }
 
+/// Whether texture attachment `a` names a packed depth-stencil image.
+fn texture_stencil(textures: &crate::texture::TextureStore, a: Attachment) -> bool {
+    let Attachment::Texture { name, level, face, .. } = a else {
+        return false;
+    };
+    textures
+        .object(name)
+        .and_then(|o| o.image(level as usize, face as usize))
+        .is_some_and(|img| img.internal.stencil_bits() > 0)
+}
+
 /// GL 3.0 §4.4.4's completeness of object `name` (0: the window, complete).
 fn status(fbo: &FboState, textures: &crate::texture::TextureStore, name: u32) -> FramebufferStatus {
     use FramebufferStatus as S;
@@ -492,8 +503,8 @@ fn status(fbo: &FboState, textures: &crate::texture::TextureStore, name: u32) ->
             (2, Attachment::Renderbuffer(n)) => fbo.renderbuffer(n).is_some_and(|r| r.format.has_stencil()),
             (0, _) => !matches!(img.kind, Some(RenderbufferKind::Depth(_))),
             (1, _) => matches!(img.kind, Some(RenderbufferKind::Depth(_)) | None),
-            // No stencil textures.
-            _ => false,
+            // Stencil textures: the packed depth-stencil formats.
+            _ => texture_stencil(textures, a),
         };
         if !fits {
             return S::IncompleteAttachment;
@@ -514,6 +525,7 @@ fn status(fbo: &FboState, textures: &crate::texture::TextureStore, name: u32) ->
     let ds_split = match (f.depth, f.stencil) {
         (Attachment::None, _) | (_, Attachment::None) => false,
         (Attachment::Renderbuffer(a), Attachment::Renderbuffer(b)) => a != b,
+        (a @ Attachment::Texture { .. }, b @ Attachment::Texture { .. }) => a != b,
         _ => true,
     };
     // Images of different sizes (ARB_framebuffer_object allows them, the
@@ -1245,6 +1257,12 @@ impl Context {
                 _ => {}
             }
         }
+        if let (Some(sv), a @ Attachment::Texture { layer, .. }, true) = (&stencil, c.stencil, write) {
+            self.write_texture(a, w, h, |img, _| {
+                let off = img.stencil_offset(0, 0, layer as usize);
+                img.texels_mut()[off..off + sv.len()].copy_from_slice(sv);
+            });
+        }
         if let (Some(sv), Attachment::Renderbuffer(n)) = (stencil, c.stencil) {
             self.put_rb(n, s, |s| match s {
                 Some(RbStorage::Depth(dv)) => Some(RbStorage::DepthStencil(dv, sv)),
@@ -1390,7 +1408,25 @@ impl Context {
                 RbStorage::Stencil(s) | RbStorage::DepthStencil(_, s) => Ok(s),
                 _ => Err(GlError::InvalidOperation),
             },
-            _ => Err(GlError::InvalidOperation),
+            Attachment::Texture {
+                name,
+                level,
+                face,
+                layer,
+            } => {
+                // A depth-stencil texture's stencil plane (a copy: the image keeps its own).
+                let img = self
+                    .textures
+                    .object(name)
+                    .and_then(|o| o.image(level as usize, face as usize));
+                let img = img
+                    .filter(|i| i.internal.stencil_bits() > 0)
+                    .ok_or(GlError::InvalidOperation)?;
+                let n = img.width as usize * img.height as usize;
+                let off = img.stencil_offset(0, 0, layer as usize);
+                Ok(img.texels.get(off..off + n).ok_or(GlError::InvalidOperation)?.to_vec())
+            }
+            Attachment::None => Err(GlError::InvalidOperation),
         }
     }
 

@@ -375,6 +375,7 @@ gl_enums! {
         LuminanceAlpha = GL_LUMINANCE_ALPHA 0x190A,
         Bgr = GL_BGR 0x80E0,
         Bgra = GL_BGRA 0x80E1,
+        DepthStencil = GL_DEPTH_STENCIL 0x84F9,
     }
     PixelType {
         Byte = GL_BYTE 0x1400,
@@ -396,6 +397,7 @@ gl_enums! {
         UnsignedShort1555Rev = GL_UNSIGNED_SHORT_1_5_5_5_REV 0x8366,
         UnsignedInt8888Rev = GL_UNSIGNED_INT_8_8_8_8_REV 0x8367,
         UnsignedInt2101010Rev = GL_UNSIGNED_INT_2_10_10_10_REV 0x8368,
+        UnsignedInt248 = GL_UNSIGNED_INT_24_8 0x84FA,
     }
     InternalFormat {
         One = GL_1 0x0001,
@@ -450,6 +452,8 @@ gl_enums! {
         CompressedIntensity = GL_COMPRESSED_INTENSITY 0x84EC,
         CompressedRgb = GL_COMPRESSED_RGB 0x84ED,
         CompressedRgba = GL_COMPRESSED_RGBA 0x84EE,
+        DepthStencil = GL_DEPTH_STENCIL 0x84F9,
+        Depth24Stencil8 = GL_DEPTH24_STENCIL8 0x88F0,
         Srgb = GL_SRGB 0x8C40,
         Srgb8 = GL_SRGB8 0x8C41,
         SrgbAlpha = GL_SRGB_ALPHA 0x8C42,
@@ -579,6 +583,6 @@ mod tests {
             round_trip::<TexParamName>(),
             round_trip::<TexLevelParamName>(),
         ];
-        assert_eq!(counts, [4, 2, 5, 3, 11, 19, 60, 17, 14]);
+        assert_eq!(counts, [4, 2, 5, 3, 12, 20, 62, 17, 14]);
     }
 }

@@ -348,10 +348,15 @@ pub enum RectPixels {
     /// Stencil values, written through `write_mask` inside `scissor` (when
     /// on) with no other test, as llvmpipe writes them (`st_cb_drawpixels.c`:
     /// stencil `ALWAYS`/`REPLACE`, depth test and colour writes off).
+    ///
+    /// `z`: `GL_DEPTH_STENCIL` rectangles also write these depths (buffer
+    /// units) as they are, when the depth mask is on: llvmpipe's depth test
+    /// `ALWAYS` for them (`st_cb_drawpixels.c`, `write_depth` with `write_stencil`).
     Stencil {
         s: Arc<[u8]>,
         write_mask: u8,
         scissor: Option<Rect>,
+        z: Option<Arc<[u32]>>,
     },
 }
 
@@ -421,7 +426,8 @@ impl PlacedImage {
         match self.pixels {
             RectPixels::Color { .. } => 4 * n,
             RectPixels::Depth { .. } => 4 * n,
-            RectPixels::Stencil { .. } => n,
+            RectPixels::Stencil { z: None, .. } => n,
+            RectPixels::Stencil { z: Some(_), .. } => 5 * n,
         }
     }
 }
@@ -436,6 +442,8 @@ pub enum DrawKind {
     Index,
     Depth,
     Stencil,
+    /// `GL_DEPTH_STENCIL` (EXT_packed_depth_stencil): depth and stencil at once.
+    DepthStencil,
 }
 
 /// `glCopyPixels`' `type`.
@@ -444,6 +452,8 @@ pub enum CopyKind {
     Color,
     Depth,
     Stencil,
+    /// `GL_DEPTH_STENCIL` (EXT_packed_depth_stencil).
+    DepthStencil,
 }
 
 /// A unorm8 texel as llvmpipe samples it: times `1/255` (not divided by
@@ -544,6 +554,7 @@ impl Context {
         let missing = match kind {
             DrawKind::Depth => fb.depth_format().is_none(),
             DrawKind::Stencil => !fb.has_stencil(),
+            DrawKind::DepthStencil => fb.depth_format().is_none() || !fb.has_stencil(),
             _ => false,
         };
         if missing {
@@ -554,6 +565,7 @@ impl Context {
         }
         let format = match kind {
             DrawKind::Color => data.format,
+            DrawKind::DepthStencil => crate::PixelFormat::DepthStencil,
             _ => crate::PixelFormat::DepthComponent,
         };
         let (w, h) = (width as usize, height as usize);
@@ -616,6 +628,24 @@ impl Context {
                     s: Arc::from(s),
                     write_mask: self.state.stencil_write_mask as u8,
                     scissor: self.scissor_rect(),
+                    z: None,
+                }
+            }
+            DrawKind::DepthStencil => {
+                let (mut s, mut z) = (Vec::with_capacity(w * h), Vec::with_capacity(w * h));
+                for j in 0..h {
+                    for i in 0..w {
+                        let raw = get(i, j);
+                        s.push(p.stencil(integer(raw[1])) as u8);
+                        let d = p.depth(raw[0].to_f32());
+                        z.push(depth_units(through_texture(d, data.ty), depth_format));
+                    }
+                }
+                RectPixels::Stencil {
+                    s: Arc::from(s),
+                    write_mask: self.state.stencil_write_mask as u8,
+                    scissor: self.scissor_rect(),
+                    z: self.state.depth_write.then(|| Arc::from(z)),
                 }
             }
         };
@@ -645,6 +675,7 @@ impl Context {
                 s: Arc::from(bits.map(|b| p.stencil(b) as u8).collect::<Vec<_>>()),
                 write_mask: self.state.stencil_write_mask as u8,
                 scissor: self.scissor_rect(),
+                z: None,
             },
             _ => RectPixels::Color {
                 rgba: Arc::from(
@@ -736,6 +767,7 @@ impl Context {
         let missing = match kind {
             CopyKind::Depth => self.fb.depth_format().is_none(),
             CopyKind::Stencil => !self.fb.has_stencil(),
+            CopyKind::DepthStencil => self.fb.depth_format().is_none() || !self.fb.has_stencil(),
             CopyKind::Color => false,
         };
         if missing {
@@ -804,6 +836,27 @@ impl Context {
                     s: Arc::from(s),
                     write_mask: self.state.stencil_write_mask as u8,
                     scissor: self.scissor_rect(),
+                    z: None,
+                }
+            }
+            CopyKind::DepthStencil => {
+                let max = depth_format.map_or(1, |f| f.max_value());
+                let (mut s, mut z) = (Vec::new(), Vec::new());
+                for (i, j) in coords {
+                    s.push(p.stencil(i64::from(fb.stencil_at(i, j).unwrap_or(0))) as u8);
+                    let d = sampled_depth(fb.depth_at(i, j).unwrap_or(0), max);
+                    let d = if p.depth_scale == 1.0 && p.depth_bias == 0.0 {
+                        d
+                    } else {
+                        p.depth(d)
+                    };
+                    z.push(depth_units(d, depth_format));
+                }
+                RectPixels::Stencil {
+                    s: Arc::from(s),
+                    write_mask: self.state.stencil_write_mask as u8,
+                    scissor: self.scissor_rect(),
+                    z: self.state.depth_write.then(|| Arc::from(z)),
                 }
             }
         };

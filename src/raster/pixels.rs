@@ -68,7 +68,13 @@ pub fn image(img: &PlacedImage, params: &RasterParams, sink: &mut dyn SpanSink) 
 /// Writes the stencil rectangle `img` inside `bounds` (and its scissor box)
 /// into `t`'s stencil buffer, through its write mask.
 pub fn write_stencil(img: &PlacedImage, bounds: Rect, t: &mut Target<'_>) {
-    let RectPixels::Stencil { s, write_mask, scissor } = &img.pixels else {
+    let RectPixels::Stencil {
+        s,
+        write_mask,
+        scissor,
+        z,
+    } = &img.pixels
+    else {
         return;
     };
     let bounds = scissor.map_or(bounds, |sc| bounds.intersect(sc));
@@ -84,6 +90,13 @@ pub fn write_stencil(img: &PlacedImage, bounds: Rect, t: &mut Target<'_>) {
                 if let Some(d) = buf.get_mut(idx) {
                     *d = (v & write_mask) | (*d & !write_mask);
                 }
+            }
+            if let (Some(z), Some(depth)) = (z, t.depth_mut()) {
+                let v = z[img.at(x, y)];
+                match depth {
+                    softgl_jit::DepthTarget::D16(b) => b.get_mut(idx).map(|d| *d = v as u16),
+                    softgl_jit::DepthTarget::D24(b) | softgl_jit::DepthTarget::D32(b) => b.get_mut(idx).map(|d| *d = v),
+                };
             }
         }
     }

@@ -30,6 +30,7 @@ fn check(ok: bool, e: GlError) -> GlResult {
 /// takes `ty` (Mesa's `_mesa_error_check_format_and_type` and
 /// `texture_formats_agree`). The C ABI calls it for uploads without data too.
 pub fn check_format_type(internal: InternalFormat, format: PixelFormat, ty: PixelType) -> GlResult {
+    check(format.type_enum_ok(ty), GlError::InvalidEnum)?;
     check(format.accepts(ty), GlError::InvalidOperation)?;
     check(
         (internal.base() == BaseFormat::Depth) == format.is_depth(),
@@ -494,6 +495,7 @@ impl Context {
             check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
             let tt = target.texture_target();
             let level = level_index(tt, level)?;
+            check(format.type_enum_ok(ty), GlError::InvalidEnum)?;
             check(format.accepts(ty), GlError::InvalidOperation)?;
             let obj = gl.textures.bound(gl.textures.active_unit(), tt);
             let Some(img) = obj.image(level, target.face()) else {
@@ -501,6 +503,11 @@ impl Context {
             };
             check(
                 (img.internal.base() == BaseFormat::Depth) == format.is_depth(),
+                GlError::InvalidOperation,
+            )?;
+            // Mesa `getteximage_error_check`: depth-stencil data only from a depth-stencil image.
+            check(
+                format != PixelFormat::DepthStencil || img.internal.stencil_bits() > 0,
                 GlError::InvalidOperation,
             )?;
             let size = img.size().map(|s| s as usize);
@@ -607,7 +614,8 @@ impl Context {
                 TexLevelParamName::LuminanceSize => color(0, &[B::Luminance, B::LuminanceAlpha]),
                 TexLevelParamName::IntensitySize => color(0, &[B::Intensity]),
                 TexLevelParamName::DepthSize => color(0, &[B::Depth]),
-                TexLevelParamName::StencilSize | TexLevelParamName::Compressed => 0,
+                TexLevelParamName::StencilSize => img.internal.stencil_bits() as i32,
+                TexLevelParamName::Compressed => 0,
             })
         })
     }

@@ -20,6 +20,8 @@ pub enum PixelFormat {
     Green,
     Blue,
     DepthComponent,
+    /// `GL_DEPTH_STENCIL` (EXT_packed_depth_stencil): depth in slot 0, stencil in slot 1.
+    DepthStencil,
 }
 
 /// A client pixel type.
@@ -44,6 +46,8 @@ pub enum PixelType {
     UnsignedInt8888Rev,
     UnsignedInt1010102,
     UnsignedInt2101010Rev,
+    /// `GL_UNSIGNED_INT_24_8`: depth in the top 24 bits, stencil in the low 8.
+    UnsignedInt248,
 }
 
 /// A GL internal format (`internalformat` of `glTexImage`, `glCopyTexImage`).
@@ -96,6 +100,10 @@ pub enum InternalFormat {
     DepthComponent16,
     DepthComponent24,
     DepthComponent32,
+    /// EXT_packed_depth_stencil: depth and stencil, stored as llvmpipe's
+    /// `Z24_UNORM_S8_UINT` (24 depth bits, 8 stencil bits).
+    DepthStencil,
+    Depth24Stencil8,
     Srgb,
     Srgb8,
     SrgbAlpha,
@@ -212,7 +220,9 @@ impl InternalFormat {
             F::Rgb5A1 => (B::Rgba, [5, 5, 5, 1], false),
             F::Rgb10A2 => (B::Rgba, [10, 10, 10, 2], false),
             F::Rgba12 | F::Rgba16 => (B::Rgba, [16, 16, 16, 16], false),
-            F::DepthComponent | F::DepthComponent24 => (B::Depth, [24, 0, 0, 0], false),
+            F::DepthComponent | F::DepthComponent24 | F::DepthStencil | F::Depth24Stencil8 => {
+                (B::Depth, [24, 0, 0, 0], false)
+            }
             F::DepthComponent16 => (B::Depth, [16, 0, 0, 0], false),
             F::DepthComponent32 => (B::Depth, [32, 0, 0, 0], false),
             F::Srgb | F::Srgb8 => (B::Rgb, [8, 8, 8, 0], true),
@@ -221,6 +231,15 @@ impl InternalFormat {
             F::SluminanceAlpha | F::Sluminance8Alpha8 => (B::LuminanceAlpha, [8, 0, 0, 8], true),
         };
         Storage { base, bits, srgb }
+    }
+
+    /// The stencil bits of a packed depth-stencil format (0 for the others):
+    /// kept in a plane of bytes after the depth texels ([`TexImage::stencil_offset`](super::TexImage::stencil_offset)).
+    pub fn stencil_bits(self) -> u32 {
+        match self {
+            InternalFormat::DepthStencil | InternalFormat::Depth24Stencil8 => 8,
+            _ => 0,
+        }
     }
 }
 
@@ -261,6 +280,7 @@ impl PixelType {
             T::UnsignedInt8888Rev => Packed(4, &[(0, 8), (8, 8), (16, 8), (24, 8)]),
             T::UnsignedInt1010102 => Packed(4, &[(22, 10), (12, 10), (2, 10), (0, 2)]),
             T::UnsignedInt2101010Rev => Packed(4, &[(0, 10), (10, 10), (20, 10), (30, 2)]),
+            T::UnsignedInt248 => Packed(4, &[(8, 24), (0, 8)]),
         }
     }
 
@@ -284,6 +304,7 @@ impl PixelFormat {
             PixelFormat::Bgra => &[2, 1, 0, 3],
             PixelFormat::Bgr => &[2, 1, 0],
             PixelFormat::Luminance | PixelFormat::Red | PixelFormat::DepthComponent => &[0],
+            PixelFormat::DepthStencil => &[0, 1],
             PixelFormat::LuminanceAlpha => &[0, 3],
             PixelFormat::Alpha => &[3],
             PixelFormat::Green => &[1],
@@ -307,12 +328,22 @@ impl PixelFormat {
             | T::UnsignedShort1555Rev
             | T::UnsignedInt1010102
             | T::UnsignedInt2101010Rev => matches!(self, PixelFormat::Rgba | PixelFormat::Bgra),
+            T::UnsignedInt248 => self == PixelFormat::DepthStencil,
             _ => true,
         }
     }
 
+    /// `GL_INVALID_ENUM` (checked before [`accepts`](Self::accepts)): GL 3.0
+    /// §4.3.1, `GL_DEPTH_STENCIL` takes only `GL_UNSIGNED_INT_24_8` (Mesa
+    /// `_mesa_error_check_format_and_type`).
+    pub fn type_enum_ok(self, ty: PixelType) -> bool {
+        self != PixelFormat::DepthStencil || ty == PixelType::UnsignedInt248
+    }
+
+    /// Depth or depth-stencil (they agree with the same internal formats:
+    /// Mesa `texture_formats_agree`).
     pub fn is_depth(self) -> bool {
-        self == PixelFormat::DepthComponent
+        matches!(self, PixelFormat::DepthComponent | PixelFormat::DepthStencil)
     }
 
     /// Bytes one pixel of this format and `ty` takes.

@@ -91,7 +91,8 @@ enum Texels {
 
 fn read(src: &TexImage, storage: &Storage) -> Texels {
     let t = &src.texels;
-    let n = t.len() / storage.texel_format().bytes_per_texel();
+    // Texels only: a depth-stencil image's stencil plane follows them.
+    let n = src.width as usize * src.height as usize * src.depth as usize;
     match storage.texel_format() {
         TexelFormat::Rgba8 => Texels::Bytes((0..n).map(|i| [0, 1, 2, 3].map(|c| t[4 * i + c])).collect()),
         TexelFormat::Srgba8 => Texels::Floats(

@@ -35,7 +35,11 @@ impl TexImage {
             depth: size[2],
             border: 0,
             internal,
-            texels: Arc::new(vec![0; n * internal.storage().texel_format().bytes_per_texel()]),
+            texels: Arc::new(vec![
+                0;
+                n * (internal.storage().texel_format().bytes_per_texel()
+                    + internal.stencil_bits() as usize / 8)
+            ]),
         }
     }
 
@@ -55,6 +59,14 @@ impl TexImage {
     /// Byte offset of texel `(x, y, z)`.
     pub fn offset(&self, x: usize, y: usize, z: usize) -> usize {
         ((z * self.height as usize + y) * self.width as usize + x) * self.texel_format().bytes_per_texel()
+    }
+
+    /// Where texel `(x, y, z)`'s stencil byte is, for a packed depth-stencil
+    /// image: a plane of bytes after the `Depth32F` texels (which the sampler
+    /// reads as any depth texture's).
+    pub fn stencil_offset(&self, x: usize, y: usize, z: usize) -> usize {
+        let n = self.width as usize * self.height as usize * self.depth as usize;
+        n * self.texel_format().bytes_per_texel() + (z * self.height as usize + y) * self.width as usize + x
     }
 }
 

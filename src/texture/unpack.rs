@@ -525,11 +525,20 @@ pub fn upload(img: &mut TexImage, offset: [usize; 3], size: [usize; 3], data: &P
     }
     let route = route(Side::client(data.format, data.ty), Side::texture(&storage), false);
     let swap = data.store.swap_bytes;
+    // Stencil goes to a depth-stencil image's stencil plane; depth-only
+    // data keeps it (Mesa `_mesa_texstore_z24_s8`, `keepstencil`).
+    let stencil = data.format == PixelFormat::DepthStencil && img.internal.stencil_bits() > 0;
     for z in 0..size[2] {
         for y in 0..size[1] {
             for x in 0..size[0] {
                 let rgba = fetch(data.bytes, layout.at(x, y, z), data.format, data.ty, swap);
-                store_texel(img, (offset[0] + x, offset[1] + y, offset[2] + z), rgba, route);
+                let at = (offset[0] + x, offset[1] + y, offset[2] + z);
+                store_texel(img, at, rgba, route);
+                if stencil {
+                    let Raw::U(s, _) = rgba[1] else { continue };
+                    let so = img.stencil_offset(at.0, at.1, at.2);
+                    img.texels_mut()[so] = s as u8;
+                }
             }
         }
     }
@@ -614,6 +623,14 @@ pub fn download(img: &TexImage, format: PixelFormat, ty: PixelType, swap: bool, 
                 if base == BaseFormat::Depth {
                     let Some(Raw::F(d)) = ch[0] else { continue };
                     let bits = storage.bits[0];
+                    if format == PixelFormat::DepthStencil {
+                        // `GL_UNSIGNED_INT_24_8` from Z24_UNORM_S8_UINT: the bits moved
+                        // (`_mesa_unpack_uint_24_8_depth_stencil_row`).
+                        let z24 = depth_unsampled(d, bits);
+                        let s = img.texels[img.stencil_offset(x, y, z)];
+                        write_ne(&mut out[at..], (z24 << 8) | u32::from(s), 4, swap);
+                        continue;
+                    }
                     let (v, n) = pack_depth(depth_readback(depth_unsampled(d, bits), bits), ty);
                     write_ne(&mut out[at..], v, n, swap);
                     continue;

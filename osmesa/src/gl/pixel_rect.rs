@@ -125,6 +125,7 @@ fn draw_format(
     let (kind, pf) = match format {
         GL_STENCIL_INDEX => (DrawKind::Stencil, PixelFormat::DepthComponent),
         GL_DEPTH_COMPONENT => (DrawKind::Depth, PixelFormat::DepthComponent),
+        crate::consts::GL_DEPTH_STENCIL => (DrawKind::DepthStencil, PixelFormat::DepthStencil),
         GL_COLOR_INDEX => (DrawKind::Index, PixelFormat::DepthComponent),
         f => (DrawKind::Color, decode::<PixelFormat>(f)?),
     };
@@ -262,6 +263,7 @@ exports! {
             GL_COLOR => Ok(CopyKind::Color),
             GL_DEPTH => Ok(CopyKind::Depth),
             GL_STENCIL => Ok(CopyKind::Stencil),
+            crate::consts::GL_DEPTH_STENCIL => Ok(CopyKind::DepthStencil),
             _ => Err(GlError::InvalidEnum),
         };
         super::checked(move |gl| {

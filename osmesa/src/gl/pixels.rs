@@ -56,7 +56,12 @@ fn pixel_store(pname: GLenum, param: i32) {
 /// `GL_INVALID_OPERATION`, whatever the format; any other unknown type or
 /// format `GL_INVALID_ENUM` (`GL_BITMAP` too: no texture or colour format takes it).
 pub(super) fn pixel_size(format: GLenum, ty: GLenum) -> GlResult<(usize, usize)> {
+    // GL_DEPTH_STENCIL takes GL_UNSIGNED_INT_24_8 only, checked first (GL 3.0 §4.3.1).
+    if format == GL_DEPTH_STENCIL && ty != GL_UNSIGNED_INT_24_8 {
+        return Err(GlError::InvalidEnum);
+    }
     let packed = match ty {
+        GL_UNSIGNED_INT_24_8 => Some((4, [GL_DEPTH_STENCIL, GL_DEPTH_STENCIL])),
         0x8032 | 0x8362 => Some((1, [GL_RGB, GL_RGB])), // UNSIGNED_BYTE_3_3_2, _2_3_3_REV
         0x8363 | 0x8364 => Some((2, [GL_RGB, GL_RGB])), // UNSIGNED_SHORT_5_6_5, _REV
         // UNSIGNED_SHORT_4_4_4_4, _5_5_5_1, _4_4_4_4_REV, _1_5_5_5_REV
@@ -96,6 +101,8 @@ enum Source {
     Color(&'static [Option<usize>]),
     Depth,
     Stencil,
+    /// `GL_DEPTH_STENCIL` (EXT_packed_depth_stencil): the stored depth and the stencil index.
+    DepthStencil,
 }
 
 fn source(format: GLenum) -> GlResult<Source> {
@@ -112,6 +119,7 @@ fn source(format: GLenum) -> GlResult<Source> {
         GL_LUMINANCE_ALPHA => Source::Color(&[None, Some(3)]),
         GL_DEPTH_COMPONENT => Source::Depth,
         GL_STENCIL_INDEX => Source::Stencil,
+        GL_DEPTH_STENCIL => Source::DepthStencil,
         // Colour-index reads: no colour-index mode in an RGBA context.
         GL_COLOR_INDEX => return Err(GlError::InvalidOperation),
         _ => return Err(GlError::InvalidEnum),
@@ -149,6 +157,10 @@ fn read_pixel(fb: &Framebuffer, src: Source, x: i64, y: i64, out: &mut Vec<f64>)
             out.push(f64::from(fb.depth_at(x, y)?));
         }
         Source::Stencil => out.push(f64::from(fb.stencil_at(x, y)?)),
+        Source::DepthStencil => {
+            out.push(f64::from(fb.depth_at(x, y)?));
+            out.push(f64::from(fb.stencil_at(x, y)?));
+        }
     }
     Some(())
 }
@@ -227,8 +239,15 @@ unsafe fn read_pixels(
     ty: GLenum,
     pixels: *mut c_void,
 ) -> GlResult {
+    // GL_DEPTH_STENCIL takes GL_UNSIGNED_INT_24_8 only (INVALID_ENUM, checked
+    // first), which no other format takes (INVALID_OPERATION): GL 3.0 §4.3.1.
+    if format == GL_DEPTH_STENCIL && ty != GL_UNSIGNED_INT_24_8 {
+        return Err(GlError::InvalidEnum);
+    }
     let src = source(format)?;
     let size: usize = match ty {
+        GL_UNSIGNED_INT_24_8 if format == GL_DEPTH_STENCIL => 4,
+        GL_UNSIGNED_INT_24_8 => return Err(GlError::InvalidOperation),
         GL_UNSIGNED_BYTE | GL_BYTE => 1,
         GL_UNSIGNED_SHORT | GL_SHORT => 2,
         GL_UNSIGNED_INT | GL_INT | GL_FLOAT => 4,
@@ -247,6 +266,9 @@ unsafe fn read_pixels(
     match src {
         Source::Depth if fb.depth_format().is_none() => return Err(GlError::InvalidOperation),
         Source::Stencil if !fb.has_stencil() => return Err(GlError::InvalidOperation),
+        Source::DepthStencil if fb.depth_format().is_none() || !fb.has_stencil() => {
+            return Err(GlError::InvalidOperation)
+        }
         _ => {}
     }
     if w == 0 || h == 0 {
@@ -257,7 +279,7 @@ unsafe fn read_pixels(
     }
     let comps = match src {
         Source::Color(c) => c.len(),
-        Source::Depth | Source::Stencil => 1,
+        Source::Depth | Source::Stencil | Source::DepthStencil => 1,
     };
     let pixel_bytes = comps * size;
     // The layout of a format with as many components (stencil: one).
@@ -283,6 +305,13 @@ unsafe fn read_pixels(
                 continue;
             }
             let at = start + j * stride + i * pixel_bytes;
+            if let Source::DepthStencil = src {
+                // Z24 in the top 24 bits, the stencil index in the low 8.
+                let z = replicate(vals[0] as u32, depth_bits, 24);
+                let v = (z << 8) | (vals[1] as u32 & 0xff);
+                put(&mut dst[at..], GL_UNSIGNED_INT, f64::from(v), true, pack.swap_bytes);
+                continue;
+            }
             if let (Source::Depth, GL_UNSIGNED_INT | GL_UNSIGNED_SHORT) = (src, ty) {
                 let raw = replicate(vals[1] as u32, depth_bits, 8 * size as u32);
                 put(&mut dst[at..], ty, f64::from(raw), true, pack.swap_bytes);
