@@ -24,6 +24,7 @@ macro_rules! exports {
 mod arrays;
 mod attrib;
 mod enums;
+mod eval;
 mod extra_attribs;
 mod fog;
 pub(crate) mod get;
@@ -38,6 +39,7 @@ mod texunit;
 
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
+pub use eval::*;
 pub use extra_attribs::*;
 pub use fog::*;
 pub use get::*;
@@ -55,6 +57,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
     [
         arrays::table,
         attrib::table,
+        eval::table,
         extra_attribs::table,
         fog::table,
         fog::color_table,
