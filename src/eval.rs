@@ -91,7 +91,10 @@ impl MapTarget {
             0x0DB0..=0x0DB8 => (true, v - 0x0DB0),
             _ => return None,
         };
-        Some(MapTarget { two_d, kind: MapKind::ALL[i as usize] })
+        Some(MapTarget {
+            two_d,
+            kind: MapKind::ALL[i as usize],
+        })
     }
 
     /// The bit of this map's enable in [`EvalEnables`].
@@ -261,7 +264,9 @@ pub fn check_map1(target: u32, u1: f32, u2: f32, stride: i32, order: i32) -> GlR
     if u1 == u2 || !(1..=MAX_EVAL_ORDER as i32).contains(&order) {
         return Err(GlError::InvalidValue);
     }
-    let t = MapTarget::from_gl(target).filter(|t| !t.two_d).ok_or(GlError::InvalidEnum)?;
+    let t = MapTarget::from_gl(target)
+        .filter(|t| !t.two_d)
+        .ok_or(GlError::InvalidEnum)?;
     let k = t.kind.components();
     if stride < k as i32 {
         return Err(GlError::InvalidValue);
@@ -287,12 +292,17 @@ pub fn check_map2(
     if u1 == u2 || v1 == v2 || !orders.contains(&uorder) || !orders.contains(&vorder) {
         return Err(GlError::InvalidValue);
     }
-    let t = MapTarget::from_gl(target).filter(|t| t.two_d).ok_or(GlError::InvalidEnum)?;
+    let t = MapTarget::from_gl(target)
+        .filter(|t| t.two_d)
+        .ok_or(GlError::InvalidEnum)?;
     let k = t.kind.components();
     if ustride < k as i32 || vstride < k as i32 {
         return Err(GlError::InvalidValue);
     }
-    Ok((t, (uorder as usize - 1) * ustride as usize + (vorder as usize - 1) * vstride as usize + k))
+    Ok((
+        t,
+        (uorder as usize - 1) * ustride as usize + (vorder as usize - 1) * vstride as usize + k,
+    ))
 }
 
 impl Evaluators {
@@ -308,7 +318,13 @@ impl Evaluators {
         for i in 0..order {
             p.extend_from_slice(&points[i * stride..i * stride + k]);
         }
-        self.map1[t.kind.index()] = Map1 { order, u1, u2, du: 1.0 / (u2 - u1), points: p };
+        self.map1[t.kind.index()] = Map1 {
+            order,
+            u1,
+            u2,
+            du: 1.0 / (u2 - u1),
+            points: p,
+        };
         Ok(())
     }
 
@@ -392,7 +408,10 @@ impl Evaluators {
 
     /// The attribute maps Mesa evaluates (`vbo_exec_eval_update`): colour,
     /// the largest texture map, normal; then the vertex map.
-    fn attrib_maps(en: EvalEnables, enabled: impl Fn(EvalEnables, MapKind) -> bool) -> ([Option<MapKind>; 3], Option<MapKind>) {
+    fn attrib_maps(
+        en: EvalEnables,
+        enabled: impl Fn(EvalEnables, MapKind) -> bool,
+    ) -> ([Option<MapKind>; 3], Option<MapKind>) {
         let on = |k| enabled(en, k).then_some(k);
         let tex = on(MapKind::Texture4)
             .or_else(|| on(MapKind::Texture3))
@@ -511,7 +530,16 @@ impl Evaluators {
     /// triangle strips, over grid points `i1..=i2 × j1..=j2` (Mesa's
     /// `_mesa_EvalMesh2`, which accumulates `u += du`).
     #[allow(clippy::too_many_arguments)]
-    pub fn eval_mesh2(&self, en: EvalEnables, gl: &mut Context, mode: MeshMode, i1: i32, i2: i32, j1: i32, j2: i32) -> GlResult {
+    pub fn eval_mesh2(
+        &self,
+        en: EvalEnables,
+        gl: &mut Context,
+        mode: MeshMode,
+        i1: i32,
+        i2: i32,
+        j1: i32,
+        j2: i32,
+    ) -> GlResult {
         if gl.inside_begin() {
             return Err(GlError::InvalidOperation);
         }
@@ -585,7 +613,9 @@ fn set_attrib(gl: &mut Context, k: MapKind, d: [f32; 4]) {
     match k {
         MapKind::Color4 => gl.color4(d[0], d[1], d[2], d[3]),
         MapKind::Normal => gl.normal3(d[0], d[1], d[2]),
-        MapKind::Texture1 | MapKind::Texture2 | MapKind::Texture3 | MapKind::Texture4 => gl.tex_coord4(d[0], d[1], d[2], d[3]),
+        MapKind::Texture1 | MapKind::Texture2 | MapKind::Texture3 | MapKind::Texture4 => {
+            gl.tex_coord4(d[0], d[1], d[2], d[3])
+        }
         MapKind::Index | MapKind::Vertex3 | MapKind::Vertex4 => {}
     }
 }
@@ -919,8 +949,14 @@ mod tests {
         let mut e = Evaluators::default();
         e.map1(t, 0.0, 1.0, 4, 3, &p[..11]).unwrap();
         assert_eq!(e.map1(t, 0.0, 1.0, 4, 3, &p[..10]), Err(GlError::InvalidValue));
-        assert_eq!(check_map2(MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 2, 2), Err(GlError::InvalidValue));
-        assert_eq!(check_map2(MAP1_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 3, 2), Err(GlError::InvalidEnum));
+        assert_eq!(
+            check_map2(MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 2, 2),
+            Err(GlError::InvalidValue)
+        );
+        assert_eq!(
+            check_map2(MAP1_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 3, 2),
+            Err(GlError::InvalidEnum)
+        );
         assert_eq!(check_map2(MAP2_VERTEX_3, 0.0, 1.0, 6, 2, 0.0, 1.0, 3, 2).unwrap().1, 12);
     }
 

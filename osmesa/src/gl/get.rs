@@ -212,7 +212,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x8005 => Val::N(s.blend_color.iter().map(|&c| f64::from(c)).collect()), // BLEND_COLOR
         0x0BF0 => e(s.logic_op.to_gl()),                                         // LOGIC_OP_MODE
         0x0C23 => Val::B(vec![cm.r, cm.g, cm.b, cm.a]),                          // COLOR_WRITEMASK
-        0x0D30 => i(softgl::eval::MAX_EVAL_ORDER as i64), // MAX_EVAL_ORDER
+        0x0D30 => i(softgl::eval::MAX_EVAL_ORDER as i64),                        // MAX_EVAL_ORDER
         0x0D31 => i(softgl::lighting::MAX_LIGHTS as i64),                        // MAX_LIGHTS
         0x0D32 => i(softgl::lighting::MAX_CLIP_PLANES as i64),                   // MAX_CLIP_PLANES
         0x0B53 => Val::N(s.lighting.model_ambient.iter().map(|&c| f64::from(c)).collect()), // LIGHT_MODEL_AMBIENT
