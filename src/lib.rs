@@ -25,6 +25,7 @@ pub mod context;
 pub mod demo;
 pub mod error;
 pub mod fbo;
+pub mod eval;
 pub mod fog;
 pub mod fragment;
 pub mod framebuffer;

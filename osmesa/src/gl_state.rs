@@ -86,6 +86,8 @@ pub struct SavedAttrib {
     pub matrix_mode: MatrixMode,
     pub hints: [GLenum; 7],
     pub inert_caps: Vec<GLenum>,
+    /// For `GL_EVAL_BIT`: the grids.
+    pub eval_grid: softgl::eval::Grid,
     /// For `GL_TEXTURE_BIT` and `GL_ENABLE_BIT`.
     pub textures: Option<SavedTextures>,
     /// `glClearIndex` and `glIndexMask`, for `GL_COLOR_BUFFER_BIT`.
@@ -161,6 +163,9 @@ pub struct GlState {
     /// Capabilities accepted but without effect until lighting lands
     /// (`GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_COLOR_MATERIAL`, `GL_AUTO_NORMAL`).
     pub inert_caps: Vec<GLenum>,
+    /// The evaluators' maps and grids (`glMap`, `glMapGrid`); their enables
+    /// are among `inert_caps`.
+    pub eval: softgl::eval::Evaluators,
     /// `glPushAttrib` and `glPushClientAttrib` stacks.
     pub attrib_stack: Vec<SavedAttrib>,
     pub client_attrib_stack: Vec<SavedClient>,
@@ -193,6 +198,7 @@ impl Default for GlState {
             unpack: PixelStore::DEFAULT,
             hints: [GL_DONT_CARE; 7],
             inert_caps: Vec::new(),
+            eval: Default::default(),
             attrib_stack: Vec::new(),
             client_attrib_stack: Vec::new(),
             lists: HashMap::new(),

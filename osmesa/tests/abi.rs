@@ -102,7 +102,7 @@ fn unimplemented_functions_record_invalid_operation() {
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
     glPassThrough(1.0); // selection and feedback are not in softgl
     assert_eq!(glGetError(), GL_INVALID_OPERATION);
-    // Inert (no evaluators): accepted and reported.
+    // Stored for the evaluators: accepted and reported.
     glEnable(GL_AUTO_NORMAL);
     assert_eq!((glGetError(), glIsEnabled(GL_AUTO_NORMAL)), (GL_NO_ERROR, GL_TRUE));
     // Drawing still works after all that.

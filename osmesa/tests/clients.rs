@@ -1000,3 +1000,49 @@ fn packed_depth_stencil_matches_mesa() {
     let dark = shadow.chunks(4).filter(|p| p[0] == 0).count();
     assert!(lit > 1000 && dark > 100, "lit {lit}, shadowed {dark}");
 }
+
+#[test]
+fn evaluators_match_mesa() {
+    let Some(exe) = build("eval") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // Curves, lit and rational patches with GL_AUTO_NORMAL, texture and
+    // colour maps, glEvalCoord/glEvalPoint, a compiled glMap: the same
+    // image, byte for byte, and the same glGetMap values and errors.
+    let image = soft.file("eval.color");
+    let lit = image.chunks_exact(4).filter(|p| p[..3] != [0, 0, 0]).count();
+    assert!(lit > 2000, "only {lit} pixels drawn");
+    // Mesa's current values after evaluation are not GL's (its
+    // `vbo_exec_EvalCoord*` copies the vertex back after resizing its
+    // attributes: alpha 0, the normal and texture coordinates read from the
+    // colour); GL 1.5 §5.1 leaves them unchanged, as softgl does.
+    let (cur, other): (Vec<_>, Vec<_>) = soft.lines[1..].iter().partition(|l| l.starts_with("current"));
+    let mesa_other: Vec<_> = mesa.lines[1..].iter().filter(|l| !l.starts_with("current")).collect();
+    assert_eq!(other, mesa_other);
+    assert_eq!(
+        cur,
+        [
+            "current colour after mesh1 0.25 0.5 0.75 1",
+            "current colour after evalcoord 1 1 1 1",
+            "current normal after autonormal 0 0 1",
+            "current texcoord 0 0 0 1",
+            "current colour after mesh2 1 1 1 1",
+        ]
+    );
+    // Every pixel is llvmpipe's but 7, none of them an evaluator's doing
+    // (the coverage is the same, so the evaluated positions are): the
+    // shared pixel where two segments of a line strip meet at a
+    // half-integer x (llvmpipe leaves it to neither segment or to the other
+    // one: (45, 75), (16, 85) on the list's line, whose joints are at
+    // x = 16.5, 45.5; (69, 8), (69, 17), (69, 26) on a flat strip), and 2
+    // point colours one level apart (an exact .5 tie, 0.5 · 255, converted
+    // to 8 bits).
+    let mesa_image = mesa.file("eval.color");
+    let differ: Vec<(usize, usize)> = (0..image.len() / 4)
+        .filter(|&p| image[p * 4..p * 4 + 4] != mesa_image[p * 4..p * 4 + 4])
+        .map(|p| (p % 128, p / 128))
+        .collect();
+    assert_eq!(
+        differ,
+        [(69, 8), (113, 15), (69, 17), (112, 22), (69, 26), (45, 75), (16, 85)]
+    );
+}

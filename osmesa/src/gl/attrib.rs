@@ -38,8 +38,6 @@ const MULTISAMPLE_BIT: u32 = 0x2000_0000;
 const CLIENT_PIXEL_STORE_BIT: u32 = 0x1;
 const CLIENT_VERTEX_ARRAY_BIT: u32 = 0x2;
 
-const AUTO_NORMAL: GLenum = 0x0D80;
-
 fn set_cap(gl: &mut Context, cap: Capability, on: bool) -> GlResult {
     if on {
         gl.enable(cap)
@@ -282,11 +280,13 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
         let b = st.scissor;
         gl.scissor(b.x, b.y, b.width, b.height)?;
     }
-    if m & ENABLE_BIT != 0 {
-        restore_inert(os, &s.inert_caps, &[AUTO_NORMAL]);
+    if m & (ENABLE_BIT | EVAL_BIT) != 0 {
+        // The maps' enables and `GL_AUTO_NORMAL` are in both groups.
+        let caps: Vec<GLenum> = super::eval::eval_caps().collect();
+        restore_inert(os, &s.inert_caps, &caps);
     }
     if m & EVAL_BIT != 0 {
-        restore_inert(os, &s.inert_caps, &[AUTO_NORMAL]);
+        os.eval.grid = s.eval_grid;
     }
     if m & HINT_BIT != 0 {
         os.hints = s.hints;
@@ -322,6 +322,7 @@ exports! {
                 inert_caps: os.inert_caps.clone(),
                 index: (os.clear_index, os.index_mask),
                 buffers: super::fbo::buffers(gl),
+                eval_grid: os.eval.grid,
             };
             os.attrib_stack.push(saved);
             Ok(())

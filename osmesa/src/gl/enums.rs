@@ -14,7 +14,8 @@ pub fn decode<T: GlEnum>(v: GLenum) -> GlResult<T> {
 pub enum Cap {
     /// A capability softgl implements.
     Core(Capability),
-    /// Accepted and stored; without effect (`GL_AUTO_NORMAL`).
+    /// Stored in the interface layer (`GL_AUTO_NORMAL`, `GL_MAP1_*`,
+    /// `GL_MAP2_*`: read by the evaluators).
     Inert(GLenum),
     /// A valid GL 1.x capability softgl does not implement yet.
     Missing,
@@ -25,10 +26,10 @@ pub fn cap(v: GLenum) -> GlResult<Cap> {
         return Ok(Cap::Core(c));
     }
     match v {
-        // AUTO_NORMAL (evaluators are not in softgl)
-        0x0D80 => Ok(Cap::Inert(v)),
-        // POINT/LINE/POLYGON_SMOOTH, MAP1_*, MAP2_*, INDEX_LOGIC_OP
-        0x0B10 | 0x0B20 | 0x0B41 | 0x0D90..=0x0D98 | 0x0DB0..=0x0DB8 | 0x0BF1 => Ok(Cap::Missing),
+        // AUTO_NORMAL, MAP1_*, MAP2_* (the evaluators, `gl/eval.rs`)
+        0x0D80 | 0x0D90..=0x0D98 | 0x0DB0..=0x0DB8 => Ok(Cap::Inert(v)),
+        // POINT/LINE/POLYGON_SMOOTH, INDEX_LOGIC_OP
+        0x0B10 | 0x0B20 | 0x0B41 | 0x0BF1 => Ok(Cap::Missing),
         _ => Err(GlError::InvalidEnum),
     }
 }

@@ -1,13 +1,9 @@
 //! The other commands GL allows between `glBegin` and `glEnd`: `glIndex*`
 //! (the current colour index: kept and queryable as `GL_CURRENT_INDEX`,
 //! without effect in an RGBA context), `glEdgeFlag*` (drawn by polygon mode
-//! `GL_LINE`/`GL_POINT`) and the evaluator calls `glEvalCoord*`,
-//! `glEvalPoint*` (and `glEvalMesh*`, outside), which generate nothing
-//! because no map can be enabled in softgl (GL 1.5 §5.1: only enabled maps
-//! are evaluated).
+//! `GL_LINE`/`GL_POINT`). The evaluator calls are in `eval.rs`.
 
-use super::{attr, outside, rec};
-use crate::consts::GLenum;
+use super::attr;
 
 /// Reads one value through `v`, or `None` for a null pointer.
 ///
@@ -26,18 +22,6 @@ fn index(c: f32) {
 #[inline]
 fn edge_flag(flag: u8) {
     attr(move |gl| gl.edge_flag(flag != 0))
-}
-
-/// An evaluator call allowed between `glBegin` and `glEnd`: with no map
-/// enabled it generates no vertex and changes no state.
-fn eval() {
-    rec(|_, _| Ok(()))
-}
-
-/// `glEvalMesh*`: not allowed between `glBegin` and `glEnd`; else, with no
-/// map enabled, nothing.
-fn eval_mesh() {
-    rec(|_, gl| outside(gl))
 }
 
 exports! {
@@ -106,41 +90,5 @@ exports! {
         if let Some(f) = unsafe { read1(flag) } {
             edge_flag(f)
         }
-    }
-    [] fn glEvalCoord1f(_u: f32) {
-        eval()
-    }
-    [] fn glEvalCoord1fv(_u: *const f32) {
-        eval()
-    }
-    [] fn glEvalCoord2f(_u: f32, _v: f32) {
-        eval()
-    }
-    [] fn glEvalCoord2fv(_u: *const f32) {
-        eval()
-    }
-    [] fn glEvalCoord1d(_u: f64) {
-        eval()
-    }
-    [] fn glEvalCoord1dv(_u: *const f64) {
-        eval()
-    }
-    [] fn glEvalCoord2d(_u: f64, _v: f64) {
-        eval()
-    }
-    [] fn glEvalCoord2dv(_u: *const f64) {
-        eval()
-    }
-    [] fn glEvalPoint1(_i: i32) {
-        eval()
-    }
-    [] fn glEvalPoint2(_i: i32, _j: i32) {
-        eval()
-    }
-    [] fn glEvalMesh1(_mode: GLenum, _i1: i32, _i2: i32) {
-        eval_mesh()
-    }
-    [] fn glEvalMesh2(_mode: GLenum, _i1: i32, _i2: i32, _j1: i32, _j2: i32) {
-        eval_mesh()
     }
 }

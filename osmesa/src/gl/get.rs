@@ -226,6 +226,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x8005 => Val::N(s.blend_color.iter().map(|&c| f64::from(c)).collect()), // BLEND_COLOR
         0x0BF0 => e(s.logic_op.to_gl()),                                         // LOGIC_OP_MODE
         0x0C23 => Val::B(vec![cm.r, cm.g, cm.b, cm.a]),                          // COLOR_WRITEMASK
+        0x0D30 => i(softgl::eval::MAX_EVAL_ORDER as i64),                        // MAX_EVAL_ORDER
         0x0D31 => i(softgl::lighting::MAX_LIGHTS as i64),                        // MAX_LIGHTS
         0x0D32 => i(softgl::lighting::MAX_CLIP_PLANES as i64),                   // MAX_CLIP_PLANES
         0x0B53 => Val::N(s.lighting.model_ambient.iter().map(|&c| f64::from(c)).collect()), // LIGHT_MODEL_AMBIENT
@@ -254,6 +255,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0C21 => i(i64::from(os.index_mask as i32)),   // INDEX_WRITEMASK
         0x0B01 => f(gl.current().index),                // CURRENT_INDEX
         0x0B43 => Val::B(vec![gl.current().edge_flag]), // EDGE_FLAG
+        0x0DD0..=0x0DD3 => eval_grid(&os.eval.grid, pname),
         _ => match enums::cap(pname)? {
             Cap::Core(c) => Val::B(vec![gl.is_enabled(c)]),
             Cap::Inert(c) => Val::B(vec![os.inert_caps.contains(&c)]),
@@ -334,5 +336,16 @@ exports! {
     /// `out` is null or has room for the value of `pname`.
     [unsafe] fn glGetBooleanv(pname: GLenum, out: *mut u8) {
         get(pname, out, |v| v.bools().iter().map(|&b| u8::from(b)).collect())
+    }
+}
+
+/// `GL_MAP1_GRID_DOMAIN`, `_SEGMENTS`, `GL_MAP2_GRID_DOMAIN`, `_SEGMENTS`.
+fn eval_grid(g: &softgl::eval::Grid, pname: GLenum) -> Val {
+    let fs = |v: &[f32]| Val::F(v.iter().map(|&x| f64::from(x)).collect());
+    match pname {
+        0x0DD0 => fs(&[g.u1_1, g.u1_2]),
+        0x0DD1 => i(g.un1),
+        0x0DD2 => fs(&[g.u2_1, g.u2_2, g.v2_1, g.v2_2]),
+        _ => Val::I(vec![g.un2.into(), g.vn2.into()]),
     }
 }

@@ -43,48 +43,4 @@ exports! {
     [] fn glPassThrough(_token: f32) {
         missing()
     }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMap1f(_target: GLenum, _u1: f32, _u2: f32, _stride: i32, _order: i32, _points: *const f32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMap2f(_target: GLenum, _u1: f32, _u2: f32, _ustride: i32, _uorder: i32, _v1: f32, _v2: f32, _vstride: i32, _vorder: i32, _points: *const f32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMapGrid1f(_un: i32, _u1: f32, _u2: f32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMapGrid2f(_un: i32, _u1: f32, _u2: f32, _vn: i32, _v1: f32, _v2: f32) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetMapfv(_target: GLenum, _query: GLenum, _v: *mut f32) {
-        missing_now()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMap1d(_target: GLenum, _u1: f64, _u2: f64, _stride: i32, _order: i32, _points: *const f64) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMap2d(_target: GLenum, _u1: f64, _u2: f64, _ustride: i32, _uorder: i32, _v1: f64, _v2: f64, _vstride: i32, _vorder: i32, _points: *const f64) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMapGrid1d(_un: i32, _u1: f64, _u2: f64) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glMapGrid2d(_un: i32, _u1: f64, _u2: f64, _vn: i32, _v1: f64, _v2: f64) {
-        missing()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetMapdv(_target: GLenum, _query: GLenum, _v: *mut f64) {
-        missing_now()
-    }
-    /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glGetMapiv(_target: GLenum, _query: GLenum, _v: *mut i32) {
-        missing_now()
-    }
 }

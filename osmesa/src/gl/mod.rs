@@ -27,6 +27,7 @@ mod attrib;
 mod buffers;
 mod enums;
 mod extensions;
+mod eval;
 mod extra_attribs;
 mod fbo;
 mod fog;
@@ -50,6 +51,7 @@ pub use accum::*;
 pub use arrays::*;
 pub use attrib::{glPopAttrib, glPopClientAttrib, glPushAttrib, glPushClientAttrib};
 pub use buffers::*;
+pub use eval::*;
 pub use extra_attribs::*;
 pub use fbo::*;
 pub use fog::*;
@@ -76,6 +78,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         arrays::table,
         attrib::table,
         buffers::table,
+        eval::table,
         extra_attribs::table,
         fbo::table,
         fog::table,
