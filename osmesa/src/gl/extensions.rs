@@ -12,16 +12,37 @@ use std::sync::OnceLock;
 
 /// The version softgl reports; `GL_VERSION` starts with its digits
 /// (clients parse it with `sscanf("%d.%d")`).
-pub(crate) const VERSION: &CStr = c"1.1 softgl 0.1.0";
-
-/// What `GL_VERSION` will say once GL 1.5 is whole (README, "Missing"): the
-/// one-line switch is to make [`VERSION`] this.
-#[allow(dead_code)]
-pub(crate) const VERSION_1_5: &CStr = c"1.5 softgl 0.1.0";
+pub(crate) const VERSION: &CStr = c"1.5 softgl 0.1.0";
 
 /// Every extension softgl advertises, with its entry points (GL's names,
 /// from the extension's specification; Mesa's `src/mapi/glapi/gen`).
 pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
+    (
+        "GL_ARB_framebuffer_object",
+        &[
+            "glIsRenderbuffer",
+            "glBindRenderbuffer",
+            "glDeleteRenderbuffers",
+            "glGenRenderbuffers",
+            "glRenderbufferStorage",
+            "glRenderbufferStorageMultisample",
+            "glGetRenderbufferParameteriv",
+            "glIsFramebuffer",
+            "glBindFramebuffer",
+            "glDeleteFramebuffers",
+            "glGenFramebuffers",
+            "glCheckFramebufferStatus",
+            "glFramebufferTexture1D",
+            "glFramebufferTexture2D",
+            "glFramebufferTexture3D",
+            "glFramebufferTextureLayer",
+            "glFramebufferRenderbuffer",
+            "glGetFramebufferAttachmentParameteriv",
+            "glBlitFramebuffer",
+            "glGenerateMipmap",
+        ],
+    ),
+    ("GL_ARB_multisample", &["glSampleCoverageARB"]),
     (
         "GL_ARB_multitexture",
         &[
@@ -125,6 +146,27 @@ pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
             "glUnmapBufferARB",
         ],
     ),
+    (
+        "GL_ARB_window_pos",
+        &[
+            "glWindowPos2dARB",
+            "glWindowPos2dvARB",
+            "glWindowPos2fARB",
+            "glWindowPos2fvARB",
+            "glWindowPos2iARB",
+            "glWindowPos2ivARB",
+            "glWindowPos2sARB",
+            "glWindowPos2svARB",
+            "glWindowPos3dARB",
+            "glWindowPos3dvARB",
+            "glWindowPos3fARB",
+            "glWindowPos3fvARB",
+            "glWindowPos3iARB",
+            "glWindowPos3ivARB",
+            "glWindowPos3sARB",
+            "glWindowPos3svARB",
+        ],
+    ),
     ("GL_EXT_bgra", &[]),
     ("GL_EXT_blend_color", &["glBlendColorEXT"]),
     ("GL_EXT_blend_equation_separate", &["glBlendEquationSeparateEXT"]),
@@ -142,6 +184,33 @@ pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
         ],
     ),
     ("GL_EXT_draw_range_elements", &["glDrawRangeElementsEXT"]),
+    ("GL_EXT_framebuffer_blit", &["glBlitFramebufferEXT"]),
+    (
+        "GL_EXT_framebuffer_multisample",
+        &["glRenderbufferStorageMultisampleEXT"],
+    ),
+    (
+        "GL_EXT_framebuffer_object",
+        &[
+            "glIsRenderbufferEXT",
+            "glBindRenderbufferEXT",
+            "glDeleteRenderbuffersEXT",
+            "glGenRenderbuffersEXT",
+            "glRenderbufferStorageEXT",
+            "glGetRenderbufferParameterivEXT",
+            "glIsFramebufferEXT",
+            "glBindFramebufferEXT",
+            "glDeleteFramebuffersEXT",
+            "glGenFramebuffersEXT",
+            "glCheckFramebufferStatusEXT",
+            "glFramebufferTexture1DEXT",
+            "glFramebufferTexture2DEXT",
+            "glFramebufferTexture3DEXT",
+            "glFramebufferRenderbufferEXT",
+            "glGetFramebufferAttachmentParameterivEXT",
+            "glGenerateMipmapEXT",
+        ],
+    ),
     (
         "GL_EXT_fog_coord",
         &[
@@ -156,6 +225,7 @@ pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
         "GL_EXT_multi_draw_arrays",
         &["glMultiDrawArraysEXT", "glMultiDrawElementsEXT"],
     ),
+    ("GL_EXT_packed_depth_stencil", &[]),
     ("GL_EXT_packed_pixels", &[]),
     (
         "GL_EXT_point_parameters",
@@ -202,6 +272,35 @@ pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
             "glGenTexturesEXT",
             "glIsTextureEXT",
             "glPrioritizeTexturesEXT",
+        ],
+    ),
+    (
+        "GL_MESA_window_pos",
+        &[
+            "glWindowPos2dMESA",
+            "glWindowPos2dvMESA",
+            "glWindowPos2fMESA",
+            "glWindowPos2fvMESA",
+            "glWindowPos2iMESA",
+            "glWindowPos2ivMESA",
+            "glWindowPos2sMESA",
+            "glWindowPos2svMESA",
+            "glWindowPos3dMESA",
+            "glWindowPos3dvMESA",
+            "glWindowPos3fMESA",
+            "glWindowPos3fvMESA",
+            "glWindowPos3iMESA",
+            "glWindowPos3ivMESA",
+            "glWindowPos3sMESA",
+            "glWindowPos3svMESA",
+            "glWindowPos4dMESA",
+            "glWindowPos4dvMESA",
+            "glWindowPos4fMESA",
+            "glWindowPos4fvMESA",
+            "glWindowPos4iMESA",
+            "glWindowPos4ivMESA",
+            "glWindowPos4sMESA",
+            "glWindowPos4svMESA",
         ],
     ),
     ("GL_NV_blend_square", &[]),

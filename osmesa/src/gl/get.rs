@@ -295,7 +295,7 @@ const RENDERER_JIT: &std::ffi::CStr = c"softgl (Cranelift JIT)";
 pub(crate) use super::extensions::VERSION;
 
 exports! {
-    /// `GL_VENDOR`, `GL_RENDERER`, `GL_VERSION` ("1.1 softgl …") and
+    /// `GL_VENDOR`, `GL_RENDERER`, `GL_VERSION` ("1.5 softgl …") and
     /// `GL_EXTENSIONS`; `NULL` and `GL_INVALID_ENUM` for other names.
     [] fn glGetString(name: GLenum) -> *const u8 {
         with_gl(std::ptr::null(), |_, gl| {
