@@ -375,6 +375,8 @@ pub struct Context {
     plan_cache: Option<CachedPlan>,
     /// The geometry's vertex window, reused by every draw (`batch::Window`).
     window: crate::geometry::batch::Window,
+    /// `glRenderMode`, selection and feedback (`select.rs`).
+    render_mode: crate::select::RenderModeState,
 }
 
 /// A draw's plan (`plan`) and uniforms, and what they were made of: the
@@ -446,6 +448,7 @@ impl Context {
             threads: crate::raster::pool::default_threads(),
             plan_cache: None,
             window: Default::default(),
+            render_mode: Default::default(),
         }
     }
 
@@ -1382,6 +1385,14 @@ impl Context {
         {
             return self.record(Err(GlError::InvalidOperation));
         }
+        if self.render_mode.mode != crate::select::RenderMode::Render {
+            // Select or feedback: the primitives are recorded, not rasterized.
+            geometry.stipple_resets = true;
+            let current = (self.current.color, self.current.tex_coords[0]);
+            let mut sink = self.render_mode.sink(layout, current.0, current.1);
+            geometry.draw(&vertex_stage, mode, count, fetch, &mut sink, &mut self.window);
+            return Ok(());
+        }
         let specialist = match self.backend {
             Backend::Jit => self.specialists.get(&key).cloned(),
             Backend::Interpreter => None,
@@ -1423,5 +1434,72 @@ impl Context {
         self.finish_scene();
         let r = self.fb.read_pixels_f32(x, y, w, h);
         self.record(r)
+    }
+
+    // ----- selection and feedback (select.rs) -----
+
+    /// `glRenderMode`: the hits or values of the mode left (−1 on overflow).
+    pub fn render_mode(&mut self, mode: crate::select::RenderMode) -> GlResult<i32> {
+        self.outside()?;
+        let (r, error) = self.render_mode.set_mode(mode);
+        if let Some(e) = error {
+            self.record_error(e);
+        }
+        Ok(r)
+    }
+
+    /// Render mode, selection and feedback state (`GL_RENDER_MODE`, the buffers).
+    pub fn render_mode_state(&self) -> &crate::select::RenderModeState {
+        &self.render_mode
+    }
+
+    /// `glSelectBuffer` of `size` values (the values land in
+    /// [`Context::render_mode_state`]'s `select.buffer`).
+    pub fn select_buffer(&mut self, size: i32) -> GlResult {
+        self.outside()?;
+        let r = self.render_mode.select_buffer(size);
+        self.record(r)
+    }
+
+    /// `glFeedbackBuffer` of `size` values of type `ty`.
+    pub fn feedback_buffer(&mut self, size: i32, ty: crate::select::FeedbackType) -> GlResult {
+        self.outside()?;
+        let r = self.render_mode.feedback_buffer(size, ty);
+        self.record(r)
+    }
+
+    /// `glInitNames`.
+    pub fn init_names(&mut self) -> GlResult {
+        self.outside()?;
+        self.render_mode.init_names();
+        Ok(())
+    }
+
+    /// `glLoadName`.
+    pub fn load_name(&mut self, name: u32) -> GlResult {
+        self.outside()?;
+        let r = self.render_mode.load_name(name);
+        self.record(r)
+    }
+
+    /// `glPushName`.
+    pub fn push_name(&mut self, name: u32) -> GlResult {
+        self.outside()?;
+        let r = self.render_mode.push_name(name);
+        self.record(r)
+    }
+
+    /// `glPopName`.
+    pub fn pop_name(&mut self) -> GlResult {
+        self.outside()?;
+        let r = self.render_mode.pop_name();
+        self.record(r)
+    }
+
+    /// `glPassThrough`.
+    pub fn pass_through(&mut self, token: f32) -> GlResult {
+        self.outside()?;
+        self.render_mode.pass_through(token);
+        Ok(())
     }
 }

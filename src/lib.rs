@@ -32,6 +32,7 @@ pub mod inverse;
 pub mod lighting;
 pub mod matrix;
 pub mod raster;
+pub mod select;
 pub mod state;
 pub mod texture;
 pub mod tracked;

@@ -188,6 +188,9 @@ impl Viewport {
 
 /// Per-draw constants of the geometry pipeline.
 pub struct Geometry<'s> {
+    /// Whether the sink hears of line stipple resets ([`PrimSink::reset_stipple`]:
+    /// feedback's `GL_LINE_RESET_TOKEN`), where Mesa's draw module makes them.
+    pub stipple_resets: bool,
     state: &'s RasterState,
     viewport: Viewport,
     /// Triangles: clipped to the view volume, and bounded by the viewport.
@@ -286,6 +289,7 @@ impl<'s> Geometry<'s> {
         };
         let fill_offset = state.offset_fill.then_some((state.offset_factor, state.offset_units));
         Geometry {
+            stipple_resets: false,
             state,
             viewport,
             params,
@@ -390,6 +394,9 @@ impl<'s> Geometry<'s> {
             }
             Primitive::Line { a, b, provoking } => {
                 batch.load(a.max(b).max(provoking));
+                if self.stipple_resets && (mode == PrimitiveMode::Lines || a == 0) {
+                    sink.reset_stipple();
+                }
                 let (va, vb) = (batch.vertex(a), batch.vertex(b));
                 let flat = flat_shaded.then(|| &batch.vertex(provoking).win.v);
                 if va.inside && vb.inside {
@@ -722,6 +729,10 @@ impl<'s> Geometry<'s> {
                 }
             }
             PolygonMode::Line | PolygonMode::Point => {
+                if self.stipple_resets {
+                    // Every triangle reaches draw's unfilled stage with a reset.
+                    sink.reset_stipple();
+                }
                 let dz = offset.map_or(0.0, |(factor, units)| self.offset_of(win, factor, units));
                 for (v, _) in win.iter_mut() {
                     v.z += dz;

@@ -94,6 +94,9 @@ pub trait PrimSink {
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams);
     fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams);
     fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams);
+    /// A line stipple reset before the next line (only called when
+    /// [`crate::geometry::Geometry::stipple_resets`] is set: feedback).
+    fn reset_stipple(&mut self) {}
 }
 
 /// Rasterizes what it is handed at once into a sink of a known type: its
