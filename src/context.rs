@@ -1438,14 +1438,15 @@ impl Context {
 
     // ----- selection and feedback (select.rs) -----
 
-    /// `glRenderMode`: the hits or values of the mode left (−1 on overflow).
-    pub fn render_mode(&mut self, mode: crate::select::RenderMode) -> GlResult<i32> {
+    /// `glRenderMode`: the hits or values of the mode left (−1 on
+    /// overflow) and what it wrote into its buffer.
+    pub fn render_mode(&mut self, mode: crate::select::RenderMode) -> GlResult<(i32, crate::select::ModeOutput)> {
         self.outside()?;
-        let (r, error) = self.render_mode.set_mode(mode);
+        let (r, output, error) = self.render_mode.set_mode(mode);
         if let Some(e) = error {
             self.record_error(e);
         }
-        Ok(r)
+        Ok((r, output))
     }
 
     /// Render mode, selection and feedback state (`GL_RENDER_MODE`, the buffers).

@@ -149,6 +149,16 @@ impl Feedback {
     }
 }
 
+/// What a mode wrote, handed back when it is left: the selection buffer's
+/// or the feedback buffer's values (at most the buffer's size).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub enum ModeOutput {
+    #[default]
+    None,
+    Select(Vec<u32>),
+    Feedback(Vec<f32>),
+}
+
 /// Render mode, selection and feedback state of a context.
 #[derive(Clone, Debug, Default)]
 pub struct RenderModeState {
@@ -162,9 +172,9 @@ impl RenderModeState {
     /// on overflow, 0 from `GL_RENDER`). Errors as Mesa's `_mesa_RenderMode`:
     /// entering a mode whose buffer was never given is `GL_INVALID_OPERATION`
     /// (recorded, the mode still changes).
-    pub fn set_mode(&mut self, mode: RenderMode) -> (i32, Option<GlError>) {
-        let result = match self.mode {
-            RenderMode::Render => 0,
+    pub fn set_mode(&mut self, mode: RenderMode) -> (i32, ModeOutput, Option<GlError>) {
+        let (result, output) = match self.mode {
+            RenderMode::Render => (0, ModeOutput::None),
             RenderMode::Select => {
                 let s = &mut self.select;
                 s.record();
@@ -172,13 +182,13 @@ impl RenderModeState {
                 s.count = 0;
                 s.hits = 0;
                 s.reset_names();
-                r
+                (r, ModeOutput::Select(std::mem::take(&mut s.buffer)))
             }
             RenderMode::Feedback => {
                 let f = &mut self.feedback;
                 let r = if f.count > f.size { -1 } else { f.count as i32 };
                 f.count = 0;
-                r
+                (r, ModeOutput::Feedback(std::mem::take(&mut f.buffer)))
             }
         };
         let error = match mode {
@@ -194,7 +204,7 @@ impl RenderModeState {
             }
         };
         self.mode = mode;
-        (result, error)
+        (result, output, error)
     }
 
     /// `glSelectBuffer`.

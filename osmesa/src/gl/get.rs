@@ -133,6 +133,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     if let Some(v) = super::fog::value(os, gl, pname)
         .or_else(|| super::texture::value(os, gl, pname))
         .or_else(|| super::texunit::value(gl, pname))
+        .or_else(|| super::select::value(os, gl, pname))
     {
         return Ok(v);
     }

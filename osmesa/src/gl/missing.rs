@@ -2,7 +2,7 @@
 //! exported (so that GLU and PyOpenGL resolve it here, not in another GL
 //! library) and records `GL_INVALID_OPERATION` when it runs: compiled into a
 //! display list like the command it stands for, or at once for the commands
-//! GL never compiles (queries, `glRenderMode`, client arrays). None reads
+//! GL never compiles (queries, client arrays). None reads
 //! or writes through its pointers, so none is `unsafe`.
 //! The README lists them by group.
 
@@ -174,39 +174,6 @@ exports! {
     /// Raster position and pixel rectangles (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glGetPixelMapusv(_map: GLenum, _values: *mut u16) {
         missing_now()
-    }
-    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glRenderMode(_mode: GLenum) -> i32 {
-        missing_now();
-        0
-    }
-    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glSelectBuffer(_size: i32, _buffer: *mut u32) {
-        missing_now()
-    }
-    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glFeedbackBuffer(_size: i32, _ty: GLenum, _buffer: *mut f32) {
-        missing_now()
-    }
-    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glInitNames() {
-        missing()
-    }
-    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glLoadName(_name: u32) {
-        missing()
-    }
-    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPushName(_name: u32) {
-        missing()
-    }
-    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPopName() {
-        missing()
-    }
-    /// Selection and feedback (not in softgl yet): `GL_INVALID_OPERATION`.
-    [] fn glPassThrough(_token: f32) {
-        missing()
     }
     /// Evaluators (not in softgl yet): `GL_INVALID_OPERATION`.
     [] fn glMap1f(_target: GLenum, _u1: f32, _u2: f32, _stride: i32, _order: i32, _points: *const f32) {

@@ -32,6 +32,7 @@ mod lighting;
 mod lists;
 mod missing;
 mod pixels;
+pub(crate) mod select;
 mod state;
 mod texture;
 mod texunit;
@@ -64,6 +65,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         lists::table,
         missing::table,
         pixels::table,
+        select::table,
         state::table,
         texture::table,
         texunit::table,
