@@ -1062,7 +1062,7 @@ impl Context {
             materials,
             shininess_varies: false,
             tex,
-            tex_units: self.tex_units.enabled_mask(),
+            tex_units: self.stored_tex_units(),
         });
         Ok(())
     }
@@ -1131,7 +1131,7 @@ impl Context {
         if run.color_at().is_some() && self.state.lighting.color_material {
             self.track_color_material();
         }
-        let units = self.tex_units.enabled_mask();
+        let units = self.stored_tex_units();
         let current = self.current.tex_coords;
         let before0 = before.tex_coords[0];
         let tex = |i: usize, u: usize| {
@@ -1351,6 +1351,12 @@ impl Context {
         // planes of the vertices' (equal, clamped) values, read as flat colours.
         // A constant colour summed with a varying secondary one (or the reverse)
         // stays interpolated: the key has one flat flag for both.
+        if self.render_mode.mode == crate::select::RenderMode::Feedback {
+            // Mesa's fixed-function vertex program writes the colour and unit
+            // 0's coordinates in feedback mode (`ffvertex_prog.c`).
+            layout.color = true;
+            layout.tex |= 1;
+        }
         let varies = varying.color || (layout.secondary && varying.secondary);
         let uniform = !self.state.lighting.enabled && !varies;
         if uniform && layout.color {
@@ -1437,6 +1443,13 @@ impl Context {
     }
 
     // ----- selection and feedback (select.rs) -----
+
+    /// The units whose coordinates `begin`/`end` keeps per vertex: the
+    /// enabled ones, and unit 0 in feedback mode (which writes them).
+    fn stored_tex_units(&self) -> u8 {
+        let feedback = self.render_mode.mode == crate::select::RenderMode::Feedback;
+        self.tex_units.enabled_mask() | u8::from(feedback)
+    }
 
     /// `glRenderMode`: the hits or values of the mode left (−1 on
     /// overflow) and what it wrote into its buffer.

@@ -313,21 +313,24 @@ pub struct ModeSink<'a> {
 }
 
 impl ModeSink<'_> {
-    fn vertex(&mut self, v: &RasterVertex, flat: Option<&Varyings>) {
+    /// A vertex's window coordinates, clip w, colour (each vertex its own,
+    /// flat shading or not: llvmpipe, not the draw module, flattens) and
+    /// coordinates of unit 0. Window y is `height - y` of the top-down
+    /// viewport's y, as `feedback_vertex` computes it.
+    fn vertex(&mut self, v: &RasterVertex, height: f32) {
         let slot = |v: &Varyings, o: Option<usize>, d: Vec4| o.map_or(d, |o| Vec4::from_slice(&v[o..o + 4]));
-        // Flat shading: the provoking vertex's colour (draw's flatshade stage).
-        let color = slot(flat.unwrap_or(&v.v), self.layout.color(), self.color);
+        let color = slot(&v.v, self.layout.color(), self.color);
         let tex = slot(&v.v, self.layout.tex(0), self.tex);
-        let win = [v.x, v.y, v.z as f32, 1.0 / v.inv_w];
+        let win = [v.x, height - v.y_down, v.z as f32, 1.0 / v.inv_w];
         self.state.feedback.vertex(win, color, tex);
     }
 
-    fn vertices(&mut self, vs: &[&RasterVertex], flat: Option<&Varyings>, tokens: &[f32]) {
+    fn vertices(&mut self, vs: &[&RasterVertex], params: &RasterParams, tokens: &[f32]) {
         match self.state.mode {
             RenderMode::Select => vs.iter().for_each(|v| self.state.select.hit(v.z as f32)),
             RenderMode::Feedback => {
                 tokens.iter().for_each(|&t| self.state.feedback.token(t));
-                vs.iter().for_each(|v| self.vertex(v, flat));
+                vs.iter().for_each(|v| self.vertex(v, params.height as f32));
             }
             RenderMode::Render => {}
         }
@@ -335,21 +338,21 @@ impl ModeSink<'_> {
 }
 
 impl PrimSink for ModeSink<'_> {
-    fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, _params: &RasterParams) {
-        self.vertices(&v, flat, &[token::POLYGON, 3.0]);
+    fn triangle(&mut self, v: [&RasterVertex; 3], _flat: Option<&Varyings>, params: &RasterParams) {
+        self.vertices(&v, params, &[token::POLYGON, 3.0]);
     }
 
-    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, _w: f32, flat: Option<&Varyings>, _p: &RasterParams) {
+    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, _w: f32, _flat: Option<&Varyings>, p: &RasterParams) {
         let t = if std::mem::take(&mut self.state.feedback.reset) {
             token::LINE_RESET
         } else {
             token::LINE
         };
-        self.vertices(&[a, b], flat, &[t]);
+        self.vertices(&[a, b], p, &[t]);
     }
 
-    fn point(&mut self, v: &RasterVertex, _size: f32, _params: &RasterParams) {
-        self.vertices(&[v], None, &[token::POINT]);
+    fn point(&mut self, v: &RasterVertex, _size: f32, params: &RasterParams) {
+        self.vertices(&[v], params, &[token::POINT]);
     }
 
     fn reset_stipple(&mut self) {

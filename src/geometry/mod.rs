@@ -34,6 +34,22 @@ use varying::{copy_slots, VaryingLayout, Varyings};
 
 pub use crate::state::PrimitiveMode;
 
+/// The `k`th edge (or vertex) of an `n`-gon drawn as lines or points in
+/// the order Mesa's draw module makes them (what feedback records):
+/// its unfilled stage draws a triangle's edges as v2-v0, v0-v1, v1-v2 and
+/// its points as v0, v1, v2 (`draw_pipe_unfilled.c`); a clipped polygon
+/// reaches it as a fan `(v[i-1], v[i], v[0])` whose edge flags leave its
+/// edges in order from v0 and its points as v1, v0, v2, … (v1, v2, v0 for a
+/// triangle) (`emit_poly`, `draw_pipe_clip.c`).
+fn unfilled_order(mode: PolygonMode, clipped: bool, n: usize, k: usize) -> usize {
+    match (mode, clipped) {
+        (PolygonMode::Line, false) => (k + 2) % 3,
+        (PolygonMode::Point, true) if n == 3 => (k + 1) % 3,
+        (PolygonMode::Point, true) if k < 2 => 1 - k,
+        _ => k,
+    }
+}
+
 /// The largest viewport side (`GL_MAX_VIEWPORT_DIMS`, as Mesa reports it).
 pub const MAX_VIEWPORT: i32 = 16384;
 
@@ -189,7 +205,9 @@ impl Viewport {
 /// Per-draw constants of the geometry pipeline.
 pub struct Geometry<'s> {
     /// Whether the sink hears of line stipple resets ([`PrimSink::reset_stipple`]:
-    /// feedback's `GL_LINE_RESET_TOKEN`), where Mesa's draw module makes them.
+    /// feedback's `GL_LINE_RESET_TOKEN`), where Mesa's draw module makes them:
+    /// only its unfilled stage passes them on, one a triangle drawn as lines
+    /// (`draw_pipe_unfilled.c`; line primitives' resets stop at its stipple stage).
     pub stipple_resets: bool,
     state: &'s RasterState,
     viewport: Viewport,
@@ -394,9 +412,6 @@ impl<'s> Geometry<'s> {
             }
             Primitive::Line { a, b, provoking } => {
                 batch.load(a.max(b).max(provoking));
-                if self.stipple_resets && (mode == PrimitiveMode::Lines || a == 0) {
-                    sink.reset_stipple();
-                }
                 let (va, vb) = (batch.vertex(a), batch.vertex(b));
                 let flat = flat_shaded.then(|| &batch.vertex(provoking).win.v);
                 if va.inside && vb.inside {
@@ -738,7 +753,13 @@ impl<'s> Geometry<'s> {
                     v.z += dz;
                 }
                 let shifted = &*win;
-                for i in 0..shifted.len() {
+                let n = shifted.len();
+                for k in 0..n {
+                    let i = if self.stipple_resets {
+                        unfilled_order(mode, was_clipped, n, k)
+                    } else {
+                        k
+                    };
                     let (v, edge) = &shifted[i];
                     if !edge {
                         continue;
