@@ -143,7 +143,12 @@ exports! {
             if r.mode == RenderMode::Feedback {
                 return Err(GlError::InvalidOperation);
             }
-            if size < 0 || (buffer.is_null() && size > 0) {
+            if size < 0 {
+                return Err(GlError::InvalidValue);
+            }
+            if buffer.is_null() && size > 0 {
+                // Mesa sets the size to 0 then (the count is 0 outside feedback mode).
+                ctx.feedback_buffer(0, r.feedback.ty)?;
                 return Err(GlError::InvalidValue);
             }
             let (t, _) = feedback_type(ty).ok_or(GlError::InvalidEnum)?;
