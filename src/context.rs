@@ -1393,7 +1393,7 @@ impl Context {
         }
         if self.render_mode.mode != crate::select::RenderMode::Render {
             // Select or feedback: the primitives are recorded, not rasterized.
-            geometry.stipple_resets = true;
+            geometry.recording = true;
             let current = (self.current.color, self.current.tex_coords[0]);
             let mut sink = self.render_mode.sink(layout, current.0, current.1);
             geometry.draw(&vertex_stage, mode, count, fetch, &mut sink, &mut self.window);

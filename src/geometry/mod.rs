@@ -204,11 +204,12 @@ impl Viewport {
 
 /// Per-draw constants of the geometry pipeline.
 pub struct Geometry<'s> {
-    /// Whether the sink hears of line stipple resets ([`PrimSink::reset_stipple`]:
-    /// feedback's `GL_LINE_RESET_TOKEN`), where Mesa's draw module makes them:
+    /// Select or feedback mode: the sink records, nothing is rasterized. It
+    /// hears of line stipple resets ([`PrimSink::reset_stipple`]: feedback's
+    /// `GL_LINE_RESET_TOKEN`) where Mesa's draw module makes them:
     /// only its unfilled stage passes them on, one a triangle drawn as lines
     /// (`draw_pipe_unfilled.c`; line primitives' resets stop at its stipple stage).
-    pub stipple_resets: bool,
+    pub recording: bool,
     state: &'s RasterState,
     viewport: Viewport,
     /// Triangles: clipped to the view volume, and bounded by the viewport.
@@ -307,7 +308,7 @@ impl<'s> Geometry<'s> {
         };
         let fill_offset = state.offset_fill.then_some((state.offset_factor, state.offset_units));
         Geometry {
-            stipple_resets: false,
+            recording: false,
             state,
             viewport,
             params,
@@ -357,7 +358,7 @@ impl<'s> Geometry<'s> {
         sink: &mut dyn PrimSink,
         window: &mut batch::Window,
     ) {
-        if self.params.bounds.is_empty() {
+        if self.params.bounds.is_empty() && !self.recording {
             return;
         }
         let mut batch = VertexBatch::new(stage, self, count, fetch, window);
@@ -744,7 +745,7 @@ impl<'s> Geometry<'s> {
                 }
             }
             PolygonMode::Line | PolygonMode::Point => {
-                if self.stipple_resets {
+                if self.recording {
                     // Every triangle reaches draw's unfilled stage with a reset.
                     sink.reset_stipple();
                 }
@@ -755,7 +756,7 @@ impl<'s> Geometry<'s> {
                 let shifted = &*win;
                 let n = shifted.len();
                 for k in 0..n {
-                    let i = if self.stipple_resets {
+                    let i = if self.recording {
                         unfilled_order(mode, was_clipped, n, k)
                     } else {
                         k

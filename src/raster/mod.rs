@@ -95,7 +95,7 @@ pub trait PrimSink {
     fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams);
     fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams);
     /// A line stipple reset before the next line (only called when
-    /// [`crate::geometry::Geometry::stipple_resets`] is set: feedback).
+    /// [`crate::geometry::Geometry::recording`] is set: feedback).
     fn reset_stipple(&mut self) {}
 }
 

@@ -206,6 +206,18 @@ int main(int argc, char **argv) {
   glCallList(1);                        /* the pass-through in the list */
   print_feedback("cull, modes, flat, perspective", glRenderMode(GL_RENDER));
 
+  /* An empty scissor box and viewport do not stop feedback. */
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 0, 0, 0);
+  glFeedbackBuffer(1024, GL_3D, fb);
+  glRenderMode(GL_FEEDBACK);
+  glBegin(GL_POINTS); glVertex3f(0.5f, 0.5f, 0.5f); glEnd();
+  glViewport(0, 0, 0, 0);
+  glBegin(GL_POINTS); glVertex3f(0.5f, 0.5f, 0.5f); glEnd();
+  glViewport(0, 0, 64, 64);
+  glDisable(GL_SCISSOR_TEST);
+  print_feedback("scissor and viewport empty", glRenderMode(GL_RENDER));
+
   /* Feedback overflow: 4 values of room. */
   for (int i = 0; i < 8; i++) fb[i] = -7;
   glFeedbackBuffer(4, GL_3D, fb);
