@@ -402,6 +402,8 @@ pub struct Context {
 struct Lane {
     scene: Scene,
     background: Background,
+    /// `glRenderMode`, selection and feedback (`select.rs`).
+    render_mode: crate::select::RenderModeState,
 }
 
 /// A draw's plan (`plan`) and uniforms, and what they were made of: the
@@ -492,6 +494,7 @@ impl Context {
             raster: crate::raster_pos::RasterPos::default(),
             pixel: crate::pixel_transfer::PixelState::default(),
             lanes: (1..fb_samples).map(|_| Lane::default()).collect(),
+            render_mode: Default::default(),
         }
     }
 
@@ -1228,7 +1231,7 @@ impl Context {
             materials,
             shininess_varies: false,
             tex,
-            tex_units: self.tex_units.enabled_mask(),
+            tex_units: self.stored_tex_units(),
         });
         Ok(())
     }
@@ -1297,7 +1300,7 @@ impl Context {
         if run.color_at().is_some() && self.state.lighting.color_material {
             self.track_color_material();
         }
-        let units = self.tex_units.enabled_mask();
+        let units = self.stored_tex_units();
         let current = self.current.tex_coords;
         let before0 = before.tex_coords[0];
         let tex = |i: usize, u: usize| {
@@ -1521,6 +1524,12 @@ impl Context {
         // planes of the vertices' (equal, clamped) values, read as flat colours.
         // A constant colour summed with a varying secondary one (or the reverse)
         // stays interpolated: the key has one flat flag for both.
+        if self.render_mode.mode == crate::select::RenderMode::Feedback {
+            // Mesa's fixed-function vertex program writes the colour and unit
+            // 0's coordinates in feedback mode (`ffvertex_prog.c`).
+            layout.color = true;
+            layout.tex |= 1;
+        }
         let varies = varying.color || (layout.secondary && varying.secondary);
         let uniform = !self.state.lighting.enabled && !varies;
         if uniform && layout.color {
@@ -1555,6 +1564,14 @@ impl Context {
                 != (fb.color_format(), fb.depth_format(), fb.has_stencil())
         {
             return self.record(Err(GlError::InvalidOperation));
+        }
+        if self.render_mode.mode != crate::select::RenderMode::Render {
+            // Select or feedback: the primitives are recorded, not rasterized.
+            geometry.recording = true;
+            let current = (self.current.color, self.current.tex_coords[0]);
+            let mut sink = self.render_mode.sink(layout, current.0, current.1);
+            geometry.draw(&vertex_stage, mode, count, fetch, &mut sink, &mut self.window);
+            return Ok(());
         }
         // An active occlusion query: the draw's fragments are counted into its counter.
         let samples = self.queries.counter();
@@ -1676,5 +1693,80 @@ impl Context {
     /// GL reports 0 then, and `GL_SAMPLE_BUFFERS` 0).
     pub fn samples(&self) -> u32 {
         self.fb.samples()
+    }
+
+    // ----- selection and feedback (select.rs) -----
+
+    /// The units whose coordinates `begin`/`end` keeps per vertex: the
+    /// enabled ones, and unit 0 in feedback mode (which writes them).
+    fn stored_tex_units(&self) -> u8 {
+        let feedback = self.render_mode.mode == crate::select::RenderMode::Feedback;
+        self.tex_units.enabled_mask() | u8::from(feedback)
+    }
+
+    /// `glRenderMode`: the hits or values of the mode left (−1 on
+    /// overflow) and what it wrote into its buffer.
+    pub fn render_mode(&mut self, mode: crate::select::RenderMode) -> GlResult<(i32, crate::select::ModeOutput)> {
+        self.outside()?;
+        let (r, output, error) = self.render_mode.set_mode(mode);
+        if let Some(e) = error {
+            self.record_error(e);
+        }
+        Ok((r, output))
+    }
+
+    /// Render mode, selection and feedback state (`GL_RENDER_MODE`, the buffers).
+    pub fn render_mode_state(&self) -> &crate::select::RenderModeState {
+        &self.render_mode
+    }
+
+    /// `glSelectBuffer` of `size` values (the values land in
+    /// [`Context::render_mode_state`]'s `select.buffer`).
+    pub fn select_buffer(&mut self, size: i32) -> GlResult {
+        self.outside()?;
+        let r = self.render_mode.select_buffer(size);
+        self.record(r)
+    }
+
+    /// `glFeedbackBuffer` of `size` values of type `ty`.
+    pub fn feedback_buffer(&mut self, size: i32, ty: crate::select::FeedbackType) -> GlResult {
+        self.outside()?;
+        let r = self.render_mode.feedback_buffer(size, ty);
+        self.record(r)
+    }
+
+    /// `glInitNames`.
+    pub fn init_names(&mut self) -> GlResult {
+        self.outside()?;
+        self.render_mode.init_names();
+        Ok(())
+    }
+
+    /// `glLoadName`.
+    pub fn load_name(&mut self, name: u32) -> GlResult {
+        self.outside()?;
+        let r = self.render_mode.load_name(name);
+        self.record(r)
+    }
+
+    /// `glPushName`.
+    pub fn push_name(&mut self, name: u32) -> GlResult {
+        self.outside()?;
+        let r = self.render_mode.push_name(name);
+        self.record(r)
+    }
+
+    /// `glPopName`.
+    pub fn pop_name(&mut self) -> GlResult {
+        self.outside()?;
+        let r = self.render_mode.pop_name();
+        self.record(r)
+    }
+
+    /// `glPassThrough`.
+    pub fn pass_through(&mut self, token: f32) -> GlResult {
+        self.outside()?;
+        self.render_mode.pass_through(token);
+        Ok(())
     }
 }

@@ -41,6 +41,7 @@ pub mod pixel_transfer;
 pub mod query;
 pub mod raster;
 pub mod raster_pos;
+pub mod select;
 pub mod state;
 pub mod texture;
 pub mod tracked;

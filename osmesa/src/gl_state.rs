@@ -175,6 +175,8 @@ pub struct GlState {
     pub compiling: Option<Compiling>,
     pub list_base: u32,
     pub call_depth: u32,
+    /// `glSelectBuffer`'s and `glFeedbackBuffer`'s buffers.
+    pub mode_buffers: crate::gl::select::ModeBuffers,
 }
 
 impl Default for GlState {
@@ -205,6 +207,7 @@ impl Default for GlState {
             compiling: None,
             list_base: 0,
             call_depth: 0,
+            mode_buffers: Default::default(),
         }
     }
 }

@@ -1046,3 +1046,17 @@ fn evaluators_match_mesa() {
         [(69, 8), (113, 15), (69, 17), (112, 22), (69, 26), (45, 75), (16, 85)]
     );
 }
+
+#[test]
+fn selection_and_feedback_match_mesa() {
+    let Some(exe) = build("select") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // Hit records (names, min/max window z scaled to 2^32 - 1), feedback
+    // buffers of every type (tokens, window coordinates after clipping,
+    // colours, texture coordinates), culling, polygon modes, overflow, the
+    // name stack's errors and the state read back: the same, value for value.
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+    assert!(soft.lines.len() > 2000, "{} lines", soft.lines.len());
+    assert!(soft.lines.iter().any(|l| l == "select: hits 7"));
+    assert!(soft.lines.iter().any(|l| l == "drawn 0"));
+}

@@ -34,6 +34,22 @@ use varying::{copy_slots, VaryingLayout, Varyings};
 
 pub use crate::state::PrimitiveMode;
 
+/// The `k`th edge (or vertex) of an `n`-gon drawn as lines or points in
+/// the order Mesa's draw module makes them (what feedback records):
+/// its unfilled stage draws a triangle's edges as v2-v0, v0-v1, v1-v2 and
+/// its points as v0, v1, v2 (`draw_pipe_unfilled.c`); a clipped polygon
+/// reaches it as a fan `(v[i-1], v[i], v[0])` whose edge flags leave its
+/// edges in order from v0 and its points as v1, v0, v2, … (v1, v2, v0 for a
+/// triangle) (`emit_poly`, `draw_pipe_clip.c`).
+fn unfilled_order(mode: PolygonMode, clipped: bool, n: usize, k: usize) -> usize {
+    match (mode, clipped) {
+        (PolygonMode::Line, false) => (k + 2) % 3,
+        (PolygonMode::Point, true) if n == 3 => (k + 1) % 3,
+        (PolygonMode::Point, true) if k < 2 => 1 - k,
+        _ => k,
+    }
+}
+
 /// The largest viewport side (`GL_MAX_VIEWPORT_DIMS`, as Mesa reports it).
 pub const MAX_VIEWPORT: i32 = 16384;
 
@@ -188,6 +204,12 @@ impl Viewport {
 
 /// Per-draw constants of the geometry pipeline.
 pub struct Geometry<'s> {
+    /// Select or feedback mode: the sink records, nothing is rasterized. It
+    /// hears of line stipple resets ([`PrimSink::reset_stipple`]: feedback's
+    /// `GL_LINE_RESET_TOKEN`) where Mesa's draw module makes them:
+    /// only its unfilled stage passes them on, one a triangle drawn as lines
+    /// (`draw_pipe_unfilled.c`; line primitives' resets stop at its stipple stage).
+    pub recording: bool,
     state: &'s RasterState,
     viewport: Viewport,
     /// Triangles: clipped to the view volume, and bounded by the viewport.
@@ -289,6 +311,7 @@ impl<'s> Geometry<'s> {
         };
         let fill_offset = state.offset_fill.then_some((state.offset_factor, state.offset_units));
         Geometry {
+            recording: false,
             state,
             viewport,
             params,
@@ -354,7 +377,7 @@ impl<'s> Geometry<'s> {
         sink: &mut dyn PrimSink,
         window: &mut batch::Window,
     ) {
-        if self.params.bounds.is_empty() {
+        if self.params.bounds.is_empty() && !self.recording {
             return;
         }
         let mut batch = VertexBatch::new(stage, self, count, fetch, window);
@@ -751,6 +774,10 @@ impl<'s> Geometry<'s> {
                 }
             }
             PolygonMode::Line | PolygonMode::Point => {
+                if self.recording {
+                    // Every triangle reaches draw's unfilled stage with a reset.
+                    sink.reset_stipple();
+                }
                 let dz = offset.map_or(0.0, |(factor, units)| self.offset_of(win, factor, units));
                 for (v, _) in win.iter_mut() {
                     v.z += dz;
@@ -761,18 +788,24 @@ impl<'s> Geometry<'s> {
                 // as draw's `draw_pipe_unfilled.c` emits v2→v0, v0→v1, v1→v2;
                 // a clipped polygon's from the first (`emit_poly` of
                 // `draw_pipe_clip.c` fans it, the stipple reset at the first).
+                // Recorded (select, feedback): draw's unfilled order.
+                let n = shifted.len();
                 let first = if mode == PolygonMode::Line && self.state.line_stipple {
                     sink.reset_stipple();
                     if was_clipped {
                         0
                     } else {
-                        shifted.len() - 1
+                        n - 1
                     }
                 } else {
                     0
                 };
-                for k in 0..shifted.len() {
-                    let i = (first + k) % shifted.len();
+                for k in 0..n {
+                    let i = if self.recording {
+                        unfilled_order(mode, was_clipped, n, k)
+                    } else {
+                        (first + k) % n
+                    };
                     let (v, edge) = &shifted[i];
                     if !edge {
                         continue;

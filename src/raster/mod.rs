@@ -96,8 +96,9 @@ pub trait PrimSink {
     fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams);
     fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams);
     fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams);
-    /// Starts the line stipple's counter again (a polygon drawn as lines);
-    /// only a [`stipple::LineStipple`] keeps one.
+    /// Starts the line stipple's counter again (a polygon drawn as lines;
+    /// in feedback, each triangle of an unfilled polygon): only a
+    /// [`stipple::LineStipple`] and feedback's recorder keep one.
     fn reset_stipple(&mut self) {}
 }
 

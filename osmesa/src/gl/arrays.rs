@@ -574,6 +574,8 @@ exports! {
                 0x8091 => os.index.ptr, // GL_INDEX_ARRAY_POINTER
                 0x845D => os.secondary.ptr, // GL_SECONDARY_COLOR_ARRAY_POINTER
                 0x8456 => os.fog_coord.ptr, // GL_FOG_COORD_ARRAY_POINTER
+                super::select::GL_SELECTION_BUFFER_POINTER => os.mode_buffers.select.cast_const().cast(),
+                super::select::GL_FEEDBACK_BUFFER_POINTER => os.mode_buffers.feedback.cast_const().cast(),
                 _ => return Err(GlError::InvalidEnum),
             };
             if !params.is_null() {

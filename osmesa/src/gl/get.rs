@@ -135,6 +135,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         .or_else(|| super::texunit::value(gl, pname))
         .or_else(|| super::raster_pos::value(gl, pname))
         .or_else(|| super::pixel_rect::value(gl, pname))
+        .or_else(|| super::select::value(os, gl, pname))
     {
         return Ok(v);
     }

@@ -37,11 +37,11 @@ mod immediate;
 mod index;
 mod lighting;
 mod lists;
-mod missing;
 mod pixel_rect;
 mod pixels;
 mod queries;
 mod raster_pos;
+pub(crate) mod select;
 mod state;
 mod stipple;
 mod texture;
@@ -61,7 +61,6 @@ pub use immediate::*;
 pub use index::*;
 pub use lighting::*;
 pub use lists::*;
-pub use missing::*;
 pub use pixel_rect::*;
 pub use pixels::*;
 pub use queries::*;
@@ -89,11 +88,11 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         index::table,
         lighting::table,
         lists::table,
-        missing::table,
         pixel_rect::table,
         pixels::table,
         queries::table,
         raster_pos::table,
+        select::table,
         state::table,
         stipple::table,
         texture::table,
@@ -196,19 +195,6 @@ fn now(f: impl FnOnce(&mut GlState, &mut Context) -> GlResult) {
             gl.record_error(e);
         }
     })
-}
-
-/// A function softgl does not implement yet: `GL_INVALID_OPERATION` when it
-/// runs. Like the command it stands for, it is compiled into a display list
-/// (nothing is reported then) and runs, failing, when the list is called.
-fn missing() {
-    rec(|_, _| Err(GlError::InvalidOperation))
-}
-
-/// As [`missing`], for the commands GL runs at once even while a list is
-/// compiled (queries, names, client state: GL 1.5 §5.4).
-fn missing_now() {
-    now(|_, _| Err(GlError::InvalidOperation))
 }
 
 /// `GL_INVALID_OPERATION` between `glBegin` and `glEnd`, where GL allows only
