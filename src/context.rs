@@ -394,6 +394,8 @@ pub struct Context {
     /// background flush (their buffers are `fb`'s other samples; `fb`
     /// itself is sample 0: `multisample.rs`).
     lanes: Vec<Lane>,
+    /// `glRenderMode`, selection and feedback (`select.rs`).
+    render_mode: crate::select::RenderModeState,
 }
 
 /// One more sample of a multisampled framebuffer: what it records into and
@@ -402,8 +404,6 @@ pub struct Context {
 struct Lane {
     scene: Scene,
     background: Background,
-    /// `glRenderMode`, selection and feedback (`select.rs`).
-    render_mode: crate::select::RenderModeState,
 }
 
 /// A draw's plan (`plan`) and uniforms, and what they were made of: the

@@ -65,6 +65,7 @@ pub use pixel_rect::*;
 pub use pixels::*;
 pub use queries::*;
 pub use raster_pos::*;
+pub use select::*;
 pub use state::*;
 pub use stipple::*;
 pub use texture::*;
