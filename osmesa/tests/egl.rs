@@ -287,7 +287,7 @@ fn every_bad_argument_has_its_egl_error() {
         // Contexts.
         fails(context(d, bogus, &[]), null_mut(), EGL_BAD_CONFIG);
         fails(
-            context(d, c, &[(EGL_CONTEXT_MAJOR_VERSION, 1), (EGL_CONTEXT_MINOR_VERSION, 2)]),
+            context(d, c, &[(EGL_CONTEXT_MAJOR_VERSION, 2), (EGL_CONTEXT_MINOR_VERSION, 0)]),
             null_mut(),
             EGL_BAD_MATCH,
         );
