@@ -761,7 +761,10 @@ fn default_framebuffer_attachment_queries_match_mesa() {
     let Some(exe) = build("fb0") else { return };
     let (mesa, soft) = (run(&exe, false), run(&exe, true));
     assert_eq!(soft.lines[1..], mesa.lines[1..]);
-    assert!(soft.lines.contains(&"fb 0x0402 0x8212: 8 0x0000".to_string()), "BACK_LEFT RED_SIZE");
+    assert!(
+        soft.lines.contains(&"fb 0x0402 0x8212: 8 0x0000".to_string()),
+        "BACK_LEFT RED_SIZE"
+    );
     assert!(soft.lines.len() > 700, "{} lines", soft.lines.len());
 }
 

@@ -358,11 +358,15 @@ fn default_attachment_param(gl: &mut Context, attachment: GLenum, pname: GLenum)
     // Depth with stencil is one Z24_S8 buffer on llvmpipe: both attachments
     // report its depth and stencil bits, and UNSIGNED_NORMALIZED.
     let packed = depth > 0 && stencil > 0;
-    let ds = if packed { [0, 0, 0, 0, depth, stencil] } else { [0, 0, 0, 0, depth, 0] };
+    let ds = if packed {
+        [0, 0, 0, 0, depth, stencil]
+    } else {
+        [0, 0, 0, 0, depth, 0]
+    };
     // The bits of R, G, B, A, depth and stencil; `None`: no such buffer.
     let bits: Option<[u32; 6]> = match attachment {
         GL_FRONT | GL_FRONT_LEFT | GL_BACK_LEFT => {
-            let c = |i| u32::from(color.channel_bits(i));
+            let c = |i| color.channel_bits(i);
             Some([c(0), c(1), c(2), c(3), 0, 0])
         }
         GL_FRONT_RIGHT | GL_BACK_RIGHT => None,
