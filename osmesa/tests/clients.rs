@@ -752,6 +752,22 @@ fn pyopengl_draws_and_reads_back() {
     assert!(stdout.lines().last() == Some("ok"), "{stdout}");
 }
 
+/// `glGetFramebufferAttachmentParameteriv` on the default framebuffer
+/// (piglit's probes ask it for the read buffer's sizes once
+/// ARB_framebuffer_object is listed): every attachment × pname, value and
+/// error, for three visuals: Mesa's, line for line.
+#[test]
+fn default_framebuffer_attachment_queries_match_mesa() {
+    let Some(exe) = build("fb0") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+    assert!(
+        soft.lines.contains(&"fb 0x0402 0x8212: 8 0x0000".to_string()),
+        "BACK_LEFT RED_SIZE"
+    );
+    assert!(soft.lines.len() > 700, "{} lines", soft.lines.len());
+}
+
 #[test]
 fn framebuffer_objects_match_mesa() {
     let Some(exe) = build("fbo") else { return };

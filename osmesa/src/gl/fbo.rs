@@ -257,6 +257,13 @@ pub(super) fn buffers(gl: &Context) -> (GLenum, GLenum) {
 /// `glGetFramebufferAttachmentParameteriv`'s value.
 fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname: GLenum) -> GlResult<i32> {
     let t = fb_target(target)?;
+    let bound = match t {
+        FramebufferTarget::Read => gl.fbo_state().read_binding(),
+        _ => gl.fbo_state().draw_binding(),
+    };
+    if bound == 0 {
+        return default_attachment_param(gl, attachment, pname);
+    }
     let p = point(attachment)?;
     let a = gl.framebuffer_attachment(t, p)?;
     let bits = gl.attachment_bits(a);
@@ -320,6 +327,69 @@ fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname:
                 bits[(pname - 0x8212) as usize] as i32
             }
         }
+        _ => return Err(GlError::InvalidEnum),
+    })
+}
+
+/// `glGetFramebufferAttachmentParameteriv` of the default framebuffer (GL
+/// 3.0 §6.1.13, Mesa's `get_framebuffer_attachment_parameter` and
+/// `get_fb0_attachment`): attachments `GL_FRONT`, `GL_FRONT_LEFT`,
+/// `GL_BACK_LEFT` (the one colour buffer), `GL_FRONT_RIGHT`, `GL_BACK_RIGHT`
+/// (none: no stereo), `GL_DEPTH`, `GL_STENCIL`; anything else (`GL_BACK`
+/// too: Mesa takes it only with ARB_ES3_1_compatibility), and `OBJECT_NAME`,
+/// `GL_INVALID_ENUM`. An attachment the visual lacks has `OBJECT_TYPE`
+/// `GL_NONE`, and every other known query is `GL_INVALID_OPERATION`.
+/// piglit's probes ask it for the read buffer's sizes whenever
+/// ARB_framebuffer_object is listed.
+fn default_attachment_param(gl: &mut Context, attachment: GLenum, pname: GLenum) -> GlResult<i32> {
+    const GL_FRONT: GLenum = 0x0404;
+    const GL_BACK_RIGHT: GLenum = 0x0403;
+    const GL_DEPTH: GLenum = 0x1801;
+    const GL_STENCIL: GLenum = 0x1802;
+    const GL_FRAMEBUFFER_DEFAULT: GLenum = 0x8218;
+    outside(gl)?;
+    if pname == 0x8CD1 {
+        return Err(GlError::InvalidEnum);
+    }
+    let fb = gl.framebuffer_pending();
+    let color = fb.color_format();
+    let depth = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
+    let stencil = if fb.has_stencil() { 8 } else { 0 };
+    // Depth with stencil is one Z24_S8 buffer on llvmpipe: both attachments
+    // report its depth and stencil bits, and UNSIGNED_NORMALIZED.
+    let packed = depth > 0 && stencil > 0;
+    let ds = if packed {
+        [0, 0, 0, 0, depth, stencil]
+    } else {
+        [0, 0, 0, 0, depth, 0]
+    };
+    // The bits of R, G, B, A, depth and stencil; `None`: no such buffer.
+    let bits: Option<[u32; 6]> = match attachment {
+        GL_FRONT | GL_FRONT_LEFT | GL_BACK_LEFT => {
+            let c = |i| color.channel_bits(i);
+            Some([c(0), c(1), c(2), c(3), 0, 0])
+        }
+        GL_FRONT_RIGHT | GL_BACK_RIGHT => None,
+        GL_DEPTH => (depth > 0).then_some(ds),
+        GL_STENCIL if packed => Some(ds),
+        GL_STENCIL => (stencil > 0).then_some([0, 0, 0, 0, 0, stencil]),
+        _ => return Err(GlError::InvalidEnum),
+    };
+    let Some(bits) = bits else {
+        return match pname {
+            0x8CD0 => Ok(GL_NONE as i32),
+            // A missing depth or stencil buffer is still linear (Mesa).
+            0x8210 if attachment == GL_DEPTH || attachment == GL_STENCIL => Ok(GL_LINEAR_ENUM as i32),
+            0x8CD2..=0x8CD4 | 0x8210..=0x8217 => Err(GlError::InvalidOperation),
+            _ => Err(GlError::InvalidEnum),
+        };
+    };
+    Ok(match pname {
+        0x8CD0 => GL_FRAMEBUFFER_DEFAULT as i32,
+        0x8210 => GL_LINEAR_ENUM as i32,
+        0x8211 if attachment == GL_STENCIL && !packed => GL_INDEX as i32,
+        0x8211 => GL_UNSIGNED_NORMALIZED as i32,
+        0x8212..=0x8217 => bits[(pname - 0x8212) as usize] as i32,
         _ => return Err(GlError::InvalidEnum),
     })
 }
