@@ -20,8 +20,8 @@ use super::texture::write;
 use super::{checked, now, outside};
 use crate::consts::*;
 use softgl::fbo::{
-    Attachment, AttachmentPoint, BlitFilter, BlitMask, FramebufferTarget, RenderbufferFormat, MAX_COLOR_ATTACHMENTS,
-    MAX_RENDERBUFFER_SIZE, MAX_SAMPLES,
+    Attachment, AttachmentPoint, BlitFilter, BlitMask, FramebufferTarget, RenderbufferFormat, WindowBuffer,
+    MAX_COLOR_ATTACHMENTS, MAX_RENDERBUFFER_SIZE, MAX_SAMPLES,
 };
 use softgl::texture::TexImageTarget;
 use softgl::{ColorFormat, Context, GlError, GlResult};
@@ -37,6 +37,9 @@ pub const GL_DEPTH_STENCIL_ATTACHMENT: GLenum = 0x821A;
 const GL_TEXTURE: GLenum = 0x1702;
 const GL_UNSIGNED_NORMALIZED: GLenum = 0x8C17;
 const GL_INDEX: GLenum = 0x8222;
+const GL_FRAMEBUFFER_DEFAULT: GLenum = 0x8218;
+const GL_DEPTH: GLenum = 0x1801;
+const GL_STENCIL: GLenum = 0x1802;
 const GL_SRGB: GLenum = 0x8C40;
 const GL_LINEAR_ENUM: GLenum = 0x2601;
 const GL_NEAREST_ENUM: GLenum = 0x2600;
@@ -257,6 +260,13 @@ pub(super) fn buffers(gl: &Context) -> (GLenum, GLenum) {
 /// `glGetFramebufferAttachmentParameteriv`'s value.
 fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname: GLenum) -> GlResult<i32> {
     let t = fb_target(target)?;
+    let bound = match t {
+        FramebufferTarget::Read => gl.fbo_state().read_binding(),
+        _ => gl.fbo_state().draw_binding(),
+    };
+    if bound == 0 {
+        return window_attachment_param(gl, attachment, pname);
+    }
     let p = point(attachment)?;
     let a = gl.framebuffer_attachment(t, p)?;
     let bits = gl.attachment_bits(a);
@@ -320,6 +330,53 @@ fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname:
                 bits[(pname - 0x8212) as usize] as i32
             }
         }
+        _ => return Err(GlError::InvalidEnum),
+    })
+}
+
+/// `glGetFramebufferAttachmentParameteriv` on the window framebuffer (GL 3.0
+/// §6.1.13, as Mesa's `main/fbobject.c` `get_framebuffer_attachment_parameter`
+/// and `get_fb0_attachment` do for a single-buffered OSMesa window): `OBJECT_NAME`
+/// is `GL_INVALID_ENUM`; `GL_FRONT`, `GL_FRONT_LEFT`, `GL_BACK`, `GL_BACK_LEFT`
+/// (back is front when single-buffered) name the colour buffer, `GL_FRONT_RIGHT`
+/// and `GL_BACK_RIGHT` nothing (type `GL_NONE`), `GL_DEPTH`/`GL_STENCIL` the
+/// depth/stencil buffer; any other attachment is `GL_INVALID_ENUM`.
+fn window_attachment_param(gl: &mut Context, attachment: GLenum, pname: GLenum) -> GlResult<i32> {
+    if pname == 0x8CD1 {
+        return Err(GlError::InvalidEnum);
+    }
+    let buffer = match attachment {
+        GL_FRONT | GL_FRONT_LEFT | GL_BACK | GL_BACK_LEFT => Some(WindowBuffer::Color),
+        GL_FRONT_RIGHT | GL_BACK_RIGHT => None,
+        GL_DEPTH => Some(WindowBuffer::Depth),
+        GL_STENCIL => Some(WindowBuffer::Stencil),
+        _ => return Err(GlError::InvalidEnum),
+    };
+    let bits = buffer.and_then(|b| gl.window_buffer_bits(b));
+    let depth_or_stencil = matches!(attachment, GL_DEPTH | GL_STENCIL);
+    let Some(bits) = bits else {
+        return match pname {
+            0x8CD0 => Ok(GL_NONE as i32),
+            // COLOR_ENCODING of an absent depth or stencil buffer: LINEAR (Mesa).
+            0x8210 if depth_or_stencil => Ok(GL_LINEAR_ENUM as i32),
+            0x8CD2..=0x8CD4 | 0x8210..=0x8217 => Err(GlError::InvalidOperation),
+            _ => Err(GlError::InvalidEnum),
+        };
+    };
+    Ok(match pname {
+        0x8CD0 => GL_FRAMEBUFFER_DEFAULT as i32,
+        0x8210 => GL_LINEAR_ENUM as i32,
+        // COMPONENT_TYPE: stencil alone is S8 (an index); packed with depth
+        // it is Z24_UNORM_S8_UINT's, unsigned normalized (Mesa's format table).
+        0x8211 if buffer == Some(WindowBuffer::Stencil) && bits[4] == 0 => GL_INDEX as i32,
+        0x8211
+            if buffer == Some(WindowBuffer::Color)
+                && gl.framebuffer_pending().color_format() == ColorFormat::Rgba32F =>
+        {
+            GL_FLOAT as i32
+        }
+        0x8211 => GL_UNSIGNED_NORMALIZED as i32,
+        0x8212..=0x8217 => bits[(pname - 0x8212) as usize] as i32,
         _ => return Err(GlError::InvalidEnum),
     })
 }
