@@ -239,6 +239,15 @@ pub enum AttachmentPoint {
     DepthStencil,
 }
 
+/// One of the window framebuffer's buffers, as `glGetFramebufferAttachmentParameteriv`
+/// names them on object 0 (`GL_FRONT_LEFT`…, `GL_DEPTH`, `GL_STENCIL`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WindowBuffer {
+    Color,
+    Depth,
+    Stencil,
+}
+
 /// The draw and read bindings (`glBindFramebuffer`'s targets).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FramebufferTarget {
@@ -871,6 +880,36 @@ impl Context {
             },
         };
         self.record(r)
+    }
+
+    /// The bits of red, green, blue, alpha, depth and stencil of one of the
+    /// window framebuffer's buffers (object 0's "attachments", GL 3.0
+    /// §6.1.13), or `None` when the window has no such buffer. The window is
+    /// single-buffered like OSMesa's; depth and stencil together are one
+    /// packed depth-stencil buffer (llvmpipe's `Z24_UNORM_S8_UINT`), so each
+    /// reports both sizes (docs/llvmpipe-facts.md, "window attachments").
+    pub fn window_buffer_bits(&self, buffer: WindowBuffer) -> Option<[u32; 6]> {
+        let fb = self.framebuffer_pending();
+        let depth = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
+        let stencil = if fb.has_stencil() { 8 } else { 0 };
+        let c = fb.color_format();
+        match buffer {
+            WindowBuffer::Color => Some([
+                c.channel_bits(0),
+                c.channel_bits(1),
+                c.channel_bits(2),
+                c.channel_bits(3),
+                0,
+                0,
+            ]),
+            WindowBuffer::Depth if depth == 0 => None,
+            WindowBuffer::Stencil if stencil == 0 => None,
+            WindowBuffer::Depth | WindowBuffer::Stencil if depth > 0 && stencil > 0 => {
+                Some([0, 0, 0, 0, depth, stencil])
+            }
+            WindowBuffer::Depth => Some([0, 0, 0, 0, depth, 0]),
+            WindowBuffer::Stencil => Some([0, 0, 0, 0, 0, stencil]),
+        }
     }
 
     /// The bits of red, green, blue, alpha, depth and stencil of `point`'s image.

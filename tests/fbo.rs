@@ -569,3 +569,30 @@ fn a_multisampled_fbo_renders_multisampled_and_resolves_by_blit() {
     assert!(z.iter().any(|v| *v != Some(0xff_ffff)), "depth drawn");
     assert_eq!(gl.get_error(), None);
 }
+
+#[test]
+fn the_window_buffers_bits_whatever_is_bound() {
+    use softgl::fbo::WindowBuffer as W;
+    let mut gl = context(8, 8);
+    let both = |gl: &Context| [W::Color, W::Depth, W::Stencil].map(|b| gl.window_buffer_bits(b));
+    // Depth and stencil together are one packed buffer (llvmpipe's Z24_UNORM_S8_UINT):
+    // each reports both sizes.
+    let expected = [
+        Some([8, 8, 8, 8, 0, 0]),
+        Some([0, 0, 0, 0, 24, 8]),
+        Some([0, 0, 0, 0, 24, 8]),
+    ];
+    assert_eq!(both(&gl), expected);
+    // An object bound: still the window's.
+    rb_fbo(&mut gl, 4, 4);
+    assert_eq!(both(&gl), expected);
+    let desc = FramebufferDesc {
+        width: 8,
+        height: 8,
+        color: softgl::ColorFormat::Rgb565,
+        depth_bits: 16,
+        stencil_bits: 0,
+    };
+    let gl = Context::new(desc).unwrap();
+    assert_eq!(both(&gl), [Some([5, 6, 5, 0, 0, 0]), Some([0, 0, 0, 0, 16, 0]), None]);
+}

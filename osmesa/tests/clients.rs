@@ -769,6 +769,20 @@ fn default_framebuffer_attachment_queries_match_mesa() {
 }
 
 #[test]
+fn window_framebuffer_attachment_queries_match_mesa() {
+    let Some(exe) = build("window_fb") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // glGetFramebufferAttachmentParameteriv on object 0 (piglit's probes ask
+    // it once ARB_framebuffer_object is listed): every value and error,
+    // Mesa's, line for line, on nine window configurations.
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+    assert_eq!(soft.lines.len(), 9 * (1 + 3 * 14 * 14 + 1) + 2);
+    assert!(soft
+        .lines
+        .contains(&"0x8d40 BACK_LEFT RED_SIZE = 0x8 error 0x0".to_string()));
+}
+
+#[test]
 fn framebuffer_objects_match_mesa() {
     let Some(exe) = build("fbo") else { return };
     let (mesa, soft) = (run(&exe, false), run(&exe, true));

@@ -20,8 +20,8 @@ use super::texture::write;
 use super::{checked, now, outside};
 use crate::consts::*;
 use softgl::fbo::{
-    Attachment, AttachmentPoint, BlitFilter, BlitMask, FramebufferTarget, RenderbufferFormat, MAX_COLOR_ATTACHMENTS,
-    MAX_RENDERBUFFER_SIZE, MAX_SAMPLES,
+    Attachment, AttachmentPoint, BlitFilter, BlitMask, FramebufferTarget, RenderbufferFormat, WindowBuffer,
+    MAX_COLOR_ATTACHMENTS, MAX_RENDERBUFFER_SIZE, MAX_SAMPLES,
 };
 use softgl::texture::TexImageTarget;
 use softgl::{ColorFormat, Context, GlError, GlResult};
@@ -37,6 +37,9 @@ pub const GL_DEPTH_STENCIL_ATTACHMENT: GLenum = 0x821A;
 const GL_TEXTURE: GLenum = 0x1702;
 const GL_UNSIGNED_NORMALIZED: GLenum = 0x8C17;
 const GL_INDEX: GLenum = 0x8222;
+const GL_FRAMEBUFFER_DEFAULT: GLenum = 0x8218;
+const GL_DEPTH: GLenum = 0x1801;
+const GL_STENCIL: GLenum = 0x1802;
 const GL_SRGB: GLenum = 0x8C40;
 const GL_LINEAR_ENUM: GLenum = 0x2601;
 const GL_NEAREST_ENUM: GLenum = 0x2600;
@@ -262,7 +265,7 @@ fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname:
         _ => gl.fbo_state().draw_binding(),
     };
     if bound == 0 {
-        return default_attachment_param(gl, attachment, pname);
+        return window_attachment_param(gl, attachment, pname);
     }
     let p = point(attachment)?;
     let a = gl.framebuffer_attachment(t, p)?;
@@ -331,55 +334,31 @@ fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname:
     })
 }
 
-/// `glGetFramebufferAttachmentParameteriv` of the default framebuffer (GL
-/// 3.0 §6.1.13, Mesa's `get_framebuffer_attachment_parameter` and
-/// `get_fb0_attachment`): attachments `GL_FRONT`, `GL_FRONT_LEFT`,
-/// `GL_BACK_LEFT` (the one colour buffer), `GL_FRONT_RIGHT`, `GL_BACK_RIGHT`
-/// (none: no stereo), `GL_DEPTH`, `GL_STENCIL`; anything else (`GL_BACK`
-/// too: Mesa takes it only with ARB_ES3_1_compatibility), and `OBJECT_NAME`,
-/// `GL_INVALID_ENUM`. An attachment the visual lacks has `OBJECT_TYPE`
-/// `GL_NONE`, and every other known query is `GL_INVALID_OPERATION`.
-/// piglit's probes ask it for the read buffer's sizes whenever
-/// ARB_framebuffer_object is listed.
-fn default_attachment_param(gl: &mut Context, attachment: GLenum, pname: GLenum) -> GlResult<i32> {
-    const GL_FRONT: GLenum = 0x0404;
-    const GL_BACK_RIGHT: GLenum = 0x0403;
-    const GL_DEPTH: GLenum = 0x1801;
-    const GL_STENCIL: GLenum = 0x1802;
-    const GL_FRAMEBUFFER_DEFAULT: GLenum = 0x8218;
-    outside(gl)?;
+/// `glGetFramebufferAttachmentParameteriv` on the window framebuffer (GL 3.0
+/// §6.1.13, as Mesa's `main/fbobject.c` `get_framebuffer_attachment_parameter`
+/// and `get_fb0_attachment` do for a single-buffered OSMesa window): `OBJECT_NAME`
+/// is `GL_INVALID_ENUM`; `GL_FRONT`, `GL_FRONT_LEFT`, `GL_BACK`, `GL_BACK_LEFT`
+/// (back is front when single-buffered) name the colour buffer, `GL_FRONT_RIGHT`
+/// and `GL_BACK_RIGHT` nothing (type `GL_NONE`), `GL_DEPTH`/`GL_STENCIL` the
+/// depth/stencil buffer; any other attachment is `GL_INVALID_ENUM`.
+fn window_attachment_param(gl: &mut Context, attachment: GLenum, pname: GLenum) -> GlResult<i32> {
     if pname == 0x8CD1 {
         return Err(GlError::InvalidEnum);
     }
-    let fb = gl.framebuffer_pending();
-    let color = fb.color_format();
-    let depth = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
-    let stencil = if fb.has_stencil() { 8 } else { 0 };
-    // Depth with stencil is one Z24_S8 buffer on llvmpipe: both attachments
-    // report its depth and stencil bits, and UNSIGNED_NORMALIZED.
-    let packed = depth > 0 && stencil > 0;
-    let ds = if packed {
-        [0, 0, 0, 0, depth, stencil]
-    } else {
-        [0, 0, 0, 0, depth, 0]
-    };
-    // The bits of R, G, B, A, depth and stencil; `None`: no such buffer.
-    let bits: Option<[u32; 6]> = match attachment {
-        GL_FRONT | GL_FRONT_LEFT | GL_BACK_LEFT => {
-            let c = |i| color.channel_bits(i);
-            Some([c(0), c(1), c(2), c(3), 0, 0])
-        }
+    let buffer = match attachment {
+        GL_FRONT | GL_FRONT_LEFT | GL_BACK | GL_BACK_LEFT => Some(WindowBuffer::Color),
         GL_FRONT_RIGHT | GL_BACK_RIGHT => None,
-        GL_DEPTH => (depth > 0).then_some(ds),
-        GL_STENCIL if packed => Some(ds),
-        GL_STENCIL => (stencil > 0).then_some([0, 0, 0, 0, 0, stencil]),
+        GL_DEPTH => Some(WindowBuffer::Depth),
+        GL_STENCIL => Some(WindowBuffer::Stencil),
         _ => return Err(GlError::InvalidEnum),
     };
+    let bits = buffer.and_then(|b| gl.window_buffer_bits(b));
+    let depth_or_stencil = matches!(attachment, GL_DEPTH | GL_STENCIL);
     let Some(bits) = bits else {
         return match pname {
             0x8CD0 => Ok(GL_NONE as i32),
-            // A missing depth or stencil buffer is still linear (Mesa).
-            0x8210 if attachment == GL_DEPTH || attachment == GL_STENCIL => Ok(GL_LINEAR_ENUM as i32),
+            // COLOR_ENCODING of an absent depth or stencil buffer: LINEAR (Mesa).
+            0x8210 if depth_or_stencil => Ok(GL_LINEAR_ENUM as i32),
             0x8CD2..=0x8CD4 | 0x8210..=0x8217 => Err(GlError::InvalidOperation),
             _ => Err(GlError::InvalidEnum),
         };
@@ -387,7 +366,15 @@ fn default_attachment_param(gl: &mut Context, attachment: GLenum, pname: GLenum)
     Ok(match pname {
         0x8CD0 => GL_FRAMEBUFFER_DEFAULT as i32,
         0x8210 => GL_LINEAR_ENUM as i32,
-        0x8211 if attachment == GL_STENCIL && !packed => GL_INDEX as i32,
+        // COMPONENT_TYPE: stencil alone is S8 (an index); packed with depth
+        // it is Z24_UNORM_S8_UINT's, unsigned normalized (Mesa's format table).
+        0x8211 if buffer == Some(WindowBuffer::Stencil) && bits[4] == 0 => GL_INDEX as i32,
+        0x8211
+            if buffer == Some(WindowBuffer::Color)
+                && gl.framebuffer_pending().color_format() == ColorFormat::Rgba32F =>
+        {
+            GL_FLOAT as i32
+        }
         0x8211 => GL_UNSIGNED_NORMALIZED as i32,
         0x8212..=0x8217 => bits[(pname - 0x8212) as usize] as i32,
         _ => return Err(GlError::InvalidEnum),
