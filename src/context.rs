@@ -1244,7 +1244,7 @@ impl Context {
         self.format.end(b.verts.len());
         let current = self.current.tex_coords;
         let tex = |i: usize, u: usize| b.tex.get(i).map_or(current[u], |t| t[u]);
-        let r = self.draw_begun(b.mode, &b.verts, (&b.materials, b.shininess_varies), &tex);
+        let r = self.draw_begun(b.mode, &b.verts, (&b.materials, b.shininess_varies), &tex, false);
         let Begun {
             mut verts,
             mut materials,
@@ -1259,20 +1259,26 @@ impl Context {
     }
 
     /// The draw at `end` of `verts` (texture coordinates `tex(i, unit)`),
-    /// with the per-vertex materials `glMaterial` gave between.
+    /// with the per-vertex materials `glMaterial` gave between; `indexed`
+    /// for a display list's run, which llvmpipe draws as indexed vertices.
     fn draw_begun(
         &mut self,
         mode: PrimitiveMode,
         verts: &[InVertex],
         (materials, shininess_varies): (&[[Material; 2]], bool),
         tex: &dyn Fn(usize, usize) -> Vec4,
+        indexed: bool,
     ) -> GlResult {
         let varying = Varying {
             color: self.format.has(immediate::COLOR),
             secondary: self.format.has(immediate::SECONDARY),
         };
-        let source = DrawSource::Arrays {
-            per_vertex_color: varying.color,
+        let source = if indexed {
+            DrawSource::Elements
+        } else {
+            DrawSource::Arrays {
+                per_vertex_color: varying.color,
+            }
         };
         let vertex_materials = self.vertex_materials(materials, shininess_varies);
         self.draw_with(
@@ -1310,7 +1316,11 @@ impl Context {
                 run.tex_at(i).unwrap_or(before0)
             }
         };
-        let r = self.draw_begun(run.mode(), &verts, (&[], false), &tex);
+        // Mesa compiles a list's glBegin/glEnd into indexed vertices
+        // (`vbo/vbo_save_api.c`, `compile_vertex_list`) and replays them on
+        // the glDrawElements path: quads split v1-v3 (docs/llvmpipe-facts.md
+        // §12, §26).
+        let r = self.draw_begun(run.mode(), &verts, (&[], false), &tex, true);
         verts.clear();
         self.spare.0 = verts;
         r
