@@ -18,13 +18,12 @@
 //! - no GL error left by any frame or by `mjr_makeContext` (MuJoCo turns those
 //!   into warnings; its other warnings are printed).
 //!
-//! softgl cannot run MuJoCo yet, so its comparison is `#[ignore]`d and prints,
-//! per frame, how far it gets (`cargo test -p softgl-osmesa --test mujoco --
-//! --ignored --nocapture`; `SOFTGL_MUJOCO_LIB=<dir>` runs another build of the
-//! library, e.g. `target/release/osmesa`; a missed RGB frame leaves
-//! `<frame>-{llvmpipe,softgl,diff}.ppm` beside the arrays in
+//! softgl's comparison prints, per frame, how far it is (`cargo test -p
+//! softgl-osmesa --test mujoco -- --nocapture`; `SOFTGL_MUJOCO_LIB=<dir>` runs
+//! another build of the library, e.g. `target/release/osmesa`; a missed RGB
+//! frame leaves `<frame>-{llvmpipe,softgl,diff}.ppm` beside the arrays in
 //! `target/tmp/osmesa-clients/mujoco-softgl-a/`). The llvmpipe/softpipe
-//! comparison runs now and checks the harness itself.
+//! comparison checks the harness itself.
 //!
 //! MuJoCo picks its depth format and projection from the extensions listed
 //! (`GL_ARB_depth_buffer_float`: DEPTH32F_STENCIL8 instead of DEPTH24_STENCIL8;
@@ -637,8 +636,6 @@ fn harness_llvmpipe_against_softpipe() {
 /// softgl against llvmpipe, with softpipe as the bound: prints per frame how far
 /// softgl is, then fails on the first target missed.
 #[test]
-#[ignore = "issue 14: softgl has no GL 1.5, buffer objects, FBOs, multisampling or glBitmap yet; \
-            MuJoCo stops at `OpenGL version 1.5 or higher required`"]
 fn softgl_against_llvmpipe() {
     if !have("MuJoCo scenes on softgl", &[Need::OsMesa, Need::Mujoco]) {
         return;
