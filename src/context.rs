@@ -1319,7 +1319,7 @@ impl Context {
         // Mesa compiles a list's glBegin/glEnd into indexed vertices
         // (`vbo/vbo_save_api.c`, `compile_vertex_list`) and replays them on
         // the glDrawElements path: quads split v1-v3 (docs/llvmpipe-facts.md
-        // §12, §26).
+        // §12, §37).
         let r = self.draw_begun(run.mode(), &verts, (&[], false), &tex, true);
         verts.clear();
         self.spare.0 = verts;

@@ -1,4 +1,4 @@
-//! 4× multisampling as llvmpipe does it (`docs/llvmpipe-facts.md` §23): a
+//! 4× multisampling as llvmpipe does it (`docs/llvmpipe-facts.md` §29): a
 //! multisampled framebuffer is one single-sampled framebuffer per sample
 //! (sample 0 the framebuffer itself, samples 1.. in `Framebuffer::samples`).
 //! A draw into it is recorded once per sample, into a scene of its own

@@ -2,7 +2,7 @@
 //! recorded `msaa.txt`: each scene drawn into a 4-sample framebuffer
 //! object and resolved with `glBlitFramebuffer`). Each scene makes the C
 //! program's calls through softgl's Rust API on a 4-sample framebuffer and
-//! reads it back resolved, on both back ends (`docs/llvmpipe-facts.md` §23).
+//! reads it back resolved, on both back ends (`docs/llvmpipe-facts.md` §29).
 
 mod common;
 

@@ -510,7 +510,7 @@ fn quads_from_display_lists_split_as_mesa() {
     let Some(exe) = build("list_quads") else { return };
     let (mesa, soft) = (run(&exe, false), run(&exe, true));
     // Quads drawn at once split v0-v2, from a list v1-v3 (Mesa replays a
-    // list's glBegin/glEnd as indexed vertices, docs/llvmpipe-facts.md §26):
+    // list's glBegin/glEnd as indexed vertices, docs/llvmpipe-facts.md §37):
     // smooth per-vertex colours and lit quads, byte for byte (before the
     // split followed this, 1696 pixels differed, the lit ones by up to 39).
     let image = soft.file("list_quads.color");

@@ -4,7 +4,7 @@
 //! and called, and with `GL_COMPILE_AND_EXECUTE`), and wants the same bytes
 //! in the colour buffer, the same current attributes afterwards and the same
 //! errors. (Smooth `GL_QUADS` are the exception: a list splits them v1-v3,
-//! as llvmpipe's indexed replay does, `docs/llvmpipe-facts.md` §26.)
+//! as llvmpipe's indexed replay does, `docs/llvmpipe-facts.md` §37.)
 
 mod current;
 
@@ -280,7 +280,7 @@ fn textured() {
 }
 
 /// Two polygons rather than `GL_QUADS`, whose split differs between a list and
-/// the calls as it does on llvmpipe (`docs/llvmpipe-facts.md` §26).
+/// the calls as it does on llvmpipe (`docs/llvmpipe-facts.md` §37).
 fn textured_quads() {
     glBegin(GL_POLYGON);
     glVertex2f(1.0, 1.0); // the current coordinates

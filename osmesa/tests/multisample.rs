@@ -2,7 +2,7 @@
 //! `GL_MULTISAMPLE` and the `GL_SAMPLE_*` enables, `glSampleCoverage` (also in
 //! display lists and the attribute stack), and the counts MuJoCo reads
 //! (`GL_SAMPLES`, `GL_SAMPLE_BUFFERS`, `GL_MAX_SAMPLES`) with llvmpipe's
-//! answers for an OSMesa buffer (docs/llvmpipe-facts.md §23).
+//! answers for an OSMesa buffer (docs/llvmpipe-facts.md §29).
 
 mod current;
 

@@ -1,5 +1,5 @@
 //! Line and polygon stipple, as llvmpipe draws them (`docs/llvmpipe-facts.md`
-//! §23). Each is a wrapper put around a sink only while its enable is on,
+//! §30). Each is a wrapper put around a sink only while its enable is on,
 //! so that a stage that is off costs nothing:
 //!
 //! - [`LineStipple`] wraps the draw's [`PrimSink`] and cuts each line into the

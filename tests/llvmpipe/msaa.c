@@ -4,7 +4,7 @@
  * single-sampled one with glBlitFramebuffer and read back. One scene per
  * line of msaa.txt, "name hex" (the RGBA bytes, bottom row first);
  * tests/multisample.rs makes the same calls through softgl's Rust API on a
- * 4-sample framebuffer (docs/llvmpipe-facts.md §23):
+ * 4-sample framebuffer (docs/llvmpipe-facts.md §29):
  *
  *   gcc -O1 -o /tmp/msaa tests/llvmpipe/msaa.c -lOSMesa
  *   (cd tests/llvmpipe && MESA_SHADER_CACHE_DISABLE=true /tmp/msaa > msaa.txt)

@@ -73,7 +73,7 @@ fn zeros(n: usize, out: &mut Vec<f32>) {
 
 /// Element `i` of `s` as floats, integer colours normalised when
 /// `normalize`. An element that does not lie wholly inside its buffer
-/// object reads as zeros, as llvmpipe reads it (docs/llvmpipe-facts.md §23).
+/// object reads as zeros, as llvmpipe reads it (docs/llvmpipe-facts.md §24).
 ///
 /// # Safety
 /// `s.a.ptr` holds element `i` when `s.limit` is `usize::MAX` (GL's
@@ -336,7 +336,7 @@ fn draw(
 }
 
 /// The `count` indices of `size` bytes at byte `offset` of element buffer
-/// `name`. As llvmpipe (docs/llvmpipe-facts.md §23): the indices start at
+/// `name`. As llvmpipe (docs/llvmpipe-facts.md §24): the indices start at
 /// index `offset / size`, and an index past the buffer's end reads as 0.
 /// `GL_INVALID_OPERATION` if the buffer is mapped.
 fn buffer_indices(buffers: &BufferStore, name: u32, offset: usize, count: usize, size: usize) -> GlResult<Vec<usize>> {

@@ -2,7 +2,7 @@
  * indexed vertices (vbo/vbo_save_api.c, compile_vertex_list), so llvmpipe
  * draws them on its glDrawElements path and splits each quad (v0,v1,v3),
  * (v1,v2,v3), where the same quads drawn at once split (v0,v1,v2),(v0,v2,v3)
- * (docs/llvmpipe-facts.md §12, §26). Smooth quads whose colour differs along
+ * (docs/llvmpipe-facts.md §12, §37). Smooth quads whose colour differs along
  * the two diagonals show the split: per-vertex colours, and lit quads with a
  * local viewer and a spot light (MuJoCo's sphere caps). Drawn at once,
  * from a list, and compiled with GL_COMPILE_AND_EXECUTE (at once, then
