@@ -394,9 +394,21 @@ pub fn sample_unit(
     tex: &crate::texture::TextureRef<'_>,
     (px, row): (f32, f32),
 ) -> [f32; 4] {
+    let (origin, lane) = quad_lane((px, row));
+    crate::texture::sample_quad(unit, tex, &quad_coords(planes, u, origin), lane)
+}
+
+/// The origin of the quad holding `(px, row)` ([`quad_origin`]) and the
+/// pixel's lane in it (0 top-left, 1 top-right, 2 and 3 below).
+#[inline]
+pub fn quad_lane((px, row): (f32, f32)) -> ((f32, f32), usize) {
     let (qx, qy) = quad_origin((px, row));
-    let lane = usize::from(px != qx) + 2 * usize::from(row != qy);
+    ((qx, qy), usize::from(px != qx) + 2 * usize::from(row != qy))
+}
+
+/// Unit `u`'s coordinates ([`tex_coords`]) at the four pixels of the quad at `origin`.
+#[inline]
+pub fn quad_coords(planes: &Planes, u: usize, (qx, qy): (f32, f32)) -> [[f32; 4]; 4] {
     let pixels = [(qx, qy), (qx + 1.0, qy), (qx, qy + 1.0), (qx + 1.0, qy + 1.0)];
-    let quad = pixels.map(|p| tex_coords(planes, u, p));
-    crate::texture::sample_quad(unit, tex, &quad, lane)
+    pixels.map(|p| tex_coords(planes, u, p))
 }
