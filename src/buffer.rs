@@ -10,7 +10,7 @@
 //! for what llvmpipe does with them.
 
 use crate::error::{GlError, GlResult};
-use std::collections::HashMap;
+use crate::names::Names;
 
 /// The targets a buffer object binds to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -113,10 +113,7 @@ impl Buffer {
 /// The buffer objects of a context and its two bindings.
 #[derive(Clone, Debug, Default)]
 pub struct BufferStore {
-    /// Every name in use: `None` for a name `gen` reserved and no `bind` made yet.
-    objects: HashMap<u32, Option<Buffer>>,
-    /// The smallest name `gen` may hand out next (names above it may be in use).
-    next: u32,
+    objects: Names<Buffer>,
     array: u32,
     element_array: u32,
 }
@@ -126,25 +123,16 @@ impl BufferStore {
         BufferStore::default()
     }
 
-    /// `glGenBuffers`: `n` names not in use.
-    pub fn gen(&mut self, n: usize) -> Vec<u32> {
-        let mut names = Vec::with_capacity(n);
-        while names.len() < n {
-            self.next = self.next.wrapping_add(1).max(1);
-            if let std::collections::hash_map::Entry::Vacant(e) = self.objects.entry(self.next) {
-                e.insert(None);
-                names.push(self.next);
-            }
-        }
-        names
+    /// `glGenBuffers`: `n` names not in use (`None`: none left, [`Names::gen`]).
+    pub fn gen(&mut self, n: usize) -> Option<Vec<u32>> {
+        self.objects.gen(n)
     }
 
     /// `glBindBuffer`: binds `name` to `target`, making its object on the
     /// first bind; 0 unbinds.
     pub fn bind(&mut self, target: BufferTarget, name: u32) {
         if name != 0 {
-            let slot = self.objects.entry(name).or_insert(None);
-            slot.get_or_insert_with(Buffer::default);
+            self.objects.object_or_insert_with(name, Buffer::default);
         }
         *self.binding_mut(target) = name;
     }
@@ -172,7 +160,7 @@ impl BufferStore {
             if name == 0 {
                 continue;
             }
-            self.objects.remove(&name);
+            self.objects.remove(name);
             for t in [BufferTarget::Array, BufferTarget::ElementArray] {
                 if self.binding(t) == name {
                     *self.binding_mut(t) = 0;
@@ -183,12 +171,12 @@ impl BufferStore {
 
     /// `glIsBuffer`: whether `name` has an object (a name only generated has none).
     pub fn is_buffer(&self, name: u32) -> bool {
-        matches!(self.objects.get(&name), Some(Some(_)))
+        self.objects.get(name).is_some()
     }
 
     /// The object called `name`.
     pub fn get(&self, name: u32) -> Option<&Buffer> {
-        self.objects.get(&name).and_then(Option::as_ref)
+        self.objects.get(name)
     }
 
     /// The object bound to `target`; `GL_INVALID_OPERATION` when none is
@@ -199,10 +187,7 @@ impl BufferStore {
 
     fn bound_mut(&mut self, target: BufferTarget) -> GlResult<&mut Buffer> {
         let name = self.binding(target);
-        self.objects
-            .get_mut(&name)
-            .and_then(Option::as_mut)
-            .ok_or(GlError::InvalidOperation)
+        self.objects.get_mut(name).ok_or(GlError::InvalidOperation)
     }
 
     /// `glBufferData`: a new data store of `size` bytes, `data`'s bytes or
@@ -292,14 +277,13 @@ mod tests {
     #[test]
     fn names_objects_and_bindings() {
         let mut s = BufferStore::new();
-        let names = s.gen(3);
-        assert_eq!(names, [1, 2, 3]);
+        assert_eq!(s.gen(3), Some(vec![1, 2, 3]));
         assert!(!s.is_buffer(1), "a generated name has no object before its first bind");
         s.bind(BufferTarget::Array, 2);
         assert!(s.is_buffer(2));
         s.bind(BufferTarget::ElementArray, 7);
         assert!(s.is_buffer(7), "binding an unused name makes its object");
-        assert_eq!(s.gen(5), [4, 5, 6, 8, 9], "names in use are skipped");
+        assert_eq!(s.gen(2), Some(vec![8, 9]), "Mesa's names follow the largest one used");
         s.delete(&[2, 7, 0, 100]);
         assert_eq!(
             (s.binding(BufferTarget::Array), s.binding(BufferTarget::ElementArray)),

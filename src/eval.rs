@@ -794,66 +794,9 @@ pub fn de_casteljau_surf(
                 out[k] = us * d!(0, 0) + u * d!(1, 0);
             }
         }
-    } else if uorder == vorder {
-        for k in 0..dim {
-            for i in 0..uorder - 1 {
-                d!(i, 0) = us * cnk(i, 0, k) + u * cnk(i + 1, 0, k);
-                for j in 0..vorder - 1 {
-                    d!(i, j + 1) = us * cnk(i, j + 1, k) + u * cnk(i + 1, j + 1, k);
-                    d!(i, j) = vs * d!(i, j) + v * d!(i, j + 1);
-                }
-            }
-            for h in 2..minorder - 1 {
-                for i in 0..uorder - h {
-                    d!(i, 0) = us * d!(i, 0) + u * d!(i + 1, 0);
-                    for j in 0..vorder - h {
-                        d!(i, j + 1) = us * d!(i, j + 1) + u * d!(i + 1, j + 1);
-                        d!(i, j) = vs * d!(i, j) + v * d!(i, j + 1);
-                    }
-                }
-            }
-            du[k] = vs * (d!(1, 0) - d!(0, 0)) + v * (d!(1, 1) - d!(0, 1));
-            dv[k] = us * (d!(0, 1) - d!(0, 0)) + u * (d!(1, 1) - d!(1, 0));
-            out[k] = us * (vs * d!(0, 0) + v * d!(0, 1)) + u * (vs * d!(1, 0) + v * d!(1, 1));
-        }
-    } else if minorder == uorder {
-        for k in 0..dim {
-            for i in 0..uorder - 1 {
-                d!(i, 0) = us * cnk(i, 0, k) + u * cnk(i + 1, 0, k);
-                for j in 0..vorder - 1 {
-                    d!(i, j + 1) = us * cnk(i, j + 1, k) + u * cnk(i + 1, j + 1, k);
-                    d!(i, j) = vs * d!(i, j) + v * d!(i, j + 1);
-                }
-            }
-            for h in 2..minorder - 1 {
-                for i in 0..uorder - h {
-                    d!(i, 0) = us * d!(i, 0) + u * d!(i + 1, 0);
-                    for j in 0..vorder - h {
-                        d!(i, j + 1) = us * d!(i, j + 1) + u * d!(i + 1, j + 1);
-                        d!(i, j) = vs * d!(i, j) + v * d!(i, j + 1);
-                    }
-                }
-            }
-            d!(2, 0) = d!(1, 0) - d!(0, 0);
-            d!(0, 0) = us * d!(0, 0) + u * d!(1, 0);
-            for j in 0..vorder - 1 {
-                d!(2, j + 1) = d!(1, j + 1) - d!(0, j + 1);
-                d!(2, j) = vs * d!(2, j) + v * d!(2, j + 1);
-                d!(0, j + 1) = us * d!(0, j + 1) + u * d!(1, j + 1);
-                d!(0, j) = vs * d!(0, j) + v * d!(0, j + 1);
-            }
-            for h in minorder..vorder - 1 {
-                for j in 0..vorder - h {
-                    d!(2, j) = vs * d!(2, j) + v * d!(2, j + 1);
-                    d!(0, j) = vs * d!(0, j) + v * d!(0, j + 1);
-                }
-            }
-            dv[k] = d!(0, 1) - d!(0, 0);
-            du[k] = vs * d!(2, 0) + v * d!(2, 1);
-            out[k] = vs * d!(0, 0) + v * d!(0, 1);
-        }
     } else {
         for k in 0..dim {
+            // Both directions reduced together down to order 2 in the smaller one.
             for i in 0..uorder - 1 {
                 d!(i, 0) = us * cnk(i, 0, k) + u * cnk(i + 1, 0, k);
                 for j in 0..vorder - 1 {
@@ -870,23 +813,47 @@ pub fn de_casteljau_surf(
                     }
                 }
             }
-            d!(0, 2) = d!(0, 1) - d!(0, 0);
-            d!(0, 0) = vs * d!(0, 0) + v * d!(0, 1);
-            for i in 0..uorder - 1 {
-                d!(i + 1, 2) = d!(i + 1, 1) - d!(i + 1, 0);
-                d!(i, 2) = us * d!(i, 2) + u * d!(i + 1, 2);
-                d!(i + 1, 0) = vs * d!(i + 1, 0) + v * d!(i + 1, 1);
-                d!(i, 0) = us * d!(i, 0) + u * d!(i + 1, 0);
-            }
-            for h in minorder..uorder - 1 {
-                for i in 0..uorder - h {
+            if uorder == vorder {
+                du[k] = vs * (d!(1, 0) - d!(0, 0)) + v * (d!(1, 1) - d!(0, 1));
+                dv[k] = us * (d!(0, 1) - d!(0, 0)) + u * (d!(1, 1) - d!(1, 0));
+                out[k] = us * (vs * d!(0, 0) + v * d!(0, 1)) + u * (vs * d!(1, 0) + v * d!(1, 1));
+            } else if minorder == uorder {
+                d!(2, 0) = d!(1, 0) - d!(0, 0);
+                d!(0, 0) = us * d!(0, 0) + u * d!(1, 0);
+                for j in 0..vorder - 1 {
+                    d!(2, j + 1) = d!(1, j + 1) - d!(0, j + 1);
+                    d!(2, j) = vs * d!(2, j) + v * d!(2, j + 1);
+                    d!(0, j + 1) = us * d!(0, j + 1) + u * d!(1, j + 1);
+                    d!(0, j) = vs * d!(0, j) + v * d!(0, j + 1);
+                }
+                for h in minorder..vorder - 1 {
+                    for j in 0..vorder - h {
+                        d!(2, j) = vs * d!(2, j) + v * d!(2, j + 1);
+                        d!(0, j) = vs * d!(0, j) + v * d!(0, j + 1);
+                    }
+                }
+                dv[k] = d!(0, 1) - d!(0, 0);
+                du[k] = vs * d!(2, 0) + v * d!(2, 1);
+                out[k] = vs * d!(0, 0) + v * d!(0, 1);
+            } else {
+                d!(0, 2) = d!(0, 1) - d!(0, 0);
+                d!(0, 0) = vs * d!(0, 0) + v * d!(0, 1);
+                for i in 0..uorder - 1 {
+                    d!(i + 1, 2) = d!(i + 1, 1) - d!(i + 1, 0);
                     d!(i, 2) = us * d!(i, 2) + u * d!(i + 1, 2);
+                    d!(i + 1, 0) = vs * d!(i + 1, 0) + v * d!(i + 1, 1);
                     d!(i, 0) = us * d!(i, 0) + u * d!(i + 1, 0);
                 }
+                for h in minorder..uorder - 1 {
+                    for i in 0..uorder - h {
+                        d!(i, 2) = us * d!(i, 2) + u * d!(i + 1, 2);
+                        d!(i, 0) = us * d!(i, 0) + u * d!(i + 1, 0);
+                    }
+                }
+                du[k] = d!(1, 0) - d!(0, 0);
+                dv[k] = us * d!(0, 2) + u * d!(1, 2);
+                out[k] = us * d!(0, 0) + u * d!(1, 0);
             }
-            du[k] = d!(1, 0) - d!(0, 0);
-            dv[k] = us * d!(0, 2) + u * d!(1, 2);
-            out[k] = us * d!(0, 0) + u * d!(1, 0);
         }
     }
 }

@@ -57,11 +57,11 @@
 use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::framebuffer::{DepthBuffer, Framebuffer, FramebufferDesc, Rect};
+use crate::names::Names;
 use crate::texture::jit::{BaseFormat, TexTarget, TexelFormat};
 use crate::texture::unpack::{depth_sampled, depth_unsampled};
 use crate::texture::TexImage;
 use softgl_jit::{pixel, ColorFormat, DepthFormat};
-use std::collections::HashMap;
 
 /// `GL_MAX_RENDERBUFFER_SIZE` (llvmpipe: 16384, its largest texture).
 pub const MAX_RENDERBUFFER_SIZE: u32 = 16384;
@@ -348,10 +348,8 @@ struct Checkout {
 /// framebuffer while an object is drawn into.
 #[derive(Debug, Default)]
 pub struct FboState {
-    framebuffers: HashMap<u32, Option<FramebufferObject>>,
-    renderbuffers: HashMap<u32, Option<Renderbuffer>>,
-    max_framebuffer: u32,
-    max_renderbuffer: u32,
+    framebuffers: Names<FramebufferObject>,
+    renderbuffers: Names<Renderbuffer>,
     pub(crate) draw: u32,
     pub(crate) read: u32,
     pub(crate) renderbuffer: u32,
@@ -367,15 +365,15 @@ pub struct FboState {
 impl FboState {
     /// The object `name` (`None` for 0 or an unknown name).
     pub fn framebuffer(&self, name: u32) -> Option<&FramebufferObject> {
-        self.framebuffers.get(&name)?.as_ref()
+        self.framebuffers.get(name)
     }
 
     fn framebuffer_mut(&mut self, name: u32) -> Option<&mut FramebufferObject> {
-        self.framebuffers.get_mut(&name)?.as_mut()
+        self.framebuffers.get_mut(name)
     }
 
     pub fn renderbuffer(&self, name: u32) -> Option<&Renderbuffer> {
-        self.renderbuffers.get(&name)?.as_ref()
+        self.renderbuffers.get(name)
     }
 
     /// `GL_DRAW_FRAMEBUFFER_BINDING`.
@@ -583,13 +581,8 @@ impl Context {
     pub fn gen_framebuffers(&mut self, n: i32) -> GlResult<Vec<u32>> {
         self.outside()?;
         let n = self.record(usize::try_from(n).map_err(|_| GlError::InvalidValue))?;
-        let s = &mut self.fbo;
-        let names: Vec<u32> = (1..=n as u32).map(|i| s.max_framebuffer + i).collect();
-        for &name in &names {
-            s.framebuffers.insert(name, None);
-        }
-        s.max_framebuffer += n as u32;
-        Ok(names)
+        let names = self.fbo.framebuffers.gen(n).ok_or(GlError::OutOfMemory);
+        self.record(names)
     }
 
     /// `glIsFramebuffer`: a name bound at least once.
@@ -602,10 +595,9 @@ impl Context {
     pub fn bind_framebuffer(&mut self, target: FramebufferTarget, name: u32) -> GlResult {
         self.outside()?;
         if name != 0 {
-            let s = &mut self.fbo;
-            let slot = s.framebuffers.entry(name).or_insert(None);
-            slot.get_or_insert_with(FramebufferObject::default);
-            s.max_framebuffer = s.max_framebuffer.max(name);
+            self.fbo
+                .framebuffers
+                .object_or_insert_with(name, FramebufferObject::default);
         }
         if matches!(target, FramebufferTarget::Both | FramebufferTarget::Draw) && self.fbo.draw != name {
             self.release_draw();
@@ -622,7 +614,7 @@ impl Context {
     pub fn delete_framebuffers(&mut self, names: &[u32]) -> GlResult {
         self.outside()?;
         for &name in names {
-            if name == 0 || !self.fbo.framebuffers.contains_key(&name) {
+            if !self.fbo.framebuffers.is_reserved(name) {
                 continue;
             }
             if self.fbo.draw == name {
@@ -631,7 +623,7 @@ impl Context {
             if self.fbo.read == name {
                 self.fbo.read = 0;
             }
-            self.fbo.framebuffers.remove(&name);
+            self.fbo.framebuffers.remove(name);
         }
         Ok(())
     }
@@ -650,13 +642,8 @@ impl Context {
     pub fn gen_renderbuffers(&mut self, n: i32) -> GlResult<Vec<u32>> {
         self.outside()?;
         let n = self.record(usize::try_from(n).map_err(|_| GlError::InvalidValue))?;
-        let s = &mut self.fbo;
-        let names: Vec<u32> = (1..=n as u32).map(|i| s.max_renderbuffer + i).collect();
-        for &name in &names {
-            s.renderbuffers.insert(name, None);
-        }
-        s.max_renderbuffer += n as u32;
-        Ok(names)
+        let names = self.fbo.renderbuffers.gen(n).ok_or(GlError::OutOfMemory);
+        self.record(names)
     }
 
     /// `glIsRenderbuffer`: a name bound at least once.
@@ -668,12 +655,9 @@ impl Context {
     pub fn bind_renderbuffer(&mut self, name: u32) -> GlResult {
         self.outside()?;
         if name != 0 {
-            let s = &mut self.fbo;
-            s.renderbuffers
-                .entry(name)
-                .or_insert(None)
-                .get_or_insert_with(Renderbuffer::default);
-            s.max_renderbuffer = s.max_renderbuffer.max(name);
+            self.fbo
+                .renderbuffers
+                .object_or_insert_with(name, Renderbuffer::default);
         }
         self.fbo.renderbuffer = name;
         Ok(())
@@ -684,7 +668,7 @@ impl Context {
     pub fn delete_renderbuffers(&mut self, names: &[u32]) -> GlResult {
         self.outside()?;
         for &name in names {
-            if name == 0 || !self.fbo.renderbuffers.contains_key(&name) {
+            if !self.fbo.renderbuffers.is_reserved(name) {
                 continue;
             }
             self.release_draw();
@@ -700,7 +684,7 @@ impl Context {
             if self.fbo.renderbuffer == name {
                 self.fbo.renderbuffer = 0;
             }
-            self.fbo.renderbuffers.remove(&name);
+            self.fbo.renderbuffers.remove(name);
         }
         self.acquire_draw();
         Ok(())
@@ -744,7 +728,7 @@ impl Context {
         let storage: GlResult<Vec<Option<RbStorage>>> = (0..per_pixel).map(|_| one()).collect();
         let samples = if per_pixel > 1 { per_pixel } else { 0 };
         let r = storage.map(|storage| {
-            if let Some(rb) = self.fbo.renderbuffers.get_mut(&name).and_then(Option::as_mut) {
+            if let Some(rb) = self.fbo.renderbuffers.get_mut(name) {
                 *rb = Renderbuffer {
                     format,
                     width: width as u32,
@@ -1316,8 +1300,7 @@ impl Context {
         if let Some(slot) = self
             .fbo
             .renderbuffers
-            .get_mut(&name)
-            .and_then(Option::as_mut)
+            .get_mut(name)
             .and_then(|rb| rb.storage.get_mut(s))
         {
             *slot = f(slot.take());
@@ -1475,7 +1458,7 @@ impl Context {
         let rb = self.fbo.renderbuffer(n).ok_or(GlError::InvalidOperation)?;
         if let Some(st) = rb.storage.get(s).ok_or(GlError::InvalidOperation)? {
             if take {
-                let rb = self.fbo.renderbuffers.get_mut(&n).and_then(Option::as_mut);
+                let rb = self.fbo.renderbuffers.get_mut(n);
                 return rb
                     .and_then(|r| r.storage.get_mut(s)?.take())
                     .ok_or(GlError::InvalidOperation);

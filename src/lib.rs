@@ -36,6 +36,7 @@ pub mod inverse;
 pub mod lighting;
 pub mod matrix;
 pub mod multisample;
+pub mod names;
 pub mod pixel_rect;
 pub mod pixel_transfer;
 pub mod query;

@@ -12,7 +12,7 @@
 //! counting stage: queries cost nothing while none is active.
 
 use crate::error::{GlError, GlResult};
-use std::collections::HashMap;
+use crate::names::Names;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
@@ -59,8 +59,7 @@ struct Query {
 pub struct QueryStore {
     /// Every name in use: `None` for a name `gen` made and no `begin` used yet
     /// (GL 1.5: `glIsQuery` is false for it, its result an error).
-    objects: HashMap<u32, Option<Query>>,
-    next: u32,
+    objects: Names<Query>,
     active: Option<u32>,
 }
 
@@ -69,17 +68,9 @@ impl QueryStore {
         QueryStore::default()
     }
 
-    /// `glGenQueries`: `n` names not in use.
-    pub fn gen(&mut self, n: usize) -> Vec<u32> {
-        let mut names = Vec::with_capacity(n);
-        while names.len() < n {
-            self.next = self.next.wrapping_add(1).max(1);
-            if let std::collections::hash_map::Entry::Vacant(e) = self.objects.entry(self.next) {
-                e.insert(None);
-                names.push(self.next);
-            }
-        }
-        names
+    /// `glGenQueries`: `n` names not in use (`None`: none left, [`Names::gen`]).
+    pub fn gen(&mut self, n: usize) -> Option<Vec<u32>> {
+        self.objects.gen(n)
     }
 
     /// `glDeleteQueries`: frees each name; the active query is ended first
@@ -89,13 +80,13 @@ impl QueryStore {
             if self.active == Some(*name) {
                 self.active = None;
             }
-            self.objects.remove(name);
+            self.objects.remove(*name);
         }
     }
 
     /// `glIsQuery`: whether `name` is a query object that has been begun.
     pub fn is_query(&self, name: u32) -> bool {
-        matches!(self.objects.get(&name), Some(Some(_)))
+        self.objects.get(name).is_some()
     }
 
     /// `glBeginQuery`: starts counting into `name` (made if need be), from 0.
@@ -104,7 +95,7 @@ impl QueryStore {
         if name == 0 || self.active.is_some() {
             return Err(GlError::InvalidOperation);
         }
-        let q = self.objects.entry(name).or_insert(None);
+        let q = self.objects.slot(name);
         // A new counter: draws of an earlier use of the name still waiting
         // to be rasterized add to the old one.
         *q = Some(Query {
@@ -118,7 +109,7 @@ impl QueryStore {
     /// `glEndQuery`: `GL_INVALID_OPERATION` when no query is active.
     pub fn end(&mut self, _target: QueryTarget) -> GlResult {
         let name = self.active.take().ok_or(GlError::InvalidOperation)?;
-        if let Some(Some(q)) = self.objects.get_mut(&name) {
+        if let Some(q) = self.objects.get_mut(name) {
             q.pending = true;
         }
         Ok(())
@@ -130,14 +121,14 @@ impl QueryStore {
     /// yes. With the errors of [`QueryStore::samples`].
     pub fn available(&mut self, name: u32) -> GlResult<bool> {
         self.samples(name)?;
-        let q = self.objects.get_mut(&name).and_then(Option::as_mut);
+        let q = self.objects.get_mut(name);
         let q = q.ok_or(GlError::InvalidOperation)?;
         Ok(!std::mem::replace(&mut q.pending, false))
     }
 
     /// Marks `name`'s result final (the scene was flushed for it).
     pub fn settled(&mut self, name: u32) {
-        if let Some(Some(q)) = self.objects.get_mut(&name) {
+        if let Some(q) = self.objects.get_mut(name) {
             q.pending = false;
         }
     }
@@ -149,7 +140,7 @@ impl QueryStore {
 
     /// The counter draws made now add to: the active query's.
     pub fn counter(&self) -> Option<Arc<AtomicU64>> {
-        let q = self.objects.get(&self.active?)?.as_ref()?;
+        let q = self.objects.get(self.active?)?;
         Some(q.samples.clone())
     }
 
@@ -168,7 +159,7 @@ impl QueryStore {
         if self.active == Some(name) {
             return Err(GlError::InvalidOperation);
         }
-        let q = self.objects.get(&name).and_then(Option::as_ref);
+        let q = self.objects.get(name);
         Ok(q.ok_or(GlError::InvalidOperation)?.samples.load(Ordering::Relaxed))
     }
 }
@@ -180,8 +171,7 @@ mod tests {
     #[test]
     fn names_and_errors() {
         let mut q = QueryStore::new();
-        let names = q.gen(2);
-        assert_eq!(names, [1, 2]);
+        assert_eq!(q.gen(2), Some(vec![1, 2]));
         assert!(!q.is_query(1), "not a query before its first begin");
         assert_eq!(q.samples(1), Err(GlError::InvalidOperation));
         assert_eq!(q.begin(QueryTarget::SamplesPassed, 0), Err(GlError::InvalidOperation));

@@ -169,7 +169,7 @@ impl Context {
     pub fn gen_textures(&mut self, n: i32) -> GlResult<Vec<u32>> {
         self.tex_call(|gl| {
             let n = usize::try_from(n).map_err(|_| GlError::InvalidValue)?;
-            Ok(gl.textures.get_mut().gen(n))
+            gl.textures.get_mut().gen(n).ok_or(GlError::OutOfMemory)
         })
     }
 

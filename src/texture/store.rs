@@ -6,7 +6,7 @@ use super::jit::{
     MAX_UNITS,
 };
 use super::object::TextureObject;
-use std::collections::HashMap;
+use crate::names::Names;
 use std::sync::Arc;
 
 const TARGETS: [TexTarget; 4] = [TexTarget::D1, TexTarget::D2, TexTarget::D3, TexTarget::Cube];
@@ -23,11 +23,7 @@ fn index(target: TexTarget) -> usize {
 /// Every texture object of a context and the bindings of its units.
 #[derive(Clone, Debug)]
 pub struct TextureStore {
-    /// Named objects; `None` for a name `gen_textures` returned that was never bound.
-    named: HashMap<u32, Option<TextureObject>>,
-    /// The largest name ever used: `gen_textures` continues after it (Mesa's
-    /// `_mesa_HashFindFreeKeyBlock` without name reuse).
-    max_name: u32,
+    named: Names<TextureObject>,
     defaults: [TextureObject; 4],
     /// Proxy images: sizes and formats only, no texels.
     pub(crate) proxies: [TextureObject; 4],
@@ -44,8 +40,7 @@ impl Default for TextureStore {
 impl TextureStore {
     pub fn new() -> TextureStore {
         TextureStore {
-            named: HashMap::new(),
-            max_name: 0,
+            named: Names::new(),
             defaults: TARGETS.map(TextureObject::new),
             proxies: TARGETS.map(TextureObject::new),
             bindings: [[0; 4]; MAX_UNITS],
@@ -62,27 +57,22 @@ impl TextureStore {
         self.active = unit.min(MAX_UNITS - 1);
     }
 
-    /// `n` new names (`glGenTextures`), reserved but without objects until bound.
-    pub(crate) fn gen(&mut self, n: usize) -> Vec<u32> {
-        let names: Vec<u32> = (1..=n as u32).map(|i| self.max_name + i).collect();
-        for &name in &names {
-            self.named.insert(name, None);
-        }
-        self.max_name += n as u32;
-        names
+    /// `n` new names (`glGenTextures`), reserved but without objects until
+    /// bound (`None`: none left, [`Names::gen`]).
+    pub(crate) fn gen(&mut self, n: usize) -> Option<Vec<u32>> {
+        self.named.gen(n)
     }
 
     /// Binds `name` to `target` on the active unit, creating its object on
     /// first bind; `false` when the object exists with another target.
     pub(crate) fn bind(&mut self, target: TexTarget, name: u32) -> bool {
         if name != 0 {
-            let slot = self.named.entry(name).or_insert(None);
+            let slot = self.named.slot(name);
             match slot {
                 Some(obj) if obj.target != target => return false,
                 Some(_) => {}
                 None => *slot = Some(TextureObject::new(target)),
             }
-            self.max_name = self.max_name.max(name);
         }
         self.bindings[self.active][index(target)] = name;
         true
@@ -91,7 +81,7 @@ impl TextureStore {
     /// Deletes named objects, unbinding them from every unit (they revert to 0).
     pub(crate) fn delete(&mut self, names: &[u32]) {
         for &name in names {
-            if name == 0 || self.named.remove(&name).is_none() {
+            if name == 0 || !self.named.remove(name) {
                 continue;
             }
             for unit in &mut self.bindings {
@@ -104,22 +94,22 @@ impl TextureStore {
 
     /// Whether `name` names an object (generated names count once bound).
     pub fn is_texture(&self, name: u32) -> bool {
-        matches!(self.named.get(&name), Some(Some(_)))
+        self.named.get(name).is_some()
     }
 
     /// Whether `name` was generated or bound (`glAreTexturesResident` and
     /// `glPrioritizeTextures` accept exactly these).
     pub(crate) fn exists(&self, name: u32) -> bool {
-        name != 0 && self.named.contains_key(&name)
+        self.named.is_reserved(name)
     }
 
     /// The object `name` (`None` for a name without an object).
     pub fn object(&self, name: u32) -> Option<&TextureObject> {
-        self.named.get(&name)?.as_ref()
+        self.named.get(name)
     }
 
     pub(crate) fn object_mut(&mut self, name: u32) -> Option<&mut TextureObject> {
-        self.named.get_mut(&name)?.as_mut()
+        self.named.get_mut(name)
     }
 
     /// The name bound to `target` on `unit`.
@@ -136,9 +126,9 @@ impl TextureStore {
     /// The object bound to `target` on the active unit.
     pub(crate) fn current_mut(&mut self, target: TexTarget) -> &mut TextureObject {
         let name = self.binding(self.active, target);
-        match self.named.get_mut(&name) {
-            Some(Some(obj)) => obj,
-            _ => &mut self.defaults[index(target)],
+        match self.named.get_mut(name) {
+            Some(obj) => obj,
+            None => &mut self.defaults[index(target)],
         }
     }
 

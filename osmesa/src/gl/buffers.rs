@@ -103,7 +103,7 @@ exports! {
     [unsafe] fn glGenBuffers(n: i32, names: *mut u32) {
         buffers((), |_, gl| {
             let n = usize::try_from(n).map_err(|_| GlError::InvalidValue)?;
-            let new = gl.buffers_mut().gen(n);
+            let new = gl.buffers_mut().gen(n).ok_or(GlError::OutOfMemory)?;
             if !names.is_null() {
                 // SAFETY: room for `n` names, by GL's contract.
                 unsafe { std::ptr::copy_nonoverlapping(new.as_ptr(), names, n) };

@@ -33,7 +33,7 @@ exports! {
         now(|_, gl| {
             outside(gl)?;
             let n = usize::try_from(n).map_err(|_| GlError::InvalidValue)?;
-            let names = gl.queries_mut().gen(n);
+            let names = gl.queries_mut().gen(n).ok_or(GlError::OutOfMemory)?;
             if !ids.is_null() {
                 // SAFETY: room for `n` names (GL's contract).
                 unsafe { std::ptr::copy_nonoverlapping(names.as_ptr(), ids, n) };
