@@ -47,7 +47,7 @@ fn a_query_counts_the_fragments_that_pass() {
             let mut gl = context(backend, threads);
             gl.enable(Capability::DepthTest).unwrap();
             gl.depth_func(CompareFunc::Less).unwrap();
-            let q = gl.queries_mut().gen(2);
+            let q = gl.queries_mut().gen(2).unwrap();
             // Outside any query: counted by none.
             tri(&mut gl, [[-0.9, -0.9], [0.1, -0.8], [-0.7, 0.2]], 0.0, [1.0, 0.0, 0.0]);
             gl.queries_mut().begin(QueryTarget::SamplesPassed, q[0]).unwrap();
