@@ -1,16 +1,16 @@
 //! The one GL-shaped interface: a scene is recorded once as a list of
 //! [`Call`]s, and every back end replays that list its own way.
 
+use softgl::fbo::{AttachmentPoint, BlitFilter, BlitMask, FramebufferTarget, RenderbufferFormat};
+use softgl::pixel_rect::{CopyKind, DrawKind};
+use softgl::pixel_transfer::PixelTransferParam;
+use softgl::AccumOp;
 use softgl::{
     BlendEquation, BlendFactor, Capability, ClearMask, ColorMaterialMode, CompareFunc, Face, FogParam, FrontFace,
     InternalFormat, LightModelParam, LightParam, LogicOp, MaterialParam, MatrixMode, PixelFormat, PixelType,
     PolygonMode, PrimitiveMode, ShadeModel, StencilOp, TexCoordName, TexEnvParam, TexGenParam, TexImageTarget,
     TexParam, TextureTarget,
 };
-use softgl::fbo::{AttachmentPoint, BlitFilter, BlitMask, FramebufferTarget, RenderbufferFormat};
-use softgl::pixel_rect::{CopyKind, DrawKind};
-use softgl::pixel_transfer::PixelTransferParam;
-use softgl::AccumOp;
 
 /// One GL 1.x call, with GL's arguments.
 #[derive(Clone, Debug, PartialEq)]

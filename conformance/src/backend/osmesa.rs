@@ -5,10 +5,10 @@
 use super::softgl::{framebuffer_target_gl, query_color};
 use super::{Outcome, Timing};
 use crate::call::{clear_bits, Call};
+use crate::scenes::Recording;
 use softgl::fbo::{AttachmentPoint, BlitFilter, RenderbufferFormat};
 use softgl::pixel_rect::{CopyKind, DrawKind};
 use softgl::pixel_transfer::PixelTransferParam;
-use crate::scenes::Recording;
 use softgl::texture::min_filter_to_gl;
 use softgl::{ColorFormat, FogParam, GlEnum, LightModelParam, LightParam, MaterialParam};
 use softgl::{MipFilter, TexEnvParam, TexGenParam, TexImageTarget, TexParam, TextureTarget};
@@ -520,7 +520,13 @@ impl Context<'_> {
                     samples,
                     format,
                     size: [w, h],
-                } => (g.glRenderbufferStorageMultisample)(GL_RENDERBUFFER, *samples, renderbuffer_format_gl(*format), *w, *h),
+                } => (g.glRenderbufferStorageMultisample)(
+                    GL_RENDERBUFFER,
+                    *samples,
+                    renderbuffer_format_gl(*format),
+                    *w,
+                    *h,
+                ),
                 Call::FramebufferRenderbuffer(t, p, name) => {
                     (g.glFramebufferRenderbuffer)(framebuffer_target_gl(*t), attachment_gl(*p), GL_RENDERBUFFER, *name)
                 }

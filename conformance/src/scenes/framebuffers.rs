@@ -176,7 +176,11 @@ pub fn renderbuffer_fbo(r: &mut Rec, fb: u32, color: u32, depth: u32, size: [i32
         .call(Call::BindRenderbuffer(0))
         .call(Call::BindFramebuffer(BOTH, fb))
         .call(Call::FramebufferRenderbuffer(BOTH, AttachmentPoint::Color(0), color))
-        .call(Call::FramebufferRenderbuffer(BOTH, AttachmentPoint::DepthStencil, depth));
+        .call(Call::FramebufferRenderbuffer(
+            BOTH,
+            AttachmentPoint::DepthStencil,
+            depth,
+        ));
 }
 
 pub const COLOR: BlitMask = BlitMask {
@@ -203,7 +207,14 @@ fn content(r: &mut Rec, w: u32, h: u32, full: bool, seed: u32, n: usize) {
     r.call(Call::ClearDepth(1.0)).clear(ClearMask::ALL);
     gradient_background(r, s);
     r.enable(Capability::DepthTest).call(Call::DepthFunc(CompareFunc::Less));
-    random_triangles(r, &mut Rng::new(seed), s.count(n), s, (w.min(h) as f32 / 6.0).max(2.0), (1.0, 1.0));
+    random_triangles(
+        r,
+        &mut Rng::new(seed),
+        s.count(n),
+        s,
+        (w.min(h) as f32 / 6.0).max(2.0),
+        (1.0, 1.0),
+    );
     r.disable(Capability::DepthTest);
 }
 
@@ -249,7 +260,13 @@ fn render_to_texture(r: &mut Rec, s: Size) {
             size: [tw, th],
         })
         .call(Call::BindFramebuffer(BOTH, 1))
-        .call(Call::FramebufferTexture2D(BOTH, AttachmentPoint::Color(0), TexImageTarget::D2, 1, 0))
+        .call(Call::FramebufferTexture2D(
+            BOTH,
+            AttachmentPoint::Color(0),
+            TexImageTarget::D2,
+            1,
+            0,
+        ))
         .call(Call::FramebufferRenderbuffer(BOTH, AttachmentPoint::DepthStencil, 2));
     pixel_view(r, tw as u32, th as u32);
     content(r, tw as u32, th as u32, s.full, 300, 120);
@@ -278,8 +295,13 @@ fn render_to_texture(r: &mut Rec, s: Size) {
 fn render_to_texture_mipmaps(r: &mut Rec, s: Size) {
     let t = 64;
     empty_texture(r, 3, t, t, (Filter::Linear, MipFilter::Linear), Filter::Linear);
-    r.call(Call::BindFramebuffer(BOTH, 3))
-        .call(Call::FramebufferTexture2D(BOTH, AttachmentPoint::Color(0), TexImageTarget::D2, 3, 0));
+    r.call(Call::BindFramebuffer(BOTH, 3)).call(Call::FramebufferTexture2D(
+        BOTH,
+        AttachmentPoint::Color(0),
+        TexImageTarget::D2,
+        3,
+        0,
+    ));
     pixel_view(r, t as u32, t as u32);
     r.clear(ClearMask::COLOR);
     gradient_background(
@@ -302,8 +324,7 @@ fn render_to_texture_mipmaps(r: &mut Rec, s: Size) {
         10.0,
         (1.0, 1.0),
     );
-    r.call(Call::BindFramebuffer(BOTH, 0))
-        .call(Call::GenerateMipmap(T2));
+    r.call(Call::BindFramebuffer(BOTH, 0)).call(Call::GenerateMipmap(T2));
     pixel_view(r, s.w, s.h);
     r.enable(Capability::Texture(T2))
         .tex_env(TexEnvParam::Mode(EnvMode::Replace));
@@ -376,7 +397,13 @@ fn blit_depth_stencil(r: &mut Rec, s: Size) {
         stencil: true,
     };
     blit(r, [0, 0, w, h], [0, 0, w, h], ds, BlitFilter::Nearest);
-    blit(r, [w / 4, h / 4, w / 2, h / 2], [w / 2, 0, w, h / 2], ds, BlitFilter::Nearest);
+    blit(
+        r,
+        [w / 4, h / 4, w / 2, h / 2],
+        [w / 2, 0, w, h / 2],
+        ds,
+        BlitFilter::Nearest,
+    );
     r.call(Call::BindFramebuffer(BOTH, 0));
     show_depth_bands(r, s, 24);
     r.call(Call::ColorMask([true, false, true, true]));
@@ -416,7 +443,13 @@ fn msaa_resolve(r: &mut Rec, s: Size) {
     bind_read_draw(r, 2, 0);
     blit(r, [0, 0, w, h], [0, 0, w, h], COLOR, BlitFilter::Nearest);
     bind_read_draw(r, 1, 0);
-    blit(r, [w / 3, h / 3, w * 2 / 3, h * 2 / 3], [w / 3, h / 3, w * 2 / 3, h * 2 / 3], COLOR, BlitFilter::Linear);
+    blit(
+        r,
+        [w / 3, h / 3, w * 2 / 3, h * 2 / 3],
+        [w / 3, h / 3, w * 2 / 3, h * 2 / 3],
+        COLOR,
+        BlitFilter::Linear,
+    );
     r.call(Call::BindFramebuffer(BOTH, 0));
 }
 
@@ -458,7 +491,13 @@ fn blit_flipped(r: &mut Rec, s: Size) {
     blit(r, [fw, fh, 0, 0], [w / 2 + 2, 2, w * 2 / 3, h / 5], COLOR, Linear);
     blit(r, [fw, 0, 0, fh], [w + 20, 2, w * 2 / 3 + 2, h / 3], COLOR, Nearest);
     blit(r, src, [fw, fh, 0, 0], COLOR, Nearest);
-    blit(r, [-5, fh + 7, fw + 3, -9], [w / 3, h / 2, w / 2 + 5, h * 3 / 4], COLOR, Linear);
+    blit(
+        r,
+        [-5, fh + 7, fw + 3, -9],
+        [w / 3, h / 2, w / 2 + 5, h * 3 / 4],
+        COLOR,
+        Linear,
+    );
     // Minified NEAREST (not reversed).
     blit(r, src, [22, h / 2 - 12, 22 + 17, h / 2 - 1], COLOR, Nearest);
     r.call(Call::BindFramebuffer(BOTH, 0));
@@ -522,8 +561,11 @@ fn occlusion_counts(r: &mut Rec, s: Size) {
     }
     r.end().call(Call::PointSize(3.0)).begin(PrimitiveMode::Points);
     for _ in 0..s.count(60) {
-        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0)
-            .vertex(rng.range(0.0, w), rng.range(0.0, h), rng.range(-1.0, 1.0));
+        r.color(rng.unit(), rng.unit(), rng.unit(), 1.0).vertex(
+            rng.range(0.0, w),
+            rng.range(0.0, h),
+            rng.range(-1.0, 1.0),
+        );
     }
     r.end().call(Call::PointSize(1.0)).call(Call::EndQuery);
     r.disable(Capability::DepthTest);
@@ -617,7 +659,13 @@ fn fbo_8192(r: &mut Rec, s: Size) {
     let (w, h) = (s.w as i32, s.h as i32);
     // Two blits only: each copies the whole 8192x8192 source today (see the report).
     blit(r, [0, 0, n, n], [0, 0, w / 2, h / 2], COLOR, BlitFilter::Nearest);
-    blit(r, [n - 60, n - 60, n, n], [w / 2, h / 2, w / 2 + 60, h / 2 + 60], COLOR, BlitFilter::Nearest);
+    blit(
+        r,
+        [n - 60, n - 60, n, n],
+        [w / 2, h / 2, w / 2 + 60, h / 2 + 60],
+        COLOR,
+        BlitFilter::Nearest,
+    );
     r.call(Call::BindFramebuffer(BOTH, 0));
 }
 

@@ -492,7 +492,9 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
             | Call::PixelTransfer(_)
             | Call::CopyPixels { .. }
             | Call::Accum(..)
-            | Call::ClearAccum(_) => return Err("raster position, pixel rectangles and the accumulation buffer: GL 1.x only".into()),
+            | Call::ClearAccum(_) => {
+                return Err("raster position, pixel rectangles and the accumulation buffer: GL 1.x only".into())
+            }
             Call::NewList(_) | Call::EndList | Call::CallList(_) | Call::ListBase(_) | Call::CallLists(_) => {
                 return Err("display lists: GL 1.x only".into())
             }
