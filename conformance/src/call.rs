@@ -1,6 +1,10 @@
 //! The one GL-shaped interface: a scene is recorded once as a list of
 //! [`Call`]s, and every back end replays that list its own way.
 
+use softgl::fbo::{AttachmentPoint, BlitFilter, BlitMask, FramebufferTarget, RenderbufferFormat};
+use softgl::pixel_rect::{CopyKind, DrawKind};
+use softgl::pixel_transfer::PixelTransferParam;
+use softgl::AccumOp;
 use softgl::{
     BlendEquation, BlendFactor, Capability, ClearMask, ColorMaterialMode, CompareFunc, Face, FogParam, FrontFace,
     InternalFormat, LightModelParam, LightParam, LogicOp, MaterialParam, MatrixMode, PixelFormat, PixelType,
@@ -103,6 +107,96 @@ pub enum Call {
         positions: Vec<[f32; 4]>,
         colors: Vec<[f32; 4]>,
     },
+    // Framebuffer objects (ARB_framebuffer_object). The scene picks the
+    // names: GL's compatibility profile makes an object at its first bind
+    // (Mesa's `bind_framebuffer`, `bind_renderbuffer`).
+    /// `glBindFramebuffer`.
+    BindFramebuffer(FramebufferTarget, u32),
+    /// `glBindRenderbuffer(GL_RENDERBUFFER, name)`.
+    BindRenderbuffer(u32),
+    /// `glRenderbufferStorageMultisample` on the bound renderbuffer
+    /// (`samples` 0: `glRenderbufferStorage`).
+    RenderbufferStorage {
+        samples: i32,
+        format: RenderbufferFormat,
+        size: [i32; 2],
+    },
+    /// `glFramebufferRenderbuffer`.
+    FramebufferRenderbuffer(FramebufferTarget, AttachmentPoint, u32),
+    /// `glFramebufferTexture2D(target, point, tex_target, name, level)`.
+    FramebufferTexture2D(FramebufferTarget, AttachmentPoint, TexImageTarget, u32, i32),
+    /// `glBlitFramebuffer(src, dst, mask, filter)`, rectangles as `[x0, y0, x1, y1]`.
+    BlitFramebuffer {
+        src: [i32; 4],
+        dst: [i32; 4],
+        mask: BlitMask,
+        filter: BlitFilter,
+    },
+    /// `glGenerateMipmap`.
+    GenerateMipmap(TextureTarget),
+    /// `glDeleteFramebuffers` of one name.
+    DeleteFramebuffer(u32),
+    /// `glDeleteRenderbuffers` of one name.
+    DeleteRenderbuffer(u32),
+    /// `glDeleteTextures` of one name.
+    DeleteTexture(u32),
+    // Occlusion queries (GL 1.5).
+    /// `glBeginQuery(GL_SAMPLES_PASSED, name)`.
+    BeginQuery(u32),
+    /// `glEndQuery(GL_SAMPLES_PASSED)`.
+    EndQuery,
+    /// `glGetQueryObjectuiv(name, GL_QUERY_RESULT)`, then `glClearColor` of
+    /// the count's bytes (red the low byte, green the next, blue the third,
+    /// alpha 1): a scissored clear after it writes the count into the image,
+    /// where the harness compares it with llvmpipe's.
+    ClearColorFromQuery(u32),
+    // Raster position, bitmaps and pixel rectangles.
+    /// `glRasterPos4f`.
+    RasterPos([f32; 4]),
+    /// `glWindowPos3f`.
+    WindowPos([f32; 3]),
+    /// `glBitmap` of `bits` laid out at GL's default unpack state (rows
+    /// padded to 4 bytes, most significant bit first).
+    Bitmap {
+        size: [i32; 2],
+        orig: [f32; 2],
+        moves: [f32; 2],
+        bits: Vec<u8>,
+    },
+    /// `glDrawPixels` at GL's default unpack state; `kind` picks the GL
+    /// format (`format` is the colour format of `DrawKind::Color`).
+    DrawPixels {
+        size: [i32; 2],
+        kind: DrawKind,
+        format: PixelFormat,
+        ty: PixelType,
+        pixels: Vec<u8>,
+    },
+    /// `glPixelZoom`.
+    PixelZoom(f32, f32),
+    /// `glPixelTransferf`.
+    PixelTransfer(PixelTransferParam),
+    /// `glCopyPixels(x, y, width, height, type)`.
+    CopyPixels {
+        at: [i32; 2],
+        size: [i32; 2],
+        kind: CopyKind,
+    },
+    /// `glAccum`.
+    Accum(AccumOp, f32),
+    /// `glClearAccum`.
+    ClearAccum([f32; 4]),
+    // Display lists.
+    /// `glNewList(name, GL_COMPILE)`.
+    NewList(u32),
+    /// `glEndList`.
+    EndList,
+    /// `glCallList`.
+    CallList(u32),
+    /// `glListBase`.
+    ListBase(u32),
+    /// `glCallLists(n, GL_UNSIGNED_BYTE, names)`.
+    CallLists(Vec<u8>),
 }
 
 /// Records calls; its methods read like the GL calls they stand for.
@@ -252,5 +346,19 @@ impl Rec {
 /// `glClear`'s bits; the GL values of the enumerated arguments come from
 /// their one table, [`softgl::GlEnum::to_gl`].
 pub fn clear_bits(m: ClearMask) -> u32 {
-    (if m.color { 0x4000 } else { 0 }) | (if m.depth { 0x100 } else { 0 }) | (if m.stencil { 0x400 } else { 0 })
+    (if m.color { 0x4000 } else { 0 })
+        | (if m.depth { 0x100 } else { 0 })
+        | (if m.stencil { 0x400 } else { 0 })
+        | (if m.accum { 0x200 } else { 0 })
+}
+
+/// Pads rows of `row` bytes to GL's default unpack alignment of 4.
+pub fn pad_rows(bytes: &[u8], row: usize) -> Vec<u8> {
+    let padded = row.div_ceil(4) * 4;
+    let mut out = Vec::with_capacity(padded * bytes.len() / row.max(1));
+    for r in bytes.chunks(row.max(1)) {
+        out.extend_from_slice(r);
+        out.resize(out.len() + padded - r.len(), 0);
+    }
+    out
 }

@@ -43,6 +43,18 @@ enum Command {
         /// A `piglit run` results directory.
         results: PathBuf,
     },
+    /// The pixels where softgl (JIT) differs from llvmpipe on one scene,
+    /// window coordinates (y up): what a tolerance's reason cites.
+    Diff {
+        /// The scene.
+        scene: String,
+        /// At the report's size (else the tests').
+        #[arg(long)]
+        full: bool,
+        /// At most this many pixels listed.
+        #[arg(long, default_value_t = 40)]
+        max: usize,
+    },
     #[command(hide = true)]
     Child(backend::child::ChildArgs),
 }
@@ -56,6 +68,9 @@ fn main() -> ExitCode {
             }
             Ok(())
         }
+        Command::Diff { scene, full, max } => std::env::current_exe()
+            .map_err(|e| e.to_string())
+            .and_then(|exe| report::diff_pixels(&exe, &scene, full, max)),
         Command::Piglit { results } => piglit::section(&results).map(|md| print!("{md}")),
         Command::Report {
             out,

@@ -23,7 +23,7 @@ use std::sync::Mutex;
 
 const EXE: &str = env!("CARGO_BIN_EXE_softgl-conformance");
 
-const GROUPS: [(&str, Group); 8] = [
+const GROUPS: [(&str, Group); 10] = [
     ("stages_alone", Group::Stage),
     ("combinations", Group::Combination),
     ("primitives", Group::Primitive),
@@ -32,6 +32,8 @@ const GROUPS: [(&str, Group); 8] = [
     ("fog_and_color_sum", Group::Fog),
     ("lighting_and_clip_planes", Group::Lighting),
     ("texturing", Group::Texture),
+    ("framebuffer_objects_and_queries", Group::Framebuffer),
+    ("bitmaps_and_pixel_paths", Group::Pixels),
 ];
 
 /// The test that probes the references.

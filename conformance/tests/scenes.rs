@@ -61,3 +61,22 @@ fn texture_scenes_make_no_gl_error_on_softgl() {
         }
     }
 }
+
+#[test]
+fn framebuffer_and_pixel_scenes_make_no_gl_error_on_softgl() {
+    use softgl::FramebufferDesc;
+    use softgl_conformance::backend::softgl::{context, Replayer};
+    for s in scenes::all()
+        .into_iter()
+        .filter(|s| matches!(s.group, Group::Framebuffer | Group::Pixels))
+    {
+        let rec = s.record(false);
+        let mut gl = context(FramebufferDesc::rgba8_d24s8(rec.width, rec.height), rec.accum).expect("context");
+        let mut lists = Replayer::default();
+        for (i, c) in rec.calls.iter().enumerate() {
+            let r = lists.call(&mut gl, c);
+            assert!(r.is_ok(), "{}: call {i} {c:?}: {r:?}", s.name);
+        }
+        assert_eq!(gl.get_error(), None, "{}", s.name);
+    }
+}

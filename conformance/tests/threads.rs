@@ -2,8 +2,8 @@
 //! threads, on the JIT and on the interpreter: a tile belongs to one thread
 //! for a whole flush, so no image may depend on how tiles were shared out.
 
-use softgl::{Backend, Context, FramebufferDesc};
-use softgl_conformance::backend::softgl::replay;
+use softgl::{Backend, FramebufferDesc};
+use softgl_conformance::backend::softgl::{context, Replayer};
 use softgl_conformance::scenes;
 
 /// Color, depth and stencil bytes of `scene` rendered with `threads` threads.
@@ -12,12 +12,13 @@ fn render(rec: &softgl_conformance::scenes::Recording, backend: Backend, threads
         color: rec.color,
         ..FramebufferDesc::rgba8_d24s8(rec.width, rec.height)
     };
-    let mut gl = Context::new(desc).expect("context");
+    let mut gl = context(desc, rec.accum).expect("context");
     gl.set_backend(backend);
     gl.set_threads(threads);
+    let mut lists = Replayer::default();
     for c in &rec.calls {
         // Errors a scene provokes are the scene's; the bytes are what is compared.
-        let _ = replay(&mut gl, c);
+        let _ = lists.call(&mut gl, c);
     }
     let fb = gl.framebuffer();
     let mut bytes = fb.color_bytes().to_vec();

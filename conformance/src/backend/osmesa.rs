@@ -2,9 +2,13 @@
 //! time. Runs inside a child process: the Gallium driver (`GALLIUM_DRIVER`)
 //! is fixed when the library loads.
 
+use super::softgl::{framebuffer_target_gl, query_color};
 use super::{Outcome, Timing};
 use crate::call::{clear_bits, Call};
 use crate::scenes::Recording;
+use softgl::fbo::{AttachmentPoint, BlitFilter, RenderbufferFormat};
+use softgl::pixel_rect::{CopyKind, DrawKind};
+use softgl::pixel_transfer::PixelTransferParam;
 use softgl::texture::min_filter_to_gl;
 use softgl::{ColorFormat, FogParam, GlEnum, LightModelParam, LightParam, MaterialParam};
 use softgl::{MipFilter, TexEnvParam, TexGenParam, TexImageTarget, TexParam, TextureTarget};
@@ -21,6 +25,10 @@ const GL_VERTEX_ARRAY: u32 = 0x8074;
 const GL_COLOR_ARRAY: u32 = 0x8076;
 const GL_RENDERER: u32 = 0x1F01;
 const GL_TEXTURE0: u32 = 0x84C0;
+const GL_RENDERBUFFER: u32 = 0x8D41;
+const GL_SAMPLES_PASSED: u32 = 0x8914;
+const GL_QUERY_RESULT: u32 = 0x8866;
+const GL_COMPILE: u32 = 0x1300;
 
 /// The library name the loader looks for.
 pub const LIBRARY: &str = "libOSMesa.so.8";
@@ -124,6 +132,34 @@ gl_fns! {
     glTexGeni(u32, u32, i32);
     glTexGenfv(u32, u32, *const f32);
     glMultiTexCoord4f(u32, f32, f32, f32, f32);
+    glBindFramebuffer(u32, u32);
+    glBindRenderbuffer(u32, u32);
+    glRenderbufferStorageMultisample(u32, i32, u32, i32, i32);
+    glFramebufferRenderbuffer(u32, u32, u32, u32);
+    glFramebufferTexture2D(u32, u32, u32, u32, i32);
+    glBlitFramebuffer(i32, i32, i32, i32, i32, i32, i32, i32, u32, u32);
+    glGenerateMipmap(u32);
+    glDeleteFramebuffers(i32, *const u32);
+    glDeleteRenderbuffers(i32, *const u32);
+    glDeleteTextures(i32, *const u32);
+    glBeginQuery(u32, u32);
+    glEndQuery(u32);
+    glGetQueryObjectuiv(u32, u32, *mut u32);
+    glRasterPos4f(f32, f32, f32, f32);
+    glWindowPos3f(f32, f32, f32);
+    glBitmap(i32, i32, f32, f32, f32, f32, *const u8);
+    glDrawPixels(i32, i32, u32, u32, *const c_void);
+    glPixelZoom(f32, f32);
+    glPixelTransferf(u32, f32);
+    glCopyPixels(i32, i32, i32, i32, u32);
+    glAccum(u32, f32);
+    glClearAccum(f32, f32, f32, f32);
+    glNewList(u32, u32);
+    glEndList();
+    glCallList(u32);
+    glListBase(u32);
+    glCallLists(i32, u32, *const c_void);
+    glGetError() -> u32;
 }
 
 type CreateContextExt = unsafe extern "C" fn(u32, i32, i32, i32, Ctx) -> Ctx;
@@ -173,14 +209,14 @@ impl OsMesa {
 
     /// A current context with 24-bit depth and 8-bit stencil drawing into its
     /// own `width` x `height` buffer of `color` (RGBA8 or RGB 5-6-5).
-    pub fn context(&self, width: u32, height: u32, color: ColorFormat) -> Result<Context<'_>, String> {
+    pub fn context(&self, width: u32, height: u32, color: ColorFormat, accum: bool) -> Result<Context<'_>, String> {
         let (format, ty) = match color {
             ColorFormat::Rgba8 => (GL_RGBA, GL_UNSIGNED_BYTE),
             ColorFormat::Rgb565 => (OSMESA_RGB_565, GL_UNSIGNED_SHORT_5_6_5),
             other => return Err(format!("no OSMesa buffer set up for {other:?}")),
         };
         // SAFETY: plain OSMesa call; a NULL share list is allowed.
-        let ctx = unsafe { (self.create)(format, 24, 8, 0, std::ptr::null_mut()) };
+        let ctx = unsafe { (self.create)(format, 24, 8, if accum { 16 } else { 0 }, std::ptr::null_mut()) };
         if ctx.is_null() {
             return Err("OSMesaCreateContextExt failed".into());
         }
@@ -245,8 +281,24 @@ impl Context<'_> {
 
     /// Makes every call, waits for the driver, and returns the image top row first.
     pub fn frame(&mut self, calls: &[Call]) -> image::RgbaImage {
-        for c in calls {
+        // `SOFTGL_CONFORMANCE_GL_ERRORS=1`: each GL error on stderr, with the call.
+        let errors = std::env::var_os("SOFTGL_CONFORMANCE_GL_ERRORS").is_some();
+        let mut inside = false;
+        for (i, c) in calls.iter().enumerate() {
             self.call(c);
+            match c {
+                Call::Begin(_) => inside = true,
+                Call::End => inside = false,
+                _ => {}
+            }
+            // glGetError is itself an error between glBegin and glEnd.
+            if errors && !inside {
+                // SAFETY: the context is current.
+                let e = unsafe { (self.gl.glGetError)() };
+                if e != 0 {
+                    eprintln!("GL error 0x{e:04X} after call {i}: {c:?}");
+                }
+            }
         }
         // SAFETY: the context is current.
         unsafe { (self.gl.glFinish)() };
@@ -462,14 +514,165 @@ impl Context<'_> {
                     (g.glDisableClientState)(GL_VERTEX_ARRAY);
                     (g.glDisableClientState)(GL_COLOR_ARRAY);
                 }
+                Call::BindFramebuffer(t, name) => (g.glBindFramebuffer)(framebuffer_target_gl(*t), *name),
+                Call::BindRenderbuffer(name) => (g.glBindRenderbuffer)(GL_RENDERBUFFER, *name),
+                Call::RenderbufferStorage {
+                    samples,
+                    format,
+                    size: [w, h],
+                } => (g.glRenderbufferStorageMultisample)(
+                    GL_RENDERBUFFER,
+                    *samples,
+                    renderbuffer_format_gl(*format),
+                    *w,
+                    *h,
+                ),
+                Call::FramebufferRenderbuffer(t, p, name) => {
+                    (g.glFramebufferRenderbuffer)(framebuffer_target_gl(*t), attachment_gl(*p), GL_RENDERBUFFER, *name)
+                }
+                Call::FramebufferTexture2D(t, p, target, name, level) => (g.glFramebufferTexture2D)(
+                    framebuffer_target_gl(*t),
+                    attachment_gl(*p),
+                    target.to_gl(),
+                    *name,
+                    *level,
+                ),
+                Call::BlitFramebuffer { src, dst, mask, filter } => {
+                    let m = clear_bits(softgl::ClearMask {
+                        color: mask.color,
+                        depth: mask.depth,
+                        stencil: mask.stencil,
+                        accum: false,
+                    });
+                    let f = match filter {
+                        BlitFilter::Nearest => 0x2600,
+                        BlitFilter::Linear => 0x2601,
+                    };
+                    (g.glBlitFramebuffer)(src[0], src[1], src[2], src[3], dst[0], dst[1], dst[2], dst[3], m, f)
+                }
+                Call::GenerateMipmap(t) => (g.glGenerateMipmap)(t.to_gl()),
+                // Each reads one name during the call.
+                Call::DeleteFramebuffer(name) => (g.glDeleteFramebuffers)(1, name),
+                Call::DeleteRenderbuffer(name) => (g.glDeleteRenderbuffers)(1, name),
+                Call::DeleteTexture(name) => (g.glDeleteTextures)(1, name),
+                Call::BeginQuery(name) => (g.glBeginQuery)(GL_SAMPLES_PASSED, *name),
+                Call::EndQuery => (g.glEndQuery)(GL_SAMPLES_PASSED),
+                Call::ClearColorFromQuery(name) => {
+                    let mut n = 0u32;
+                    // Writes one value into `n`.
+                    (g.glGetQueryObjectuiv)(*name, GL_QUERY_RESULT, &mut n);
+                    let [r, gg, bb] = query_color(u64::from(n));
+                    (g.glClearColor)(r, gg, bb, 1.0);
+                }
+                Call::RasterPos([x, y, z, w]) => (g.glRasterPos4f)(*x, *y, *z, *w),
+                Call::WindowPos([x, y, z]) => (g.glWindowPos3f)(*x, *y, *z),
+                Call::Bitmap {
+                    size: [w, h],
+                    orig,
+                    moves,
+                    bits,
+                } => {
+                    // `bits` holds the rows at the default unpack state; read during the call.
+                    (g.glBitmap)(*w, *h, orig[0], orig[1], moves[0], moves[1], bits.as_ptr())
+                }
+                Call::DrawPixels {
+                    size: [w, h],
+                    kind,
+                    format,
+                    ty,
+                    pixels,
+                } => {
+                    let f = match kind {
+                        DrawKind::Color => format.to_gl(),
+                        DrawKind::Index => 0x1900,        // GL_COLOR_INDEX
+                        DrawKind::Depth => 0x1902,        // GL_DEPTH_COMPONENT
+                        DrawKind::Stencil => 0x1901,      // GL_STENCIL_INDEX
+                        DrawKind::DepthStencil => 0x84F9, // GL_DEPTH_STENCIL
+                    };
+                    // `pixels` holds the image at the default unpack state; read during the call.
+                    (g.glDrawPixels)(*w, *h, f, ty.to_gl(), pixels.as_ptr().cast())
+                }
+                Call::PixelZoom(x, y) => (g.glPixelZoom)(*x, *y),
+                Call::PixelTransfer(p) => {
+                    let (pname, v) = pixel_transfer_gl(*p);
+                    (g.glPixelTransferf)(pname, v)
+                }
+                Call::CopyPixels {
+                    at: [x, y],
+                    size: [w, h],
+                    kind,
+                } => {
+                    let t = match kind {
+                        CopyKind::Color => 0x1800,
+                        CopyKind::Depth => 0x1801,
+                        CopyKind::Stencil => 0x1802,
+                        CopyKind::DepthStencil => 0x84F9,
+                    };
+                    (g.glCopyPixels)(*x, *y, *w, *h, t)
+                }
+                Call::Accum(op, v) => (g.glAccum)(op.to_gl(), *v),
+                Call::ClearAccum([r, gg, bb, a]) => (g.glClearAccum)(*r, *gg, *bb, *a),
+                Call::NewList(name) => (g.glNewList)(*name, GL_COMPILE),
+                Call::EndList => (g.glEndList)(),
+                Call::CallList(name) => (g.glCallList)(*name),
+                Call::ListBase(base) => (g.glListBase)(*base),
+                // Read during the call.
+                Call::CallLists(names) => (g.glCallLists)(names.len() as i32, GL_UNSIGNED_BYTE, names.as_ptr().cast()),
             }
         }
     }
 }
 
+/// A renderbuffer format's GL name (the formats the scenes use; others GL_NONE).
+fn renderbuffer_format_gl(f: RenderbufferFormat) -> u32 {
+    use RenderbufferFormat as F;
+    match f {
+        F::Rgba => 0x1908,
+        F::Rgba8 => 0x8058,
+        F::Rgb => 0x1907,
+        F::Rgb8 => 0x8051,
+        F::Rgb565 => 0x8D62,
+        F::DepthComponent => 0x1902,
+        F::DepthComponent16 => 0x81A5,
+        F::DepthComponent24 => 0x81A6,
+        F::DepthComponent32 => 0x81A7,
+        F::DepthStencil => 0x84F9,
+        F::Depth24Stencil8 => 0x88F0,
+        F::StencilIndex8 => 0x8D48,
+        _ => 0,
+    }
+}
+
+/// An attachment point's GL name.
+fn attachment_gl(p: AttachmentPoint) -> u32 {
+    match p {
+        AttachmentPoint::Color(i) => 0x8CE0 + i,
+        AttachmentPoint::Depth => 0x8D00,
+        AttachmentPoint::Stencil => 0x8D20,
+        AttachmentPoint::DepthStencil => 0x821A,
+    }
+}
+
+/// `glPixelTransferf`'s name and value.
+fn pixel_transfer_gl(p: PixelTransferParam) -> (u32, f32) {
+    use PixelTransferParam as P;
+    let scale = [0x0D14, 0x0D18, 0x0D1A, 0x0D1C];
+    let bias = [0x0D15, 0x0D19, 0x0D1B, 0x0D1D];
+    match p {
+        P::MapColor(on) => (0x0D10, f32::from(u8::from(on))),
+        P::MapStencil(on) => (0x0D11, f32::from(u8::from(on))),
+        P::IndexShift(v) => (0x0D12, v as f32),
+        P::IndexOffset(v) => (0x0D13, v as f32),
+        P::Scale(c, v) => (scale[c.min(3)], v),
+        P::Bias(c, v) => (bias[c.min(3)], v),
+        P::DepthScale(v) => (0x0D1E, v),
+        P::DepthBias(v) => (0x0D1F, v),
+    }
+}
+
 /// Renders a recording in a fresh context: the first frame, then `runs` more.
 pub fn render(mesa: &OsMesa, rec: &Recording, runs: usize) -> (Outcome, String) {
-    let mut ctx = match mesa.context(rec.width, rec.height, rec.color) {
+    let mut ctx = match mesa.context(rec.width, rec.height, rec.color, rec.accum) {
         Ok(c) => c,
         Err(e) => return (Outcome::Failed(e), String::new()),
     };

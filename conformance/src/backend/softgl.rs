@@ -3,7 +3,9 @@
 use super::{Backend, Compiles, Outcome, Timing};
 use crate::call::Call;
 use crate::scenes::Scene;
-use softgl::{Context, FramebufferDesc, GlResult, VertexArrays};
+use softgl::fbo::FramebufferTarget;
+use softgl::{Context, Framebuffer, FramebufferDesc, GlError, GlResult, QueryTarget, VertexArrays};
+use std::collections::HashMap;
 use std::time::Instant;
 
 /// softgl with one fragment back end.
@@ -58,18 +60,19 @@ impl Backend for Softgl {
             color: rec.color,
             ..FramebufferDesc::rgba8_d24s8(rec.width, rec.height)
         };
-        let mut gl = match Context::new(desc) {
+        let mut gl = match context(desc, rec.accum) {
             Ok(gl) => gl,
             Err(e) => return Outcome::Failed(format!("context: {e}")),
         };
         gl.set_backend(self.backend);
         gl.set_ordered_dither(self.dither);
-        let frame = |gl: &mut Context| {
+        let mut lists = Replayer::default();
+        let mut frame = |gl: &mut Context| {
             let t = Instant::now();
             for c in &rec.calls {
                 // GL errors are part of what a scene may provoke; they are
                 // not this harness's business (the API tests pin them).
-                let _ = replay(gl, c);
+                let _ = lists.call(gl, c);
             }
             let image = gl.framebuffer().to_rgba_image();
             (image, t.elapsed())
@@ -92,7 +95,89 @@ impl Backend for Softgl {
     }
 }
 
-/// Makes one call on a softgl context.
+/// A context for `desc`, with an accumulation buffer (16 bits a channel,
+/// as OSMesa gives for any accumulation bits) when `accum`.
+pub fn context(desc: FramebufferDesc, accum: bool) -> GlResult<Context> {
+    if accum {
+        Ok(Context::with_framebuffer(Framebuffer::new(desc)?.with_accum_buffer()?))
+    } else {
+        Context::new(desc)
+    }
+}
+
+/// Display lists, which softgl's Rust API does not have (they are its C
+/// ABI's, `osmesa/src/gl/lists.rs`): the calls between `NewList` and
+/// `EndList` are kept (a `Bitmap`'s bits with them, as GL copies them at
+/// compile time) and replayed by `CallList`/`CallLists`. Every other call
+/// goes to [`replay`].
+#[derive(Debug, Default)]
+pub struct Replayer {
+    lists: HashMap<u32, Vec<Call>>,
+    compiling: Option<(u32, Vec<Call>)>,
+    base: u32,
+    depth: usize,
+}
+
+/// GL's `GL_MAX_LIST_NESTING` (Mesa's is 64).
+const MAX_LIST_NESTING: usize = 64;
+
+impl Replayer {
+    /// Makes (or, inside `NewList`…`EndList`, compiles) one call.
+    pub fn call(&mut self, gl: &mut Context, c: &Call) -> GlResult {
+        if let Some((_, list)) = &mut self.compiling {
+            return match c {
+                Call::EndList => {
+                    let (name, list) = self.compiling.take().expect("compiling");
+                    self.lists.insert(name, list);
+                    Ok(())
+                }
+                Call::NewList(_) => Err(GlError::InvalidOperation),
+                _ => {
+                    list.push(c.clone());
+                    Ok(())
+                }
+            };
+        }
+        match c {
+            Call::NewList(0) => Err(GlError::InvalidValue),
+            Call::NewList(name) => {
+                self.compiling = Some((*name, Vec::new()));
+                Ok(())
+            }
+            Call::EndList => Err(GlError::InvalidOperation),
+            Call::CallList(name) => self.call_list(gl, *name),
+            Call::ListBase(b) => {
+                self.base = *b;
+                Ok(())
+            }
+            Call::CallLists(names) => {
+                for &n in names {
+                    self.call_list(gl, self.base.wrapping_add(u32::from(n)))?;
+                }
+                Ok(())
+            }
+            _ => replay(gl, c),
+        }
+    }
+
+    fn call_list(&mut self, gl: &mut Context, name: u32) -> GlResult {
+        if self.depth >= MAX_LIST_NESTING {
+            return Ok(());
+        }
+        let Some(list) = self.lists.get(&name).cloned() else {
+            return Ok(());
+        };
+        self.depth += 1;
+        for c in &list {
+            let _ = self.call(gl, c);
+        }
+        self.depth -= 1;
+        Ok(())
+    }
+}
+
+/// Makes one call on a softgl context (display-list calls are
+/// [`Replayer`]'s: here they are `InvalidOperation`).
 pub fn replay(gl: &mut Context, c: &Call) -> GlResult {
     match c {
         Call::Enable(cap) => gl.enable(*cap),
@@ -197,5 +282,118 @@ pub fn replay(gl: &mut Context, c: &Call) -> GlResult {
             let col: &[f32] = colors.as_flattened();
             gl.draw_arrays(*mode, 0, positions.len(), &VertexArrays::with_colors(4, pos, 4, col))
         }
+        Call::BindFramebuffer(t, name) => gl.bind_framebuffer(*t, *name),
+        Call::BindRenderbuffer(name) => gl.bind_renderbuffer(*name),
+        Call::RenderbufferStorage {
+            samples,
+            format,
+            size: [w, h],
+        } => {
+            // The C ABI's checks before the Rust call (`osmesa/src/gl/fbo.rs`).
+            if *samples > softgl::fbo::MAX_SAMPLES as i32 {
+                return recorded(gl, Err(GlError::InvalidOperation));
+            }
+            gl.renderbuffer_storage(*samples, *format, *w, *h)
+        }
+        Call::FramebufferRenderbuffer(t, p, name) => gl.framebuffer_renderbuffer(*t, *p, *name),
+        Call::FramebufferTexture2D(t, p, target, name, level) => {
+            gl.framebuffer_texture(*t, *p, Some(*target), *name, *level, 0)
+        }
+        Call::BlitFramebuffer { src, dst, mask, filter } => {
+            // The C ABI checks completeness first, as Mesa's `main/blit.c`.
+            if !gl.framebuffers_complete() {
+                return recorded(gl, Err(GlError::InvalidFramebufferOperation));
+            }
+            gl.blit_framebuffer(*src, *dst, *mask, *filter)
+        }
+        Call::GenerateMipmap(t) => gl.generate_mipmap(*t),
+        Call::DeleteFramebuffer(name) => gl.delete_framebuffers(&[*name]),
+        Call::DeleteRenderbuffer(name) => gl.delete_renderbuffers(&[*name]),
+        Call::DeleteTexture(name) => {
+            gl.delete_textures(&[*name]);
+            Ok(())
+        }
+        Call::BeginQuery(name) => {
+            let r = gl.queries_mut().begin(QueryTarget::SamplesPassed, *name);
+            recorded(gl, r)
+        }
+        Call::EndQuery => {
+            let r = gl.queries_mut().end(QueryTarget::SamplesPassed);
+            recorded(gl, r)
+        }
+        Call::ClearColorFromQuery(name) => {
+            let n = gl.query_result(*name)?;
+            let [r, g, b] = query_color(n);
+            gl.clear_color(r, g, b, 1.0)
+        }
+        Call::RasterPos([x, y, z, w]) => gl.raster_pos(*x, *y, *z, *w),
+        Call::WindowPos([x, y, z]) => gl.window_pos(*x, *y, *z),
+        Call::Bitmap {
+            size: [w, h],
+            orig,
+            moves,
+            bits,
+        } => {
+            let image = softgl::pixel_rect::BitmapImage::unpack(*w, *h, bits, &softgl::PixelStore::default());
+            let image = recorded(gl, image)?;
+            gl.bitmap(&image, *orig, *moves)
+        }
+        Call::DrawPixels {
+            size: [w, h],
+            kind,
+            format,
+            ty,
+            pixels,
+        } => {
+            use softgl::pixel_rect::DrawKind;
+            // The format the C ABI hands on for each kind (`draw_format`).
+            let format = match kind {
+                DrawKind::Color => *format,
+                DrawKind::DepthStencil => softgl::PixelFormat::DepthStencil,
+                _ => softgl::PixelFormat::DepthComponent,
+            };
+            let data = softgl::PixelData {
+                format,
+                ty: *ty,
+                store: softgl::PixelStore::default(),
+                bytes: pixels,
+            };
+            gl.draw_pixels(*w, *h, *kind, &data)
+        }
+        Call::PixelZoom(x, y) => gl.pixel_zoom(*x, *y),
+        Call::PixelTransfer(p) => gl.pixel_transfer(*p),
+        Call::CopyPixels {
+            at: [x, y],
+            size: [w, h],
+            kind,
+        } => gl.copy_pixels(*x, *y, *w, *h, *kind),
+        Call::Accum(op, v) => gl.accum(*op, *v),
+        Call::ClearAccum([r, g, b, a]) => gl.clear_accum(*r, *g, *b, *a),
+        Call::NewList(_) | Call::EndList | Call::CallList(_) | Call::ListBase(_) | Call::CallLists(_) => {
+            Err(GlError::InvalidOperation)
+        }
+    }
+}
+
+/// `r`, its error recorded for `glGetError` as the C ABI records it.
+fn recorded<T>(gl: &mut Context, r: GlResult<T>) -> GlResult<T> {
+    if let Err(e) = &r {
+        gl.record_error(*e);
+    }
+    r
+}
+
+/// The clear colour that writes count `n` into a pixel: its low three
+/// bytes as red, green and blue (exact: `b / 255` converts back to `b`).
+pub fn query_color(n: u64) -> [f32; 3] {
+    [0, 8, 16].map(|s| ((n >> s) & 0xff) as f32 / 255.0)
+}
+
+/// `FramebufferTarget` as GL names it.
+pub fn framebuffer_target_gl(t: FramebufferTarget) -> u32 {
+    match t {
+        FramebufferTarget::Both => 0x8D40,
+        FramebufferTarget::Draw => 0x8CA9,
+        FramebufferTarget::Read => 0x8CA8,
     }
 }

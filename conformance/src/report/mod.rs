@@ -517,3 +517,30 @@ fn markdown(
     );
     o
 }
+
+/// Prints the pixels where softgl's JIT differs from llvmpipe on `scene`
+/// (window coordinates, y up), at most `max` of them, and their count.
+pub fn diff_pixels(exe: &Path, scene: &str, full: bool, max: usize) -> Result<(), String> {
+    let s = scenes::by_name(scene).ok_or_else(|| format!("no scene {scene}"))?;
+    let mut mesa = External::new(Reference::Llvmpipe, exe);
+    let mut jit = backend::softgl::Softgl::new(softgl::Backend::Jit);
+    let image = |o: Outcome| match o {
+        Outcome::Rendered { image, .. } => Ok(image),
+        other => Err(format!("{other:?}")),
+    };
+    let reference = image(mesa.render(&s, full, 0))?;
+    let got = image(jit.render(&s, full, 0))?;
+    let h = reference.height();
+    let mut n = 0;
+    for (x, y, p) in reference.enumerate_pixels() {
+        let q = got.get_pixel(x, y);
+        if p != q {
+            if n < max {
+                println!("({x}, {}) llvmpipe {:?} softgl {:?}", h - 1 - y, p.0, q.0);
+            }
+            n += 1;
+        }
+    }
+    println!("{n} pixels differ");
+    Ok(())
+}

@@ -5,9 +5,11 @@
 
 mod combos;
 mod fog;
+mod framebuffers;
 pub mod glu;
 mod lighting;
 pub mod oracle;
+mod pixels;
 mod primitives;
 mod stages;
 mod stiff;
@@ -106,11 +108,15 @@ pub enum Group {
     Lighting,
     /// Texturing (issue 12).
     Texture,
+    /// Framebuffer objects, blits, multisample resolve, occlusion queries (issue 14).
+    Framebuffer,
+    /// Raster position, bitmaps, pixel rectangles, the accumulation buffer (issue 14).
+    Pixels,
 }
 
 impl Group {
     /// Every group, in the report's order.
-    pub const ALL: [Group; 8] = [
+    pub const ALL: [Group; 10] = [
         Group::Stage,
         Group::Combination,
         Group::Primitive,
@@ -119,6 +125,8 @@ impl Group {
         Group::Fog,
         Group::Lighting,
         Group::Texture,
+        Group::Framebuffer,
+        Group::Pixels,
     ];
 
     pub fn name(self) -> &'static str {
@@ -131,6 +139,8 @@ impl Group {
             Group::Fog => "fog and colour sum",
             Group::Lighting => "lighting and clip planes",
             Group::Texture => "texturing",
+            Group::Framebuffer => "framebuffer objects and queries",
+            Group::Pixels => "bitmaps and pixel paths",
         }
     }
 }
@@ -174,6 +184,8 @@ pub struct Scene {
     pub test_size: (u32, u32),
     /// The colour buffer's format (RGBA8 unless the scene says otherwise).
     pub color: ColorFormat,
+    /// Whether the window has an accumulation buffer (OSMesa's 16 bits a channel).
+    pub accum: bool,
     build: fn(&mut Rec, Size),
 }
 
@@ -183,6 +195,8 @@ pub struct Recording {
     pub width: u32,
     pub height: u32,
     pub color: ColorFormat,
+    /// An accumulation buffer with the window.
+    pub accum: bool,
     pub calls: Vec<crate::call::Call>,
 }
 
@@ -196,8 +210,15 @@ impl Scene {
             full_size: (256, 256),
             test_size: (96, 96),
             color: ColorFormat::Rgba8,
+            accum: false,
             build,
         }
+    }
+
+    /// The same scene with an accumulation buffer.
+    const fn with_accum(mut self) -> Scene {
+        self.accum = true;
+        self
     }
 
     /// The same scene rendered into a `color` buffer.
@@ -243,6 +264,7 @@ impl Scene {
             width: w,
             height: h,
             color: self.color,
+            accum: self.accum,
             calls: r.calls,
         }
     }
@@ -312,9 +334,13 @@ pub fn all() -> Vec<Scene> {
     v.extend(combos::scenes());
     v.extend(primitives::scenes());
     v.extend(stiff::scenes());
+    v.extend(framebuffers::stiff_scenes());
+    v.extend(pixels::stiff_scenes());
     v.extend(fog::scenes());
     v.extend(lighting::scenes());
     v.extend(texture::scenes());
+    v.extend(framebuffers::scenes());
+    v.extend(pixels::scenes());
     v.extend(timing::scenes());
     v
 }

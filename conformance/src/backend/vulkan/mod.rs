@@ -81,6 +81,7 @@ mod tests {
             width: 8,
             height: 8,
             color: softgl::ColorFormat::Rgba8,
+            accum: false,
             calls: r.calls,
         }
     }

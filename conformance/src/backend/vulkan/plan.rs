@@ -471,6 +471,33 @@ pub(super) fn plan(rec: &Recording) -> Result<Plan, String> {
                 st.batch = positions.iter().copied().zip(colors.iter().copied()).collect();
                 flush(&mut st, *mode, &mut plan)?;
             }
+            Call::BindFramebuffer(..)
+            | Call::BindRenderbuffer(_)
+            | Call::RenderbufferStorage { .. }
+            | Call::FramebufferRenderbuffer(..)
+            | Call::FramebufferTexture2D(..)
+            | Call::BlitFramebuffer { .. }
+            | Call::GenerateMipmap(_)
+            | Call::DeleteFramebuffer(_)
+            | Call::DeleteRenderbuffer(_)
+            | Call::DeleteTexture(_) => return Err("framebuffer objects and blits are not planned for Vulkan".into()),
+            Call::BeginQuery(_) | Call::EndQuery | Call::ClearColorFromQuery(_) => {
+                return Err("occlusion queries are not planned for Vulkan".into())
+            }
+            Call::RasterPos(_)
+            | Call::WindowPos(_)
+            | Call::Bitmap { .. }
+            | Call::DrawPixels { .. }
+            | Call::PixelZoom(..)
+            | Call::PixelTransfer(_)
+            | Call::CopyPixels { .. }
+            | Call::Accum(..)
+            | Call::ClearAccum(_) => {
+                return Err("raster position, pixel rectangles and the accumulation buffer: GL 1.x only".into())
+            }
+            Call::NewList(_) | Call::EndList | Call::CallList(_) | Call::ListBase(_) | Call::CallLists(_) => {
+                return Err("display lists: GL 1.x only".into())
+            }
         }
     }
     Ok(plan)
