@@ -311,9 +311,9 @@ fn bitmap_far_offscreen(r: &mut Rec, s: Size) {
     r.call(Call::WindowPos([15.0, -3e9, 0.0]))
         .call(bm([0.0, 0.0], [0.0, 3e9 + 40.0]))
         .call(bm([0.0, 0.0], [0.0, 0.0]));
-    // Not here yet: `WindowPos(1e30, 1e30)` then a bitmap panics in softgl's debug
-    // builds (`PlacedBitmap::rect`, src/pixel_rect.rs, adds the width to an x
-    // saturated at i64::MAX); reported with issue 14's conformance scenes.
+    // At 1e30 the window position saturates; the bitmap's extent must too.
+    r.call(Call::WindowPos([1e30, 1e30, 0.0]))
+        .call(bm([0.0, 0.0], [0.0, 0.0]));
     // Origins putting the bitmap across the edges.
     r.color(1.0, 0.0, 1.0, 1.0)
         .call(Call::RasterPos([2.0, 2.0, 0.0, 1.0]))
