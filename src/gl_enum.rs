@@ -454,6 +454,8 @@ gl_enums! {
         CompressedRgba = GL_COMPRESSED_RGBA 0x84EE,
         DepthStencil = GL_DEPTH_STENCIL 0x84F9,
         Depth24Stencil8 = GL_DEPTH24_STENCIL8 0x88F0,
+        DepthComponent32F = GL_DEPTH_COMPONENT32F 0x8CAC,
+        Depth32FStencil8 = GL_DEPTH32F_STENCIL8 0x8CAD,
         Srgb = GL_SRGB 0x8C40,
         Srgb8 = GL_SRGB8 0x8C41,
         SrgbAlpha = GL_SRGB_ALPHA 0x8C42,

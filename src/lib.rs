@@ -21,6 +21,7 @@
 
 pub mod accum;
 pub mod buffer;
+pub mod clip_control;
 pub mod context;
 pub mod demo;
 pub mod error;
@@ -47,6 +48,7 @@ pub mod texture;
 pub mod tracked;
 
 pub use accum::{AccumBuffer, AccumOp};
+pub use clip_control::{ClipControl, ClipDepthMode, ClipOrigin};
 pub use buffer::{Buffer, BufferAccess, BufferParamName, BufferStore, BufferTarget, BufferUsage};
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, SceneStats, VertexArrays};
 pub use error::{GlError, GlResult};

@@ -99,9 +99,13 @@ fn level_index(target: TexTarget, level: i32) -> GlResult<usize> {
 fn read_source(fb: &Framebuffer, depth: bool, x: i32, y: i32) -> Option<[Raw; 4]> {
     let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
     if depth {
-        let bits = fb.depth_format()?.max_value().count_ones();
+        let format = fb.depth_format()?;
         let z = fb.depth_at(x, y)?;
-        Some([Raw::U(z, bits), Raw::ZERO, Raw::ZERO, Raw::ONE])
+        let d = match format {
+            softgl_jit::DepthFormat::D32F => Raw::F(f32::from_bits(z)),
+            f => Raw::U(z, f.bits()),
+        };
+        Some([d, Raw::ZERO, Raw::ZERO, Raw::ONE])
     } else {
         Some(fb.pixel(x, y)?.map(|c| Raw::U(u32::from(c), 8)))
     }

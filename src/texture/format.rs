@@ -104,6 +104,10 @@ pub enum InternalFormat {
     /// `Z24_UNORM_S8_UINT` (24 depth bits, 8 stencil bits).
     DepthStencil,
     Depth24Stencil8,
+    /// ARB_depth_buffer_float: 32-bit float depth (llvmpipe's `Z32_FLOAT`),
+    /// and with stencil (`Z32_FLOAT_S8X24_UINT`).
+    DepthComponent32F,
+    Depth32FStencil8,
     Srgb,
     Srgb8,
     SrgbAlpha,
@@ -131,6 +135,8 @@ pub struct Storage {
     /// Bits of R, G, B, A (0 for a channel the base format lacks); depth formats: `[d, 0, 0, 0]`.
     pub bits: [u32; 4],
     pub srgb: bool,
+    /// Float depth (`GL_DEPTH_COMPONENT32F`): the texels are the stored floats.
+    pub float: bool,
 }
 
 impl Storage {
@@ -225,19 +231,32 @@ impl InternalFormat {
             }
             F::DepthComponent16 => (B::Depth, [16, 0, 0, 0], false),
             F::DepthComponent32 => (B::Depth, [32, 0, 0, 0], false),
+            F::DepthComponent32F | F::Depth32FStencil8 => {
+                return Storage {
+                    base: B::Depth,
+                    bits: [32, 0, 0, 0],
+                    srgb: false,
+                    float: true,
+                }
+            }
             F::Srgb | F::Srgb8 => (B::Rgb, [8, 8, 8, 0], true),
             F::SrgbAlpha | F::Srgb8Alpha8 => (B::Rgba, [8, 8, 8, 8], true),
             F::Sluminance | F::Sluminance8 => (B::Luminance, [8, 0, 0, 0], true),
             F::SluminanceAlpha | F::Sluminance8Alpha8 => (B::LuminanceAlpha, [8, 0, 0, 8], true),
         };
-        Storage { base, bits, srgb }
+        Storage {
+            base,
+            bits,
+            srgb,
+            float: false,
+        }
     }
 
     /// The stencil bits of a packed depth-stencil format (0 for the others):
     /// kept in a plane of bytes after the depth texels ([`TexImage::stencil_offset`](super::TexImage::stencil_offset)).
     pub fn stencil_bits(self) -> u32 {
         match self {
-            InternalFormat::DepthStencil | InternalFormat::Depth24Stencil8 => 8,
+            InternalFormat::DepthStencil | InternalFormat::Depth24Stencil8 | InternalFormat::Depth32FStencil8 => 8,
             _ => 0,
         }
     }

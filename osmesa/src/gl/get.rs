@@ -173,7 +173,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D53 => i(color_bits(1)),
         0x0D54 => i(color_bits(2)),
         0x0D55 => i(color_bits(3)),
-        0x0D56 => i(fb.depth_format().map_or(0, |f| f.max_value().count_ones())), // DEPTH_BITS
+        0x0D56 => i(fb.depth_format().map_or(0, |f| f.bits())), // DEPTH_BITS
         0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }),                        // STENCIL_BITS
         0x0D58..=0x0D5B => i(if fb.has_accum() {
             i64::from(softgl::accum::ACCUM_BITS)
