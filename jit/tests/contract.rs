@@ -839,6 +839,7 @@ impl OwnedTexture {
             max_lod: self.lods[1],
             lod_bias: self.lods[2],
             border: self.border,
+            float_depth: false,
         }
     }
 }

@@ -1132,7 +1132,15 @@ fn float_depth_and_clip_control_match_mesa() {
     // Colour of every scene (reverse Z into DEPTH32F_STENCIL8, GL_UPPER_LEFT
     // with culling, polygon offset with a depth range, plain GL depth), and
     // the float shadow map sampled with compare: byte for byte.
-    for name in ["reverse.rgba", "upper.rgba", "offset.rgba", "plain.rgba", "shadow.sampled"] {
+    for name in [
+        "reverse.rgba",
+        "upper.rgba",
+        "offset.rgba",
+        "plain.rgba",
+        "shadow.sampled",
+        "shadow.outside.gequal",
+        "shadow.outside.less",
+    ] {
         assert_eq!(soft.file(name), mesa.file(name), "{name}");
     }
     // A DEPTH_COMPONENT32F texture's upload (clamped) and readback as

@@ -330,6 +330,26 @@ int main(int argc, char **argv) {
     glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     dump("shadow.sampled", rgba, sizeof rgba);
     printf("shadow sampled 0x%04x\n", glGetError());
+    /* References outside [0, 1] (a float texture's are not clamped) and the
+     * border (neither), with GEQUAL and LESS. */
+    static const GLfloat border[4] = {1.25f, 0.5f, 0.5f, 1};
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+    glEnable(GL_TEXTURE_2D);
+    for (int k = 0; k < 2; k++) {
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, k ? GL_LESS : GL_GEQUAL);
+      glBegin(GL_QUADS);
+      glTexCoord3f(-0.25f, -0.25f, -0.5f); glVertex2f(-1, -1);
+      glTexCoord3f(1.25f, -0.25f, 0.5f); glVertex2f(1, -1);
+      glTexCoord3f(1.25f, 1.25f, 1.5f); glVertex2f(1, 1);
+      glTexCoord3f(-0.25f, 1.25f, 1.3f); glVertex2f(-1, 1);
+      glEnd();
+      glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+      dump(k ? "shadow.outside.less" : "shadow.outside.gequal", rgba, sizeof rgba);
+    }
+    glDisable(GL_TEXTURE_2D);
+    printf("shadow outside 0x%04x\n", glGetError());
   }
 
   /* 10. Format/type errors of the float depth-stencil transfer type. */
