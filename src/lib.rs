@@ -48,8 +48,8 @@ pub mod texture;
 pub mod tracked;
 
 pub use accum::{AccumBuffer, AccumOp};
-pub use clip_control::{ClipControl, ClipDepthMode, ClipOrigin};
 pub use buffer::{Buffer, BufferAccess, BufferParamName, BufferStore, BufferTarget, BufferUsage};
+pub use clip_control::{ClipControl, ClipDepthMode, ClipOrigin};
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, SceneStats, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fog::{FogCoordSrc, FogMode, FogParam};

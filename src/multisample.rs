@@ -327,9 +327,7 @@ impl Framebuffer {
                     (DepthBuffer::D16(a), DepthTarget::D16(b)) => b.copy_from_slice(a),
                     (DepthBuffer::D24(a), DepthTarget::D24(b))
                     | (DepthBuffer::D32(a), DepthTarget::D32(b))
-                    | (DepthBuffer::D32F(a), DepthTarget::D32F(b)) => {
-                        b.copy_from_slice(a)
-                    }
+                    | (DepthBuffer::D32F(a), DepthTarget::D32F(b)) => b.copy_from_slice(a),
                     _ => return Err(GlError::InvalidOperation),
                 }
             }

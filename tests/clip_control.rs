@@ -22,7 +22,11 @@ fn float_depth_context(w: u32, h: u32) -> Context {
     })
     .unwrap();
     assert_eq!(gl.framebuffer().depth_format(), Some(DepthFormat::D32F));
-    assert_eq!(gl.framebuffer().depth_at(0, 0), Some(1.0f32.to_bits()), "cleared to 1.0");
+    assert_eq!(
+        gl.framebuffer().depth_at(0, 0),
+        Some(1.0f32.to_bits()),
+        "cleared to 1.0"
+    );
     gl.enable(Capability::DepthTest).unwrap();
     gl.depth_func(CompareFunc::Always).unwrap();
     gl
@@ -113,7 +117,11 @@ fn upper_left_flips_y_and_keeps_facing() {
         gl.end().unwrap();
         gl.flush().unwrap();
         let fb = gl.framebuffer();
-        assert_eq!(fb.pixel(4, red_row), Some([255, 0, 0, 255]), "origin {origin:#x}: front, drawn");
+        assert_eq!(
+            fb.pixel(4, red_row),
+            Some([255, 0, 0, 255]),
+            "origin {origin:#x}: front, drawn"
+        );
         assert_eq!(fb.pixel(4, 7 - red_row), Some([0, 0, 0, 0]), "origin {origin:#x}");
     }
 }

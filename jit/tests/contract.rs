@@ -57,7 +57,9 @@ fn blend_key() -> impl Strategy<Value = BlendKey> {
 fn key() -> impl Strategy<Value = FragmentKey> {
     let buffers = (
         select(&COLOR_FORMATS[..]),
-        prop::option::of(select(&[DepthFormat::D16, DepthFormat::D24, DepthFormat::D32, DepthFormat::D32F][..])),
+        prop::option::of(select(
+            &[DepthFormat::D16, DepthFormat::D24, DepthFormat::D32, DepthFormat::D32F][..],
+        )),
         any::<bool>(),
     );
     let stencil = prop::option::of((compare(), stencil_op(), stencil_op(), stencil_op()));
@@ -197,7 +199,10 @@ impl Buffers {
             Some(DepthFormat::D16) => depth16 = Some((0..n).map(|_| rng.depth(0xffff) as u16).collect()),
             // Float depth: any bits up to 1.0's are a float in [0, 1].
             Some(f @ DepthFormat::D32F) => {
-                depth32 = Some((f, (0..n).map(|_| rng.depth(f.max_value()) % (f.max_value() + 1)).collect()))
+                depth32 = Some((
+                    f,
+                    (0..n).map(|_| rng.depth(f.max_value()) % (f.max_value() + 1)).collect(),
+                ))
             }
             Some(f) => depth32 = Some((f, (0..n).map(|_| rng.depth(f.max_value()) & f.max_value()).collect())),
             None => {}

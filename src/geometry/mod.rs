@@ -28,7 +28,9 @@ use crate::raster::{self, PrimSink, RasterParams, RasterVertex};
 use crate::state::{FrontFace, PolygonMode, RasterState, ShadeModel};
 use assemble::{assemble, Primitive, QuadSplit};
 use batch::{VertexBatch, VertexStage};
-use clip::{clip_polygon, clip_polygon_user, clip_segment, guard_levels, outcode_in, ClipVertex, PolyVertex, UserPlanes};
+use clip::{
+    clip_polygon, clip_polygon_user, clip_segment, guard_levels, outcode_in, ClipVertex, PolyVertex, UserPlanes,
+};
 use glam::{Vec3, Vec4};
 use varying::{copy_slots, VaryingLayout, Varyings};
 
@@ -247,7 +249,11 @@ impl<'s> Geometry<'s> {
         let y_scale = state.clip_control.y_scale(vh as f32);
         let viewport = Viewport {
             scale: [vw as f32 / 2.0, y_scale, z_scale],
-            translate: [vp.x as f32 + vw as f32 / 2.0, vp.y as f32 + vh as f32 / 2.0, z_translate],
+            translate: [
+                vp.x as f32 + vw as f32 / 2.0,
+                vp.y as f32 + vh as f32 / 2.0,
+                z_translate,
+            ],
             flipped_y: (-y_scale, (fb.height() as f32 - vp.y as f32) - vh as f32 / 2.0),
             wide: [(0.0, 0.0); 4],
             pow2: [false; 4],
@@ -634,7 +640,9 @@ impl<'s> Geometry<'s> {
     fn line(&self, a: &ClipVertex, b: &ClipVertex, flat: Option<Varyings>, sink: &mut dyn PrimSink) {
         let n = self.layout.len();
         let f = self.layout.finite_len();
-        if !(a.is_finite(f) && b.is_finite(f)) || outcode_in(a.pos, 1.0, self.half_z) & outcode_in(b.pos, 1.0, self.half_z) != 0 {
+        if !(a.is_finite(f) && b.is_finite(f))
+            || outcode_in(a.pos, 1.0, self.half_z) & outcode_in(b.pos, 1.0, self.half_z) != 0
+        {
             return;
         }
         if self.user.code(a.pos) & self.user.code(b.pos) != 0 {
@@ -713,7 +721,9 @@ impl<'s> Geometry<'s> {
         clipped.extend_from_slice(&poly);
         let mut was_clipped = false;
         for &g in guard_levels(poly.iter().map(|(v, _)| v)) {
-            let planes = clipped.iter().fold(0, |acc, (v, _)| acc | outcode_in(v.pos, g, self.half_z));
+            let planes = clipped
+                .iter()
+                .fold(0, |acc, (v, _)| acc | outcode_in(v.pos, g, self.half_z));
             if planes != 0 {
                 clip_polygon(clipped, out, planes, g, n);
                 was_clipped = true;
