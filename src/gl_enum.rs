@@ -585,6 +585,6 @@ mod tests {
             round_trip::<TexParamName>(),
             round_trip::<TexLevelParamName>(),
         ];
-        assert_eq!(counts, [4, 2, 5, 3, 12, 20, 62, 17, 14]);
+        assert_eq!(counts, [4, 2, 5, 3, 12, 20, 64, 17, 14]);
     }
 }
