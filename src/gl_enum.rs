@@ -398,6 +398,7 @@ gl_enums! {
         UnsignedInt8888Rev = GL_UNSIGNED_INT_8_8_8_8_REV 0x8367,
         UnsignedInt2101010Rev = GL_UNSIGNED_INT_2_10_10_10_REV 0x8368,
         UnsignedInt248 = GL_UNSIGNED_INT_24_8 0x84FA,
+        Float32UnsignedInt248Rev = GL_FLOAT_32_UNSIGNED_INT_24_8_REV 0x8DAD,
     }
     InternalFormat {
         One = GL_1 0x0001,
@@ -585,6 +586,6 @@ mod tests {
             round_trip::<TexParamName>(),
             round_trip::<TexLevelParamName>(),
         ];
-        assert_eq!(counts, [4, 2, 5, 3, 12, 20, 64, 17, 14]);
+        assert_eq!(counts, [4, 2, 5, 3, 12, 21, 64, 17, 14]);
     }
 }

@@ -1146,9 +1146,31 @@ fn float_depth_and_clip_control_match_mesa() {
     // A DEPTH_COMPONENT32F texture's upload (clamped) and readback as
     // GL_FLOAT and GL_UNSIGNED_INT, and glDrawPixels/glCopyPixels of float
     // depth: exact.
-    for name in ["tex.get.zf", "tex.get.zui", "pixels.zf"] {
+    // GL_FLOAT_32_UNSIGNED_INT_24_8_REV into DEPTH32F_STENCIL8 and
+    // DEPTH24_STENCIL8 textures, read back both ways, and drawn with glDrawPixels.
+    for name in [
+        "tex.get.zf",
+        "tex.get.zui",
+        "pixels.zf",
+        "tex32f.get.ds2",
+        "tex32f.get.ds",
+        "drawpix.ds2",
+    ] {
         assert_eq!(soft.file(name), mesa.file(name), "{name}");
     }
+    // Into DEPTH24_STENCIL8: stencil exact, depth within one unit of 2^24 (softgl
+    // keeps Z24 texels as the floats the sampler reads, where neighbouring
+    // values can share one: `unpack::depth_unsampled`).
+    let (a, b) = (soft.u32s("tex24.get.ds"), mesa.u32s("tex24.get.ds"));
+    assert!(a
+        .iter()
+        .zip(&b)
+        .all(|(x, y)| x & 0xff == y & 0xff && (x >> 8).abs_diff(y >> 8) <= 1));
+    let (a, b) = (soft.u32s("tex24.get.ds2"), mesa.u32s("tex24.get.ds2"));
+    assert!(a
+        .chunks(2)
+        .zip(b.chunks(2))
+        .all(|(x, y)| x[1] == y[1] && x[0].abs_diff(y[0]) <= 1));
     // Depth of sloped triangles: softgl's plane evaluation is within 4 units
     // of 2^-24 of llvmpipe's f32 (measured ≤ 2.4e-7; the same difference that
     // 24-bit depth shows as ≤ 2 units, see `packed_depth_stencil_matches_mesa`).

@@ -48,6 +48,9 @@ pub enum PixelType {
     UnsignedInt2101010Rev,
     /// `GL_UNSIGNED_INT_24_8`: depth in the top 24 bits, stencil in the low 8.
     UnsignedInt248,
+    /// `GL_FLOAT_32_UNSIGNED_INT_24_8_REV` (ARB_depth_buffer_float): depth as
+    /// an f32, then a word with stencil in its low 8 bits (two 4-byte elements).
+    Float32UnsignedInt248Rev,
 }
 
 /// A GL internal format (`internalformat` of `glTexImage`, `glCopyTexImage`).
@@ -286,7 +289,7 @@ impl PixelType {
             T::Short => Signed(16),
             T::UnsignedInt => Unsigned(32),
             T::Int => Signed(32),
-            T::Float => TypeKind::Float,
+            T::Float | T::Float32UnsignedInt248Rev => TypeKind::Float,
             T::UnsignedByte332 => Packed(1, &[(5, 3), (2, 3), (0, 2)]),
             T::UnsignedByte233Rev => Packed(1, &[(0, 3), (3, 3), (6, 2)]),
             T::UnsignedShort565 => Packed(2, &[(11, 5), (5, 6), (0, 5)]),
@@ -347,7 +350,7 @@ impl PixelFormat {
             | T::UnsignedShort1555Rev
             | T::UnsignedInt1010102
             | T::UnsignedInt2101010Rev => matches!(self, PixelFormat::Rgba | PixelFormat::Bgra),
-            T::UnsignedInt248 => self == PixelFormat::DepthStencil,
+            T::UnsignedInt248 | T::Float32UnsignedInt248Rev => self == PixelFormat::DepthStencil,
             _ => true,
         }
     }
@@ -356,7 +359,8 @@ impl PixelFormat {
     /// §4.3.1, `GL_DEPTH_STENCIL` takes only `GL_UNSIGNED_INT_24_8` (Mesa
     /// `_mesa_error_check_format_and_type`).
     pub fn type_enum_ok(self, ty: PixelType) -> bool {
-        self != PixelFormat::DepthStencil || ty == PixelType::UnsignedInt248
+        self != PixelFormat::DepthStencil
+            || matches!(ty, PixelType::UnsignedInt248 | PixelType::Float32UnsignedInt248Rev)
     }
 
     /// Depth or depth-stencil (they agree with the same internal formats:

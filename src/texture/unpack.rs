@@ -279,6 +279,12 @@ pub fn fetch(bytes: &[u8], at: usize, format: PixelFormat, ty: PixelType, swap: 
             out[slot] = v;
         }
     };
+    if ty == PixelType::Float32UnsignedInt248Rev {
+        // The depth float, then the stencil in the next word's low byte.
+        out[0] = Raw::F(f32::from_bits(read_le(&bytes[at..], 4, swap)));
+        out[1] = Raw::U(read_le(&bytes[at + 4..], 4, swap) & 0xff, 8);
+        return out;
+    }
     match ty.kind() {
         TypeKind::Packed(n, fields) => {
             let v = read_le(&bytes[at..], n as usize, swap);
@@ -632,6 +638,13 @@ pub fn download(img: &TexImage, format: PixelFormat, ty: PixelType, swap: bool, 
                 if base == BaseFormat::Depth {
                     let Some(Raw::F(d)) = ch[0] else { continue };
                     let bits = storage.bits[0];
+                    if format == PixelFormat::DepthStencil && ty == PixelType::Float32UnsignedInt248Rev {
+                        // The float the sampler reads, then the stencil word (`z32f_x24s8`).
+                        let s = img.texels[img.stencil_offset(x, y, z)];
+                        write_ne(&mut out[at..], d.to_bits(), 4, swap);
+                        write_ne(&mut out[at + 4..], u32::from(s), 4, swap);
+                        continue;
+                    }
                     if storage.float {
                         // Z32_FLOAT(_S8X24_UINT) read back: the floats (packed as `ty` says),
                         // with stencil `(uint32_t)(z · 0xffffff) << 8 | s` (u_format_zs.c).

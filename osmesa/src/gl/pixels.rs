@@ -57,8 +57,16 @@ fn pixel_store(pname: GLenum, param: i32) {
 /// format `GL_INVALID_ENUM` (`GL_BITMAP` too: no texture or colour format takes it).
 pub(super) fn pixel_size(format: GLenum, ty: GLenum) -> GlResult<(usize, usize)> {
     // GL_DEPTH_STENCIL takes GL_UNSIGNED_INT_24_8 only, checked first (GL 3.0 §4.3.1).
-    if format == GL_DEPTH_STENCIL && ty != GL_UNSIGNED_INT_24_8 {
+    if format == GL_DEPTH_STENCIL && !matches!(ty, GL_UNSIGNED_INT_24_8 | GL_FLOAT_32_UNSIGNED_INT_24_8_REV) {
         return Err(GlError::InvalidEnum);
+    }
+    if ty == GL_FLOAT_32_UNSIGNED_INT_24_8_REV {
+        // Two 4-byte elements: the depth float and the stencil word.
+        return if format == GL_DEPTH_STENCIL {
+            Ok((8, 4))
+        } else {
+            Err(GlError::InvalidOperation)
+        };
     }
     let packed = match ty {
         GL_UNSIGNED_INT_24_8 => Some((4, [GL_DEPTH_STENCIL, GL_DEPTH_STENCIL])),

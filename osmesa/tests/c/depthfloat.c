@@ -352,7 +352,48 @@ int main(int argc, char **argv) {
     printf("shadow outside 0x%04x\n", glGetError());
   }
 
-  /* 10. Format/type errors of the float depth-stencil transfer type. */
+  /* 10. GL_FLOAT_32_UNSIGNED_INT_24_8_REV uploads: DEPTH32F_STENCIL8 and
+   * DEPTH24_STENCIL8 textures read back both ways, and glDrawPixels of it. */
+  {
+    static GLuint src[N * N * 2], back[N * N * 2], back24[N * N];
+    for (int i = 0; i < N * N; i++) {
+      float z = (float)i / 60.0f - 0.05f;
+      memcpy(&src[2 * i], &z, 4);
+      src[2 * i + 1] = 0xabcdef00u | (GLuint)(i * 7 + 1);
+    }
+    GLenum formats[2] = {GL_DEPTH32F_STENCIL8, GL_DEPTH24_STENCIL8};
+    for (int k = 0; k < 2; k++) {
+      GLuint tex;
+      glGenTextures(1, &tex);
+      glBindTexture(GL_TEXTURE_2D, tex);
+      E(glTexImage2D(GL_TEXTURE_2D, 0, formats[k], N, N, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, src));
+      GLint d = -1, s = -1;
+      glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &d);
+      glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_STENCIL_SIZE, &s);
+      printf("texture 0x%04x depth %d stencil %d 0x%04x\n", formats[k], d, s, glGetError());
+      E(glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, back));
+      E(glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back24));
+      dump(k ? "tex24.get.ds2" : "tex32f.get.ds2", back, sizeof back);
+      dump(k ? "tex24.get.ds" : "tex32f.get.ds", back24, sizeof back24);
+    }
+    BindFramebuffer(GL_FRAMEBUFFER, fbf);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glViewport(0, 0, W, H);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glClearDepth(0.5);
+    glClearStencil(0x11);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glWindowPos2i(9, 3);
+    E(glDrawPixels(N, N, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, src));
+    static GLuint ds2[W * H * 2];
+    glReadPixels(0, 0, W, H, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, ds2);
+    dump("drawpix.ds2", ds2, sizeof ds2);
+    printf("drawpix 0x%04x\n", glGetError());
+  }
+
+  /* 11. Format/type errors of the float depth-stencil transfer type. */
   {
     static GLuint buf[16];
     BindFramebuffer(GL_FRAMEBUFFER, fbf);
