@@ -942,6 +942,25 @@ impl Context {
         }
     }
 
+    /// Whether attachment `a` is a float depth image (`GL_DEPTH_COMPONENT32F`,
+    /// `GL_DEPTH32F_STENCIL8`): its `GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE` is `GL_FLOAT`.
+    pub fn attachment_float_depth(&self, a: Attachment) -> bool {
+        match a {
+            Attachment::None => false,
+            Attachment::Renderbuffer(n) => self.fbo.renderbuffer(n).is_some_and(|r| {
+                matches!(
+                    r.format,
+                    RenderbufferFormat::DepthComponent32F | RenderbufferFormat::Depth32FStencil8
+                )
+            }),
+            Attachment::Texture { name, level, face, .. } => self
+                .textures
+                .object(name)
+                .and_then(|o| o.image(level as usize, face as usize))
+                .is_some_and(|i| i.internal.storage().float),
+        }
+    }
+
     /// `glDrawBuffer` on an object: `Some(i)` is `GL_COLOR_ATTACHMENTi`, `None` `GL_NONE`.
     /// On object 0 only `None` and the window's buffers (the caller's
     /// business) are taken; here `None` turns the window's colour writes off.

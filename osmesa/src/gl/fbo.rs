@@ -322,9 +322,15 @@ fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname:
                 GL_LINEAR_ENUM as i32
             }
         }
-        // COMPONENT_TYPE: not of DEPTH_STENCIL_ATTACHMENT (Mesa); stencil is an index.
+        // COMPONENT_TYPE: not of DEPTH_STENCIL_ATTACHMENT (Mesa); stencil is an index,
+        // but Z24_S8's is its format's datatype, unsigned normalized, and float depth's
+        // is GL_FLOAT (`main/fbobject.c`).
         0x8211 if p == AttachmentPoint::DepthStencil => return Err(err),
+        0x8211 if p == AttachmentPoint::Stencil && bits[4] > 0 && !gl.attachment_float_depth(a) => {
+            GL_UNSIGNED_NORMALIZED as i32
+        }
         0x8211 if p == AttachmentPoint::Stencil => GL_INDEX as i32,
+        0x8211 if p == AttachmentPoint::Depth && gl.attachment_float_depth(a) => GL_FLOAT as i32,
         0x8211 => GL_UNSIGNED_NORMALIZED as i32,
         0x8212..=0x8217 => {
             if p == AttachmentPoint::DepthStencil && pname != 0x8216 && pname != 0x8217 {

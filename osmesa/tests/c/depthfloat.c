@@ -49,7 +49,13 @@ static GLuint make_fbo(GLenum depth) {
   RenderbufferStorage(GL_RENDERBUFFER, depth, W, H);
   GLenum at = (depth == GL_DEPTH_COMPONENT32F) ? GL_DEPTH_ATTACHMENT : GL_DEPTH_STENCIL_ATTACHMENT;
   FramebufferRenderbuffer(GL_FRAMEBUFFER, at, GL_RENDERBUFFER, rb[1]);
-  GLint d = -1, s = -1, bits = -1;
+  GLint d = -1, s = -1, bits = -1, type = -1, stype = -1;
+  PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVPROC GetAttachment =
+      (void *)OSMesaGetProcAddress("glGetFramebufferAttachmentParameteriv");
+  GetAttachment(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+  if (at == GL_DEPTH_STENCIL_ATTACHMENT)
+    GetAttachment(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &stype);
+  printf("fbo 0x%04x component types 0x%04x 0x%04x 0x%04x\n", depth, type, stype, glGetError());
   GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_DEPTH_SIZE, &d);
   GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_STENCIL_SIZE, &s);
   glGetIntegerv(GL_DEPTH_BITS, &bits);
@@ -290,6 +296,13 @@ int main(int argc, char **argv) {
     glDrawBuffer(GL_NONE);
     glReadBuffer(GL_NONE);
     printf("shadow fbo status 0x%04x 0x%04x\n", CheckFramebufferStatus(GL_FRAMEBUFFER), glGetError());
+    {
+      GLint type = -1;
+      PFNGLGETFRAMEBUFFERATTACHMENTPARAMETERIVPROC GetAttachment =
+          (void *)OSMesaGetProcAddress("glGetFramebufferAttachmentParameteriv");
+      GetAttachment(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+      printf("shadow fbo depth component type 0x%04x 0x%04x\n", type, glGetError());
+    }
     glViewport(0, 0, 128, 128);
     ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     projection(1);
