@@ -175,27 +175,27 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D53 => i(color_bits(1)),
         0x0D54 => i(color_bits(2)),
         0x0D55 => i(color_bits(3)),
-        0x0D56 => i(fb.depth_format().map_or(0, |f| f.bits())), // DEPTH_BITS
-        0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }),      // STENCIL_BITS
+        0x0D56 => i(fb.depth_format().map_or(0, |zbufformat| zbufformat.bits())), // DEPTH_BITS
+        0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }),                        // STENCIL_BITS
         0x0D58..=0x0D5B => i(if fb.has_accum() {
             i64::from(softgl::accum::ACCUM_BITS)
         } else {
             0
         }), // ACCUM_*_BITS
-        0x0B80 => Val::N(s.clear_accum.iter().map(|&c| f64::from(c)).collect()), // ACCUM_CLEAR_VALUE
-        0x80A8 => i(u32::from(gl.samples() > 1)),               // SAMPLE_BUFFERS
-        0x80A9 => i(if gl.samples() > 1 { gl.samples() } else { 0 }), // SAMPLES
-        0x8D57 => i(softgl::multisample::MAX_SAMPLES),          // MAX_SAMPLES
-        0x80AA => f(s.multisample.coverage_value),              // SAMPLE_COVERAGE_VALUE
-        0x80AB => Val::B(vec![s.multisample.coverage_invert]),  // SAMPLE_COVERAGE_INVERT
-        0x0C32 => Val::B(vec![false]),                          // DOUBLEBUFFER
-        0x0C33 => Val::B(vec![false]),                          // STEREO
-        0x0C31 => Val::B(vec![true]),                           // RGBA_MODE
-        0x0C01 => e(GL_FRONT),                                  // DRAW_BUFFER
-        0x0C02 => e(GL_FRONT),                                  // READ_BUFFER
-        0x0B54 => e(s.shade_model.to_gl()),                     // SHADE_MODEL
-        0x0B46 => e(s.front_face.to_gl()),                      // FRONT_FACE
-        0x0B45 => e(s.cull_face.to_gl()),                       // CULL_FACE_MODE
+        0x0B80 => Val::N(s.clear_accum.iter().map(|&c| f64::from(c)).collect()),  // ACCUM_CLEAR_VALUE
+        0x80A8 => i(u32::from(gl.samples() > 1)),                                 // SAMPLE_BUFFERS
+        0x80A9 => i(if gl.samples() > 1 { gl.samples() } else { 0 }),             // SAMPLES
+        0x8D57 => i(softgl::multisample::MAX_SAMPLES),                            // MAX_SAMPLES
+        0x80AA => f(s.multisample.coverage_value),                                // SAMPLE_COVERAGE_VALUE
+        0x80AB => Val::B(vec![s.multisample.coverage_invert]),                    // SAMPLE_COVERAGE_INVERT
+        0x0C32 => Val::B(vec![false]),                                            // DOUBLEBUFFER
+        0x0C33 => Val::B(vec![false]),                                            // STEREO
+        0x0C31 => Val::B(vec![true]),                                             // RGBA_MODE
+        0x0C01 => e(GL_FRONT),                                                    // DRAW_BUFFER
+        0x0C02 => e(GL_FRONT),                                                    // READ_BUFFER
+        0x0B54 => e(s.shade_model.to_gl()),                                       // SHADE_MODEL
+        0x0B46 => e(s.front_face.to_gl()),                                        // FRONT_FACE
+        0x0B45 => e(s.cull_face.to_gl()),                                         // CULL_FACE_MODE
         0x0B40 => Val::I(vec![
             s.polygon_mode_front.to_gl().into(),
             s.polygon_mode_back.to_gl().into(),
