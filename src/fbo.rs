@@ -96,6 +96,9 @@ pub enum RenderbufferFormat {
     DepthComponent32,
     DepthStencil,
     Depth24Stencil8,
+    /// ARB_depth_buffer_float.
+    DepthComponent32F,
+    Depth32FStencil8,
     StencilIndex,
     StencilIndex1,
     StencilIndex4,
@@ -125,6 +128,8 @@ impl RenderbufferFormat {
             F::DepthComponent16 => K::Depth(DepthFormat::D16),
             F::DepthComponent32 => K::Depth(DepthFormat::D32),
             F::DepthStencil | F::Depth24Stencil8 => K::DepthStencil(DepthFormat::D24),
+            F::DepthComponent32F => K::Depth(DepthFormat::D32F),
+            F::Depth32FStencil8 => K::DepthStencil(DepthFormat::D32F),
             F::StencilIndex | F::StencilIndex8 => K::Stencil,
             _ => return None,
         })
@@ -153,6 +158,8 @@ impl RenderbufferFormat {
             F::DepthComponent16 => [0, 0, 0, 0, 16, 0],
             F::DepthComponent32 => [0, 0, 0, 0, 32, 0],
             F::DepthStencil | F::Depth24Stencil8 => [0, 0, 0, 0, 24, 8],
+            F::DepthComponent32F => [0, 0, 0, 0, 32, 0],
+            F::Depth32FStencil8 => [0, 0, 0, 0, 32, 8],
             F::StencilIndex1 => [0, 0, 0, 0, 0, 1],
             F::StencilIndex4 => [0, 0, 0, 0, 0, 4],
             F::StencilIndex | F::StencilIndex8 => [0, 0, 0, 0, 0, 8],
@@ -462,6 +469,7 @@ fn image_of(fbo: &FboState, textures: &crate::texture::TextureStore, a: Attachme
 fn texture_kind(img: &TexImage) -> Option<RenderbufferKind> {
     let s = img.internal.storage();
     match (s.base, img.texel_format()) {
+        (BaseFormat::Depth, _) if s.float => Some(RenderbufferKind::Depth(DepthFormat::D32F)),
         (BaseFormat::Depth, _) => Some(RenderbufferKind::Depth(match s.bits[0] {
             16 => DepthFormat::D16,
             32 => DepthFormat::D32,
@@ -874,7 +882,7 @@ impl Context {
     /// reports both sizes (docs/llvmpipe-facts.md, "window attachments").
     pub fn window_buffer_bits(&self, buffer: WindowBuffer) -> Option<[u32; 6]> {
         let fb = self.framebuffer_pending();
-        let depth = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
+        let depth = fb.depth_format().map_or(0, |f| f.bits());
         let stencil = if fb.has_stencil() { 8 } else { 0 };
         let c = fb.color_format();
         match buffer {
@@ -915,6 +923,25 @@ impl Context {
                     }
                 })
             }
+        }
+    }
+
+    /// Whether attachment `a` is a float depth image (`GL_DEPTH_COMPONENT32F`,
+    /// `GL_DEPTH32F_STENCIL8`): its `GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE` is `GL_FLOAT`.
+    pub fn attachment_float_depth(&self, a: Attachment) -> bool {
+        match a {
+            Attachment::None => false,
+            Attachment::Renderbuffer(n) => self.fbo.renderbuffer(n).is_some_and(|r| {
+                matches!(
+                    r.format,
+                    RenderbufferFormat::DepthComponent32F | RenderbufferFormat::Depth32FStencil8
+                )
+            }),
+            Attachment::Texture { name, level, face, .. } => self
+                .textures
+                .object(name)
+                .and_then(|o| o.image(level as usize, face as usize))
+                .is_some_and(|i| i.internal.storage().float),
         }
     }
 
@@ -1207,7 +1234,7 @@ impl Context {
             width,
             height,
             color: color_format,
-            depth_bits: depth_format.map_or(0, |d| d.bits()),
+            depth_bits: FramebufferDesc::depth_bits_of(depth_format),
             stencil_bits: if has_stencil { 8 } else { 0 },
         };
         let mut fb = Framebuffer::from_parts(desc, color, depth, stencil)?;
@@ -1399,6 +1426,13 @@ impl Context {
                     return Err(GlError::InvalidOperation);
                 };
                 let (t, n) = self.texture_layer(a).ok_or(GlError::InvalidOperation)?;
+                if format == DepthFormat::D32F {
+                    let mut out = alloc(n, 0u32)?;
+                    for (o, t) in out.iter_mut().zip(t.chunks_exact(4)) {
+                        *o = format.from_window(f32::from_ne_bytes([t[0], t[1], t[2], t[3]]));
+                    }
+                    return Ok(DepthBuffer::D32F(out));
+                }
                 let bits = format.bits();
                 let z = |i: usize| {
                     let f = f32::from_ne_bytes([t[4 * i], t[4 * i + 1], t[4 * i + 2], t[4 * i + 3]]);
@@ -1419,6 +1453,7 @@ impl Context {
                     DepthFormat::D16 => DepthBuffer::D16(out.into_iter().map(|v| v as u16).collect()),
                     DepthFormat::D24 => DepthBuffer::D24(out),
                     DepthFormat::D32 => DepthBuffer::D32(out),
+                    DepthFormat::D32F => DepthBuffer::D32F(out),
                 })
             }
         }
@@ -1860,7 +1895,11 @@ fn blit(
                 if let Some(z) = from.depth_at(nx, ny) {
                     match t.depth_mut() {
                         Some(softgl_jit::DepthTarget::D16(dd)) => dd[i] = z as u16,
-                        Some(softgl_jit::DepthTarget::D24(dd) | softgl_jit::DepthTarget::D32(dd)) => dd[i] = z,
+                        Some(
+                            softgl_jit::DepthTarget::D24(dd)
+                            | softgl_jit::DepthTarget::D32(dd)
+                            | softgl_jit::DepthTarget::D32F(dd),
+                        ) => dd[i] = z,
                         None => {}
                     }
                 }
@@ -1897,6 +1936,12 @@ fn convert_back(d: &DepthBuffer, bits: u32, out: &mut [u8]) {
                 o.copy_from_slice(&depth_sampled(z, bits).to_ne_bytes());
             }
         }
+        // Float depth: the texels are the stored floats.
+        DepthBuffer::D32F(v) => {
+            for (o, &z) in out.chunks_exact_mut(4).zip(&v[range]) {
+                o.copy_from_slice(&z.to_ne_bytes());
+            }
+        }
     };
     let n = out.len() / 4;
     if n < 1 << 16 {
@@ -1915,6 +1960,7 @@ fn depth_buffer(format: DepthFormat, n: usize) -> GlResult<DepthBuffer> {
         DepthFormat::D16 => DepthBuffer::D16(alloc(n, u16::MAX)?),
         DepthFormat::D24 => DepthBuffer::D24(alloc(n, format.max_value())?),
         DepthFormat::D32 => DepthBuffer::D32(alloc(n, format.max_value())?),
+        DepthFormat::D32F => DepthBuffer::D32F(alloc(n, format.max_value())?),
     })
 }
 

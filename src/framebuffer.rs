@@ -14,13 +14,27 @@ pub struct FramebufferDesc {
     pub width: u32,
     pub height: u32,
     pub color: ColorFormat,
-    /// 0 (no depth buffer), 16, 24 or 32.
+    /// 0 (no depth buffer), 16, 24 or 32 (unsigned normalized), or
+    /// [`FramebufferDesc::FLOAT_DEPTH`] (32-bit float, `GL_DEPTH_COMPONENT32F`).
     pub depth_bits: u32,
     /// 0 (no stencil buffer) or 8.
     pub stencil_bits: u32,
 }
 
 impl FramebufferDesc {
+    /// The `depth_bits` that asks for a 32-bit float depth buffer
+    /// ([`DepthFormat::D32F`]): `GL_DEPTH_COMPONENT32F`'s enum value.
+    pub const FLOAT_DEPTH: u32 = 0x8CAC;
+
+    /// The `depth_bits` that asks for `format`.
+    pub fn depth_bits_of(format: Option<DepthFormat>) -> u32 {
+        match format {
+            None => 0,
+            Some(DepthFormat::D32F) => FramebufferDesc::FLOAT_DEPTH,
+            Some(f) => f.bits(),
+        }
+    }
+
     /// RGBA8 color with a 24-bit depth and an 8-bit stencil buffer.
     pub fn rgba8_d24s8(width: u32, height: u32) -> FramebufferDesc {
         FramebufferDesc {
@@ -39,6 +53,7 @@ impl FramebufferDesc {
             16 => Ok(Some(DepthFormat::D16)),
             24 => Ok(Some(DepthFormat::D24)),
             32 => Ok(Some(DepthFormat::D32)),
+            FramebufferDesc::FLOAT_DEPTH => Ok(Some(DepthFormat::D32F)),
             _ => Err(GlError::InvalidValue),
         }
     }
@@ -58,6 +73,8 @@ pub enum DepthBuffer {
     D16(Vec<u16>),
     D24(Vec<u32>),
     D32(Vec<u32>),
+    /// `f32` bits (see [`DepthFormat::D32F`]).
+    D32F(Vec<u32>),
 }
 
 impl DepthBuffer {
@@ -66,13 +83,14 @@ impl DepthBuffer {
             DepthBuffer::D16(_) => DepthFormat::D16,
             DepthBuffer::D24(_) => DepthFormat::D24,
             DepthBuffer::D32(_) => DepthFormat::D32,
+            DepthBuffer::D32F(_) => DepthFormat::D32F,
         }
     }
 
     fn get(&self, i: usize) -> u32 {
         match self {
             DepthBuffer::D16(d) => u32::from(d[i]),
-            DepthBuffer::D24(d) | DepthBuffer::D32(d) => d[i],
+            DepthBuffer::D24(d) | DepthBuffer::D32(d) | DepthBuffer::D32F(d) => d[i],
         }
     }
 }
@@ -230,7 +248,7 @@ impl Clear {
                 let i = t.index(r.x0, y);
                 match t.depth_mut() {
                     Some(DepthTarget::D16(d)) => d[i..i + x1 - x0].fill(v as u16),
-                    Some(DepthTarget::D24(d) | DepthTarget::D32(d)) => d[i..i + x1 - x0].fill(v),
+                    Some(DepthTarget::D24(d) | DepthTarget::D32(d) | DepthTarget::D32F(d)) => d[i..i + x1 - x0].fill(v),
                     None => {}
                 }
             }
@@ -358,11 +376,13 @@ pub fn float_to_unorm(v: f32, max: u32) -> u32 {
 
 /// Converts a window depth in `[0, 1]` to depth-buffer units: computed in f32
 /// for 16 and 24 bits, as llvmpipe does (`rint(float(z * 0xffffff))`), in f64
-/// for 32 bits, where f32 cannot hold the range.
+/// for 32 bits, where f32 cannot hold the range; a float format stores the
+/// f32 clamped to `[0, 1]` (`DepthFormat::from_window`).
 #[inline]
 pub fn depth_to_unorm(z: f64, format: DepthFormat) -> u32 {
     let z = if z.is_nan() { 0.0 } else { z.clamp(0.0, 1.0) };
     match format {
+        DepthFormat::D32F => format.from_window(z as f32),
         DepthFormat::D16 | DepthFormat::D24 => rint_nonnegative((z as f32) * format.max_value() as f32) as u32,
         DepthFormat::D32 => (z * f64::from(u32::MAX)).round_ties_even() as u32,
     }
@@ -472,6 +492,7 @@ impl Framebuffer {
             Some(DepthFormat::D16) => Some(DepthBuffer::D16(alloc(n, u16::MAX)?)),
             Some(f @ DepthFormat::D24) => Some(DepthBuffer::D24(alloc(n, f.max_value())?)),
             Some(f @ DepthFormat::D32) => Some(DepthBuffer::D32(alloc(n, f.max_value())?)),
+            Some(f @ DepthFormat::D32F) => Some(DepthBuffer::D32F(alloc(n, f.max_value())?)),
         };
         let stencil = if desc.stencil_bits == 8 {
             Some(alloc(n, 0u8)?)
@@ -504,7 +525,7 @@ impl Framebuffer {
         let n = desc.width as usize * desc.height as usize;
         let depth_len = depth.as_ref().map(|d| match d {
             DepthBuffer::D16(v) => v.len(),
-            DepthBuffer::D24(v) | DepthBuffer::D32(v) => v.len(),
+            DepthBuffer::D24(v) | DepthBuffer::D32(v) | DepthBuffer::D32F(v) => v.len(),
         });
         let ok = color.len() == n * desc.color.bytes_per_pixel()
             && depth.as_ref().map(DepthBuffer::format) == desc.depth_format()?
@@ -597,6 +618,7 @@ impl Framebuffer {
                 DepthBuffer::D16(_) => DepthBuffer::D16(Vec::new()),
                 DepthBuffer::D24(_) => DepthBuffer::D24(Vec::new()),
                 DepthBuffer::D32(_) => DepthBuffer::D32(Vec::new()),
+                DepthBuffer::D32F(_) => DepthBuffer::D32F(Vec::new()),
             }),
             stencil: self.stencil.as_ref().map(|_| Vec::new()),
             color_enabled: self.color_enabled,
@@ -691,6 +713,7 @@ impl Framebuffer {
             DepthBuffer::D16(v) => DepthTarget::D16(v),
             DepthBuffer::D24(v) => DepthTarget::D24(v),
             DepthBuffer::D32(v) => DepthTarget::D32(v),
+            DepthBuffer::D32F(v) => DepthTarget::D32F(v),
         });
         Target::new(
             w,

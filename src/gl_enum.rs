@@ -398,6 +398,7 @@ gl_enums! {
         UnsignedInt8888Rev = GL_UNSIGNED_INT_8_8_8_8_REV 0x8367,
         UnsignedInt2101010Rev = GL_UNSIGNED_INT_2_10_10_10_REV 0x8368,
         UnsignedInt248 = GL_UNSIGNED_INT_24_8 0x84FA,
+        Float32UnsignedInt248Rev = GL_FLOAT_32_UNSIGNED_INT_24_8_REV 0x8DAD,
     }
     InternalFormat {
         One = GL_1 0x0001,
@@ -454,6 +455,8 @@ gl_enums! {
         CompressedRgba = GL_COMPRESSED_RGBA 0x84EE,
         DepthStencil = GL_DEPTH_STENCIL 0x84F9,
         Depth24Stencil8 = GL_DEPTH24_STENCIL8 0x88F0,
+        DepthComponent32F = GL_DEPTH_COMPONENT32F 0x8CAC,
+        Depth32FStencil8 = GL_DEPTH32F_STENCIL8 0x8CAD,
         Srgb = GL_SRGB 0x8C40,
         Srgb8 = GL_SRGB8 0x8C41,
         SrgbAlpha = GL_SRGB_ALPHA 0x8C42,
@@ -583,6 +586,6 @@ mod tests {
             round_trip::<TexParamName>(),
             round_trip::<TexLevelParamName>(),
         ];
-        assert_eq!(counts, [4, 2, 5, 3, 12, 20, 62, 17, 14]);
+        assert_eq!(counts, [4, 2, 5, 3, 12, 21, 64, 17, 14]);
     }
 }

@@ -21,6 +21,7 @@
 
 pub mod accum;
 pub mod buffer;
+pub mod clip_control;
 pub mod context;
 pub mod demo;
 pub mod error;
@@ -49,6 +50,7 @@ pub mod tracked;
 
 pub use accum::{AccumBuffer, AccumOp};
 pub use buffer::{Buffer, BufferAccess, BufferParamName, BufferStore, BufferTarget, BufferUsage};
+pub use clip_control::{ClipControl, ClipDepthMode, ClipOrigin};
 pub use context::{AttribArray, Context, CurrentAttribs, Indices, SceneStats, VertexArrays};
 pub use error::{GlError, GlResult};
 pub use fog::{FogCoordSrc, FogMode, FogParam};

@@ -325,9 +325,9 @@ impl Framebuffer {
             if let (Some(from), Some(to)) = (self.depth_buffer(), t.depth_mut()) {
                 match (from, to) {
                     (DepthBuffer::D16(a), DepthTarget::D16(b)) => b.copy_from_slice(a),
-                    (DepthBuffer::D24(a), DepthTarget::D24(b)) | (DepthBuffer::D32(a), DepthTarget::D32(b)) => {
-                        b.copy_from_slice(a)
-                    }
+                    (DepthBuffer::D24(a), DepthTarget::D24(b))
+                    | (DepthBuffer::D32(a), DepthTarget::D32(b))
+                    | (DepthBuffer::D32F(a), DepthTarget::D32F(b)) => b.copy_from_slice(a),
                     _ => return Err(GlError::InvalidOperation),
                 }
             }
@@ -382,7 +382,7 @@ impl Framebuffer {
                             v[i] = *z as u16;
                         }
                     }
-                    Some(DepthTarget::D24(v) | DepthTarget::D32(v)) => {
+                    Some(DepthTarget::D24(v) | DepthTarget::D32(v) | DepthTarget::D32F(v)) => {
                         d.push(v[i]);
                         if let Some(z) = z0 {
                             v[i] = *z;
@@ -412,7 +412,7 @@ impl Framebuffer {
                 let i = t.index(x, y);
                 match t.depth_mut() {
                     Some(DepthTarget::D16(v)) => v[i] = d[k] as u16,
-                    Some(DepthTarget::D24(v) | DepthTarget::D32(v)) => v[i] = d[k],
+                    Some(DepthTarget::D24(v) | DepthTarget::D32(v) | DepthTarget::D32F(v)) => v[i] = d[k],
                     None => {}
                 }
                 if let (Some(st), Some(&sv)) = (t.stencil_mut(), s.get(k)) {

@@ -477,11 +477,15 @@ fn through_texture(d: f32, ty: crate::PixelType) -> f32 {
     }
 }
 
-/// A stored depth `d` of a buffer whose largest value is `max`, as
+/// A stored depth `d` of a buffer of `format` (a float format's is its float), as
 /// llvmpipe samples a depth texture: `d·(1/max)` in f32 (which does not
 /// give `d` back for about a third of 24-bit values).
-fn sampled_depth(d: u32, max: u32) -> f32 {
-    d as f32 * (1.0 / max as f32)
+fn sampled_depth(d: u32, format: Option<softgl_jit::DepthFormat>) -> f32 {
+    match format {
+        Some(softgl_jit::DepthFormat::D32F) => f32::from_bits(d),
+        Some(f) => d as f32 * (1.0 / f.max_value() as f32),
+        None => 0.0,
+    }
 }
 
 /// A one-component integer value (an index or a stencil value) as read.
@@ -500,7 +504,7 @@ fn integer(raw: crate::texture::unpack::Raw) -> i64 {
 fn depth_units(z: f32, format: Option<softgl_jit::DepthFormat>) -> u32 {
     match format {
         Some(f @ softgl_jit::DepthFormat::D32) => crate::raster::depth_value(f64::from(z), Some(f)),
-        Some(f) => softgl_jit::shade::unorm_depth(z, f.max_value()),
+        Some(f) => f.from_window(z),
         None => 0,
     }
 }
@@ -810,10 +814,9 @@ impl Context {
                 }
             }
             CopyKind::Depth => {
-                let max = depth_format.map_or(1, |f| f.max_value());
                 let z = coords
                     .map(|(i, j)| {
-                        let d = sampled_depth(fb.depth_at(i, j).unwrap_or(0), max);
+                        let d = sampled_depth(fb.depth_at(i, j).unwrap_or(0), depth_format);
                         let d = if p.depth_scale == 1.0 && p.depth_bias == 0.0 {
                             d
                         } else {
@@ -840,11 +843,10 @@ impl Context {
                 }
             }
             CopyKind::DepthStencil => {
-                let max = depth_format.map_or(1, |f| f.max_value());
                 let (mut s, mut z) = (Vec::new(), Vec::new());
                 for (i, j) in coords {
                     s.push(p.stencil(i64::from(fb.stencil_at(i, j).unwrap_or(0))) as u8);
-                    let d = sampled_depth(fb.depth_at(i, j).unwrap_or(0), max);
+                    let d = sampled_depth(fb.depth_at(i, j).unwrap_or(0), depth_format);
                     let d = if p.depth_scale == 1.0 && p.depth_bias == 0.0 {
                         d
                     } else {

@@ -61,6 +61,8 @@ impl Default for RasterPos {
 
 /// Whether clip position `c` is inside the view volume (`-w <= x, y, z <= w`),
 /// Mesa's `viewclip_point_*` tests.
+/// (Always against `z ≥ −w`, under `glClipControl(…, GL_ZERO_TO_ONE)` too: Mesa's
+/// `viewclip_point_near_z`, `main/rastpos.c`; docs/llvmpipe-facts.md.)
 fn inside_view_volume(c: Vec4) -> bool {
     let w = c.w;
     !(c.x > w || c.x < -w || c.y > w || c.y < -w || c.z < -w || c.z > w)
@@ -104,13 +106,13 @@ impl Context {
         let s = &self.state;
         let vp = s.viewport;
         let (vw, vh) = (vp.width as f32, vp.height as f32);
-        let (n, f) = s.depth_range;
+        let (z_scale, z_translate) = s.clip_control.depth_xform(s.depth_range);
         let d = if clip.w == 0.0 { 1.0 } else { 1.0 / clip.w };
         let ndc = clip.xyz() * d;
         let window = [
             ndc.x * (vw / 2.0) + (vp.x as f32 + vw / 2.0),
-            ndc.y * (vh / 2.0) + (vp.y as f32 + vh / 2.0),
-            ndc.z * (((f - n) / 2.0) as f32) + (((f + n) / 2.0) as f32),
+            ndc.y * s.clip_control.y_scale(vh) + (vp.y as f32 + vh / 2.0),
+            ndc.z * z_scale + z_translate,
             clip.w,
         ];
         let distance = match s.fog.coord_src {

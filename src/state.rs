@@ -254,6 +254,8 @@ pub struct RasterState {
     pub scissor: WindowRect,
     pub viewport: WindowRect,
     pub depth_range: (f64, f64),
+    /// `glClipControl` (`crate::clip_control`).
+    pub clip_control: crate::clip_control::ClipControl,
     pub cull_face: Face,
     pub front_face: FrontFace,
     pub polygon_mode_front: PolygonMode,
@@ -332,6 +334,7 @@ impl RasterState {
             scissor: full,
             viewport: full,
             depth_range: (0.0, 1.0),
+            clip_control: crate::clip_control::ClipControl::default(),
             cull_face: Face::Back,
             front_face: FrontFace::Ccw,
             polygon_mode_front: PolygonMode::Fill,

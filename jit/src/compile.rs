@@ -1319,14 +1319,14 @@ impl<'a> Gen<'a> {
     fn load_depth(&mut self, format: DepthFormat, p: Value) -> Value {
         match format {
             DepthFormat::D16 => self.b.ins().uload16x4(mem(), p, 0),
-            DepthFormat::D24 | DepthFormat::D32 => self.b.ins().load(I32X4, mem(), p, 0),
+            DepthFormat::D24 | DepthFormat::D32 | DepthFormat::D32F => self.b.ins().load(I32X4, mem(), p, 0),
         }
     }
 
     fn store_depth(&mut self, format: DepthFormat, p: Value, v: Value) {
         match format {
             DepthFormat::D16 => self.store_low_halves(p, v),
-            DepthFormat::D24 | DepthFormat::D32 => {
+            DepthFormat::D24 | DepthFormat::D32 | DepthFormat::D32F => {
                 self.b.ins().store(mem(), v, p, 0);
             }
         }

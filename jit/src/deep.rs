@@ -212,10 +212,9 @@ pub(crate) fn run_span(
         match *stage {
             Stage::Shade(shade) => {
                 let row = row_of(y, t.height());
-                let max = key.depth_format.map_or(0, |f| f.max_value());
                 for i in lanes(live) {
                     let px = (x0 + i as u32) as f32;
-                    let (c, d) = shade::fragment_f32(&shade, planes, (px, row), &u.fog, max, textures);
+                    let (c, d) = shade::fragment_f32(&shade, planes, (px, row), &u.fog, key.depth_format, textures);
                     if let Some(c) = c {
                         rgba[i] = c;
                     }

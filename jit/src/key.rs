@@ -84,6 +84,10 @@ pub enum DepthFormat {
     D24,
     /// `u32` per pixel, all 32 bits.
     D32,
+    /// `u32` per pixel holding the bits of an `f32` in `[0, 1]`
+    /// (`GL_DEPTH_COMPONENT32F`), never -0 or NaN: there the unsigned order of
+    /// the bits is the order of the floats, so the depth test compares bits.
+    D32F,
 }
 
 impl DepthFormat {
@@ -92,7 +96,7 @@ impl DepthFormat {
         match self {
             DepthFormat::D16 => 16,
             DepthFormat::D24 => 24,
-            DepthFormat::D32 => 32,
+            DepthFormat::D32 | DepthFormat::D32F => 32,
         }
     }
 
@@ -102,7 +106,37 @@ impl DepthFormat {
             DepthFormat::D16 => 0xffff,
             DepthFormat::D24 => 0x00ff_ffff,
             DepthFormat::D32 => 0xffff_ffff,
+            DepthFormat::D32F => 0x3f80_0000,
         }
+    }
+
+    /// Window depth `z` in buffer units: the f32 clamped to `[0, 1]` the
+    /// float format stores (llvmpipe's `lp_build_clamp`, `max(z, 0)` then
+    /// `min(.., 1)` as SSE's `maxps`/`minps`: NaN and -0 become +0), or the
+    /// unorm value rounded to nearest even (`lp_build_clamped_float_to_unsigned_norm`).
+    #[inline]
+    pub fn from_window(self, z: f32) -> u32 {
+        match self {
+            DepthFormat::D32F => clamp_float_depth(z).to_bits(),
+            f => (crate::shade::saturate(z) * f.max_value() as f32).round_ties_even() as u32,
+        }
+    }
+
+    /// Whether the format stores floats.
+    pub const fn is_float(self) -> bool {
+        matches!(self, DepthFormat::D32F)
+    }
+}
+
+/// `min(max(z, 0), 1)` with SSE's operand order: `max(z, 0)` is `z > 0 ? z : 0`
+/// (NaN and -0 give +0), `min(v, 1)` is `v < 1 ? v : 1`.
+#[inline]
+pub fn clamp_float_depth(z: f32) -> f32 {
+    let v = if z > 0.0 { z } else { 0.0 };
+    if v < 1.0 {
+        v
+    } else {
+        1.0
     }
 }
 

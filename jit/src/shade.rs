@@ -313,10 +313,10 @@ pub fn fragment(
     planes: &Planes,
     (px, row): (f32, f32),
     fog_u: &FogUniforms,
-    depth_max: u32,
+    depth_format: Option<crate::key::DepthFormat>,
     textures: &crate::texture::TextureSet<'_>,
 ) -> (Option<[u8; 4]>, Option<u32>) {
-    let (c, z) = fragment_f32(key, planes, (px, row), fog_u, depth_max, textures);
+    let (c, z) = fragment_f32(key, planes, (px, row), fog_u, depth_format, textures);
     (c.map(|c| c.map(unorm8)), z)
 }
 
@@ -326,10 +326,12 @@ pub fn fragment_f32(
     planes: &Planes,
     (px, row): (f32, f32),
     fog_u: &FogUniforms,
-    depth_max: u32,
+    depth_format: Option<crate::key::DepthFormat>,
     textures: &crate::texture::TextureSet<'_>,
 ) -> (Option<[f32; 4]>, Option<u32>) {
-    let z = key.depth.then(|| unorm_depth(planes.at(slot::Z, px, row), depth_max));
+    let z = key
+        .depth
+        .then(|| depth_format.map_or(0, |f| f.from_window(planes.at(slot::Z, px, row))));
     if !key.color {
         return (None, z);
     }

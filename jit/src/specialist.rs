@@ -698,7 +698,7 @@ impl DepthRow<'_> {
 fn depth_row<'a>(d: &'a mut DepthTarget<'_>, index: usize, n: usize) -> Option<DepthRow<'a>> {
     Some(match d {
         DepthTarget::D16(d) => DepthRow::U16(d.get_mut(index..index + n)?),
-        DepthTarget::D24(d) | DepthTarget::D32(d) => DepthRow::U32(d.get_mut(index..index + n)?),
+        DepthTarget::D24(d) | DepthTarget::D32(d) | DepthTarget::D32F(d) => DepthRow::U32(d.get_mut(index..index + n)?),
     })
 }
 

@@ -8,6 +8,8 @@ pub enum DepthTarget<'a> {
     D16(&'a mut [u16]),
     D24(&'a mut [u32]),
     D32(&'a mut [u32]),
+    /// `f32` bits (see [`DepthFormat::D32F`]).
+    D32F(&'a mut [u32]),
 }
 
 impl DepthTarget<'_> {
@@ -17,13 +19,14 @@ impl DepthTarget<'_> {
             DepthTarget::D16(_) => DepthFormat::D16,
             DepthTarget::D24(_) => DepthFormat::D24,
             DepthTarget::D32(_) => DepthFormat::D32,
+            DepthTarget::D32F(_) => DepthFormat::D32F,
         }
     }
 
     fn len(&self) -> usize {
         match self {
             DepthTarget::D16(d) => d.len(),
-            DepthTarget::D24(d) | DepthTarget::D32(d) => d.len(),
+            DepthTarget::D24(d) | DepthTarget::D32(d) | DepthTarget::D32F(d) => d.len(),
         }
     }
 
@@ -43,6 +46,10 @@ impl DepthTarget<'_> {
                 let (a, b) = d.split_at_mut(n);
                 (DepthTarget::D32(a), DepthTarget::D32(b))
             }
+            DepthTarget::D32F(d) => {
+                let (a, b) = d.split_at_mut(n);
+                (DepthTarget::D32F(a), DepthTarget::D32F(b))
+            }
         }
     }
 
@@ -51,7 +58,7 @@ impl DepthTarget<'_> {
     pub fn get(&self, index: usize) -> u32 {
         match self {
             DepthTarget::D16(d) => u32::from(d[index]),
-            DepthTarget::D24(d) | DepthTarget::D32(d) => d[index],
+            DepthTarget::D24(d) | DepthTarget::D32(d) | DepthTarget::D32F(d) => d[index],
         }
     }
 
@@ -60,7 +67,7 @@ impl DepthTarget<'_> {
     pub fn set(&mut self, index: usize, value: u32) {
         match self {
             DepthTarget::D16(d) => d[index] = value as u16,
-            DepthTarget::D24(d) | DepthTarget::D32(d) => d[index] = value,
+            DepthTarget::D24(d) | DepthTarget::D32(d) | DepthTarget::D32F(d) => d[index] = value,
         }
     }
 }
@@ -349,7 +356,7 @@ impl<'a> Target<'a> {
     pub(crate) fn raw_parts(&mut self) -> RawParts {
         let (depth, depth_len) = match &mut self.depth {
             Some(DepthTarget::D16(d)) => (d.as_mut_ptr().cast(), d.len()),
-            Some(DepthTarget::D24(d) | DepthTarget::D32(d)) => (d.as_mut_ptr().cast(), d.len()),
+            Some(DepthTarget::D24(d) | DepthTarget::D32(d) | DepthTarget::D32F(d)) => (d.as_mut_ptr().cast(), d.len()),
             None => (std::ptr::null_mut(), 0),
         };
         let (stencil, stencil_len) = match &mut self.stencil {

@@ -57,7 +57,9 @@ fn blend_key() -> impl Strategy<Value = BlendKey> {
 fn key() -> impl Strategy<Value = FragmentKey> {
     let buffers = (
         select(&COLOR_FORMATS[..]),
-        prop::option::of(select(&[DepthFormat::D16, DepthFormat::D24, DepthFormat::D32][..])),
+        prop::option::of(select(
+            &[DepthFormat::D16, DepthFormat::D24, DepthFormat::D32, DepthFormat::D32F][..],
+        )),
         any::<bool>(),
     );
     let stencil = prop::option::of((compare(), stencil_op(), stencil_op(), stencil_op()));
@@ -195,6 +197,13 @@ impl Buffers {
         let (mut depth16, mut depth32) = (None, None);
         match key.depth_format {
             Some(DepthFormat::D16) => depth16 = Some((0..n).map(|_| rng.depth(0xffff) as u16).collect()),
+            // Float depth: any bits up to 1.0's are a float in [0, 1].
+            Some(f @ DepthFormat::D32F) => {
+                depth32 = Some((
+                    f,
+                    (0..n).map(|_| rng.depth(f.max_value()) % (f.max_value() + 1)).collect(),
+                ))
+            }
             Some(f) => depth32 = Some((f, (0..n).map(|_| rng.depth(f.max_value()) & f.max_value()).collect())),
             None => {}
         }
@@ -217,6 +226,7 @@ impl Buffers {
         let depth = match (&mut self.depth16, &mut self.depth32) {
             (Some(d), _) => Some(DepthTarget::D16(d)),
             (None, Some((DepthFormat::D24, d))) => Some(DepthTarget::D24(d)),
+            (None, Some((DepthFormat::D32F, d))) => Some(DepthTarget::D32F(d)),
             (None, Some((_, d))) => Some(DepthTarget::D32(d)),
             (None, None) => None,
         };
@@ -834,6 +844,7 @@ impl OwnedTexture {
             max_lod: self.lods[1],
             lod_bias: self.lods[2],
             border: self.border,
+            float_depth: false,
         }
     }
 }

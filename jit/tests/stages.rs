@@ -29,6 +29,7 @@ enum DepthBuf {
     D16(Vec<u16>),
     D24(Vec<u32>),
     D32(Vec<u32>),
+    D32F(Vec<u32>),
 }
 
 impl DepthBuf {
@@ -37,6 +38,7 @@ impl DepthBuf {
             DepthFormat::D16 => DepthBuf::D16(vec![clear as u16; len]),
             DepthFormat::D24 => DepthBuf::D24(vec![clear; len]),
             DepthFormat::D32 => DepthBuf::D32(vec![clear; len]),
+            DepthFormat::D32F => DepthBuf::D32F(vec![clear; len]),
         }
     }
 
@@ -45,20 +47,21 @@ impl DepthBuf {
             DepthBuf::D16(_) => DepthFormat::D16,
             DepthBuf::D24(_) => DepthFormat::D24,
             DepthBuf::D32(_) => DepthFormat::D32,
+            DepthBuf::D32F(_) => DepthFormat::D32F,
         }
     }
 
     fn get(&self, i: usize) -> u32 {
         match self {
             DepthBuf::D16(d) => u32::from(d[i]),
-            DepthBuf::D24(d) | DepthBuf::D32(d) => d[i],
+            DepthBuf::D24(d) | DepthBuf::D32(d) | DepthBuf::D32F(d) => d[i],
         }
     }
 
     fn set(&mut self, i: usize, v: u32) {
         match self {
             DepthBuf::D16(d) => d[i] = u16::try_from(v).expect("D16 value fits 16 bits"),
-            DepthBuf::D24(d) | DepthBuf::D32(d) => d[i] = v,
+            DepthBuf::D24(d) | DepthBuf::D32(d) | DepthBuf::D32F(d) => d[i] = v,
         }
     }
 
@@ -67,6 +70,7 @@ impl DepthBuf {
             DepthBuf::D16(d) => DepthTarget::D16(d),
             DepthBuf::D24(d) => DepthTarget::D24(d),
             DepthBuf::D32(d) => DepthTarget::D32(d),
+            DepthBuf::D32F(d) => DepthTarget::D32F(d),
         }
     }
 }
@@ -856,12 +860,14 @@ fn depth_max(format: DepthFormat) -> u32 {
         DepthFormat::D16 => (1 << 16) - 1,
         DepthFormat::D24 => (1 << 24) - 1,
         DepthFormat::D32 => u32::MAX,
+        DepthFormat::D32F => 1.0f32.to_bits(),
     }
 }
 
 #[test]
 fn depth_every_function_format_and_write_mask() {
-    for format in [DepthFormat::D16, DepthFormat::D24, DepthFormat::D32] {
+    // (Float depth: values up to 1.0's bits are floats in [0, 1], ordered as their bits.)
+    for format in [DepthFormat::D16, DepthFormat::D24, DepthFormat::D32, DepthFormat::D32F] {
         let max = depth_max(format);
         // (stored, incoming) pairs: equal, one below, one above, at and beyond max.
         let mut cases = Vec::new();
@@ -1955,5 +1961,64 @@ fn linear_fog_blends_towards_the_fog_colour() {
         let f = (4.0 - f64::from(x)) / 4.0;
         let want = [spec_unorm8(f), spec_unorm8((1.0 - f) * 0.7), spec_unorm8(1.0 - f), 153];
         assert_eq!(fb.pixel(x, 0), &want, "x = {x}");
+    }
+}
+
+/// Float depth (`GL_DEPTH_COMPONENT32F`) from the shading stage: the plane's
+/// f32 clamped to `[0, 1]` as llvmpipe's `lp_build_clamp` (SSE `maxps(z, 0)`
+/// then `minps(.., 1)`): negative, -0 and NaN store +0, above 1 stores 1.0,
+/// everything else (a denormal too) its own bits.
+#[test]
+fn float_depth_from_the_planes_is_the_clamped_f32() {
+    let zs = [0.3f32, -0.0, f32::NAN, 1.5, -2.0, 1e-40, 1.0, 0.999_999_94];
+    let mut fb = Fb::new(zs.len() as u32, 1, ColorFormat::Rgba8).with_depth(DepthFormat::D32F, 0x3f80_0000);
+    let key = FragmentKey {
+        depth: Some(DepthKey {
+            func: CompareFunc::Always,
+            write: true,
+        }),
+        shade: Some(ShadeKey {
+            depth: true,
+            ..ShadeKey::default()
+        }),
+        ..fb.key()
+    };
+    let mut planes = Vec::new();
+    let mut spans = Vec::new();
+    for (i, &z) in zs.iter().enumerate() {
+        let mut p = Planes::default();
+        p.constant(slot::INV_W, 1.0);
+        p.constant(slot::Z, z);
+        planes.push(p);
+        let mut s = span(i as u32, 0, &[([0; 4], 0)]);
+        s.planes = i as u32;
+        spans.push(s);
+    }
+    fb.run_planes(&key, &uniforms(), &spans, &planes);
+    let want = [0.3f32, 0.0, 0.0, 1.0, 0.0, 1e-40, 1.0, 0.999_999_94];
+    for (x, w) in want.iter().enumerate() {
+        assert_eq!(fb.depth(x as u32, 0), w.to_bits(), "z = {}", zs[x]);
+    }
+}
+
+/// Float depth compares as floats: LESS keeps the nearer of 0.25 and 0.5
+/// either way round, EQUAL passes only the same float.
+#[test]
+fn float_depth_test_orders_as_floats() {
+    let (q, h) = (0.25f32.to_bits(), 0.5f32.to_bits());
+    for (func, stored, incoming, pass) in [
+        (CompareFunc::Less, h, q, true),
+        (CompareFunc::Less, q, h, false),
+        (CompareFunc::Gequal, q, h, true),
+        (CompareFunc::Equal, q, q, true),
+        (CompareFunc::Equal, q, q + 1, false),
+    ] {
+        let mut fb = Fb::new(1, 1, ColorFormat::Rgba8).with_depth(DepthFormat::D32F, stored);
+        let key = FragmentKey {
+            depth: Some(DepthKey { func, write: true }),
+            ..fb.key()
+        };
+        fb.run(&key, &uniforms(), &[span(0, 0, &[(RED, incoming)])]).unwrap();
+        assert_eq!(fb.depth(0, 0), if pass { incoming } else { stored }, "{func:?}");
     }
 }

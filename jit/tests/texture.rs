@@ -148,6 +148,7 @@ fn render(c: &Case, seed: u32) -> Vec<u8> {
         max_lod: c.f("max_lod", 1000.0),
         lod_bias: softgl_jit::texture::quantized_lod_bias(c.f("bias", 0.0)),
         border: [c.f("br", 0.0), c.f("bg", 0.0), c.f("bb", 0.0), c.f("ba", 0.0)],
+        float_depth: false,
     };
     let primary = [c.f("cr", 1.0), c.f("cg", 1.0), c.f("cb", 1.0), c.f("ca", 1.0)];
     let env_color: [[f32; 4]; MAX_UNITS] = std::array::from_fn(|u| cases::env_color(c, u));
@@ -277,6 +278,7 @@ fn red_at(unit: &TexUnitKey, texels: &[u8], width: u32, s: f32, border: [f32; 4]
         max_lod: 1000.0,
         lod_bias: 0.0,
         border,
+        float_depth: false,
     };
     let c = [s, 0.0, 0.0, 1.0];
     sample_quad(unit, &tex, &[c; 4], 0)[0]
@@ -666,6 +668,7 @@ fn sample_with_three_quad_pixels_equals_sample_quad_off_cube_maps() {
         max_lod: 1000.0,
         lod_bias: 0.0,
         border: [0.0; 4],
+        float_depth: false,
     };
     let unit = sc.units[0].expect("unit 0 is on");
     let quad = [

@@ -362,7 +362,7 @@ impl OsContext {
         let has_stencil = fb.has_stencil();
         let (bytes_per_value, ptr, len): (i32, *mut u8, usize) = match fb.depth_buffer_mut()? {
             _ if has_stencil => (4, self.depth_view.as_mut_ptr().cast(), self.depth_view.len()),
-            DepthBuffer::D24(v) | DepthBuffer::D32(v) => (4, v.as_mut_ptr().cast(), v.len()),
+            DepthBuffer::D24(v) | DepthBuffer::D32(v) | DepthBuffer::D32F(v) => (4, v.as_mut_ptr().cast(), v.len()),
             DepthBuffer::D16(v) => (2, v.as_mut_ptr().cast(), v.len()),
         };
         // Never a pointer to fewer values than the size says.

@@ -1105,3 +1105,110 @@ fn selection_and_feedback_match_mesa() {
     assert!(soft.lines.iter().any(|l| l == "select: hits 7"));
     assert!(soft.lines.iter().any(|l| l == "drawn 0"));
 }
+
+/// Depth within `tol` (absolute, window depth) of Mesa's, per value; prints how far.
+fn near_depths(name: &str, a: &[f32], b: &[f32], tol: f32) {
+    assert_eq!(a.len(), b.len(), "{name}: sizes differ");
+    let (mut max, mut n) = (0.0f32, 0);
+    for (x, y) in a.iter().zip(b) {
+        let d = (x - y).abs();
+        max = max.max(d);
+        n += usize::from(x.to_bits() != y.to_bits());
+    }
+    println!("{name}: {n} of {} differ, by at most {max:e}", a.len());
+    assert!(max <= tol, "{name}: {max:e} > {tol:e}");
+}
+
+#[test]
+fn float_depth_and_clip_control_match_mesa() {
+    let Some(exe) = build("depthfloat") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // Both extensions listed; glClipControl's errors, its state through
+    // display lists and glPushAttrib(GL_TRANSFORM_BIT); the raster position
+    // under each mode; renderbuffer and texture sizes, completeness, the
+    // blit between depth formats (INVALID_OPERATION) and the transfer
+    // type's errors: Mesa's, line for line.
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+    // Colour of every scene (reverse Z into DEPTH32F_STENCIL8, GL_UPPER_LEFT
+    // with culling, polygon offset with a depth range, plain GL depth), and
+    // the float shadow map sampled with compare: byte for byte.
+    for name in [
+        "reverse.rgba",
+        "upper.rgba",
+        "offset.rgba",
+        "plain.rgba",
+        "shadow.sampled",
+        "shadow.outside.gequal",
+        "shadow.outside.less",
+    ] {
+        assert_eq!(soft.file(name), mesa.file(name), "{name}");
+    }
+    // A DEPTH_COMPONENT32F texture's upload (clamped) and readback as
+    // GL_FLOAT and GL_UNSIGNED_INT, and glDrawPixels/glCopyPixels of float
+    // depth: exact.
+    // GL_FLOAT_32_UNSIGNED_INT_24_8_REV into DEPTH32F_STENCIL8 and
+    // DEPTH24_STENCIL8 textures, read back both ways, and drawn with glDrawPixels.
+    for name in [
+        "tex.get.zf",
+        "tex.get.zui",
+        "pixels.zf",
+        "tex32f.get.ds2",
+        "tex32f.get.ds",
+        "drawpix.ds2",
+    ] {
+        assert_eq!(soft.file(name), mesa.file(name), "{name}");
+    }
+    // Into DEPTH24_STENCIL8: stencil exact, depth within one unit of 2^24 (softgl
+    // keeps Z24 texels as the floats the sampler reads, where neighbouring
+    // values can share one: `unpack::depth_unsampled`).
+    let (a, b) = (soft.u32s("tex24.get.ds"), mesa.u32s("tex24.get.ds"));
+    assert!(a
+        .iter()
+        .zip(&b)
+        .all(|(x, y)| x & 0xff == y & 0xff && (x >> 8).abs_diff(y >> 8) <= 1));
+    let (a, b) = (soft.u32s("tex24.get.ds2"), mesa.u32s("tex24.get.ds2"));
+    assert!(a
+        .chunks(2)
+        .zip(b.chunks(2))
+        .all(|(x, y)| x[1] == y[1] && x[0].abs_diff(y[0]) <= 1));
+    // Depth of sloped triangles: softgl's plane evaluation is within 4 units
+    // of 2^-24 of llvmpipe's f32 (measured ≤ 2.4e-7; the same difference that
+    // 24-bit depth shows as ≤ 2 units, see `packed_depth_stencil_matches_mesa`).
+    const TOL: f32 = 4.0 / 16_777_216.0;
+    for scene in ["reverse", "upper", "offset", "plain"] {
+        let (a, b) = (soft.f32s(&format!("{scene}.zf")), mesa.f32s(&format!("{scene}.zf")));
+        near_depths(&format!("{scene}.zf"), &a, &b, TOL);
+        // GL_UNSIGNED_INT: `(uint32_t)(z · 0xffffffff)` of the same floats.
+        let (a, b) = (soft.u32s(&format!("{scene}.zui")), mesa.u32s(&format!("{scene}.zui")));
+        let (max, _) = diff(&a, &b);
+        assert!(max <= f64::from(TOL) * 4_294_967_295.0 + 1.0, "{scene}.zui: {max}");
+        // DEPTH_STENCIL as UNSIGNED_INT_24_8 and FLOAT_32_UNSIGNED_INT_24_8_REV:
+        // stencil exact (cleared to 0x35), depth as above.
+        let (a, b) = (soft.u32s(&format!("{scene}.ds")), mesa.u32s(&format!("{scene}.ds")));
+        assert!(
+            a.iter().zip(&b).all(|(x, y)| x & 0xff == y & 0xff),
+            "{scene}.ds stencil"
+        );
+        let (max, _) = diff(
+            &a.iter().map(|v| v >> 8).collect::<Vec<_>>(),
+            &b.iter().map(|v| v >> 8).collect::<Vec<_>>(),
+        );
+        assert!(max <= 5.0, "{scene}.ds depth: {max}");
+        let (a, b) = (soft.u32s(&format!("{scene}.ds2")), mesa.u32s(&format!("{scene}.ds2")));
+        let words = |v: &[u32]| v.chunks(2).map(|p| p[1]).collect::<Vec<_>>();
+        assert_eq!(words(&a), words(&b), "{scene}.ds2 stencil words");
+        assert!(
+            b.chunks(2).all(|p| p[1] == 0x35),
+            "{scene}.ds2: stencil 0x35 in the low byte"
+        );
+        let floats = |v: &[u32]| v.chunks(2).map(|p| f32::from_bits(p[0])).collect::<Vec<_>>();
+        near_depths(&format!("{scene}.ds2"), &floats(&a), &floats(&b), TOL);
+    }
+    // The shadow map rendered with MuJoCo's offset, and a float-to-float blit.
+    for name in ["shadow.zf", "blit.zf"] {
+        near_depths(name, &soft.f32s(name), &mesa.f32s(name), TOL);
+    }
+    // The scenes drew something, and reverse Z kept the near surfaces.
+    let z = mesa.f32s("reverse.zf");
+    assert!(z.iter().filter(|&&v| v > 0.5).count() > 200 && z.contains(&0.0));
+}

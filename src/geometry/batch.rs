@@ -33,7 +33,7 @@
 //! thread): 2,640 instructions a vertex, 1,194 with the cache, 192 with
 //! both.
 
-use super::clip::{outcode_f32, ClipVertex};
+use super::clip::{outcode_f32_in, ClipVertex};
 use super::lighting::{LightInput, LightSetup, LitColors, ManyLit, CHUNK};
 use super::varying::{VaryingLayout, Varyings, MAX_VARYINGS};
 use super::Geometry;
@@ -660,7 +660,7 @@ impl<'a> VertexBatch<'a> {
         }
         (0..self.count).any(|i| {
             let p = self.stage.mvp * self.fetch.pos(i);
-            outcode_f32(p) != 0 || self.geometry.user.code(p.as_dvec4()) != 0
+            outcode_f32_in(p, self.geometry.half_z) != 0 || self.geometry.user.code(p.as_dvec4()) != 0
         })
     }
 

@@ -55,7 +55,10 @@ pub fn guard_levels<'a>(mut vertices: impl Iterator<Item = &'a ClipVertex>) -> &
 }
 
 /// The order llvmpipe clips against the view volume's planes (indices as in `dist`).
-const FINAL_ORDER: [usize; 6] = [3, 2, 5, 4, 0, 1];
+/// (The half-z near plane is where the near plane is: only one of them is ever set.)
+const FINAL_ORDER: [usize; 7] = [3, 2, 5, 4, 0, NEAR_HALF_Z, 1];
+/// The order the guard bands are clipped in.
+const GUARD_ORDER: [usize; 7] = [0, NEAR_HALF_Z, 1, 2, 3, 4, 5];
 
 impl ClipVertex {
     /// Whether the position and the first `n` varyings are finite.
@@ -116,12 +119,14 @@ fn dist_f32(p: DVec4, k: usize) -> f32 {
         2 => p.x + p.w,
         3 => p.w - p.x,
         4 => p.y + p.w,
-        _ => p.w - p.y,
+        5 => p.w - p.y,
+        _ => p.z,
     }
 }
 
 /// Signed distance of `p` to clip plane `k` (inside when `>= 0`): near, far,
-/// then left, right, bottom, top scaled by `g` (1 for the view volume itself).
+/// then left, right, bottom, top scaled by `g` (1 for the view volume itself);
+/// 6: the near plane `z ≥ 0` of `GL_ZERO_TO_ONE` ([`NEAR_HALF_Z`]).
 #[inline]
 fn dist(p: DVec4, k: usize, g: f64) -> f64 {
     let (x, y, z, w) = (p.x, p.y, p.z, p.w);
@@ -131,7 +136,34 @@ fn dist(p: DVec4, k: usize, g: f64) -> f64 {
         2 => g * w + x,
         3 => g * w - x,
         4 => g * w + y,
-        _ => g * w - y,
+        5 => g * w - y,
+        _ => z,
+    }
+}
+
+/// The plane index (and outcode bit) of the near plane under
+/// `glClipControl(…, GL_ZERO_TO_ONE)`: `z ≥ 0`, in place of plane 0's `z ≥ −w`.
+pub const NEAR_HALF_Z: usize = 6;
+
+/// [`outcode`] with the near plane of the clip depth mode: `half_z` moves it to `z ≥ 0`.
+#[inline]
+pub fn outcode_in(p: DVec4, g: f64, half_z: bool) -> u8 {
+    let c = outcode(p, g);
+    if half_z {
+        (c & !1) | (u8::from(p.z < 0.0) << NEAR_HALF_Z)
+    } else {
+        c
+    }
+}
+
+/// [`outcode_f32`] with the near plane of the clip depth mode (see [`outcode_in`]).
+#[inline(always)]
+pub fn outcode_f32_in(p: glam::Vec4, half_z: bool) -> u8 {
+    let c = outcode_f32(p);
+    if half_z {
+        (c & !1) | (u8::from(p.z < 0.0) << NEAR_HALF_Z)
+    } else {
+        c
     }
 }
 
@@ -265,7 +297,7 @@ pub type PolyVertex = (ClipVertex, bool);
 /// primitive once they have grown).
 pub fn clip_polygon(poly: &mut Vec<PolyVertex>, out: &mut Vec<PolyVertex>, planes: u8, g: f64, n: usize) {
     let last = g == 1.0;
-    let order = if last { FINAL_ORDER } else { [0, 1, 2, 3, 4, 5] };
+    let order = if last { FINAL_ORDER } else { GUARD_ORDER };
     for k in order {
         if planes & (1 << k) == 0 || poly.is_empty() {
             continue;
@@ -309,7 +341,7 @@ pub fn clip_segment(
         return clip_segment_f32(a, b, (planes, user), n);
     }
     let (mut a, mut b) = (*a, *b);
-    for k in 0..6 {
+    for k in GUARD_ORDER {
         if planes & (1 << k) == 0 {
             continue;
         }
@@ -336,9 +368,9 @@ fn clip_segment_f32(
     let (mut t0, mut t1) = (0.0f32, 0.0f32);
     let (ua, ub) = (user.code(a.pos), user.code(b.pos));
     let view = FINAL_ORDER.iter().filter(|&&k| planes & (1 << k) != 0);
-    let users = (0..6).filter(|&i| (ua | ub) & (1 << i) != 0).map(|i| i + 6);
+    let users = (0..6).filter(|&i| (ua | ub) & (1 << i) != 0).map(|i| i + 7);
     for k in view.copied().chain(users) {
-        let d = |p| if k < 6 { dist_f32(p, k) } else { user.dist(p, k - 6) };
+        let d = |p| if k < 7 { dist_f32(p, k) } else { user.dist(p, k - 7) };
         let (d0, d1) = (d(a.pos), d(b.pos));
         if d1 < 0.0 {
             t1 = t1.max(d1 / (d1 - d0));
@@ -350,12 +382,14 @@ fn clip_segment_f32(
             return None;
         }
     }
-    let a2 = if outcode(a.pos, 1.0) != 0 || ua != 0 {
+    // (In half-z mode with neither end behind `z = 0`, both are inside `z ≥ −w` too.)
+    let half_z = planes & (1 << NEAR_HALF_Z) != 0;
+    let a2 = if outcode_in(a.pos, 1.0, half_z) != 0 || ua != 0 {
         a.lerp_f32(b, t0, n)
     } else {
         *a
     };
-    let b2 = if outcode(b.pos, 1.0) != 0 || ub != 0 {
+    let b2 = if outcode_in(b.pos, 1.0, half_z) != 0 || ub != 0 {
         b.lerp_f32(a, t1, n)
     } else {
         *b

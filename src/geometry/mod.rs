@@ -28,7 +28,9 @@ use crate::raster::{self, PrimSink, RasterParams, RasterVertex};
 use crate::state::{FrontFace, PolygonMode, RasterState, ShadeModel};
 use assemble::{assemble, Primitive, QuadSplit};
 use batch::{VertexBatch, VertexStage};
-use clip::{clip_polygon, clip_polygon_user, clip_segment, guard_levels, outcode, ClipVertex, PolyVertex, UserPlanes};
+use clip::{
+    clip_polygon, clip_polygon_user, clip_segment, guard_levels, outcode_in, ClipVertex, PolyVertex, UserPlanes,
+};
 use glam::{Vec3, Vec4};
 use varying::{copy_slots, VaryingLayout, Varyings};
 
@@ -212,6 +214,10 @@ pub struct Geometry<'s> {
     pub recording: bool,
     state: &'s RasterState,
     viewport: Viewport,
+    /// `glClipControl`: the near plane is `z ≥ 0` (`GL_ZERO_TO_ONE`).
+    half_z: bool,
+    /// `glClipControl`: `GL_UPPER_LEFT` (window winding reversed, facing with it).
+    upper_left: bool,
     /// Triangles: clipped to the view volume, and bounded by the viewport.
     params: RasterParams,
     /// `params` with the polygon offset of filled faces, if enabled.
@@ -238,15 +244,17 @@ impl<'s> Geometry<'s> {
     pub fn new(state: &'s RasterState, fb: &Framebuffer, depth: bool, layout: VaryingLayout) -> Geometry<'s> {
         let (vp, sc) = (state.viewport, state.scissor);
         let (vw, vh) = (vp.width.min(MAX_VIEWPORT), vp.height.min(MAX_VIEWPORT));
-        let (n, f) = state.depth_range;
+        // (`glClipControl`: the z mapping and the sign of y's scale, `crate::clip_control`.)
+        let (z_scale, z_translate) = state.clip_control.depth_xform(state.depth_range);
+        let y_scale = state.clip_control.y_scale(vh as f32);
         let viewport = Viewport {
-            scale: [vw as f32 / 2.0, vh as f32 / 2.0, ((f - n) / 2.0) as f32],
+            scale: [vw as f32 / 2.0, y_scale, z_scale],
             translate: [
                 vp.x as f32 + vw as f32 / 2.0,
                 vp.y as f32 + vh as f32 / 2.0,
-                ((f + n) / 2.0) as f32,
+                z_translate,
             ],
-            flipped_y: (-(vh as f32) / 2.0, (fb.height() as f32 - vp.y as f32) - vh as f32 / 2.0),
+            flipped_y: (-y_scale, (fb.height() as f32 - vp.y as f32) - vh as f32 / 2.0),
             wide: [(0.0, 0.0); 4],
             pow2: [false; 4],
             all_pow2: false,
@@ -314,6 +322,8 @@ impl<'s> Geometry<'s> {
             recording: false,
             state,
             viewport,
+            half_z: state.clip_control.half_z(),
+            upper_left: state.clip_control.upper_left(),
             params,
             fill_params: RasterParams {
                 offset: fill_offset,
@@ -524,7 +534,7 @@ impl<'s> Geometry<'s> {
         let pos = v.pos;
         let finite = pos.is_finite() & varyings_finite;
         v.finite = finite;
-        v.codes = (clip::outcode_f32(pos), self.user.code(pos.as_dvec4()));
+        v.codes = (clip::outcode_f32_in(pos, self.half_z), self.user.code(pos.as_dvec4()));
         v.inside = false;
         if finite && v.codes == (0, 0) {
             if let Some((x, y, y_down, z, inv_w)) = self.map_f32(pos, true) {
@@ -630,7 +640,9 @@ impl<'s> Geometry<'s> {
     fn line(&self, a: &ClipVertex, b: &ClipVertex, flat: Option<Varyings>, sink: &mut dyn PrimSink) {
         let n = self.layout.len();
         let f = self.layout.finite_len();
-        if !(a.is_finite(f) && b.is_finite(f)) || outcode(a.pos, 1.0) & outcode(b.pos, 1.0) != 0 {
+        if !(a.is_finite(f) && b.is_finite(f))
+            || outcode_in(a.pos, 1.0, self.half_z) & outcode_in(b.pos, 1.0, self.half_z) != 0
+        {
             return;
         }
         if self.user.code(a.pos) & self.user.code(b.pos) != 0 {
@@ -639,7 +651,7 @@ impl<'s> Geometry<'s> {
         let (a0, b0) = (*a, *b);
         let (mut a, mut b) = (*a, *b);
         for &g in guard_levels([a, b].iter()) {
-            let planes = outcode(a.pos, g) | outcode(b.pos, g);
+            let planes = outcode_in(a.pos, g, self.half_z) | outcode_in(b.pos, g, self.half_z);
             let user = if g == 1.0 {
                 self.user.code(a.pos) | self.user.code(b.pos)
             } else {
@@ -664,7 +676,7 @@ impl<'s> Geometry<'s> {
     #[inline(always)]
     fn triangle(&self, v: [&RasterVertex; 3], flat: Option<&Varyings>, sink: &mut dyn PrimSink) {
         let area = signed_area(3, |i| (v[i].x, v[i].y));
-        let front = (area > 0.0) == (self.state.front_face == FrontFace::Ccw);
+        let front = ((area > 0.0) == (self.state.front_face == FrontFace::Ccw)) != self.upper_left;
         if self.state.culls(front) || area == 0.0 {
             return;
         }
@@ -699,7 +711,7 @@ impl<'s> Geometry<'s> {
         if poly.iter().any(|(v, _)| !v.is_finite(f)) {
             return;
         }
-        let codes = poly.map(|(v, _)| outcode(v.pos, 1.0));
+        let codes = poly.map(|(v, _)| outcode_in(v.pos, 1.0, self.half_z));
         let user = poly.map(|(v, _)| self.user.code(v.pos));
         if codes[0] & codes[1] & codes[2] != 0 || user[0] & user[1] & user[2] != 0 {
             return;
@@ -709,7 +721,9 @@ impl<'s> Geometry<'s> {
         clipped.extend_from_slice(&poly);
         let mut was_clipped = false;
         for &g in guard_levels(poly.iter().map(|(v, _)| v)) {
-            let planes = clipped.iter().fold(0, |acc, (v, _)| acc | outcode(v.pos, g));
+            let planes = clipped
+                .iter()
+                .fold(0, |acc, (v, _)| acc | outcode_in(v.pos, g, self.half_z));
             if planes != 0 {
                 clip_polygon(clipped, out, planes, g, n);
                 was_clipped = true;
@@ -736,7 +750,7 @@ impl<'s> Geometry<'s> {
         }
         // Facing from the signed area in window space (y up: positive is CCW).
         let area = signed_area(win.len(), |i| (win[i].0.x, win[i].0.y));
-        let front = (area > 0.0) == (self.state.front_face == FrontFace::Ccw);
+        let front = ((area > 0.0) == (self.state.front_face == FrontFace::Ccw)) != self.upper_left;
         if self.state.culls(front) {
             return;
         }
@@ -847,7 +861,8 @@ impl<'s> Geometry<'s> {
         } else {
             ((z1 * y2 - z2 * y1) / det, (z2 * x1 - z1 * x2) / det)
         };
-        f64::from(raster::offset(factor, units, zx as f32, zy as f32, format))
+        let max_z = [a.z, b.z, c.z].iter().fold(0.0f32, |m, z| m.max((*z as f32).abs()));
+        f64::from(raster::offset(factor, units, zx as f32, zy as f32, format, max_z))
     }
 }
 

@@ -95,7 +95,9 @@ pub fn write_stencil(img: &PlacedImage, bounds: Rect, t: &mut Target<'_>) {
                 let v = z[img.at(x, y)];
                 match depth {
                     softgl_jit::DepthTarget::D16(b) => b.get_mut(idx).map(|d| *d = v as u16),
-                    softgl_jit::DepthTarget::D24(b) | softgl_jit::DepthTarget::D32(b) => b.get_mut(idx).map(|d| *d = v),
+                    softgl_jit::DepthTarget::D24(b)
+                    | softgl_jit::DepthTarget::D32(b)
+                    | softgl_jit::DepthTarget::D32F(b) => b.get_mut(idx).map(|d| *d = v),
                 };
             }
         }

@@ -608,7 +608,8 @@ pub(crate) fn setup_planes(
         let mut z = [v[0].z as f32, v[1].z as f32, v[2].z as f32];
         if let Some((factor, units)) = params.offset {
             let slope = setup.plane(z);
-            let o = offset(factor, units, slope.dadx, slope.dady, f);
+            let max_z = z[0].abs().max(z[1].abs()).max(z[2].abs());
+            let o = offset(factor, units, slope.dadx, slope.dady, f, max_z);
             let at = |z: f32| (z + o).clamp(0.0, 1.0);
             z = [at(z[0]), at(z[1]), at(z[2])];
         }
@@ -626,8 +627,18 @@ pub(crate) fn setup_planes(
 /// largest depth value (llvmpipe's unit is twice the minimum resolvable
 /// difference: measured, docs/llvmpipe-facts.md). Not-a-number offsets are 0;
 /// infinite ones saturate like huge finite ones once depth is clamped.
-pub fn offset(factor: f32, units: f32, dzdx: f32, dzdy: f32, format: DepthFormat) -> f32 {
-    let o = units * (2.0 / format.max_value() as f32) + dzdx.abs().max(dzdy.abs()) * factor;
+/// A float depth buffer's unit is instead `2^(e - 23)` for `e` the exponent
+/// of `max_z`, the primitive's largest `|z|` (`lp_state_setup.c`
+/// `lp_do_offset_tri`, `floating_point_depth`: no factor 2, 0 below 2^-104).
+pub fn offset(factor: f32, units: f32, dzdx: f32, dzdy: f32, format: DepthFormat, max_z: f32) -> f32 {
+    let unit = match format {
+        DepthFormat::D32F => {
+            let e = (max_z.to_bits() & 0x7f80_0000) as i32 - (23 << 23);
+            f32::from_bits(e.max(0) as u32)
+        }
+        f => 2.0 / f.max_value() as f32,
+    };
+    let o = units * unit + dzdx.abs().max(dzdy.abs()) * factor;
     if o.is_nan() {
         0.0
     } else {

@@ -99,9 +99,13 @@ fn level_index(target: TexTarget, level: i32) -> GlResult<usize> {
 fn read_source(fb: &Framebuffer, depth: bool, x: i32, y: i32) -> Option<[Raw; 4]> {
     let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
     if depth {
-        let bits = fb.depth_format()?.max_value().count_ones();
+        let format = fb.depth_format()?;
         let z = fb.depth_at(x, y)?;
-        Some([Raw::U(z, bits), Raw::ZERO, Raw::ZERO, Raw::ONE])
+        let d = match format {
+            softgl_jit::DepthFormat::D32F => Raw::F(f32::from_bits(z)),
+            f => Raw::U(z, f.bits()),
+        };
+        Some([d, Raw::ZERO, Raw::ZERO, Raw::ONE])
     } else {
         Some(fb.pixel(x, y)?.map(|c| Raw::U(u32::from(c), 8)))
     }
@@ -528,7 +532,10 @@ impl Context {
                 TexParam::WrapS(w) => params.wrap[0] = w,
                 TexParam::WrapT(w) => params.wrap[1] = w,
                 TexParam::WrapR(w) => params.wrap[2] = w,
-                TexParam::BorderColor(c) => params.border = c.map(|v| v.clamp(0.0, 1.0)),
+                // Kept unclamped, as Mesa with ARB_texture_float (a float depth
+                // texture samples it so); the sampler clamps it for the others,
+                // the query below answers it clamped (`main/texparam.c`).
+                TexParam::BorderColor(c) => params.border = c,
                 TexParam::MinLod(v) => params.min_lod = v,
                 TexParam::MaxLod(v) => params.max_lod = v,
                 TexParam::BaseLevel(v) => {
@@ -561,7 +568,7 @@ impl Context {
                 TexParamName::WrapS => TexParam::WrapS(p.wrap[0]),
                 TexParamName::WrapT => TexParam::WrapT(p.wrap[1]),
                 TexParamName::WrapR => TexParam::WrapR(p.wrap[2]),
-                TexParamName::BorderColor => TexParam::BorderColor(p.border),
+                TexParamName::BorderColor => TexParam::BorderColor(p.border.map(|v| v.clamp(0.0, 1.0))),
                 TexParamName::MinLod => TexParam::MinLod(p.min_lod),
                 TexParamName::MaxLod => TexParam::MaxLod(p.max_lod),
                 TexParamName::BaseLevel => TexParam::BaseLevel(p.base_level),

@@ -48,6 +48,9 @@ pub enum PixelType {
     UnsignedInt2101010Rev,
     /// `GL_UNSIGNED_INT_24_8`: depth in the top 24 bits, stencil in the low 8.
     UnsignedInt248,
+    /// `GL_FLOAT_32_UNSIGNED_INT_24_8_REV` (ARB_depth_buffer_float): depth as
+    /// an f32, then a word with stencil in its low 8 bits (two 4-byte elements).
+    Float32UnsignedInt248Rev,
 }
 
 /// A GL internal format (`internalformat` of `glTexImage`, `glCopyTexImage`).
@@ -104,6 +107,10 @@ pub enum InternalFormat {
     /// `Z24_UNORM_S8_UINT` (24 depth bits, 8 stencil bits).
     DepthStencil,
     Depth24Stencil8,
+    /// ARB_depth_buffer_float: 32-bit float depth (llvmpipe's `Z32_FLOAT`),
+    /// and with stencil (`Z32_FLOAT_S8X24_UINT`).
+    DepthComponent32F,
+    Depth32FStencil8,
     Srgb,
     Srgb8,
     SrgbAlpha,
@@ -131,6 +138,8 @@ pub struct Storage {
     /// Bits of R, G, B, A (0 for a channel the base format lacks); depth formats: `[d, 0, 0, 0]`.
     pub bits: [u32; 4],
     pub srgb: bool,
+    /// Float depth (`GL_DEPTH_COMPONENT32F`): the texels are the stored floats.
+    pub float: bool,
 }
 
 impl Storage {
@@ -225,19 +234,32 @@ impl InternalFormat {
             }
             F::DepthComponent16 => (B::Depth, [16, 0, 0, 0], false),
             F::DepthComponent32 => (B::Depth, [32, 0, 0, 0], false),
+            F::DepthComponent32F | F::Depth32FStencil8 => {
+                return Storage {
+                    base: B::Depth,
+                    bits: [32, 0, 0, 0],
+                    srgb: false,
+                    float: true,
+                }
+            }
             F::Srgb | F::Srgb8 => (B::Rgb, [8, 8, 8, 0], true),
             F::SrgbAlpha | F::Srgb8Alpha8 => (B::Rgba, [8, 8, 8, 8], true),
             F::Sluminance | F::Sluminance8 => (B::Luminance, [8, 0, 0, 0], true),
             F::SluminanceAlpha | F::Sluminance8Alpha8 => (B::LuminanceAlpha, [8, 0, 0, 8], true),
         };
-        Storage { base, bits, srgb }
+        Storage {
+            base,
+            bits,
+            srgb,
+            float: false,
+        }
     }
 
     /// The stencil bits of a packed depth-stencil format (0 for the others):
     /// kept in a plane of bytes after the depth texels ([`TexImage::stencil_offset`](super::TexImage::stencil_offset)).
     pub fn stencil_bits(self) -> u32 {
         match self {
-            InternalFormat::DepthStencil | InternalFormat::Depth24Stencil8 => 8,
+            InternalFormat::DepthStencil | InternalFormat::Depth24Stencil8 | InternalFormat::Depth32FStencil8 => 8,
             _ => 0,
         }
     }
@@ -267,7 +289,7 @@ impl PixelType {
             T::Short => Signed(16),
             T::UnsignedInt => Unsigned(32),
             T::Int => Signed(32),
-            T::Float => TypeKind::Float,
+            T::Float | T::Float32UnsignedInt248Rev => TypeKind::Float,
             T::UnsignedByte332 => Packed(1, &[(5, 3), (2, 3), (0, 2)]),
             T::UnsignedByte233Rev => Packed(1, &[(0, 3), (3, 3), (6, 2)]),
             T::UnsignedShort565 => Packed(2, &[(11, 5), (5, 6), (0, 5)]),
@@ -328,7 +350,7 @@ impl PixelFormat {
             | T::UnsignedShort1555Rev
             | T::UnsignedInt1010102
             | T::UnsignedInt2101010Rev => matches!(self, PixelFormat::Rgba | PixelFormat::Bgra),
-            T::UnsignedInt248 => self == PixelFormat::DepthStencil,
+            T::UnsignedInt248 | T::Float32UnsignedInt248Rev => self == PixelFormat::DepthStencil,
             _ => true,
         }
     }
@@ -337,7 +359,8 @@ impl PixelFormat {
     /// §4.3.1, `GL_DEPTH_STENCIL` takes only `GL_UNSIGNED_INT_24_8` (Mesa
     /// `_mesa_error_check_format_and_type`).
     pub fn type_enum_ok(self, ty: PixelType) -> bool {
-        self != PixelFormat::DepthStencil || ty == PixelType::UnsignedInt248
+        self != PixelFormat::DepthStencil
+            || matches!(ty, PixelType::UnsignedInt248 | PixelType::Float32UnsignedInt248Rev)
     }
 
     /// Depth or depth-stencil (they agree with the same internal formats:

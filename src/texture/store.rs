@@ -202,6 +202,7 @@ impl TextureStore {
                 max_lod: p.max_lod,
                 lod_bias: quantized_lod_bias(p.lod_bias),
                 border: border_for_base(p.border, storage.base),
+                float_depth: storage.float,
             },
         })
     }

@@ -279,6 +279,12 @@ pub fn fetch(bytes: &[u8], at: usize, format: PixelFormat, ty: PixelType, swap: 
             out[slot] = v;
         }
     };
+    if ty == PixelType::Float32UnsignedInt248Rev {
+        // The depth float, then the stencil in the next word's low byte.
+        out[0] = Raw::F(f32::from_bits(read_le(&bytes[at..], 4, swap)));
+        out[1] = Raw::U(read_le(&bytes[at + 4..], 4, swap) & 0xff, 8);
+        return out;
+    }
     match ty.kind() {
         TypeKind::Packed(n, fields) => {
             let v = read_le(&bytes[at..], n as usize, swap);
@@ -480,6 +486,7 @@ pub(crate) fn put_texel(out: &mut [u8], storage: &Storage, n: [u32; 4]) {
                 out[2 * c..2 * c + 2].copy_from_slice(&(v as u16).to_ne_bytes());
             }
         }
+        TexelFormat::Depth32F if storage.float => out[..4].copy_from_slice(&n[0].to_ne_bytes()),
         TexelFormat::Depth32F => {
             out[..4].copy_from_slice(&depth_sampled(n[0], storage.bits[0]).to_ne_bytes());
         }
@@ -491,7 +498,15 @@ pub(crate) fn put_texel(out: &mut [u8], storage: &Storage, n: [u32; 4]) {
 pub fn store_texel(img: &mut TexImage, (x, y, z): (usize, usize, usize), rgba: [Raw; 4], route: Route) {
     let storage = img.internal.storage();
     let mut n = [0u32; 4];
-    if storage.base == BaseFormat::Depth {
+    if storage.float {
+        // `_mesa_unpack_depth_span` to float, clamped to [0, 1] (NaN as 0 here).
+        let f = match rgba[0] {
+            // A depth buffer's own value (copies).
+            Raw::U(x, b) if !matches!(b, 8 | 16 | 32) => (f64::from(x) / ((1u64 << b) - 1) as f64) as f32,
+            r => depth_float(r),
+        };
+        n[0] = softgl_jit::DepthFormat::D32F.from_window(f);
+    } else if storage.base == BaseFormat::Depth {
         n[0] = depth_to_unorm(rgba[0], storage.bits[0]);
     } else {
         for c in 0..4 {
@@ -623,6 +638,26 @@ pub fn download(img: &TexImage, format: PixelFormat, ty: PixelType, swap: bool, 
                 if base == BaseFormat::Depth {
                     let Some(Raw::F(d)) = ch[0] else { continue };
                     let bits = storage.bits[0];
+                    if format == PixelFormat::DepthStencil && ty == PixelType::Float32UnsignedInt248Rev {
+                        // The float the sampler reads, then the stencil word (`z32f_x24s8`).
+                        let s = img.texels[img.stencil_offset(x, y, z)];
+                        write_ne(&mut out[at..], d.to_bits(), 4, swap);
+                        write_ne(&mut out[at + 4..], u32::from(s), 4, swap);
+                        continue;
+                    }
+                    if storage.float {
+                        // Z32_FLOAT(_S8X24_UINT) read back: the floats (packed as `ty` says),
+                        // with stencil `(uint32_t)(z · 0xffffff) << 8 | s` (u_format_zs.c).
+                        if format == PixelFormat::DepthStencil {
+                            let z24 = (f64::from(d) * 16_777_215.0) as u32 & 0xff_ffff;
+                            let s = img.texels[img.stencil_offset(x, y, z)];
+                            write_ne(&mut out[at..], (z24 << 8) | u32::from(s), 4, swap);
+                        } else {
+                            let (v, n) = pack_depth(d, ty);
+                            write_ne(&mut out[at..], v, n, swap);
+                        }
+                        continue;
+                    }
                     if format == PixelFormat::DepthStencil {
                         // `GL_UNSIGNED_INT_24_8` from Z24_UNORM_S8_UINT: the bits moved
                         // (`_mesa_unpack_uint_24_8_depth_stencil_row`).

@@ -51,6 +51,7 @@ impl Gen<'_> {
                 let z = at(self, slot::Z);
                 g.z = Some(match format {
                     DepthFormat::D32 => self.unorm_lanes(z, format.max_value()),
+                    DepthFormat::D32F => self.float_depth_lanes(z),
                     DepthFormat::D16 | DepthFormat::D24 => self.unorm_lanes_small(z, format.max_value()),
                 });
             }
@@ -414,6 +415,20 @@ impl Gen<'_> {
         let v = self.b.ins().fmul(v, m);
         let v = self.b.ins().nearest(v);
         self.b.ins().fcvt_to_uint_sat(I32X4, v)
+    }
+
+    /// The bits of `min(max(v, 0), 1)` with SSE's operand order, NaN and -0
+    /// as +0 (`DepthFormat::from_window` for `D32F`).
+    fn float_depth_lanes(&mut self, v: Value) -> Value {
+        let zero = self.fconst(0.0);
+        let one = self.fconst(1.0);
+        let positive = self.b.ins().fcmp(FloatCC::GreaterThan, v, zero);
+        let bits = self.b.ins().bitcast(I32X4, MemFlagsData::new(), v);
+        let bits = self.b.ins().band(bits, positive);
+        let lo = self.b.ins().bitcast(F32X4, MemFlagsData::new(), bits);
+        let below = self.b.ins().fcmp(FloatCC::LessThan, lo, one);
+        let one_bits = self.splat(i64::from(1.0f32.to_bits()));
+        self.b.ins().bitselect(below, bits, one_bits)
     }
 
     /// [`Self::unorm_lanes`] for `max < 2^24` in fewer instructions (the

@@ -424,6 +424,10 @@ pub struct TextureRef<'a> {
     /// `GL_TEXTURE_FILTER_CONTROL`), each through [`quantized_lod_bias`].
     pub lod_bias: f32,
     pub border: [f32; 4],
+    /// A float depth texture (`GL_DEPTH_COMPONENT32F`, llvmpipe's `Z32_FLOAT`):
+    /// neither the comparison's reference nor the border is clamped to [0, 1]
+    /// (`lp_bld_sample_soa.c`: both clamps are for non-float channels).
+    pub float_depth: bool,
 }
 
 /// Per draw: every unit's texture and `GL_TEXTURE_ENV_COLOR`. `Default`: no textures.

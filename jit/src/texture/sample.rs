@@ -207,8 +207,14 @@ fn filter_levels(
     let st = SoaState {
         wrap,
         border_axes: std::array::from_fn(|a| filter::uses_border(wrap[a], key.min, key.mag)),
-        border: border(tex.border, unit.base, key.format),
-        compare: key.compare.map(|f| (f, minps(maxps(reference, 0.0), 1.0))),
+        border: match tex.float_depth {
+            true => [tex.border[0], 0.0, 0.0, 1.0],
+            false => border(tex.border, unit.base, key.format),
+        },
+        compare: key.compare.map(|f| match tex.float_depth {
+            true => (f, reference),
+            false => (f, minps(maxps(reference, 0.0), 1.0)),
+        }),
     };
     let one = |l: u32| level(l).map_or([0.0; 4], |lv| filter::soa(&lv, img_filter, dims, coord, &st));
     let c = one(lod.level0);

@@ -78,6 +78,7 @@ pub fn whole_chain<'a>(images: &'a [Image<'a>]) -> TextureRef<'a> {
         max_lod: 1000.0,
         lod_bias: 0.0,
         border: [0.0; 4],
+        float_depth: false,
     }
 }
 

@@ -234,6 +234,8 @@ fn restore(os: &mut GlState, gl: &mut Context, s: &SavedAttrib) -> GlResult {
     }
     if m & TRANSFORM_BIT != 0 {
         gl.matrix_mode(s.matrix_mode)?;
+        // glClipControl's state is transform state (Mesa's `gl_transform_attrib`).
+        gl.set_clip_control(st.clip_control)?;
     }
     if m & (COLOR_BIT | ENABLE_BIT) != 0 {
         set_cap(gl, Capability::AlphaTest, st.alpha_test)?;

@@ -82,6 +82,8 @@ pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
             "glMultiTexCoord4svARB",
         ],
     ),
+    ("GL_ARB_clip_control", &["glClipControl"]),
+    ("GL_ARB_depth_buffer_float", &[]),
     ("GL_ARB_depth_texture", &[]),
     (
         "GL_ARB_occlusion_query",

@@ -98,6 +98,8 @@ fn rb_format(f: GLenum) -> GlResult<RenderbufferFormat> {
         0x81A7 => F::DepthComponent32,
         0x84F9 => F::DepthStencil,
         0x88F0 => F::Depth24Stencil8,
+        0x8CAC => F::DepthComponent32F,
+        0x8CAD => F::Depth32FStencil8,
         0x1901 => F::StencilIndex,
         0x8D46 => F::StencilIndex1,
         0x8D47 => F::StencilIndex4,
@@ -133,6 +135,8 @@ fn rb_format_enum(f: RenderbufferFormat) -> GLenum {
         F::DepthComponent32 => 0x81A7,
         F::DepthStencil => 0x84F9,
         F::Depth24Stencil8 => 0x88F0,
+        F::DepthComponent32F => 0x8CAC,
+        F::Depth32FStencil8 => 0x8CAD,
         F::StencilIndex => 0x1901,
         F::StencilIndex1 => 0x8D46,
         F::StencilIndex4 => 0x8D47,
@@ -318,9 +322,15 @@ fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname:
                 GL_LINEAR_ENUM as i32
             }
         }
-        // COMPONENT_TYPE: not of DEPTH_STENCIL_ATTACHMENT (Mesa); stencil is an index.
+        // COMPONENT_TYPE: not of DEPTH_STENCIL_ATTACHMENT (Mesa); stencil is an index,
+        // but Z24_S8's is its format's datatype, unsigned normalized, and float depth's
+        // is GL_FLOAT (`main/fbobject.c`).
         0x8211 if p == AttachmentPoint::DepthStencil => return Err(err),
+        0x8211 if p == AttachmentPoint::Stencil && bits[4] > 0 && !gl.attachment_float_depth(a) => {
+            GL_UNSIGNED_NORMALIZED as i32
+        }
         0x8211 if p == AttachmentPoint::Stencil => GL_INDEX as i32,
+        0x8211 if p == AttachmentPoint::Depth && gl.attachment_float_depth(a) => GL_FLOAT as i32,
         0x8211 => GL_UNSIGNED_NORMALIZED as i32,
         0x8212..=0x8217 => {
             if p == AttachmentPoint::DepthStencil && pname != 0x8216 && pname != 0x8217 {
@@ -434,7 +444,7 @@ pub(super) fn value(gl: &mut Context, pname: GLenum) -> Option<super::get::Val> 
             let c = if color { color_bits(desc.color) } else { [0; 4] };
             let v = match pname {
                 0x0D52..=0x0D55 => c[(pname - 0x0D52) as usize],
-                0x0D56 => desc.depth_bits,
+                0x0D56 => desc.depth_format().ok().flatten().map_or(0, |f| f.bits()),
                 _ => desc.stencil_bits,
             };
             int(v.into())

@@ -145,6 +145,8 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0BA2 => rect(s.viewport),                                              // VIEWPORT
         0x0C10 => rect(s.scissor),                                               // SCISSOR_BOX
         0x0B70 => Val::N(vec![s.depth_range.0, s.depth_range.1]),                // DEPTH_RANGE
+        0x935C => i(s.clip_control.to_gl().0),                                   // CLIP_ORIGIN
+        0x935D => i(s.clip_control.to_gl().1),                                   // CLIP_DEPTH_MODE
         0x0C22 => Val::N(s.clear_color.iter().map(|&c| f64::from(c)).collect()), // COLOR_CLEAR_VALUE
         0x0B73 => Val::N(vec![s.clear_depth]),                                   // DEPTH_CLEAR_VALUE
         0x0B91 => i(s.clear_stencil),                                            // STENCIL_CLEAR_VALUE
@@ -173,7 +175,7 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
         0x0D53 => i(color_bits(1)),
         0x0D54 => i(color_bits(2)),
         0x0D55 => i(color_bits(3)),
-        0x0D56 => i(fb.depth_format().map_or(0, |f| f.max_value().count_ones())), // DEPTH_BITS
+        0x0D56 => i(fb.depth_format().map_or(0, |zbufformat| zbufformat.bits())), // DEPTH_BITS
         0x0D57 => i(if fb.has_stencil() { 8 } else { 0 }),                        // STENCIL_BITS
         0x0D58..=0x0D5B => i(if fb.has_accum() {
             i64::from(softgl::accum::ACCUM_BITS)

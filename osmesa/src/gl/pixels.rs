@@ -57,8 +57,16 @@ fn pixel_store(pname: GLenum, param: i32) {
 /// format `GL_INVALID_ENUM` (`GL_BITMAP` too: no texture or colour format takes it).
 pub(super) fn pixel_size(format: GLenum, ty: GLenum) -> GlResult<(usize, usize)> {
     // GL_DEPTH_STENCIL takes GL_UNSIGNED_INT_24_8 only, checked first (GL 3.0 §4.3.1).
-    if format == GL_DEPTH_STENCIL && ty != GL_UNSIGNED_INT_24_8 {
+    if format == GL_DEPTH_STENCIL && !matches!(ty, GL_UNSIGNED_INT_24_8 | GL_FLOAT_32_UNSIGNED_INT_24_8_REV) {
         return Err(GlError::InvalidEnum);
+    }
+    if ty == GL_FLOAT_32_UNSIGNED_INT_24_8_REV {
+        // Two 4-byte elements: the depth float and the stencil word.
+        return if format == GL_DEPTH_STENCIL {
+            Ok((8, 4))
+        } else {
+            Err(GlError::InvalidOperation)
+        };
     }
     let packed = match ty {
         GL_UNSIGNED_INT_24_8 => Some((4, [GL_DEPTH_STENCIL, GL_DEPTH_STENCIL])),
@@ -149,6 +157,13 @@ fn read_pixel(fb: &Framebuffer, src: Source, x: i64, y: i64, out: &mut Vec<f64>)
                     .iter()
                     .map(|c| c.map_or((p[0] + p[1] + p[2]).min(1.0), |c| p[c])),
             );
+        }
+        Source::Depth if fb.depth_format()? == softgl::DepthFormat::D32F => {
+            // The stored float, and as Mesa's `z32_float_to_z32_unorm` the
+            // 32-bit value the integer types narrow (`u_format_zs.c`).
+            let z = f64::from(f32::from_bits(fb.depth_at(x, y)?));
+            out.push(z);
+            out.push(f64::from((z * 4_294_967_295.0) as u32));
         }
         Source::Depth => {
             let max = fb.depth_format()?.max_value();
@@ -241,13 +256,15 @@ unsafe fn read_pixels(
 ) -> GlResult {
     // GL_DEPTH_STENCIL takes GL_UNSIGNED_INT_24_8 only (INVALID_ENUM, checked
     // first), which no other format takes (INVALID_OPERATION): GL 3.0 §4.3.1.
-    if format == GL_DEPTH_STENCIL && ty != GL_UNSIGNED_INT_24_8 {
+    // GL_FLOAT_32_UNSIGNED_INT_24_8_REV (ARB_depth_buffer_float) likewise.
+    if format == GL_DEPTH_STENCIL && !matches!(ty, GL_UNSIGNED_INT_24_8 | GL_FLOAT_32_UNSIGNED_INT_24_8_REV) {
         return Err(GlError::InvalidEnum);
     }
     let src = source(format)?;
     let size: usize = match ty {
         GL_UNSIGNED_INT_24_8 if format == GL_DEPTH_STENCIL => 4,
-        GL_UNSIGNED_INT_24_8 => return Err(GlError::InvalidOperation),
+        GL_FLOAT_32_UNSIGNED_INT_24_8_REV if format == GL_DEPTH_STENCIL => 8,
+        GL_UNSIGNED_INT_24_8 | GL_FLOAT_32_UNSIGNED_INT_24_8_REV => return Err(GlError::InvalidOperation),
         GL_UNSIGNED_BYTE | GL_BYTE => 1,
         GL_UNSIGNED_SHORT | GL_SHORT => 2,
         GL_UNSIGNED_INT | GL_INT | GL_FLOAT => 4,
@@ -283,8 +300,14 @@ unsafe fn read_pixels(
     };
     let pixel_bytes = comps * size;
     // The layout of a format with as many components (stencil: one).
-    let like = decode::<PixelFormat>(format).unwrap_or(PixelFormat::Red);
-    let like_ty = decode::<PixelType>(ty)?;
+    // (Float depth and stencil: eight bytes, aligned as two `GL_UNSIGNED_INT`s.)
+    let (like, like_ty) = match ty {
+        GL_FLOAT_32_UNSIGNED_INT_24_8_REV => (PixelFormat::LuminanceAlpha, PixelType::UnsignedInt),
+        _ => (
+            decode::<PixelFormat>(format).unwrap_or(PixelFormat::Red),
+            decode::<PixelType>(ty)?,
+        ),
+    };
     let (w, h) = (w as usize, h as usize);
     let ClientLayout {
         row_stride: stride,
@@ -297,7 +320,9 @@ unsafe fn read_pixels(
     let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
     let stencil = matches!(src, Source::Stencil);
     let float_src = matches!(src, Source::Color(_)) && fb.color_format() == softgl::ColorFormat::Rgba32F;
-    let depth_bits = fb.depth_format().map_or(0, |f| f.max_value().count_ones());
+    let depth_format = fb.depth_format();
+    let depth_bits = depth_format.map_or(0, |f| f.bits());
+    let float_depth = depth_format == Some(softgl::DepthFormat::D32F);
     let mut vals = Vec::with_capacity(4);
     for j in 0..h {
         for i in 0..w {
@@ -305,14 +330,35 @@ unsafe fn read_pixels(
                 continue;
             }
             let at = start + j * stride + i * pixel_bytes;
+            if let (Source::DepthStencil, GL_FLOAT_32_UNSIGNED_INT_24_8_REV) = (src, ty) {
+                // The depth as f32, then a word with the stencil index in its low 8 bits
+                // (Mesa's `struct z32f_x24s8`; unorm depth through f64, `u_format_zs.c`).
+                let z = match depth_format {
+                    Some(softgl::DepthFormat::D32F) => f32::from_bits(vals[0] as u32),
+                    f => (vals[0] * (1.0 / f64::from(f.map_or(1, |f| f.max_value())))) as f32,
+                };
+                put(&mut dst[at..], GL_FLOAT, f64::from(z), false, pack.swap_bytes);
+                put(&mut dst[at + 4..], GL_UNSIGNED_INT, vals[1], true, pack.swap_bytes);
+                continue;
+            }
             if let Source::DepthStencil = src {
-                // Z24 in the top 24 bits, the stencil index in the low 8.
-                let z = replicate(vals[0] as u32, depth_bits, 24);
+                // Z24 in the top 24 bits, the stencil index in the low 8
+                // (from float depth: `(uint32_t)(z · 0xffffff)`, u_format_zs.c).
+                let z = if float_depth {
+                    (f64::from(f32::from_bits(vals[0] as u32)) * 16_777_215.0) as u32 & 0xff_ffff
+                } else {
+                    replicate(vals[0] as u32, depth_bits, 24)
+                };
                 let v = (z << 8) | (vals[1] as u32 & 0xff);
                 put(&mut dst[at..], GL_UNSIGNED_INT, f64::from(v), true, pack.swap_bytes);
                 continue;
             }
             if let (Source::Depth, GL_UNSIGNED_INT | GL_UNSIGNED_SHORT) = (src, ty) {
+                if float_depth && ty == GL_UNSIGNED_SHORT {
+                    // Float depth to a short: the general float path (Mesa's `_mesa_pack_depth_span`).
+                    put(&mut dst[at..], ty, vals[0], false, pack.swap_bytes);
+                    continue;
+                }
                 let raw = replicate(vals[1] as u32, depth_bits, 8 * size as u32);
                 put(&mut dst[at..], ty, f64::from(raw), true, pack.swap_bytes);
                 continue;

@@ -155,6 +155,10 @@ exports! {
     [] fn glDepthRange(near: f64, far: f64) {
         gl(move |gl| gl.depth_range(near, far))
     }
+    /// ARB_clip_control (compiled into display lists, as Mesa's `save_ClipControl`).
+    [] fn glClipControl(origin: GLenum, depth: GLenum) {
+        gl(move |gl| gl.clip_control(origin, depth))
+    }
     [] fn glScissor(x: i32, y: i32, width: i32, height: i32) {
         gl(move |gl| gl.scissor(x, y, width, height))
     }
