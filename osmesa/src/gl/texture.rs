@@ -439,9 +439,9 @@ unsafe fn tex_sub_image(
 ) {
     let t = image_target(target, Some(dims), Takes::Images);
     let pre = t.and_then(|_| image_args(level, 0, size));
-    let f: Arc<UploadFn> = Arc::new(move |gl, data, _| match data {
+    let f: Arc<UploadFn> = Arc::new(move |gl, data, format_type| match data {
         Some(data) => gl.tex_sub_image(t?, level, offset, size, data),
-        None => Ok(()),
+        None => gl.tex_sub_image_errors(t?, level, offset, size, format_type),
     });
     // SAFETY: passed on from the caller.
     unsafe { upload(pre, false, (format, ty, dims, size), pixels, f) }
