@@ -1,0 +1,124 @@
+/* What piglit's GL 1.x tests found missing (issue 15): glMultiDrawArrays
+ * and glMultiDrawElements refuse a negative count before drawing anything
+ * (gl-1.4-multidrawarrays-errors); glTexSubImage with a null image still
+ * reports its errors (teximage-errors); colour-index texture images go
+ * through the I_TO_* pixel maps, also from a display list
+ * (gl-1.1-read-pixels-after-display-list). Prints each error and pixel. */
+#include "common.h"
+#include <GL/glext.h>
+
+#define W 8
+#define H 8
+static unsigned char buf[W * H * 4];
+
+static void pixel(const char *what, int x, int y) {
+  GLubyte p[4];
+  glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+  printf("%s: %d %d %d %d\n", what, p[0], p[1], p[2], p[3]);
+}
+
+int main(int argc, char **argv) {
+  start(argc, argv);
+  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+  CHECK(ctx && OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H));
+  PFNGLMULTIDRAWARRAYSPROC multi_arrays = (PFNGLMULTIDRAWARRAYSPROC)OSMesaGetProcAddress("glMultiDrawArrays");
+  PFNGLMULTIDRAWELEMENTSPROC multi_elements = (PFNGLMULTIDRAWELEMENTSPROC)OSMesaGetProcAddress("glMultiDrawElements");
+  CHECK(multi_arrays && multi_elements);
+
+  /* Negative counts: nothing drawn, not even the valid first primitive. */
+  static const float quad[] = {-1, -1, 1, -1, 1, 1, -1, 1};
+  static const GLubyte idx[] = {0, 1, 2, 3};
+  const GLvoid *idxs[2] = {idx, idx};
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, quad);
+  GLint first[2] = {0, 0};
+  GLsizei count[2] = {4, -1};
+  glClear(GL_COLOR_BUFFER_BIT);
+  multi_arrays(GL_TRIANGLE_FAN, first, count, 2);
+  printf("multi arrays, count -1: 0x%x\n", glGetError());
+  pixel("after", 4, 4);
+  multi_arrays(GL_TRIANGLE_FAN, first, count, -1);
+  printf("multi arrays, primcount -1: 0x%x\n", glGetError());
+  multi_arrays(0x77, first, count, 2);
+  printf("multi arrays, bad mode and count: 0x%x\n", glGetError());
+  multi_elements(GL_TRIANGLE_FAN, count, GL_UNSIGNED_BYTE, idxs, 2);
+  printf("multi elements, count -1: 0x%x\n", glGetError());
+  multi_elements(GL_TRIANGLE_FAN, count, GL_FLOAT, idxs, 2);
+  printf("multi elements, bad type and count: 0x%x\n", glGetError());
+  pixel("after", 4, 4);
+  count[1] = 3;
+  multi_arrays(GL_TRIANGLE_FAN, first, count, 2);
+  printf("multi arrays, good: 0x%x\n", glGetError());
+  pixel("drawn", 4, 4);
+  glDisableClientState(GL_VERTEX_ARRAY);
+
+  /* glTexSubImage with no image. */
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 16, 16, 0, GL_RGBA, GL_FLOAT, NULL);
+  printf("teximage null: 0x%x\n", glGetError());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 6, 6, 100, 100, GL_RGBA, GL_FLOAT, NULL);
+  printf("subimage null, too big: 0x%x\n", glGetError());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, -6, -6, 10, 10, GL_RGBA, GL_FLOAT, NULL);
+  printf("subimage null, negative offset: 0x%x\n", glGetError());
+  glTexSubImage2D(GL_TEXTURE_2D, 1, 0, 0, 8, 8, GL_RGBA, GL_FLOAT, NULL);
+  printf("subimage null, no level 1: 0x%x\n", glGetError());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 8, 8, GL_RGBA, GL_FLOAT, NULL);
+  printf("subimage null, fine: 0x%x\n", glGetError());
+  glTexSubImage1D(GL_TEXTURE_1D, 0, 0, 8, GL_RGBA, GL_FLOAT, NULL);
+  printf("subimage 1D null, no image: 0x%x\n", glGetError());
+
+  /* Colour indices through the I_TO_* maps (shift and offset too). */
+  static const GLfloat r_map[] = {0, 1, 0.5f, 0.2f}, g_map[] = {0, 0, 1, 0.7f}, b_map[] = {1, 0, 0.25f, 0.1f},
+                       a_map[] = {1, 1, 0.6f, 0.3f};
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 4, r_map);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 4, g_map);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_B, 4, b_map);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 4, a_map);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, W, 0, H, -1, 1);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  static const GLubyte bits[] = {0x8f, 0x7f, 0x70, 0xff};
+  for (int k = 0; k < 4; k++) {
+    glClear(GL_COLOR_BUFFER_BIT);
+    glNewList(1, GL_COMPILE_AND_EXECUTE);
+    glEnable(GL_TEXTURE_2D);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_COLOR_INDEX, GL_BITMAP, &bits[k]);
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0); glVertex2f(0, 0);
+    glTexCoord2f(1, 0); glVertex2f(W, 0);
+    glTexCoord2f(1, 1); glVertex2f(W, H);
+    glTexCoord2f(0, 1); glVertex2f(0, H);
+    glEnd();
+    glDisable(GL_TEXTURE_2D);
+    glEndList();
+    printf("bitmap 0x%02x: 0x%x\n", bits[k], glGetError());
+    pixel("  executed", 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glCallList(1);
+    pixel("  called", 1, 1);
+  }
+  /* A 4x2 image of byte indices (with shift 1, offset 1: 2i+1 masked by 3). */
+  static const GLubyte indices[] = {0, 1, 2, 3, 3, 2, 1, 0};
+  static const GLshort shorts[] = {0, 1, 2, 3, 3, 2, 1, 0};
+  for (int pass = 0; pass < 3; pass++) {
+    if (pass == 1) {
+      glPixelTransferi(GL_INDEX_SHIFT, 1);
+      glPixelTransferi(GL_INDEX_OFFSET, 1);
+    }
+    if (pass < 2)
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 2, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, indices);
+    else
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 2, 0, GL_COLOR_INDEX, GL_SHORT, shorts);
+    printf("indices pass %d: 0x%x\n", pass, glGetError());
+    GLubyte tex[4 * 2 * 4];
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, tex);
+    for (int i = 0; i < 8; i++) printf(" %d,%d,%d,%d", tex[4 * i], tex[4 * i + 1], tex[4 * i + 2], tex[4 * i + 3]);
+    printf("\n");
+  }
+  OSMesaDestroyContext(ctx);
+  printf("done\n");
+  return 0;
+}
