@@ -437,6 +437,10 @@ pub struct Framebuffer {
     /// framebuffer of the same size and formats; this one holds sample 0
     /// (`framebuffer/multisample.rs`). Empty when single-sampled.
     pub(crate) samples: Vec<Framebuffer>,
+    /// Whether the sample pattern is mirrored in y, as in a window's
+    /// multisampled buffer on llvmpipe (`multisample.rs`,
+    /// [`Framebuffer::new_multisample_window`]).
+    pub(crate) window_samples: bool,
 }
 
 impl Framebuffer {
@@ -488,6 +492,7 @@ impl Framebuffer {
             color_enabled: true,
             accum: None,
             samples: Vec::new(),
+            window_samples: false,
         })
     }
 
@@ -523,6 +528,7 @@ impl Framebuffer {
             color_enabled: true,
             accum: None,
             samples: Vec::new(),
+            window_samples: false,
         })
     }
 
@@ -602,6 +608,7 @@ impl Framebuffer {
             color_enabled: self.color_enabled,
             accum: self.accum.as_ref().map(AccumBuffer::hollow),
             samples: self.samples.iter().map(Framebuffer::hollow).collect(),
+            window_samples: self.window_samples,
         }
     }
 

@@ -1,6 +1,9 @@
-//! Configs: RGBA8 with depth 0/16/24 and stencil 0/8, for pbuffers and
-//! desktop OpenGL; `eglChooseConfig` with EGL 1.5's matching rules (§3.4.1,
-//! table 3.4) and sort order (§3.4.1.2), `eglGetConfigs`, `eglGetConfigAttrib`.
+//! Configs: RGBA8 with depth 0/16/24 and stencil 0/8, single-sampled or
+//! with 4 samples a pixel (`EGL_SAMPLE_BUFFERS` 1, as llvmpipe's configs:
+//! it has 1 and 4 samples only, so a request for 2 gets 4), for pbuffers
+//! and desktop OpenGL; `eglChooseConfig` with EGL 1.5's matching rules
+//! (§3.4.1, table 3.4) and sort order (§3.4.1.2), `eglGetConfigs`,
+//! `eglGetConfigAttrib`.
 
 use super::*;
 use crate::consts::MAX_SIZE;
@@ -10,17 +13,30 @@ use crate::consts::MAX_SIZE;
 pub(crate) struct Config {
     pub depth: i32,
     pub stencil: i32,
+    /// `EGL_SAMPLES`: 0, or 4 (`softgl::multisample::MAX_SAMPLES`).
+    pub samples: i32,
 }
 
-/// Every config, in EGL's sort order (for equal requests: smaller depth,
-/// then smaller stencil); `EGL_CONFIG_ID` is the index + 1.
-pub(crate) const CONFIGS: [Config; 6] = [
-    Config { depth: 0, stencil: 0 },
-    Config { depth: 0, stencil: 8 },
-    Config { depth: 16, stencil: 0 },
-    Config { depth: 16, stencil: 8 },
-    Config { depth: 24, stencil: 0 },
-    Config { depth: 24, stencil: 8 },
+const fn config(depth: i32, stencil: i32, samples: i32) -> Config {
+    Config { depth, stencil, samples }
+}
+
+/// Every config, in EGL's sort order (for equal requests: single-sampled
+/// first, then smaller depth, then smaller stencil); `EGL_CONFIG_ID` is the
+/// index + 1.
+pub(crate) const CONFIGS: [Config; 12] = [
+    config(0, 0, 0),
+    config(0, 8, 0),
+    config(16, 0, 0),
+    config(16, 8, 0),
+    config(24, 0, 0),
+    config(24, 8, 0),
+    config(0, 0, 4),
+    config(0, 8, 4),
+    config(16, 0, 4),
+    config(16, 8, 4),
+    config(24, 0, 4),
+    config(24, 8, 4),
 ];
 
 pub(crate) fn config_handle(index: usize) -> EGLConfig {
@@ -50,6 +66,11 @@ pub(crate) fn framebuffer_desc(index: usize, width: u32, height: u32) -> softgl:
     }
 }
 
+/// The samples a pixel of a surface of config `index` (1, or 4).
+pub(crate) fn framebuffer_samples(index: usize) -> u32 {
+    CONFIGS[index].samples.max(1) as u32
+}
+
 /// The value of `name` for config `index`, or `None` for a name that is not
 /// a config attribute.
 pub(crate) fn config_attrib(index: usize, name: EGLint) -> Option<EGLint> {
@@ -72,7 +93,8 @@ pub(crate) fn config_attrib(index: usize, name: EGLint) -> Option<EGLint> {
         EGL_NATIVE_RENDERABLE => EGL_FALSE as EGLint,
         EGL_NATIVE_VISUAL_ID => 0,
         EGL_NATIVE_VISUAL_TYPE => EGL_NONE,
-        EGL_SAMPLES | EGL_SAMPLE_BUFFERS => 0,
+        EGL_SAMPLES => c.samples,
+        EGL_SAMPLE_BUFFERS => EGLint::from(c.samples > 0),
         EGL_SURFACE_TYPE => EGL_PBUFFER_BIT,
         EGL_TRANSPARENT_TYPE => EGL_NONE,
         EGL_TRANSPARENT_RED_VALUE | EGL_TRANSPARENT_GREEN_VALUE | EGL_TRANSPARENT_BLUE_VALUE => 0,
