@@ -664,8 +664,8 @@ impl<'s> Geometry<'s> {
     #[inline(always)]
     fn triangle(&self, v: [&RasterVertex; 3], flat: Option<&Varyings>, sink: &mut dyn PrimSink) {
         let area = signed_area(3, |i| (v[i].x, v[i].y));
-        let front = (area > 0.0) == (self.state.front_face == FrontFace::Ccw);
-        if self.state.culls(front) || area == 0.0 {
+        let front = self.facing(area);
+        if self.state.culls(front) || (area == 0.0 && !self.recording) {
             return;
         }
         let params = &self.fill_params;
@@ -682,6 +682,18 @@ impl<'s> Geometry<'s> {
         } else {
             sink.triangle(v, flat, params);
         }
+    }
+
+    /// Whether a polygon of signed window area `area` is front-facing. A
+    /// zero-area polygon is drawn by no fragment; in selection and feedback
+    /// (`recording`) it is still recorded, as a back face, as Mesa's draw
+    /// module does for them (`draw_pipe_cull.c`: `det == 0` passes unless
+    /// back faces are culled).
+    fn facing(&self, area: f64) -> bool {
+        if area == 0.0 && self.recording {
+            return false;
+        }
+        (area > 0.0) == (self.state.front_face == FrontFace::Ccw)
     }
 
     /// The general triangle: clipped, projected, culled, drawn as its
@@ -736,7 +748,7 @@ impl<'s> Geometry<'s> {
         }
         // Facing from the signed area in window space (y up: positive is CCW).
         let area = signed_area(win.len(), |i| (win[i].0.x, win[i].0.y));
-        let front = (area > 0.0) == (self.state.front_face == FrontFace::Ccw);
+        let front = self.facing(area);
         if self.state.culls(front) {
             return;
         }
@@ -758,7 +770,7 @@ impl<'s> Geometry<'s> {
         let offset = offset_on.then_some((self.state.offset_factor, self.state.offset_units));
         match mode {
             PolygonMode::Fill => {
-                if area == 0.0 {
+                if area == 0.0 && !self.recording {
                     return;
                 }
                 let params = RasterParams { offset, ..self.params };

@@ -118,6 +118,38 @@ int main(int argc, char **argv) {
     for (int i = 0; i < 8; i++) printf(" %d,%d,%d,%d", tex[4 * i], tex[4 * i + 1], tex[4 * i + 2], tex[4 * i + 3]);
     printf("\n");
   }
+
+  /* Feedback of a zero-area triangle through GL_EXT_vertex_array's pointers
+   * (rendermode-feedback): recorded as a back face. */
+  typedef void (*PointerEXT)(GLint, GLenum, GLsizei, GLsizei, const GLvoid *);
+  PointerEXT vertex_ext = (PointerEXT)OSMesaGetProcAddress("glVertexPointerEXT");
+  PointerEXT color_ext = (PointerEXT)OSMesaGetProcAddress("glColorPointerEXT");
+  CHECK(vertex_ext && color_ext);
+  static const float line3[] = {1, 2, 0.4f, 1, 3, 4, 0.6f, 1, 5, 6, 0.8f, 1};
+  static const float colors[] = {0.01f, 0.02f, 0.03f, 0.04f, 0.05f, 0.06f, 0.07f, 0.08f, 0.09f, 0.1f, 0.11f, 0.12f};
+  vertex_ext(4, GL_FLOAT, 0, 3, line3);
+  color_ext(4, GL_FLOAT, 0, 3, colors);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  static const GLenum culls[] = {0, GL_BACK, GL_FRONT};
+  for (int c = 0; c < 3; c++) {
+    if (culls[c]) {
+      glEnable(GL_CULL_FACE);
+      glCullFace(culls[c]);
+    }
+    GLfloat fb[64];
+    glFeedbackBuffer(64, GL_3D_COLOR, fb);
+    glRenderMode(GL_FEEDBACK);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    int n = glRenderMode(GL_RENDER);
+    printf("feedback, cull 0x%x: %d values:", culls[c], n);
+    for (int i = 0; i < n; i++) printf(" %.3f", fb[i]);
+    printf(" err 0x%x\n", glGetError());
+    glDisable(GL_CULL_FACE);
+  }
+  glDisableClientState(GL_COLOR_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
+
   OSMesaDestroyContext(ctx);
   printf("done\n");
   return 0;
