@@ -150,6 +150,50 @@ int main(int argc, char **argv) {
   glDisableClientState(GL_COLOR_ARRAY);
   glDisableClientState(GL_VERTEX_ARRAY);
 
+  /* glReadPixels into packed types (triangle-rasterization reads
+   * GL_UNSIGNED_INT_8_8_8_8): a smooth quad, every packed type with each
+   * format it takes, and one with GL_PACK_SWAP_BYTES. */
+  glClearColor(0.2f, 0.4f, 0.6f, 0.8f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBegin(GL_QUADS);
+  glColor4f(1, 0, 0.3f, 0.1f); glVertex2f(1, 1);
+  glColor4f(0, 1, 0.7f, 0.5f); glVertex2f(7, 1);
+  glColor4f(0.4f, 0.2f, 1, 0.9f); glVertex2f(7, 7);
+  glColor4f(0.9f, 0.6f, 0, 1); glVertex2f(1, 7);
+  glEnd();
+  static const struct { GLenum type; GLenum formats[2]; int bytes; } packed[] = {
+    {GL_UNSIGNED_BYTE_3_3_2, {GL_RGB, GL_RGB}, 1}, {GL_UNSIGNED_BYTE_2_3_3_REV, {GL_RGB, GL_RGB}, 1},
+    {GL_UNSIGNED_SHORT_5_6_5, {GL_RGB, GL_RGB}, 2}, {GL_UNSIGNED_SHORT_5_6_5_REV, {GL_RGB, GL_RGB}, 2},
+    {GL_UNSIGNED_SHORT_4_4_4_4, {GL_RGBA, GL_BGRA}, 2}, {GL_UNSIGNED_SHORT_4_4_4_4_REV, {GL_RGBA, GL_BGRA}, 2},
+    {GL_UNSIGNED_SHORT_5_5_5_1, {GL_RGBA, GL_BGRA}, 2}, {GL_UNSIGNED_SHORT_1_5_5_5_REV, {GL_RGBA, GL_BGRA}, 2},
+    {GL_UNSIGNED_INT_8_8_8_8, {GL_RGBA, GL_BGRA}, 4}, {GL_UNSIGNED_INT_8_8_8_8_REV, {GL_RGBA, GL_BGRA}, 4},
+    {GL_UNSIGNED_INT_10_10_10_2, {GL_RGBA, GL_BGRA}, 4}, {GL_UNSIGNED_INT_2_10_10_10_REV, {GL_RGBA, GL_BGRA}, 4},
+  };
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  for (unsigned t = 0; t < sizeof packed / sizeof packed[0]; t++) {
+    for (int f = 0; f < 2; f++) {
+      if (f == 1 && packed[t].formats[1] == packed[t].formats[0]) continue;
+      unsigned char out[W * H * 4];
+      memset(out, 0xAB, sizeof out);
+      glReadPixels(0, 0, W, H, packed[t].formats[f], packed[t].type, out);
+      printf("packed 0x%x/0x%x err 0x%x:", packed[t].type, packed[t].formats[f], glGetError());
+      for (int i = 0; i < W * H * packed[t].bytes; i++) printf("%02x", out[i]);
+      printf("\n");
+    }
+  }
+  unsigned char swapped[W * H * 2];
+  glPixelStorei(GL_PACK_SWAP_BYTES, 1);
+  glReadPixels(0, 0, W, H, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, swapped);
+  glPixelStorei(GL_PACK_SWAP_BYTES, 0);
+  printf("swapped 565 err 0x%x:", glGetError());
+  for (int i = 0; i < W * H * 2; i++) printf("%02x", swapped[i]);
+  printf("\n");
+  unsigned char bad[64];
+  glReadPixels(0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, bad);
+  printf("565 with RGBA: 0x%x\n", glGetError());
+  glReadPixels(0, 0, 2, 2, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_8_8_8_8, bad);
+  printf("8888 with depth: 0x%x\n", glGetError());
+
   OSMesaDestroyContext(ctx);
   printf("done\n");
   return 0;
