@@ -381,7 +381,10 @@ fn configs_are_chosen_and_sorted_as_egl_says() {
     assert_eq!(choose(d, &with(&[(EGL_DEPTH_SIZE, 1)])), [3, 4, 5, 6, 9, 10, 11, 12]);
     assert_eq!(choose(d, &with(&[(EGL_DEPTH_SIZE, 17)])), [5, 6, 11, 12]);
     assert_eq!(choose(d, &with(&[(EGL_STENCIL_SIZE, 1)])), [2, 4, 6, 8, 10, 12]);
-    assert_eq!(choose(d, &with(&[(EGL_DEPTH_SIZE, 24), (EGL_STENCIL_SIZE, 8)])), [6, 12]);
+    assert_eq!(
+        choose(d, &with(&[(EGL_DEPTH_SIZE, 24), (EGL_STENCIL_SIZE, 8)])),
+        [6, 12]
+    );
     // What piglit (through waffle) asks for.
     let piglit = with(&[
         (EGL_BUFFER_SIZE, 0),
@@ -435,7 +438,10 @@ fn configs_are_chosen_and_sorted_as_egl_says() {
         let (mut c, mut n) = (null_mut(), 0);
         let list = attribs(&[(EGL_CONFIG_ID, id)]);
         // SAFETY: the list ends with EGL_NONE; room for 1 handle.
-        assert_eq!(unsafe { eglChooseConfig(d, list.as_ptr(), &mut c, 1, &mut n) }, EGL_TRUE);
+        assert_eq!(
+            unsafe { eglChooseConfig(d, list.as_ptr(), &mut c, 1, &mut n) },
+            EGL_TRUE
+        );
         c
     };
     for (id, name, want) in [
@@ -448,7 +454,11 @@ fn configs_are_chosen_and_sorted_as_egl_says() {
         (24, EGL_SAMPLES, 4),
         (24, EGL_DEPTH_SIZE, 24),
     ] {
-        assert_eq!(config_attr(d, by_id(id), name), want, "config {id}, attribute {name:#x}");
+        assert_eq!(
+            config_attr(d, by_id(id), name),
+            want,
+            "config {id}, attribute {name:#x}"
+        );
     }
 }
 

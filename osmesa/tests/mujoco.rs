@@ -210,10 +210,13 @@ fn run_through(backend: Backend, tag: &str, disable: &[&str], face: Face) -> Run
             }
         }
         Backend::Softgl => {
-            cmd.env("LD_LIBRARY_PATH", match face {
-                Face::OsMesa => lib_dir(),
-                Face::Egl(_) => egl_dir(),
-            });
+            cmd.env(
+                "LD_LIBRARY_PATH",
+                match face {
+                    Face::OsMesa => lib_dir(),
+                    Face::Egl(_) => egl_dir(),
+                },
+            );
         }
     }
     let timeout = std::env::var("SOFTGL_MUJOCO_TIMEOUT")

@@ -66,7 +66,11 @@ fn multi_draw_errors_null_subimages_and_index_textures_match_mesa() {
     assert!(soft[0].contains(&*profile_dir().to_string_lossy()), "{}", soft[0]);
     assert_eq!(soft[1..], mesa[1..]);
     assert!(soft.iter().any(|l| l == "  called: 255 0 0 255"), "{soft:?}");
-    assert!(soft.iter().any(|l| l.starts_with("feedback, cull 0x0: 23 values: 1795.000 3.000")), "{soft:?}");
+    assert!(
+        soft.iter()
+            .any(|l| l.starts_with("feedback, cull 0x0: 23 values: 1795.000 3.000")),
+        "{soft:?}"
+    );
     assert_eq!(soft.len(), 61);
 }
 
@@ -82,7 +86,12 @@ fn egl_msaa(exe: &Path, samples: u32, softgl: bool) -> (Vec<String>, Vec<u8>, Ve
     }
     let out = cmd.output().expect("run egl_msaa");
     let stdout = String::from_utf8_lossy(&out.stdout).to_string();
-    assert!(out.status.success(), "{what}: {}\n{stdout}\n{}", out.status, String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{what}: {}\n{stdout}\n{}",
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
     let lines: Vec<String> = stdout.lines().map(str::to_owned).collect();
     assert_eq!(lines.last().map(String::as_str), Some("done"), "{what}:\n{stdout}");
     let color = std::fs::read(dir.join("color")).expect("color");
@@ -105,7 +114,11 @@ fn a_multisampled_egl_window_matches_llvmpipe() {
         let (lines, color, depth) = egl_msaa(&exe, samples, true);
         // The config (2 samples asked: 4 given, as llvmpipe), GL_SAMPLES, no error.
         assert_eq!(lines, mesa_lines, "{samples} samples");
-        let want = if samples > 0 { "GL_SAMPLES 4, GL_SAMPLE_BUFFERS 1" } else { "GL_SAMPLES 0, GL_SAMPLE_BUFFERS 0" };
+        let want = if samples > 0 {
+            "GL_SAMPLES 4, GL_SAMPLE_BUFFERS 1"
+        } else {
+            "GL_SAMPLES 0, GL_SAMPLE_BUFFERS 0"
+        };
         assert!(lines[1].starts_with(want), "{lines:?}");
         // glReadPixels reads sample 0, as llvmpipe maps a multisampled
         // window buffer (`llvmpipe_transfer_map`: sample 0): every byte equal.
@@ -118,7 +131,10 @@ fn a_multisampled_egl_window_matches_llvmpipe() {
             .zip(&mesa_depth)
             .map(|(a, b)| ((a - b).abs() * 16_777_215.0).round() as u32)
             .max();
-        assert!(worst.is_some_and(|w| w <= 2), "depth off by {worst:?}/2^24, {samples} samples");
+        assert!(
+            worst.is_some_and(|w| w <= 2),
+            "depth off by {worst:?}/2^24, {samples} samples"
+        );
         if samples > 0 {
             // The samples matter: sample 0 is not the single-sampled image.
             let differ = color.iter().zip(&single).filter(|(a, b)| a != b).count();

@@ -29,7 +29,11 @@ pub fn index_image_bytes(ty: IndexType, store: &PixelStore, dims: u32, size: [us
             let (w, h) = (i32::try_from(size[0]).ok()?, i32::try_from(size[1]).ok()?);
             let slice = BitmapImage::client_bytes(w, h, &bitmap_store(store))?;
             let images = size[2].max(1) + skip_images(store, dims);
-            Some(slice_stride(w, h, store, dims).checked_mul(images - 1)?.checked_add(slice)?)
+            Some(
+                slice_stride(w, h, store, dims)
+                    .checked_mul(images - 1)?
+                    .checked_add(slice)?,
+            )
         }
     }
 }
@@ -149,13 +153,23 @@ mod tests {
         assert_eq!(one(0x8f), Some(vec![255, 0, 0, 255]));
         assert_eq!(one(0x7f), Some(vec![0, 0, 255, 255]));
         // Bytes: indices 0..3 masked by the 2-entry maps' size.
-        let img = index_image_rgba8(&p, &[0, 1, 2, 3], IndexType::Type(PixelType::UnsignedByte), &store, 1, [4, 1, 1]);
+        let img = index_image_rgba8(
+            &p,
+            &[0, 1, 2, 3],
+            IndexType::Type(PixelType::UnsignedByte),
+            &store,
+            1,
+            [4, 1, 1],
+        );
         assert_eq!(
             img,
             Some(vec![0, 0, 255, 255, 255, 0, 0, 255, 0, 0, 255, 255, 255, 0, 0, 255])
         );
         // Too few bytes for a 9-wide bitmap row.
-        assert_eq!(index_image_rgba8(&p, &[0], IndexType::Bitmap, &store, 1, [9, 1, 1]), None);
+        assert_eq!(
+            index_image_rgba8(&p, &[0], IndexType::Bitmap, &store, 1, [9, 1, 1]),
+            None
+        );
     }
 
     #[test]

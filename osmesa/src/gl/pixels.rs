@@ -363,18 +363,18 @@ unsafe fn read_pixels(
 /// (GL 1.5 §3.6.4, table 3.8); `None` for other types.
 fn packed_fields(ty: GLenum) -> Option<(&'static [u32], bool)> {
     Some(match ty {
-        0x8032 => (&[3, 3, 2], false),        // UNSIGNED_BYTE_3_3_2
-        0x8362 => (&[3, 3, 2], true),         // UNSIGNED_BYTE_2_3_3_REV
-        0x8363 => (&[5, 6, 5], false),        // UNSIGNED_SHORT_5_6_5
-        0x8364 => (&[5, 6, 5], true),         // UNSIGNED_SHORT_5_6_5_REV
-        0x8033 => (&[4, 4, 4, 4], false),     // UNSIGNED_SHORT_4_4_4_4
-        0x8365 => (&[4, 4, 4, 4], true),      // UNSIGNED_SHORT_4_4_4_4_REV
-        0x8034 => (&[5, 5, 5, 1], false),     // UNSIGNED_SHORT_5_5_5_1
-        0x8366 => (&[5, 5, 5, 1], true),      // UNSIGNED_SHORT_1_5_5_5_REV
-        0x8035 => (&[8, 8, 8, 8], false),     // UNSIGNED_INT_8_8_8_8
-        0x8367 => (&[8, 8, 8, 8], true),      // UNSIGNED_INT_8_8_8_8_REV
-        0x8036 => (&[10, 10, 10, 2], false),  // UNSIGNED_INT_10_10_10_2
-        0x8368 => (&[10, 10, 10, 2], true),   // UNSIGNED_INT_2_10_10_10_REV
+        0x8032 => (&[3, 3, 2], false),       // UNSIGNED_BYTE_3_3_2
+        0x8362 => (&[3, 3, 2], true),        // UNSIGNED_BYTE_2_3_3_REV
+        0x8363 => (&[5, 6, 5], false),       // UNSIGNED_SHORT_5_6_5
+        0x8364 => (&[5, 6, 5], true),        // UNSIGNED_SHORT_5_6_5_REV
+        0x8033 => (&[4, 4, 4, 4], false),    // UNSIGNED_SHORT_4_4_4_4
+        0x8365 => (&[4, 4, 4, 4], true),     // UNSIGNED_SHORT_4_4_4_4_REV
+        0x8034 => (&[5, 5, 5, 1], false),    // UNSIGNED_SHORT_5_5_5_1
+        0x8366 => (&[5, 5, 5, 1], true),     // UNSIGNED_SHORT_1_5_5_5_REV
+        0x8035 => (&[8, 8, 8, 8], false),    // UNSIGNED_INT_8_8_8_8
+        0x8367 => (&[8, 8, 8, 8], true),     // UNSIGNED_INT_8_8_8_8_REV
+        0x8036 => (&[10, 10, 10, 2], false), // UNSIGNED_INT_10_10_10_2
+        0x8368 => (&[10, 10, 10, 2], true),  // UNSIGNED_INT_2_10_10_10_REV
         _ => return None,
     })
 }

@@ -348,7 +348,13 @@ unsafe fn upload(
                 _ => None,
             };
             let (bytes, store) = match &rgba {
-                Some(image) => (Some(&image[..]), PixelStore { alignment: 1, ..PixelStore::DEFAULT }),
+                Some(image) => (
+                    Some(&image[..]),
+                    PixelStore {
+                        alignment: 1,
+                        ..PixelStore::DEFAULT
+                    },
+                ),
                 None => (bytes, store),
             };
             let data = bytes.map(|bytes| PixelData {
