@@ -3,7 +3,10 @@
  * (gl-1.4-multidrawarrays-errors); glTexSubImage with a null image still
  * reports its errors (teximage-errors); colour-index texture images go
  * through the I_TO_* pixel maps, also from a display list
- * (gl-1.1-read-pixels-after-display-list). Prints each error and pixel. */
+ * (gl-1.1-read-pixels-after-display-list); zero-area triangles in feedback
+ * through GL_EXT_vertex_array (gl-1.0-rendermode-feedback); packed
+ * glReadPixels types (triangle-rasterization); GL_EXT_shadow_funcs
+ * (depth-tex-compare). Prints each error, pixel and value. */
 #include "common.h"
 #include <GL/glext.h>
 
@@ -193,6 +196,42 @@ int main(int argc, char **argv) {
   printf("565 with RGBA: 0x%x\n", glGetError());
   glReadPixels(0, 0, 2, 2, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_8_8_8_8, bad);
   printf("8888 with depth: 0x%x\n", glGetError());
+
+  /* GL_EXT_shadow_funcs: every compare function on a depth texture
+   * (depth-tex-compare): texels 0.25 (left) and 0.75 (right) against r = 0.5,
+   * the red of a pixel on each side printed per function. */
+  {
+    static const GLfloat depths[2] = {0.25f, 0.75f};
+    static const GLenum funcs[8] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 2, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_LUMINANCE);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glEnable(GL_TEXTURE_2D);
+    for (int f = 0; f < 8; f++) {
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, funcs[f]);
+      GLint back = 0;
+      glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, &back);
+      glClear(GL_COLOR_BUFFER_BIT);
+      glBegin(GL_QUADS);
+      glTexCoord3f(0, 0, 0.5f); glVertex2f(0, 0);
+      glTexCoord3f(1, 0, 0.5f); glVertex2f(W, 0);
+      glTexCoord3f(1, 1, 0.5f); glVertex2f(W, H);
+      glTexCoord3f(0, 1, 0.5f); glVertex2f(0, H);
+      glEnd();
+      GLubyte px[2][4];
+      glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px[0]);
+      glReadPixels(W - 2, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px[1]);
+      printf("compare 0x%x (read 0x%x): %d %d err 0x%x\n", funcs[f], back, px[0][0], px[1][0], glGetError());
+    }
+    glDisable(GL_TEXTURE_2D);
+    glDeleteTextures(1, &tex);
+  }
 
   OSMesaDestroyContext(ctx);
   printf("done\n");
