@@ -74,7 +74,10 @@ fn multi_draw_errors_null_subimages_and_index_textures_match_mesa() {
             .any(|l| l.starts_with("feedback, cull 0x0: 23 values: 1795.000 3.000")),
         "{soft:?}"
     );
-    assert!(soft.iter().any(|l| l == "compare 0x205 (read 0x205): 255 255 err 0x0"), "{soft:?}");
+    assert!(
+        soft.iter().any(|l| l == "compare 0x205 (read 0x205): 255 255 err 0x0"),
+        "{soft:?}"
+    );
     assert_eq!(soft.len(), 69);
 }
 
