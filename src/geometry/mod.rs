@@ -664,8 +664,14 @@ impl<'s> Geometry<'s> {
     #[inline(always)]
     fn triangle(&self, v: [&RasterVertex; 3], flat: Option<&Varyings>, sink: &mut dyn PrimSink) {
         let area = signed_area(3, |i| (v[i].x, v[i].y));
-        let front = self.facing(area);
-        if self.state.culls(front) || (area == 0.0 && !self.recording) {
+        let mut front = (area > 0.0) == (self.state.front_face == FrontFace::Ccw);
+        if area == 0.0 {
+            if !self.recording {
+                return;
+            }
+            front = self.facing(area);
+        }
+        if self.state.culls(front) {
             return;
         }
         let params = &self.fill_params;
@@ -689,6 +695,7 @@ impl<'s> Geometry<'s> {
     /// (`recording`) it is still recorded, as a back face, as Mesa's draw
     /// module does for them (`draw_pipe_cull.c`: `det == 0` passes unless
     /// back faces are culled).
+    #[inline(always)]
     fn facing(&self, area: f64) -> bool {
         if area == 0.0 && self.recording {
             return false;
