@@ -1612,7 +1612,8 @@ impl Context {
                 (true, true) => crate::multisample::sample_coverage_mask(ms.coverage_value, ms.coverage_invert, n),
                 _ => u32::MAX,
             };
-            let at = |s: usize| ms.enabled.then(|| crate::multisample::SampleAt::of_4x(s));
+            let window = self.fb.window_samples;
+            let at = |s: usize| ms.enabled.then(|| crate::multisample::SampleAt::of_4x_in(s, window));
             let mut samples = std::mem::take(&mut self.fb.samples);
             let mut fan = crate::multisample::Fan::default();
             if mask & 1 != 0 {

@@ -457,6 +457,10 @@ pub struct Framebuffer {
     /// framebuffer of the same size and formats; this one holds sample 0
     /// (`framebuffer/multisample.rs`). Empty when single-sampled.
     pub(crate) samples: Vec<Framebuffer>,
+    /// Whether the sample pattern is mirrored in y, as in a window's
+    /// multisampled buffer on llvmpipe (`multisample.rs`,
+    /// [`Framebuffer::new_multisample_window`]).
+    pub(crate) window_samples: bool,
 }
 
 impl Framebuffer {
@@ -509,6 +513,7 @@ impl Framebuffer {
             color_enabled: true,
             accum: None,
             samples: Vec::new(),
+            window_samples: false,
         })
     }
 
@@ -544,6 +549,7 @@ impl Framebuffer {
             color_enabled: true,
             accum: None,
             samples: Vec::new(),
+            window_samples: false,
         })
     }
 
@@ -624,6 +630,7 @@ impl Framebuffer {
             color_enabled: self.color_enabled,
             accum: self.accum.as_ref().map(AccumBuffer::hollow),
             samples: self.samples.iter().map(Framebuffer::hollow).collect(),
+            window_samples: self.window_samples,
         }
     }
 

@@ -38,9 +38,18 @@ pub struct SampleAt {
 }
 
 impl SampleAt {
-    /// Sample `s` (below 4) of llvmpipe's 4× pattern.
+    /// Sample `s` (below 4) of llvmpipe's 4× pattern in a framebuffer object.
     pub fn of_4x(s: usize) -> SampleAt {
+        SampleAt::of_4x_in(s, false)
+    }
+
+    /// Sample `s` (below 4) of llvmpipe's 4× pattern, in a window's buffer
+    /// when `window`: llvmpipe's rows run top-down there (a window system
+    /// framebuffer is `Y_0_TOP`, `st_atom_framebuffer.c`) and the pattern,
+    /// placed along its rows, is mirrored in GL's y (`docs/llvmpipe-facts.md` §38).
+    pub fn of_4x_in(s: usize, window: bool) -> SampleAt {
         let (x, y) = SAMPLE_POSITIONS_4X[s];
+        let y = if window { 1.0 - y } else { y };
         let one = crate::raster::ONE as f32;
         SampleAt {
             fixed: (((x - 0.5) * one) as i64, ((y - 0.5) * one) as i64),
@@ -246,6 +255,15 @@ impl Framebuffer {
         for _ in 1..samples {
             fb.samples.push(Framebuffer::new(desc)?);
         }
+        Ok(fb)
+    }
+
+    /// A window's multisampled buffer (an EGL surface of a config with
+    /// `EGL_SAMPLES` 4): as [`Framebuffer::new_multisample`], its samples
+    /// placed as in llvmpipe's window buffers ([`SampleAt::of_4x_in`]).
+    pub fn new_multisample_window(desc: FramebufferDesc, samples: u32) -> GlResult<Framebuffer> {
+        let mut fb = Framebuffer::new_multisample(desc, samples)?;
+        fb.window_samples = true;
         Ok(fb)
     }
 

@@ -45,10 +45,10 @@ fn attribs(pairs: &[(EGLint, EGLint)]) -> Vec<EGLint> {
 /// The configs `pairs` choose, as config ids.
 fn choose(d: EGLDisplay, pairs: &[(EGLint, EGLint)]) -> Vec<EGLint> {
     let list = attribs(pairs);
-    let mut configs = [null_mut(); 16];
+    let mut configs = [null_mut(); 32];
     let mut n = -1;
     // SAFETY: the list ends with EGL_NONE; room for 16 handles.
-    let ok = unsafe { eglChooseConfig(d, list.as_ptr(), configs.as_mut_ptr(), 16, &mut n) };
+    let ok = unsafe { eglChooseConfig(d, list.as_ptr(), configs.as_mut_ptr(), 32, &mut n) };
     assert_eq!(ok, EGL_TRUE, "error {:#x}", eglGetError());
     configs[..n as usize]
         .iter()
@@ -68,6 +68,7 @@ fn config(d: EGLDisplay, depth: EGLint, stencil: EGLint) -> EGLConfig {
     let list = attribs(&[
         (EGL_SURFACE_TYPE, EGL_PBUFFER_BIT),
         (EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT),
+        (EGL_ALPHA_SIZE, 8),
         (EGL_DEPTH_SIZE, depth),
         (EGL_STENCIL_SIZE, stencil),
     ]);
@@ -359,7 +360,7 @@ fn configs_are_chosen_and_sorted_as_egl_says() {
     let mut n = 0;
     // SAFETY: counting only.
     assert_eq!(unsafe { eglGetConfigs(d, null_mut(), 0, &mut n) }, EGL_TRUE);
-    assert_eq!(n, 6);
+    assert_eq!(n, 24);
     let mut two = [null_mut(); 2];
     // SAFETY: room for 2 handles.
     assert_eq!(unsafe { eglGetConfigs(d, two.as_mut_ptr(), 2, &mut n) }, EGL_TRUE);
@@ -368,13 +369,22 @@ fn configs_are_chosen_and_sorted_as_egl_says() {
         (EGL_SURFACE_TYPE, EGL_PBUFFER_BIT),
         (EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT),
     ];
+    let ids = |r: std::ops::RangeInclusive<EGLint>| r.collect::<Vec<_>>();
+    // Not asking for alpha: the smaller RGB8 buffers (ids 13..24) first, as
+    // on Mesa; then single-sampled before 4 samples, smaller depth, then
+    // smaller stencil.
+    assert_eq!(choose(d, &pb), [ids(13..=24), ids(1..=12)].concat());
+    let pb = [&pb[..], &[(EGL_ALPHA_SIZE, 8)]].concat();
     let with = |extra: &[(EGLint, EGLint)]| [&pb[..], extra].concat();
-    // Smaller depth, then smaller stencil first; ids 1..6 in that order.
-    assert_eq!(choose(d, &pb), [1, 2, 3, 4, 5, 6]);
-    assert_eq!(choose(d, &with(&[(EGL_DEPTH_SIZE, 1)])), [3, 4, 5, 6]);
-    assert_eq!(choose(d, &with(&[(EGL_DEPTH_SIZE, 17)])), [5, 6]);
-    assert_eq!(choose(d, &with(&[(EGL_STENCIL_SIZE, 1)])), [2, 4, 6]);
-    assert_eq!(choose(d, &with(&[(EGL_DEPTH_SIZE, 24), (EGL_STENCIL_SIZE, 8)])), [6]);
+    // RGBA8: ids 1..6 single-sampled, 7..12 with 4 samples.
+    assert_eq!(choose(d, &pb), ids(1..=12));
+    assert_eq!(choose(d, &with(&[(EGL_DEPTH_SIZE, 1)])), [3, 4, 5, 6, 9, 10, 11, 12]);
+    assert_eq!(choose(d, &with(&[(EGL_DEPTH_SIZE, 17)])), [5, 6, 11, 12]);
+    assert_eq!(choose(d, &with(&[(EGL_STENCIL_SIZE, 1)])), [2, 4, 6, 8, 10, 12]);
+    assert_eq!(
+        choose(d, &with(&[(EGL_DEPTH_SIZE, 24), (EGL_STENCIL_SIZE, 8)])),
+        [6, 12]
+    );
     // What piglit (through waffle) asks for.
     let piglit = with(&[
         (EGL_BUFFER_SIZE, 0),
@@ -387,16 +397,20 @@ fn configs_are_chosen_and_sorted_as_egl_says() {
         (EGL_SAMPLE_BUFFERS, 0),
         (EGL_SAMPLES, 0),
     ]);
-    assert_eq!(choose(d, &piglit), [4, 6]);
+    assert_eq!(choose(d, &piglit), [4, 6, 10, 12]);
+    // piglit's -samples=2: 4 samples (llvmpipe has no 2).
+    let piglit_ms = [&piglit[..], &[(EGL_SAMPLE_BUFFERS, 1), (EGL_SAMPLES, 2)]].concat();
+    assert_eq!(choose(d, &piglit_ms), [10, 12]);
     // Defaults: EGL_SURFACE_TYPE = EGL_WINDOW_BIT and EGL_RENDERABLE_TYPE =
     // EGL_OPENGL_ES_BIT, which no config has.
     assert_eq!(choose(d, &[]), Vec::<EGLint>::new());
     assert_eq!(choose(d, &with(&[(EGL_RED_SIZE, 9)])), Vec::<EGLint>::new());
-    assert_eq!(choose(d, &with(&[(EGL_SAMPLES, 1)])), Vec::<EGLint>::new());
-    assert_eq!(choose(d, &with(&[(EGL_DEPTH_SIZE, EGL_DONT_CARE)])), [1, 2, 3, 4, 5, 6]);
+    assert_eq!(choose(d, &with(&[(EGL_SAMPLES, 1)])), ids(7..=12));
+    assert_eq!(choose(d, &with(&[(EGL_SAMPLES, 5)])), Vec::<EGLint>::new());
+    assert_eq!(choose(d, &with(&[(EGL_DEPTH_SIZE, EGL_DONT_CARE)])), ids(1..=12));
     assert_eq!(
         choose(d, &with(&[(EGL_DEPTH_SIZE, 8), (EGL_DEPTH_SIZE, 0)])),
-        [1, 2, 3, 4, 5, 6],
+        ids(1..=12),
         "the last value wins"
     );
     // EGL_CONFIG_ID: every other attribute is ignored.
@@ -419,6 +433,32 @@ fn configs_are_chosen_and_sorted_as_egl_says() {
         (EGL_MAX_PBUFFER_WIDTH, 16384),
     ] {
         assert_eq!(config_attr(d, c, name), want, "attribute {name:#x}");
+    }
+    let by_id = |id: EGLint| {
+        let (mut c, mut n) = (null_mut(), 0);
+        let list = attribs(&[(EGL_CONFIG_ID, id)]);
+        // SAFETY: the list ends with EGL_NONE; room for 1 handle.
+        assert_eq!(
+            unsafe { eglChooseConfig(d, list.as_ptr(), &mut c, 1, &mut n) },
+            EGL_TRUE
+        );
+        c
+    };
+    for (id, name, want) in [
+        (12, EGL_SAMPLES, 4),
+        (12, EGL_SAMPLE_BUFFERS, 1),
+        (12, EGL_ALPHA_SIZE, 8),
+        (18, EGL_BUFFER_SIZE, 24),
+        (18, EGL_ALPHA_SIZE, 0),
+        (18, EGL_SAMPLES, 0),
+        (24, EGL_SAMPLES, 4),
+        (24, EGL_DEPTH_SIZE, 24),
+    ] {
+        assert_eq!(
+            config_attr(d, by_id(id), name),
+            want,
+            "config {id}, attribute {name:#x}"
+        );
     }
 }
 

@@ -258,6 +258,7 @@ const KNOWN: &[(&str, &[&str])] = &[
         ],
     ),
     ("GL_EXT_separate_specular_color", &[]),
+    ("GL_EXT_shadow_funcs", &[]),
     ("GL_EXT_stencil_wrap", &[]),
     ("GL_EXT_subtexture", &["glTexSubImage1DEXT", "glTexSubImage2DEXT"]),
     ("GL_EXT_texture3D", &["glTexImage3DEXT", "glTexSubImage3DEXT"]),
@@ -278,6 +279,20 @@ const KNOWN: &[(&str, &[&str])] = &[
         ],
     ),
     ("GL_EXT_texture_sRGB", &[]),
+    (
+        "GL_EXT_vertex_array",
+        &[
+            "glArrayElementEXT",
+            "glColorPointerEXT",
+            "glDrawArraysEXT",
+            "glEdgeFlagPointerEXT",
+            "glGetPointervEXT",
+            "glIndexPointerEXT",
+            "glNormalPointerEXT",
+            "glTexCoordPointerEXT",
+            "glVertexPointerEXT",
+        ],
+    ),
     (
         "GL_KHR_debug",
         &[

@@ -25,6 +25,11 @@
 //! `target/tmp/osmesa-clients/mujoco-softgl-a/`). The llvmpipe/softpipe
 //! comparison checks the harness itself.
 //!
+//! Through EGL (`MUJOCO_GL=egl`: softgl's `<profile>/egl/` against llvmpipe
+//! and softpipe through Mesa's EGL): the full scene at 320×240, MuJoCo's
+//! buffer single-sampled and 4×, to the same targets
+//! (`softgl_through_egl_against_llvmpipe`).
+//!
 //! MuJoCo picks its depth format and projection from the extensions listed
 //! (`GL_ARB_depth_buffer_float`: DEPTH32F_STENCIL8 instead of DEPTH24_STENCIL8;
 //! `GL_ARB_clip_control`: reverse Z by glClipControl instead of a matrix, and
@@ -79,6 +84,19 @@ impl Backend {
 fn lib_dir() -> PathBuf {
     let dir = std::env::var_os("SOFTGL_MUJOCO_LIB").map_or_else(|| profile_dir().join("osmesa"), PathBuf::from);
     for name in ["libOSMesa.so.8", "libOSMesa.so"] {
+        assert!(
+            dir.join(name).exists(),
+            "{} is missing: build softgl-osmesa first",
+            dir.join(name).display()
+        );
+    }
+    dir
+}
+
+/// softgl's EGL face: `libEGL.so.1`, `libOpenGL.so.0` and `libGL.so.1` (build.rs links them).
+fn egl_dir() -> PathBuf {
+    let dir = profile_dir().join("egl");
+    for name in ["libEGL.so.1", "libOpenGL.so.0"] {
         assert!(
             dir.join(name).exists(),
             "{} is missing: build softgl-osmesa first",
@@ -144,14 +162,37 @@ impl Run {
     }
 }
 
+/// How MuJoCo reaches the library: `MUJOCO_GL=osmesa` (softgl's
+/// `libOSMesa.so`), or `MUJOCO_GL=egl` (softgl's `<profile>/egl/libEGL.so.1`
+/// and `libOpenGL.so.0`; Mesa's own EGL for the references), with the
+/// `scenes.py` options that pick the frames.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Face {
+    OsMesa,
+    Egl(&'static [&'static str]),
+}
+
 /// Runs `scenes.py` on `backend`, Mesa with the extensions in `disable` turned off.
 fn run(backend: Backend, tag: &str, disable: &[&str]) -> Run {
+    run_through(backend, tag, disable, Face::OsMesa)
+}
+
+/// [`run`] through `face`.
+fn run_through(backend: Backend, tag: &str, disable: &[&str], face: Face) -> Run {
     let dir = work_dir(&format!("mujoco-{}-{tag}", backend.name()));
+    let platform = match face {
+        Face::OsMesa => "osmesa",
+        Face::Egl(_) => "egl",
+    };
     let mut cmd = Command::new("python3");
     cmd.arg(script())
         .arg(&dir)
-        .env("MUJOCO_GL", "osmesa")
-        .env("PYOPENGL_PLATFORM", "osmesa")
+        .args(match face {
+            Face::OsMesa => &[],
+            Face::Egl(options) => options,
+        })
+        .env("MUJOCO_GL", platform)
+        .env("PYOPENGL_PLATFORM", platform)
         .env_remove("LD_LIBRARY_PATH")
         .env_remove("MESA_EXTENSION_OVERRIDE")
         .stdout(Stdio::from(
@@ -169,7 +210,13 @@ fn run(backend: Backend, tag: &str, disable: &[&str]) -> Run {
             }
         }
         Backend::Softgl => {
-            cmd.env("LD_LIBRARY_PATH", lib_dir());
+            cmd.env(
+                "LD_LIBRARY_PATH",
+                match face {
+                    Face::OsMesa => lib_dir(),
+                    Face::Egl(_) => egl_dir(),
+                },
+            );
         }
     }
     let timeout = std::env::var("SOFTGL_MUJOCO_TIMEOUT")
@@ -510,6 +557,11 @@ fn gl_error_warnings(r: &Run) -> Vec<&String> {
 /// Every frame of `r` rendered, with no GL error (MuJoCo's other warnings, e.g.
 /// the one about depth accuracy without `GL_ARB_clip_control`, are allowed).
 fn assert_clean(r: &Run) {
+    assert_clean_frames(r, &frame_names());
+}
+
+/// [`assert_clean`] for the frames `names`.
+fn assert_clean_frames(r: &Run, names: &[String]) {
     assert!(
         r.ended.is_none(),
         "{} run did not finish: {:?}",
@@ -518,8 +570,8 @@ fn assert_clean(r: &Run) {
     );
     let gl = gl_error_warnings(r);
     assert!(gl.is_empty(), "{}: {gl:?}", r.backend.name());
-    for name in frame_names() {
-        let s = r.status(&name);
+    for name in names {
+        let s = r.status(name);
         assert!(
             s.error.is_none() && s.gl_errors == "-",
             "{} {name}: {s:?}",
@@ -640,7 +692,31 @@ fn softgl_against_llvmpipe() {
     if !have("MuJoCo scenes on softgl", &[Need::OsMesa, Need::Mujoco]) {
         return;
     }
-    let sg = run(Backend::Softgl, "a", &[]);
+    compare_softgl(Face::OsMesa, "", &frame_names());
+}
+
+/// The full scene at 320×240, with MuJoCo's offscreen buffer single-sampled
+/// and 4× multisampled, through `MUJOCO_GL=egl`: softgl's EGL face against
+/// llvmpipe and softpipe through Mesa's EGL, the same targets as
+/// [`softgl_against_llvmpipe`].
+#[test]
+fn softgl_through_egl_against_llvmpipe() {
+    if !have("MuJoCo scenes through EGL", &[Need::Egl, Need::Mujoco]) {
+        return;
+    }
+    const OPTIONS: &[&str] = &["--scenes", "full", "--sizes", "320x240", "--samples", "0,4"];
+    let names: Vec<String> = frame_names()
+        .into_iter()
+        .filter(|n| n.starts_with("full_") && n.contains("_320x240_"))
+        .collect();
+    assert_eq!(names.len(), 10);
+    compare_softgl(Face::Egl(OPTIONS), "egl-", &names);
+}
+
+/// Renders `names` on softgl, llvmpipe and softpipe through `face` (runs
+/// tagged `tag`), prints each frame's distances and asserts the targets.
+fn compare_softgl(face: Face, tag: &str, names: &[String]) {
+    let sg = run_through(Backend::Softgl, &format!("{tag}a"), &[], face);
     assert!(
         sg.renderer.contains("softgl"),
         "softgl's library was not loaded: {:?}",
@@ -650,10 +726,12 @@ fn softgl_against_llvmpipe() {
         .into_iter()
         .filter(|e| !sg.extensions.iter().any(|s| s == e))
         .collect();
-    let llvm = run(Backend::Llvmpipe, "ref", &disable);
-    let soft = run(Backend::Softpipe, "ref", &disable);
-    assert_clean(&llvm);
-    assert_clean(&soft);
+    let llvm = run_through(Backend::Llvmpipe, &format!("{tag}ref"), &disable, face);
+    let soft = run_through(Backend::Softpipe, &format!("{tag}ref"), &disable, face);
+    assert!(llvm.renderer.contains("llvmpipe"), "{}", llvm.renderer);
+    assert!(soft.renderer.contains("softpipe"), "{}", soft.renderer);
+    assert_clean_frames(&llvm, names);
+    assert_clean_frames(&soft, names);
     println!(
         "MuJoCo {}; softgl: {} (MuJoCo's extensions: {:?})",
         sg.mujoco, sg.renderer, sg.extensions
@@ -669,14 +747,14 @@ fn softgl_against_llvmpipe() {
         println!("MuJoCo warning on llvmpipe: {w}");
     }
     let mut failures: Vec<String> = gl_error_warnings(&sg).into_iter().cloned().collect();
-    for name in frame_names() {
+    for name in names {
         let mode = name.rsplit('_').next().unwrap();
-        let s = sg.status(&name);
-        let line = match sg.npy(&name) {
+        let s = sg.status(name);
+        let line = match sg.npy(name) {
             Some(a) if s.error.is_none() => {
-                let reference = llvm.npy(&name).expect("llvmpipe frame");
+                let reference = llvm.npy(name).expect("llvmpipe frame");
                 let d = diff(mode, &reference, &a);
-                let sp = diff(mode, &reference, &soft.npy(&name).expect("softpipe frame"));
+                let sp = diff(mode, &reference, &soft.npy(name).expect("softpipe frame"));
                 let mut f = targets(mode, d, Some(sp));
                 if s.gl_errors != "-" {
                     f.push(format!("GL errors {}", s.gl_errors));
@@ -684,7 +762,7 @@ fn softgl_against_llvmpipe() {
                 let verdict = if f.is_empty() {
                     "ok".to_owned()
                 } else if matches!(d, Diff::Rgb { .. }) {
-                    format!("MISSES ({})", write_diff(&sg.dir, &name, &reference, &a).display())
+                    format!("MISSES ({})", write_diff(&sg.dir, name, &reference, &a).display())
                 } else {
                     "MISSES".to_owned()
                 };

@@ -676,8 +676,11 @@ impl<'s> Geometry<'s> {
     #[inline(always)]
     fn triangle(&self, v: [&RasterVertex; 3], flat: Option<&Varyings>, sink: &mut dyn PrimSink) {
         let area = signed_area(3, |i| (v[i].x, v[i].y));
-        let front = ((area > 0.0) == (self.state.front_face == FrontFace::Ccw)) != self.upper_left;
-        if self.state.culls(front) || area == 0.0 {
+        if area == 0.0 && !self.recording {
+            return;
+        }
+        let front = self.facing(area);
+        if self.state.culls(front) {
             return;
         }
         let params = &self.fill_params;
@@ -694,6 +697,19 @@ impl<'s> Geometry<'s> {
         } else {
             sink.triangle(v, flat, params);
         }
+    }
+
+    /// Whether a polygon of signed window area `area` is front-facing. A
+    /// zero-area polygon is drawn by no fragment; in selection and feedback
+    /// (`recording`) it is still recorded, as a back face, as Mesa's draw
+    /// module does for them (`draw_pipe_cull.c`: `det == 0` passes unless
+    /// back faces are culled).
+    #[inline(always)]
+    fn facing(&self, area: f64) -> bool {
+        if area == 0.0 && self.recording {
+            return false;
+        }
+        ((area > 0.0) == (self.state.front_face == FrontFace::Ccw)) != self.upper_left
     }
 
     /// The general triangle: clipped, projected, culled, drawn as its
@@ -750,7 +766,7 @@ impl<'s> Geometry<'s> {
         }
         // Facing from the signed area in window space (y up: positive is CCW).
         let area = signed_area(win.len(), |i| (win[i].0.x, win[i].0.y));
-        let front = ((area > 0.0) == (self.state.front_face == FrontFace::Ccw)) != self.upper_left;
+        let front = self.facing(area);
         if self.state.culls(front) {
             return;
         }
@@ -772,7 +788,7 @@ impl<'s> Geometry<'s> {
         let offset = offset_on.then_some((self.state.offset_factor, self.state.offset_units));
         match mode {
             PolygonMode::Fill => {
-                if area == 0.0 {
+                if area == 0.0 && !self.recording {
                     return;
                 }
                 let params = RasterParams { offset, ..self.params };

@@ -374,6 +374,28 @@ impl Context {
         })
     }
 
+    /// `glTexSubImage` with no image (a null pointer, no unpack buffer):
+    /// its errors only, as [`Context::tex_sub_image`] finds them, and
+    /// nothing written (Mesa checks the region before it looks at the
+    /// pointer: `texsubimage_error_check`, `main/teximage.c`).
+    pub fn tex_sub_image_errors(
+        &mut self,
+        target: TexImageTarget,
+        level: i32,
+        offset: [i32; 3],
+        size: [i32; 3],
+        (format, ty): (PixelFormat, PixelType),
+    ) -> GlResult {
+        self.tex_call(|gl| {
+            check(!matches!(target, TexImageTarget::Proxy(_)), GlError::InvalidEnum)?;
+            let level = level_index(target.texture_target(), level)?;
+            check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
+            let img = gl.existing_image(target, level)?;
+            check_format_type(img.internal, format, ty)?;
+            Context::check_region(img, target.dims(), offset, size)
+        })
+    }
+
     /// `glCopyTexImage1D/2D`: the image from the framebuffer rectangle at
     /// `xy` (`size` `[w, 1]` for 1D). Colour formats read the colour buffer
     /// (luminance and intensity take red), depth formats the depth buffer.

@@ -12,6 +12,7 @@
 
 pub mod api;
 pub mod format;
+pub mod index;
 pub mod mipmap;
 pub mod object;
 pub mod store;

@@ -1,6 +1,11 @@
-//! Configs: RGBA8 with depth 0/16/24 and stencil 0/8, for pbuffers and
-//! desktop OpenGL; `eglChooseConfig` with EGL 1.5's matching rules (§3.4.1,
-//! table 3.4) and sort order (§3.4.1.2), `eglGetConfigs`, `eglGetConfigAttrib`.
+//! Configs: RGBA8 and RGB8 (no alpha, as llvmpipe's XRGB configs), each
+//! with depth 0/16/24 and stencil 0/8, single-sampled or with 4 samples a
+//! pixel (`EGL_SAMPLE_BUFFERS` 1, as llvmpipe's: it has 1 and 4 samples
+//! only, so a request for 2 gets 4), for pbuffers and desktop OpenGL;
+//! `eglChooseConfig` with EGL 1.5's matching rules (§3.4.1, table 3.4) and
+//! sort order (§3.4.1.2: a request that does not ask for alpha gets the
+//! smaller RGB8 buffer first, as on Mesa), `eglGetConfigs`,
+//! `eglGetConfigAttrib`.
 
 use super::*;
 use crate::consts::MAX_SIZE;
@@ -8,20 +13,43 @@ use crate::consts::MAX_SIZE;
 /// What varies between configs.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Config {
+    /// `EGL_ALPHA_SIZE`: 8 (RGBA8), or 0 (RGB8).
+    pub alpha: i32,
     pub depth: i32,
     pub stencil: i32,
+    /// `EGL_SAMPLES`: 0, or 4 (`softgl::multisample::MAX_SAMPLES`).
+    pub samples: i32,
 }
 
-/// Every config, in EGL's sort order (for equal requests: smaller depth,
-/// then smaller stencil); `EGL_CONFIG_ID` is the index + 1.
-pub(crate) const CONFIGS: [Config; 6] = [
-    Config { depth: 0, stencil: 0 },
-    Config { depth: 0, stencil: 8 },
-    Config { depth: 16, stencil: 0 },
-    Config { depth: 16, stencil: 8 },
-    Config { depth: 24, stencil: 0 },
-    Config { depth: 24, stencil: 8 },
-];
+/// The configs of one colour format and sample count, by depth then stencil.
+const fn family(alpha: i32, samples: i32) -> [Config; 6] {
+    const DEPTH_STENCIL: [(i32, i32); 6] = [(0, 0), (0, 8), (16, 0), (16, 8), (24, 0), (24, 8)];
+    let mut out = [Config {
+        alpha,
+        depth: 0,
+        stencil: 0,
+        samples,
+    }; 6];
+    let mut i = 0;
+    while i < 6 {
+        (out[i].depth, out[i].stencil) = DEPTH_STENCIL[i];
+        i += 1;
+    }
+    out
+}
+
+/// Every config; `EGL_CONFIG_ID` is the index + 1: RGBA8 (1–6), RGBA8 with
+/// 4 samples (7–12), RGB8 (13–18), RGB8 with 4 samples (19–24).
+pub(crate) const CONFIGS: [Config; 24] = {
+    let families = [family(8, 0), family(8, 4), family(0, 0), family(0, 4)];
+    let mut all = [family(8, 0)[0]; 24];
+    let mut i = 0;
+    while i < 24 {
+        all[i] = families[i / 6][i % 6];
+        i += 1;
+    }
+    all
+};
 
 pub(crate) fn config_handle(index: usize) -> EGLConfig {
     ((index + 1) << 4 | TAG_CONFIG) as EGLConfig
@@ -44,10 +72,19 @@ pub(crate) fn framebuffer_desc(index: usize, width: u32, height: u32) -> softgl:
     softgl::FramebufferDesc {
         width,
         height,
-        color: softgl::ColorFormat::Rgba8,
+        color: if c.alpha > 0 {
+            softgl::ColorFormat::Rgba8
+        } else {
+            softgl::ColorFormat::Rgb8
+        },
         depth_bits: c.depth as u32,
         stencil_bits: c.stencil as u32,
     }
+}
+
+/// The samples a pixel of a surface of config `index` (1, or 4).
+pub(crate) fn framebuffer_samples(index: usize) -> u32 {
+    CONFIGS[index].samples.max(1) as u32
 }
 
 /// The value of `name` for config `index`, or `None` for a name that is not
@@ -55,8 +92,9 @@ pub(crate) fn framebuffer_desc(index: usize, width: u32, height: u32) -> softgl:
 pub(crate) fn config_attrib(index: usize, name: EGLint) -> Option<EGLint> {
     let c = CONFIGS[index];
     Some(match name {
-        EGL_BUFFER_SIZE => 32,
-        EGL_RED_SIZE | EGL_GREEN_SIZE | EGL_BLUE_SIZE | EGL_ALPHA_SIZE => 8,
+        EGL_BUFFER_SIZE => 24 + c.alpha,
+        EGL_RED_SIZE | EGL_GREEN_SIZE | EGL_BLUE_SIZE => 8,
+        EGL_ALPHA_SIZE => c.alpha,
         EGL_LUMINANCE_SIZE | EGL_ALPHA_MASK_SIZE => 0,
         EGL_BIND_TO_TEXTURE_RGB | EGL_BIND_TO_TEXTURE_RGBA => EGL_FALSE as EGLint,
         EGL_COLOR_BUFFER_TYPE => EGL_RGB_BUFFER,
@@ -72,7 +110,8 @@ pub(crate) fn config_attrib(index: usize, name: EGLint) -> Option<EGLint> {
         EGL_NATIVE_RENDERABLE => EGL_FALSE as EGLint,
         EGL_NATIVE_VISUAL_ID => 0,
         EGL_NATIVE_VISUAL_TYPE => EGL_NONE,
-        EGL_SAMPLES | EGL_SAMPLE_BUFFERS => 0,
+        EGL_SAMPLES => c.samples,
+        EGL_SAMPLE_BUFFERS => EGLint::from(c.samples > 0),
         EGL_SURFACE_TYPE => EGL_PBUFFER_BIT,
         EGL_TRANSPARENT_TYPE => EGL_NONE,
         EGL_TRANSPARENT_RED_VALUE | EGL_TRANSPARENT_GREEN_VALUE | EGL_TRANSPARENT_BLUE_VALUE => 0,

@@ -5,7 +5,7 @@
 //! - One display (`eglGetDisplay(EGL_DEFAULT_DISPLAY)`,
 //!   `eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY)`
 //!   and `eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device)` of the one
-//!   device `eglQueryDevicesEXT` lists are the same handle), six configs (RGBA8 × depth 0/16/24 × stencil 0/8,
+//!   device `eglQueryDevicesEXT` lists are the same handle), 24 configs (RGBA8 or RGB8 × 1 or 4 samples × depth 0/16/24 × stencil 0/8,
 //!   pbuffers and desktop OpenGL only), pbuffer surfaces whose buffers softgl
 //!   owns, desktop GL contexts up to the version `glGetString(GL_VERSION)` reports.
 //! - An EGL context *is* an OSMesa context ([`crate::state::OsContext`]):

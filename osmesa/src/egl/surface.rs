@@ -69,7 +69,7 @@ pub unsafe extern "C" fn eglCreatePbufferSurface(
         let attribs = unsafe { int_attribs(attrib_list) }?;
         let (width, height, largest) = pbuffer_size(&attribs)?;
         let desc = framebuffer_desc(config, width.max(1) as u32, height.max(1) as u32);
-        let fb = Framebuffer::new(desc).map_err(|_| EGL_BAD_ALLOC)?;
+        let fb = Framebuffer::new_multisample_window(desc, framebuffer_samples(config)).map_err(|_| EGL_BAD_ALLOC)?;
         let h = new_handle(TAG_SURFACE);
         let surface = Surface {
             config,

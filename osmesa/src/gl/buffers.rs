@@ -290,6 +290,13 @@ exports! {
         if primcount == 0 || first.is_null() || count.is_null() {
             return;
         }
+        // SAFETY: `primcount` values in `count` (GL's contract).
+        let counts = unsafe { std::slice::from_raw_parts(count, primcount as usize) };
+        // Mesa's `_mesa_validate_MultiDrawArrays`: the mode, then every
+        // count, before anything is drawn (a negative one draws nothing).
+        if let Some(e) = multi_draw_error(mode, None, counts) {
+            return now(|_, _| Err(e));
+        }
         for k in 0..primcount as usize {
             // SAFETY: `primcount` values in each array (GL's contract).
             let (f, c) = unsafe { (first.add(k).read(), count.add(k).read()) };
@@ -308,6 +315,12 @@ exports! {
         if primcount == 0 || count.is_null() || indices.is_null() {
             return;
         }
+        // SAFETY: `primcount` values in `count` (GL's contract).
+        let counts = unsafe { std::slice::from_raw_parts(count, primcount as usize) };
+        // Mesa's `_mesa_validate_MultiDrawElements`: mode, type, then every count.
+        if let Some(e) = multi_draw_error(mode, Some(ty), counts) {
+            return now(|_, _| Err(e));
+        }
         for k in 0..primcount as usize {
             // SAFETY: `primcount` values in each array; each draw as glDrawElements (GL's contract).
             unsafe { super::arrays::glDrawElements(mode, count.add(k).read(), ty, indices.add(k).read()) };
@@ -325,4 +338,17 @@ exports! {
         // SAFETY: the same contract.
         unsafe { glMultiDrawElements(mode, count, ty, indices, primcount) }
     }
+}
+
+/// The error of a `glMultiDraw*` call before it draws anything, in Mesa's
+/// order (`main/draw.c`): a mode that is no primitive `GL_INVALID_ENUM`, an
+/// index type that is none (elements) `GL_INVALID_ENUM`, then any negative
+/// count `GL_INVALID_VALUE` (the whole call is ignored, GL 4.5 §2.3.1).
+fn multi_draw_error(mode: GLenum, ty: Option<GLenum>, counts: &[i32]) -> Option<GlError> {
+    const GL_POLYGON: GLenum = 0x0009;
+    const INDEX_TYPES: [GLenum; 3] = [0x1401, 0x1403, 0x1405]; // UNSIGNED_BYTE, _SHORT, _INT
+    if mode > GL_POLYGON || ty.is_some_and(|t| !INDEX_TYPES.contains(&t)) {
+        return Some(GlError::InvalidEnum);
+    }
+    counts.iter().any(|&c| c < 0).then_some(GlError::InvalidValue)
 }

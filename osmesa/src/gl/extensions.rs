@@ -257,6 +257,7 @@ pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
         ],
     ),
     ("GL_EXT_separate_specular_color", &[]),
+    ("GL_EXT_shadow_funcs", &[]),
     ("GL_EXT_stencil_wrap", &[]),
     ("GL_EXT_subtexture", &["glTexSubImage1DEXT", "glTexSubImage2DEXT"]),
     ("GL_EXT_texture3D", &["glTexImage3DEXT", "glTexSubImage3DEXT"]),
@@ -274,6 +275,20 @@ pub(crate) const EXTENSIONS: &[(&str, &[&str])] = &[
             "glGenTexturesEXT",
             "glIsTextureEXT",
             "glPrioritizeTexturesEXT",
+        ],
+    ),
+    (
+        "GL_EXT_vertex_array",
+        &[
+            "glArrayElementEXT",
+            "glColorPointerEXT",
+            "glDrawArraysEXT",
+            "glEdgeFlagPointerEXT",
+            "glGetPointervEXT",
+            "glIndexPointerEXT",
+            "glNormalPointerEXT",
+            "glTexCoordPointerEXT",
+            "glVertexPointerEXT",
         ],
     ),
     (

@@ -46,6 +46,7 @@ mod state;
 mod stipple;
 mod texture;
 mod texunit;
+mod vertex_array_ext;
 
 pub use accum::*;
 pub use arrays::*;
@@ -70,6 +71,7 @@ pub use state::*;
 pub use stipple::*;
 pub use texture::*;
 pub use texunit::*;
+pub use vertex_array_ext::*;
 
 /// Every `gl*` export of this library: each module's `exports!` table.
 fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)> {
@@ -98,6 +100,7 @@ fn all_exports() -> impl Iterator<Item = (&'static str, *const std::ffi::c_void)
         stipple::table,
         texture::table,
         texunit::table,
+        vertex_array_ext::table,
         texunit::multi_table,
     ]
     .into_iter()

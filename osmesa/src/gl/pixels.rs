@@ -268,10 +268,14 @@ unsafe fn read_pixels(
         GL_UNSIGNED_BYTE | GL_BYTE => 1,
         GL_UNSIGNED_SHORT | GL_SHORT => 2,
         GL_UNSIGNED_INT | GL_INT | GL_FLOAT => 4,
-        // Packed and bitmap types exist in GL 1.2 and 1.0 but not in softgl yet.
-        0x1A00 | 0x8032..=0x8036 | 0x8362..=0x8368 => return Err(GlError::InvalidOperation),
+        // GL_BITMAP: colour-index and stencil reads only (GL 1.5 §4.3.2).
+        0x1A00 => return Err(GlError::InvalidOperation),
+        // Packed colour types (GL 1.2): the format must have their components.
+        0x8032..=0x8036 | 0x8362..=0x8368 if matches!(src, Source::Color(_)) => pixel_size(format, ty)?.0,
+        0x8032..=0x8036 | 0x8362..=0x8368 => return Err(GlError::InvalidOperation),
         _ => return Err(GlError::InvalidEnum),
     };
+    let packed = packed_fields(ty);
     if w < 0 || h < 0 {
         return Err(GlError::InvalidValue);
     }
@@ -298,7 +302,7 @@ unsafe fn read_pixels(
         Source::Color(c) => c.len(),
         Source::Depth | Source::Stencil | Source::DepthStencil => 1,
     };
-    let pixel_bytes = comps * size;
+    let pixel_bytes = if packed.is_some() { size } else { comps * size };
     // The layout of a format with as many components (stencil: one).
     // (Float depth and stencil: eight bytes, aligned as two `GL_UNSIGNED_INT`s.)
     let (like, like_ty) = match ty {
@@ -339,6 +343,21 @@ unsafe fn read_pixels(
                 };
                 put(&mut dst[at..], GL_FLOAT, f64::from(z), false, pack.swap_bytes);
                 put(&mut dst[at + 4..], GL_UNSIGNED_INT, vals[1], true, pack.swap_bytes);
+                continue;
+            }
+            if let Some((fields, rev)) = packed {
+                let word = pack_color(&vals, fields, rev, !fb.color_format().is_deep());
+                // The packed unit in native byte order (swapped with GL_PACK_SWAP_BYTES).
+                let mut out = [0u8; 4];
+                match size {
+                    1 => out[0] = word as u8,
+                    2 => out[..2].copy_from_slice(&(word as u16).to_ne_bytes()),
+                    _ => out = word.to_ne_bytes(),
+                }
+                if pack.swap_bytes {
+                    out[..size].reverse();
+                }
+                dst[at..at + size].copy_from_slice(&out[..size]);
                 continue;
             }
             if let Source::DepthStencil = src {
@@ -383,6 +402,57 @@ unsafe fn read_pixels(
         }
     }
     Ok(())
+}
+
+/// The bit widths of a packed type's components, in the format's order, and
+/// whether the first sits in the lowest bits (`_REV`) rather than the highest
+/// (GL 1.5 §3.6.4, table 3.8); `None` for other types.
+fn packed_fields(ty: GLenum) -> Option<(&'static [u32], bool)> {
+    Some(match ty {
+        0x8032 => (&[3, 3, 2], false),       // UNSIGNED_BYTE_3_3_2
+        0x8362 => (&[3, 3, 2], true),        // UNSIGNED_BYTE_2_3_3_REV
+        0x8363 => (&[5, 6, 5], false),       // UNSIGNED_SHORT_5_6_5
+        0x8364 => (&[5, 6, 5], true),        // UNSIGNED_SHORT_5_6_5_REV
+        0x8033 => (&[4, 4, 4, 4], false),    // UNSIGNED_SHORT_4_4_4_4
+        0x8365 => (&[4, 4, 4, 4], true),     // UNSIGNED_SHORT_4_4_4_4_REV
+        0x8034 => (&[5, 5, 5, 1], false),    // UNSIGNED_SHORT_5_5_5_1
+        0x8366 => (&[5, 5, 5, 1], true),     // UNSIGNED_SHORT_1_5_5_5_REV
+        0x8035 => (&[8, 8, 8, 8], false),    // UNSIGNED_INT_8_8_8_8
+        0x8367 => (&[8, 8, 8, 8], true),     // UNSIGNED_INT_8_8_8_8_REV
+        0x8036 => (&[10, 10, 10, 2], false), // UNSIGNED_INT_10_10_10_2
+        0x8368 => (&[10, 10, 10, 2], true),  // UNSIGNED_INT_2_10_10_10_REV
+        _ => return None,
+    })
+}
+
+/// Components `vals` (in `[0, 1]`, the format's order) packed into `fields`,
+/// as Mesa converts a read: from an 8-bit buffer, `(x · max + 127) / 255` of
+/// the byte `x` for fields of 8 bits or fewer (`_mesa_unorm_to_unorm`), and
+/// for wider ones the float `x · (1/255)` rounded to even (`_mesa_float_to_unorm`,
+/// the float path of `_mesa_format_convert`); from a deep buffer, the float rounded.
+fn pack_color(vals: &[f64], fields: &[u32], rev: bool, eight_bit: bool) -> u32 {
+    let total: u32 = fields.iter().sum();
+    let mut word = 0u32;
+    let mut low = 0u32;
+    for (k, &width) in fields.iter().enumerate() {
+        let max = (1u32 << width) - 1;
+        let v = vals.get(k).copied().unwrap_or(1.0);
+        let f = v as f32;
+        let c = if eight_bit {
+            let x = (v * 255.0).round() as u32;
+            if width <= 8 {
+                (x * max + 127) / 255
+            } else {
+                (x as f32 * (1.0f32 / 255.0) * max as f32).round_ties_even() as u32
+            }
+        } else {
+            (f.clamp(0.0, 1.0) * max as f32).round_ties_even() as u32
+        };
+        let shift = if rev { low } else { total - low - width };
+        word |= c.min(max) << shift;
+        low += width;
+    }
+    word
 }
 
 exports! {

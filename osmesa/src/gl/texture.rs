@@ -23,6 +23,7 @@ use crate::consts::*;
 use crate::gl_state::{Cmd, GlState, MAX_UNITS};
 use crate::state::with_gl;
 use softgl::texture::api::{check_format_type, MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE};
+use softgl::texture::index::{index_image_bytes, index_image_rgba8, IndexType};
 use softgl::texture::unpack::ClientLayout;
 use softgl::texture::{
     min_filter_from_gl, min_filter_to_gl, DepthMode, InternalFormat, MipFilter, PixelData, PixelFormat, PixelStore,
@@ -264,10 +265,10 @@ struct Client {
     ty: PixelType,
     /// Bytes from the pointer to the end of the image's last pixel.
     len: usize,
-    /// Colour indices (`GL_COLOR_INDEX`), which GL's default pixel maps
-    /// (`glPixelMap` is not in softgl) turn into (0, 0, 0, 0): `format` and
-    /// `ty` then describe the zeros handed to softgl, and nothing is read.
-    index: bool,
+    /// Colour indices (`GL_COLOR_INDEX`) of this type, which the `I_TO_*`
+    /// pixel maps turn into RGBA8 (`softgl::texture::index`): `format` and
+    /// `ty` then describe that RGBA8 image, handed to softgl tight.
+    index: Option<IndexType>,
 }
 
 /// Checks `format` and `ty` and sizes the `dims`-dimensional image `size`
@@ -281,12 +282,18 @@ fn client(format: GLenum, ty: GLenum, dims: u32, size: [i32; 3], store: &PixelSt
     match format {
         GL_STENCIL_INDEX => return Err(GlError::InvalidOperation),
         GL_COLOR_INDEX => {
+            let ity = match ty {
+                GL_BITMAP => IndexType::Bitmap,
+                _ => IndexType::Type(decode::<PixelType>(ty)?),
+            };
+            let size = size.map(|s| usize::try_from(s).unwrap_or(0));
+            let len = index_image_bytes(ity, store, dims, size).ok_or(GlError::InvalidValue)?;
             return Ok(Client {
                 format: PixelFormat::Rgba,
                 ty: PixelType::UnsignedByte,
-                len: 0,
-                index: true,
-            })
+                len,
+                index: Some(ity),
+            });
         }
         _ => {}
     }
@@ -297,17 +304,8 @@ fn client(format: GLenum, ty: GLenum, dims: u32, size: [i32; 3], store: &PixelSt
         format,
         ty,
         len: layout.len,
-        index: false,
+        index: None,
     })
-}
-
-/// The RGBA bytes colour indices become (all 0) for an image of `size`,
-/// tight under the default unpack state; `None` past the largest image
-/// softgl keeps (the upload then fails on its size).
-fn index_zeros(size: [i32; 3]) -> Option<Vec<u8>> {
-    let n: usize = size.iter().map(|&s| usize::try_from(s).unwrap_or(0)).product();
-    let max = (MAX_SIZE as usize).pow(2);
-    (n <= max).then(|| vec![0; n * 4])
 }
 
 /// The checks Mesa makes before the format and type (`texture_error_check`):
@@ -341,14 +339,22 @@ unsafe fn upload(
         let store = os.unpack;
         let checked = pre.and_then(|()| client(format, ty, dims, size, &store));
         let run = move |gl: &mut Context, c: Client, bytes: Option<&[u8]>| {
-            let zeros = if c.index && bytes.is_some() {
-                index_zeros(size)
-            } else {
-                None
+            let rgba = match (c.index, bytes) {
+                (Some(ity), Some(bytes)) => {
+                    let size = size.map(|s| usize::try_from(s).unwrap_or(0));
+                    let image = index_image_rgba8(gl.pixel_state(), bytes, ity, &store, dims, size);
+                    Some(image.ok_or(GlError::InvalidOperation)?)
+                }
+                _ => None,
             };
-            let (bytes, store) = match &zeros {
-                Some(z) => (Some(&z[..]), PixelStore::DEFAULT),
-                None if c.index => (None, store),
+            let (bytes, store) = match &rgba {
+                Some(image) => (
+                    Some(&image[..]),
+                    PixelStore {
+                        alignment: 1,
+                        ..PixelStore::DEFAULT
+                    },
+                ),
                 None => (bytes, store),
             };
             let data = bytes.map(|bytes| PixelData {
@@ -439,9 +445,9 @@ unsafe fn tex_sub_image(
 ) {
     let t = image_target(target, Some(dims), Takes::Images);
     let pre = t.and_then(|_| image_args(level, 0, size));
-    let f: Arc<UploadFn> = Arc::new(move |gl, data, _| match data {
+    let f: Arc<UploadFn> = Arc::new(move |gl, data, format_type| match data {
         Some(data) => gl.tex_sub_image(t?, level, offset, size, data),
-        None => Ok(()),
+        None => gl.tex_sub_image_errors(t?, level, offset, size, format_type),
     });
     // SAFETY: passed on from the caller.
     unsafe { upload(pre, false, (format, ty, dims, size), pixels, f) }
@@ -488,7 +494,7 @@ unsafe fn get_tex_image(target: GLenum, level: i32, format: GLenum, ty: GLenum, 
         .map(|n| gl.get_tex_level_parameter(t, level, n).unwrap_or(0));
         let pack = os.pack;
         let c = client(format, ty, t.dims(), size, &pack)?;
-        if c.index {
+        if c.index.is_some() {
             // Indices are written only by an index texture, which softgl has not.
             return Err(GlError::InvalidOperation);
         }
