@@ -225,9 +225,6 @@ impl Specialist {
     /// thread (if that thread cannot run, the specialist keeps its quick code).
     pub fn compile_tier(key: &FragmentKey, tier: Tier) -> Result<Specialist, SpecialistError> {
         key.validate()?;
-        if key.color_format.is_deep() {
-            return Err(CompileError::DeepFormat(key.color_format).into());
-        }
         let first = Self::compile_code(key, tier.first())?;
         let upgrade = (tier == Tier::Tiered).then(|| {
             let upgrade = Upgrade {
@@ -702,9 +699,12 @@ fn depth_row<'a>(d: &'a mut DepthTarget<'_>, index: usize, n: usize) -> Option<D
     })
 }
 
+/// The widest pixel: `ColorFormat::Rgba32F`'s.
+const MAX_BYTES_PER_PIXEL: usize = 16;
+
 /// A span's worth of pixels, for spans whose last group crosses the right edge.
 struct Scratch {
-    color: [u8; SPAN_MAX * 4],
+    color: [u8; SPAN_MAX * MAX_BYTES_PER_PIXEL],
     depth16: [u16; SPAN_MAX],
     depth32: [u32; SPAN_MAX],
     stencil: [u8; SPAN_MAX],
@@ -713,7 +713,7 @@ struct Scratch {
 impl Default for Scratch {
     fn default() -> Self {
         Scratch {
-            color: [0; SPAN_MAX * 4],
+            color: [0; SPAN_MAX * MAX_BYTES_PER_PIXEL],
             depth16: [0; SPAN_MAX],
             depth32: [0; SPAN_MAX],
             stencil: [0; SPAN_MAX],
