@@ -90,6 +90,13 @@ pub enum RenderbufferFormat {
     Rgba12,
     Rgb16,
     Rgba16,
+    /// `GL_RGBA16F`, `GL_RGB16F` (half floats, as llvmpipe stores them:
+    /// not rendered, `GL_FRAMEBUFFER_UNSUPPORTED`).
+    Rgba16F,
+    Rgb16F,
+    /// `GL_RGBA32F` (rendered as `ColorFormat::Rgba32F`), `GL_RGB32F` (not rendered).
+    Rgba32F,
+    Rgb32F,
     DepthComponent,
     DepthComponent16,
     DepthComponent24,
@@ -121,6 +128,8 @@ impl RenderbufferFormat {
             F::Rgba | F::Rgba8 => K::Color(ColorFormat::Rgba8),
             F::Rgb | F::Rgb8 => K::Color(ColorFormat::Rgb8),
             F::Rgb565 => K::Color(ColorFormat::Rgb565),
+            F::Rgba16 => K::Color(ColorFormat::Rgba16),
+            F::Rgba32F => K::Color(ColorFormat::Rgba32F),
             F::DepthComponent | F::DepthComponent24 => K::Depth(DepthFormat::D24),
             F::DepthComponent16 => K::Depth(DepthFormat::D16),
             F::DepthComponent32 => K::Depth(DepthFormat::D32),
@@ -148,7 +157,10 @@ impl RenderbufferFormat {
             F::Rgb12 => [12, 12, 12, 0, 0, 0],
             F::Rgba12 => [12, 12, 12, 12, 0, 0],
             F::Rgb16 => [16, 16, 16, 0, 0, 0],
-            F::Rgba16 => [16, 16, 16, 16, 0, 0],
+            F::Rgba16 | F::Rgba16F => [16, 16, 16, 16, 0, 0],
+            F::Rgb16F => [16, 16, 16, 0, 0, 0],
+            F::Rgba32F => [32, 32, 32, 32, 0, 0],
+            F::Rgb32F => [32, 32, 32, 0, 0, 0],
             F::DepthComponent | F::DepthComponent24 => [0, 0, 0, 0, 24, 0],
             F::DepthComponent16 => [0, 0, 0, 0, 16, 0],
             F::DepthComponent32 => [0, 0, 0, 0, 32, 0],
@@ -472,6 +484,9 @@ fn texture_kind(img: &TexImage) -> Option<RenderbufferKind> {
         (BaseFormat::Rgba | BaseFormat::Rgb, TexelFormat::Rgba8) if s.bits[..3] == [8, 8, 8] => {
             Some(RenderbufferKind::Color(ColorFormat::Rgba8))
         }
+        // `GL_RGBA16` (and `GL_RGBA12`, stored alike): its texels are
+        // `ColorFormat::Rgba16`'s pixels.
+        (BaseFormat::Rgba, TexelFormat::Rgba16) => Some(RenderbufferKind::Color(ColorFormat::Rgba16)),
         _ => None,
     }
 }
@@ -542,7 +557,11 @@ fn status(fbo: &FboState, textures: &crate::texture::TextureStore, name: u32) ->
     let mixed = images
         .iter()
         .any(|(_, i)| (i.width, i.height) != (images[0].1.width, images[0].1.height));
-    if ds_split || mixed || images.iter().any(|(_, i)| i.kind.is_none()) {
+    // Multisampled deep colour is not rendered (`Framebuffer::new_multisample`).
+    let deep_samples = images
+        .iter()
+        .any(|(_, i)| i.samples > 0 && matches!(i.kind, Some(RenderbufferKind::Color(c)) if c.is_deep()));
+    if ds_split || mixed || deep_samples || images.iter().any(|(_, i)| i.kind.is_none()) {
         return S::Unsupported;
     }
     S::Complete
@@ -1255,7 +1274,7 @@ impl Context {
                 other => other,
             }),
             Attachment::Texture { .. } if write => self.write_texture(c.color, w, h, |img, off| {
-                let len = w as usize * h as usize * 4;
+                let len = w as usize * h as usize * img.texel_format().bytes_per_texel();
                 img.texels_mut()[off..off + len].copy_from_slice(&color[..len]);
             }),
             Attachment::Texture { .. } => {}
@@ -1377,7 +1396,8 @@ impl Context {
         let img = self.textures.object(name)?.image(level as usize, face as usize)?;
         let n = img.width as usize * img.height as usize;
         let off = img.offset(0, 0, layer as usize);
-        Some((img.texels.get(off..off + n * 4)?, n))
+        let bpp = img.texel_format().bytes_per_texel();
+        Some((img.texels.get(off..off + n * bpp)?, n))
     }
 
     fn take_color(&mut self, a: Attachment, s: usize, take: bool) -> GlResult<Vec<u8>> {

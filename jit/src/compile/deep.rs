@@ -74,8 +74,8 @@ impl Gen<'_> {
                     let k = self.deep_blend_color(sv, &blend);
                     d.out = Some(match format {
                         ColorFormat::Rgba16 => {
-                            let src = c.map(|v| self.unorm16_lanes(v));
-                            let k = k.map(|k| k.map(|v| self.unorm16_lanes(v)));
+                            let src = c.map(|v| self.unorm16_lanes(v, true));
+                            let k = k.map(|k| k.map(|v| self.unorm16_lanes(v, false)));
                             self.blend16_lanes(&blend, src, dst, k)
                         }
                         _ => {
@@ -89,7 +89,7 @@ impl Gen<'_> {
                     if d.out.is_none() {
                         let c = self.deep_colour(&mut g, sv, &mut d);
                         d.out = Some(match format {
-                            ColorFormat::Rgba16 => c.map(|v| self.unorm16_lanes(v)),
+                            ColorFormat::Rgba16 => c.map(|v| self.unorm16_lanes(v, true)),
                             _ => c.map(|v| self.b.ins().bitcast(I32X4, MemFlagsData::new(), v)),
                         });
                     }
@@ -142,7 +142,8 @@ impl Gen<'_> {
 
     /// The group's fragment colour in f32, made the first time a stage
     /// reads it: from the planes (a key with a shaded colour) or the span's
-    /// bytes times `1/255`, clamped as `crate::deep::run_span` clamps it.
+    /// bytes times `1/255`, clamped as `crate::deep::run_span` clamps it
+    /// (RGBA16's is then always in [0, 1]).
     fn deep_colour(&mut self, g: &mut Group, sv: &SpanValues, d: &mut DeepGroup) -> [Value; 4] {
         if let Some(c) = d.rgba {
             return c;
@@ -223,9 +224,12 @@ impl Gen<'_> {
     }
 
     /// `crate::deep::unorm16` on f32 lanes: `saturate(c) · (65535/65536)
-    /// + 128`, whose low 16 bits are the value.
-    fn unorm16_lanes(&mut self, v: Value) -> Value {
-        let v = self.saturate(v);
+    /// + 128`, whose low 16 bits are the value. `clamped`: `v` is already
+    /// in [0, 1] (no NaN), and `saturate` the identity on it (its `fmax` and
+    /// `fmin` are about 20 instructions a channel on x86-64: the `fill`
+    /// frame into RGBA16 took twice the time of RGBA32F's with them).
+    fn unorm16_lanes(&mut self, v: Value, clamped: bool) -> Value {
+        let v = if clamped { v } else { self.saturate(v) };
         let scale = self.fconst((65535.0f64 / 65536.0) as f32);
         let v = self.b.ins().fmul(v, scale);
         let bias = self.fconst(128.0);
