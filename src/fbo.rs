@@ -1873,6 +1873,8 @@ fn blit(
     };
     let mut t = to.target();
     let cf = t.color_format();
+    // A deep format on either side: colour goes through f32 (`deep_blit_colour`).
+    let deep = color && (from.color_format().is_deep() || cf.is_deep());
     for y in out.y0..out.y1 {
         let ny = ay.nearest(y);
         for x in out.x0..out.x1 {
@@ -1881,7 +1883,14 @@ fn blit(
                 continue;
             };
             let i = t.index(x, y);
-            if color {
+            if deep {
+                let c = match filter {
+                    BlitFilter::Nearest => source_f32(from, nx, ny),
+                    BlitFilter::Linear => linear_f32(from, [ax.at(x), ay.at(y)]),
+                };
+                let off = t.color_offset(x, y);
+                store_f32(cf, &mut t.color_mut()[off..], c);
+            } else if color {
                 let rgba = match filter {
                     BlitFilter::Nearest => from.pixel(nx, ny).unwrap_or([0; 4]),
                     BlitFilter::Linear => {
@@ -1908,6 +1917,48 @@ fn blit(
                 }
             }
         }
+    }
+}
+
+/// The colour of source pixel `(x, y)` in f32 as llvmpipe's sampler reads
+/// it (`lp_build_unsigned_norm_to_float`: unorm `v · f32(1/max)`; floats as
+/// stored).
+fn source_f32(from: &Framebuffer, x: u32, y: u32) -> [f32; 4] {
+    if from.color_format().is_deep() {
+        from.pixel_f32(x, y).unwrap_or([0.0; 4])
+    } else {
+        from.pixel(x, y).unwrap_or([0; 4]).map(|v| f32::from(v) * (1.0 / 255.0))
+    }
+}
+
+/// The source's colour at normalized `coord`, bilinear with CLAMP_TO_EDGE
+/// in f32 as llvmpipe's SoA sampler filters (`filter::soa`'s axis weights
+/// and lerp order: along x within each row, then y).
+fn linear_f32(from: &Framebuffer, coord: [f32; 2]) -> [f32; 4] {
+    use softgl_jit::texture::arith::lerp;
+    use softgl_jit::texture::filter::soa_linear_axis;
+    use softgl_jit::texture::Wrap;
+    let size = [from.width(), from.height()];
+    let [(x0, x1, wx), (y0, y1, wy)] = std::array::from_fn(|a| {
+        soa_linear_axis(coord[a], size[a] as i32, size[a].is_power_of_two(), Wrap::ClampToEdge)
+    });
+    let at = |x: i32, y: i32| source_f32(from, x.max(0) as u32, y.max(0) as u32);
+    let (a, b, c, d) = (at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1));
+    std::array::from_fn(|k| lerp(wy, lerp(wx, a[k], b[k]), lerp(wx, c[k], d[k])))
+}
+
+/// Stores float colour `c` as a fragment of format `cf` (unorm8 as
+/// `shade::unorm8`, unorm16 as `deep::unorm16`, both clamped; floats
+/// exactly) at the start of `px`.
+fn store_f32(cf: ColorFormat, px: &mut [u8], c: [f32; 4]) {
+    use softgl_jit::deep;
+    if cf.is_deep() {
+        for (k, v) in deep::from_float(cf, c).into_iter().enumerate() {
+            deep::store_channel(cf, px, k, v);
+        }
+    } else {
+        let v = pixel::pack(cf, c.map(softgl_jit::shade::unorm8), None);
+        pixel::store(cf, px, v);
     }
 }
 

@@ -413,11 +413,7 @@ fn renderbuffer_param(gl: &mut Context, target: GLenum, pname: GLenum) -> GlResu
 
 /// The colour bits of `format`: red, green, blue, alpha.
 fn color_bits(format: ColorFormat) -> [u32; 4] {
-    match format {
-        ColorFormat::Rgb565 => [5, 6, 5, 0],
-        ColorFormat::Rgb8 => [8, 8, 8, 0],
-        _ => [8, 8, 8, 8],
-    }
+    std::array::from_fn(|c| format.channel_bits(c))
 }
 
 /// The framebuffer-object queries of `glGet*` (`None`: not one of them);
