@@ -3,7 +3,7 @@
  * GL_RGB16, GL_RGB16F, GL_RGB32F, which softgl reports
  * GL_FRAMEBUFFER_UNSUPPORTED), their sizes, completeness and GL_*_BITS while
  * bound; a scene rendered into each (smooth colour, blending over and
- * additive past 1, DST_COLOR, alpha test, fog, colour sum past 1, a
+ * additive past 1, DST_COLOR, MAX and MIN, alpha test, fog, colour sum past 1, a
  * scissored clear through a colour mask, logic op XOR), read back as
  * GL_FLOAT, GL_UNSIGNED_SHORT and GL_UNSIGNED_BYTE (<fmt>.f, .us, .ub); and
  * blits between RGBA32F, RGBA16 and RGBA8 objects, NEAREST and LINEAR,
@@ -59,6 +59,22 @@ static void scene(void) {
   glVertex2f(1.5f, -1.0f);
   glVertex2f(1.0f, 0.0f);
   glEnd();
+  /* MIN and MAX of the unweighted colours (over the sum past 1). */
+  glBlendEquation(GL_MAX);
+  glBegin(GL_TRIANGLES);
+  glColor4f(0.2f, 0.95f, 0.4f, 0.3f);
+  glVertex2f(0.0f, -0.2f);
+  glVertex2f(1.2f, -0.2f);
+  glVertex2f(0.6f, 0.5f);
+  glEnd();
+  glBlendEquation(GL_MIN);
+  glBegin(GL_TRIANGLES);
+  glColor4f(0.6f, 0.35f, 0.9f, 0.5f);
+  glVertex2f(0.3f, -0.7f);
+  glVertex2f(1.3f, -0.5f);
+  glVertex2f(0.7f, 0.1f);
+  glEnd();
+  glBlendEquation(GL_FUNC_ADD);
   glDisable(GL_BLEND);
   glEnable(GL_ALPHA_TEST);
   glAlphaFunc(GL_GREATER, 0.45f);
