@@ -223,8 +223,8 @@ impl Gen<'_> {
         self.b.ins().fcmp(cc, incoming, reference)
     }
 
-    /// `crate::deep::unorm16` on f32 lanes: `saturate(c) · (65535/65536)
-    /// + 128`, whose low 16 bits are the value. `clamped`: `v` is already
+    /// `crate::deep::unorm16` on f32 lanes: `saturate(c) · (65535/65536) + 128`,
+    /// whose low 16 bits are the value. `clamped`: `v` is already
     /// in [0, 1] (no NaN), and `saturate` the identity on it (its `fmax` and
     /// `fmin` are about 20 instructions a channel on x86-64: the `fill`
     /// frame into RGBA16 took twice the time of RGBA32F's with them).
