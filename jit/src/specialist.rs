@@ -604,8 +604,18 @@ impl Specialist {
             return call.passed;
         }
         let mut scratch = Scratch::default();
-        scratch.color[..len * bpp].copy_from_slice(color);
-        call.color = back(scratch.color.as_mut_ptr(), bpp);
+        // The deep formats' wider pixels in a buffer of their own, so that
+        // the other formats' spans (every span of a dithering key) zero
+        // only a quarter of it.
+        let mut deep_color;
+        let scratch_color: &mut [u8] = if bpp > 4 {
+            deep_color = [0u8; SPAN_MAX * MAX_BYTES_PER_PIXEL];
+            &mut deep_color
+        } else {
+            &mut scratch.color
+        };
+        scratch_color[..len * bpp].copy_from_slice(color);
+        call.color = back(scratch_color.as_mut_ptr(), bpp);
         call.depth = match &depth {
             Some(DepthRow::U16(d)) => {
                 scratch.depth16[..len].copy_from_slice(d);
@@ -625,7 +635,7 @@ impl Specialist {
             None => std::ptr::null_mut(),
         };
         self.call(func, &mut call, u);
-        color.copy_from_slice(&scratch.color[..len * bpp]);
+        color.copy_from_slice(&scratch_color[..len * bpp]);
         match depth {
             Some(DepthRow::U16(d)) => d.copy_from_slice(&scratch.depth16[..len]),
             Some(DepthRow::U32(d)) => d.copy_from_slice(&scratch.depth32[..len]),
@@ -704,7 +714,7 @@ const MAX_BYTES_PER_PIXEL: usize = 16;
 
 /// A span's worth of pixels, for spans whose last group crosses the right edge.
 struct Scratch {
-    color: [u8; SPAN_MAX * MAX_BYTES_PER_PIXEL],
+    color: [u8; SPAN_MAX * 4],
     depth16: [u16; SPAN_MAX],
     depth32: [u32; SPAN_MAX],
     stencil: [u8; SPAN_MAX],
@@ -713,7 +723,7 @@ struct Scratch {
 impl Default for Scratch {
     fn default() -> Self {
         Scratch {
-            color: [0; SPAN_MAX * MAX_BYTES_PER_PIXEL],
+            color: [0; SPAN_MAX * 4],
             depth16: [0; SPAN_MAX],
             depth32: [0; SPAN_MAX],
             stencil: [0; SPAN_MAX],

@@ -522,6 +522,9 @@ fn deep_colour_framebuffer_objects_match_mesa() {
         let (max, n) = diff(&soft.u16s(&format!("{f}.us")), &mesa.u16s(&format!("{f}.us")));
         assert!(max <= 1.0 && n <= 16, "{f}.us: max {max} over {n}");
     }
+    // A GL_RGBA16 texture drawn into holds what the renderbuffer does.
+    assert_eq!(soft.file("tex16.us"), soft.file("rgba16.us"));
+    assert_eq!(mesa.file("tex16.us"), mesa.file("rgba16.us"));
     let (max, _) = diff(&soft.f32s("rgba16.f"), &mesa.f32s("rgba16.f"));
     assert!(max <= 1.0 / 65535.0 + 1e-9, "rgba16.f: max {max}");
     let (a, b) = (soft.f32s("rgba32f.f"), mesa.f32s("rgba32f.f"));

@@ -199,6 +199,27 @@ int main(int argc, char **argv) {
     printf("%s error 0x%x\n", formats[i].name, glGetError());
     read_all(formats[i].name);
   }
+  /* A GL_RGBA16 texture drawn into, then read with glGetTexImage (tex16.us). */
+  {
+    GLuint tex, fbo, ds[2];
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16, W, H, 0, GL_RGBA, GL_UNSIGNED_SHORT, NULL);
+    fbo = object(GL_RGBA8, ds);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    printf("tex16 status 0x%x\n", glCheckFramebufferStatus(GL_FRAMEBUFFER));
+    GLint bits = 0;
+    glGetIntegerv(GL_RED_BITS, &bits);
+    printf("tex16 bits %d\n", bits);
+    scene();
+    logic_op();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    memset(us, 0, sizeof us);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_SHORT, us);
+    printf("tex16 error 0x%x\n", glGetError());
+    dump("tex16.us", us, sizeof us);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   GLint red = 0;
   glGetIntegerv(GL_RED_BITS, &red);
