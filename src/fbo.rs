@@ -90,6 +90,13 @@ pub enum RenderbufferFormat {
     Rgba12,
     Rgb16,
     Rgba16,
+    /// `GL_RGBA16F`, `GL_RGB16F` (half floats, as llvmpipe stores them:
+    /// not rendered, `GL_FRAMEBUFFER_UNSUPPORTED`).
+    Rgba16F,
+    Rgb16F,
+    /// `GL_RGBA32F` (rendered as `ColorFormat::Rgba32F`), `GL_RGB32F` (not rendered).
+    Rgba32F,
+    Rgb32F,
     DepthComponent,
     DepthComponent16,
     DepthComponent24,
@@ -124,6 +131,8 @@ impl RenderbufferFormat {
             F::Rgba | F::Rgba8 => K::Color(ColorFormat::Rgba8),
             F::Rgb | F::Rgb8 => K::Color(ColorFormat::Rgb8),
             F::Rgb565 => K::Color(ColorFormat::Rgb565),
+            F::Rgba16 => K::Color(ColorFormat::Rgba16),
+            F::Rgba32F => K::Color(ColorFormat::Rgba32F),
             F::DepthComponent | F::DepthComponent24 => K::Depth(DepthFormat::D24),
             F::DepthComponent16 => K::Depth(DepthFormat::D16),
             F::DepthComponent32 => K::Depth(DepthFormat::D32),
@@ -153,7 +162,10 @@ impl RenderbufferFormat {
             F::Rgb12 => [12, 12, 12, 0, 0, 0],
             F::Rgba12 => [12, 12, 12, 12, 0, 0],
             F::Rgb16 => [16, 16, 16, 0, 0, 0],
-            F::Rgba16 => [16, 16, 16, 16, 0, 0],
+            F::Rgba16 | F::Rgba16F => [16, 16, 16, 16, 0, 0],
+            F::Rgb16F => [16, 16, 16, 0, 0, 0],
+            F::Rgba32F => [32, 32, 32, 32, 0, 0],
+            F::Rgb32F => [32, 32, 32, 0, 0, 0],
             F::DepthComponent | F::DepthComponent24 => [0, 0, 0, 0, 24, 0],
             F::DepthComponent16 => [0, 0, 0, 0, 16, 0],
             F::DepthComponent32 => [0, 0, 0, 0, 32, 0],
@@ -478,6 +490,9 @@ fn texture_kind(img: &TexImage) -> Option<RenderbufferKind> {
         (BaseFormat::Rgba | BaseFormat::Rgb, TexelFormat::Rgba8) if s.bits[..3] == [8, 8, 8] => {
             Some(RenderbufferKind::Color(ColorFormat::Rgba8))
         }
+        // `GL_RGBA16` (and `GL_RGBA12`, stored alike): its texels are
+        // `ColorFormat::Rgba16`'s pixels.
+        (BaseFormat::Rgba, TexelFormat::Rgba16) => Some(RenderbufferKind::Color(ColorFormat::Rgba16)),
         _ => None,
     }
 }
@@ -548,7 +563,11 @@ fn status(fbo: &FboState, textures: &crate::texture::TextureStore, name: u32) ->
     let mixed = images
         .iter()
         .any(|(_, i)| (i.width, i.height) != (images[0].1.width, images[0].1.height));
-    if ds_split || mixed || images.iter().any(|(_, i)| i.kind.is_none()) {
+    // Multisampled deep colour is not rendered (`Framebuffer::new_multisample`).
+    let deep_samples = images
+        .iter()
+        .any(|(_, i)| i.samples > 0 && matches!(i.kind, Some(RenderbufferKind::Color(c)) if c.is_deep()));
+    if ds_split || mixed || deep_samples || images.iter().any(|(_, i)| i.kind.is_none()) {
         return S::Unsupported;
     }
     S::Complete
@@ -1266,7 +1285,7 @@ impl Context {
                 other => other,
             }),
             Attachment::Texture { .. } if write => self.write_texture(c.color, w, h, |img, off| {
-                let len = w as usize * h as usize * 4;
+                let len = w as usize * h as usize * img.texel_format().bytes_per_texel();
                 img.texels_mut()[off..off + len].copy_from_slice(&color[..len]);
             }),
             Attachment::Texture { .. } => {}
@@ -1387,7 +1406,8 @@ impl Context {
         let img = self.textures.object(name)?.image(level as usize, face as usize)?;
         let n = img.width as usize * img.height as usize;
         let off = img.offset(0, 0, layer as usize);
-        Some((img.texels.get(off..off + n * 4)?, n))
+        let bpp = img.texel_format().bytes_per_texel();
+        Some((img.texels.get(off..off + n * bpp)?, n))
     }
 
     fn take_color(&mut self, a: Attachment, s: usize, take: bool) -> GlResult<Vec<u8>> {
@@ -1871,6 +1891,8 @@ fn blit(
     };
     let mut t = to.target();
     let cf = t.color_format();
+    // A deep format on either side: colour goes through f32 (`deep_blit_colour`).
+    let deep = color && (from.color_format().is_deep() || cf.is_deep());
     for y in out.y0..out.y1 {
         let ny = ay.nearest(y);
         for x in out.x0..out.x1 {
@@ -1879,7 +1901,14 @@ fn blit(
                 continue;
             };
             let i = t.index(x, y);
-            if color {
+            if deep {
+                let c = match filter {
+                    BlitFilter::Nearest => source_f32(from, nx, ny),
+                    BlitFilter::Linear => linear_f32(from, [ax.at(x), ay.at(y)]),
+                };
+                let off = t.color_offset(x, y);
+                store_f32(cf, &mut t.color_mut()[off..], c);
+            } else if color {
                 let rgba = match filter {
                     BlitFilter::Nearest => from.pixel(nx, ny).unwrap_or([0; 4]),
                     BlitFilter::Linear => {
@@ -1910,6 +1939,48 @@ fn blit(
                 }
             }
         }
+    }
+}
+
+/// The colour of source pixel `(x, y)` in f32 as llvmpipe's sampler reads
+/// it (`lp_build_unsigned_norm_to_float`: unorm `v · f32(1/max)`; floats as
+/// stored).
+fn source_f32(from: &Framebuffer, x: u32, y: u32) -> [f32; 4] {
+    if from.color_format().is_deep() {
+        from.pixel_f32(x, y).unwrap_or([0.0; 4])
+    } else {
+        from.pixel(x, y).unwrap_or([0; 4]).map(|v| f32::from(v) * (1.0 / 255.0))
+    }
+}
+
+/// The source's colour at normalized `coord`, bilinear with CLAMP_TO_EDGE
+/// in f32 as llvmpipe's SoA sampler filters (`filter::soa`'s axis weights
+/// and lerp order: along x within each row, then y).
+fn linear_f32(from: &Framebuffer, coord: [f32; 2]) -> [f32; 4] {
+    use softgl_jit::texture::arith::lerp;
+    use softgl_jit::texture::filter::soa_linear_axis;
+    use softgl_jit::texture::Wrap;
+    let size = [from.width(), from.height()];
+    let [(x0, x1, wx), (y0, y1, wy)] = std::array::from_fn(|a| {
+        soa_linear_axis(coord[a], size[a] as i32, size[a].is_power_of_two(), Wrap::ClampToEdge)
+    });
+    let at = |x: i32, y: i32| source_f32(from, x.max(0) as u32, y.max(0) as u32);
+    let (a, b, c, d) = (at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1));
+    std::array::from_fn(|k| lerp(wy, lerp(wx, a[k], b[k]), lerp(wx, c[k], d[k])))
+}
+
+/// Stores float colour `c` as a fragment of format `cf` (unorm8 as
+/// `shade::unorm8`, unorm16 as `deep::unorm16`, both clamped; floats
+/// exactly) at the start of `px`.
+fn store_f32(cf: ColorFormat, px: &mut [u8], c: [f32; 4]) {
+    use softgl_jit::deep;
+    if cf.is_deep() {
+        for (k, v) in deep::from_float(cf, c).into_iter().enumerate() {
+            deep::store_channel(cf, px, k, v);
+        }
+    } else {
+        let v = pixel::pack(cf, c.map(softgl_jit::shade::unorm8), None);
+        pixel::store(cf, px, v);
     }
 }
 

@@ -112,8 +112,8 @@
 //! code runs a span only when its groups end inside those columns.
 
 use crate::key::{
-    BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
-    Stage, StencilKey, StencilOp,
+    BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, FragmentKey,
+    LogicOp, Stage, StencilKey, StencilOp,
 };
 use crate::pixel;
 use crate::shade::{Planes, COLOUR_BOUNDED};
@@ -127,6 +127,7 @@ use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use std::mem::{offset_of, size_of};
 
+mod deep;
 mod sample;
 mod shade;
 mod texture;
@@ -220,10 +221,6 @@ pub type SpanFn = unsafe extern "C" fn(call: *mut SpanCall, uniforms: *const Spl
 pub enum CompileError {
     #[error("no Cranelift back end for this CPU: {0}")]
     Isa(String),
-    /// A deep colour format (`ColorFormat::is_deep`): the interpreter runs
-    /// those keys (the slower path; the 8-bit code stays as it is).
-    #[error("no specialist for the deep colour format {0:?}")]
-    DeepFormat(crate::key::ColorFormat),
     #[error("Cranelift rejected the specialist: {0}")]
     Module(#[from] Box<cranelift_module::ModuleError>),
 }
@@ -728,7 +725,8 @@ impl<'a> Gen<'a> {
         let tests = k.alpha_test.is_some()
             || (k.stencil.is_some() && k.stencil_buffer)
             || (k.depth.is_some() && k.depth_format.is_some());
-        !tests && !k.shade.is_some_and(|s| s.textured())
+        // The deep formats' groups take `deep_stages`, which has no such loop.
+        !tests && !k.shade.is_some_and(|s| s.textured()) && !k.color_format.is_deep()
     }
 
     /// [`reads_colour_bound`] of the key.
@@ -1002,6 +1000,9 @@ impl<'a> Gen<'a> {
     }
 
     fn stages(&mut self, mut g: Group, sv: &SpanValues, u: &Uniforms, next: Block) {
+        if self.key.color_format.is_deep() {
+            return self.deep_stages(g, sv, u, next);
+        }
         let stages = self.key.stages();
         let needs_color = stages
             .as_slice()
@@ -1049,92 +1050,9 @@ impl<'a> Gen<'a> {
                     g.live = Some(self.b.ins().band(live, pass));
                     self.skip_if_dead(&g, next);
                 }
-                Stage::StencilTest { stencil, depth_on } => {
-                    if !self.key.stencil_buffer {
-                        continue;
-                    }
-                    let s = self.load_stencil(&mut g);
-                    if stencil.func == CompareFunc::Always {
-                        // Every live lane passes: no compare, no `fail` op,
-                        // no lane dies (the `ops` frame's stencil test).
-                        if !depth_on && stencil.zpass != StencilOp::Keep {
-                            let live = self.live(&mut g);
-                            let s_new = self.stencil_select(stencil.zpass, live, s, u);
-                            g.stencil = Some((s_new, true));
-                            self.store_stencil(&mut g);
-                        }
-                        continue;
-                    }
-                    let masked = self.b.ins().band(s, u.stencil_value_mask);
-                    let pass = self.compare(stencil.func, u.stencil_ref_masked, masked);
-                    let live = self.live(&mut g);
-                    let fail = self.b.ins().band_not(live, pass);
-                    let mut s_new = self.stencil_select(stencil.fail, fail, s, u);
-                    let passed = self.b.ins().band(live, pass);
-                    if !depth_on {
-                        s_new = self.stencil_select(stencil.zpass, passed, s_new, u);
-                    }
-                    let changed = stencil.fail != StencilOp::Keep || (!depth_on && stencil.zpass != StencilOp::Keep);
-                    g.stencil = Some((s_new, changed));
-                    self.store_stencil(&mut g);
-                    g.live = Some(passed);
-                    self.skip_if_dead(&g, next);
-                }
-                Stage::DepthTest { depth, stencil } => {
-                    let Some(format) = self.key.depth_format else { continue };
-                    // Depth from the planes is already at most the format's largest value.
-                    let z = match g.z {
-                        Some(z) => z,
-                        None => {
-                            let zoff = self.scale(g.lane0, 4);
-                            let zp = self.b.ins().iadd(sv.span, zoff);
-                            let z = self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32);
-                            let max = self.splat(i64::from(format.max_value()));
-                            self.b.ins().umin(z, max)
-                        }
-                    };
-                    let stored = self.load_depth(format, g.depth_p);
-                    // 16- and 24-bit values are non-negative as i32, where x86
-                    // compares in one instruction (unsigned takes three).
-                    let signed = format != DepthFormat::D32;
-                    let pass = self.compare_as(depth.func, z, stored, signed);
-                    let live = self.live(&mut g);
-                    let pass = self.b.ins().band(pass, live);
-                    if depth.write {
-                        let out = self.select(pass, z, stored);
-                        self.store_depth(format, g.depth_p, out);
-                    }
-                    if let (Some(StencilKey { zfail, zpass, .. }), true) = (stencil, self.key.stencil_buffer) {
-                        let s = self.load_stencil(&mut g);
-                        let s2 = if zfail == zpass {
-                            // The lanes that fail and those that pass are
-                            // the live ones, apart: one op over all of them.
-                            self.stencil_select(zpass, live, s, u)
-                        } else {
-                            let zfailed = self.b.ins().band_not(live, pass);
-                            let s1 = self.stencil_select(zfail, zfailed, s, u);
-                            self.stencil_select(zpass, pass, s1, u)
-                        };
-                        let changed = zfail != StencilOp::Keep || zpass != StencilOp::Keep;
-                        let was = g.stencil.is_some_and(|(_, c)| c);
-                        g.stencil = Some((s2, changed || was));
-                        self.store_stencil(&mut g);
-                    }
-                    g.live = Some(pass);
-                    self.skip_if_dead(&g, next);
-                }
-                Stage::Count => {
-                    // The live lanes' sign bits as a 4-bit mask, counted
-                    // (movmskps, popcnt) and added to `SpanCall::passed`.
-                    let live = self.live(&mut g);
-                    let bits = self.b.ins().vhigh_bits(types::I32, live);
-                    let n = self.b.ins().popcnt(bits);
-                    let n = self.b.ins().uextend(types::I64, n);
-                    let at = offset_of!(SpanCall, passed) as i32;
-                    let sum = self.b.ins().load(types::I64, mem(), sv.call, at);
-                    let sum = self.b.ins().iadd(sum, n);
-                    self.b.ins().store(mem(), sum, sv.call, at);
-                }
+                Stage::StencilTest { stencil, depth_on } => self.stencil_test(&mut g, (stencil, depth_on), u, next),
+                Stage::DepthTest { depth, stencil } => self.depth_test(&mut g, sv, (depth, stencil), u, next),
+                Stage::Count => self.count(&mut g, sv),
                 Stage::Blend(blend) => {
                     let dst = self.load_dst(&mut g);
                     if blend.eq_rgb == blend.eq_alpha {
@@ -1195,6 +1113,109 @@ impl<'a> Gen<'a> {
             }
         }
         self.b.ins().jump(next, &[]);
+    }
+
+    /// The stencil test stage (`interp::stencil_stage`) of group `g`:
+    /// its `fail` op and, with the depth test off, `zpass`; ends the group
+    /// at `next` when no lane passes.
+    fn stencil_test(&mut self, g: &mut Group, (stencil, depth_on): (StencilKey, bool), u: &Uniforms, next: Block) {
+        if !self.key.stencil_buffer {
+            return;
+        }
+        let s = self.load_stencil(g);
+        if stencil.func == CompareFunc::Always {
+            // Every live lane passes: no compare, no `fail` op,
+            // no lane dies (the `ops` frame's stencil test).
+            if !depth_on && stencil.zpass != StencilOp::Keep {
+                let live = self.live(g);
+                let s_new = self.stencil_select(stencil.zpass, live, s, u);
+                g.stencil = Some((s_new, true));
+                self.store_stencil(g);
+            }
+            return;
+        }
+        let masked = self.b.ins().band(s, u.stencil_value_mask);
+        let pass = self.compare(stencil.func, u.stencil_ref_masked, masked);
+        let live = self.live(g);
+        let fail = self.b.ins().band_not(live, pass);
+        let mut s_new = self.stencil_select(stencil.fail, fail, s, u);
+        let passed = self.b.ins().band(live, pass);
+        if !depth_on {
+            s_new = self.stencil_select(stencil.zpass, passed, s_new, u);
+        }
+        let changed = stencil.fail != StencilOp::Keep || (!depth_on && stencil.zpass != StencilOp::Keep);
+        g.stencil = Some((s_new, changed));
+        self.store_stencil(g);
+        g.live = Some(passed);
+        self.skip_if_dead(g, next);
+    }
+
+    /// The depth test stage (`interp::depth_stage`) of group `g`: the
+    /// test, the depth write and the stencil's `zfail`/`zpass` ops; ends
+    /// the group at `next` when no lane passes.
+    fn depth_test(
+        &mut self,
+        g: &mut Group,
+        sv: &SpanValues,
+        (depth, stencil): (DepthKey, Option<StencilKey>),
+        u: &Uniforms,
+        next: Block,
+    ) {
+        let Some(format) = self.key.depth_format else { return };
+        // Depth from the planes is already at most the format's largest value.
+        let z = match g.z {
+            Some(z) => z,
+            None => {
+                let zoff = self.scale(g.lane0, 4);
+                let zp = self.b.ins().iadd(sv.span, zoff);
+                let z = self.b.ins().load(I32X4, mem(), zp, offset_of!(FragmentSpan, z) as i32);
+                let max = self.splat(i64::from(format.max_value()));
+                self.b.ins().umin(z, max)
+            }
+        };
+        let stored = self.load_depth(format, g.depth_p);
+        // 16- and 24-bit values are non-negative as i32, where x86
+        // compares in one instruction (unsigned takes three).
+        let signed = format != DepthFormat::D32;
+        let pass = self.compare_as(depth.func, z, stored, signed);
+        let live = self.live(g);
+        let pass = self.b.ins().band(pass, live);
+        if depth.write {
+            let out = self.select(pass, z, stored);
+            self.store_depth(format, g.depth_p, out);
+        }
+        if let (Some(StencilKey { zfail, zpass, .. }), true) = (stencil, self.key.stencil_buffer) {
+            let s = self.load_stencil(g);
+            let s2 = if zfail == zpass {
+                // The lanes that fail and those that pass are
+                // the live ones, apart: one op over all of them.
+                self.stencil_select(zpass, live, s, u)
+            } else {
+                let zfailed = self.b.ins().band_not(live, pass);
+                let s1 = self.stencil_select(zfail, zfailed, s, u);
+                self.stencil_select(zpass, pass, s1, u)
+            };
+            let changed = zfail != StencilOp::Keep || zpass != StencilOp::Keep;
+            let was = g.stencil.is_some_and(|(_, c)| c);
+            g.stencil = Some((s2, changed || was));
+            self.store_stencil(g);
+        }
+        g.live = Some(pass);
+        self.skip_if_dead(g, next);
+    }
+
+    /// Counts the group's live lanes into `SpanCall::passed` (the `Count` stage).
+    fn count(&mut self, g: &mut Group, sv: &SpanValues) {
+        // The live lanes' sign bits as a 4-bit mask, counted
+        // (movmskps, popcnt) and added to `SpanCall::passed`.
+        let live = self.live(g);
+        let bits = self.b.ins().vhigh_bits(types::I32, live);
+        let n = self.b.ins().popcnt(bits);
+        let n = self.b.ins().uextend(types::I64, n);
+        let at = offset_of!(SpanCall, passed) as i32;
+        let sum = self.b.ins().load(types::I64, mem(), sv.call, at);
+        let sum = self.b.ins().iadd(sum, n);
+        self.b.ins().store(mem(), sum, sv.call, at);
     }
 
     /// `t` in the lanes of the lane mask `mask` (each lane all ones or all
@@ -1365,7 +1386,7 @@ impl<'a> Gen<'a> {
                 self.b.ins().bitcast(I32X4, le(), spread)
             }
             ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
-                unreachable!("deep formats are refused before any code is built (Specialist::compile_tier)")
+                unreachable!("the deep formats' groups take `deep_stages`")
             }
         };
         g.dst = Some(d);
@@ -1392,7 +1413,7 @@ impl<'a> Gen<'a> {
                 self.b.ins().store(mem(), hi, p, 8);
             }
             ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
-                unreachable!("deep formats are refused before any code is built (Specialist::compile_tier)")
+                unreachable!("the deep formats' groups take `deep_stages`")
             }
         }
     }
@@ -1441,7 +1462,7 @@ impl<'a> Gen<'a> {
                 [r, g, b, self.splat(255)]
             }
             ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
-                unreachable!("deep formats are refused before any code is built (Specialist::compile_tier)")
+                unreachable!("the deep formats' groups take `deep_stages`")
             }
         }
     }
@@ -1495,7 +1516,7 @@ impl<'a> Gen<'a> {
                 self.b.ins().bor(v, b)
             }
             ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
-                unreachable!("deep formats are refused before any code is built (Specialist::compile_tier)")
+                unreachable!("the deep formats' groups take `deep_stages`")
             }
         }
     }
@@ -1804,7 +1825,9 @@ impl Uniforms {
         // Each one aligned vector load of its four lanes, made once a batch
         // by `SplatUniforms::new`.
         let load = |g: &mut Gen<'_>, off: usize| g.b.ins().load(I32X4, mem().with_aligned(), u, off as i32);
-        if key.alpha_test.is_some() {
+        // The deep formats' stages read their own (`DeepUniforms`).
+        let deep = key.color_format.is_deep();
+        if key.alpha_test.is_some() && !deep {
             out.alpha_ref = load(g, offset_of!(SplatUniforms, alpha_ref));
         }
         if let (Some(st), true) = (key.stencil, key.stencil_buffer) {
@@ -1832,11 +1855,13 @@ impl Uniforms {
         };
         // Only blends that read the constant colour load it (the loads are
         // not removed when unused).
-        if key.blend.is_some_and(|b| {
-            [b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha]
-                .into_iter()
-                .any(constant)
-        }) {
+        if !deep
+            && key.blend.is_some_and(|b| {
+                [b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha]
+                    .into_iter()
+                    .any(constant)
+            })
+        {
             for c in 0..4 {
                 out.blend_color[c] = load(g, offset_of!(SplatUniforms, blend_color) + 16 * c);
             }

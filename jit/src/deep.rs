@@ -8,10 +8,10 @@
 //! say to clamp) and blends in f32. Logic op works on RGBA16's 16-bit
 //! channels and does nothing on floats, as GL says.
 //!
-//! Only the interpreter runs these formats (the JIT refuses them:
-//! `CompileError::DeepFormat`): the slower path, leaving the 8-bit code as it is.
+//! The JIT runs the same operations (`compile/deep.rs`), bit for bit
+//! (`jit/tests/contract.rs`).
 
-use crate::interp::{depth_stage, lanes, row_of, stencil_stage};
+use crate::interp::{self, depth_stage, lanes, row_of, stencil_stage, BlendChannel};
 use crate::key::{BlendEquation, BlendFactor, BlendKey, ColorFormat, FragmentKey, Stage};
 use crate::shade::{self, saturate, Planes};
 use crate::span::{FragmentSpan, SPAN_MAX};
@@ -27,6 +27,19 @@ use crate::uniforms::FragmentUniforms;
 pub fn unorm16(c: f32) -> u16 {
     const SCALE: f32 = (65535.0f64 / 65536.0) as f32;
     (saturate(c) * SCALE + 128.0).to_bits() as u16
+}
+
+/// A fragment colour channel clamped to `[0, 1]` as llvmpipe clamps it
+/// (`lp_build_clamp_zero_one_nanzero`, `lp_bld_arit.c`): x86's `maxps(v, 0)`
+/// then `minps(v, 1)`, so NaN and -0 become +0.
+#[inline]
+pub fn clamp_colour(v: f32) -> f32 {
+    let v = if v > 0.0 { v } else { 0.0 };
+    if v < 1.0 {
+        v
+    } else {
+        1.0
+    }
 }
 
 /// A 16-bit unorm channel as a float (`v * (1 / 65535)`, `util_format`'s unpack).
@@ -85,42 +98,13 @@ pub fn from_float(format: ColorFormat, c: [f32; 4]) -> [u32; 4] {
 }
 
 /// GL's blend in 16-bit unorm integers, llvmpipe's way for RGBA16: factors
-/// in unorm16, products by [`mul_unorm16`], sums and differences saturated.
+/// in unorm16 ([`interp::factor`]), products by [`mul_unorm16`], sums and
+/// differences saturated.
 pub fn blend16(key: &BlendKey, src: [u16; 4], dst: [u16; 4], k: [u16; 4]) -> [u16; 4] {
-    const ONE: u16 = u16::MAX;
-    let factor = |f: BlendFactor, c: usize| -> u16 {
-        match f {
-            BlendFactor::Zero => 0,
-            BlendFactor::One => ONE,
-            BlendFactor::SrcColor => src[c],
-            BlendFactor::OneMinusSrcColor => ONE - src[c],
-            BlendFactor::DstColor => dst[c],
-            BlendFactor::OneMinusDstColor => ONE - dst[c],
-            BlendFactor::SrcAlpha => src[3],
-            BlendFactor::OneMinusSrcAlpha => ONE - src[3],
-            BlendFactor::DstAlpha => dst[3],
-            BlendFactor::OneMinusDstAlpha => ONE - dst[3],
-            BlendFactor::ConstantColor => k[c],
-            BlendFactor::OneMinusConstantColor => ONE - k[c],
-            BlendFactor::ConstantAlpha => k[3],
-            BlendFactor::OneMinusConstantAlpha => ONE - k[3],
-            BlendFactor::SrcAlphaSaturate => {
-                if c == 3 {
-                    ONE
-                } else {
-                    src[3].min(ONE - dst[3])
-                }
-            }
-        }
-    };
     std::array::from_fn(|c| {
-        let (sf, df, eq) = if c < 3 {
-            (key.src_rgb, key.dst_rgb, key.eq_rgb)
-        } else {
-            (key.src_alpha, key.dst_alpha, key.eq_alpha)
-        };
-        let s = mul_unorm16(src[c], factor(sf, c));
-        let d = mul_unorm16(dst[c], factor(df, c));
+        let (sf, df, eq) = channel_blend(key, c);
+        let s = mul_unorm16(src[c], interp::factor(sf, c, src, dst, k));
+        let d = mul_unorm16(dst[c], interp::factor(df, c, src, dst, k));
         match eq {
             BlendEquation::Add => s.saturating_add(d),
             BlendEquation::Subtract => s.saturating_sub(d),
@@ -132,49 +116,40 @@ pub fn blend16(key: &BlendKey, src: [u16; 4], dst: [u16; 4], k: [u16; 4]) -> [u1
 }
 
 /// GL's blend in f32, unclamped, llvmpipe's way for RGBA32F: `src · sf`
-/// and `dst · df` rounded, then summed.
+/// and `dst · df` rounded, then summed (`GL_ONE` multiplies by nothing:
+/// `x · 1` is `x`); MIN and MAX as x86's `minps`/`maxps` of source and
+/// destination (`lp_build_min`/`lp_build_max`, `lp_bld_blend.c`).
 pub fn blend_f32(key: &BlendKey, src: [f32; 4], dst: [f32; 4], k: [f32; 4]) -> [f32; 4] {
-    let factor = |f: BlendFactor, c: usize| -> f32 {
-        match f {
-            BlendFactor::Zero => 0.0,
-            BlendFactor::One => 1.0,
-            BlendFactor::SrcColor => src[c],
-            BlendFactor::OneMinusSrcColor => 1.0 - src[c],
-            BlendFactor::DstColor => dst[c],
-            BlendFactor::OneMinusDstColor => 1.0 - dst[c],
-            BlendFactor::SrcAlpha => src[3],
-            BlendFactor::OneMinusSrcAlpha => 1.0 - src[3],
-            BlendFactor::DstAlpha => dst[3],
-            BlendFactor::OneMinusDstAlpha => 1.0 - dst[3],
-            BlendFactor::ConstantColor => k[c],
-            BlendFactor::OneMinusConstantColor => 1.0 - k[c],
-            BlendFactor::ConstantAlpha => k[3],
-            BlendFactor::OneMinusConstantAlpha => 1.0 - k[3],
-            BlendFactor::SrcAlphaSaturate => {
-                if c == 3 {
-                    1.0
-                } else {
-                    src[3].min(1.0 - dst[3])
-                }
-            }
-        }
+    let term = |v: f32, f: BlendFactor, c: usize| match f {
+        BlendFactor::One => v,
+        _ => v * interp::factor(f, c, src, dst, k),
     };
     std::array::from_fn(|c| {
-        let (sf, df, eq) = if c < 3 {
-            (key.src_rgb, key.dst_rgb, key.eq_rgb)
-        } else {
-            (key.src_alpha, key.dst_alpha, key.eq_alpha)
-        };
-        let s = src[c] * factor(sf, c);
-        let d = dst[c] * factor(df, c);
+        let (sf, df, eq) = channel_blend(key, c);
+        let (s, d) = (term(src[c], sf, c), term(dst[c], df, c));
         match eq {
             BlendEquation::Add => s + d,
             BlendEquation::Subtract => s - d,
             BlendEquation::ReverseSubtract => d - s,
-            BlendEquation::Min => src[c].min(dst[c]),
-            BlendEquation::Max => src[c].max(dst[c]),
+            BlendEquation::Min => src[c].min_of(dst[c]),
+            BlendEquation::Max => {
+                if src[c] > dst[c] {
+                    src[c]
+                } else {
+                    dst[c]
+                }
+            }
         }
     })
+}
+
+/// Channel `c`'s source and destination factors and equation (3 is alpha).
+pub fn channel_blend(key: &BlendKey, c: usize) -> (BlendFactor, BlendFactor, BlendEquation) {
+    if c < 3 {
+        (key.src_rgb, key.dst_rgb, key.eq_rgb)
+    } else {
+        (key.src_alpha, key.dst_alpha, key.eq_alpha)
+    }
 }
 
 /// The interpreter's run of `key`'s stages over one span into a deep-format
@@ -195,7 +170,7 @@ pub(crate) fn run_span(
     let (y, x0) = (span.y, span.x);
     // Unorm formats clamp fragment colours; floats only when asked (GL_FIXED_ONLY).
     let clamp = format == ColorFormat::Rgba16 || u.deep.clamp != 0;
-    let clamped = |c: [f32; 4]| if clamp { c.map(saturate) } else { c };
+    let clamped = |c: [f32; 4]| if clamp { c.map(clamp_colour) } else { c };
     let mut rgba = [[0f32; 4]; SPAN_MAX];
     for (i, c) in rgba.iter_mut().enumerate() {
         *c = [span.r[i], span.g[i], span.b[i], span.a[i]].map(|v| f32::from(v) * (1.0 / 255.0));

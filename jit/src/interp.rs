@@ -277,28 +277,81 @@ pub fn blend_rgba(key: &BlendKey, src: [u8; 4], dst: [u8; 4], k: [u8; 4]) -> [u8
     out
 }
 
-/// The value of factor `f` for channel `c` (3 is alpha).
-pub fn factor(f: BlendFactor, c: usize, src: [u8; 4], dst: [u8; 4], k: [u8; 4]) -> u8 {
+/// A channel type GL blends in: unorm bytes (the 8-bit formats), 16-bit
+/// unorm (`ColorFormat::Rgba16`) and f32 (`ColorFormat::Rgba32F`). Each
+/// back end's factors are [`factor`] over one of these.
+pub trait BlendChannel: Copy {
+    /// The factor `GL_ONE`: 255, 65535 or 1.0.
+    const ONE: Self;
+    /// The factor `GL_ZERO`.
+    const ZERO: Self;
+    /// `ONE - self` (exact for the integer types, one f32 subtraction).
+    fn one_minus(self) -> Self;
+    /// `self < other ? self : other`: integer `min`, and for f32 the x86
+    /// `minps(self, other)` llvmpipe's `lp_build_min` is (the second operand
+    /// where either is NaN; docs/llvmpipe-facts.md §38).
+    fn min_of(self, other: Self) -> Self;
+}
+
+impl BlendChannel for u8 {
+    const ONE: u8 = u8::MAX;
+    const ZERO: u8 = 0;
+    fn one_minus(self) -> u8 {
+        u8::MAX - self
+    }
+    fn min_of(self, other: u8) -> u8 {
+        self.min(other)
+    }
+}
+
+impl BlendChannel for u16 {
+    const ONE: u16 = u16::MAX;
+    const ZERO: u16 = 0;
+    fn one_minus(self) -> u16 {
+        u16::MAX - self
+    }
+    fn min_of(self, other: u16) -> u16 {
+        self.min(other)
+    }
+}
+
+impl BlendChannel for f32 {
+    const ONE: f32 = 1.0;
+    const ZERO: f32 = 0.0;
+    fn one_minus(self) -> f32 {
+        1.0 - self
+    }
+    fn min_of(self, other: f32) -> f32 {
+        if self < other {
+            self
+        } else {
+            other
+        }
+    }
+}
+
+/// The value of factor `f` for channel `c` (3 is alpha), in any channel type.
+pub fn factor<T: BlendChannel>(f: BlendFactor, c: usize, src: [T; 4], dst: [T; 4], k: [T; 4]) -> T {
     match f {
-        BlendFactor::Zero => 0,
-        BlendFactor::One => 255,
+        BlendFactor::Zero => T::ZERO,
+        BlendFactor::One => T::ONE,
         BlendFactor::SrcColor => src[c],
-        BlendFactor::OneMinusSrcColor => 255 - src[c],
+        BlendFactor::OneMinusSrcColor => src[c].one_minus(),
         BlendFactor::DstColor => dst[c],
-        BlendFactor::OneMinusDstColor => 255 - dst[c],
+        BlendFactor::OneMinusDstColor => dst[c].one_minus(),
         BlendFactor::SrcAlpha => src[3],
-        BlendFactor::OneMinusSrcAlpha => 255 - src[3],
+        BlendFactor::OneMinusSrcAlpha => src[3].one_minus(),
         BlendFactor::DstAlpha => dst[3],
-        BlendFactor::OneMinusDstAlpha => 255 - dst[3],
+        BlendFactor::OneMinusDstAlpha => dst[3].one_minus(),
         BlendFactor::ConstantColor => k[c],
-        BlendFactor::OneMinusConstantColor => 255 - k[c],
+        BlendFactor::OneMinusConstantColor => k[c].one_minus(),
         BlendFactor::ConstantAlpha => k[3],
-        BlendFactor::OneMinusConstantAlpha => 255 - k[3],
+        BlendFactor::OneMinusConstantAlpha => k[3].one_minus(),
         BlendFactor::SrcAlphaSaturate => {
             if c == 3 {
-                255
+                T::ONE
             } else {
-                src[3].min(255 - dst[3])
+                src[3].min_of(dst[3].one_minus())
             }
         }
     }

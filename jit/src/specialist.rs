@@ -225,9 +225,6 @@ impl Specialist {
     /// thread (if that thread cannot run, the specialist keeps its quick code).
     pub fn compile_tier(key: &FragmentKey, tier: Tier) -> Result<Specialist, SpecialistError> {
         key.validate()?;
-        if key.color_format.is_deep() {
-            return Err(CompileError::DeepFormat(key.color_format).into());
-        }
         let first = Self::compile_code(key, tier.first())?;
         let upgrade = (tier == Tier::Tiered).then(|| {
             let upgrade = Upgrade {
@@ -607,8 +604,18 @@ impl Specialist {
             return call.passed;
         }
         let mut scratch = Scratch::default();
-        scratch.color[..len * bpp].copy_from_slice(color);
-        call.color = back(scratch.color.as_mut_ptr(), bpp);
+        // The deep formats' wider pixels in a buffer of their own, so that
+        // the other formats' spans (every span of a dithering key) zero
+        // only a quarter of it.
+        let mut deep_color;
+        let scratch_color: &mut [u8] = if bpp > 4 {
+            deep_color = [0u8; SPAN_MAX * MAX_BYTES_PER_PIXEL];
+            &mut deep_color
+        } else {
+            &mut scratch.color
+        };
+        scratch_color[..len * bpp].copy_from_slice(color);
+        call.color = back(scratch_color.as_mut_ptr(), bpp);
         call.depth = match &depth {
             Some(DepthRow::U16(d)) => {
                 scratch.depth16[..len].copy_from_slice(d);
@@ -628,7 +635,7 @@ impl Specialist {
             None => std::ptr::null_mut(),
         };
         self.call(func, &mut call, u);
-        color.copy_from_slice(&scratch.color[..len * bpp]);
+        color.copy_from_slice(&scratch_color[..len * bpp]);
         match depth {
             Some(DepthRow::U16(d)) => d.copy_from_slice(&scratch.depth16[..len]),
             Some(DepthRow::U32(d)) => d.copy_from_slice(&scratch.depth32[..len]),
@@ -701,6 +708,9 @@ fn depth_row<'a>(d: &'a mut DepthTarget<'_>, index: usize, n: usize) -> Option<D
         DepthTarget::D24(d) | DepthTarget::D32(d) | DepthTarget::D32F(d) => DepthRow::U32(d.get_mut(index..index + n)?),
     })
 }
+
+/// The widest pixel: `ColorFormat::Rgba32F`'s.
+const MAX_BYTES_PER_PIXEL: usize = 16;
 
 /// A span's worth of pixels, for spans whose last group crosses the right edge.
 struct Scratch {

@@ -23,13 +23,17 @@ use softgl_jit::{
     DrawTextures, FragmentKey, FragmentSpan, FragmentUniforms, LogicOp, Specialist, StencilKey, StencilOp, Target,
     Tier, SPAN_MAX,
 };
-use softgl_jit::{FogMode, FogUniforms, Planes, ShadeKey, TextureSet};
+use softgl_jit::{DeepUniforms, FogMode, FogUniforms, Planes, ShadeKey, TextureSet};
 
-const COLOR_FORMATS: [ColorFormat; 4] = [
+/// Every colour format, the deep ones too (whose specialists run
+/// `compile/deep.rs`).
+const COLOR_FORMATS: [ColorFormat; 6] = [
     ColorFormat::Rgba8,
     ColorFormat::Bgra8,
     ColorFormat::Rgb8,
     ColorFormat::Rgb565,
+    ColorFormat::Rgba16,
+    ColorFormat::Rgba32F,
 ];
 
 fn compare() -> impl Strategy<Value = CompareFunc> {
@@ -105,6 +109,34 @@ fn key() -> impl Strategy<Value = FragmentKey> {
         )
 }
 
+/// Floats where the deep formats' stages have edges: 0 and 1, the span's
+/// byte values over 255, values past [0, 1] and infinities.
+const DEEP_FLOATS: [f32; 12] = [
+    0.0,
+    -0.0,
+    1.0,
+    0.5,
+    128.0 / 255.0,
+    1.0 / 255.0,
+    254.0 / 255.0,
+    1.5,
+    -0.25,
+    1e30,
+    f32::INFINITY,
+    f32::NEG_INFINITY,
+];
+
+/// The deep formats' uniforms: alpha reference and constant colour from
+/// [`DEEP_FLOATS`] or any in [-0.5, 1.5], clamping on or off.
+fn deep_uniforms() -> impl Strategy<Value = DeepUniforms> {
+    let float = || prop_oneof![select(&DEEP_FLOATS[..]), -0.5f32..1.5];
+    (float(), [float(), float(), float(), float()], any::<bool>()).prop_map(|(alpha_ref, k, clamp)| DeepUniforms {
+        alpha_ref: alpha_ref.to_bits(),
+        blend_color: k.map(f32::to_bits),
+        clamp: u32::from(clamp),
+    })
+}
+
 fn uniforms() -> impl Strategy<Value = FragmentUniforms> {
     (
         (-4i32..40, -4i32..8, -4i32..90, -4i32..8),
@@ -113,9 +145,10 @@ fn uniforms() -> impl Strategy<Value = FragmentUniforms> {
         select(&[0u8, 1, 2, 127, 254, 255][..]),
         select(&[0xffu8, 0x0f, 0xf0, 0x01, 0x00, 0xa5][..]),
         select(&[0xffu8, 0x0f, 0xf0, 0x01, 0x00, 0x5a][..]),
+        deep_uniforms(),
     )
         .prop_map(
-            |((x0, y0, x1, y1), blend_color, alpha_ref, stencil_ref, vm, wm)| FragmentUniforms {
+            |((x0, y0, x1, y1), blend_color, alpha_ref, stencil_ref, vm, wm, deep)| FragmentUniforms {
                 scissor: [x0, y0, x1, y1],
                 blend_color,
                 alpha_ref,
@@ -123,7 +156,7 @@ fn uniforms() -> impl Strategy<Value = FragmentUniforms> {
                 stencil_value_mask: vm,
                 stencil_write_mask: wm,
                 fog: FogUniforms::default(),
-                deep: Default::default(),
+                deep,
             },
         )
 }
@@ -147,6 +180,16 @@ impl Rng {
             POOL[self.below(8) as usize]
         } else {
             self.next() as u8
+        }
+    }
+
+    /// A stored float channel: from [`DEEP_FLOATS`] (or x86's default NaN)
+    /// half the time, else in [-0.5, 1.5].
+    fn deep_float(&mut self) -> f32 {
+        match self.below(4) {
+            0 | 1 => self.below(3001) as f32 / 2000.0 - 0.5,
+            2 if self.below(8) == 0 => f32::from_bits(0xffc0_0000),
+            _ => DEEP_FLOATS[self.below(DEEP_FLOATS.len() as u64) as usize],
         }
     }
 
@@ -190,10 +233,24 @@ impl Buffers {
         let width = 1 + rng.below(90) as u32;
         let height = 1 + rng.below(5) as u32;
         let bpp = key.color_format.bytes_per_pixel();
-        let stride = width as usize * bpp + rng.below(8) as usize;
+        // Rows of floats start at a float (a row's padding is whole floats).
+        let pad = match key.color_format {
+            ColorFormat::Rgba32F => 4 * rng.below(2) as usize,
+            _ => rng.below(8) as usize,
+        };
+        let stride = width as usize * bpp + pad;
         let n = (width * height) as usize;
         let color_len = stride * (height as usize - 1) + width as usize * bpp;
-        let color = (0..color_len).map(|_| rng.byte()).collect();
+        let color = match key.color_format {
+            // Floats: NaN only x86's default one, the one arithmetic makes
+            // (which NaN two NaN operands give is the CPU's choice of
+            // operand order, and the interpreter's compiler may swap them).
+            ColorFormat::Rgba32F => (0..color_len / 4)
+                .flat_map(|_| rng.deep_float().to_ne_bytes())
+                .chain((0..color_len % 4).map(|_| 0))
+                .collect(),
+            _ => (0..color_len).map(|_| rng.byte()).collect(),
+        };
         let (mut depth16, mut depth32) = (None, None);
         match key.depth_format {
             Some(DepthFormat::D16) => depth16 = Some((0..n).map(|_| rng.depth(0xffff) as u16).collect()),
@@ -1244,23 +1301,25 @@ fn a_view_made_for_another_key_is_not_read() {
     }
 }
 
-/// The deep colour formats run on the interpreter only: the JIT refuses
-/// them (`CompileError::DeepFormat`), so a draw in them falls back to the
-/// interpreter and no specialist can disagree with it.
-#[test]
-fn the_jit_refuses_the_deep_formats() {
-    for format in [ColorFormat::Rgba16, ColorFormat::Rgba32F] {
-        let key = FragmentKey::new(format, Some(DepthFormat::D24), true);
-        let Err(err) = Specialist::compile(&key) else {
-            panic!("no specialist for a deep format")
-        };
-        assert!(
-            matches!(
-                err,
-                softgl_jit::SpecialistError::Compile(softgl_jit::compile::CompileError::DeepFormat(f)) if f == format
-            ),
-            "{err}"
-        );
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    /// The deep formats alone (the other proptests draw them a third of the
+    /// time): any key in RGBA16 or RGBA32F, shaded from random planes half
+    /// the time, with random deep uniforms (clamping on and off).
+    #[test]
+    fn deep_jit_equals_interpreter(
+        key in key(),
+        float in any::<bool>(),
+        shade in prop::option::of(shade_key()),
+        u in uniforms(),
+        seed in any::<u64>(),
+    ) {
+        let format = if float { ColorFormat::Rgba32F } else { ColorFormat::Rgba16 };
+        let key = FragmentKey { color_format: format, shade, ..key }.normalized();
+        let mut rng = Rng(softgl_jit::rng::Rng::new((seed ^ (seed >> 32)) as u32));
+        let (jit_buf, interp_buf) = run_both(&key, Tier::Optimized, &u, &TextureSet::default(), &mut rng, planes);
+        prop_assert_eq!(&jit_buf, &interp_buf, "buffers differ");
     }
 }
 

@@ -193,9 +193,14 @@ int main(int argc,char**argv){
   }
   if(frames<1) frames=1;
   if(frames>64) frames=64;
-  unsigned char*buf=calloc((size_t)W*H,4), *buf2=calloc((size_t)W*H,4);
+  /* FILL_TYPE=ushort or float: the window buffer is GL_UNSIGNED_SHORT or
+   * GL_FLOAT (the deep colour formats; -o is then not written). */
+  const char*ft=getenv("FILL_TYPE");
+  GLenum type=ft&&!strcmp(ft,"float")?GL_FLOAT:ft&&!strcmp(ft,"ushort")?GL_UNSIGNED_SHORT:GL_UNSIGNED_BYTE;
+  size_t bpp=type==GL_FLOAT?16:type==GL_UNSIGNED_SHORT?8:4;
+  unsigned char*buf=calloc((size_t)W*H,bpp), *buf2=calloc((size_t)W*H,4);
   OSMesaContext ctx=OSMesaCreateContextExt(OSMESA_RGBA,24,8,0,NULL);
-  if(!ctx||!OSMesaMakeCurrent(ctx,buf,GL_UNSIGNED_BYTE,W,H)){fprintf(stderr,"no context\n");return 1;}
+  if(!ctx||!OSMesaMakeCurrent(ctx,buf,type,W,H)){fprintf(stderr,"no context\n");return 1;}
   GLUquadric*q=gluNewQuadric();
   srand(1);
   for(int t=0;t<20000;t++){float cx=rnd()*1.8f-0.9f, cy=rnd()*1.8f-0.9f; for(int v=0;v<3;v++){tri[t*9+v*3]=cx+rnd()*0.2f-0.1f; tri[t*9+v*3+1]=cy+rnd()*0.2f-0.1f; tri[t*9+v*3+2]=rnd()*2-1;}}
@@ -261,13 +266,13 @@ int main(int argc,char**argv){
     double t=(now()-t0)*1000;
     if(!strcmp(c,"clear")||!strcmp(c,"clearall")) t/=20;
     if(f>=0) ms[f]=t; else first=t;
-    if(!strcmp(c,"create")&&!OSMesaMakeCurrent(ctx,buf,GL_UNSIGNED_BYTE,W,H)){fprintf(stderr,"no context\n");return 1;}
+    if(!strcmp(c,"create")&&!OSMesaMakeCurrent(ctx,buf,type,W,H)){fprintf(stderr,"no context\n");return 1;}
   }
   double med=median(ms,frames);
   if(!strcmp(c,"thrash")) printf("thrash-first %.2f ms\n",first);
   if(work>0) printf("%s %.2f ms %.1f %s\n",c,med,work/(med*1e-3)/1e6,unit);
   else printf("%s %.2f ms\n",c,med);
-  if(out&&dump(out,buf)) return 1;
+  if(out&&type==GL_UNSIGNED_BYTE&&dump(out,buf)) return 1;
   GLenum e=glGetError();
   if(e!=GL_NO_ERROR){ fprintf(stderr,"%s: GL error 0x%x\n",c,e); return 1; }
   return 0;

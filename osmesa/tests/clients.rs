@@ -492,6 +492,70 @@ fn deep_colour_buffers_match_mesa() {
 }
 
 #[test]
+fn deep_colour_framebuffer_objects_match_mesa() {
+    let Some(exe) = build("deep_fbo") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // RGBA16 and RGBA32F renderbuffers: sizes, completeness, GL_*_BITS while
+    // bound (16, 32), no error; the window's 8 after. RGBA16F, RGB16,
+    // RGB16F and RGB32F: the same sizes, but GL_FRAMEBUFFER_UNSUPPORTED on
+    // softgl (llvmpipe renders them: half floats, RGBX), so their other lines
+    // are Mesa's only.
+    let unsupported = ["rgba16f", "rgb16", "rgb16f", "rgb32f"];
+    let ours = |l: &&String| {
+        !unsupported
+            .iter()
+            .any(|f| l.starts_with(&format!("{f} ")) && !l.contains(" sizes "))
+    };
+    let m: Vec<&String> = mesa.lines[1..].iter().filter(ours).collect();
+    let s: Vec<&String> = soft.lines[1..].iter().filter(ours).collect();
+    assert_eq!(s, m);
+    for f in unsupported {
+        assert!(soft.lines.contains(&format!("{f} status 0x8cdd")), "{f}");
+    }
+    assert!(soft.lines.contains(&"rgba32f bits 32 32 32 32".to_owned()));
+    // The scene in each: read as bytes, identical; as shorts within 1 on at
+    // most 16 channels and as floats within 2.4e-7 (1–2 ulp): the f32
+    // shading's last bits (the JIT equals the interpreter here; the RGBA8
+    // object's bytes are identical to llvmpipe's).
+    for f in ["rgba16", "rgba32f"] {
+        assert_eq!(soft.file(&format!("{f}.ub")), mesa.file(&format!("{f}.ub")), "{f}.ub");
+        let (max, n) = diff(&soft.u16s(&format!("{f}.us")), &mesa.u16s(&format!("{f}.us")));
+        assert!(max <= 1.0 && n <= 16, "{f}.us: max {max} over {n}");
+    }
+    // A GL_RGBA16 texture drawn into holds what the renderbuffer does.
+    assert_eq!(soft.file("tex16.us"), soft.file("rgba16.us"));
+    assert_eq!(mesa.file("tex16.us"), mesa.file("rgba16.us"));
+    let (max, _) = diff(&soft.f32s("rgba16.f"), &mesa.f32s("rgba16.f"));
+    assert!(max <= 1.0 / 65535.0 + 1e-9, "rgba16.f: max {max}");
+    let (a, b) = (soft.f32s("rgba32f.f"), mesa.f32s("rgba32f.f"));
+    let (max, _) = diff(&a, &b);
+    assert!(max <= 2.4e-7, "rgba32f.f: max {max}");
+    // A float object is read unclamped (additive blending to 1.4 and more).
+    assert!(a.iter().any(|&v| v > 1.3) && b.iter().any(|&v| v > 1.3));
+    // Blits: float, shorts and bytes into one another, NEAREST 1:1 exact
+    // (0–3), scaled and flipped float to shorts (4) and shorts to float (5)
+    // carry the sources' differences above, LINEAR shorts to bytes (7)
+    // exact; LINEAR float to float (6) within 4.1e-6 (llvmpipe's weights'
+    // last bits; one byte and 24 shorts 1 off).
+    for i in [0, 1, 2, 3, 7] {
+        for t in ["ub", "us", "f"] {
+            let file = format!("blit.{i}.{t}");
+            assert_eq!(soft.file(&file), mesa.file(&file), "{file}");
+        }
+    }
+    for i in [4, 5, 6] {
+        let (max, n) = diff(&soft.u16s(&format!("blit.{i}.us")), &mesa.u16s(&format!("blit.{i}.us")));
+        assert!(max <= 1.0 && n <= 32, "blit.{i}.us: max {max} over {n}");
+        let (max, n) = diff(&soft.file(&format!("blit.{i}.ub")), &mesa.file(&format!("blit.{i}.ub")));
+        assert!(max <= 1.0 && n <= 2, "blit.{i}.ub: max {max} over {n}");
+        // 4 and 5 land in or come from shorts: one unit, 1/65535.
+        let tolerance = if i == 6 { 4.1e-6 } else { 1.0 / 65535.0 + 1e-9 };
+        let (max, _) = diff(&soft.f32s(&format!("blit.{i}.f")), &mesa.f32s(&format!("blit.{i}.f")));
+        assert!(max <= tolerance, "blit.{i}.f: max {max}");
+    }
+}
+
+#[test]
 fn display_lists_match_mesa() {
     let Some(exe) = build("lists") else { return };
     let (mesa, soft) = (run(&exe, false), run(&exe, true));

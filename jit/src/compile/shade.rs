@@ -211,6 +211,25 @@ impl Gen<'_> {
     /// reads the channels) from its primitive's planes.
     pub(super) fn shade_color(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
         let alpha_shaded = g.alpha_shaded;
+        let c = self.shaded_f32(g, sv, key);
+        if self.packs_from_shade() {
+            // Straight to the packed pixels: no later stage reads the channels.
+            g.packed = Some(self.unorm8_packed(c, sv.colour_bounded));
+        } else if alpha_shaded {
+            for (k, ck) in c.iter().take(3).enumerate() {
+                g.rgba[k] = self.unorm_lanes_small(*ck, 255);
+            }
+        } else {
+            g.rgba = c.map(|v| self.unorm_lanes_small(v, 255));
+        }
+    }
+
+    /// The group's colour from its primitive's planes, in f32 (as
+    /// `crate::shade::fragment_f32`): the primary colour, texturing,
+    /// colour sum and fog. With alpha already shaded (`g.alpha_shaded`)
+    /// the fourth value is not alpha.
+    pub(super) fn shaded_f32(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) -> [Value; 4] {
+        let alpha_shaded = g.alpha_shaded;
         // The primary colour (without an alpha already shaded), the
         // secondary colour and the fog coordinate, in that order.
         let mut ks: Vec<usize> = (0..4)
@@ -249,16 +268,7 @@ impl Gen<'_> {
                 *ck = self.b.ins().fadd(a, b);
             }
         }
-        if self.packs_from_shade() {
-            // Straight to the packed pixels: no later stage reads the channels.
-            g.packed = Some(self.unorm8_packed(c, sv.colour_bounded));
-        } else if alpha_shaded {
-            for (k, ck) in c.iter().take(3).enumerate() {
-                g.rgba[k] = self.unorm_lanes_small(*ck, 255);
-            }
-        } else {
-            g.rgba = c.map(|v| self.unorm_lanes_small(v, 255));
-        }
+        c
     }
 
     /// Whether the shading stage may hand over the packed colour instead of

@@ -219,7 +219,7 @@ fn soa_nearest_axis(s: f32, len: i32, pot: bool, wrap: Wrap) -> i32 {
 
 /// The two texels and the weight of the second along one axis
 /// (`lp_build_sample_wrap_linear`).
-fn soa_linear_axis(s: f32, len: i32, pot: bool, wrap: Wrap) -> (i32, i32, f32) {
+pub fn soa_linear_axis(s: f32, len: i32, pot: bool, wrap: Wrap) -> (i32, i32, f32) {
     let lf = len as f32;
     match wrap {
         Wrap::Repeat if pot => {

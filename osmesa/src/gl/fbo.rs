@@ -70,8 +70,10 @@ fn point(a: GLenum) -> GlResult<AttachmentPoint> {
 }
 
 /// A renderbuffer internal format (GL 3.0 table 3.16's colour formats GL
-/// 1.5 has, RGB565, depth and stencil formats). Float depth
-/// (ARB_depth_buffer_float) and float or integer colour are not here yet.
+/// 1.5 has, RGB565, depth and stencil formats, and the float colour
+/// formats GL 3.0 lists as colour-renderable, RGBA16F/RGB16F/RGB32F not
+/// rendered: `src/fbo.rs`). Float depth (ARB_depth_buffer_float) and
+/// integer colour are not here yet.
 fn rb_format(f: GLenum) -> GlResult<RenderbufferFormat> {
     use RenderbufferFormat as F;
     Ok(match f {
@@ -92,6 +94,10 @@ fn rb_format(f: GLenum) -> GlResult<RenderbufferFormat> {
         0x805A => F::Rgba12,
         0x8054 => F::Rgb16,
         0x805B => F::Rgba16,
+        0x881A => F::Rgba16F,
+        0x881B => F::Rgb16F,
+        0x8814 => F::Rgba32F,
+        0x8815 => F::Rgb32F,
         0x1902 => F::DepthComponent,
         0x81A5 => F::DepthComponent16,
         0x81A6 => F::DepthComponent24,
@@ -129,6 +135,10 @@ fn rb_format_enum(f: RenderbufferFormat) -> GLenum {
         F::Rgba12 => 0x805A,
         F::Rgb16 => 0x8054,
         F::Rgba16 => 0x805B,
+        F::Rgba16F => 0x881A,
+        F::Rgb16F => 0x881B,
+        F::Rgba32F => 0x8814,
+        F::Rgb32F => 0x8815,
         F::DepthComponent => 0x1902,
         F::DepthComponent16 => 0x81A5,
         F::DepthComponent24 => 0x81A6,
@@ -413,11 +423,7 @@ fn renderbuffer_param(gl: &mut Context, target: GLenum, pname: GLenum) -> GlResu
 
 /// The colour bits of `format`: red, green, blue, alpha.
 fn color_bits(format: ColorFormat) -> [u32; 4] {
-    match format {
-        ColorFormat::Rgb565 => [5, 6, 5, 0],
-        ColorFormat::Rgb8 => [8, 8, 8, 0],
-        _ => [8, 8, 8, 8],
-    }
+    std::array::from_fn(|c| format.channel_bits(c))
 }
 
 /// The framebuffer-object queries of `glGet*` (`None`: not one of them);

@@ -136,7 +136,9 @@ fn source(format: GLenum) -> GlResult<Source> {
 
 /// Component values in [0, 1] (colour, depth) or raw (stencil) for pixel `(x, y)`;
 /// `None` outside the framebuffer, which leaves the caller's bytes untouched.
-fn read_pixel(fb: &Framebuffer, src: Source, x: i64, y: i64, out: &mut Vec<f64>) -> Option<()> {
+/// `clamp`: a deep colour buffer's values are clamped to [0, 1]
+/// (`GL_CLAMP_READ_COLOR`'s `GL_FIXED_ONLY` for a fixed-point framebuffer).
+fn read_pixel(fb: &Framebuffer, (src, clamp): (Source, bool), x: i64, y: i64, out: &mut Vec<f64>) -> Option<()> {
     let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
     out.clear();
     match src {
@@ -146,17 +148,27 @@ fn read_pixel(fb: &Framebuffer, src: Source, x: i64, y: i64, out: &mut Vec<f64>)
             // Mesa 22 clamps reads of its float OSMesa buffer to [0, 1] (its
             // window-system framebuffer counts as fixed-point for
             // GL_CLAMP_READ_COLOR: docs/llvmpipe-facts.md, "Deep colour buffers").
+            // A float framebuffer object is read unclamped (§38).
             let p = if fb.color_format().is_deep() {
-                fb.pixel_f32(x, y)?
-                    .map(|c| f64::from(if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) }))
+                fb.pixel_f32(x, y)?.map(|c| {
+                    f64::from(match clamp {
+                        true if c.is_nan() => 0.0,
+                        true => c.clamp(0.0, 1.0),
+                        false => c,
+                    })
+                })
             } else {
                 fb.pixel(x, y)?.map(|c| f64::from(f32::from(c) * (1.0 / 255.0)))
             };
-            out.extend(
-                channels
-                    .iter()
-                    .map(|c| c.map_or((p[0] + p[1] + p[2]).min(1.0), |c| p[c])),
-            );
+            let luminance = |p: [f64; 4]| {
+                let l = p[0] + p[1] + p[2];
+                if clamp {
+                    l.min(1.0)
+                } else {
+                    l
+                }
+            };
+            out.extend(channels.iter().map(|c| c.map_or(luminance(p), |c| p[c])));
         }
         Source::Depth if fb.depth_format()? == softgl::DepthFormat::D32F => {
             // The stored float, and as Mesa's `z32_float_to_z32_unorm` the
@@ -327,10 +339,21 @@ unsafe fn read_pixels(
     let depth_format = fb.depth_format();
     let depth_bits = depth_format.map_or(0, |f| f.bits());
     let float_depth = depth_format == Some(softgl::DepthFormat::D32F);
+    // Mesa's `_AllColorBuffersFixedPoint`: its OSMesa buffer counts as
+    // fixed-point whatever its type, a float object does not.
+    let clamp = !(float_src && gl.fbo_state().read_binding() != 0);
     let mut vals = Vec::with_capacity(4);
     for j in 0..h {
         for i in 0..w {
-            if read_pixel(fb, src, i64::from(x) + i as i64, i64::from(y) + j as i64, &mut vals).is_none() {
+            if read_pixel(
+                fb,
+                (src, clamp),
+                i64::from(x) + i as i64,
+                i64::from(y) + j as i64,
+                &mut vals,
+            )
+            .is_none()
+            {
                 continue;
             }
             let at = start + j * stride + i * pixel_bytes;
