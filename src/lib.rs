@@ -37,6 +37,7 @@ pub mod lighting;
 pub mod matrix;
 pub mod multisample;
 pub mod pixel_rect;
+pub mod pixel_shade;
 pub mod pixel_transfer;
 pub mod query;
 pub mod raster;

@@ -14,6 +14,7 @@ use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::framebuffer::Rect;
 use crate::geometry::varying::{Varyings, MAX_VARYINGS};
+use crate::pixel_shade::PixelShade;
 use crate::raster::scene::DrawState;
 use crate::raster::{RasterParams, RasterVertex};
 use crate::texture::PixelStore;
@@ -228,11 +229,18 @@ impl Context {
     /// the raster parameters (the whole framebuffer, llvmpipe's viewport for
     /// them) and the raster position as a vertex carrying its colours,
     /// fog distance and texture coordinates in the draw's layout.
-    fn raster_draw(&mut self, pixels: bool) -> GlResult<(DrawState, RasterParams, RasterVertex)> {
+    ///
+    /// For pixel rectangles also the shading stage their colours go through
+    /// before they are recorded ([`PixelShade`]), when one is on.
+    fn raster_draw(&mut self, pixels: bool) -> GlResult<(DrawState, RasterParams, RasterVertex, Option<PixelShade>)> {
         let textures = (&*self.tex_units, &*self.textures);
         let (mut key, mut layout, textures) =
             crate::context::plan(&self.state, &self.fb, self.ordered_dither, textures);
+        let r = self.raster;
+        let mut shade = None;
         if pixels {
+            let at = (&r.tex_coords, r.secondary, r.distance);
+            shade = PixelShade::new(key.shade.as_ref(), &textures, at, self.state.fog.uniforms());
             // Pixel rectangles bring their colours and depths in the spans.
             key.shade = None;
         } else if layout.color {
@@ -248,7 +256,6 @@ impl Context {
         {
             return self.record(Err(GlError::InvalidOperation));
         }
-        let r = self.raster;
         let mut v: Varyings = [0.0; MAX_VARYINGS];
         let mut put = |o: Option<usize>, c: &[f32]| {
             if let Some(o) = o {
@@ -260,9 +267,10 @@ impl Context {
         put(layout.back_color(), &clamp(r.color));
         put(layout.secondary(), &clamp(r.secondary));
         put(layout.back_secondary(), &clamp(r.secondary));
-        // llvmpipe's pass-through vertex shader for these quads writes no
-        // fog coordinate: the fragments read 0 (`docs/llvmpipe-facts.md`).
-        put(layout.fog(), &[0.0]);
+        // GL: the raster distance. (llvmpipe's pass-through vertex shader for
+        // these quads writes no fog coordinate: its fragments read 0,
+        // `docs/llvmpipe-facts.md` §26.)
+        put(layout.fog(), &[r.distance]);
         for (u, o) in layout.tex_units() {
             put(Some(o), &r.tex_coords[u].to_array());
         }
@@ -299,7 +307,7 @@ impl Context {
             // Polygon stipple applies to polygons only.
             polygon_stipple: None,
         };
-        Ok((state, params, vertex))
+        Ok((state, params, vertex, shade))
     }
 
     /// `glBitmap`: draws `image` with its origin `orig` at the raster
@@ -321,7 +329,7 @@ impl Context {
                     x: x as i64,
                     y: y as i64,
                 };
-                let (state, params, vertex) = self.raster_draw(false)?;
+                let (state, params, vertex, _) = self.raster_draw(false)?;
                 let colour = self.raster.color.to_array();
                 let saved = self.one_sample_tests(placed.rect(params.bounds));
                 for (scene, fb) in self.lane_scenes() {
@@ -542,10 +550,9 @@ impl Context {
     /// `glDrawPixels`: `width`×`height` pixels of `data` (its format read
     /// as `kind` says; depth, stencil and index data have one component,
     /// `data.format` is then ignored) drawn at the raster position with the
-    /// pixel zoom, after the pixel transfer operations. Nothing at an
-    /// invalid raster position. Texturing and fog do not apply (llvmpipe
-    /// textures them with the image's own coordinates and fogs them with
-    /// coordinate 0: `docs/llvmpipe-facts.md`).
+    /// pixel zoom, after the pixel transfer operations, then textured,
+    /// colour-summed and fogged at the raster position ([`PixelShade`]).
+    /// Nothing at an invalid raster position.
     pub fn draw_pixels(&mut self, width: i32, height: i32, kind: DrawKind, data: &crate::PixelData<'_>) -> GlResult {
         use crate::texture::unpack::{fetch, ClientLayout, Raw};
         self.outside()?;
@@ -712,7 +719,21 @@ impl Context {
             y,
             zoom,
         };
-        let (state, params, vertex) = self.raster_draw(true)?;
+        let (state, params, vertex, shade) = self.raster_draw(true)?;
+        let mut image = image;
+        if let Some(shade) = shade {
+            image.pixels = match image.pixels {
+                RectPixels::Color { rgba, z } => RectPixels::Color {
+                    rgba: rgba.iter().map(|&c| shade.apply(c)).collect(),
+                    z,
+                },
+                RectPixels::Depth { z, rgba } => RectPixels::Depth {
+                    z,
+                    rgba: shade.apply(rgba),
+                },
+                stencil @ RectPixels::Stencil { .. } => stencil,
+            };
+        }
         let saved = self.one_sample_tests(image.rect(params.bounds));
         for (scene, fb) in self.lane_scenes() {
             scene.pixels(state.clone(), &params, vertex, image.clone(), fb);
