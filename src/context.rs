@@ -1678,6 +1678,12 @@ impl Context {
             1 => fb.read_pixels(x, y, w, h, format),
             _ => fb.resolve().and_then(|fb| fb.read_pixels(x, y, w, h, format)),
         })?;
+        let r = r.map(|mut bytes| {
+            if !self.pixel.is_identity() {
+                self.pixel.transfer_read(&mut bytes, format);
+            }
+            bytes
+        });
         self.record(r)
     }
 
@@ -1687,6 +1693,12 @@ impl Context {
             1 => fb.read_pixels_f32(x, y, w, h),
             _ => fb.resolve().and_then(|fb| fb.read_pixels_f32(x, y, w, h)),
         })?;
+        let r = r.map(|mut px| {
+            if !self.pixel.is_identity() {
+                px.iter_mut().for_each(|c| *c = self.pixel.cpu_colour(*c));
+            }
+            px
+        });
         self.record(r)
     }
 

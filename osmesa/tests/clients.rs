@@ -1127,28 +1127,68 @@ fn selection_and_feedback_match_mesa() {
 }
 
 /// The pixel-path gaps of issue 14 (`tests/c/pixgaps.c`): textured pixel
-/// rectangles, pixel transfer on texture uploads and glReadPixels.
+/// rectangles, pixel transfer on texture uploads, copies and glReadPixels.
 #[test]
 fn pixel_gaps_match_mesa() {
     let Some(exe) = build("pixgaps") else { return };
     let (mesa, soft) = (run(&exe, false), run(&exe, true));
-    for k in 0..PIXGAPS_SCENES {
+    let (w, h) = (64, 48);
+    for k in 0..2 {
         let name = format!("pixgaps.{k}");
         let (m, s) = (mesa.file(&name), soft.file(&name));
-        let differing: Vec<usize> = (0..m.len() / 4)
-            .filter(|&i| m[4 * i..][..4] != s[4 * i..][..4])
-            .collect();
-        assert!(
-            differing.is_empty(),
-            "scene {k}: {} pixels differ, first at {:?}",
-            differing.len(),
-            differing.first()
-        );
+        let px = |b: &[u8], x: usize, y: usize| -> [u8; 4] { b[4 * (y * w + x)..][..4].try_into().unwrap() };
+        // Scene 1, rows 16..: the glCopyTexImage2D/glCopyTexSubImage2D
+        // textures. Mesa's copy through the transfer operations
+        // (`fallback_copy_texsubimage`) reads rows in the wrong order and
+        // past the region (zeros), so these are checked against GL's rule:
+        // each source pixel as f32, red ×0.75, green ×1.5, blue −0.2,
+        // clamped, rounded (±1: f32 against Mesa's exact conversions).
+        let rows = if k == 1 { 16 } else { h };
+        for y in 0..rows {
+            for x in 0..w {
+                assert_eq!(px(&m, x, y), px(&s, x, y), "scene {k}: pixel ({x}, {y})");
+            }
+        }
+        if k == 1 {
+            let transfer = |c: [u8; 4]| {
+                let f = c.map(|v| f32::from(v) / 255.0);
+                let t = [f[0] * 0.75, f[1] * 1.5, f[2] - 0.2, f[3]];
+                t.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
+            };
+            // The 16×8 texture on quads 32×32: texel (i, j) at pixel (2i, 16 + 4j).
+            for j in 0..8 {
+                for i in 0..16 {
+                    let first = transfer(px(&s, 8 + i, 4 + j));
+                    let sub = if (4..12).contains(&i) && (2..6).contains(&j) {
+                        transfer(px(&s, 40 + i - 4, 4 + j - 2))
+                    } else {
+                        first
+                    };
+                    for (x0, want) in [(0, first), (32, sub)] {
+                        let got = px(&s, x0 + 2 * i, 16 + 4 * j);
+                        let d = (0..4).map(|c| got[c].abs_diff(want[c])).max().unwrap();
+                        assert!(
+                            d <= 1,
+                            "scene 1: copied texel ({i}, {j}) at x {x0}: {got:?}, not {want:?}"
+                        );
+                    }
+                }
+            }
+        }
         let clear = s[s.len() - 4..].to_vec();
         let drawn = s.chunks_exact(4).filter(|p| *p != clear.as_slice()).count();
         assert!(drawn > 100, "scene {k}: only {drawn} pixels drawn");
     }
-    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+    // glReadPixels through the transfer operations: as Mesa, but for
+    // GL_FLOAT (line 5), which Mesa leaves unclamped after scale and bias;
+    // GL clamps every RGBA component in its final conversion (§4.3.2).
+    for (i, (a, b)) in mesa.lines.iter().zip(&soft.lines).enumerate().skip(1) {
+        if i == 4 {
+            let vals = |l: &str| l.split(' ').map(|v| v.parse::<f32>().unwrap()).collect::<Vec<_>>();
+            let clamped: Vec<f32> = vals(a).iter().map(|v| v.min(1.0)).collect();
+            assert_eq!(vals(b), clamped, "GL_FLOAT read");
+        } else {
+            assert_eq!(a, b, "line {i}");
+        }
+    }
 }
-
-const PIXGAPS_SCENES: usize = 1;

@@ -4,7 +4,9 @@
  *    own, GL the raster position's): MODULATE, REPLACE, DECAL, ADD, blended;
  * 1: pixel transfer (scale, bias, GL_MAP_COLOR) on glTexImage2D,
  *    glTexSubImage2D and glCopyTexImage2D uploads, drawn as textured quads;
- * then glReadPixels through scale, bias and maps, printed. */
+ * then glReadPixels through scale and bias, depth scale and bias, index
+ * shift and offset, printed. (Mesa's glReadPixels through GL_MAP_COLOR gave
+ * different bytes in two runs of this program: maps are checked in Rust.) */
 #include "common.h"
 #include <GL/glext.h>
 
@@ -70,6 +72,48 @@ static void scene(int k) {
     glDeleteTextures(1, &t);
     break;
   }
+  case 1: {
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    GLuint t[4]; glGenTextures(4, t);
+    /* Scale and bias on glTexImage2D (RGBA and RGB data, RGBA8 and RGB565-like RGB5). */
+    glPixelTransferf(GL_RED_SCALE, 0.5f); glPixelTransferf(GL_GREEN_BIAS, 0.25f);
+    glPixelTransferf(GL_BLUE_SCALE, 2.0f); glPixelTransferf(GL_ALPHA_BIAS, -0.125f);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    nearest(); tquad(0, 0, 16, 16);
+    glBindTexture(GL_TEXTURE_2D, t[1]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB5, 8, 8, 0, GL_RGB, GL_UNSIGNED_BYTE, src + 300);
+    nearest(); tquad(16, 0, 32, 16);
+    /* Luminance data into a luminance texture: L scaled as red. */
+    glBindTexture(GL_TEXTURE_2D, t[2]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 8, 8, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, src + 600);
+    nearest(); tquad(32, 0, 48, 16);
+    /* glTexSubImage2D through colour maps (sizes 8 and 4) and a bias. */
+    glPixelTransferf(GL_RED_SCALE, 1); glPixelTransferf(GL_GREEN_BIAS, 0);
+    glPixelTransferf(GL_BLUE_SCALE, 1); glPixelTransferf(GL_ALPHA_BIAS, 0);
+    float rmap[8] = {1, 0.9f, 0.7f, 0.5f, 0.3f, 0.2f, 0.1f, 0}, gmap[4] = {0.2f, 0.8f, 0.4f, 1};
+    glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 8, rmap); glPixelMapfv(GL_PIXEL_MAP_G_TO_G, 4, gmap);
+    glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+    glPixelTransferf(GL_BLUE_BIAS, 0.3f);
+    glBindTexture(GL_TEXTURE_2D, t[0]);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 2, 2, 5, 4, GL_RGBA, GL_UNSIGNED_BYTE, src + 1000);
+    tquad(48, 0, 64, 16);
+    glPixelTransferi(GL_MAP_COLOR, GL_FALSE); glPixelTransferf(GL_BLUE_BIAS, 0);
+    /* glCopyTexImage2D of the framebuffer through scale and bias. */
+    glPixelTransferf(GL_RED_SCALE, 0.75f); glPixelTransferf(GL_GREEN_SCALE, 1.5f);
+    glPixelTransferf(GL_BLUE_BIAS, -0.2f);
+    glBindTexture(GL_TEXTURE_2D, t[3]);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 4, 16, 8, 0);
+    nearest(); tquad(0, 16, 32, 48);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 4, 2, 40, 4, 8, 4);
+    tquad(32, 16, 64, 48);
+    glPixelTransferf(GL_RED_SCALE, 1); glPixelTransferf(GL_GREEN_SCALE, 1);
+    glPixelTransferf(GL_BLUE_BIAS, 0);
+    glDisable(GL_TEXTURE_2D);
+    glDeleteTextures(4, t);
+    break;
+  }
   }
   glFinish();
   char name[32];
@@ -84,7 +128,33 @@ int main(int argc, char **argv) {
   CHECK(ctx);
   CHECK(OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H));
   for (int i = 0; i < (int)sizeof src; i++) src[i] = (unsigned char)ri();
-  for (int k = 0; k < 1; k++) scene(k);
+  for (int k = 0; k < 2; k++) scene(k);
+  /* glReadPixels through the transfer operations. */
+  unsigned char ub[8 * 4]; float fl[8 * 4]; unsigned short us[8];
+  glPixelTransferf(GL_RED_SCALE, 0.5f); glPixelTransferf(GL_GREEN_BIAS, 0.25f);
+  glPixelTransferf(GL_ALPHA_SCALE, 0.0f); glPixelTransferf(GL_ALPHA_BIAS, 0.6f);
+  glReadPixels(3, 5, 8, 1, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+  glReadPixels(3, 5, 8, 1, GL_RGBA, GL_FLOAT, fl);
+  for (int i = 0; i < 32; i++) printf("%d%c", ub[i], i == 31 ? '\n' : ' ');
+  for (int i = 0; i < 32; i++) printf("%.6f%c", fl[i], i == 31 ? '\n' : ' ');
+  glReadPixels(20, 10, 8, 1, GL_BGRA, GL_UNSIGNED_BYTE, ub);
+  for (int i = 0; i < 32; i++) printf("%d%c", ub[i], i == 31 ? '\n' : ' ');
+  glReadPixels(20, 10, 8, 1, GL_RGB, GL_UNSIGNED_SHORT, us);
+  for (int i = 0; i < 8; i++) printf("%u%c", us[i], i == 7 ? '\n' : ' ');
+  glPixelTransferf(GL_RED_SCALE, 1); glPixelTransferf(GL_GREEN_BIAS, 0);
+  glPixelTransferf(GL_ALPHA_SCALE, 1); glPixelTransferf(GL_ALPHA_BIAS, 0);
+  /* Depth and stencil. */
+  glClearDepth(0.25); glClearStencil(5);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glPixelTransferf(GL_DEPTH_SCALE, 2.0f); glPixelTransferf(GL_DEPTH_BIAS, 0.125f);
+  glReadPixels(0, 0, 2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, fl);
+  printf("depth %.6f %.6f\n", fl[0], fl[1]);
+  glPixelTransferf(GL_DEPTH_SCALE, 1.0f); glPixelTransferf(GL_DEPTH_BIAS, 0);
+  glPixelTransferi(GL_INDEX_SHIFT, 2); glPixelTransferi(GL_INDEX_OFFSET, 3);
+  glReadPixels(0, 0, 2, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, ub);
+  printf("stencil %d %d\n", ub[0], ub[1]);
+  glPixelTransferi(GL_INDEX_SHIFT, 0); glPixelTransferi(GL_INDEX_OFFSET, 0);
+  printf("err %x\n", glGetError());
   OSMesaDestroyContext(ctx);
   printf("done\n");
   return 0;
