@@ -395,7 +395,7 @@ pub struct Context {
     /// itself is sample 0: `multisample.rs`).
     lanes: Vec<Lane>,
     /// `glRenderMode`, selection and feedback (`select.rs`).
-    render_mode: crate::select::RenderModeState,
+    pub(crate) render_mode: crate::select::RenderModeState,
 }
 
 /// One more sample of a multisampled framebuffer: what it records into and

@@ -318,7 +318,9 @@ impl Context {
         if !self.raster.valid {
             return Ok(());
         }
-        if image.width > 0 && image.height > 0 {
+        let r = self.raster;
+        let drawn = !self.render_mode.raster_primitive(crate::select::token::BITMAP, &r);
+        if drawn && image.width > 0 && image.height > 0 {
             const EPSILON: f32 = 0.0001;
             let [rx, ry, ..] = self.raster.window;
             let x = (rx + EPSILON - orig[0]).floor();
@@ -567,7 +569,10 @@ impl Context {
         if missing {
             return self.record(Err(GlError::InvalidOperation));
         }
-        if !self.raster.valid || width == 0 || height == 0 {
+        if !self.raster.valid || self.pixels_not_rendered(crate::select::token::DRAW_PIXEL) {
+            return Ok(());
+        }
+        if width == 0 || height == 0 {
             return Ok(());
         }
         let format = match kind {
@@ -672,7 +677,7 @@ impl Context {
             _ => return self.record(Err(GlError::InvalidEnum)),
         }
         let (w, h) = (image.width, image.height);
-        if !self.raster.valid || w == 0 || h == 0 {
+        if !self.raster.valid || self.pixels_not_rendered(crate::select::token::DRAW_PIXEL) || w == 0 || h == 0 {
             return Ok(());
         }
         let bits = (0..h).flat_map(|j| (0..w).map(move |i| i64::from(image.get(i, j))));
@@ -693,6 +698,13 @@ impl Context {
             },
         };
         self.place(pixels, (w, h))
+    }
+
+    /// Outside render mode a pixel rectangle is not drawn: its `token` and
+    /// the raster position go to the feedback buffer ([`crate::select`]).
+    fn pixels_not_rendered(&mut self, token: f32) -> bool {
+        let r = self.raster;
+        self.render_mode.raster_primitive(token, &r)
     }
 
     /// The scissor box as a rectangle of the framebuffer, when the test is on.
@@ -794,7 +806,7 @@ impl Context {
         if missing {
             return self.record(Err(GlError::InvalidOperation));
         }
-        if !self.raster.valid {
+        if !self.raster.valid || self.pixels_not_rendered(crate::select::token::COPY_PIXEL) {
             return Ok(());
         }
         // The source clipped to the framebuffer; the destination moves with it.

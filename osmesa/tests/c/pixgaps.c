@@ -7,6 +7,7 @@
  * then glReadPixels through scale and bias, depth scale and bias, index
  * shift and offset, printed. (Mesa's glReadPixels through GL_MAP_COLOR gave
  * different bytes in two runs of this program: maps are checked in Rust.) */
+#define GL_GLEXT_PROTOTYPES
 #include "common.h"
 #include <GL/glext.h>
 
@@ -154,6 +155,51 @@ int main(int argc, char **argv) {
   glReadPixels(0, 0, 2, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, ub);
   printf("stencil %d %d\n", ub[0], ub[1]);
   glPixelTransferi(GL_INDEX_SHIFT, 0); glPixelTransferi(GL_INDEX_OFFSET, 0);
+  printf("err %x\n", glGetError());
+  /* Selection and feedback of raster positions, bitmaps and pixel rectangles. */
+  glMatrixMode(GL_PROJECTION); glLoadIdentity(); glFrustum(-1, 1, -1, 1, 1, 10);
+  glMatrixMode(GL_MODELVIEW); glLoadIdentity();
+  static GLuint sel[64];
+  glSelectBuffer(64, sel);
+  glRenderMode(GL_SELECT);
+  glInitNames(); glPushName(7);
+  glRasterPos3f(0.2f, 0.1f, -2);
+  glRasterPos3f(-0.5f, 0.3f, -5);
+  glLoadName(8);
+  glRasterPos3f(30, 0, -2);             /* invalid: no hit */
+  glLoadName(9);
+  glWindowPos3f(3, 4, 0.75f);
+  glBitmap(0, 0, 0, 0, 2, 3, NULL);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, src);
+  glLoadName(10);
+  glBitmap(0, 0, 0, 0, 2, 3, NULL);     /* no hit: only raster positions */
+  int hits = glRenderMode(GL_RENDER);
+  printf("select hits %d:", hits);
+  for (int i = 0; i < 12; i++) printf(" %u", sel[i]);
+  printf("\n");
+  static float fb[256];
+  GLenum types[2] = {GL_3D_COLOR_TEXTURE, GL_4D_COLOR_TEXTURE};
+  for (int t = 0; t < 2; t++) {
+    glFeedbackBuffer(256, types[t], fb);
+    glRenderMode(GL_FEEDBACK);
+    glColor4f(0.25f, 0.5f, 0.75f, 1); glTexCoord4f(1, 2, 3, 4);
+    glRasterPos4f(0.2f, 0.1f, -2, 1);
+    glColor3f(1, 0, 0);
+    unsigned char bits[2] = {0xff, 0x80};
+    glBitmap(9, 1, 0, 0, 1.5f, -2, bits);
+    glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glCopyPixels(0, 0, 3, 3, GL_COLOR);
+    glPassThrough(5);
+    glWindowPos2f(10, 11);
+    glDrawPixels(0, 0, GL_RGBA, GL_UNSIGNED_BYTE, src);
+    glRasterPos3f(30, 0, -2);           /* invalid: nothing */
+    glBitmap(9, 1, 0, 0, 1.5f, -2, bits);
+    glCopyPixels(0, 0, 3, 3, GL_COLOR);
+    int n = glRenderMode(GL_RENDER);
+    printf("feedback %d:", n);
+    for (int i = 0; i < n; i++) printf(" %g", fb[i]);
+    printf("\n");
+  }
   printf("err %x\n", glGetError());
   OSMesaDestroyContext(ctx);
   printf("done\n");
