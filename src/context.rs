@@ -277,11 +277,21 @@ pub(crate) fn plan<'a>(
     (units, store): (&TextureUnits, &'a TextureStore),
 ) -> (FragmentKey, VaryingLayout, TexturePlan<'a>) {
     let mut key = state.fragment_key(fb, ordered_dither);
-    let reads_color = key
-        .stages()
-        .as_slice()
-        .iter()
-        .any(|s| matches!(s, Stage::Pack { .. } | Stage::AlphaTest(_)));
+    // Multisampling's alpha stages, with GL_MULTISAMPLE on in a multisampled
+    // framebuffer only (`st_atom_blend.c`); the sample's threshold is set
+    // per sample by the draw (`AlphaCoverage`).
+    let ms = &state.multisample;
+    let msaa = ms.enabled && fb.samples() > 1;
+    let coverage = softgl_jit::AlphaCoverage {
+        quarters: (msaa && ms.alpha_to_coverage).then_some(0),
+        to_one: msaa && ms.alpha_to_one,
+    };
+    let reads_color = coverage.quarters.is_some()
+        || key
+            .stages()
+            .as_slice()
+            .iter()
+            .any(|s| matches!(s, Stage::Pack { .. } | Stage::AlphaTest(_)));
     let mut layout = state.varying_layout(reads_color);
     let textures = match reads_color {
         true => units.plan(store),
@@ -295,6 +305,7 @@ pub(crate) fn plan<'a>(
         fog: layout.fog.then_some(state.fog.mode),
         depth: key.depth.is_some() && key.depth_format != Some(DepthFormat::D32),
         tex: textures.keys,
+        coverage,
     });
     (key, layout, textures)
 }
@@ -1615,15 +1626,29 @@ impl Context {
             let at = |s: usize| ms.enabled.then(|| crate::multisample::SampleAt::of_4x(s));
             let mut samples = std::mem::take(&mut self.fb.samples);
             let mut fan = crate::multisample::Fan::default();
+            // Alpha to coverage: each sample's key has its own threshold.
+            let a2c = state.key.shade.is_some_and(|s| s.coverage.quarters.is_some());
+            let (backend, specialists) = (self.backend, &mut self.specialists);
+            let mut sample_state = |s: usize| {
+                let mut st = state.clone();
+                if let Some(shade) = st.key.shade.as_mut().filter(|_| a2c) {
+                    shade.coverage.quarters = Some(s as u8);
+                    st.specialist = match backend {
+                        Backend::Jit => specialists.get(&st.key).cloned(),
+                        Backend::Interpreter => None,
+                    };
+                }
+                st
+            };
             if mask & 1 != 0 {
                 let b = self
                     .scene
-                    .draw(&mut self.fb, &mut self.background, self.threads, state.clone());
+                    .draw(&mut self.fb, &mut self.background, self.threads, sample_state(0));
                 fan.lanes.push((b, at(0)));
             }
             for (s, (lane, fb)) in self.lanes.iter_mut().zip(&mut samples).enumerate() {
                 if mask >> (s + 1) & 1 != 0 {
-                    let b = lane.scene.draw(fb, &mut lane.background, self.threads, state.clone());
+                    let b = lane.scene.draw(fb, &mut lane.background, self.threads, sample_state(s + 1));
                     fan.lanes.push((b, at(s + 1)));
                 }
             }

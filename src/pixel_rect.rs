@@ -243,10 +243,18 @@ impl Context {
             shade = PixelShade::new(key.shade.as_ref(), &textures, at, self.state.fog.uniforms());
             // Pixel rectangles bring their colours and depths in the spans.
             key.shade = None;
-        } else if layout.color {
-            layout.uniform_colors = true;
-            if let Some(shade) = key.shade.as_mut() {
-                shade.flat = true;
+        } else {
+            if layout.color {
+                layout.uniform_colors = true;
+                if let Some(shade) = key.shade.as_mut() {
+                    shade.flat = true;
+                }
+            }
+            // Bitmaps are drawn with multisampling off in llvmpipe's
+            // rasterizer state: alpha to coverage keeps the fragment, in
+            // every sample, when alpha is above 0.5 (`lp_build_alpha_to_coverage`).
+            if let Some(shade) = key.shade.as_mut().filter(|s| s.coverage.quarters.is_some()) {
+                shade.coverage.quarters = Some(2);
             }
         }
         let fb = &self.fb;

@@ -5,6 +5,7 @@
 //! exactly as this one does.
 
 use crate::key::{
+    AlphaCoverage,
     BlendEquation, BlendFactor, BlendKey, ColorMask, DepthKey, FragmentKey, KeyError, Stage, StencilKey, StencilOp,
 };
 use crate::pixel;
@@ -105,6 +106,15 @@ fn run_span(
     }
     let mut packed = [0u32; SPAN_MAX];
     let mut z = span.z;
+    // The shaded alpha in f32, for alpha to coverage (a span's colour: its
+    // byte times 1/255).
+    let coverage = key.shade.is_some_and(|s| s.coverage.quarters.is_some());
+    let mut alpha = [0.0f32; SPAN_MAX];
+    if coverage {
+        for (a, &b) in alpha.iter_mut().zip(&span.a) {
+            *a = f32::from(b) * (1.0 / 255.0);
+        }
+    }
 
     for stage in stages {
         match *stage {
@@ -113,7 +123,15 @@ fn run_span(
                 let max = key.depth_format.map_or(0, |f| f.max_value());
                 for i in lanes(live) {
                     let px = (x0 + i as u32) as f32;
-                    let (c, d) = shade::fragment(&shade, planes, (px, row), &u.fog, max, textures);
+                    let (c, d) = if coverage {
+                        let (c, d) = shade::fragment_f32(&shade, planes, (px, row), &u.fog, max, textures);
+                        if let Some(c) = c {
+                            alpha[i] = c[3];
+                        }
+                        (c.map(|c| c.map(shade::unorm8)), d)
+                    } else {
+                        shade::fragment(&shade, planes, (px, row), &u.fog, max, textures)
+                    };
                     if let Some(c) = c {
                         rgba[i] = c;
                     }
@@ -138,6 +156,19 @@ fn run_span(
                 for i in lanes(live) {
                     if !func.test(rgba[i][3], u.alpha_ref) {
                         live &= !(1 << i);
+                    }
+                }
+            }
+            Stage::AlphaCoverage(c) => {
+                for i in lanes(live) {
+                    if let Some(q) = c.quarters {
+                        // `!(a > t)`: NaN fails.
+                        if !(alpha[i] > AlphaCoverage::threshold(q)) {
+                            live &= !(1 << i);
+                        }
+                    }
+                    if c.to_one {
+                        rgba[i][3] = 255;
                     }
                 }
             }

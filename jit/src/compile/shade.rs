@@ -202,6 +202,9 @@ impl Gen<'_> {
         }
         // The other channels, shaded later, read w.
         let a = self.colour_planes(g, sv, key, (&[slot::COLOR + 3], true))[0];
+        if key.coverage.quarters.is_some() {
+            g.alpha_f = Some(a);
+        }
         g.rgba[3] = self.unorm_lanes_small(a, 255);
         g.alpha_shaded = true;
     }
@@ -248,6 +251,9 @@ impl Gen<'_> {
                 *ck = self.b.ins().fadd(a, b);
             }
         }
+        if !alpha_shaded && key.coverage.quarters.is_some() {
+            g.alpha_f = Some(c[3]);
+        }
         if self.packs_from_shade() {
             // Straight to the packed pixels: no later stage reads the channels.
             g.packed = Some(self.unorm8_packed(c, sv.colour_bounded));
@@ -270,6 +276,7 @@ impl Gen<'_> {
     /// [`Self::packs_from_shade`] of `k`.
     pub(super) fn packs_from_shade_of(k: &FragmentKey) -> bool {
         k.alpha_test.is_none()
+            && !k.shade.is_some_and(|s| s.coverage.is_on())
             && (k.blend.is_none() || k.logic_op.is_some())
             && matches!(
                 k.color_format,
