@@ -1511,7 +1511,7 @@ impl Context {
         &mut self,
         mode: (PrimitiveMode, DrawSource),
         count: usize,
-        (fetch, tex): Fetch<'_>,
+        fetch: Fetch<'_>,
         vertex_materials: &[LightSetup],
         varying: Varying,
     ) -> GlResult {
@@ -1519,6 +1519,37 @@ impl Context {
         if self.fbo.draw != 0 {
             self.sync_sampled();
         }
+        // GL_MULTISAMPLE off in a multisampled framebuffer: llvmpipe tests
+        // and writes depth and stencil in sample 0 only (`lp_state_fs.c`,
+        // the depth pointer not moved per sample; docs/llvmpipe-facts.md §29).
+        // The draw runs at once with samples 1.. given sample 0's depth and
+        // stencil, and theirs put back after it (`Context::one_sample_tests`):
+        // this state alone pays for it.
+        let one_sample = self.render_mode.mode == crate::select::RenderMode::Render
+            && !self.state.multisample.enabled
+            && self.fb.samples() > 1;
+        let saved = if one_sample {
+            let r = self.fb.bounds();
+            self.one_sample_tests(Some(r))
+        } else {
+            None
+        };
+        let r = self.draw_planned(mode, count, fetch, vertex_materials, varying);
+        if saved.is_some() {
+            self.end_one_sample_tests(saved);
+        }
+        r
+    }
+
+    /// [`Context::draw_with`] once the framebuffer is ready.
+    fn draw_planned(
+        &mut self,
+        mode: (PrimitiveMode, DrawSource),
+        count: usize,
+        (fetch, tex): Fetch<'_>,
+        vertex_materials: &[LightSetup],
+        varying: Varying,
+    ) -> GlResult {
         let made_of = (
             self.state.generation(),
             self.tex_units.generation(),
@@ -1648,7 +1679,9 @@ impl Context {
             }
             for (s, (lane, fb)) in self.lanes.iter_mut().zip(&mut samples).enumerate() {
                 if mask >> (s + 1) & 1 != 0 {
-                    let b = lane.scene.draw(fb, &mut lane.background, self.threads, sample_state(s + 1));
+                    let b = lane
+                        .scene
+                        .draw(fb, &mut lane.background, self.threads, sample_state(s + 1));
                     fan.lanes.push((b, at(s + 1)));
                 }
             }

@@ -770,7 +770,7 @@ impl Context {
     /// [`Framebuffer::tests_from_sample0`]). Such a draw is rasterized at
     /// once, in [`Context::end_one_sample_tests`] (Mesa's bitmap cache then
     /// merges no glyphs: the bytes differ only where glyphs overlap).
-    fn one_sample_tests(&mut self, rect: Option<Rect>) -> Option<crate::multisample::SavedTests> {
+    pub(crate) fn one_sample_tests(&mut self, rect: Option<Rect>) -> Option<crate::multisample::SavedTests> {
         let s = &self.state;
         if self.fb.samples() == 1 || !(s.depth_test || s.stencil_test) {
             return None;
@@ -783,7 +783,7 @@ impl Context {
     /// After the draw [`Context::one_sample_tests`] prepared: rasterizes it
     /// and puts samples 1..'s depth and stencil back; otherwise flushes the
     /// scene when it is over its bound.
-    fn end_one_sample_tests(&mut self, saved: Option<crate::multisample::SavedTests>) {
+    pub(crate) fn end_one_sample_tests(&mut self, saved: Option<crate::multisample::SavedTests>) {
         match saved {
             Some(saved) => {
                 self.finish_scene();

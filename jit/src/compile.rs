@@ -112,8 +112,8 @@
 //! code runs a span only when its groups end inside those columns.
 
 use crate::key::{
-    AlphaCoverage, BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey, LogicOp,
-    Stage, StencilKey, StencilOp,
+    AlphaCoverage, BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, FragmentKey,
+    LogicOp, Stage, StencilKey, StencilOp,
 };
 use crate::pixel;
 use crate::shade::{Planes, COLOUR_BOUNDED};
@@ -1038,10 +1038,7 @@ impl<'a> Gen<'a> {
                 (Some(shade), Stage::AlphaTest(_) | Stage::AlphaCoverage(_)) if !shade.textured() => {
                     self.shade_alpha(&mut g, sv, &shade)
                 }
-                (
-                    Some(shade),
-                    Stage::AlphaTest(_) | Stage::AlphaCoverage(_) | Stage::Blend(_) | Stage::Pack { .. },
-                ) => {
+                (Some(shade), Stage::AlphaTest(_) | Stage::AlphaCoverage(_) | Stage::Blend(_) | Stage::Pack { .. }) => {
                     self.shade_color(&mut g, sv, &shade);
                     colour_due = None;
                 }

@@ -5,8 +5,8 @@
 //! exactly as this one does.
 
 use crate::key::{
-    AlphaCoverage,
-    BlendEquation, BlendFactor, BlendKey, ColorMask, DepthKey, FragmentKey, KeyError, Stage, StencilKey, StencilOp,
+    AlphaCoverage, BlendEquation, BlendFactor, BlendKey, ColorMask, DepthKey, FragmentKey, KeyError, Stage, StencilKey,
+    StencilOp,
 };
 use crate::pixel;
 use crate::shade::{self, Planes};

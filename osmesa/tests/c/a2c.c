@@ -7,7 +7,9 @@
  * 2: with the depth test: the killed samples write no depth (a quad
  *    behind shows through them);
  * 3: textured alpha (MODULATE), alpha test, GL_MULTISAMPLE off (no effect);
- * 4: bitmaps (alpha above 0.5 keeps them) and alpha to one alone. */
+ * 4: bitmaps (alpha above 0.5 keeps them) and alpha to one alone;
+ * 5: GL_MULTISAMPLE off after multisampled drawing: depth and stencil in
+ *    sample 0 only. */
 #define GL_GLEXT_PROTOTYPES
 #include "common.h"
 #include <GL/glext.h>
@@ -126,6 +128,36 @@ static void scene(int k, GLuint ms, GLuint single) {
     glDisable(GL_SAMPLE_ALPHA_TO_ONE);
     break;
   }
+  case 5:
+    /* Multisampled drawing leaves the samples' depths apart (edges, a
+     * steep depth slope); with GL_MULTISAMPLE off llvmpipe tests and writes
+     * depth and stencil in sample 0 only, colour in every sample. */
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 1, 0xff); glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0); glVertex3f(3, 2, -0.9f); glVertex3f(61, 9, 0.9f); glVertex3f(17, 46, 0.9f);
+    glColor3f(0, 0, 1); glVertex3f(40, 3, 0.9f); glVertex3f(63, 40, -0.9f); glVertex3f(30, 44, -0.2f);
+    glEnd();
+    glDisable(GL_MULTISAMPLE);
+    glStencilFunc(GL_EQUAL, 1, 0xff); glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    glColor3f(0, 1, 0);
+    glBegin(GL_QUADS);
+    glVertex3f(0, 0, 0); glVertex3f(64, 0, 0); glVertex3f(64, 48, 0); glVertex3f(0, 48, 0);
+    glEnd();
+    glDisable(GL_STENCIL_TEST);
+    glColor3f(1, 1, 0);
+    glBegin(GL_TRIANGLES);
+    glVertex3f(0, 20, 0.5f); glVertex3f(64, 24, -0.5f); glVertex3f(10, 47, 0.1f);
+    glEnd();
+    glEnable(GL_MULTISAMPLE);
+    glColor3f(1, 1, 1);
+    glBegin(GL_TRIANGLES);
+    glVertex3f(5, 30, -0.3f); glVertex3f(60, 35, 0.3f); glVertex3f(30, 5, 0.05f);
+    glEnd();
+    glDisable(GL_DEPTH_TEST);
+    break;
   }
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, ms);
@@ -145,7 +177,7 @@ int main(int argc, char **argv) {
   CHECK(ctx);
   CHECK(OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H));
   GLuint ms = fbo(4), single = fbo(0);
-  for (int k = 0; k < 5; k++) scene(k, ms, single);
+  for (int k = 0; k < 6; k++) scene(k, ms, single);
   OSMesaDestroyContext(ctx);
   printf("done\n");
   return 0;
