@@ -249,7 +249,7 @@ pub(crate) fn run_span(
             Stage::AlphaCoverage(c) => {
                 for i in lanes(live) {
                     if let Some(q) = c.quarters {
-                        if !(rgba[i][3] > crate::key::AlphaCoverage::threshold(q)) {
+                        if !crate::key::AlphaCoverage::keeps(rgba[i][3], q) {
                             live &= !(1 << i);
                         }
                     }

@@ -163,7 +163,7 @@ fn run_span(
                 for i in lanes(live) {
                     if let Some(q) = c.quarters {
                         // `!(a > t)`: NaN fails.
-                        if !(alpha[i] > AlphaCoverage::threshold(q)) {
+                        if !AlphaCoverage::keeps(alpha[i], q) {
                             live &= !(1 << i);
                         }
                     }

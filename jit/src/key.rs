@@ -504,6 +504,12 @@ impl AlphaCoverage {
     pub fn threshold(quarters: u8) -> f32 {
         0.25 * f32::from(quarters)
     }
+
+    /// Whether a fragment of alpha `a` is kept at threshold `quarters`
+    /// (`a > t`, ordered: NaN is not kept).
+    pub fn keeps(a: f32, quarters: u8) -> bool {
+        a > Self::threshold(quarters)
+    }
 }
 
 impl ShadeKey {
