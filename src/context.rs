@@ -277,11 +277,21 @@ pub(crate) fn plan<'a>(
     (units, store): (&TextureUnits, &'a TextureStore),
 ) -> (FragmentKey, VaryingLayout, TexturePlan<'a>) {
     let mut key = state.fragment_key(fb, ordered_dither);
-    let reads_color = key
-        .stages()
-        .as_slice()
-        .iter()
-        .any(|s| matches!(s, Stage::Pack { .. } | Stage::AlphaTest(_)));
+    // Multisampling's alpha stages, with GL_MULTISAMPLE on in a multisampled
+    // framebuffer only (`st_atom_blend.c`); the sample's threshold is set
+    // per sample by the draw (`AlphaCoverage`).
+    let ms = &state.multisample;
+    let msaa = ms.enabled && fb.samples() > 1;
+    let coverage = softgl_jit::AlphaCoverage {
+        quarters: (msaa && ms.alpha_to_coverage).then_some(0),
+        to_one: msaa && ms.alpha_to_one,
+    };
+    let reads_color = coverage.quarters.is_some()
+        || key
+            .stages()
+            .as_slice()
+            .iter()
+            .any(|s| matches!(s, Stage::Pack { .. } | Stage::AlphaTest(_)));
     let mut layout = state.varying_layout(reads_color);
     let textures = match reads_color {
         true => units.plan(store),
@@ -295,6 +305,7 @@ pub(crate) fn plan<'a>(
         fog: layout.fog.then_some(state.fog.mode),
         depth: key.depth.is_some() && key.depth_format != Some(DepthFormat::D32),
         tex: textures.keys,
+        coverage,
     });
     (key, layout, textures)
 }
@@ -395,7 +406,7 @@ pub struct Context {
     /// itself is sample 0: `multisample.rs`).
     lanes: Vec<Lane>,
     /// `glRenderMode`, selection and feedback (`select.rs`).
-    render_mode: crate::select::RenderModeState,
+    pub(crate) render_mode: crate::select::RenderModeState,
 }
 
 /// One more sample of a multisampled framebuffer: what it records into and
@@ -1500,7 +1511,7 @@ impl Context {
         &mut self,
         mode: (PrimitiveMode, DrawSource),
         count: usize,
-        (fetch, tex): Fetch<'_>,
+        fetch: Fetch<'_>,
         vertex_materials: &[LightSetup],
         varying: Varying,
     ) -> GlResult {
@@ -1508,6 +1519,37 @@ impl Context {
         if self.fbo.draw != 0 {
             self.sync_sampled();
         }
+        // GL_MULTISAMPLE off in a multisampled framebuffer: llvmpipe tests
+        // and writes depth and stencil in sample 0 only (`lp_state_fs.c`,
+        // the depth pointer not moved per sample; docs/llvmpipe-facts.md §29).
+        // The draw runs at once with samples 1.. given sample 0's depth and
+        // stencil, and theirs put back after it (`Context::one_sample_tests`):
+        // this state alone pays for it.
+        let one_sample = self.render_mode.mode == crate::select::RenderMode::Render
+            && !self.state.multisample.enabled
+            && self.fb.samples() > 1;
+        let saved = if one_sample {
+            let r = self.fb.bounds();
+            self.one_sample_tests(Some(r))
+        } else {
+            None
+        };
+        let r = self.draw_planned(mode, count, fetch, vertex_materials, varying);
+        if saved.is_some() {
+            self.end_one_sample_tests(saved);
+        }
+        r
+    }
+
+    /// [`Context::draw_with`] once the framebuffer is ready.
+    fn draw_planned(
+        &mut self,
+        mode: (PrimitiveMode, DrawSource),
+        count: usize,
+        (fetch, tex): Fetch<'_>,
+        vertex_materials: &[LightSetup],
+        varying: Varying,
+    ) -> GlResult {
         let made_of = (
             self.state.generation(),
             self.tex_units.generation(),
@@ -1616,15 +1658,31 @@ impl Context {
             let at = |s: usize| ms.enabled.then(|| crate::multisample::SampleAt::of_4x_in(s, window));
             let mut samples = std::mem::take(&mut self.fb.samples);
             let mut fan = crate::multisample::Fan::default();
+            // Alpha to coverage: each sample's key has its own threshold.
+            let a2c = state.key.shade.is_some_and(|s| s.coverage.quarters.is_some());
+            let (backend, specialists) = (self.backend, &mut self.specialists);
+            let mut sample_state = |s: usize| {
+                let mut st = state.clone();
+                if let Some(shade) = st.key.shade.as_mut().filter(|_| a2c) {
+                    shade.coverage.quarters = Some(s as u8);
+                    st.specialist = match backend {
+                        Backend::Jit => specialists.get(&st.key).cloned(),
+                        Backend::Interpreter => None,
+                    };
+                }
+                st
+            };
             if mask & 1 != 0 {
                 let b = self
                     .scene
-                    .draw(&mut self.fb, &mut self.background, self.threads, state.clone());
+                    .draw(&mut self.fb, &mut self.background, self.threads, sample_state(0));
                 fan.lanes.push((b, at(0)));
             }
             for (s, (lane, fb)) in self.lanes.iter_mut().zip(&mut samples).enumerate() {
                 if mask >> (s + 1) & 1 != 0 {
-                    let b = lane.scene.draw(fb, &mut lane.background, self.threads, state.clone());
+                    let b = lane
+                        .scene
+                        .draw(fb, &mut lane.background, self.threads, sample_state(s + 1));
                     fan.lanes.push((b, at(s + 1)));
                 }
             }
@@ -1679,6 +1737,12 @@ impl Context {
             1 => fb.read_pixels(x, y, w, h, format),
             _ => fb.resolve().and_then(|fb| fb.read_pixels(x, y, w, h, format)),
         })?;
+        let r = r.map(|mut bytes| {
+            if !self.pixel.is_identity() {
+                self.pixel.transfer_read(&mut bytes, format);
+            }
+            bytes
+        });
         self.record(r)
     }
 
@@ -1688,6 +1752,12 @@ impl Context {
             1 => fb.read_pixels_f32(x, y, w, h),
             _ => fb.resolve().and_then(|fb| fb.read_pixels_f32(x, y, w, h)),
         })?;
+        let r = r.map(|mut px| {
+            if !self.pixel.is_identity() {
+                px.iter_mut().for_each(|c| *c = self.pixel.cpu_colour(*c));
+            }
+            px
+        });
         self.record(r)
     }
 

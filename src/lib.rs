@@ -39,6 +39,7 @@ pub mod matrix;
 pub mod multisample;
 pub mod names;
 pub mod pixel_rect;
+pub mod pixel_shade;
 pub mod pixel_transfer;
 pub mod query;
 pub mod raster;

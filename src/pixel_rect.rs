@@ -14,6 +14,7 @@ use crate::context::Context;
 use crate::error::{GlError, GlResult};
 use crate::framebuffer::Rect;
 use crate::geometry::varying::{Varyings, MAX_VARYINGS};
+use crate::pixel_shade::PixelShade;
 use crate::raster::scene::DrawState;
 use crate::raster::{RasterParams, RasterVertex};
 use crate::texture::PixelStore;
@@ -228,17 +229,32 @@ impl Context {
     /// the raster parameters (the whole framebuffer, llvmpipe's viewport for
     /// them) and the raster position as a vertex carrying its colours,
     /// fog distance and texture coordinates in the draw's layout.
-    fn raster_draw(&mut self, pixels: bool) -> GlResult<(DrawState, RasterParams, RasterVertex)> {
+    ///
+    /// For pixel rectangles also the shading stage their colours go through
+    /// before they are recorded ([`PixelShade`]), when one is on.
+    fn raster_draw(&mut self, pixels: bool) -> GlResult<(DrawState, RasterParams, RasterVertex, Option<PixelShade>)> {
         let textures = (&*self.tex_units, &*self.textures);
         let (mut key, mut layout, textures) =
             crate::context::plan(&self.state, &self.fb, self.ordered_dither, textures);
+        let r = self.raster;
+        let mut shade = None;
         if pixels {
+            let at = (&r.tex_coords, r.secondary, r.distance);
+            shade = PixelShade::new(key.shade.as_ref(), &textures, at, self.state.fog.uniforms());
             // Pixel rectangles bring their colours and depths in the spans.
             key.shade = None;
-        } else if layout.color {
-            layout.uniform_colors = true;
-            if let Some(shade) = key.shade.as_mut() {
-                shade.flat = true;
+        } else {
+            if layout.color {
+                layout.uniform_colors = true;
+                if let Some(shade) = key.shade.as_mut() {
+                    shade.flat = true;
+                }
+            }
+            // Bitmaps are drawn with multisampling off in llvmpipe's
+            // rasterizer state: alpha to coverage keeps the fragment, in
+            // every sample, when alpha is above 0.5 (`lp_build_alpha_to_coverage`).
+            if let Some(shade) = key.shade.as_mut().filter(|s| s.coverage.quarters.is_some()) {
+                shade.coverage.quarters = Some(2);
             }
         }
         let fb = &self.fb;
@@ -248,7 +264,6 @@ impl Context {
         {
             return self.record(Err(GlError::InvalidOperation));
         }
-        let r = self.raster;
         let mut v: Varyings = [0.0; MAX_VARYINGS];
         let mut put = |o: Option<usize>, c: &[f32]| {
             if let Some(o) = o {
@@ -260,9 +275,10 @@ impl Context {
         put(layout.back_color(), &clamp(r.color));
         put(layout.secondary(), &clamp(r.secondary));
         put(layout.back_secondary(), &clamp(r.secondary));
-        // llvmpipe's pass-through vertex shader for these quads writes no
-        // fog coordinate: the fragments read 0 (`docs/llvmpipe-facts.md`).
-        put(layout.fog(), &[0.0]);
+        // GL: the raster distance. (llvmpipe's pass-through vertex shader for
+        // these quads writes no fog coordinate: its fragments read 0,
+        // `docs/llvmpipe-facts.md` §26.)
+        put(layout.fog(), &[r.distance]);
         for (u, o) in layout.tex_units() {
             put(Some(o), &r.tex_coords[u].to_array());
         }
@@ -299,7 +315,7 @@ impl Context {
             // Polygon stipple applies to polygons only.
             polygon_stipple: None,
         };
-        Ok((state, params, vertex))
+        Ok((state, params, vertex, shade))
     }
 
     /// `glBitmap`: draws `image` with its origin `orig` at the raster
@@ -310,7 +326,9 @@ impl Context {
         if !self.raster.valid {
             return Ok(());
         }
-        if image.width > 0 && image.height > 0 {
+        let r = self.raster;
+        let drawn = !self.render_mode.raster_primitive(crate::select::token::BITMAP, &r);
+        if drawn && image.width > 0 && image.height > 0 {
             const EPSILON: f32 = 0.0001;
             let [rx, ry, ..] = self.raster.window;
             let x = (rx + EPSILON - orig[0]).floor();
@@ -321,7 +339,7 @@ impl Context {
                     x: x as i64,
                     y: y as i64,
                 };
-                let (state, params, vertex) = self.raster_draw(false)?;
+                let (state, params, vertex, _) = self.raster_draw(false)?;
                 let colour = self.raster.color.to_array();
                 let saved = self.one_sample_tests(placed.rect(params.bounds));
                 for (scene, fb) in self.lane_scenes() {
@@ -546,10 +564,9 @@ impl Context {
     /// `glDrawPixels`: `width`×`height` pixels of `data` (its format read
     /// as `kind` says; depth, stencil and index data have one component,
     /// `data.format` is then ignored) drawn at the raster position with the
-    /// pixel zoom, after the pixel transfer operations. Nothing at an
-    /// invalid raster position. Texturing and fog do not apply (llvmpipe
-    /// textures them with the image's own coordinates and fogs them with
-    /// coordinate 0: `docs/llvmpipe-facts.md`).
+    /// pixel zoom, after the pixel transfer operations, then textured,
+    /// colour-summed and fogged at the raster position ([`PixelShade`]).
+    /// Nothing at an invalid raster position.
     pub fn draw_pixels(&mut self, width: i32, height: i32, kind: DrawKind, data: &crate::PixelData<'_>) -> GlResult {
         use crate::texture::unpack::{fetch, ClientLayout, Raw};
         self.outside()?;
@@ -564,7 +581,10 @@ impl Context {
         if missing {
             return self.record(Err(GlError::InvalidOperation));
         }
-        if !self.raster.valid || width == 0 || height == 0 {
+        if !self.raster.valid || self.pixels_not_rendered(crate::select::token::DRAW_PIXEL) {
+            return Ok(());
+        }
+        if width == 0 || height == 0 {
             return Ok(());
         }
         let format = match kind {
@@ -669,7 +689,7 @@ impl Context {
             _ => return self.record(Err(GlError::InvalidEnum)),
         }
         let (w, h) = (image.width, image.height);
-        if !self.raster.valid || w == 0 || h == 0 {
+        if !self.raster.valid || self.pixels_not_rendered(crate::select::token::DRAW_PIXEL) || w == 0 || h == 0 {
             return Ok(());
         }
         let bits = (0..h).flat_map(|j| (0..w).map(move |i| i64::from(image.get(i, j))));
@@ -690,6 +710,13 @@ impl Context {
             },
         };
         self.place(pixels, (w, h))
+    }
+
+    /// Outside render mode a pixel rectangle is not drawn: its `token` and
+    /// the raster position go to the feedback buffer ([`crate::select`]).
+    fn pixels_not_rendered(&mut self, token: f32) -> bool {
+        let r = self.raster;
+        self.render_mode.raster_primitive(token, &r)
     }
 
     /// The scissor box as a rectangle of the framebuffer, when the test is on.
@@ -716,7 +743,21 @@ impl Context {
             y,
             zoom,
         };
-        let (state, params, vertex) = self.raster_draw(true)?;
+        let (state, params, vertex, shade) = self.raster_draw(true)?;
+        let mut image = image;
+        if let Some(shade) = shade {
+            image.pixels = match image.pixels {
+                RectPixels::Color { rgba, z } => RectPixels::Color {
+                    rgba: rgba.iter().map(|&c| shade.apply(c)).collect(),
+                    z,
+                },
+                RectPixels::Depth { z, rgba } => RectPixels::Depth {
+                    z,
+                    rgba: shade.apply(rgba),
+                },
+                stencil @ RectPixels::Stencil { .. } => stencil,
+            };
+        }
         let saved = self.one_sample_tests(image.rect(params.bounds));
         for (scene, fb) in self.lane_scenes() {
             scene.pixels(state.clone(), &params, vertex, image.clone(), fb);
@@ -733,7 +774,7 @@ impl Context {
     /// [`Framebuffer::tests_from_sample0`]). Such a draw is rasterized at
     /// once, in [`Context::end_one_sample_tests`] (Mesa's bitmap cache then
     /// merges no glyphs: the bytes differ only where glyphs overlap).
-    fn one_sample_tests(&mut self, rect: Option<Rect>) -> Option<crate::multisample::SavedTests> {
+    pub(crate) fn one_sample_tests(&mut self, rect: Option<Rect>) -> Option<crate::multisample::SavedTests> {
         let s = &self.state;
         if self.fb.samples() == 1 || !(s.depth_test || s.stencil_test) {
             return None;
@@ -746,7 +787,7 @@ impl Context {
     /// After the draw [`Context::one_sample_tests`] prepared: rasterizes it
     /// and puts samples 1..'s depth and stencil back; otherwise flushes the
     /// scene when it is over its bound.
-    fn end_one_sample_tests(&mut self, saved: Option<crate::multisample::SavedTests>) {
+    pub(crate) fn end_one_sample_tests(&mut self, saved: Option<crate::multisample::SavedTests>) {
         match saved {
             Some(saved) => {
                 self.finish_scene();
@@ -777,7 +818,7 @@ impl Context {
         if missing {
             return self.record(Err(GlError::InvalidOperation));
         }
-        if !self.raster.valid {
+        if !self.raster.valid || self.pixels_not_rendered(crate::select::token::COPY_PIXEL) {
             return Ok(());
         }
         // The source clipped to the framebuffer; the destination moves with it.

@@ -156,6 +156,68 @@ impl PixelState {
         &self.maps[name.index()]
     }
 
+    /// Whether any transfer operation does something (checked once per
+    /// `glTexImage`/`glReadPixels` call: the identity costs nothing else).
+    pub fn is_identity(&self) -> bool {
+        !(self.scales_or_biases()
+            || self.map_color
+            || self.map_stencil
+            || self.depth_scale != 1.0
+            || self.depth_bias != 0.0
+            || self.index_shift != 0
+            || self.index_offset != 0)
+    }
+
+    /// The colour transfer of Mesa's CPU paths (texture uploads, `glReadPixels`,
+    /// `glCopyTexImage`: `_mesa_apply_rgba_transfer_ops`, `main/pixeltransfer.c`):
+    /// scale and bias as a product then a sum, each map looked up at
+    /// `rint(c·(size − 1))` as GL says, then clamped to `[0, 1]` (NaN as 0).
+    pub fn cpu_colour(&self, c: [f32; 4]) -> [f32; 4] {
+        let mut out = c;
+        if self.scales_or_biases() {
+            for k in 0..4 {
+                out[k] = c[k] * self.scale[k] + self.bias[k];
+            }
+        }
+        let clamp = |v: f32| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+        if self.map_color {
+            let names = [
+                PixelMapName::RToR,
+                PixelMapName::GToG,
+                PixelMapName::BToB,
+                PixelMapName::AToA,
+            ];
+            for (k, name) in names.into_iter().enumerate() {
+                let m = self.map(name);
+                let i = (clamp(out[k]) * (m.len() - 1) as f32).round_ties_even() as usize;
+                out[k] = m[i.min(m.len() - 1)];
+            }
+        }
+        out.map(clamp)
+    }
+
+    /// Bytes read by `glReadPixels` in `format` ([`crate::ReadFormat`])
+    /// through [`Self::cpu_colour`], each component then rounded as Mesa
+    /// packs a float (`_mesa_float_to_unorm`: f32 product, ties to even).
+    pub fn transfer_read(&self, bytes: &mut [u8], format: crate::ReadFormat) {
+        use crate::ReadFormat as F;
+        let (bpp, order): (usize, [usize; 4]) = match format {
+            F::Rgba8 => (4, [0, 1, 2, 3]),
+            F::Bgra8 => (4, [2, 1, 0, 3]),
+            F::Rgb8 => (3, [0, 1, 2, 3]),
+        };
+        for px in bytes.chunks_exact_mut(bpp) {
+            let mut c = [0.0, 0.0, 0.0, 1.0];
+            for k in 0..bpp {
+                c[order[k]] = f32::from(px[k]) * (1.0 / 255.0);
+            }
+            let c = self.cpu_colour(c);
+            for k in 0..bpp {
+                px[k] = (c[order[k]] * 255.0).round_ties_even() as u8;
+            }
+        }
+    }
+
     /// Whether colour scale or bias does anything.
     pub fn scales_or_biases(&self) -> bool {
         self.scale != [1.0; 4] || self.bias != [0.0; 4]
@@ -273,5 +335,37 @@ mod tests {
         assert_eq!(p.depth(0.75), 0.75);
         p.set(PixelTransferParam::DepthBias(0.5));
         assert_eq!(p.depth(0.75), 1.0);
+    }
+}
+
+#[cfg(test)]
+mod cpu_tests {
+    use super::*;
+    use crate::{Context, FramebufferDesc, ReadFormat};
+
+    /// The CPU paths' maps take GL's entry, `rint(c·(size − 1))`: 0.9 of 8
+    /// entries is entry 6 (the drawing path's texture gives 7); the
+    /// identity leaves bytes as they are.
+    #[test]
+    fn reads_go_through_scale_bias_and_gl_map_lookups() {
+        let mut p = PixelState::default();
+        assert!(p.is_identity());
+        let m = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7];
+        p.set_map(PixelMapName::RToR, &m).unwrap();
+        p.set_map(PixelMapName::GToG, &[0.25, 0.75]).unwrap();
+        p.set(PixelTransferParam::MapColor(true));
+        assert!(!p.is_identity());
+        assert_eq!(p.cpu_colour([0.9, 0.49, 0.5, 1.0]), [0.6, 0.25, 0.0, 0.0]);
+        let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(4, 4)).unwrap();
+        gl.clear_color(0.2, 0.4, 0.6, 1.0).unwrap();
+        gl.clear(crate::ClearMask::COLOR).unwrap();
+        gl.pixel_transfer(PixelTransferParam::Scale(0, 2.0)).unwrap();
+        gl.pixel_transfer(PixelTransferParam::Bias(2, 0.5)).unwrap();
+        // 51·2/255 = 0.4 → 102; 153/255 + 0.5 clamps to 1.
+        assert_eq!(
+            gl.read_pixels(0, 0, 1, 1, ReadFormat::Bgra8).unwrap(),
+            [255, 102, 102, 255]
+        );
+        assert_eq!(gl.read_pixels_f32(0, 0, 1, 1).unwrap()[0][2], 1.0);
     }
 }

@@ -164,6 +164,7 @@ impl Context {
             tex_coords,
             index: c.index,
         };
+        self.render_mode.raster_hit(window[2]);
         Ok(())
     }
 
@@ -194,6 +195,7 @@ impl Context {
             tex_coords: c.tex_coords,
             index: c.index,
         };
+        self.render_mode.raster_hit(z2);
         Ok(())
     }
 }

@@ -291,6 +291,32 @@ impl RenderModeState {
     }
 
     /// The sink a draw's primitives reach in this (non-render) mode.
+    /// A valid raster position set (`glRasterPos`, `glWindowPos`): in
+    /// select mode a hit at its window z (GL 1.5 §5.2; Mesa's
+    /// `_mesa_RasterPos` and `window_pos3f`, `main/rastpos.c`).
+    pub fn raster_hit(&mut self, z: f32) {
+        if self.mode == RenderMode::Select {
+            self.select.hit(z);
+        }
+    }
+
+    /// A bitmap or pixel rectangle at the valid raster position `r` outside
+    /// render mode: in feedback mode `token` (`GL_BITMAP_TOKEN`, …) and the
+    /// raster position as a vertex (its window coordinates and w as they are,
+    /// the raster colour and unit 0's coordinates); in select mode nothing
+    /// (GL 1.5 §5.3, Mesa's `main/drawpix.c`). `false` in render mode: draw it.
+    pub fn raster_primitive(&mut self, token: f32, r: &crate::raster_pos::RasterPos) -> bool {
+        match self.mode {
+            RenderMode::Render => false,
+            RenderMode::Select => true,
+            RenderMode::Feedback => {
+                self.feedback.token(token);
+                self.feedback.vertex(r.window, r.color, r.tex_coords[0]);
+                true
+            }
+        }
+    }
+
     pub fn sink(&mut self, layout: VaryingLayout, color: Vec4, tex: Vec4) -> ModeSink<'_> {
         ModeSink {
             state: self,

@@ -112,14 +112,15 @@
 //! code runs a span only when its groups end inside those columns.
 
 use crate::key::{
-    BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, FragmentKey,
+    AlphaCoverage, BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey,
+    FragmentKey,
     LogicOp, Stage, StencilKey, StencilOp,
 };
 use crate::pixel;
 use crate::shade::{Planes, COLOUR_BOUNDED};
 use crate::span::{FragmentSpan, SPAN_MAX};
 use crate::uniforms::FragmentUniforms;
-use cranelift_codegen::ir::condcodes::IntCC;
+use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
 use cranelift_codegen::ir::immediates::V128Imm;
 use cranelift_codegen::ir::{types, AbiParam, Block, BlockArg, InstBuilder, MemFlagsData, Signature, Type, Value};
 use cranelift_codegen::isa::OwnedTargetIsa;
@@ -420,6 +421,9 @@ struct Group {
     /// test reads it before the stencil and depth tests, the other channels
     /// wait for the groups that pass them.
     alpha_shaded: bool,
+    /// The shaded alpha in f32 (before it became a byte), for alpha to
+    /// coverage, once the shading stage has made it.
+    alpha_f: Option<Value>,
 }
 
 struct Gen<'a> {
@@ -961,6 +965,7 @@ impl<'a> Gen<'a> {
             w: None,
             full: false,
             alpha_shaded: false,
+            alpha_f: None,
         }
     }
 
@@ -1008,7 +1013,8 @@ impl<'a> Gen<'a> {
             .as_slice()
             .iter()
             .any(|s| matches!(s, Stage::Pack { .. } | Stage::Blend(_)));
-        let needs_alpha = needs_color || self.key.alpha_test.is_some();
+        let coverage = self.key.shade.map(|s| s.coverage).filter(AlphaCoverage::is_on);
+        let needs_alpha = needs_color || self.key.alpha_test.is_some() || coverage.is_some();
         if let Some(shade) = self.key.shade {
             self.shade_depth(&mut g, sv, &shade);
         }
@@ -1031,8 +1037,10 @@ impl<'a> Gen<'a> {
                 // alpha test gets it now, the other channels are shaded only
                 // for the groups the stencil and depth tests leave (the `ops`
                 // frame's depth test kills most).
-                (Some(shade), Stage::AlphaTest(_)) if !shade.textured() => self.shade_alpha(&mut g, sv, &shade),
-                (Some(shade), Stage::AlphaTest(_) | Stage::Blend(_) | Stage::Pack { .. }) => {
+                (Some(shade), Stage::AlphaTest(_) | Stage::AlphaCoverage(_)) if !shade.textured() => {
+                    self.shade_alpha(&mut g, sv, &shade)
+                }
+                (Some(shade), Stage::AlphaTest(_) | Stage::AlphaCoverage(_) | Stage::Blend(_) | Stage::Pack { .. }) => {
                     self.shade_color(&mut g, sv, &shade);
                     colour_due = None;
                 }
@@ -1049,6 +1057,29 @@ impl<'a> Gen<'a> {
                     let live = self.live(&mut g);
                     g.live = Some(self.b.ins().band(live, pass));
                     self.skip_if_dead(&g, next);
+                }
+                Stage::AlphaCoverage(c) => {
+                    if let Some(q) = c.quarters {
+                        // The span's colour: its byte times 1/255, as the interpreter.
+                        let a = match g.alpha_f {
+                            Some(a) => a,
+                            None => {
+                                let f = self.b.ins().fcvt_from_sint(types::F32X4, g.rgba[3]);
+                                let k = self.fconst(1.0 / 255.0);
+                                self.b.ins().fmul(f, k)
+                            }
+                        };
+                        let t = self.fconst(AlphaCoverage::threshold(q));
+                        // Ordered: NaN fails, as `!(a > t)` in the interpreter.
+                        let pass = self.b.ins().fcmp(FloatCC::GreaterThan, a, t);
+                        let live = self.live(&mut g);
+                        g.live = Some(self.b.ins().band(live, pass));
+                        self.skip_if_dead(&g, next);
+                    }
+                    if c.to_one {
+                        g.rgba[3] = self.splat(255);
+                        g.alpha_shaded = true;
+                    }
                 }
                 Stage::StencilTest { stencil, depth_on } => self.stencil_test(&mut g, (stencil, depth_on), u, next),
                 Stage::DepthTest { depth, stencil } => self.depth_test(&mut g, sv, (depth, stencil), u, next),

@@ -220,6 +220,18 @@ pub(crate) fn run_span(
                     }
                 }
             }
+            Stage::AlphaCoverage(c) => {
+                for i in lanes(live) {
+                    if let Some(q) = c.quarters {
+                        if !crate::key::AlphaCoverage::keeps(rgba[i][3], q) {
+                            live &= !(1 << i);
+                        }
+                    }
+                    if c.to_one {
+                        rgba[i][3] = 1.0;
+                    }
+                }
+            }
             Stage::StencilTest { stencil, depth_on } => stencil_stage(stencil, depth_on, u, (x0, y), &mut live, t),
             Stage::DepthTest { depth, stencil } => depth_stage(depth, stencil, u, (x0, y, &z), &mut live, t),
             Stage::Count => t.add_samples_passed(u64::from(live.count_ones())),

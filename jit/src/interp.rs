@@ -5,7 +5,8 @@
 //! exactly as this one does.
 
 use crate::key::{
-    BlendEquation, BlendFactor, BlendKey, ColorMask, DepthKey, FragmentKey, KeyError, Stage, StencilKey, StencilOp,
+    AlphaCoverage, BlendEquation, BlendFactor, BlendKey, ColorMask, DepthKey, FragmentKey, KeyError, Stage, StencilKey,
+    StencilOp,
 };
 use crate::pixel;
 use crate::shade::{self, Planes};
@@ -105,6 +106,15 @@ fn run_span(
     }
     let mut packed = [0u32; SPAN_MAX];
     let mut z = span.z;
+    // The shaded alpha in f32, for alpha to coverage (a span's colour: its
+    // byte times 1/255).
+    let coverage = key.shade.is_some_and(|s| s.coverage.quarters.is_some());
+    let mut alpha = [0.0f32; SPAN_MAX];
+    if coverage {
+        for (a, &b) in alpha.iter_mut().zip(&span.a) {
+            *a = f32::from(b) * (1.0 / 255.0);
+        }
+    }
 
     for stage in stages {
         match *stage {
@@ -112,7 +122,15 @@ fn run_span(
                 let row = row_of(y, t.height());
                 for i in lanes(live) {
                     let px = (x0 + i as u32) as f32;
-                    let (c, d) = shade::fragment(&shade, planes, (px, row), &u.fog, key.depth_format, textures);
+                    let (c, d) = if coverage {
+                        let (c, d) = shade::fragment_f32(&shade, planes, (px, row), &u.fog, key.depth_format, textures);
+                        if let Some(c) = c {
+                            alpha[i] = c[3];
+                        }
+                        (c.map(|c| c.map(shade::unorm8)), d)
+                    } else {
+                        shade::fragment(&shade, planes, (px, row), &u.fog, key.depth_format, textures)
+                    };
                     if let Some(c) = c {
                         rgba[i] = c;
                     }
@@ -137,6 +155,19 @@ fn run_span(
                 for i in lanes(live) {
                     if !func.test(rgba[i][3], u.alpha_ref) {
                         live &= !(1 << i);
+                    }
+                }
+            }
+            Stage::AlphaCoverage(c) => {
+                for i in lanes(live) {
+                    if let Some(q) = c.quarters {
+                        // `!(a > t)`: NaN fails.
+                        if !AlphaCoverage::keeps(alpha[i], q) {
+                            live &= !(1 << i);
+                        }
+                    }
+                    if c.to_one {
+                        rgba[i][3] = 255;
                     }
                 }
             }

@@ -508,6 +508,42 @@ pub struct ShadeKey {
     /// environment runs on the primary colour before the colour sum and fog,
     /// so texturing needs `color`.
     pub tex: [Option<crate::texture::TexUnitKey>; crate::texture::MAX_UNITS],
+    /// Multisampling's alpha stages for the sample this draw writes.
+    pub coverage: AlphaCoverage,
+}
+
+/// `GL_SAMPLE_ALPHA_TO_COVERAGE` and `GL_SAMPLE_ALPHA_TO_ONE` (GL 1.5
+/// §4.1.3) as llvmpipe runs them (`lp_state_fs.c`, after the alpha test):
+/// sample `s` of 4 is kept when the shaded alpha (f32) is above `s/4`
+/// (`lp_build_sample_alpha_to_coverage`); a draw with multisampling off in
+/// its rasterizer state (bitmaps) keeps the fragment when alpha is above
+/// 0.5 (`lp_build_alpha_to_coverage`); then alpha becomes 1. The samples
+/// being drawn one scene each, a key holds the one sample's threshold.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct AlphaCoverage {
+    /// Kill the fragment unless alpha > `quarters / 4` (`None`: off).
+    pub quarters: Option<u8>,
+    /// Alpha becomes 1 after the coverage test.
+    pub to_one: bool,
+}
+
+impl AlphaCoverage {
+    /// Whether either stage is on.
+    pub fn is_on(&self) -> bool {
+        self.quarters.is_some() || self.to_one
+    }
+
+    /// The threshold alpha must be above, as llvmpipe makes it
+    /// (`step · s` with `step = 1.0 / 4`, exact).
+    pub fn threshold(quarters: u8) -> f32 {
+        0.25 * f32::from(quarters)
+    }
+
+    /// Whether a fragment of alpha `a` is kept at threshold `quarters`
+    /// (`a > t`, ordered: NaN is not kept).
+    pub fn keeps(a: f32, quarters: u8) -> bool {
+        a > Self::threshold(quarters)
+    }
 }
 
 impl ShadeKey {
@@ -609,6 +645,9 @@ impl FragmentKey {
         if let Some(func) = self.alpha_test {
             s.push(Stage::AlphaTest(func));
         }
+        if let Some(coverage) = self.shade.map(|s| s.coverage).filter(AlphaCoverage::is_on) {
+            s.push(Stage::AlphaCoverage(coverage));
+        }
         if let Some(stencil) = self.stencil {
             s.push(Stage::StencilTest {
                 stencil,
@@ -642,7 +681,7 @@ impl FragmentKey {
 }
 
 /// Longest possible stage list.
-pub const MAX_STAGES: usize = 10;
+pub const MAX_STAGES: usize = 11;
 
 /// One per-fragment stage with the part of the key it needs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -657,6 +696,9 @@ pub enum Stage {
     Scissor,
     /// Kill fragments whose alpha fails `alpha <func> ref`.
     AlphaTest(CompareFunc),
+    /// Alpha to coverage (kill unless the f32 alpha is above the sample's
+    /// threshold) and alpha to one.
+    AlphaCoverage(AlphaCoverage),
     /// Test and apply the `fail` op; with the depth test off, also apply `zpass`.
     StencilTest { stencil: StencilKey, depth_on: bool },
     /// Test, write depth, and apply the stencil `zfail`/`zpass` ops when stencil is on.

@@ -28,8 +28,8 @@ pub mod uniforms;
 pub use cache::{CacheStats, SpecialistCache};
 pub use interp::FragmentError;
 pub use key::{
-    BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey, FragmentKey,
-    KeyError, LogicOp, ShadeKey, Stage, StencilKey, StencilOp,
+    AlphaCoverage, BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey,
+    FragmentKey, KeyError, LogicOp, ShadeKey, Stage, StencilKey, StencilOp,
 };
 pub use shade::{FogMode, FogUniforms, Planes};
 pub use span::{FragmentSpan, SPAN_MAX};

@@ -345,16 +345,21 @@ proptest! {
     }
 }
 
-/// Shading stages: any combination, flat or not.
+/// Shading stages: any combination, flat or not, with or without
+/// multisampling's alpha stages (alpha to coverage at any sample's
+/// threshold, alpha to one).
 fn shade_key() -> impl Strategy<Value = ShadeKey> {
     let fog = prop::option::of(select(&[FogMode::Linear, FogMode::Exp, FogMode::Exp2][..]));
-    (any::<[bool; 4]>(), fog).prop_map(|([color, flat, color_sum, depth], fog)| ShadeKey {
+    let coverage = (prop::option::of(0u8..4), any::<bool>())
+        .prop_map(|(quarters, to_one)| softgl_jit::AlphaCoverage { quarters, to_one });
+    (any::<[bool; 4]>(), fog, coverage).prop_map(|([color, flat, color_sum, depth], fog, coverage)| ShadeKey {
         color,
         flat,
         color_sum,
         fog,
         depth,
         tex: Default::default(),
+        coverage,
     })
 }
 

@@ -961,10 +961,30 @@ fn raster_positions_and_bitmaps_match_mesa() {
     for k in 0..8 {
         let name = format!("bitmaps.{k}");
         let (m, s) = (mesa.file(&name), soft.file(&name));
+        let clear = s[s.len() - 4..].to_vec();
+        if k == 3 {
+            // Fog: llvmpipe does not fog bitmaps (its quad has fog coordinate
+            // 0, `docs/llvmpipe-facts.md` §26); softgl fogs them at the raster
+            // distance as GL says. The same pixels are drawn; llvmpipe's in
+            // the raster colour (0.2, 0.3, 1: 51, 76, 255), softgl's between it and the
+            // fog colour (0.9, 0.8, 0.1), each channel.
+            for (a, b) in m.chunks_exact(4).zip(s.chunks_exact(4)) {
+                assert_eq!(a == clear.as_slice(), b == clear.as_slice(), "scene 3: coverage");
+                if a != clear.as_slice() {
+                    assert_eq!(a[..3], [51, 76, 255]);
+                    let fog = [230u8, 204, 26];
+                    for c in 0..3 {
+                        let (lo, hi) = (a[c].min(fog[c]), a[c].max(fog[c]));
+                        assert!((lo..=hi).contains(&b[c]), "scene 3: {b:?} is not fogged {a:?}");
+                    }
+                    assert_ne!(a[..3], b[..3], "scene 3: not fogged");
+                }
+            }
+            continue;
+        }
         let differing = m.chunks_exact(4).zip(s.chunks_exact(4)).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "scene {k}: {differing} pixels differ");
         // Something was drawn: pixels other than the clear colour.
-        let clear = s[s.len() - 4..].to_vec();
         let drawn = s.chunks_exact(4).filter(|p| *p != clear.as_slice()).count();
         assert!(drawn > 100, "scene {k}: only {drawn} pixels drawn");
     }
@@ -1275,4 +1295,95 @@ fn float_depth_and_clip_control_match_mesa() {
     // The scenes drew something, and reverse Z kept the near surfaces.
     let z = mesa.f32s("reverse.zf");
     assert!(z.iter().filter(|&&v| v > 0.5).count() > 200 && z.contains(&0.0));
+}
+
+/// The pixel-path gaps of issue 14 (`tests/c/pixgaps.c`): textured pixel
+/// rectangles, pixel transfer on texture uploads, copies and glReadPixels.
+#[test]
+fn pixel_gaps_match_mesa() {
+    let Some(exe) = build("pixgaps") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    let (w, h) = (64, 48);
+    for k in 0..2 {
+        let name = format!("pixgaps.{k}");
+        let (m, s) = (mesa.file(&name), soft.file(&name));
+        let px = |b: &[u8], x: usize, y: usize| -> [u8; 4] { b[4 * (y * w + x)..][..4].try_into().unwrap() };
+        // Scene 1, rows 16..: the glCopyTexImage2D/glCopyTexSubImage2D
+        // textures. Mesa's copy through the transfer operations
+        // (`fallback_copy_texsubimage`) reads rows in the wrong order and
+        // past the region (zeros), so these are checked against GL's rule:
+        // each source pixel as f32, red ×0.75, green ×1.5, blue −0.2,
+        // clamped, rounded (±1: f32 against Mesa's exact conversions).
+        let rows = if k == 1 { 16 } else { h };
+        for y in 0..rows {
+            for x in 0..w {
+                assert_eq!(px(&m, x, y), px(&s, x, y), "scene {k}: pixel ({x}, {y})");
+            }
+        }
+        if k == 1 {
+            let transfer = |c: [u8; 4]| {
+                let f = c.map(|v| f32::from(v) / 255.0);
+                let t = [f[0] * 0.75, f[1] * 1.5, f[2] - 0.2, f[3]];
+                t.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
+            };
+            // The 16×8 texture on quads 32×32: texel (i, j) at pixel (2i, 16 + 4j).
+            for j in 0..8 {
+                for i in 0..16 {
+                    let first = transfer(px(&s, 8 + i, 4 + j));
+                    let sub = if (4..12).contains(&i) && (2..6).contains(&j) {
+                        transfer(px(&s, 40 + i - 4, 4 + j - 2))
+                    } else {
+                        first
+                    };
+                    for (x0, want) in [(0, first), (32, sub)] {
+                        let got = px(&s, x0 + 2 * i, 16 + 4 * j);
+                        let d = (0..4).map(|c| got[c].abs_diff(want[c])).max().unwrap();
+                        assert!(
+                            d <= 1,
+                            "scene 1: copied texel ({i}, {j}) at x {x0}: {got:?}, not {want:?}"
+                        );
+                    }
+                }
+            }
+        }
+        let clear = s[s.len() - 4..].to_vec();
+        let drawn = s.chunks_exact(4).filter(|p| *p != clear.as_slice()).count();
+        assert!(drawn > 100, "scene {k}: only {drawn} pixels drawn");
+    }
+    // glReadPixels through the transfer operations: as Mesa, but for
+    // GL_FLOAT (line 5), which Mesa leaves unclamped after scale and bias;
+    // GL clamps every RGBA component in its final conversion (§4.3.2).
+    for (i, (a, b)) in mesa.lines.iter().zip(&soft.lines).enumerate().skip(1) {
+        if i == 4 {
+            let vals = |l: &str| l.split(' ').map(|v| v.parse::<f32>().unwrap()).collect::<Vec<_>>();
+            let clamped: Vec<f32> = vals(a).iter().map(|v| v.min(1.0)).collect();
+            assert_eq!(vals(b), clamped, "GL_FLOAT read");
+        } else {
+            assert_eq!(a, b, "line {i}");
+        }
+    }
+}
+
+/// Alpha to coverage and alpha to one in a 4× framebuffer object, and
+/// drawing with GL_MULTISAMPLE off after multisampled drawing (depth and
+/// stencil of sample 0), `tests/c/a2c.c`: resolved, against llvmpipe byte
+/// for byte.
+#[test]
+fn alpha_to_coverage_matches_mesa() {
+    let Some(exe) = build("a2c") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    for k in 0..6 {
+        let name = format!("a2c.{k}");
+        let (m, s) = (mesa.file(&name), soft.file(&name));
+        let differing: Vec<usize> = (0..m.len() / 4)
+            .filter(|&i| m[4 * i..][..4] != s[4 * i..][..4])
+            .collect();
+        assert!(
+            differing.is_empty(),
+            "scene {k}: {} pixels differ, first at {:?}",
+            differing.len(),
+            differing.first().map(|i| (i % 64, i / 64))
+        );
+    }
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
 }

@@ -120,7 +120,13 @@ fn copy_into_slice(
     xy: [i32; 2],
     size: [i32; 2],
     depth: bool,
+    transfer: Option<&crate::pixel_transfer::PixelState>,
 ) {
+    let format = if depth {
+        PixelFormat::DepthComponent
+    } else {
+        PixelFormat::Rgba
+    };
     for j in 0..size[1].max(0) {
         for i in 0..size[0].max(0) {
             let (x, y) = (i64::from(xy[0]) + i64::from(i), i64::from(xy[1]) + i64::from(j));
@@ -128,6 +134,9 @@ fn copy_into_slice(
                 continue;
             };
             if let Some(rgba) = read_source(fb, depth, x, y) {
+                // Mesa's copy through a float image and the texture store
+                // (`fallback_copy_texsubimage`, `st_cb_texture.c`).
+                let rgba = transfer.map_or(rgba, |t| unpack::transfer(t, format, rgba));
                 let at = (offset[0] + i as usize, offset[1] + j as usize, offset[2]);
                 unpack::store_texel(img, at, rgba, Route::Direct);
             }
@@ -299,7 +308,8 @@ impl Context {
             let mut img = TexImage::new(internal, size.map(|s| s as u32));
             if let Some(p) = pixels.filter(|_| !usize3.contains(&0)) {
                 let layout = client_layout(&p, &store, dims, usize3)?;
-                unpack::upload(&mut img, [0; 3], usize3, &PixelData { store, ..p }, &layout);
+                let transfer = Some(&gl.pixel).filter(|t| !t.is_identity());
+                unpack::upload(&mut img, [0; 3], usize3, &PixelData { store, ..p }, &layout, transfer);
             }
             let obj = gl.textures.get_mut().current_mut(tt);
             if let Some(slot) = obj.image_mut(level, target.face()) {
@@ -366,9 +376,10 @@ impl Context {
                 return Ok(());
             }
             let layout = client_layout(&pixels, &pixels.store, target.dims(), usize3)?;
+            let transfer = Some(&gl.pixel).filter(|t| !t.is_identity());
             let obj = gl.textures.get_mut().current_mut(tt);
             if let Some(Some(img)) = obj.image_mut(level, target.face()) {
-                unpack::upload(img, offset.map(|o| o as usize), usize3, &pixels, &layout);
+                unpack::upload(img, offset.map(|o| o as usize), usize3, &pixels, &layout, transfer);
             }
             gl.check_gen_mipmap(target, level)
         })
@@ -448,7 +459,8 @@ impl Context {
             };
             let mut img = TexImage::new(internal, stripped.map(|s| s as u32));
             let region = [stripped[0], stripped[1]];
-            copy_into_slice(gl.read_ref(&view), &mut img, [0, 0, 0], xy, region, depth);
+            let transfer = Some(&gl.pixel).filter(|t| !t.is_identity());
+            copy_into_slice(gl.read_ref(&view), &mut img, [0, 0, 0], xy, region, depth, transfer);
             if let Some(slot) = gl.textures.get_mut().current_mut(tt).image_mut(level, target.face()) {
                 *slot = Some(img);
             }
@@ -494,7 +506,8 @@ impl Context {
             let fb = gl.read_ref(&view);
             check(!depth || fb.depth_format().is_some(), GlError::InvalidOperation)?;
             let at = off.map(|o| o as usize);
-            copy_into_slice(fb, &mut img, at, xy, [region[0], region[1]], depth);
+            let transfer = Some(&gl.pixel).filter(|t| !t.is_identity());
+            copy_into_slice(fb, &mut img, at, xy, [region[0], region[1]], depth, transfer);
             if let Some(slot) = gl.textures.get_mut().current_mut(tt).image_mut(level, target.face()) {
                 *slot = Some(img);
             }

@@ -10,6 +10,7 @@ use super::format::{
 use super::jit::{BaseFormat, TexelFormat};
 use super::object::TexImage;
 use super::{PixelData, PixelStore};
+use crate::pixel_transfer::PixelState;
 
 /// Where an image's pixels are in client memory (GL 1.5 §3.6.4, Mesa
 /// `main/image.c` `_mesa_image_address` and `_mesa_image_row_stride`).
@@ -527,10 +528,44 @@ pub fn store_texel(img: &mut TexImage, (x, y, z): (usize, usize, usize), rgba: [
     put_texel(&mut img.texels_mut()[at..], &storage, n);
 }
 
-/// Converts `data`'s pixels into the `size` region of `img` at `offset`.
-/// `data.bytes` must hold `layout` (checked by the caller).
-pub fn upload(img: &mut TexImage, offset: [usize; 3], size: [usize; 3], data: &PixelData<'_>, layout: &ClientLayout) {
+/// Client components `rgba` (fetched as `format`) after the pixel transfer
+/// operations `t` (GL 1.5 §3.6.4, as Mesa's texture store applies them):
+/// colours as floats through scale, bias and maps, clamped; depth through
+/// depth scale and bias; stencil indices through shift, offset and map.
+pub fn transfer(t: &PixelState, format: PixelFormat, rgba: [Raw; 4]) -> [Raw; 4] {
+    match format {
+        PixelFormat::DepthComponent => [Raw::F(t.depth(rgba[0].to_f32())), rgba[1], rgba[2], rgba[3]],
+        PixelFormat::DepthStencil => {
+            let s = match rgba[1] {
+                Raw::U(s, _) => t.stencil(i64::from(s)) as u8,
+                _ => 0,
+            };
+            [
+                Raw::F(t.depth(rgba[0].to_f32())),
+                Raw::U(u32::from(s), 8),
+                rgba[2],
+                rgba[3],
+            ]
+        }
+        _ => t.cpu_colour(rgba.map(Raw::to_f32)).map(Raw::F),
+    }
+}
+
+/// Converts `data`'s pixels into the `size` region of `img` at `offset`,
+/// through the pixel transfer operations `transfer` when they are not the
+/// identity. `data.bytes` must hold `layout` (checked by the caller).
+pub fn upload(
+    img: &mut TexImage,
+    offset: [usize; 3],
+    size: [usize; 3],
+    data: &PixelData<'_>,
+    layout: &ClientLayout,
+    transfer: Option<&PixelState>,
+) {
     let storage = img.internal.storage();
+    if let Some(t) = transfer {
+        return upload_transferred(img, offset, size, data, layout, t);
+    }
     if data.ty == PixelType::UnsignedByte
         && storage.base != BaseFormat::Depth
         && storage.is_array()
@@ -549,6 +584,36 @@ pub fn upload(img: &mut TexImage, offset: [usize; 3], size: [usize; 3], data: &P
                 let rgba = fetch(data.bytes, layout.at(x, y, z), data.format, data.ty, swap);
                 let at = (offset[0] + x, offset[1] + y, offset[2] + z);
                 store_texel(img, at, rgba, route);
+                if stencil {
+                    let Raw::U(s, _) = rgba[1] else { continue };
+                    let so = img.stencil_offset(at.0, at.1, at.2);
+                    img.texels_mut()[so] = s as u8;
+                }
+            }
+        }
+    }
+}
+
+/// [`upload`] through the transfer operations `t`: each pixel as floats
+/// (Mesa's temporary float image, `_mesa_make_temp_float_image`), stored
+/// as a float is stored.
+fn upload_transferred(
+    img: &mut TexImage,
+    offset: [usize; 3],
+    size: [usize; 3],
+    data: &PixelData<'_>,
+    layout: &ClientLayout,
+    t: &PixelState,
+) {
+    let swap = data.store.swap_bytes;
+    let stencil = data.format == PixelFormat::DepthStencil && img.internal.stencil_bits() > 0;
+    for z in 0..size[2] {
+        for y in 0..size[1] {
+            for x in 0..size[0] {
+                let raw = fetch(data.bytes, layout.at(x, y, z), data.format, data.ty, swap);
+                let rgba = transfer(t, data.format, raw);
+                let at = (offset[0] + x, offset[1] + y, offset[2] + z);
+                store_texel(img, at, rgba, Route::Direct);
                 if stencil {
                     let Raw::U(s, _) = rgba[1] else { continue };
                     let so = img.stencil_offset(at.0, at.1, at.2);

@@ -65,6 +65,21 @@ impl Gen<'_> {
                     g.live = Some(self.b.ins().band(live, pass));
                     self.skip_if_dead(&g, next);
                 }
+                Stage::AlphaCoverage(cov) => {
+                    let mut c = self.deep_colour(&mut g, sv, &mut d);
+                    if let Some(q) = cov.quarters {
+                        // Ordered: NaN fails, as `AlphaCoverage::keeps`.
+                        let t = self.fconst(crate::key::AlphaCoverage::threshold(q));
+                        let pass = self.b.ins().fcmp(FloatCC::GreaterThan, c[3], t);
+                        let live = self.live(&mut g);
+                        g.live = Some(self.b.ins().band(live, pass));
+                        self.skip_if_dead(&g, next);
+                    }
+                    if cov.to_one {
+                        c[3] = self.fconst(1.0);
+                        d.rgba = Some(c);
+                    }
+                }
                 Stage::StencilTest { stencil, depth_on } => self.stencil_test(&mut g, (stencil, depth_on), u, next),
                 Stage::DepthTest { depth, stencil } => self.depth_test(&mut g, sv, (depth, stencil), u, next),
                 Stage::Count => self.count(&mut g, sv),

@@ -203,6 +203,9 @@ impl Gen<'_> {
         }
         // The other channels, shaded later, read w.
         let a = self.colour_planes(g, sv, key, (&[slot::COLOR + 3], true))[0];
+        if key.coverage.quarters.is_some() {
+            g.alpha_f = Some(a);
+        }
         g.rgba[3] = self.unorm_lanes_small(a, 255);
         g.alpha_shaded = true;
     }
@@ -212,6 +215,9 @@ impl Gen<'_> {
     pub(super) fn shade_color(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
         let alpha_shaded = g.alpha_shaded;
         let c = self.shaded_f32(g, sv, key);
+        if !alpha_shaded && key.coverage.quarters.is_some() {
+            g.alpha_f = Some(c[3]);
+        }
         if self.packs_from_shade() {
             // Straight to the packed pixels: no later stage reads the channels.
             g.packed = Some(self.unorm8_packed(c, sv.colour_bounded));
@@ -281,6 +287,7 @@ impl Gen<'_> {
     /// [`Self::packs_from_shade`] of `k`.
     pub(super) fn packs_from_shade_of(k: &FragmentKey) -> bool {
         k.alpha_test.is_none()
+            && !k.shade.is_some_and(|s| s.coverage.is_on())
             && (k.blend.is_none() || k.logic_op.is_some())
             && matches!(
                 k.color_format,

@@ -4,6 +4,7 @@ use super::enums::decode;
 use super::now;
 use crate::consts::*;
 use crate::gl_state::PixelStore;
+use softgl::pixel_transfer::PixelState;
 use softgl::texture::unpack::ClientLayout;
 use softgl::texture::{PixelFormat, PixelType};
 use softgl::{Context, Framebuffer, GlError, GlResult};
@@ -138,7 +139,19 @@ fn source(format: GLenum) -> GlResult<Source> {
 /// `None` outside the framebuffer, which leaves the caller's bytes untouched.
 /// `clamp`: a deep colour buffer's values are clamped to [0, 1]
 /// (`GL_CLAMP_READ_COLOR`'s `GL_FIXED_ONLY` for a fixed-point framebuffer).
-fn read_pixel(fb: &Framebuffer, (src, clamp): (Source, bool), x: i64, y: i64, out: &mut Vec<f64>) -> Option<()> {
+///
+/// `transfer`: the pixel transfer operations, when not the identity (GL 1.5
+/// §4.3.2, as Mesa's `read_rgba_pixels` and `_mesa_pack_depth_span` /
+/// `_mesa_pack_stencil_span` apply them): colours as f32 through scale,
+/// bias and maps, clamped, before the luminance sum; depth scaled, biased
+/// and clamped; stencil indices shifted, offset and mapped.
+fn read_pixel(
+    fb: &Framebuffer,
+    (src, clamp): (Source, bool),
+    (x, y): (i64, i64),
+    transfer: Option<&PixelState>,
+    out: &mut Vec<f64>,
+) -> Option<()> {
     let (x, y) = (u32::try_from(x).ok()?, u32::try_from(y).ok()?);
     out.clear();
     match src {
@@ -160,6 +173,10 @@ fn read_pixel(fb: &Framebuffer, (src, clamp): (Source, bool), x: i64, y: i64, ou
             } else {
                 fb.pixel(x, y)?.map(|c| f64::from(f32::from(c) * (1.0 / 255.0)))
             };
+            let p = match transfer {
+                Some(t) => t.cpu_colour(p.map(|c| c as f32)).map(f64::from),
+                None => p,
+            };
             let luminance = |p: [f64; 4]| {
                 let l = p[0] + p[1] + p[2];
                 if clamp {
@@ -174,16 +191,32 @@ fn read_pixel(fb: &Framebuffer, (src, clamp): (Source, bool), x: i64, y: i64, ou
             // The stored float, and as Mesa's `z32_float_to_z32_unorm` the
             // 32-bit value the integer types narrow (`u_format_zs.c`).
             let z = f64::from(f32::from_bits(fb.depth_at(x, y)?));
-            out.push(z);
-            out.push(f64::from((z * 4_294_967_295.0) as u32));
+            match transfer {
+                Some(t) => out.extend([f64::from(t.depth(z as f32)), -1.0]),
+                None => out.extend([z, f64::from((z * 4_294_967_295.0) as u32)]),
+            }
         }
         Source::Depth => {
             let max = fb.depth_format()?.max_value();
-            out.push(f64::from(fb.depth_at(x, y)?) / f64::from(max));
-            // The stored value too, for the integer types' bit replication.
-            out.push(f64::from(fb.depth_at(x, y)?));
+            let d = f64::from(fb.depth_at(x, y)?) / f64::from(max);
+            match transfer {
+                Some(t) => {
+                    let d = t.depth(d as f32);
+                    out.push(f64::from(d));
+                    // The integer types then take it as a float (not bit-replicated).
+                    out.push(-1.0);
+                }
+                None => {
+                    out.push(d);
+                    // The stored value too, for the integer types' bit replication.
+                    out.push(f64::from(fb.depth_at(x, y)?));
+                }
+            }
         }
-        Source::Stencil => out.push(f64::from(fb.stencil_at(x, y)?)),
+        Source::Stencil => {
+            let s = i64::from(fb.stencil_at(x, y)?);
+            out.push(transfer.map_or(s, |t| t.stencil(s)) as f64);
+        }
         Source::DepthStencil => {
             out.push(f64::from(fb.depth_at(x, y)?));
             out.push(f64::from(fb.stencil_at(x, y)?));
@@ -342,18 +375,13 @@ unsafe fn read_pixels(
     // Mesa's `_AllColorBuffersFixedPoint`: its OSMesa buffer counts as
     // fixed-point whatever its type, a float object does not.
     let clamp = !(float_src && gl.fbo_state().read_binding() != 0);
+    // Checked once: the identity reads as before.
+    let transfer = Some(gl.pixel_state()).filter(|t| !t.is_identity());
     let mut vals = Vec::with_capacity(4);
     for j in 0..h {
         for i in 0..w {
-            if read_pixel(
-                fb,
-                (src, clamp),
-                i64::from(x) + i as i64,
-                i64::from(y) + j as i64,
-                &mut vals,
-            )
-            .is_none()
-            {
+            let at = (i64::from(x) + i as i64, i64::from(y) + j as i64);
+            if read_pixel(fb, (src, clamp), at, transfer, &mut vals).is_none() {
                 continue;
             }
             let at = start + j * stride + i * pixel_bytes;
@@ -395,7 +423,8 @@ unsafe fn read_pixels(
                 put(&mut dst[at..], GL_UNSIGNED_INT, f64::from(v), true, pack.swap_bytes);
                 continue;
             }
-            if let (Source::Depth, GL_UNSIGNED_INT | GL_UNSIGNED_SHORT) = (src, ty) {
+            let replicated = matches!(src, Source::Depth) && vals[1] >= 0.0;
+            if let (Source::Depth, GL_UNSIGNED_INT | GL_UNSIGNED_SHORT, true) = (src, ty, replicated) {
                 if float_depth && ty == GL_UNSIGNED_SHORT {
                     // Float depth to a short: the general float path (Mesa's `_mesa_pack_depth_span`).
                     put(&mut dst[at..], ty, vals[0], false, pack.swap_bytes);
@@ -406,7 +435,14 @@ unsafe fn read_pixels(
                 continue;
             }
             for (k, &v) in vals.iter().take(comps).enumerate() {
-                if float_src && matches!(ty, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT) {
+                if stencil && transfer.is_some() {
+                    // Mesa packs the index's low bits (`_mesa_pack_stencil_span`).
+                    let bits = 8 * size as u32;
+                    let v = (v as i64 & ((1i64 << bits) - 1)) as f64;
+                    put(&mut dst[at + k * size..], ty, v, true, pack.swap_bytes);
+                    continue;
+                }
+                if (float_src || transfer.is_some()) && matches!(ty, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT) {
                     // Mesa's `_mesa_float_to_unorm`: f32 product, rounded half to even.
                     let max = if ty == GL_UNSIGNED_BYTE { 255.0f32 } else { 65535.0 };
                     let v = v as f32;
