@@ -1443,8 +1443,8 @@ impl Context {
                 // map mostly its clear value) convert once: binding a new
                 // 4096² map cost ~930 M instructions, 55 a texel (callgrind).
                 let mut last: Option<(u32, u32)> = None;
-                for (i, o) in out.iter_mut().enumerate() {
-                    let bits = u32::from_ne_bytes([t[4 * i], t[4 * i + 1], t[4 * i + 2], t[4 * i + 3]]);
+                for (i, (o, b)) in out.iter_mut().zip(t.chunks_exact(4)).enumerate() {
+                    let bits = u32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
                     *o = match last {
                         Some((b, v)) if b == bits => v,
                         _ => {

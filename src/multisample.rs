@@ -483,19 +483,23 @@ fn resolve_row_4x8(dst: &mut [u8], src: [&[u8]; 4]) {
     // a 320×240 MuJoCo frame was ~90 instructions a pixel byte by byte.
     let n = dst.len().min(a.len()).min(b.len()).min(c.len()).min(d.len());
     let whole = n / 8 * 8;
-    let word = |v: &[u8], k: usize| u64::from_ne_bytes(std::array::from_fn(|i| v[k + i]));
-    for k in (0..whole).step_by(8) {
-        let w = word(a, k);
-        if w == word(b, k) && w == word(c, k) && w == word(d, k) {
-            dst[k..k + 8].copy_from_slice(&a[k..k + 8]);
+    let word = |v: &[u8]| u64::from_ne_bytes(v.try_into().unwrap_or([0; 8]));
+    let runs = dst[..whole]
+        .chunks_exact_mut(8)
+        .zip(a[..whole].chunks_exact(8).zip(b[..whole].chunks_exact(8)))
+        .zip(c[..whole].chunks_exact(8).zip(d[..whole].chunks_exact(8)));
+    for ((o, (pa, pb)), (pc, pd)) in runs {
+        let w = word(pa);
+        if w == word(pb) && w == word(pc) && w == word(pd) {
+            o.copy_from_slice(pa);
         } else {
-            for i in k..k + 8 {
-                dst[i] = byte(a[i], b[i], c[i], d[i]);
+            for (k, o) in o.iter_mut().enumerate() {
+                *o = byte(pa[k], pb[k], pc[k], pd[k]);
             }
         }
     }
-    for i in whole..n {
-        dst[i] = byte(a[i], b[i], c[i], d[i]);
+    for (k, o) in dst.iter_mut().enumerate().take(n).skip(whole) {
+        *o = byte(a[k], b[k], c[k], d[k]);
     }
 }
 
