@@ -405,6 +405,11 @@ pub struct Context {
     /// background flush (their buffers are `fb`'s other samples; `fb`
     /// itself is sample 0: `multisample.rs`).
     lanes: Vec<Lane>,
+    /// Lanes of an earlier multisampled framebuffer, kept with their
+    /// scenes' memory for the next (MuJoCo binds its 4× object and a 1×
+    /// shadow map in turn: fresh lanes refilled their scenes' vectors in
+    /// fresh pages at every bind, [`Context::follow_samples`]).
+    spare_lanes: Vec<Lane>,
     /// `glRenderMode`, selection and feedback (`select.rs`).
     pub(crate) render_mode: crate::select::RenderModeState,
 }
@@ -505,6 +510,7 @@ impl Context {
             raster: crate::raster_pos::RasterPos::default(),
             pixel: crate::pixel_transfer::PixelState::default(),
             lanes: (1..fb_samples).map(|_| Lane::default()).collect(),
+            spare_lanes: Vec::new(),
             render_mode: Default::default(),
         }
     }
@@ -596,7 +602,16 @@ impl Context {
     /// `fb` was replaced (a framebuffer object bound or released; every
     /// lane's scene is empty then: the caller finished the scene first).
     pub(crate) fn follow_samples(&mut self) {
-        self.lanes.resize_with(self.fb.samples() as usize - 1, Lane::default);
+        let want = self.fb.samples() as usize - 1;
+        while self.lanes.len() > want {
+            if let Some(lane) = self.lanes.pop() {
+                self.spare_lanes.push(lane);
+            }
+        }
+        while self.lanes.len() < want {
+            let lane = self.spare_lanes.pop().unwrap_or_default();
+            self.lanes.push(lane);
+        }
     }
 
     /// Threads a flush rasterizes tiles on (`SOFTGL_THREADS` at creation,

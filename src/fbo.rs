@@ -30,7 +30,16 @@
 //!   the draw then samples what was rendered before it). Each sync point
 //!   flushes the pending scene first. After a texture call the framebuffer is
 //!   released and assembled again at the next draw, clear or read, so that a
-//!   redefined image re-runs the completeness rules.
+//!   redefined image re-runs the completeness rules. `glDrawBuffer` and
+//!   `glReadBuffer` naming the buffer already set are not sync points
+//!   (MuJoCo sets `GL_NONE` on its shadow map at every bind: that was a
+//!   second 64 MiB write-back per pass, 48 M instructions a frame of
+//!   `osmesa/bench/shadow_fbo.c`).
+//! - A blit's read object lends its renderbuffers (moved out and back, as
+//!   for drawing) unless the draw framebuffer holds one of them; other reads
+//!   copy them. Unscaled blits of 8-bit colour copy rows, and a 4× resolve
+//!   of that kind writes the destination directly (`resolve_color_into`):
+//!   28 M → 6 M instructions a 320×240 frame.
 //! - An object without a colour attachment to draw (a depth-only shadow map,
 //!   or draw buffer `GL_NONE`) draws into a 2-byte-per-pixel scratch colour
 //!   buffer with colour writes off ([`Framebuffer::set_color_enabled`]): the
@@ -982,6 +991,12 @@ impl Context {
             self.fb.set_color_enabled(false);
             return Ok(());
         }
+        // The same buffer again (MuJoCo sets `GL_NONE` on its shadow map at
+        // every bind): nothing to re-assemble. Releasing would write a
+        // depth texture back (a 64 MiB conversion at 4096²) for nothing.
+        if self.fbo.framebuffer(name).is_some_and(|f| f.draw_buffer == buffer) {
+            return Ok(());
+        }
         self.release_draw();
         if let Some(f) = self.fbo.framebuffer_mut(name) {
             f.draw_buffer = buffer;
@@ -1019,6 +1034,10 @@ impl Context {
         }
         if window {
             return self.record(Err(GlError::InvalidOperation));
+        }
+        // Unchanged: nothing to re-assemble (see `draw_buffer`).
+        if self.fbo.framebuffer(name).is_some_and(|f| f.read_buffer == buffer) {
+            return Ok(());
         }
         if name == self.fbo.draw {
             self.release_draw();
@@ -1466,8 +1485,20 @@ impl Context {
                     }
                 };
                 let mut out = alloc(n, 0u32)?;
-                for (i, o) in out.iter_mut().enumerate() {
-                    *o = z(i);
+                // Runs of equal texels (a fresh image is all zeros, a shadow
+                // map mostly its clear value) convert once: binding a new
+                // 4096² map cost ~930 M instructions, 55 a texel (callgrind).
+                let mut last: Option<(u32, u32)> = None;
+                for (i, (o, b)) in out.iter_mut().zip(t.chunks_exact(4)).enumerate() {
+                    let bits = u32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
+                    *o = match last {
+                        Some((b, v)) if b == bits => v,
+                        _ => {
+                            let v = z(i);
+                            last = Some((bits, v));
+                            v
+                        }
+                    };
                 }
                 Ok(match format {
                     DepthFormat::D16 => DepthBuffer::D16(out.into_iter().map(|v| v as u16).collect()),
@@ -1542,13 +1573,22 @@ impl Context {
 
     /// The read framebuffer for one read: `InvalidFramebufferOperation` when incomplete.
     fn take_read(&mut self, need_color: bool) -> GlResult<ReadFb> {
+        self.take_read_as(need_color, false).map(|(r, _)| r)
+    }
+
+    /// [`Context::take_read`]; `lend`: an object's renderbuffers are moved
+    /// out instead of copied when the draw framebuffer does not hold any of
+    /// them (and it has no texture image), with what to put back through
+    /// [`Context::disassemble`] (`write` false) once read. A multisampled
+    /// 640×480 object was 11 MB copied, in fresh pages, per MuJoCo resolve.
+    fn take_read_as(&mut self, need_color: bool, lend: bool) -> GlResult<(ReadFb, Option<Checkout>)> {
         self.ensure_draw()?;
         let (read, draw) = (self.fbo.read, self.fbo.draw);
         if read == 0 {
             if need_color && self.fbo.window_read_none {
                 return Err(GlError::InvalidOperation);
             }
-            return Ok(if draw == 0 { ReadFb::Draw } else { ReadFb::Window });
+            return Ok((if draw == 0 { ReadFb::Draw } else { ReadFb::Window }, None));
         }
         if status(&self.fbo, &self.textures, read) != FramebufferStatus::Complete {
             return Err(GlError::InvalidFramebufferOperation);
@@ -1566,11 +1606,19 @@ impl Context {
         };
         if let Some(d) = self.fbo.checkout {
             if d.fbo == read && d.color == color {
-                return Ok(ReadFb::Draw);
+                return Ok((ReadFb::Draw, None));
             }
         }
-        let fb = self.assemble(c, false)?;
-        Ok(ReadFb::Assembled(fb))
+        let attachments = [c.color, c.depth, c.stencil];
+        let held = self.fbo.checkout.is_some_and(|d| {
+            attachments
+                .iter()
+                .any(|a| matches!(a, Attachment::Renderbuffer(_)) && [d.color, d.depth, d.stencil].contains(a))
+        });
+        let textured = attachments.iter().any(|a| matches!(a, Attachment::Texture { .. }));
+        let lend = lend && !held && !textured;
+        let fb = self.assemble(c, lend)?;
+        Ok((ReadFb::Assembled(fb), lend.then_some(c)))
     }
 
     /// The framebuffer reads come from now (`GL_READ_FRAMEBUFFER`'s, its
@@ -1668,9 +1716,12 @@ impl Context {
         }
         self.ensure_draw()?;
         self.finish_scene();
-        let read = self.take_read(false);
-        let read = self.record(read)?;
+        let read = self.take_read_as(false, true);
+        let (read, lent) = self.record(read)?;
         let r = self.blit_from(&read, src, dst, mask, filter);
+        if let (ReadFb::Assembled(fb), Some(c)) = (read, lent) {
+            self.disassemble(fb, c, false);
+        }
         self.record(r)
     }
 
@@ -1805,6 +1856,16 @@ fn blit_samples(
     filter: BlitFilter,
 ) -> GlResult {
     let (n_from, n_to) = (from.samples(), to.samples());
+    if n_from > 1 && n_to == 1 && what.0 {
+        // Unscaled and unflipped (GL makes a multisampled blit unscaled):
+        // the colour resolved straight into the destination's rectangle.
+        if let Some(r) = unscaled(from, to, s, d, clip) {
+            if r.moved.is_empty() || from.resolve_color_into(to, r.moved) {
+                blit(from, to, s, d, clip, (false, what.1, what.2), filter);
+                return Ok(());
+            }
+        }
+    }
     if n_from > 1 && n_to == 1 && !what.0 {
         // Depth and stencil only: sample 0's are `from`'s own buffers.
         blit(from, to, s, d, clip, what, filter);
@@ -1822,6 +1883,33 @@ fn blit_samples(
         }
     }
     Ok(())
+}
+
+/// A blit that moves pixels one for one: the destination pixels written.
+#[derive(Clone, Copy, Debug)]
+struct Unscaled {
+    moved: Rect,
+}
+
+/// [`blit`]'s destination pixels when the source and destination
+/// rectangles have the same size, neither flipped, the source at the same
+/// place as the destination and inside `from` wherever it is read: then
+/// each destination pixel takes the source pixel at its own position
+/// ([`Axis::nearest`] of an unscaled axis is `x - d0 + s0`, its error
+/// ≤ 2^-24 · 16384 far from a half), so rows copy as they are.
+fn unscaled(from: &Framebuffer, to: &Framebuffer, s: [i32; 4], d: [i32; 4], clip: Rect) -> Option<Unscaled> {
+    if s != d || s[0] >= s[2] || s[1] >= s[3] || s[0] < 0 || s[1] < 0 {
+        return None;
+    }
+    let out = clip.intersect(to.bounds()).intersect(Rect {
+        x0: d[0] as u32,
+        y0: d[1] as u32,
+        x1: d[2] as u32,
+        y1: d[3] as u32,
+    });
+    // Pixels past the source are left alone by `blit`: not ours to copy.
+    let moved = out.intersect(from.bounds());
+    Some(Unscaled { moved })
 }
 
 /// Copies `src`'s rectangle to `dst`'s, scaled and flipped, inside `clip`,
@@ -1867,6 +1955,32 @@ fn blit(
     });
     if out.is_empty() {
         return;
+    }
+    // 8-bit channels only: their `pixel` and `pack` round-trip the bytes
+    // (RGB565's expansion to 8 bits and back is not checked here).
+    let bytewise = matches!(
+        from.color_format(),
+        ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8
+    );
+    if color && filter == BlitFilter::Nearest && from.color_format() == to.color_format() && bytewise {
+        if let Some(u) = unscaled(from, to, s, d, clip) {
+            // Same bytes per pixel both sides: rows copied (a 640×480 resolve
+            // blit was ~300 instructions a pixel through `pixel`/`pack`).
+            let r = u.moved;
+            if !r.is_empty() {
+                let bytes = (r.x1 - r.x0) as usize * from.color_format().bytes_per_pixel();
+                let mut t = to.target();
+                for y in r.y0..r.y1 {
+                    let src = &from.color_bytes()[from.color_offset(r.x0, y)..][..bytes];
+                    let o = t.color_offset(r.x0, y);
+                    t.color_mut()[o..o + bytes].copy_from_slice(src);
+                }
+            }
+            if depth || stencil {
+                blit(from, to, s, d, clip, (false, depth, stencil), filter);
+            }
+            return;
+        }
     }
     // The source as RGBA8 texels, for LINEAR.
     let texels: Vec<u8> = if color && filter == BlitFilter::Linear {
@@ -1998,7 +2112,13 @@ fn convert_back(d: &DepthBuffer, bits: u32, out: &mut [u8]) {
             }
         }
         DepthBuffer::D24(v) => {
+            // A 24-bit value converts exactly through i32, which x86's
+            // packed conversion takes (`cvtdq2ps`: 4 a time; from u32 the
+            // loop stayed scalar, ~2.9 instructions a texel, callgrind on
+            // osmesa/bench/shadow_fbo.c). Depth-test units of a D24 buffer
+            // are below 2^24 (`depth_to_unorm`, clears, blits).
             for (o, &z) in out.chunks_exact_mut(4).zip(&v[range]) {
+                let z = (z & 0x7fff_ffff) as i32;
                 o.copy_from_slice(&(z as f32 * scale).to_ne_bytes());
             }
         }

@@ -774,6 +774,18 @@ impl Framebuffer {
         Some(pixel::unpack(format, pixel::load(format, bytes)))
     }
 
+    /// The colour bytes of pixels `x0..x1` of row `y`, in the colour
+    /// format (`None` when they are not all inside): what a fast
+    /// `glReadPixels` copies from.
+    pub fn color_span(&self, x0: u32, x1: u32, y: u32) -> Option<&[u8]> {
+        if x0 > x1 || x1 > self.desc.width || y >= self.desc.height {
+            return None;
+        }
+        let bpp = self.desc.color.bytes_per_pixel();
+        let off = self.color_offset(x0, y);
+        self.color.bytes().get(off..off + (x1 - x0) as usize * bpp)
+    }
+
     /// The color at `(x, y)` as float RGBA: unorm channels over their
     /// maximum (8-bit ones `v / 255`), floats as stored.
     pub fn pixel_f32(&self, x: u32, y: u32) -> Option<[f32; 4]> {
