@@ -365,6 +365,12 @@ fn read_rows_fast(
                     }
                 };
                 match d {
+                    softgl::framebuffer::DepthBuffer::D32F(v) => {
+                        // The stored floats as they are (the general path's f32 → f64 → f32).
+                        for (o, &z) in row.chunks_exact_mut(4).zip(&v[from..from + w]) {
+                            o.copy_from_slice(&f32::from_bits(z).to_ne_bytes());
+                        }
+                    }
                     softgl::framebuffer::DepthBuffer::D16(v) => {
                         put_row(&mut v[from..from + w].iter().map(|&z| u32::from(z)))
                     }
@@ -459,7 +465,9 @@ unsafe fn read_pixels(
     // SAFETY: GL's contract: `pixels` holds the image as the pack state lays it out,
     // which is exactly `len` bytes from `pixels`.
     let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
-    if read_rows_fast(fb, src, (x, y, w, h), ty, pack, dst, start, stride) {
+    // Without pixel transfer operations (they take the general path).
+    let identity = gl.pixel_state().is_identity();
+    if identity && read_rows_fast(fb, src, (x, y, w, h), ty, pack, dst, start, stride) {
         return Ok(());
     }
     let stencil = matches!(src, Source::Stencil);
