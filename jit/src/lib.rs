@@ -12,7 +12,6 @@ pub mod cache;
 pub mod callout;
 pub mod compile;
 pub mod deep;
-pub mod fma;
 pub mod interp;
 pub mod key;
 pub mod pixel;

@@ -3,8 +3,6 @@
 //! (`docs/llvmpipe-facts.md` §14). These are the reference semantics; every
 //! back end computes the same bits.
 
-use crate::fma::fma;
-
 /// `GL_FOG_MODE`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum FogMode {
@@ -90,9 +88,9 @@ pub fn exp2(x: f32) -> f32 {
     let expipart = f32::from_bits(((ipart as i32 + 127) as u32) << 23);
     let c = exp2_coeffs();
     let x2 = fpart * fpart;
-    let odd = fma(x2, fma(x2, c[5], c[3]), c[1]);
-    let even = fma(x2, fma(x2, c[4], c[2]), c[0]);
-    expipart * fma(odd, fpart, even)
+    let odd = x2.mul_add(x2.mul_add(c[5], c[3]), c[1]);
+    let even = x2.mul_add(x2.mul_add(c[4], c[2]), c[0]);
+    expipart * odd.mul_add(fpart, even)
 }
 
 /// The fog factor `f` of fog coordinate `c` (GL 1.5 §3.10), as Mesa's
@@ -277,12 +275,11 @@ impl Planes {
         (a0[0], dadx[0], dady[0])
     }
 
-    /// Attribute `k` at pixel `(px, row)`, with llvmpipe's fused
-    /// multiply-adds (inline, [`crate::fma`]).
+    /// Attribute `k` at pixel `(px, row)`, with llvmpipe's fused multiply-adds.
     #[inline]
     pub fn at(&self, k: usize, px: f32, row: f32) -> f32 {
         let (a0, dadx, dady) = self.get(k);
-        fma(dady, row, fma(dadx, px, a0))
+        dady.mul_add(row, dadx.mul_add(px, a0))
     }
 
     /// Sets slot `k` to the constant `v` (points, flat colours).

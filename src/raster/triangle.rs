@@ -419,8 +419,7 @@ impl Prepared {
                 rows.each(|py, lo, hi| {
                     let row = row_of(py, height);
                     let mut fill_z = |x: u32, s: &mut FragmentSpan, i: usize| {
-                        let z =
-                            crate::geometry::fma::fma(z.dady, row, crate::geometry::fma::fma(z.dadx, x as f32, z.a0));
+                        let z = z.dady.mul_add(row, z.dadx.mul_add(x as f32, z.a0));
                         s.z[i] = crate::framebuffer::depth_to_unorm(f64::from(z), format);
                     };
                     emit_row(sink, &mut span, py, lo, hi, Some(&mut fill_z));

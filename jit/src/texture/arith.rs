@@ -2,9 +2,6 @@
 //! compiles to on this host (SSE4.1, AVX2, FMA): conversions that give
 //! `i32::MIN` out of range, `minps`/`maxps` that return the second operand
 //! when either is NaN, and the unorm conversions (`docs/llvmpipe-facts.md` §16).
-//! Fused multiply-adds are [`crate::fma::fma`] (inline, not a call to `fmaf`).
-
-use crate::fma::fma;
 
 /// `cvttps2dq` (`LLVMBuildFPToSI`, `lp_build_itrunc`): truncation toward
 /// zero; NaN and values outside the i32 range give `i32::MIN`.
@@ -104,9 +101,9 @@ pub fn srgb8_to_linear(v: u8) -> f32 {
         0.3012f32 / (255.0f32 * 255.0f32 * 255.0f32),
     ];
     let x2 = x * x;
-    let odd = fma(x2, c[3], c[1]);
-    let even = fma(x2, c[2], c[0]);
-    fma(odd, x, even)
+    let odd = x2.mul_add(c[3], c[1]);
+    let even = x2.mul_add(c[2], c[0]);
+    odd.mul_add(x, even)
 }
 
 /// The 8.8 fixed-point lerp of `lp_build_lerp` on unorm8 with prescaled
@@ -123,7 +120,7 @@ pub fn lerp8(w: u8, a: u8, b: u8) -> u8 {
 /// fused on this host).
 #[inline]
 pub fn lerp(w: f32, a: f32, b: f32) -> f32 {
-    fma(w, b - a, a)
+    w.mul_add(b - a, a)
 }
 
 #[cfg(test)]
