@@ -237,6 +237,55 @@ fn draws_holding_more_than_64_mib_of_textures_are_flushed() {
     assert_eq!(gl.framebuffer().pixel(8, 8), Some([200, 200, 200, 200]));
 }
 
+#[test]
+fn draws_whose_own_textures_pass_64_mib_flush_only_for_a_new_one() {
+    // Unit 0 a 4096² RGBA8 texture (64 MiB), unit 1 a texel: every draw
+    // holds more than the bound. As llvmpipe, only an image new to a scene
+    // that held draws flushes it (it flushed after every primitive: MuJoCo's
+    // light passes, a 64 MiB depth texture and the floor's).
+    let mut gl = context(16, 16);
+    let big = vec![90u8; 4096 * 4096 * 4];
+    for (unit, name, side, bytes) in [(0, 1, 4096, &big[..]), (1, 2, 1, &[255u8; 4][..])] {
+        gl.active_texture(unit).unwrap();
+        gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+        gl.bind_texture(TextureTarget::D2, name).unwrap();
+        gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Nearest, MipFilter::None))
+            .unwrap();
+        let pixels = PixelData {
+            format: PixelFormat::Rgba,
+            ty: PixelType::UnsignedByte,
+            store: PixelStore::DEFAULT,
+            bytes,
+        };
+        gl.tex_image(
+            TexImageTarget::D2,
+            0,
+            InternalFormat::Rgba8,
+            [side, side, 1],
+            0,
+            Some(pixels),
+        )
+        .unwrap();
+    }
+    drop(big);
+    for _ in 0..10 {
+        quad(&mut gl, [1.0, 1.0, 1.0]);
+    }
+    let s = gl.scene_stats();
+    assert_eq!((s.flushes, s.pending_primitives), (0, 20), "{s:?}");
+    // A new texture on unit 1: the scene is flushed after the first
+    // triangle of the draw that brings it.
+    gl.bind_texture(TextureTarget::D2, 3).unwrap();
+    gl.tex_parameter(TextureTarget::D2, TexParam::MinFilter(Filter::Nearest, MipFilter::None))
+        .unwrap();
+    texel(&mut gl, [255, 255, 255, 255]);
+    assert_eq!(gl.scene_stats().flushes, 0);
+    quad(&mut gl, [1.0, 1.0, 1.0]);
+    let s = gl.scene_stats();
+    assert_eq!((s.flushes, s.pending_primitives), (1, 1), "{s:?}");
+    assert_eq!(gl.framebuffer().pixel(8, 8), Some([90, 90, 90, 90]));
+}
+
 /// A draw reuses the last untextured draw's plan (key, layout, uniforms)
 /// only while nothing it was made of changed: each change below, through the
 /// state, the texture units or the texture objects, shows in the next draw.

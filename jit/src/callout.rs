@@ -9,7 +9,7 @@
 
 use crate::shade::Planes;
 use crate::texture::lod::LodState;
-use crate::texture::{SamplerStatics, TexUnitKey, TextureRef, TextureSet, MAX_LEVELS, MAX_UNITS};
+use crate::texture::{QuadSample, SamplerStatics, TexUnitKey, TextureRef, TextureSet, MAX_LEVELS, MAX_UNITS};
 use std::marker::PhantomData;
 
 /// The draw's textures as compiled code sees them. `#[repr(C)]`: the
@@ -224,19 +224,25 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
         // planes and the quad's origin). MuJoCo's shadowed frame (texgen'd
         // shadow-map lookups; osmesa/bench/mujoco_frame.py, 320x240, 1 thread,
         // loaded machine): ~1550 to ~1000 ms, `mujoco.sh` s1/l1 3.3x to 2.0x.
-        let mut cached_origin: Option<(u32, u32)> = None;
-        let mut quad = [[0.0f32; 4]; 4];
-        for lane in (0..4).filter(|l| call.live & (1 << l) != 0) {
-            let at = (call.px[lane], call.row[lane]);
-            let texel = tex.as_ref().map_or([0.0; 4], |tex| {
-                let (origin, l) = crate::shade::quad_lane(at);
-                let bits = (origin.0.to_bits(), origin.1.to_bits());
-                if cached_origin != Some(bits) {
-                    quad = crate::shade::quad_coords(planes, u, origin);
-                    cached_origin = Some(bits);
+        // So are their projection, λ and the filter's set-up
+        // (`crate::texture::QuadSample`, the same bits as `sample_quad`).
+        let Some(tex) = tex.as_ref() else {
+            for lane in (0..4).filter(|l| call.live & (1 << l) != 0) {
+                for channel in &mut call.samples[u] {
+                    channel[lane] = 0.0;
                 }
-                crate::texture::sample_quad(key, tex, &quad, l)
-            });
+            }
+            continue;
+        };
+        let mut cached: Option<((u32, u32), QuadSample<'_>)> = None;
+        for lane in (0..4).filter(|l| call.live & (1 << l) != 0) {
+            let (origin, l) = crate::shade::quad_lane((call.px[lane], call.row[lane]));
+            let bits = (origin.0.to_bits(), origin.1.to_bits());
+            if cached.as_ref().map(|c| c.0) != Some(bits) {
+                let quad = crate::shade::quad_coords(planes, u, origin);
+                cached = Some((bits, QuadSample::new(key, tex, &quad)));
+            }
+            let texel = cached.as_ref().map_or([0.0; 4], |(_, q)| q.lane(l));
             for (c, v) in texel.into_iter().enumerate() {
                 call.samples[u][c][lane] = v;
             }

@@ -67,7 +67,14 @@ pub const SCENE_BOUND: usize = 16 << 20;
 /// than `LP_SCENE_MAX_RESOURCE_SIZE` of textures (64 MiB, `lp_scene.h`):
 /// a client that uploads, draws with and deletes a new texture each frame
 /// without a flush would otherwise pile up every frame's texels (piglit's
-/// streaming-texture-leak: 20 GB).
+/// streaming-texture-leak: 20 GB). As there (`lp_scene_add_resource_reference`),
+/// only an image new to a scene that already held draws flushes it: the
+/// draw that begins a scene keeps its textures whatever their size. Checked
+/// after every primitive instead, a draw whose own textures pass the bound
+/// (MuJoCo's light passes: a 4096² depth texture, 64 MiB as f32, and the
+/// floor's) flushed the scene after each of its primitives: 9018
+/// background flushes in a 320×240 Renderer's set-up and three frames, each
+/// waking a pool thread (~12% of the frame in futex and wake-up, `perf`).
 pub const TEXTURE_BOUND: usize = 64 << 20;
 
 /// Bin entries with this bit are clears (an index into `clears`); with
@@ -278,6 +285,9 @@ pub struct Scene {
     /// The texel images the draws hold (by address) and their bytes.
     textures: HashSet<usize>,
     texture_bytes: usize,
+    /// An image new to the scene took `texture_bytes` past [`TEXTURE_BOUND`]
+    /// after the scene held draws: flush ([`Scene::hold_textures`]).
+    textures_full: bool,
     /// See [`Scene::bound`].
     bound: usize,
     peak: usize,
@@ -425,6 +435,7 @@ impl Scene {
         self.draws.clear();
         self.textures.clear();
         self.texture_bytes = 0;
+        self.textures_full = false;
         self.prims.clear();
         self.used = 0;
         self.classes.clear();
@@ -457,12 +468,26 @@ impl Scene {
                     .map(|s| s.counting_into(d.samples.as_deref()))
             })
             .collect();
-        let bands = target.into_bands(TILE);
+        // Only the bands with work run (an empty band has nothing to draw or
+        // report), and on the calling thread when there is one: a scene of a
+        // few primitives (a multisampled frame's per-sample scenes, a state
+        // change's flush) then wakes no pool thread for nothing.
+        let tiles_x = self.tiles_x as usize;
+        let busy = |ty: usize| {
+            let row = self.bins.get(ty * tiles_x..(ty + 1) * tiles_x);
+            row.is_some_and(|r| r.iter().any(|b| !b.is_empty()))
+        };
+        let bands: Vec<(usize, Target<'_>)> = target
+            .into_bands(TILE)
+            .into_iter()
+            .enumerate()
+            .filter(|&(ty, _)| busy(ty))
+            .collect();
         let run_band = |(ty, mut band): (usize, Target<'_>)| self.run_band(ty as u32, &mut band, &stages);
         let results: Vec<Result<(), FragmentError>> = if threads <= 1 || bands.len() <= 1 {
-            bands.into_iter().enumerate().map(run_band).collect()
+            bands.into_iter().map(run_band).collect()
         } else {
-            super::pool::run(threads, bands.into_iter().enumerate().collect(), run_band)
+            super::pool::run(threads, bands, run_band)
         };
         results.into_iter().collect()
     }
@@ -744,11 +769,7 @@ impl Binner<'_> {
             None => {
                 let d = self.scene.draws.len() as u32;
                 self.scene.bytes += std::mem::size_of::<DrawState>();
-                for t in self.state.textures.texels() {
-                    if self.scene.textures.insert(Arc::as_ptr(t) as usize) {
-                        self.scene.texture_bytes += t.len();
-                    }
-                }
+                self.scene.hold_textures(&self.state);
                 self.scene.draws.push(self.state.clone());
                 self.draw = Some(d);
                 d
@@ -931,11 +952,7 @@ impl Scene {
         let draw = match self.draws.last() {
             Some(last) if last.same_as(&state) => self.draws.len() as u32 - 1,
             _ => {
-                for t in state.textures.texels() {
-                    if self.textures.insert(Arc::as_ptr(t) as usize) {
-                        self.texture_bytes += t.len();
-                    }
-                }
+                self.hold_textures(&state);
                 self.bytes += std::mem::size_of::<DrawState>();
                 self.draws.push(state);
                 self.draws.len() as u32 - 1
@@ -1044,7 +1061,23 @@ impl Scene {
     /// Whether a draw flushes the scene now, on `threads` threads.
     #[inline(always)]
     fn full(&self) -> bool {
-        self.bytes > self.bound() || self.texture_bytes > TEXTURE_BOUND
+        self.bytes > self.bound() || self.textures_full
+    }
+
+    /// Counts the texel images of `state` (a draw about to be recorded)
+    /// the scene does not hold yet; one that takes them past
+    /// [`TEXTURE_BOUND`] in a scene that held draws before flushes it.
+    fn hold_textures(&mut self, state: &DrawState) {
+        let mut added = false;
+        for t in state.textures.texels() {
+            if self.textures.insert(Arc::as_ptr(t) as usize) {
+                self.texture_bytes += t.len();
+                added = true;
+            }
+        }
+        if added && self.texture_bytes > TEXTURE_BOUND && !self.draws.is_empty() {
+            self.textures_full = true;
+        }
     }
 }
 

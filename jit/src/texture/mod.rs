@@ -25,7 +25,7 @@ pub mod lod;
 mod sample;
 
 pub use env::{combine, environment};
-pub use sample::{sample, sample_quad, uses_aos};
+pub use sample::{sample, sample_quad, uses_aos, QuadSample};
 
 /// `GL_MAX_TEXTURE_UNITS`.
 pub const MAX_UNITS: usize = 8;

@@ -41,74 +41,128 @@ pub fn sample(unit: &TexUnitKey, tex: &TextureRef<'_>, at: [f32; 4], quad: [[f32
 /// of the quad (top-left, top-right, bottom-left, bottom-right) for the
 /// pixel `lane` (0..4, same order). Exact for every target.
 pub fn sample_quad(unit: &TexUnitKey, tex: &TextureRef<'_>, quad: &[[f32; 4]; 4], lane: usize) -> [f32; 4] {
-    let key = &unit.sampler;
-    let lane = lane.min(3);
-    // Mesa's TXP lowering: coordinates (and the shadow reference) times frcp(q).
-    let proj = quad.map(|c| {
-        let inv = 1.0 / c[3];
-        [c[0] * inv, c[1] * inv, c[2] * inv, c[3] * inv]
-    });
-    let reference = proj[lane][reference_component(key.target)];
-    let first = tex.base_level;
-    let last = tex.max_level.max(first);
-    let state = LodState::new(key, tex);
-    let levels = |l: (bool, i32, f32)| lod::levels(key.mip, l, first, last);
-    let no_lod = || Lod {
-        minified: false,
-        level0: first,
-        level1: first,
-        weight: 0.0,
-    };
+    QuadSample::new(unit, tex, quad).lane(lane)
+}
 
-    let (face, coord, lod) = if key.target == TexTarget::Cube {
-        let dir = |p: usize| [proj[p][0], proj[p][1], proj[p][2]];
-        let need = lod::needs_lod(key) && !state.min_max_equal;
-        if !need {
-            let (face, st) = super::cube::lookup(dir(lane));
-            let lod = if lod::needs_lod(key) {
-                levels(lod::select(key.mip, &state, 0.0, true))
-            } else {
-                no_lod()
-            };
-            (face, [st[0], st[1], 0.0], lod)
-        } else {
-            // Per pixel: derivatives along the pixel's own row and column.
-            let at = |p: usize| {
-                let (row, col) = (p & 2, p & 1);
-                let ddx: [f32; 3] = std::array::from_fn(|c| dir(row + 1)[c] - dir(row)[c]);
-                let ddy: [f32; 3] = std::array::from_fn(|c| dir(col + 2)[c] - dir(col)[c]);
-                super::cube::lookup_derivs(dir(p), ddx, ddy)
-            };
-            let size = base_size(tex, key.target);
-            let rho = |p: usize| {
-                let (_, _, dx, dy) = at(p);
-                lod::rho_derivs([size[0], size[1]], dx, dy)
-            };
-            // With a mipmap filter λ is per pixel; else per quad, the top-left pixel's.
-            let rho = if key.mip != MipFilter::None { rho(lane) } else { rho(0) };
-            let (face, st, _, _) = at(lane);
-            (
-                face,
-                [st[0], st[1], 0.0],
-                levels(lod::select(key.mip, &state, rho, true)),
-            )
-        }
-    } else {
-        let dims = dims(key.target);
-        let c = |p: usize| [proj[p][0], proj[p][1], proj[p][2]];
-        let lod = if lod::needs_lod(key) {
-            let (rho, squared) = lod::rho_quad(dims, base_size(tex, key.target), c(0), c(1), c(2));
-            levels(lod::select(key.mip, &state, rho, squared))
-        } else {
-            no_lod()
+/// [`sample_quad`] split at the quad: what it derives once for the quad's
+/// four pixels (the projected coordinates, λ and its levels unless λ is per
+/// pixel, the filtering's facts about the texture), then
+/// [`QuadSample::lane`] per pixel, the same bits as `sample_quad(.., lane)`
+/// for each. The callout samples a group's lanes this way
+/// (`crate::callout::texture_group`): per lane it projected the quad's four
+/// pixels (four divisions) and set up λ and the filter again.
+#[derive(Clone, Copy, Debug)]
+pub struct QuadSample<'a> {
+    unit: &'a TexUnitKey,
+    tex: &'a TextureRef<'a>,
+    /// The quad's coordinates times `1/q` (Mesa's TXP lowering).
+    proj: [[f32; 4]; 4],
+    state: LodState,
+    /// λ's levels, unless λ is per pixel (cube maps with a mipmap filter or
+    /// different min and mag filters, computed by [`QuadSample::lane`]).
+    lod: Option<Lod>,
+    /// Level 0's sizes are powers of two ([`pot`]).
+    pot: [bool; 3],
+}
+
+impl<'a> QuadSample<'a> {
+    /// The quad's shared part, from its coordinates before projection (as
+    /// [`sample_quad`] takes them).
+    pub fn new(unit: &'a TexUnitKey, tex: &'a TextureRef<'a>, quad: &[[f32; 4]; 4]) -> QuadSample<'a> {
+        let key = &unit.sampler;
+        // Mesa's TXP lowering: coordinates (and the shadow reference) times frcp(q).
+        let proj = quad.map(|c| {
+            let inv = 1.0 / c[3];
+            [c[0] * inv, c[1] * inv, c[2] * inv, c[3] * inv]
+        });
+        let first = tex.base_level;
+        let last = tex.max_level.max(first);
+        let state = LodState::new(key, tex);
+        let levels = |l: (bool, i32, f32)| lod::levels(key.mip, l, first, last);
+        let no_lod = Lod {
+            minified: false,
+            level0: first,
+            level1: first,
+            weight: 0.0,
         };
-        (0, c(lane), lod)
-    };
+        let lod = if key.target == TexTarget::Cube {
+            let need = lod::needs_lod(key) && !state.min_max_equal;
+            if need {
+                None
+            } else if lod::needs_lod(key) {
+                Some(levels(lod::select(key.mip, &state, 0.0, true)))
+            } else {
+                Some(no_lod)
+            }
+        } else if lod::needs_lod(key) {
+            let c = |p: usize| [proj[p][0], proj[p][1], proj[p][2]];
+            let (rho, squared) = lod::rho_quad(dims(key.target), base_size(tex, key.target), c(0), c(1), c(2));
+            Some(levels(lod::select(key.mip, &state, rho, squared)))
+        } else {
+            Some(no_lod)
+        };
+        QuadSample {
+            unit,
+            tex,
+            proj,
+            state,
+            lod,
+            pot: pot(tex, key.target),
+        }
+    }
 
-    let out = filter_levels(unit, tex, face, coord, &lod, reference);
-    match key.format {
-        TexelFormat::Depth32F => depth_swizzle(key.depth_mode, out[0]),
-        _ => out,
+    /// The filtered RGBA of the quad's pixel `lane` (0..4; larger is 3).
+    pub fn lane(&self, lane: usize) -> [f32; 4] {
+        let (unit, tex, proj) = (self.unit, self.tex, &self.proj);
+        let key = &unit.sampler;
+        let lane = lane.min(3);
+        let reference = proj[lane][reference_component(key.target)];
+        let dir = |p: usize| [proj[p][0], proj[p][1], proj[p][2]];
+        let (face, coord, lod) = match (key.target, self.lod) {
+            (TexTarget::Cube, Some(lod)) => {
+                let (face, st) = super::cube::lookup(dir(lane));
+                (face, [st[0], st[1], 0.0], lod)
+            }
+            (TexTarget::Cube, None) => {
+                // Per pixel: derivatives along the pixel's own row and column.
+                let at = |p: usize| {
+                    let (row, col) = (p & 2, p & 1);
+                    let ddx: [f32; 3] = std::array::from_fn(|c| dir(row + 1)[c] - dir(row)[c]);
+                    let ddy: [f32; 3] = std::array::from_fn(|c| dir(col + 2)[c] - dir(col)[c]);
+                    super::cube::lookup_derivs(dir(p), ddx, ddy)
+                };
+                let size = base_size(tex, key.target);
+                let rho = |p: usize| {
+                    let (_, _, dx, dy) = at(p);
+                    lod::rho_derivs([size[0], size[1]], dx, dy)
+                };
+                // With a mipmap filter λ is per pixel; else per quad, the top-left pixel's.
+                let rho = if key.mip != MipFilter::None { rho(lane) } else { rho(0) };
+                let (face, st, _, _) = at(lane);
+                let first = tex.base_level;
+                let lod = lod::levels(
+                    key.mip,
+                    lod::select(key.mip, &self.state, rho, true),
+                    first,
+                    tex.max_level.max(first),
+                );
+                (face, [st[0], st[1], 0.0], lod)
+            }
+            (_, lod) => {
+                let lod = lod.unwrap_or(Lod {
+                    minified: false,
+                    level0: tex.base_level,
+                    level1: tex.base_level,
+                    weight: 0.0,
+                });
+                (0, dir(lane), lod)
+            }
+        };
+        let out = filter_levels(unit, tex, self.pot, (face, coord), &lod, reference);
+        match key.format {
+            TexelFormat::Depth32F => depth_swizzle(key.depth_mode, out[0]),
+            _ => out,
+        }
     }
 }
 
@@ -171,15 +225,14 @@ pub fn uses_aos(key: &SamplerKey) -> bool {
 fn filter_levels(
     unit: &TexUnitKey,
     tex: &TextureRef<'_>,
-    face: u32,
-    coord: [f32; 3],
+    pot: [bool; 3],
+    (face, coord): (u32, [f32; 3]),
     lod: &Lod,
     reference: f32,
 ) -> [f32; 4] {
     let key = &unit.sampler;
     let dims = dims(key.target);
     let (img_filter, mip) = lod::filter(key, lod.minified);
-    let pot = pot(tex, key.target);
     let level = |l: u32| {
         image(tex, key.target, l, face).map(|im| Level {
             image: im,
