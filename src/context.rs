@@ -1300,7 +1300,26 @@ impl Context {
         }
         let before = self.current;
         let mut verts = std::mem::take(&mut self.spare.0);
-        run.fill(&before, &mut verts);
+        // A long run of filled triangles or quads rendered (not selected or
+        // fed back) leaves out its chunks wholly outside the view volume,
+        // whose primitives would make nothing (`ImmediateRun::visible_chunks`).
+        let mut kept = Vec::new();
+        let cull = self.render_mode.mode == crate::select::RenderMode::Render
+            && [true, false]
+                .iter()
+                .all(|&front| self.state.polygon_mode(front) == crate::state::PolygonMode::Fill)
+            && run.visible_chunks(&(*self.projection.top() * *self.modelview.top()), &mut kept);
+        if cull {
+            run.fill_chunks(&before, &kept, &mut verts);
+        } else {
+            run.fill(&before, &mut verts);
+        }
+        // The run's vertex `i` of `verts`'s vertex `k`.
+        let chunk = crate::immediate::CULL_CHUNK;
+        let index = |k: usize| match cull {
+            true => kept.get(k / chunk).map_or(k, |&c| c as usize * chunk + k % chunk),
+            false => k,
+        };
         self.format.run(run.color_at(), run.len());
         run.apply_last(&mut self.current);
         if run.color_at().is_some() && self.state.lighting.color_material {
@@ -1313,7 +1332,7 @@ impl Context {
             if units == 0 || u != 0 {
                 current[u]
             } else {
-                run.tex_at(i).unwrap_or(before0)
+                run.tex_at(index(i)).unwrap_or(before0)
             }
         };
         // Mesa compiles a list's glBegin/glEnd into indexed vertices
