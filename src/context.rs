@@ -567,7 +567,7 @@ impl Context {
         match self.fbo.window.as_mut() {
             Some(w) => std::mem::replace(w, fb),
             None => {
-                self.lanes.resize_with(fb.samples() as usize - 1, Lane::default);
+                self.grow_lanes(fb.samples());
                 std::mem::replace(&mut self.fb, fb)
             }
         }
@@ -585,7 +585,22 @@ impl Context {
     /// `fb` was replaced (a framebuffer object bound or released; every
     /// lane's scene is empty then: the caller finished the scene first).
     pub(crate) fn follow_samples(&mut self) {
-        self.lanes.resize_with(self.fb.samples() as usize - 1, Lane::default);
+        self.grow_lanes(self.fb.samples());
+    }
+
+    /// Makes room for the lanes of a framebuffer of `samples` samples.
+    /// Lanes are kept when a framebuffer of fewer samples is bound (the
+    /// lanes past its samples are empty and unused: every use zips them
+    /// with the samples): MuJoCo binds its single-sampled resolve and
+    /// shadow framebuffers every frame, and each lane's scene (records,
+    /// bins) was dropped and grown again, page by page, every frame (its
+    /// `Scene::grow` alone 3 M instructions a noshadow frame, callgrind,
+    /// beside the page faults).
+    fn grow_lanes(&mut self, samples: u32) {
+        let n = samples as usize - 1;
+        if self.lanes.len() < n {
+            self.lanes.resize_with(n, Lane::default);
+        }
     }
 
     /// Threads a flush rasterizes tiles on (`SOFTGL_THREADS` at creation,
@@ -1620,7 +1635,7 @@ impl Context {
                 .polygon_stipple
                 .then(|| Box::new(self.state.polygon_stipple_pattern)),
         };
-        if !self.lanes.is_empty() {
+        if !self.fb.samples.is_empty() {
             // A multisampled framebuffer: the geometry runs once, each
             // primitive is recorded into the scene of each sample that
             // `glSampleCoverage` keeps, covered at the sample when
