@@ -251,7 +251,7 @@ impl ChunkBox {
         }
         let far = |k: usize| f64::from(self.lo[k].abs().max(self.hi[k].abs()));
         let bound = m.map(|r| r[0].abs() * far(0) + r[1].abs() * far(1) + r[2].abs() * far(2) + r[3].abs());
-        if bound.iter().any(|b| !(*b < 1e30)) {
+        if bound.iter().any(|b| b.is_nan() || *b >= 1e30) {
             return false;
         }
         // Per plane (x, y, z against w, each side): the largest value over
