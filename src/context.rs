@@ -409,7 +409,6 @@ pub struct Context {
     /// scenes' memory for the next (MuJoCo binds its 4× object and a 1×
     /// shadow map in turn: fresh lanes refilled their scenes' vectors in
     /// fresh pages at every bind, [`Context::follow_samples`]).
-    spare_lanes: Vec<Lane>,
     /// `glRenderMode`, selection and feedback (`select.rs`).
     pub(crate) render_mode: crate::select::RenderModeState,
 }
@@ -510,7 +509,6 @@ impl Context {
             raster: crate::raster_pos::RasterPos::default(),
             pixel: crate::pixel_transfer::PixelState::default(),
             lanes: (1..fb_samples).map(|_| Lane::default()).collect(),
-            spare_lanes: Vec::new(),
             render_mode: Default::default(),
         }
     }
@@ -584,7 +582,7 @@ impl Context {
         match self.fbo.window.as_mut() {
             Some(w) => std::mem::replace(w, fb),
             None => {
-                self.lanes.resize_with(fb.samples() as usize - 1, Lane::default);
+                self.grow_lanes(fb.samples());
                 std::mem::replace(&mut self.fb, fb)
             }
         }
@@ -602,15 +600,21 @@ impl Context {
     /// `fb` was replaced (a framebuffer object bound or released; every
     /// lane's scene is empty then: the caller finished the scene first).
     pub(crate) fn follow_samples(&mut self) {
-        let want = self.fb.samples() as usize - 1;
-        while self.lanes.len() > want {
-            if let Some(lane) = self.lanes.pop() {
-                self.spare_lanes.push(lane);
-            }
-        }
-        while self.lanes.len() < want {
-            let lane = self.spare_lanes.pop().unwrap_or_default();
-            self.lanes.push(lane);
+        self.grow_lanes(self.fb.samples());
+    }
+
+    /// Makes room for the lanes of a framebuffer of `samples` samples.
+    /// Lanes are kept when a framebuffer of fewer samples is bound (the
+    /// lanes past its samples are empty and unused: every use zips them
+    /// with the samples): MuJoCo binds its single-sampled resolve and
+    /// shadow framebuffers every frame, and each lane's scene (records,
+    /// bins) was dropped and grown again, page by page, every frame (its
+    /// `Scene::grow` alone 3 M instructions a noshadow frame, callgrind,
+    /// beside the page faults).
+    fn grow_lanes(&mut self, samples: u32) {
+        let n = samples as usize - 1;
+        if self.lanes.len() < n {
+            self.lanes.resize_with(n, Lane::default);
         }
     }
 
@@ -1326,7 +1330,26 @@ impl Context {
         }
         let before = self.current;
         let mut verts = std::mem::take(&mut self.spare.0);
-        run.fill(&before, &mut verts);
+        // A long run of filled triangles or quads rendered (not selected or
+        // fed back) leaves out its chunks wholly outside the view volume,
+        // whose primitives would make nothing (`ImmediateRun::visible_chunks`).
+        let mut kept = Vec::new();
+        let cull = self.render_mode.mode == crate::select::RenderMode::Render
+            && [true, false]
+                .iter()
+                .all(|&front| self.state.polygon_mode(front) == crate::state::PolygonMode::Fill)
+            && run.visible_chunks(&(*self.projection.top() * *self.modelview.top()), &mut kept);
+        if cull {
+            run.fill_chunks(&before, &kept, &mut verts);
+        } else {
+            run.fill(&before, &mut verts);
+        }
+        // The run's vertex `i` of `verts`'s vertex `k`.
+        let chunk = crate::immediate::CULL_CHUNK;
+        let index = |k: usize| match cull {
+            true => kept.get(k / chunk).map_or(k, |&c| c as usize * chunk + k % chunk),
+            false => k,
+        };
         self.format.run(run.color_at(), run.len());
         run.apply_last(&mut self.current);
         if run.color_at().is_some() && self.state.lighting.color_material {
@@ -1339,7 +1362,7 @@ impl Context {
             if units == 0 || u != 0 {
                 current[u]
             } else {
-                run.tex_at(i).unwrap_or(before0)
+                run.tex_at(index(i)).unwrap_or(before0)
             }
         };
         // Mesa compiles a list's glBegin/glEnd into indexed vertices
@@ -1658,7 +1681,7 @@ impl Context {
                 .polygon_stipple
                 .then(|| Box::new(self.state.polygon_stipple_pattern)),
         };
-        if !self.lanes.is_empty() {
+        if !self.fb.samples.is_empty() {
             // A multisampled framebuffer: the geometry runs once, each
             // primitive is recorded into the scene of each sample that
             // `glSampleCoverage` keeps, covered at the sample when

@@ -195,6 +195,78 @@ pub struct ImmediateRun {
     color: RunAttrib<Vec4>,
     /// Unit 0's (`glTexCoord`).
     tex: RunAttrib<Vec4>,
+    /// The object-space boxes of its chunks of [`CULL_CHUNK`] vertices, made
+    /// at `glEnd` for a long run of independent triangles or quads
+    /// ([`ImmediateRun::visible_chunks`]); empty for the others.
+    boxes: Vec<ChunkBox>,
+}
+
+/// Vertices of a run a [`ChunkBox`] bounds: whole triangles and quads (a
+/// multiple of 12). MuJoCo's infinite plane (200×200 quads, a column of 200
+/// quads after the other) is 1,667 chunks of 24 quads.
+pub(crate) const CULL_CHUNK: usize = 96;
+
+/// Runs shorter than this are drawn whole (their chunks not tested).
+const CULL_MIN: usize = 1024;
+
+/// The box of a chunk of a run's vertices (`lo`, `hi`: x, y, z), when each
+/// is finite with w = 1 (`usable`); else the chunk is always drawn.
+#[derive(Clone, Copy, Debug)]
+struct ChunkBox {
+    lo: [f32; 3],
+    hi: [f32; 3],
+    usable: bool,
+}
+
+impl ChunkBox {
+    fn of(pos: &[Vec4]) -> ChunkBox {
+        let mut b = ChunkBox {
+            lo: [f32::INFINITY; 3],
+            hi: [f32::NEG_INFINITY; 3],
+            usable: true,
+        };
+        for p in pos {
+            b.usable &= p.w == 1.0 && p.truncate().is_finite();
+            for (k, c) in p.truncate().to_array().into_iter().enumerate() {
+                b.lo[k] = b.lo[k].min(c);
+                b.hi[k] = b.hi[k].max(c);
+            }
+        }
+        b
+    }
+
+    /// Whether every point of the box is outside one plane of the view
+    /// volume (`-w <= x, y, z <= w`) in clip coordinates `m · p` (rows `m`,
+    /// f64), by more than the error of the geometry stage's f32 transform
+    /// of a vertex inside it: each clip coordinate of such a vertex is a
+    /// convex combination of the corners' (exactly), and its f32 value is
+    /// within a few ulps of the sum of the products' magnitudes (`bound`),
+    /// so every vertex of the chunk gets the same outcode bit and each of
+    /// its primitives is rejected by the clipper. Margins: 1e-5 of those
+    /// magnitudes, about 100 ulps; none when a bound reaches 1e30 (an f32
+    /// overflow there would make the codes NaN).
+    fn outside(&self, m: &[[f64; 4]; 4]) -> bool {
+        if !self.usable {
+            return false;
+        }
+        let far = |k: usize| f64::from(self.lo[k].abs().max(self.hi[k].abs()));
+        let bound = m.map(|r| r[0].abs() * far(0) + r[1].abs() * far(1) + r[2].abs() * far(2) + r[3].abs());
+        if bound.iter().any(|b| b.is_nan() || *b >= 1e30) {
+            return false;
+        }
+        // Per plane (x, y, z against w, each side): the largest value over
+        // the corners of `w ± c`, which must stay below minus the margin.
+        let mut most = [f64::NEG_INFINITY; 6];
+        for corner in 0..8 {
+            let p = [0, 1, 2].map(|k| f64::from(if corner >> k & 1 == 0 { self.lo[k] } else { self.hi[k] }));
+            let c = m.map(|r| r[0] * p[0] + r[1] * p[1] + r[2] * p[2] + r[3]);
+            for k in 0..3 {
+                most[2 * k] = most[2 * k].max(c[3] + c[k]);
+                most[2 * k + 1] = most[2 * k + 1].max(c[3] - c[k]);
+            }
+        }
+        (0..6).any(|i| most[i] < -1e-5 * (bound[i / 2] + bound[3]))
+    }
 }
 
 impl ImmediateRun {
@@ -207,6 +279,7 @@ impl ImmediateRun {
             normal: RunAttrib::new(Vec3::ZERO),
             color: RunAttrib::new(Vec4::ZERO),
             tex: RunAttrib::new(Vec4::ZERO),
+            boxes: Vec::new(),
         }
     }
 
@@ -245,6 +318,57 @@ impl ImmediateRun {
         self.normal.vals.shrink_to_fit();
         self.color.vals.shrink_to_fit();
         self.tex.vals.shrink_to_fit();
+        if matches!(self.mode, PrimitiveMode::Triangles | PrimitiveMode::Quads) && self.pos.len() >= CULL_MIN {
+            self.boxes = self.pos.chunks(CULL_CHUNK).map(ChunkBox::of).collect();
+        }
+    }
+
+    /// The chunks of [`CULL_CHUNK`] vertices of a run of independent
+    /// triangles or quads that may show through `mvp` (the draw's
+    /// projection times modelview) into `kept` (emptied first); `false`
+    /// (and `kept` empty) when every chunk may, or the run has no boxes. A
+    /// chunk left out is wholly outside one plane of the view volume
+    /// ([`ChunkBox::outside`]): its primitives would be transformed and
+    /// rejected one by one, making no fragment. MuJoCo's 40,000-quad plane
+    /// is mostly outside the view: a noshadow frame's geometry stage spent
+    /// ~290 instructions a vertex on 160,000 vertices a pass (callgrind).
+    pub(crate) fn visible_chunks(&self, mvp: &glam::Mat4, kept: &mut Vec<u32>) -> bool {
+        kept.clear();
+        if self.boxes.is_empty() {
+            return false;
+        }
+        let m = [0, 1, 2, 3].map(|r| mvp.row(r).to_array().map(f64::from));
+        let mut culled = false;
+        for (k, b) in self.boxes.iter().enumerate() {
+            if b.outside(&m) {
+                culled = true;
+            } else {
+                kept.push(k as u32);
+            }
+        }
+        if !culled {
+            kept.clear();
+        }
+        culled
+    }
+
+    /// [`ImmediateRun::fill`] of the vertices of chunks `kept` only (in
+    /// their order), as `fill` makes them.
+    pub(crate) fn fill_chunks(&self, before: &CurrentAttribs, kept: &[u32], out: &mut Vec<InVertex>) {
+        out.clear();
+        let t = before.vertex(Vec4::ZERO, 0);
+        for &k in kept {
+            let first = k as usize * CULL_CHUNK;
+            let end = (first + CULL_CHUNK).min(self.pos.len());
+            for (i, &pos) in self.pos.iter().enumerate().take(end).skip(first) {
+                out.push(InVertex {
+                    pos,
+                    normal: self.normal.at(i).unwrap_or(t.normal),
+                    color: self.color.at(i).unwrap_or(t.color),
+                    ..t
+                });
+            }
+        }
     }
 
     pub fn mode(&self) -> PrimitiveMode {
@@ -429,5 +553,65 @@ mod tests {
         g.attrib(COLOR, false);
         g.flush();
         assert!(g.has(COLOR));
+    }
+
+    /// A long run of triangles, most of it outside the view: its draw
+    /// leaves chunks out and makes the bytes its calls make one by one
+    /// (unlit with per-vertex colours, and lit with normals and colour
+    /// material).
+    #[test]
+    fn a_run_left_out_outside_the_view_draws_what_its_calls_draw() {
+        use crate::{Capability, Context, FramebufferDesc, MatrixMode, ReadFormat};
+        let mut run = ImmediateRun::new(PrimitiveMode::Triangles);
+        let n = 60;
+        let at = |i: usize| i as f32 - n as f32 / 2.0;
+        for x in 0..n {
+            for y in 0..n {
+                if (x + y) % 7 == 3 {
+                    run.normal3(0.3, 0.1, 0.95);
+                }
+                for (dx, dy) in [(0, 0), (1, 0), (1, 1), (0, 0), (1, 1), (0, 1)] {
+                    if x > 2 {
+                        let k = (x * 31 + y * 17 + dx * 5 + dy * 3) % 256;
+                        run.color4(k as f32 / 255.0, 0.5, 1.0 - k as f32 / 255.0, 1.0);
+                    }
+                    run.vertex4(at(x + dx), at(y + dy), 0.0, 1.0);
+                }
+            }
+        }
+        run.end();
+        for lit in [false, true] {
+            let draw = |by_run: bool| {
+                let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(64, 48)).unwrap();
+                gl.matrix_mode(MatrixMode::Projection).unwrap();
+                gl.frustum(-0.1, 0.1, -0.075, 0.075, 0.1, 12.0).unwrap();
+                gl.matrix_mode(MatrixMode::Modelview).unwrap();
+                gl.translate(0.5, 0.0, -3.0).unwrap();
+                gl.rotate(-60.0, 1.0, 0.0, 0.0).unwrap();
+                if lit {
+                    gl.enable(Capability::Lighting).unwrap();
+                    gl.enable(Capability::Light(0)).unwrap();
+                    gl.enable(Capability::ColorMaterial).unwrap();
+                }
+                let mvp = gl.matrix(MatrixMode::Projection) * gl.matrix(MatrixMode::Modelview);
+                if by_run {
+                    gl.draw_run(&run).unwrap();
+                } else {
+                    run.replay(&mut gl).unwrap();
+                }
+                (gl.read_pixels(0, 0, 64, 48, ReadFormat::Rgba8).unwrap(), mvp)
+            };
+            let ((calls, mvp), (drawn, _)) = (draw(false), draw(true));
+            let mut kept = Vec::new();
+            assert!(run.visible_chunks(&mvp, &mut kept));
+            assert!(
+                kept.len() < run.boxes.len() / 2,
+                "{} of {}",
+                kept.len(),
+                run.boxes.len()
+            );
+            assert!(calls.chunks(4).filter(|p| p[..3] != [0, 0, 0]).count() > 1000);
+            assert!(calls == drawn, "lit {lit}");
+        }
     }
 }

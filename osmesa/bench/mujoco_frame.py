@@ -8,7 +8,8 @@ Prints one line per row: `ROW MEDIAN_MS`:
   full-WxH             one RGB frame (mjr_render + glReadPixels + the Renderer's flip)
   noshadow-WxH         the same frame with mjRND_SHADOW off (the difference is the shadow passes)
   depth-WxH            the Renderer's depth mode
-    python3 mujoco_frame.py [FRAMES] [SIZES]       e.g. 5 320x240,640x480
+    python3 mujoco_frame.py [FRAMES] [SIZES] [--rows ROWS]   e.g. 5 320x240,640x480 --rows noshadow,depth
+(--rows: only those rows, each frame; the default is full,noshadow,depth)
 Run by osmesa/bench/mujoco.sh; not a test."""
 
 import os
@@ -30,8 +31,14 @@ def median(xs):
 
 
 def main():
-    frames = int(sys.argv[1]) if len(sys.argv) > 1 else 5
-    sizes = [tuple(int(v) for v in s.split("x")) for s in (sys.argv[2] if len(sys.argv) > 2 else "320x240,640x480").split(",")]
+    args = sys.argv[1:]
+    names = ["full", "noshadow", "depth"]
+    if "--rows" in args:
+        i = args.index("--rows")
+        names = args[i + 1].split(",")
+        del args[i:i + 2]
+    frames = int(args[0]) if len(args) > 0 else 5
+    sizes = [tuple(int(v) for v in s.split("x")) for s in (args[1] if len(args) > 1 else "320x240,640x480").split(",")]
     out = tempfile.mkdtemp(prefix="mujoco-bench-")
     scenes.png(os.path.join(out, "photo.png"), 64, 64,
                lambda x, y: ((x * 4) % 256, (y * 4) % 256, 255 if (x // 8 + y // 8) % 2 else 40))
@@ -45,7 +52,7 @@ def main():
         t0 = time.perf_counter()
         r = mujoco.Renderer(model, h, w)
         print(f"setup-{w}x{h} {1000 * (time.perf_counter() - t0):.3f}", flush=True)
-        rows = {"full": [], "noshadow": [], "depth": []}
+        rows = {name: [] for name in names}
         for _ in range(frames + 1):  # the first frame of each row is a warm-up
             for row in rows:
                 r.disable_depth_rendering()

@@ -225,6 +225,75 @@ fn read_pixel(
     Some(())
 }
 
+/// `glReadPixels` of `GL_UNSIGNED_BYTE` components (`channels`, none of
+/// them luminance) from an 8-bit colour buffer, a row at a time: the bytes
+/// as stored, which is what the general path's `c · (1/255)` in f32, then
+/// `round(v · 255)`, gives back for every byte (tested). The general path
+/// spent 520 instructions a pixel (a MuJoCo frame's 320×240 `GL_RGB` read:
+/// 40 M, a tenth of the frame; callgrind); this one about 10. False (and
+/// nothing written) for a format it does not read.
+fn read_bytes(
+    fb: &Framebuffer,
+    channels: &[Option<usize>],
+    (x, y, w, h): (i32, i32, usize, usize),
+    dst: &mut [u8],
+    start: usize,
+    stride: usize,
+) -> bool {
+    use softgl::ColorFormat;
+    // Where each of R, G, B, A is in a stored pixel (`None`: A of an RGB buffer, 255).
+    let (bpp, from): (usize, [Option<usize>; 4]) = match fb.color_format() {
+        ColorFormat::Rgba8 => (4, [Some(0), Some(1), Some(2), Some(3)]),
+        ColorFormat::Bgra8 => (4, [Some(2), Some(1), Some(0), Some(3)]),
+        ColorFormat::Rgb8 => (3, [Some(0), Some(1), Some(2), None]),
+        _ => return false,
+    };
+    let mut at = [None; 4];
+    for (a, c) in at.iter_mut().zip(channels) {
+        match c.and_then(|c| from.get(c).copied()) {
+            Some(f) => *a = f,
+            None if c.is_some() => {}
+            None => return false,
+        }
+    }
+    let comps = channels.len();
+    let at = &at[..comps];
+    let (width, height) = (i64::from(fb.width()), i64::from(fb.height()));
+    let (x, y) = (i64::from(x), i64::from(y));
+    // The columns inside the buffer: the others' bytes are left as they are.
+    let (i0, i1) = ((-x).clamp(0, w as i64), (width - x).clamp(0, w as i64));
+    if i0 >= i1 {
+        return true;
+    }
+    let (i0, i1) = (i0 as usize, i1 as usize);
+    let bytes = fb.color_bytes();
+    let same = comps == bpp && at.iter().enumerate().all(|(k, a)| *a == Some(k));
+    for j in 0..h {
+        let fy = y + j as i64;
+        if fy < 0 || fy >= height {
+            continue;
+        }
+        let row = if fb.color_top_down() { height - 1 - fy } else { fy } as usize;
+        let first = row * fb.color_stride() + (x + i0 as i64) as usize * bpp;
+        let (Some(src), Some(out)) = (
+            bytes.get(first..first + (i1 - i0) * bpp),
+            dst.get_mut(start + j * stride + i0 * comps..start + j * stride + i1 * comps),
+        ) else {
+            continue;
+        };
+        if same {
+            out.copy_from_slice(src);
+            continue;
+        }
+        for (o, p) in out.chunks_exact_mut(comps).zip(src.chunks_exact(bpp)) {
+            for (o, a) in o.iter_mut().zip(at) {
+                *o = a.map_or(255, |a| p[a]);
+            }
+        }
+    }
+    true
+}
+
 /// `v`, a `from`-bit unsigned value, widened or narrowed to `to` bits by bit
 /// replication (Mesa's Z24 to `GL_UNSIGNED_INT`: `z << 8 | z >> 16`).
 fn replicate(v: u32, from: u32, to: u32) -> u32 {
@@ -287,15 +356,11 @@ fn put(dst: &mut [u8], ty: GLenum, v: f64, stencil: bool, swap: bool) {
     dst[..n].copy_from_slice(&bytes[..n]);
 }
 
-/// `glReadPixels`'s common reads row by row, when the rectangle is inside
-/// the framebuffer: colour channels as `GL_UNSIGNED_BYTE` from an RGBA8
-/// buffer (each byte as it is stored: the general path's
-/// `round(f32(c) · (1/255) · 255)` is `c`), and depth as `GL_FLOAT`
-/// (`z / max` in f64, as the general path). `false` when not taken. The
-/// general path cost ~520 instructions a pixel (callgrind, a 320×240 RGB
-/// read of osmesa/bench/shadow_fbo.c; MuJoCo reads every frame).
+/// `glReadPixels` of depth as `GL_FLOAT` row by row, when the rectangle is
+/// inside the framebuffer (`z / max` in f64, as the general path; float
+/// depth as stored). `false` when not taken. (Colour bytes: [`read_bytes`].)
 #[allow(clippy::too_many_arguments)]
-fn read_rows_fast(
+fn read_depth_rows(
     fb: &Framebuffer,
     src: Source,
     (x, y, w, h): (i32, i32, usize, usize),
@@ -318,36 +383,6 @@ fn read_rows_fast(
         return false;
     }
     match (src, ty) {
-        (Source::Color(channels), GL_UNSIGNED_BYTE) if fb.color_format() == softgl::ColorFormat::Rgba8 => {
-            let Some(ch) = channels.iter().copied().collect::<Option<Vec<usize>>>() else {
-                return false;
-            };
-            let comps = ch.len();
-            for j in 0..h {
-                let Some(span) = fb.color_span(x0, x1, y0 + j as u32) else {
-                    return false;
-                };
-                let Some(row) = dst.get_mut(start + j * stride..start + j * stride + w * comps) else {
-                    return false;
-                };
-                match ch[..] {
-                    [0, 1, 2, 3] => row.copy_from_slice(span),
-                    [0, 1, 2] => {
-                        for (o, p) in row.chunks_exact_mut(3).zip(span.chunks_exact(4)) {
-                            o.copy_from_slice(&p[..3]);
-                        }
-                    }
-                    _ => {
-                        for (o, p) in row.chunks_exact_mut(comps).zip(span.chunks_exact(4)) {
-                            for (o, &c) in o.iter_mut().zip(&ch) {
-                                *o = p[c];
-                            }
-                        }
-                    }
-                }
-            }
-            true
-        }
         (Source::Depth, GL_FLOAT) => {
             let (Some(d), Some(format)) = (fb.depth_buffer(), fb.depth_format()) else {
                 return false;
@@ -466,9 +501,15 @@ unsafe fn read_pixels(
     // which is exactly `len` bytes from `pixels`.
     let dst = unsafe { std::slice::from_raw_parts_mut(pixels.cast::<u8>(), len) };
     // Without pixel transfer operations (they take the general path).
-    let identity = gl.pixel_state().is_identity();
-    if identity && read_rows_fast(fb, src, (x, y, w, h), ty, pack, dst, start, stride) {
-        return Ok(());
+    if gl.pixel_state().is_identity() {
+        if let Source::Color(channels) = src {
+            if ty == GL_UNSIGNED_BYTE && read_bytes(fb, channels, (x, y, w, h), dst, start, stride) {
+                return Ok(());
+            }
+        }
+        if read_depth_rows(fb, src, (x, y, w, h), ty, pack, dst, start, stride) {
+            return Ok(());
+        }
     }
     let stencil = matches!(src, Source::Stencil);
     let float_src = matches!(src, Source::Color(_)) && fb.color_format() == softgl::ColorFormat::Rgba32F;
@@ -638,6 +679,16 @@ exports! {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn stored_bytes_are_what_the_general_path_reads() {
+        for c in 0..=255u8 {
+            let v = f64::from(f32::from(c) * (1.0 / 255.0));
+            let mut out = [0u8; 1];
+            put(&mut out, GL_UNSIGNED_BYTE, v, false, false);
+            assert_eq!(out[0], c);
+        }
+    }
 
     #[test]
     fn pixel_sizes_and_mesas_error_order() {
