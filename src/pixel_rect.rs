@@ -217,7 +217,11 @@ impl PlacedBitmap {
             x0: clamp(self.x, bounds.x0, bounds.x1),
             y0: clamp(self.y, bounds.y0, bounds.y1),
             x1: clamp(self.x.saturating_add(i64::from(self.image.width)), bounds.x0, bounds.x1),
-            y1: clamp(self.y.saturating_add(i64::from(self.image.height)), bounds.y0, bounds.y1),
+            y1: clamp(
+                self.y.saturating_add(i64::from(self.image.height)),
+                bounds.y0,
+                bounds.y1,
+            ),
         };
         (!r.is_empty()).then_some(r)
     }

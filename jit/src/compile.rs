@@ -113,8 +113,7 @@
 
 use crate::key::{
     AlphaCoverage, BlendEquation, BlendFactor, BlendKey, ColorFormat, ColorMask, CompareFunc, DepthFormat, DepthKey,
-    FragmentKey,
-    LogicOp, Stage, StencilKey, StencilOp,
+    FragmentKey, LogicOp, Stage, StencilKey, StencilOp,
 };
 use crate::pixel;
 use crate::shade::{Planes, COLOUR_BOUNDED};
