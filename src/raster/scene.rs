@@ -883,11 +883,12 @@ impl Scene {
         }
         let words = CACHE_WIDTH / 64;
         if let Some(p) = self.pending.as_mut() {
-            let (px, py) = (b.x - p.x, b.y - p.y);
+            // Positions saturate far off-screen: the offsets may not exist.
+            let (px, py) = (b.x.checked_sub(p.x).unwrap_or(-1), b.y.checked_sub(p.y).unwrap_or(-1));
             let fits = px >= 0
                 && py >= 0
-                && px + i64::from(w) <= i64::from(CACHE_WIDTH)
-                && py + i64::from(h) <= i64::from(CACHE_HEIGHT);
+                && px.saturating_add(i64::from(w)) <= i64::from(CACHE_WIDTH)
+                && py.saturating_add(i64::from(h)) <= i64::from(CACHE_HEIGHT);
             if fits && p.colour == colour && (p.z - v.z).abs() <= 1e-6 && p.state.same_as(&state) && p.params == *params
             {
                 b.image.or_into(&mut p.bits, words, px as u32, py as u32);
@@ -905,7 +906,7 @@ impl Scene {
             z: v.z,
             vertex: v,
             x: b.x,
-            y: b.y - i64::from(py),
+            y: b.y.saturating_sub(i64::from(py)),
             bits,
         }));
     }
