@@ -405,6 +405,12 @@ pub struct Context {
     /// background flush (their buffers are `fb`'s other samples; `fb`
     /// itself is sample 0: `multisample.rs`).
     lanes: Vec<Lane>,
+    /// Where every sample's depth, and stencil, are known equal: the
+    /// rectangle a clear set in all of them, while only draws with
+    /// `GL_MULTISAMPLE` off (which cover and write every sample alike)
+    /// came since. A filled polygon drawn with it off inside them needs no
+    /// copy of sample 0's tests ([`Context::one_sample_tests`]).
+    pub(crate) samples_same: [Option<Rect>; 2],
     /// Lanes of an earlier multisampled framebuffer, kept with their
     /// scenes' memory for the next (MuJoCo binds its 4× object and a 1×
     /// shadow map in turn: fresh lanes refilled their scenes' vectors in
@@ -509,6 +515,7 @@ impl Context {
             raster: crate::raster_pos::RasterPos::default(),
             pixel: crate::pixel_transfer::PixelState::default(),
             lanes: (1..fb_samples).map(|_| Lane::default()).collect(),
+            samples_same: [None; 2],
             render_mode: Default::default(),
         }
     }
@@ -583,6 +590,7 @@ impl Context {
             Some(w) => std::mem::replace(w, fb),
             None => {
                 self.grow_lanes(fb.samples());
+                self.samples_same = [None; 2];
                 std::mem::replace(&mut self.fb, fb)
             }
         }
@@ -600,6 +608,7 @@ impl Context {
     /// `fb` was replaced (a framebuffer object bound or released; every
     /// lane's scene is empty then: the caller finished the scene first).
     pub(crate) fn follow_samples(&mut self) {
+        self.samples_same = [None; 2];
         self.grow_lanes(self.fb.samples());
     }
 
@@ -877,6 +886,13 @@ impl Context {
         }
         if mask.stencil {
             clear = clear.stencil(&self.fb, s.clear_stencil as u8, s.stencil_write_mask as u8);
+        }
+        // Every sample's depth, or stencil, the same again.
+        if mask.depth && s.depth_write {
+            self.samples_same[0] = Some(rect);
+        }
+        if mask.stencil && s.stencil_write_mask & 0xff == 0xff {
+            self.samples_same[1] = Some(rect);
         }
         self.scene.clear(&self.fb, clear);
         for (lane, fb) in self.lanes.iter_mut().zip(&self.fb.samples) {
@@ -1562,10 +1578,14 @@ impl Context {
         // the depth pointer not moved per sample; docs/llvmpipe-facts.md §29).
         // The draw runs at once with samples 1.. given sample 0's depth and
         // stencil, and theirs put back after it (`Context::one_sample_tests`):
-        // this state alone pays for it.
-        let one_sample = self.render_mode.mode == crate::select::RenderMode::Render
-            && !self.state.multisample.enabled
-            && self.fb.samples() > 1;
+        // this state alone pays for it, and only while the samples' depth
+        // and stencil may differ (MuJoCo's depth mode clears and then draws
+        // everything with GL_MULTISAMPLE off: no copies; 12x faster).
+        let multisampled = self.render_mode.mode == crate::select::RenderMode::Render && self.fb.samples() > 1;
+        if multisampled && self.state.multisample.enabled {
+            self.samples_same = [None; 2];
+        }
+        let one_sample = multisampled && !self.state.multisample.enabled && !self.samples_alike_for(mode.0);
         let saved = if one_sample {
             let r = self.fb.bounds();
             self.one_sample_tests(Some(r))
@@ -1577,6 +1597,35 @@ impl Context {
             self.end_one_sample_tests(saved);
         }
         r
+    }
+
+    /// Whether a draw of `mode` with `GL_MULTISAMPLE` off finds every
+    /// sample's depth and stencil alike wherever it can write: filled
+    /// polygons stay inside the viewport (and the scissor box), which must
+    /// lie where a clear made the samples equal.
+    fn samples_alike_for(&self, mode: PrimitiveMode) -> bool {
+        use PrimitiveMode::*;
+        let s = &self.state;
+        let filled = matches!(
+            mode,
+            Triangles | TriangleStrip | TriangleFan | Quads | QuadStrip | Polygon
+        ) && s.polygon_mode(true) == crate::state::PolygonMode::Fill
+            && s.polygon_mode(false) == crate::state::PolygonMode::Fill;
+        if !filled {
+            return false;
+        }
+        let v = s.viewport;
+        let reach = self
+            .fb
+            .clip_rect(i64::from(v.x), i64::from(v.y), i64::from(v.width), i64::from(v.height))
+            .intersect(self.scissored_bounds());
+        // Only the buffers a test reads matter (`one_sample_tests` copies none without one).
+        let tested = [s.depth_test, s.stencil_test && self.fb.has_stencil()];
+        reach.is_empty()
+            || tested
+                .iter()
+                .zip(self.samples_same)
+                .all(|(&t, same)| !t || same.is_some_and(|r| r.intersect(reach) == reach))
     }
 
     /// [`Context::draw_with`] once the framebuffer is ready.

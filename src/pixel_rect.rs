@@ -796,6 +796,8 @@ impl Context {
             Some(saved) => {
                 self.finish_scene();
                 self.fb.restore_tests(saved);
+                // Sample 0 alone may have been written.
+                self.samples_same = [None; 2];
             }
             None if self.scene.bytes() > self.scene.bound() => self.finish_scene(),
             None => {}
