@@ -32,6 +32,16 @@ struct DeepGroup {
     dst: Option<[Value; 4]>,
 }
 
+/// A deep format's lane arithmetic for [`Gen::factor_lanes`]: its 0 and
+/// 1, subtraction and the lesser of two.
+#[derive(Clone, Copy)]
+struct FactorOps {
+    zero: fn(&mut Gen<'_>) -> Value,
+    one: fn(&mut Gen<'_>) -> Value,
+    sub: fn(&mut Gen<'_>, Value, Value) -> Value,
+    min: fn(&mut Gen<'_>, Value, Value) -> Value,
+}
+
 /// The offset of a [`DeepUniforms`] field from a specialist's second argument.
 const fn deep_offset(field: usize) -> usize {
     uniform_offset(offset_of!(FragmentUniforms, deep) + field)
@@ -311,14 +321,31 @@ impl Gen<'_> {
     }
 
     /// `interp::factor` in 16-bit unorm, on `i32` lanes.
-    fn factor16(&mut self, f: BlendFactor, c: usize, (s, d, k): ([Value; 4], [Value; 4], [Value; 4])) -> Value {
+    fn factor16(&mut self, f: BlendFactor, c: usize, sdk: ([Value; 4], [Value; 4], [Value; 4])) -> Value {
+        let ops = FactorOps {
+            zero: |g| g.splat(0),
+            one: |g| g.splat(0xffff),
+            sub: |g, a, b| g.b.ins().isub(a, b),
+            min: |g, a, b| g.b.ins().umin(a, b),
+        };
+        self.factor_lanes(f, c, sdk, ops)
+    }
+
+    /// `interp::factor` on lanes of any deep format, with its arithmetic.
+    fn factor_lanes(
+        &mut self,
+        f: BlendFactor,
+        c: usize,
+        (s, d, k): ([Value; 4], [Value; 4], [Value; 4]),
+        ops: FactorOps,
+    ) -> Value {
         let inv = |g: &mut Self, v: Value| {
-            let one = g.splat(0xffff);
-            g.b.ins().isub(one, v)
+            let one = (ops.one)(g);
+            (ops.sub)(g, one, v)
         };
         match f {
-            BlendFactor::Zero => self.splat(0),
-            BlendFactor::One => self.splat(0xffff),
+            BlendFactor::Zero => (ops.zero)(self),
+            BlendFactor::One => (ops.one)(self),
             BlendFactor::SrcColor => s[c],
             BlendFactor::OneMinusSrcColor => inv(self, s[c]),
             BlendFactor::DstColor => d[c],
@@ -333,10 +360,10 @@ impl Gen<'_> {
             BlendFactor::OneMinusConstantAlpha => inv(self, k[3]),
             BlendFactor::SrcAlphaSaturate => {
                 if c == 3 {
-                    self.splat(0xffff)
+                    (ops.one)(self)
                 } else {
                     let a = inv(self, d[3]);
-                    self.b.ins().umin(s[3], a)
+                    (ops.min)(self, s[3], a)
                 }
             }
         }
@@ -397,37 +424,18 @@ impl Gen<'_> {
         })
     }
 
-    /// `interp::factor` in f32 lanes.
-    fn factor_f32(&mut self, f: BlendFactor, c: usize, (s, d, k): ([Value; 4], [Value; 4], [Value; 4])) -> Value {
-        let inv = |g: &mut Self, v: Value| {
-            let one = g.fconst(1.0);
-            g.b.ins().fsub(one, v)
+    /// `interp::factor` in f32 lanes (the saturate's min as `minps`).
+    fn factor_f32(&mut self, f: BlendFactor, c: usize, sdk: ([Value; 4], [Value; 4], [Value; 4])) -> Value {
+        let ops = FactorOps {
+            zero: |g| g.fconst(0.0),
+            one: |g| g.fconst(1.0),
+            sub: |g, a, b| g.b.ins().fsub(a, b),
+            min: |g, a, b| {
+                let lt = g.b.ins().fcmp(FloatCC::LessThan, a, b);
+                g.fselect(lt, a, b)
+            },
         };
-        match f {
-            BlendFactor::Zero => self.fconst(0.0),
-            BlendFactor::One => self.fconst(1.0),
-            BlendFactor::SrcColor => s[c],
-            BlendFactor::OneMinusSrcColor => inv(self, s[c]),
-            BlendFactor::DstColor => d[c],
-            BlendFactor::OneMinusDstColor => inv(self, d[c]),
-            BlendFactor::SrcAlpha => s[3],
-            BlendFactor::OneMinusSrcAlpha => inv(self, s[3]),
-            BlendFactor::DstAlpha => d[3],
-            BlendFactor::OneMinusDstAlpha => inv(self, d[3]),
-            BlendFactor::ConstantColor => k[c],
-            BlendFactor::OneMinusConstantColor => inv(self, k[c]),
-            BlendFactor::ConstantAlpha => k[3],
-            BlendFactor::OneMinusConstantAlpha => inv(self, k[3]),
-            BlendFactor::SrcAlphaSaturate => {
-                if c == 3 {
-                    self.fconst(1.0)
-                } else {
-                    let a = inv(self, d[3]);
-                    let lt = self.b.ins().fcmp(FloatCC::LessThan, s[3], a);
-                    self.fselect(lt, s[3], a)
-                }
-            }
-        }
+        self.factor_lanes(f, c, sdk, ops)
     }
 
     /// The group's stored channels, loaded and taken apart once.
