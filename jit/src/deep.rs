@@ -42,6 +42,25 @@ pub fn clamp_colour(v: f32) -> f32 {
     }
 }
 
+/// The NaN both back ends store for a float channel whatever NaN the
+/// fragment's arithmetic made: x86's default NaN (`0xFFC00000`), what
+/// llvmpipe stores for a NaN its own blend generates (`inf · 0`: checked
+/// against llvmpipe, docs/llvmpipe-facts.md §39). NaN operands propagate
+/// their sign and payload on x86 from whichever operand comes first, and the
+/// two back ends (and LLVM, free to commute a product) order some operands
+/// differently, so a NaN's bits are not kept; a clear stores its colour as given.
+pub const CANONICAL_NAN: u32 = 0xFFC0_0000;
+
+/// The bits a float channel stores: `v`'s, or [`CANONICAL_NAN`].
+#[inline]
+pub fn float_bits(v: f32) -> u32 {
+    if v.is_nan() {
+        CANONICAL_NAN
+    } else {
+        v.to_bits()
+    }
+}
+
 /// A 16-bit unorm channel as a float (`v * (1 / 65535)`, `util_format`'s unpack).
 #[inline]
 pub fn unorm16_to_float(v: u16) -> f32 {
@@ -88,12 +107,13 @@ pub fn to_float(format: ColorFormat, v: [u32; 4]) -> [f32; 4] {
     }
 }
 
-/// A float colour as the format stores it: [`unorm16`], or the f32 bits.
+/// A float colour as the format stores it: [`unorm16`], or the f32 bits
+/// ([`float_bits`]: NaNs canonical).
 #[inline]
 pub fn from_float(format: ColorFormat, c: [f32; 4]) -> [u32; 4] {
     match format {
         ColorFormat::Rgba16 => c.map(|v| u32::from(unorm16(v))),
-        _ => c.map(f32::to_bits),
+        _ => c.map(float_bits),
     }
 }
 
@@ -246,7 +266,7 @@ pub(crate) fn run_span(
                             let k = k.map(unorm16);
                             blend16(&blend, src, dst.map(|v| v as u16), k).map(u32::from)
                         }
-                        _ => blend_f32(&blend, rgba[i], dst.map(f32::from_bits), k).map(f32::to_bits),
+                        _ => blend_f32(&blend, rgba[i], dst.map(f32::from_bits), k).map(float_bits),
                     };
                 }
                 blended = true;

@@ -1468,3 +1468,122 @@ fn deep_fragments_by_hand() {
         .collect();
     assert_eq!(got, vec![0.25 + 0.75, 1.5 - 0.5, 0.1 + 2.0, 0.5 + 0.25]);
 }
+
+/// NaNs in a float buffer: NaN and infinite shaded colours (payloads of
+/// both signs) over NaN, infinite and finite destinations, through every
+/// blend equation and no blend. Both back ends store the same bits, and
+/// every NaN they store is `deep::CANONICAL_NAN` (x86 propagates the first
+/// NaN operand's bits, and the two back ends order some operands
+/// differently: without it the JIT stored 0xFFC00000 where the interpreter
+/// stored 0x7FC00000).
+#[test]
+fn float_nans_are_stored_canonical_by_both_back_ends() {
+    use softgl_jit::deep::CANONICAL_NAN;
+    let nan = |bits: u32| f32::from_bits(bits);
+    let shade = ShadeKey {
+        color: true,
+        flat: true,
+        ..ShadeKey::default()
+    };
+    let colours = [
+        [nan(0x7fc0_0001), nan(0xffc0_0042), f32::INFINITY, 0.0],
+        [1.0, f32::INFINITY, f32::NEG_INFINITY, nan(0x7fc0_0000)],
+        [0.5, -0.25, 2.0, f32::INFINITY],
+    ];
+    let dst: Vec<f32> = [
+        nan(0x7fc0_0000),
+        nan(0xffc0_0000),
+        nan(0x7fa0_0003),
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        0.0,
+        1.5,
+        -2.0,
+    ]
+    .iter()
+    .cycle()
+    .take(8 * 4 + 3)
+    .copied()
+    .skip(3)
+    .collect();
+    let dst: Vec<u8> = dst.iter().flat_map(|v| v.to_ne_bytes()).collect();
+    let blend = |src, dst, eq| BlendKey {
+        src_rgb: src,
+        dst_rgb: dst,
+        src_alpha: src,
+        dst_alpha: dst,
+        eq_rgb: eq,
+        eq_alpha: eq,
+        ..BlendKey::DEFAULT
+    };
+    let blends = [
+        None,
+        Some(blend(BlendFactor::One, BlendFactor::One, BlendEquation::Add)),
+        Some(blend(
+            BlendFactor::SrcAlpha,
+            BlendFactor::OneMinusSrcAlpha,
+            BlendEquation::Add,
+        )),
+        Some(blend(BlendFactor::DstColor, BlendFactor::Zero, BlendEquation::Add)),
+        Some(blend(
+            BlendFactor::ConstantColor,
+            BlendFactor::SrcColor,
+            BlendEquation::Subtract,
+        )),
+        Some(blend(
+            BlendFactor::SrcAlphaSaturate,
+            BlendFactor::DstAlpha,
+            BlendEquation::ReverseSubtract,
+        )),
+        Some(blend(BlendFactor::One, BlendFactor::One, BlendEquation::Min)),
+        Some(blend(BlendFactor::One, BlendFactor::One, BlendEquation::Max)),
+    ];
+    let mut span = FragmentSpan::new(0, 0);
+    for i in 0..8 {
+        span.set(i, [9, 9, 9, 9], 0);
+    }
+    let mut u = FragmentUniforms::default();
+    u.deep.blend_color = [f32::INFINITY, nan(0xffc0_0007), 0.0, 0.5].map(f32::to_bits);
+    let set = TextureSet::default();
+    let mut nans = 0;
+    for b in blends {
+        for c in colours {
+            let key = FragmentKey {
+                shade: Some(shade),
+                blend: b,
+                ..FragmentKey::new(ColorFormat::Rgba32F, None, false)
+            }
+            .normalized();
+            let mut p = Planes::default();
+            for (k, v) in c.iter().enumerate() {
+                p.constant(k, *v);
+            }
+            let run = |jit: bool| {
+                let mut color = dst.clone();
+                let mut t = Target::new(8, 1, ColorFormat::Rgba32F, &mut color, 8 * 16, None, None).unwrap();
+                let spans = std::slice::from_ref(&span);
+                if jit {
+                    let s = Specialist::compile(&key).unwrap();
+                    let view = s.texture_view(&set);
+                    s.run_splatted(&SplatUniforms::new(&u), (&set, &view), spans, &[p], &mut t)
+                        .unwrap();
+                } else {
+                    interp::run_with_planes(&key, &u, &set, spans, &[p], &mut t).unwrap();
+                }
+                color
+            };
+            let (jit, interp) = (run(true), run(false));
+            assert_eq!(jit, interp, "{b:?} {c:?}");
+            for v in jit
+                .chunks_exact(4)
+                .map(|v| u32::from_ne_bytes([v[0], v[1], v[2], v[3]]))
+            {
+                if f32::from_bits(v).is_nan() {
+                    assert_eq!(v, CANONICAL_NAN, "{b:?} {c:?}");
+                    nans += 1;
+                }
+            }
+        }
+    }
+    assert!(nans > 100, "{nans} NaNs stored");
+}

@@ -106,7 +106,7 @@ impl Gen<'_> {
                         _ => {
                             let dst = dst.map(|v| self.b.ins().bitcast(F32X4, MemFlagsData::new(), v));
                             let out = self.blend_f32_lanes(&blend, c, dst, k);
-                            out.map(|v| self.b.ins().bitcast(I32X4, MemFlagsData::new(), v))
+                            out.map(|v| self.float_bits(v))
                         }
                     });
                 }
@@ -115,7 +115,7 @@ impl Gen<'_> {
                         let c = self.deep_colour(&mut g, sv, &mut d);
                         d.out = Some(match format {
                             ColorFormat::Rgba16 => c.map(|v| self.unorm16_lanes(v, true)),
-                            _ => c.map(|v| self.b.ins().bitcast(I32X4, MemFlagsData::new(), v)),
+                            _ => c.map(|v| self.float_bits(v)),
                         });
                     }
                 }
@@ -219,6 +219,16 @@ impl Gen<'_> {
         let v = self.fselect(above, v, zero);
         let below = self.b.ins().fcmp(FloatCC::LessThan, v, one);
         self.fselect(below, v, one)
+    }
+
+    /// `crate::deep::float_bits` on `f32x4` lanes: the bits as `i32x4`, a
+    /// NaN lane `CANONICAL_NAN` (two instructions a channel: `cmpunordps`,
+    /// `blendvps`).
+    fn float_bits(&mut self, v: Value) -> Value {
+        let nan = self.b.ins().fcmp(FloatCC::Unordered, v, v);
+        let bits = self.b.ins().bitcast(I32X4, MemFlagsData::new(), v);
+        let canonical = self.splat(i64::from(crate::deep::CANONICAL_NAN));
+        self.select(nan, canonical, bits)
     }
 
     /// `t` in the lanes of lane mask `mask`, else `f`, of `f32x4` values.
