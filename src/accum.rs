@@ -126,9 +126,15 @@ fn c_int(f: f32) -> i32 {
 /// Mesa's pack of float RGBA into the stored pixel at the start of `bytes`
 /// (`_mesa_pack_float_rgba_row`: 16-bit unorm by `util_iround`, floats as they are).
 fn pack_float(format: ColorFormat, rgba: [f32; 4], bytes: &mut [u8]) {
-    let v = match format {
-        ColorFormat::Rgba16 => rgba.map(|c| float_to_unorm_iround(c, 65535)),
-        _ => rgba.map(f32::to_bits),
+    let v = if format.is_float() {
+        // Halves as their clears and fragments store them; alpha 1 where none is stored.
+        deep::from_float(format, rgba)
+    } else {
+        let mut v = rgba.map(|c| float_to_unorm_iround(c, 65535));
+        if !format.has_alpha() {
+            v[3] = 65535;
+        }
+        v
     };
     if format.is_deep() {
         for (c, v) in v.into_iter().enumerate() {

@@ -825,8 +825,11 @@ impl Context {
 
     // ----- clearing, viewport -----
 
+    /// `glClearColor`, kept unclamped as Mesa keeps it (`_mesa_ClearColor`):
+    /// a float buffer is cleared to it as given, a unorm one clamps it;
+    /// `GL_COLOR_CLEAR_VALUE` reads [`Context::clear_color_value`].
     pub fn clear_color(&mut self, r: f32, g: f32, b: f32, a: f32) -> GlResult {
-        self.set(|s| s.clear_color = [r, g, b, a].map(|c| if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) }))
+        self.set(|s| s.clear_color = [r, g, b, a])
     }
 
     pub fn clear_depth(&mut self, depth: f64) -> GlResult {

@@ -47,7 +47,13 @@
 //!   scratch buffer is kept in the object and reused (32 MiB at 4096²).
 //!
 //! Colour formats the rasterizer writes: RGBA8 (`GL_RGBA`, `GL_RGBA8`), RGB8
-//! (`GL_RGB`, `GL_RGB8`: alpha reads 1, as llvmpipe's `R8G8B8X8`) and RGB565.
+//! (`GL_RGB`, `GL_RGB8`: alpha reads 1, as llvmpipe's `R8G8B8X8`), RGB565,
+//! and the deep ones, RGBA16, RGB16 (RGBX), RGBA16F, RGB16F, RGBA32F and
+//! RGB32F, each stored as llvmpipe stores it (half floats as f32 holding a
+//! half's value). GL's other colour formats take the storage llvmpipe
+//! chooses when softgl has it (`GL_RGBA12` and `GL_RGB12` are RGBA16 and
+//! RGB16 there too), else the nearest one with at least the bits asked for
+//! (`RenderbufferFormat::kind`), and report its sizes.
 //! Depth: 16, 24 and 32-bit unorm; stencil: 8 bits, only together with depth
 //! in one `GL_DEPTH24_STENCIL8` renderbuffer or alone (Mesa's gallium
 //! framebuffers take no separate depth and stencil renderbuffers:
@@ -99,11 +105,10 @@ pub enum RenderbufferFormat {
     Rgba12,
     Rgb16,
     Rgba16,
-    /// `GL_RGBA16F`, `GL_RGB16F` (half floats, as llvmpipe stores them:
-    /// not rendered, `GL_FRAMEBUFFER_UNSUPPORTED`).
+    /// `GL_RGBA16F`, `GL_RGB16F`: half floats (`ColorFormat::Rgba16F`, `Rgbx16F`).
     Rgba16F,
     Rgb16F,
-    /// `GL_RGBA32F` (rendered as `ColorFormat::Rgba32F`), `GL_RGB32F` (not rendered).
+    /// `GL_RGBA32F`, `GL_RGB32F` (`ColorFormat::Rgba32F`, `Rgbx32F`).
     Rgba32F,
     Rgb32F,
     DepthComponent,
@@ -137,11 +142,19 @@ impl RenderbufferFormat {
         use RenderbufferFormat as F;
         use RenderbufferKind as K;
         Some(match self {
-            F::Rgba | F::Rgba8 => K::Color(ColorFormat::Rgba8),
+            // llvmpipe: B4G4R4A4, B5G5R5A1 (docs/llvmpipe-facts.md §40).
+            F::Rgba | F::Rgba8 | F::Rgba2 | F::Rgba4 | F::Rgb5A1 => K::Color(ColorFormat::Rgba8),
             F::Rgb | F::Rgb8 => K::Color(ColorFormat::Rgb8),
-            F::Rgb565 => K::Color(ColorFormat::Rgb565),
-            F::Rgba16 => K::Color(ColorFormat::Rgba16),
+            // llvmpipe: B2G3R3, B4G4R4X4, B5G5R5X1.
+            F::Rgb565 | F::R3G3B2 | F::Rgb4 | F::Rgb5 => K::Color(ColorFormat::Rgb565),
+            // llvmpipe: R16G16B16A16 for RGBA12 too; B10G10R10A2 for RGB10_A2.
+            F::Rgba16 | F::Rgba12 | F::Rgb10A2 => K::Color(ColorFormat::Rgba16),
+            // llvmpipe: R16G16B16X16 for RGB12 too; B10G10R10X2 for RGB10.
+            F::Rgb16 | F::Rgb12 | F::Rgb10 => K::Color(ColorFormat::Rgbx16),
+            F::Rgba16F => K::Color(ColorFormat::Rgba16F),
+            F::Rgb16F => K::Color(ColorFormat::Rgbx16F),
             F::Rgba32F => K::Color(ColorFormat::Rgba32F),
+            F::Rgb32F => K::Color(ColorFormat::Rgbx32F),
             F::DepthComponent | F::DepthComponent24 => K::Depth(DepthFormat::D24),
             F::DepthComponent16 => K::Depth(DepthFormat::D16),
             F::DepthComponent32 => K::Depth(DepthFormat::D32),
@@ -149,13 +162,25 @@ impl RenderbufferFormat {
             F::DepthComponent32F => K::Depth(DepthFormat::D32F),
             F::Depth32FStencil8 => K::DepthStencil(DepthFormat::D32F),
             F::StencilIndex | F::StencilIndex8 => K::Stencil,
-            _ => return None,
+            F::StencilIndex1 | F::StencilIndex4 | F::StencilIndex16 => return None,
         })
     }
 
-    /// `GL_RENDERBUFFER_{RED,GREEN,BLUE,ALPHA,DEPTH,STENCIL}_SIZE`.
+    /// `GL_RENDERBUFFER_{RED,GREEN,BLUE,ALPHA,DEPTH,STENCIL}_SIZE`: a colour
+    /// format's are its storage's (`GL_RGBA4` is stored, and reports, 8 bits
+    /// a channel).
     pub fn bits(self) -> [u32; 6] {
         use RenderbufferFormat as F;
+        if let Some(RenderbufferKind::Color(c)) = self.kind() {
+            return [
+                c.channel_bits(0),
+                c.channel_bits(1),
+                c.channel_bits(2),
+                c.channel_bits(3),
+                0,
+                0,
+            ];
+        }
         match self {
             F::Rgba | F::Rgba8 => [8, 8, 8, 8, 0, 0],
             F::Rgb | F::Rgb8 => [8, 8, 8, 0, 0, 0],
@@ -754,7 +779,7 @@ impl Context {
         let n = width as usize * height as usize;
         let one = || match format.kind() {
             None => Ok(None),
-            Some(RenderbufferKind::Color(c)) => alloc(n * c.bytes_per_pixel(), 0u8).map(|v| Some(RbStorage::Color(v))),
+            Some(RenderbufferKind::Color(c)) => color_storage(c, n).map(|v| Some(RbStorage::Color(v))),
             Some(RenderbufferKind::Depth(d)) => depth_buffer(d, n).map(|d| Some(RbStorage::Depth(d))),
             Some(RenderbufferKind::DepthStencil(d)) => {
                 depth_buffer(d, n).and_then(|d| Ok(Some(RbStorage::DepthStencil(d, alloc(n, 0u8)?))))
@@ -970,6 +995,33 @@ impl Context {
                 .object(name)
                 .and_then(|o| o.image(level as usize, face as usize))
                 .is_some_and(|i| i.internal.storage().float),
+        }
+    }
+
+    /// `GL_COLOR_CLEAR_VALUE` as Mesa answers it (`main/get.c`): clamped to
+    /// `[0, 1]` (NaN as 0) when fragment colours are clamped for the draw
+    /// framebuffer (`_mesa_get_clamp_fragment_color`: always with
+    /// `GL_CLAMP_FRAGMENT_COLOR` on, under `GL_FIXED_ONLY` unless a float
+    /// object is drawn; the OSMesa window counts as fixed-point whatever its
+    /// type), else as `glClearColor` gave it.
+    pub fn clear_color_value(&self) -> [f32; 4] {
+        let c = self.state().clear_color;
+        let float_object = self.fbo.draw != 0 && self.fb.color_format().is_float();
+        if float_object && !self.state().clamp_fragment_color {
+            return c;
+        }
+        c.map(|v| if v > 0.0 { v.min(1.0) } else { 0.0 })
+    }
+
+    /// Whether attachment `a` is a float colour image (`GL_RGBA16F`, `GL_RGB16F`,
+    /// `GL_RGBA32F`, `GL_RGB32F`): its `GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE` is `GL_FLOAT`.
+    pub fn attachment_float_color(&self, a: Attachment) -> bool {
+        match a {
+            Attachment::Renderbuffer(n) => self
+                .fbo
+                .renderbuffer(n)
+                .is_some_and(|r| matches!(r.format.kind(), Some(RenderbufferKind::Color(c)) if c.is_float())),
+            Attachment::None | Attachment::Texture { .. } => false,
         }
     }
 
@@ -2144,6 +2196,26 @@ fn convert_back(d: &DepthBuffer, bits: u32, out: &mut [u8]) {
         s.spawn(|| run(0..half, a));
         run(half..n, b);
     });
+}
+
+/// `n` pixels of colour format `c`, zero but for the alpha 1 of a deep
+/// format without alpha (what its fourth channel always holds).
+fn color_storage(c: ColorFormat, n: usize) -> GlResult<Vec<u8>> {
+    let bpp = c.bytes_per_pixel();
+    let mut v = alloc(n * bpp, 0u8)?;
+    if c.is_deep() && !c.has_alpha() {
+        let mut px = [0u8; 16];
+        for (k, value) in softgl_jit::deep::from_float(c, [0.0, 0.0, 0.0, 1.0])
+            .into_iter()
+            .enumerate()
+        {
+            softgl_jit::deep::store_channel(c, &mut px, k, value);
+        }
+        for p in v.chunks_exact_mut(bpp) {
+            p.copy_from_slice(&px[..bpp]);
+        }
+    }
+    Ok(v)
 }
 
 fn depth_buffer(format: DepthFormat, n: usize) -> GlResult<DepthBuffer> {

@@ -159,10 +159,30 @@ impl Clear {
                 // half up in f32); a scissored or masked one draws a quad,
                 // whose colour converts as a fragment's (`deep::unorm16`).
                 let whole = self.rect == fb.bounds() && !keep.contains(&false);
-                let values = match format {
-                    ColorFormat::Rgba16 if whole => rgba.map(|c| (c.clamp(0.0, 1.0) * 65535.0 + 0.5) as u32),
-                    _ => deep::from_float(format, rgba),
-                };
+                let mut values = deep::from_float(format, rgba);
+                if format.is_float() {
+                    // As given (`glClearColor` is not clamped): NaNs too, as
+                    // llvmpipe's `util_pack_color` stores them.
+                    for (v, c) in values.iter_mut().zip(rgba).take(if format.has_alpha() { 4 } else { 3 }) {
+                        if c.is_nan() {
+                            let bits = c.to_bits();
+                            // A half keeps the sign and the top 10 payload bits, made quiet.
+                            *v = if format.is_half() {
+                                (bits & 0xffff_e000) | 0x0040_0000
+                            } else {
+                                bits
+                            };
+                        }
+                    }
+                }
+                if whole && !format.is_float() {
+                    // Alpha stays 1 where none is stored (`from_float`'s).
+                    let packed = rgba.map(|c| (c.clamp(0.0, 1.0) * 65535.0 + 0.5) as u32);
+                    values[..3].copy_from_slice(&packed[..3]);
+                    if format.has_alpha() {
+                        values[3] = packed[3];
+                    }
+                }
                 let mut bytes = [0u8; 16];
                 for (c, v) in values.into_iter().enumerate() {
                     deep::store_channel(format, &mut bytes, c, v);

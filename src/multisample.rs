@@ -534,7 +534,12 @@ pub fn resolve_value(format: ColorFormat, samples: &[u32]) -> u32 {
         ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8 => &[(0, 8), (8, 8), (16, 8), (24, 8)],
         // Deep formats do not fit a packed u32 and are never multisampled
         // (`Framebuffer::new_multisample` refuses them).
-        ColorFormat::Rgba16 | ColorFormat::Rgba32F => return samples[0],
+        ColorFormat::Rgba16
+        | ColorFormat::Rgbx16
+        | ColorFormat::Rgba16F
+        | ColorFormat::Rgbx16F
+        | ColorFormat::Rgba32F
+        | ColorFormat::Rgbx32F => return samples[0],
     };
     let mut out = 0u32;
     for &(shift, width) in channels {

@@ -1415,7 +1415,12 @@ impl<'a> Gen<'a> {
                 let spread = self.b.ins().shuffle(bytes, zero, m);
                 self.b.ins().bitcast(I32X4, le(), spread)
             }
-            ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+            ColorFormat::Rgba16
+            | ColorFormat::Rgbx16
+            | ColorFormat::Rgba16F
+            | ColorFormat::Rgbx16F
+            | ColorFormat::Rgba32F
+            | ColorFormat::Rgbx32F => {
                 unreachable!("the deep formats' groups take `deep_stages`")
             }
         };
@@ -1442,7 +1447,12 @@ impl<'a> Gen<'a> {
                 let hi = self.b.ins().extractlane(words, 2);
                 self.b.ins().store(mem(), hi, p, 8);
             }
-            ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+            ColorFormat::Rgba16
+            | ColorFormat::Rgbx16
+            | ColorFormat::Rgba16F
+            | ColorFormat::Rgbx16F
+            | ColorFormat::Rgba32F
+            | ColorFormat::Rgbx32F => {
                 unreachable!("the deep formats' groups take `deep_stages`")
             }
         }
@@ -1491,7 +1501,12 @@ impl<'a> Gen<'a> {
                 let b = self.replicate(b5, 3, 2);
                 [r, g, b, self.splat(255)]
             }
-            ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+            ColorFormat::Rgba16
+            | ColorFormat::Rgbx16
+            | ColorFormat::Rgba16F
+            | ColorFormat::Rgbx16F
+            | ColorFormat::Rgba32F
+            | ColorFormat::Rgbx32F => {
                 unreachable!("the deep formats' groups take `deep_stages`")
             }
         }
@@ -1545,7 +1560,12 @@ impl<'a> Gen<'a> {
                 let v = self.b.ins().bor(r, g);
                 self.b.ins().bor(v, b)
             }
-            ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+            ColorFormat::Rgba16
+            | ColorFormat::Rgbx16
+            | ColorFormat::Rgba16F
+            | ColorFormat::Rgbx16F
+            | ColorFormat::Rgba32F
+            | ColorFormat::Rgbx32F => {
                 unreachable!("the deep formats' groups take `deep_stages`")
             }
         }

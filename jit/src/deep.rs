@@ -61,6 +61,30 @@ pub fn float_bits(v: f32) -> u32 {
     }
 }
 
+/// The f32 bits of `v` converted to a half float as llvmpipe stores a
+/// `GL_RGBA16F`/`GL_RGB16F` channel (`lp_build_float_to_half`,
+/// `gallivm/lp_bld_conv.c`: `vcvtps2ph` with rounding mode 3, toward zero;
+/// clears through `util_format`'s `_mesa_float_to_float16_rtz`, the same):
+/// the mantissa cut to 10 bits, half denormals (below 2^-14) cut to
+/// multiples of 2^-24 (llvmpipe keeps denormals on for half formats), finite
+/// values past 65504 to ±65504 (round toward zero never overflows), ±inf kept,
+/// NaN the canonical one (whose half is `0xFE00`, read back as the same f32).
+#[inline]
+pub fn half_bits(v: f32) -> u32 {
+    const MIN_NORMAL: u32 = 0x3880_0000; // 2^-14
+    const MAX_HALF: u32 = 0x477f_e000; // 65504
+    let bits = float_bits(v);
+    let abs = bits & 0x7fff_ffff;
+    if abs < MIN_NORMAL {
+        // `v · 2^24` and back are exact; the truncation keeps the sign (-0).
+        ((v * 16_777_216.0).trunc() * (1.0 / 16_777_216.0)).to_bits()
+    } else if abs > MAX_HALF && abs < 0x7f80_0000 {
+        (bits & 0x8000_0000) | MAX_HALF
+    } else {
+        bits & 0xffff_e000
+    }
+}
+
 /// A 16-bit unorm channel as a float (`v * (1 / 65535)`, `util_format`'s unpack).
 #[inline]
 pub fn unorm16_to_float(v: u16) -> f32 {
@@ -79,41 +103,62 @@ pub fn mul_unorm16(a: u16, b: u16) -> u16 {
 /// widened, or f32 bits.
 #[inline]
 pub fn load(format: ColorFormat, bytes: &[u8]) -> [u32; 4] {
-    match format {
-        ColorFormat::Rgba16 => std::array::from_fn(|c| u32::from(u16::from_ne_bytes([bytes[2 * c], bytes[2 * c + 1]]))),
-        ColorFormat::Rgba32F => std::array::from_fn(|c| {
+    if !format.is_deep() {
+        return [0; 4];
+    }
+    if format.is_float() {
+        std::array::from_fn(|c| {
             u32::from_ne_bytes([bytes[4 * c], bytes[4 * c + 1], bytes[4 * c + 2], bytes[4 * c + 3]])
-        }),
-        _ => [0; 4],
+        })
+    } else {
+        std::array::from_fn(|c| u32::from(u16::from_ne_bytes([bytes[2 * c], bytes[2 * c + 1]])))
     }
 }
 
 /// Stores channel `c` of a pixel (as [`load`] gives it) at the start of `bytes`.
 #[inline]
 pub fn store_channel(format: ColorFormat, bytes: &mut [u8], c: usize, v: u32) {
-    match format {
-        ColorFormat::Rgba16 => bytes[2 * c..2 * c + 2].copy_from_slice(&(v as u16).to_ne_bytes()),
-        ColorFormat::Rgba32F => bytes[4 * c..4 * c + 4].copy_from_slice(&v.to_ne_bytes()),
-        _ => {}
+    if !format.is_deep() {
+        return;
+    }
+    if format.is_float() {
+        bytes[4 * c..4 * c + 4].copy_from_slice(&v.to_ne_bytes());
+    } else {
+        bytes[2 * c..2 * c + 2].copy_from_slice(&(v as u16).to_ne_bytes());
     }
 }
 
 /// The stored pixel as float RGBA.
 #[inline]
 pub fn to_float(format: ColorFormat, v: [u32; 4]) -> [f32; 4] {
-    match format {
-        ColorFormat::Rgba16 => v.map(|c| unorm16_to_float(c as u16)),
-        _ => v.map(f32::from_bits),
+    if format.is_float() {
+        v.map(f32::from_bits)
+    } else {
+        v.map(|c| unorm16_to_float(c as u16))
     }
 }
 
-/// A float colour as the format stores it: [`unorm16`], or the f32 bits
-/// ([`float_bits`]: NaNs canonical).
+/// A float colour as the format stores it: [`unorm16`], the f32 bits
+/// ([`float_bits`]: NaNs canonical) or a half's ([`half_bits`]); alpha 1
+/// where the format stores none (what its fourth channel always holds).
 #[inline]
 pub fn from_float(format: ColorFormat, c: [f32; 4]) -> [u32; 4] {
-    match format {
-        ColorFormat::Rgba16 => c.map(|v| u32::from(unorm16(v))),
-        _ => c.map(float_bits),
+    let mut v = c.map(|v| store_value(format, v));
+    if !format.has_alpha() {
+        v[3] = store_value(format, 1.0);
+    }
+    v
+}
+
+/// One channel of a fragment colour as the format stores it (see [`from_float`]).
+#[inline]
+pub fn store_value(format: ColorFormat, v: f32) -> u32 {
+    if format.is_half() {
+        half_bits(v)
+    } else if format.is_float() {
+        float_bits(v)
+    } else {
+        u32::from(unorm16(v))
     }
 }
 
@@ -189,7 +234,7 @@ pub(crate) fn run_span(
     let bpp = format.bytes_per_pixel();
     let (y, x0) = (span.y, span.x);
     // Unorm formats clamp fragment colours; floats only when asked (GL_FIXED_ONLY).
-    let clamp = format == ColorFormat::Rgba16 || u.deep.clamp != 0;
+    let clamp = !format.is_float() || u.deep.clamp != 0;
     let clamped = |c: [f32; 4]| if clamp { c.map(clamp_colour) } else { c };
     let mut rgba = [[0f32; 4]; SPAN_MAX];
     for (i, c) in rgba.iter_mut().enumerate() {
@@ -260,13 +305,13 @@ pub(crate) fn run_span(
                 let color = t.color();
                 for i in lanes(live) {
                     let dst = load(format, &color[off0 + i * bpp..]);
-                    out[i] = match format {
-                        ColorFormat::Rgba16 => {
-                            let src = rgba[i].map(unorm16);
-                            let k = k.map(unorm16);
-                            blend16(&blend, src, dst.map(|v| v as u16), k).map(u32::from)
-                        }
-                        _ => blend_f32(&blend, rgba[i], dst.map(f32::from_bits), k).map(float_bits),
+                    out[i] = if format.is_float() {
+                        let v = blend_f32(&blend, rgba[i], dst.map(f32::from_bits), k);
+                        v.map(|v| store_value(format, v))
+                    } else {
+                        let src = rgba[i].map(unorm16);
+                        let k = k.map(unorm16);
+                        blend16(&blend, src, dst.map(|v| v as u16), k).map(u32::from)
                     };
                 }
                 blended = true;
@@ -279,7 +324,7 @@ pub(crate) fn run_span(
                 }
             }
             Stage::LogicOp(op) => {
-                if format == ColorFormat::Rgba16 {
+                if !format.is_float() {
                     let off0 = t.color_offset(x0, y);
                     let color = t.color();
                     for i in lanes(live) {
@@ -325,5 +370,55 @@ mod tests {
         assert_eq!(mul_unorm16(65535, 65535), 65535);
         assert_eq!(mul_unorm16(65535, 1234), 1234);
         assert_eq!(mul_unorm16(0, 65535), 0);
+    }
+
+    /// `half_bits` against round toward zero onto the half grid, worked in
+    /// f64: every half is kept, anything between two halves goes to the one
+    /// nearer zero, past 65504 stays 65504, infinities stay, NaN is canonical.
+    #[test]
+    fn half_bits_truncates_onto_the_half_grid() {
+        let reference = |x: f32| -> f32 {
+            let (s, a) = (x.signum() as f64, f64::from(x.abs()));
+            if a.is_infinite() {
+                return x;
+            }
+            let e = a.log2().floor().max(-14.0);
+            let ulp = (e - 10.0).exp2();
+            let v = ((a / ulp).floor() * ulp).min(65504.0);
+            (s * v) as f32
+        };
+        let mut bits = 0x1234_5678u32;
+        let mut checked = 0;
+        for i in 0..200_000u32 {
+            bits = bits.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            // Half the draws near the half range (exponents 2^-26 .. 2^17).
+            let x = if i % 2 == 0 {
+                f32::from_bits(bits)
+            } else {
+                f32::from_bits((bits & 0x807f_ffff) | ((100 + (bits >> 23) % 44) << 23))
+            };
+            if x.is_nan() {
+                assert_eq!(half_bits(x), CANONICAL_NAN);
+                continue;
+            }
+            assert_eq!(half_bits(x), reference(x).to_bits(), "{x:e} ({:#x})", x.to_bits());
+            checked += 1;
+        }
+        assert!(checked > 190_000);
+        for (x, want) in [
+            (0.3f32, 0.2998046875f32),
+            (0.6, 0.599609375),
+            (0.9, 0.89990234375),
+            (65519.0, 65504.0),
+            (1e9, 65504.0),
+            (-70000.0, -65504.0),
+            (f32::INFINITY, f32::INFINITY),
+            (2.0e-8, 0.0),
+            (6.0e-8, 5.9604645e-8),
+            (-0.0, -0.0),
+        ] {
+            assert_eq!(f32::from_bits(half_bits(x)), want, "{x}");
+        }
+        assert_eq!(half_bits(-1e-9), 0x8000_0000);
     }
 }

@@ -19,6 +19,19 @@ pub enum ColorFormat {
     /// R, G, B, A as native-endian `f32` (OSMesa's `GL_FLOAT`, `GL_RGBA32F`):
     /// a deep format.
     Rgba32F,
+    /// `GL_RGB16` (and `GL_RGB12`, `GL_RGB10`): laid out as
+    /// [`ColorFormat::Rgba16`], alpha not stored (llvmpipe's
+    /// `R16G16B16X16_UNORM`): the fourth channel holds 65535, which no
+    /// fragment writes (the colour mask drops alpha), so alpha reads 1.
+    Rgbx16,
+    /// `GL_RGBA16F`: laid out as [`ColorFormat::Rgba32F`], every stored
+    /// value a half float (`crate::deep::half_bits`, llvmpipe's conversion:
+    /// round toward zero), so every value read is the half's.
+    Rgba16F,
+    /// `GL_RGB16F`: [`ColorFormat::Rgba16F`] with alpha 1 (as `Rgbx16`).
+    Rgbx16F,
+    /// `GL_RGB32F`: [`ColorFormat::Rgba32F`] with alpha 1 (as `Rgbx16`).
+    Rgbx32F,
 }
 
 impl ColorFormat {
@@ -28,8 +41,8 @@ impl ColorFormat {
             ColorFormat::Rgba8 | ColorFormat::Bgra8 => 4,
             ColorFormat::Rgb8 => 3,
             ColorFormat::Rgb565 => 2,
-            ColorFormat::Rgba16 => 8,
-            ColorFormat::Rgba32F => 16,
+            ColorFormat::Rgba16 | ColorFormat::Rgbx16 => 8,
+            ColorFormat::Rgba32F | ColorFormat::Rgbx32F | ColorFormat::Rgba16F | ColorFormat::Rgbx16F => 16,
         }
     }
 
@@ -38,27 +51,66 @@ impl ColorFormat {
     pub const fn is_deep(self) -> bool {
         match self {
             ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8 | ColorFormat::Rgb565 => false,
-            ColorFormat::Rgba16 | ColorFormat::Rgba32F => true,
+            ColorFormat::Rgba16
+            | ColorFormat::Rgbx16
+            | ColorFormat::Rgba16F
+            | ColorFormat::Rgbx16F
+            | ColorFormat::Rgba32F
+            | ColorFormat::Rgbx32F => true,
         }
+    }
+
+    /// Whether a deep format stores floats (GL's `GL_FLOAT` component
+    /// type: unclamped under `GL_FIXED_ONLY`, blended in f32).
+    pub const fn is_float(self) -> bool {
+        match self {
+            ColorFormat::Rgba16F | ColorFormat::Rgbx16F | ColorFormat::Rgba32F | ColorFormat::Rgbx32F => true,
+            ColorFormat::Rgba8
+            | ColorFormat::Bgra8
+            | ColorFormat::Rgb8
+            | ColorFormat::Rgb565
+            | ColorFormat::Rgba16
+            | ColorFormat::Rgbx16 => false,
+        }
+    }
+
+    /// Whether a float format's values are half floats (stored as f32).
+    pub const fn is_half(self) -> bool {
+        matches!(self, ColorFormat::Rgba16F | ColorFormat::Rgbx16F)
     }
 
     /// Bits a channel stores (`GL_RED_BITS`; alpha is 0 where none is stored).
     pub const fn channel_bits(self, channel: usize) -> u32 {
         match (self, channel) {
             (ColorFormat::Rgb565, 1) => 6,
-            (ColorFormat::Rgb565 | ColorFormat::Rgb8, 3) => 0,
+            (
+                ColorFormat::Rgb565
+                | ColorFormat::Rgb8
+                | ColorFormat::Rgbx16
+                | ColorFormat::Rgbx16F
+                | ColorFormat::Rgbx32F,
+                3,
+            ) => 0,
             (ColorFormat::Rgb565, _) => 5,
             (ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8, _) => 8,
-            (ColorFormat::Rgba16, _) => 16,
-            (ColorFormat::Rgba32F, _) => 32,
+            (ColorFormat::Rgba16 | ColorFormat::Rgbx16 | ColorFormat::Rgba16F | ColorFormat::Rgbx16F, _) => 16,
+            (ColorFormat::Rgba32F | ColorFormat::Rgbx32F, _) => 32,
         }
     }
 
     /// Whether the buffer stores alpha.
     pub const fn has_alpha(self) -> bool {
         match self {
-            ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgba16 | ColorFormat::Rgba32F => true,
-            ColorFormat::Rgb8 | ColorFormat::Rgb565 => false,
+            ColorFormat::Rgba8
+            | ColorFormat::Bgra8
+            | ColorFormat::Rgba16
+            | ColorFormat::Rgba16F
+            | ColorFormat::Rgba32F => true,
+            ColorFormat::Rgb8
+            | ColorFormat::Rgb565
+            | ColorFormat::Rgbx16
+            | ColorFormat::Rgbx16F
+            | ColorFormat::Rgbx32F => false,
         }
     }
 
@@ -69,7 +121,11 @@ impl ColorFormat {
             | ColorFormat::Bgra8
             | ColorFormat::Rgb8
             | ColorFormat::Rgba16
-            | ColorFormat::Rgba32F => false,
+            | ColorFormat::Rgbx16
+            | ColorFormat::Rgba16F
+            | ColorFormat::Rgbx16F
+            | ColorFormat::Rgba32F
+            | ColorFormat::Rgbx32F => false,
             ColorFormat::Rgb565 => true,
         }
     }

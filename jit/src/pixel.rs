@@ -62,7 +62,12 @@ pub fn load(format: ColorFormat, bytes: &[u8]) -> u32 {
         ColorFormat::Rgb8 => u32::from_le_bytes([bytes[0], bytes[1], bytes[2], 0]),
         ColorFormat::Rgb565 => u32::from(u16::from_le_bytes([bytes[0], bytes[1]])),
         // No packed value: `deep` reads these.
-        ColorFormat::Rgba16 | ColorFormat::Rgba32F => 0,
+        ColorFormat::Rgba16
+        | ColorFormat::Rgbx16
+        | ColorFormat::Rgba16F
+        | ColorFormat::Rgbx16F
+        | ColorFormat::Rgba32F
+        | ColorFormat::Rgbx32F => 0,
     }
 }
 
@@ -96,7 +101,12 @@ pub fn pack(format: ColorFormat, [r, g, b, a]: [u8; 4], dither: Option<u32>) -> 
             };
             (r << 11) | (g << 5) | b
         }
-        ColorFormat::Rgba16 | ColorFormat::Rgba32F => 0,
+        ColorFormat::Rgba16
+        | ColorFormat::Rgbx16
+        | ColorFormat::Rgba16F
+        | ColorFormat::Rgbx16F
+        | ColorFormat::Rgba32F
+        | ColorFormat::Rgbx32F => 0,
     }
 }
 
@@ -109,7 +119,12 @@ pub fn unpack(format: ColorFormat, v: u32) -> [u8; 4] {
         ColorFormat::Bgra8 => [c2, c1, c0, c3],
         ColorFormat::Rgb8 => [c0, c1, c2, 255],
         ColorFormat::Rgb565 => [expand5((v >> 11) & 31), expand6((v >> 5) & 63), expand5(v & 31), 255],
-        ColorFormat::Rgba16 | ColorFormat::Rgba32F => [0; 4],
+        ColorFormat::Rgba16
+        | ColorFormat::Rgbx16
+        | ColorFormat::Rgba16F
+        | ColorFormat::Rgbx16F
+        | ColorFormat::Rgba32F
+        | ColorFormat::Rgbx32F => [0; 4],
     }
 }
 
@@ -121,6 +136,11 @@ pub fn mask_bits(format: ColorFormat, mask: ColorMask) -> u32 {
         ColorFormat::Bgra8 => m(mask.b, 0xff) | m(mask.g, 0xff00) | m(mask.r, 0xff_0000) | m(mask.a, 0xff00_0000),
         ColorFormat::Rgb8 => m(mask.r, 0xff) | m(mask.g, 0xff00) | m(mask.b, 0xff_0000),
         ColorFormat::Rgb565 => m(mask.r, 0xf800) | m(mask.g, 0x07e0) | m(mask.b, 0x001f),
-        ColorFormat::Rgba16 | ColorFormat::Rgba32F => 0,
+        ColorFormat::Rgba16
+        | ColorFormat::Rgbx16
+        | ColorFormat::Rgba16F
+        | ColorFormat::Rgbx16F
+        | ColorFormat::Rgba32F
+        | ColorFormat::Rgbx32F => 0,
     }
 }

@@ -27,13 +27,27 @@ use softgl_jit::{DeepUniforms, FogMode, FogUniforms, Planes, ShadeKey, TextureSe
 
 /// Every colour format, the deep ones too (whose specialists run
 /// `compile/deep.rs`).
-const COLOR_FORMATS: [ColorFormat; 6] = [
+const COLOR_FORMATS: [ColorFormat; 10] = [
     ColorFormat::Rgba8,
     ColorFormat::Bgra8,
     ColorFormat::Rgb8,
     ColorFormat::Rgb565,
     ColorFormat::Rgba16,
     ColorFormat::Rgba32F,
+    ColorFormat::Rgbx16,
+    ColorFormat::Rgba16F,
+    ColorFormat::Rgbx16F,
+    ColorFormat::Rgbx32F,
+];
+
+/// The deep formats.
+const DEEP_FORMATS: [ColorFormat; 6] = [
+    ColorFormat::Rgba16,
+    ColorFormat::Rgba32F,
+    ColorFormat::Rgbx16,
+    ColorFormat::Rgba16F,
+    ColorFormat::Rgbx16F,
+    ColorFormat::Rgbx32F,
 ];
 
 fn compare() -> impl Strategy<Value = CompareFunc> {
@@ -111,7 +125,7 @@ fn key() -> impl Strategy<Value = FragmentKey> {
 
 /// Floats where the deep formats' stages have edges: 0 and 1, the span's
 /// byte values over 255, values past [0, 1] and infinities.
-const DEEP_FLOATS: [f32; 12] = [
+const DEEP_FLOATS: [f32; 17] = [
     0.0,
     -0.0,
     1.0,
@@ -124,6 +138,12 @@ const DEEP_FLOATS: [f32; 12] = [
     1e30,
     f32::INFINITY,
     f32::NEG_INFINITY,
+    // Half floats' edges: the largest, past it, a denormal, below the least.
+    65504.0,
+    -65535.0,
+    3.0e-6,
+    -1.0e-5,
+    2.0e-8,
 ];
 
 /// The deep formats' uniforms: alpha reference and constant colour from
@@ -234,22 +254,20 @@ impl Buffers {
         let height = 1 + rng.below(5) as u32;
         let bpp = key.color_format.bytes_per_pixel();
         // Rows of floats start at a float (a row's padding is whole floats).
-        let pad = match key.color_format {
-            ColorFormat::Rgba32F => 4 * rng.below(2) as usize,
-            _ => rng.below(8) as usize,
+        let pad = match key.color_format.is_float() {
+            true => 4 * rng.below(2) as usize,
+            false => rng.below(8) as usize,
         };
         let stride = width as usize * bpp + pad;
         let n = (width * height) as usize;
         let color_len = stride * (height as usize - 1) + width as usize * bpp;
-        let color = match key.color_format {
-            // Floats: NaN only x86's default one, the one arithmetic makes
-            // (which NaN two NaN operands give is the CPU's choice of
-            // operand order, and the interpreter's compiler may swap them).
-            ColorFormat::Rgba32F => (0..color_len / 4)
+        let color = match key.color_format.is_float() {
+            // Floats (half formats' too: any f32 in store is read as it is).
+            true => (0..color_len / 4)
                 .flat_map(|_| rng.deep_float().to_ne_bytes())
                 .chain((0..color_len % 4).map(|_| 0))
                 .collect(),
-            _ => (0..color_len).map(|_| rng.byte()).collect(),
+            false => (0..color_len).map(|_| rng.byte()).collect(),
         };
         let (mut depth16, mut depth32) = (None, None);
         match key.depth_format {
@@ -1309,18 +1327,17 @@ fn a_view_made_for_another_key_is_not_read() {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
 
-    /// The deep formats alone (the other proptests draw them a third of the
-    /// time): any key in RGBA16 or RGBA32F, shaded from random planes half
+    /// The deep formats alone (the other proptests draw them most of the
+    /// time): any key in a deep format, shaded from random planes half
     /// the time, with random deep uniforms (clamping on and off).
     #[test]
     fn deep_jit_equals_interpreter(
         key in key(),
-        float in any::<bool>(),
+        format in select(&DEEP_FORMATS[..]),
         shade in prop::option::of(shade_key()),
         u in uniforms(),
         seed in any::<u64>(),
     ) {
-        let format = if float { ColorFormat::Rgba32F } else { ColorFormat::Rgba16 };
         let key = FragmentKey { color_format: format, shade, ..key }.normalized();
         let mut rng = Rng(softgl_jit::rng::Rng::new((seed ^ (seed >> 32)) as u32));
         let (jit_buf, interp_buf) = run_both(&key, Tier::Optimized, &u, &TextureSet::default(), &mut rng, planes);

@@ -93,8 +93,8 @@ fn bpp(format: ColorFormat) -> usize {
         ColorFormat::Rgba8 | ColorFormat::Bgra8 => 4,
         ColorFormat::Rgb8 => 3,
         ColorFormat::Rgb565 => 2,
-        ColorFormat::Rgba16 => 8,
-        ColorFormat::Rgba32F => 16,
+        ColorFormat::Rgba16 | ColorFormat::Rgbx16 => 8,
+        ColorFormat::Rgba32F | ColorFormat::Rgbx32F | ColorFormat::Rgba16F | ColorFormat::Rgbx16F => 16,
     }
 }
 
@@ -281,7 +281,12 @@ fn encode(format: ColorFormat, [r, g, b, a]: [u8; 4]) -> ([u8; 4], usize) {
             let [lo, hi] = spec_565([r, g, b, a]).to_le_bytes();
             ([lo, hi, 0, 0], 2)
         }
-        ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+        ColorFormat::Rgba16
+        | ColorFormat::Rgbx16
+        | ColorFormat::Rgba16F
+        | ColorFormat::Rgbx16F
+        | ColorFormat::Rgba32F
+        | ColorFormat::Rgbx32F => {
             unreachable!("the byte formats only: the deep ones are tests/contract.rs's")
         }
     }
@@ -425,7 +430,12 @@ fn blend_cases(format: ColorFormat) -> Vec<([u8; 4], [u8; 4])> {
                     }
                     // No stored alpha: the destination reads alpha 1.
                     ColorFormat::Rgb8 => cases.push((pick(sc, sa), pick(dc, 255))),
-                    ColorFormat::Rgba16 | ColorFormat::Rgba32F => {
+                    ColorFormat::Rgba16
+                    | ColorFormat::Rgbx16
+                    | ColorFormat::Rgba16F
+                    | ColorFormat::Rgbx16F
+                    | ColorFormat::Rgba32F
+                    | ColorFormat::Rgbx32F => {
                         unreachable!("the byte formats only: the deep ones are tests/contract.rs's")
                     }
                     ColorFormat::Rgb565 => {

@@ -13,7 +13,7 @@
 //! that live selected from the new values, the others stored as they were.
 
 use super::{mem, uniform_offset, Gen, Group, SpanValues, Uniforms, I32X4};
-use crate::key::{BlendEquation, BlendFactor, BlendKey, ColorFormat, CompareFunc, Stage};
+use crate::key::{BlendEquation, BlendFactor, BlendKey, CompareFunc, Stage};
 use crate::uniforms::{DeepUniforms, FragmentUniforms};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
 use cranelift_codegen::ir::{types, Block, InstBuilder, MemFlagsData, Value};
@@ -97,31 +97,29 @@ impl Gen<'_> {
                     let c = self.deep_colour(&mut g, sv, &mut d);
                     let dst = self.deep_dst(&g, &mut d);
                     let k = self.deep_blend_color(sv, &blend);
-                    d.out = Some(match format {
-                        ColorFormat::Rgba16 => {
-                            let src = c.map(|v| self.unorm16_lanes(v, true));
-                            let k = k.map(|k| k.map(|v| self.unorm16_lanes(v, false)));
-                            self.blend16_lanes(&blend, src, dst, k)
-                        }
-                        _ => {
-                            let dst = dst.map(|v| self.b.ins().bitcast(F32X4, MemFlagsData::new(), v));
-                            let out = self.blend_f32_lanes(&blend, c, dst, k);
-                            out.map(|v| self.float_bits(v))
-                        }
+                    d.out = Some(if format.is_float() {
+                        let dst = dst.map(|v| self.b.ins().bitcast(F32X4, MemFlagsData::new(), v));
+                        let out = self.blend_f32_lanes(&blend, c, dst, k);
+                        out.map(|v| self.store_value(v))
+                    } else {
+                        let src = c.map(|v| self.unorm16_lanes(v, true));
+                        let k = k.map(|k| k.map(|v| self.unorm16_lanes(v, false)));
+                        self.blend16_lanes(&blend, src, dst, k)
                     });
                 }
                 Stage::Pack { .. } => {
                     if d.out.is_none() {
                         let c = self.deep_colour(&mut g, sv, &mut d);
-                        d.out = Some(match format {
-                            ColorFormat::Rgba16 => c.map(|v| self.unorm16_lanes(v, true)),
-                            _ => c.map(|v| self.float_bits(v)),
+                        d.out = Some(if format.is_float() {
+                            c.map(|v| self.store_value(v))
+                        } else {
+                            c.map(|v| self.unorm16_lanes(v, true))
                         });
                     }
                 }
                 Stage::LogicOp(op) => {
                     // On RGBA16's 16-bit channels; GL applies none to floats.
-                    if format == ColorFormat::Rgba16 {
+                    if !format.is_float() {
                         let dst = self.deep_dst(&g, &mut d);
                         let s = d.out.expect("Pack precedes LogicOp in every stage list");
                         let low = self.splat(0xffff);
@@ -187,7 +185,7 @@ impl Gen<'_> {
         // The interpreter clamps in its shading stage: keys without one
         // take the span's bytes, already in [0, 1].
         if self.key.shade.is_some() {
-            if self.key.color_format == ColorFormat::Rgba16 {
+            if !self.key.color_format.is_float() {
                 c = c.map(|v| self.clamp_colour(v));
             } else {
                 // `DeepUniforms::clamp`, as a lane mask.
@@ -229,6 +227,46 @@ impl Gen<'_> {
         let bits = self.b.ins().bitcast(I32X4, MemFlagsData::new(), v);
         let canonical = self.splat(i64::from(crate::deep::CANONICAL_NAN));
         self.select(nan, canonical, bits)
+    }
+
+    /// `crate::deep::store_value` of a float format on `f32x4` lanes: the
+    /// bits to store as `i32x4` ([`Self::float_bits`], or a half's).
+    fn store_value(&mut self, v: Value) -> Value {
+        if self.key.color_format.is_half() {
+            self.half_bits(v)
+        } else {
+            self.float_bits(v)
+        }
+    }
+
+    /// `crate::deep::half_bits` on `f32x4` lanes: the mantissa masked to 10
+    /// bits, below 2^-14 `trunc(v · 2^24) · 2^-24`, finite magnitudes past
+    /// 65504 made ±65504, NaN canonical.
+    fn half_bits(&mut self, v: Value) -> Value {
+        let flags = MemFlagsData::new();
+        let bits = self.float_bits(v);
+        let abs_mask = self.splat(0x7fff_ffff);
+        let abs = self.b.ins().band(bits, abs_mask);
+        let mantissa = self.splat(0xffff_e000u32 as i32 as i64);
+        let normal = self.b.ins().band(bits, mantissa);
+        let up = self.fconst(16_777_216.0);
+        let down = self.fconst(1.0 / 16_777_216.0);
+        let scaled = self.b.ins().fmul(v, up);
+        let cut = self.b.ins().trunc(scaled);
+        let small = self.b.ins().fmul(cut, down);
+        let small = self.b.ins().bitcast(I32X4, flags, small);
+        let min_normal = self.splat(0x3880_0000);
+        let is_small = self.b.ins().icmp(IntCC::SignedLessThan, abs, min_normal);
+        let r = self.select(is_small, small, normal);
+        let max_half = self.splat(0x477f_e000);
+        let inf = self.splat(0x7f80_0000);
+        let above = self.b.ins().icmp(IntCC::SignedGreaterThan, abs, max_half);
+        let finite = self.b.ins().icmp(IntCC::SignedLessThan, abs, inf);
+        let big = self.b.ins().band(above, finite);
+        let sign_mask = self.splat(0x8000_0000u32 as i32 as i64);
+        let sign = self.b.ins().band(bits, sign_mask);
+        let clamped = self.b.ins().bor(sign, max_half);
+        self.select(big, clamped, r)
     }
 
     /// `t` in the lanes of lane mask `mask`, else `f`, of `f32x4` values.
@@ -454,8 +492,8 @@ impl Gen<'_> {
             return v;
         }
         let p = g.color_p;
-        let v = match self.key.color_format {
-            ColorFormat::Rgba16 => {
+        let v = match self.key.color_format.is_float() {
+            false => {
                 let v0 = self.b.ins().load(types::I8X16, mem(), p, 0);
                 let v1 = self.b.ins().load(types::I8X16, mem(), p, 16);
                 let rg = self.shuffle16(v0, v1, RG_OR_PIXELS_01);
@@ -469,7 +507,7 @@ impl Gen<'_> {
                     self.b.ins().uwiden_high(ba),
                 ]
             }
-            _ => {
+            true => {
                 let px: [Value; 4] = std::array::from_fn(|i| self.b.ins().load(I32X4, mem(), p, 16 * i as i32));
                 self.transpose(px)
             }
@@ -480,8 +518,8 @@ impl Gen<'_> {
 
     /// Stores channels `v` (as [`Self::deep_dst`] gives them) as the group's four pixels.
     fn deep_store(&mut self, p: Value, v: [Value; 4]) {
-        match self.key.color_format {
-            ColorFormat::Rgba16 => {
+        match self.key.color_format.is_float() {
+            false => {
                 // The values are 16-bit: the saturating narrowing is exact.
                 let rg = self.b.ins().unarrow(v[0], v[1]);
                 let ba = self.b.ins().unarrow(v[2], v[3]);
@@ -492,7 +530,7 @@ impl Gen<'_> {
                 self.b.ins().store(mem(), p01, p, 0);
                 self.b.ins().store(mem(), p23, p, 16);
             }
-            _ => {
+            true => {
                 let px = self.transpose(v);
                 for (i, v) in px.into_iter().enumerate() {
                     self.b.ins().store(mem(), v, p, 16 * i as i32);

@@ -341,6 +341,7 @@ fn attachment_param(gl: &mut Context, target: GLenum, attachment: GLenum, pname:
         }
         0x8211 if p == AttachmentPoint::Stencil => GL_INDEX as i32,
         0x8211 if p == AttachmentPoint::Depth && gl.attachment_float_depth(a) => GL_FLOAT as i32,
+        0x8211 if matches!(p, AttachmentPoint::Color(_)) && gl.attachment_float_color(a) => GL_FLOAT as i32,
         0x8211 => GL_UNSIGNED_NORMALIZED as i32,
         0x8212..=0x8217 => {
             if p == AttachmentPoint::DepthStencil && pname != 0x8216 && pname != 0x8217 {
@@ -389,10 +390,7 @@ fn window_attachment_param(gl: &mut Context, attachment: GLenum, pname: GLenum) 
         // COMPONENT_TYPE: stencil alone is S8 (an index); packed with depth
         // it is Z24_UNORM_S8_UINT's, unsigned normalized (Mesa's format table).
         0x8211 if buffer == Some(WindowBuffer::Stencil) && bits[4] == 0 => GL_INDEX as i32,
-        0x8211
-            if buffer == Some(WindowBuffer::Color)
-                && gl.framebuffer_pending().color_format() == ColorFormat::Rgba32F =>
-        {
+        0x8211 if buffer == Some(WindowBuffer::Color) && gl.framebuffer_pending().color_format().is_float() => {
             GL_FLOAT as i32
         }
         0x8211 => GL_UNSIGNED_NORMALIZED as i32,

@@ -512,7 +512,7 @@ unsafe fn read_pixels(
         }
     }
     let stencil = matches!(src, Source::Stencil);
-    let float_src = matches!(src, Source::Color(_)) && fb.color_format() == softgl::ColorFormat::Rgba32F;
+    let float_src = matches!(src, Source::Color(_)) && fb.color_format().is_float();
     let depth_format = fb.depth_format();
     let depth_bits = depth_format.map_or(0, |f| f.bits());
     let float_depth = depth_format == Some(softgl::DepthFormat::D32F);

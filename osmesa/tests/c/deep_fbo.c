@@ -1,7 +1,6 @@
 /* Deep colour framebuffer objects from a GL 1.5-style program (an RGBA8
- * OSMesa context): renderbuffers of GL_RGBA16, GL_RGBA32F (and GL_RGBA16F,
- * GL_RGB16, GL_RGB16F, GL_RGB32F, which softgl reports
- * GL_FRAMEBUFFER_UNSUPPORTED), their sizes, completeness and GL_*_BITS while
+ * OSMesa context): renderbuffers of GL_RGBA16, GL_RGBA32F, GL_RGBA16F,
+ * GL_RGB16, GL_RGB16F and GL_RGB32F, their sizes, completeness and GL_*_BITS while
  * bound; a scene rendered into each (smooth colour, blending over and
  * additive past 1, DST_COLOR, MAX and MIN, alpha test, fog, colour sum past 1, a
  * scissored clear through a colour mask, logic op XOR), read back as
