@@ -597,11 +597,7 @@ fn status(fbo: &FboState, textures: &crate::texture::TextureStore, name: u32) ->
     let mixed = images
         .iter()
         .any(|(_, i)| (i.width, i.height) != (images[0].1.width, images[0].1.height));
-    // Multisampled deep colour is not rendered (`Framebuffer::new_multisample`).
-    let deep_samples = images
-        .iter()
-        .any(|(_, i)| i.samples > 0 && matches!(i.kind, Some(RenderbufferKind::Color(c)) if c.is_deep()));
-    if ds_split || mixed || deep_samples || images.iter().any(|(_, i)| i.kind.is_none()) {
+    if ds_split || mixed || images.iter().any(|(_, i)| i.kind.is_none()) {
         return S::Unsupported;
     }
     S::Complete
@@ -773,8 +769,6 @@ impl Context {
             crate::multisample::renderbuffer_samples(samples)
         };
         let per_pixel = self.record(r)?;
-        // A multisampled renderbuffer of a deep format is not rendered
-        // (`Framebuffer::new_multisample`): such formats are unsupported anyway.
         self.release_draw();
         let n = width as usize * height as usize;
         let one = || match format.kind() {
@@ -1924,7 +1918,7 @@ fn blit_samples(
         return Ok(());
     }
     if n_from > 1 && n_to == 1 {
-        let resolved = from.resolve()?;
+        let resolved = from.resolve_for(to.color_format())?;
         blit(&resolved, to, s, d, clip, what, filter);
         return Ok(());
     }

@@ -16,7 +16,7 @@ use crate::framebuffer::{rint_nonnegative, DepthBuffer, Framebuffer, Framebuffer
 use crate::geometry::varying::Varyings;
 use crate::raster::scene::Binner;
 use crate::raster::{PrimSink, RasterParams, RasterVertex};
-use softgl_jit::{pixel, ColorFormat, DepthTarget};
+use softgl_jit::{deep, pixel, ColorFormat, DepthTarget};
 
 /// `GL_MAX_SAMPLES`: llvmpipe supports 1 and 4 samples (`lp_screen.c`,
 /// `llvmpipe_is_format_supported`).
@@ -248,9 +248,6 @@ impl Framebuffer {
         if !matches!(samples, 1 | MAX_SAMPLES) {
             return Err(GlError::InvalidValue);
         }
-        if samples > 1 && desc.color.is_deep() {
-            return Err(GlError::InvalidOperation);
-        }
         let mut fb = Framebuffer::new(desc)?;
         for _ in 1..samples {
             fb.samples.push(Framebuffer::new(desc)?);
@@ -307,7 +304,20 @@ impl Framebuffer {
     /// framebuffer resolves to a copy. The result owns its colour bytes,
     /// rows bottom-up and tightly packed.
     pub fn resolve(&self) -> GlResult<Framebuffer> {
-        let desc = *self.desc();
+        self.resolve_for(self.desc().color)
+    }
+
+    /// [`Framebuffer::resolve`] for a blit into a `target` colour format:
+    /// where a deep format is on either side and the formats differ, the
+    /// colour is resolved into RGBA32F, unrounded, for the blit to store as
+    /// the destination's fragment colour (llvmpipe's resolve shader writes
+    /// the destination directly).
+    pub fn resolve_for(&self, target: ColorFormat) -> GlResult<Framebuffer> {
+        let mut desc = *self.desc();
+        let from = desc.color;
+        if from != target && (from.is_deep() || target.is_deep()) {
+            desc.color = ColorFormat::Rgba32F;
+        }
         let mut out = Framebuffer::new(desc)?;
         let format = desc.color;
         let bpp = format.bytes_per_pixel();
@@ -325,6 +335,10 @@ impl Framebuffer {
                         &fb.color_bytes()[fb.color_offset(0, y)..][..row_bytes]
                     };
                     resolve_row_4x8(dst, [row(0), row(1), row(2), row(3)]);
+                    continue;
+                }
+                if format.is_deep() {
+                    resolve_row_deep(self, format, dst, y);
                     continue;
                 }
                 for x in 0..desc.width {
@@ -521,6 +535,40 @@ fn resolve_row_4x8(dst: &mut [u8], src: [&[u8]; 4]) {
     }
 }
 
+/// Row `y` of `fb` resolved into `dst`, of deep format `format`, as
+/// [`Framebuffer::resolve`] says: the samples' float values
+/// (`deep::to_float`: unorm16 times `1/65535`, floats as stored; bytes
+/// times `1/255`) summed in sample order, the first taken as it is
+/// (`util_make_fs_msaa_resolve`: a `MOV` then `ADD`s), times `1/samples`,
+/// stored as a fragment colour of `format` (`deep::from_float`: unorm16
+/// rounded, halves truncated).
+fn resolve_row_deep(fb: &Framebuffer, format: ColorFormat, dst: &mut [u8], y: u32) {
+    let from = fb.desc().color;
+    let bpp = format.bytes_per_pixel();
+    let scale = 1.0 / fb.samples() as f32;
+    for x in 0..fb.width() {
+        let mut sum = [0.0f32; 4];
+        for s in 0..fb.samples() {
+            let sample = fb.sample(s).expect("s < samples");
+            let off = sample.color_offset(x, y);
+            let bytes = &sample.color_bytes()[off..];
+            let c = if from.is_deep() {
+                deep::to_float(from, deep::load(from, bytes))
+            } else {
+                pixel::unpack(from, pixel::load(from, bytes)).map(|v| f32::from(v) * (1.0 / 255.0))
+            };
+            for k in 0..4 {
+                sum[k] = if s == 0 { c[k] } else { sum[k] + c[k] };
+            }
+        }
+        let at = x as usize * bpp;
+        let v = deep::from_float(format, sum.map(|v| v * scale));
+        for (k, v) in v.into_iter().enumerate() {
+            deep::store_channel(format, &mut dst[at..at + bpp], k, v);
+        }
+    }
+}
+
 /// The resolved packed colour of the packed sample colours `samples` of
 /// `format` ([`Framebuffer::resolve`]).
 pub fn resolve_value(format: ColorFormat, samples: &[u32]) -> u32 {
@@ -532,8 +580,7 @@ pub fn resolve_value(format: ColorFormat, samples: &[u32]) -> u32 {
     let channels: &[(u32, u32)] = match format {
         ColorFormat::Rgb565 => &[(11, 5), (5, 6), (0, 5)],
         ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8 => &[(0, 8), (8, 8), (16, 8), (24, 8)],
-        // Deep formats do not fit a packed u32 and are never multisampled
-        // (`Framebuffer::new_multisample` refuses them).
+        // Deep formats do not fit a packed u32 (`resolve_row_deep`).
         ColorFormat::Rgba16
         | ColorFormat::Rgbx16
         | ColorFormat::Rgba16F

@@ -578,6 +578,42 @@ fn half_ulp(x: f32) -> f32 {
     (e - 10.0).exp2()
 }
 
+/// 4× deep colour objects resolved by `glBlitFramebuffer` into their own
+/// format and into RGBA8 (`tests/c/msaa_deep.c`).
+#[test]
+fn multisampled_deep_colour_matches_mesa() {
+    let Some(exe) = build("msaa_deep") else { return };
+    let (mesa, soft) = (run(&exe, false), run(&exe, true));
+    // Complete, GL_SAMPLES 4, no error.
+    assert_eq!(soft.lines[1..], mesa.lines[1..]);
+    assert!(soft.lines.contains(&"rgba32f status 0x8cd5 samples 4".to_owned()));
+    for f in ["rgba16", "rgba32f", "rgba16f", "rgb16f"] {
+        for k in 0..2 {
+            let name = format!("{f}.{k}");
+            // Bytes identical; shorts within 1 on at most 4 channels and
+            // floats within 2.4e-7 (the f32 planes' last bits, as single-
+            // sampled), halves identical (none crosses a truncation here).
+            assert_eq!(
+                soft.file(&format!("{name}.ub")),
+                mesa.file(&format!("{name}.ub")),
+                "{name}.ub"
+            );
+            let (max, n) = diff(&soft.u16s(&format!("{name}.us")), &mesa.u16s(&format!("{name}.us")));
+            assert!(max <= 1.0 && n <= 4, "{name}.us: max {max} over {n}");
+            let (max, _) = diff(&soft.f32s(&format!("{name}.f")), &mesa.f32s(&format!("{name}.f")));
+            let tolerance = if f == "rgba16" { 1.0 / 65535.0 + 1e-9 } else { 2.4e-7 };
+            assert!(max <= tolerance, "{name}.f: max {max}");
+            if f.ends_with("16f") {
+                assert_eq!(
+                    soft.file(&format!("{name}.f")),
+                    mesa.file(&format!("{name}.f")),
+                    "{name}.f"
+                );
+            }
+        }
+    }
+}
+
 #[test]
 fn fbo_colour_formats_match_mesa() {
     let Some(exe) = build("fbo_formats") else { return };
