@@ -245,8 +245,22 @@ impl Context {
         if pixels {
             let at = (&r.tex_coords, r.secondary, r.distance);
             shade = PixelShade::new(key.shade.as_ref(), &textures, at, self.state.fog.uniforms());
-            // Pixel rectangles bring their colours and depths in the spans.
-            key.shade = None;
+            // Pixel rectangles bring their colours and depths in the spans;
+            // only multisampling's alpha stages stay, as for bitmaps:
+            // llvmpipe draws them with multisampling off in its rasterizer
+            // state, so alpha to coverage keeps the fragment, in every
+            // sample, when its alpha is above 0.5 (`lp_build_alpha_to_coverage`).
+            key.shade = key
+                .shade
+                .map(|s| s.coverage)
+                .filter(softgl_jit::AlphaCoverage::is_on)
+                .map(|c| softgl_jit::ShadeKey {
+                    coverage: softgl_jit::AlphaCoverage {
+                        quarters: c.quarters.map(|_| 2),
+                        ..c
+                    },
+                    ..softgl_jit::ShadeKey::default()
+                });
         } else {
             if layout.color {
                 layout.uniform_colors = true;

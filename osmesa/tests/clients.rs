@@ -1526,13 +1526,13 @@ fn pixel_gaps_match_mesa() {
 
 /// Alpha to coverage and alpha to one in a 4× framebuffer object, and
 /// drawing with GL_MULTISAMPLE off after multisampled drawing (depth and
-/// stencil of sample 0), `tests/c/a2c.c`: resolved, against llvmpipe byte
-/// for byte.
+/// stencil of sample 0), bitmaps and pixel rectangles (alpha above 0.5
+/// keeps them), `tests/c/a2c.c`: resolved, against llvmpipe byte for byte.
 #[test]
 fn alpha_to_coverage_matches_mesa() {
     let Some(exe) = build("a2c") else { return };
     let (mesa, soft) = (run(&exe, false), run(&exe, true));
-    for k in 0..6 {
+    for k in 0..7 {
         let name = format!("a2c.{k}");
         let (m, s) = (mesa.file(&name), soft.file(&name));
         let differing: Vec<usize> = (0..m.len() / 4)

@@ -9,7 +9,9 @@
  * 3: textured alpha (MODULATE), alpha test, GL_MULTISAMPLE off (no effect);
  * 4: bitmaps (alpha above 0.5 keeps them) and alpha to one alone;
  * 5: GL_MULTISAMPLE off after multisampled drawing: depth and stencil in
- *    sample 0 only. */
+ *    sample 0 only;
+ * 6: pixel rectangles (alpha above 0.5 keeps them, as bitmaps), zoomed,
+ *    with alpha to one and blending, alpha from pixel transfer. */
 #define GL_GLEXT_PROTOTYPES
 #include "common.h"
 #include <GL/glext.h>
@@ -128,6 +130,42 @@ static void scene(int k, GLuint ms, GLuint single) {
     glDisable(GL_SAMPLE_ALPHA_TO_ONE);
     break;
   }
+  case 6: {
+    /* Pixel rectangles: drawn with multisampling off in llvmpipe's
+     * rasterizer state, as bitmaps: alpha above 0.5 keeps them whole. */
+    static unsigned char img[32 * 6 * 4];
+    for (int y = 0; y < 6; y++)
+      for (int x = 0; x < 32; x++) {
+        unsigned char *p = img + 4 * (32 * y + x);
+        p[0] = 8 * x; p[1] = 200 - 30 * y; p[2] = 90; p[3] = x == 16 ? 128 : x == 15 ? 127 : 8 * x + y;
+      }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glRasterPos2i(2, 2);
+    glDrawPixels(32, 6, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glPixelZoom(1.5f, 2.0f);
+    glRasterPos2i(2, 10);
+    glDrawPixels(32, 6, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glPixelZoom(1, 1);
+    glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+    glEnable(GL_BLEND); glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glRasterPos2i(2, 26);
+    glDrawPixels(32, 6, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    glDisable(GL_BLEND);
+    glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+    /* Colour from the current raster colour's alpha: GL_LUMINANCE images. */
+    static unsigned char lum[16 * 4];
+    for (int i = 0; i < 64; i++) lum[i] = 4 * i;
+    glPixelTransferf(GL_ALPHA_SCALE, 0.0f);
+    glPixelTransferf(GL_ALPHA_BIAS, 0.6f);
+    glRasterPos2i(40, 30);
+    glDrawPixels(16, 4, GL_LUMINANCE, GL_UNSIGNED_BYTE, lum);
+    glPixelTransferf(GL_ALPHA_BIAS, 0.4f);
+    glRasterPos2i(40, 36);
+    glDrawPixels(16, 4, GL_LUMINANCE, GL_UNSIGNED_BYTE, lum);
+    glPixelTransferf(GL_ALPHA_SCALE, 1.0f);
+    glPixelTransferf(GL_ALPHA_BIAS, 0.0f);
+    break;
+  }
   case 5:
     /* Multisampled drawing leaves the samples' depths apart (edges, a
      * steep depth slope); with GL_MULTISAMPLE off llvmpipe tests and writes
@@ -177,7 +215,7 @@ int main(int argc, char **argv) {
   CHECK(ctx);
   CHECK(OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H));
   GLuint ms = fbo(4), single = fbo(0);
-  for (int k = 0; k < 6; k++) scene(k, ms, single);
+  for (int k = 0; k < 7; k++) scene(k, ms, single);
   OSMesaDestroyContext(ctx);
   printf("done\n");
   return 0;
