@@ -1531,7 +1531,6 @@ fn float_nans_are_stored_canonical_by_both_back_ends() {
         dst_alpha: dst,
         eq_rgb: eq,
         eq_alpha: eq,
-        ..BlendKey::DEFAULT
     };
     let blends = [
         None,
