@@ -141,24 +141,26 @@ fn value(os: &GlState, gl: &Context, pname: GLenum) -> GlResult<Val> {
     }
     let b = s.blend_func;
     let cm = s.color_mask;
+    // Clamped as Mesa's get clamps it (the state keeps it unclamped).
+    let clamped_clear = gl.clear_color_value();
     Ok(match pname {
-        0x0BA2 => rect(s.viewport),                                                       // VIEWPORT
-        0x0C10 => rect(s.scissor),                                                        // SCISSOR_BOX
-        0x0B70 => Val::N(vec![s.depth_range.0, s.depth_range.1]),                         // DEPTH_RANGE
-        0x935C => i(s.clip_control.to_gl().0),                                            // CLIP_ORIGIN
-        0x935D => i(s.clip_control.to_gl().1),                                            // CLIP_DEPTH_MODE
-        0x0C22 => Val::N(gl.clear_color_value().iter().map(|&c| f64::from(c)).collect()), // COLOR_CLEAR_VALUE
-        0x0B73 => Val::N(vec![s.clear_depth]),                                            // DEPTH_CLEAR_VALUE
-        0x0B91 => i(s.clear_stencil),                                                     // STENCIL_CLEAR_VALUE
+        0x0BA2 => rect(s.viewport),                                              // VIEWPORT
+        0x0C10 => rect(s.scissor),                                               // SCISSOR_BOX
+        0x0B70 => Val::N(vec![s.depth_range.0, s.depth_range.1]),                // DEPTH_RANGE
+        0x935C => i(s.clip_control.to_gl().0),                                   // CLIP_ORIGIN
+        0x935D => i(s.clip_control.to_gl().1),                                   // CLIP_DEPTH_MODE
+        0x0C22 => Val::N(clamped_clear.iter().map(|&c| f64::from(c)).collect()), // COLOR_CLEAR_VALUE
+        0x0B73 => Val::N(vec![s.clear_depth]),                                   // DEPTH_CLEAR_VALUE
+        0x0B91 => i(s.clear_stencil),                                            // STENCIL_CLEAR_VALUE
         0x0B00 => Val::N(gl.current().color.to_array().iter().map(|&c| f64::from(c)).collect()), // CURRENT_COLOR
         0x0B02 => Val::F(gl.current().normal.to_array().iter().map(|&c| f64::from(c)).collect()), // CURRENT_NORMAL
-        0x0BA6 => matrix(gl, MatrixMode::Modelview),                                      // MODELVIEW_MATRIX
-        0x0BA7 => matrix(gl, MatrixMode::Projection),                                     // PROJECTION_MATRIX
-        0x0BA8 => matrix(gl, MatrixMode::Texture),                                        // TEXTURE_MATRIX
-        0x0BA0 => e(gl.current_matrix_mode().to_gl()),                                    // MATRIX_MODE
-        0x0BA3 => i(gl.matrix_depth(MatrixMode::Modelview) as i64),                       // MODELVIEW_STACK_DEPTH
-        0x0BA4 => i(gl.matrix_depth(MatrixMode::Projection) as i64),                      // PROJECTION_STACK_DEPTH
-        0x0BA5 => i(gl.matrix_depth(MatrixMode::Texture) as i64),                         // TEXTURE_STACK_DEPTH
+        0x0BA6 => matrix(gl, MatrixMode::Modelview),                             // MODELVIEW_MATRIX
+        0x0BA7 => matrix(gl, MatrixMode::Projection),                            // PROJECTION_MATRIX
+        0x0BA8 => matrix(gl, MatrixMode::Texture),                               // TEXTURE_MATRIX
+        0x0BA0 => e(gl.current_matrix_mode().to_gl()),                           // MATRIX_MODE
+        0x0BA3 => i(gl.matrix_depth(MatrixMode::Modelview) as i64),              // MODELVIEW_STACK_DEPTH
+        0x0BA4 => i(gl.matrix_depth(MatrixMode::Projection) as i64),             // PROJECTION_STACK_DEPTH
+        0x0BA5 => i(gl.matrix_depth(MatrixMode::Texture) as i64),                // TEXTURE_STACK_DEPTH
         0x0D36 => i(softgl::matrix::MAX_MODELVIEW_DEPTH as i64),
         0x0D38 => i(softgl::matrix::MAX_PROJECTION_DEPTH as i64),
         0x0D39 => i(softgl::matrix::MAX_TEXTURE_DEPTH as i64),
