@@ -41,6 +41,18 @@ pub enum TexTarget {
     D2,
     D3,
     Cube,
+    /// `GL_TEXTURE_RECTANGLE_ARB`: one level, 2D, sampled at unnormalized
+    /// coordinates (s in `[0, width]`, t in `[0, height]`).
+    Rect,
+}
+
+impl TexTarget {
+    /// Whether coordinates are normalized (all targets but [`TexTarget::Rect`]:
+    /// llvmpipe's `normalized_coords`, which Mesa's `st_convert_sampler`
+    /// clears for rectangle textures).
+    pub const fn normalized(self) -> bool {
+        !matches!(self, TexTarget::Rect)
+    }
 }
 
 /// How texels are stored (chosen at upload for sampling speed).
