@@ -628,6 +628,7 @@ fn tex_target() -> impl Strategy<Value = TexTarget> {
             TexTarget::D1,
             TexTarget::D3,
             TexTarget::Cube,
+            TexTarget::Rect,
         ][..],
     )
 }
@@ -678,11 +679,20 @@ fn sampler_key() -> impl Strategy<Value = SamplerKey> {
         .prop_map(|(target, format, (min, mip, mag), mut wrap, compare, depth_mode)| {
             let dims = match target {
                 TexTarget::D1 => 1,
-                TexTarget::D2 | TexTarget::Cube => 2,
+                TexTarget::D2 | TexTarget::Cube | TexTarget::Rect => 2,
                 TexTarget::D3 => 3,
             };
             for w in wrap.iter_mut().skip(dims) {
                 *w = Wrap::Repeat;
+            }
+            // Rectangle textures: no mipmap filter, no REPEAT or MIRRORED_REPEAT (GL refuses them).
+            let mip = if target == TexTarget::Rect { MipFilter::None } else { mip };
+            if target == TexTarget::Rect {
+                for w in wrap.iter_mut().take(2) {
+                    if matches!(w, Wrap::Repeat | Wrap::MirroredRepeat) {
+                        *w = Wrap::ClampToEdge;
+                    }
+                }
             }
             SamplerKey {
                 target,
@@ -834,13 +844,19 @@ impl OwnedTexture {
         let dims = match key.target {
             TexTarget::D1 => [size(64), 1, 1],
             TexTarget::D2 => [size(64), size(64), 1],
+            // One level; its coordinates are unnormalized, so the random
+            // ones (around [-2, 2]) reach the first texels and the clamps.
+            TexTarget::Rect => [size(5), size(5), 1],
             TexTarget::D3 => [size(8), size(8), size(8)],
             TexTarget::Cube => {
                 let s = size(32);
                 [s, s, 1]
             }
         };
-        let count = 32 - dims.iter().max().expect("three sizes").leading_zeros();
+        let count = match key.target {
+            TexTarget::Rect => 1,
+            _ => 32 - dims.iter().max().expect("three sizes").leading_zeros(),
+        };
         let base_level = rng.below(u64::from(count)) as u32;
         let max_level = base_level + rng.below(u64::from(count - base_level)) as u32;
         let faces = if key.target == TexTarget::Cube { 6 } else { 1 };
