@@ -686,7 +686,11 @@ fn sampler_key() -> impl Strategy<Value = SamplerKey> {
                 *w = Wrap::Repeat;
             }
             // Rectangle textures: no mipmap filter, no REPEAT or MIRRORED_REPEAT (GL refuses them).
-            let mip = if target == TexTarget::Rect { MipFilter::None } else { mip };
+            let mip = if target == TexTarget::Rect {
+                MipFilter::None
+            } else {
+                mip
+            };
             if target == TexTarget::Rect {
                 for w in wrap.iter_mut().take(2) {
                     if matches!(w, Wrap::Repeat | Wrap::MirroredRepeat) {

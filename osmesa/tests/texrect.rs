@@ -77,11 +77,23 @@ fn rectangle_textures_match_llvmpipe() {
     assert!(soft[0].contains(&*profile_dir().to_string_lossy()), "{}", soft[0]);
     // Each implementation's own limit: llvmpipe's 16384, softgl's 2D limit.
     let max = "max rectangle size ";
-    assert_eq!(mesa.iter().find(|l| l.starts_with(max)).unwrap(), "max rectangle size 16384 0x0000");
-    assert_eq!(soft.iter().find(|l| l.starts_with(max)).unwrap(), "max rectangle size 4096 0x0000");
+    assert_eq!(
+        mesa.iter().find(|l| l.starts_with(max)).unwrap(),
+        "max rectangle size 16384 0x0000"
+    );
+    assert_eq!(
+        soft.iter().find(|l| l.starts_with(max)).unwrap(),
+        "max rectangle size 4096 0x0000"
+    );
     // Every other line (state, defaults, each error, push/pop, lists,
     // framebuffer completeness) is Mesa's.
-    let rest = |v: &[String]| v[1..].iter().filter(|l| !l.starts_with(max)).cloned().collect::<Vec<_>>();
+    let rest = |v: &[String]| {
+        v[1..]
+            .iter()
+            .filter(|l| !l.starts_with(max))
+            .cloned()
+            .collect::<Vec<_>>()
+    };
     assert_eq!(rest(&soft), rest(&mesa));
     assert!(soft.iter().any(|l| l == "extension ARB 1 EXT 1 NV 1"));
     assert!(soft.iter().any(|l| l == "rectangle framebuffer complete 1"));

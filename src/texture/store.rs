@@ -9,7 +9,13 @@ use super::object::TextureObject;
 use crate::names::Names;
 use std::sync::Arc;
 
-const TARGETS: [TexTarget; 5] = [TexTarget::D1, TexTarget::D2, TexTarget::D3, TexTarget::Cube, TexTarget::Rect];
+const TARGETS: [TexTarget; 5] = [
+    TexTarget::D1,
+    TexTarget::D2,
+    TexTarget::D3,
+    TexTarget::Cube,
+    TexTarget::Rect,
+];
 
 fn index(target: TexTarget) -> usize {
     match target {

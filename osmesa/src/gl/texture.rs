@@ -858,5 +858,9 @@ pub(super) const TARGETS: [(TextureTarget, GLenum, GLenum); crate::gl_state::TEX
     (TextureTarget::D2, GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D),
     (TextureTarget::D3, GL_TEXTURE_3D, GL_TEXTURE_BINDING_3D),
     (TextureTarget::Cube, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP),
-    (TextureTarget::Rect, GL_TEXTURE_RECTANGLE_ARB, GL_TEXTURE_BINDING_RECTANGLE_ARB),
+    (
+        TextureTarget::Rect,
+        GL_TEXTURE_RECTANGLE_ARB,
+        GL_TEXTURE_BINDING_RECTANGLE_ARB,
+    ),
 ];
