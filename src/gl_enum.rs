@@ -558,7 +558,7 @@ mod tests {
         // refuses a table without one).
         assert_eq!(
             counts,
-            [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 45, 2, 5, 10, 5, 3, 2, 4, 5, 6, 8, 12, 4]
+            [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 46, 2, 5, 10, 5, 3, 2, 4, 5, 6, 8, 12, 4]
         );
     }
 
@@ -588,6 +588,6 @@ mod tests {
             round_trip::<TexParamName>(),
             round_trip::<TexLevelParamName>(),
         ];
-        assert_eq!(counts, [4, 2, 5, 3, 12, 21, 64, 17, 14]);
+        assert_eq!(counts, [5, 2, 5, 3, 12, 21, 64, 17, 14]);
     }
 }
