@@ -1020,7 +1020,7 @@ proptest! {
     }
 
     /// Units the specialist samples natively (2D RGBA8, REPEAT or
-    /// CLAMP_TO_EDGE, any filters), one or two.
+    /// CLAMP_TO_EDGE, any filters; rectangles, CLAMP_TO_EDGE), one or two.
     #[test]
     fn natively_sampled_jit_equals_interpreter(
         key in key(),
@@ -1065,13 +1065,19 @@ fn run_both(
     (jit_buf, interp_buf)
 }
 
-/// A unit the specialist samples natively.
+/// A unit the specialist samples natively: a third of them rectangles
+/// (CLAMP_TO_EDGE, no mipmap filter, as GL allows them).
 fn native_unit_key() -> impl Strategy<Value = TexUnitKey> {
     let wrap = || select(&[Wrap::Repeat, Wrap::ClampToEdge][..]);
-    (tex_unit_key(), [wrap(), wrap()]).prop_map(|(mut unit, [s, t])| {
+    let target = select(&[TexTarget::D2, TexTarget::D2, TexTarget::Rect][..]);
+    (tex_unit_key(), [wrap(), wrap()], target).prop_map(|(mut unit, [s, t], target)| {
         let k = &mut unit.sampler;
-        (k.target, k.format, k.compare) = (TexTarget::D2, TexelFormat::Rgba8, None);
+        (k.target, k.format, k.compare) = (target, TexelFormat::Rgba8, None);
         k.wrap = [s, t, Wrap::Repeat];
+        if target == TexTarget::Rect {
+            k.wrap = [Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::Repeat];
+            k.mip = MipFilter::None;
+        }
         if unit.base == BaseFormat::Depth {
             unit.base = BaseFormat::Rgba;
         }

@@ -214,7 +214,7 @@ pub fn with_statics(units: &[Option<TexUnitKey>; MAX_UNITS], set: &TextureSet<'_
 
 impl SamplerKey {
     /// This key with the statics of `tex` where the native sampler uses
-    /// them (2D RGBA8 REPEAT/CLAMP_TO_EDGE, `crate::compile::native_unit`),
+    /// them (2D and rectangle RGBA8 REPEAT/CLAMP_TO_EDGE, `crate::compile::native_unit`),
     /// the default elsewhere (so that those keys do not multiply).
     pub fn with_statics(self, tex: &TextureRef<'_>) -> SamplerKey {
         let statics = if crate::compile::native_sampler(&self) {
