@@ -1171,7 +1171,13 @@ impl Context {
             return;
         }
         let mask = self.tex_units.enabled_mask();
-        let targets = [TexTarget::D1, TexTarget::D2, TexTarget::D3, TexTarget::Cube];
+        let targets = [
+            TexTarget::D1,
+            TexTarget::D2,
+            TexTarget::D3,
+            TexTarget::Cube,
+            TexTarget::Rect,
+        ];
         let held = (0..softgl_jit::texture::MAX_UNITS)
             .filter(|u| mask & (1 << u) != 0)
             .flat_map(|u| targets.map(|t| self.textures.binding(u, t)))

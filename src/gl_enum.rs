@@ -241,6 +241,7 @@ gl_enums! {
         Texture(TextureTarget::D2) = GL_TEXTURE_2D 0x0DE1,
         Texture(TextureTarget::D3) = GL_TEXTURE_3D 0x806F,
         Texture(TextureTarget::Cube) = GL_TEXTURE_CUBE_MAP 0x8513,
+        Texture(TextureTarget::Rect) = GL_TEXTURE_RECTANGLE_ARB 0x84F5,
     }
     ColorControl {
         SingleColor = GL_SINGLE_COLOR 0x81F9,
@@ -346,6 +347,7 @@ gl_enums! {
         D2 = GL_TEXTURE_2D 0x0DE1,
         D3 = GL_TEXTURE_3D 0x806F,
         Cube = GL_TEXTURE_CUBE_MAP 0x8513,
+        Rect = GL_TEXTURE_RECTANGLE_ARB 0x84F5,
     }
     Filter {
         Nearest = GL_NEAREST 0x2600,
@@ -556,7 +558,7 @@ mod tests {
         // refuses a table without one).
         assert_eq!(
             counts,
-            [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 45, 2, 5, 10, 5, 3, 2, 4, 5, 6, 8, 12, 4]
+            [10, 8, 8, 15, 5, 16, 3, 2, 3, 2, 3, 46, 2, 5, 10, 5, 3, 2, 4, 5, 6, 8, 12, 4]
         );
     }
 
@@ -586,6 +588,6 @@ mod tests {
             round_trip::<TexParamName>(),
             round_trip::<TexLevelParamName>(),
         ];
-        assert_eq!(counts, [4, 2, 5, 3, 12, 21, 64, 17, 14]);
+        assert_eq!(counts, [5, 2, 5, 3, 12, 21, 64, 17, 14]);
     }
 }

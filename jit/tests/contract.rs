@@ -646,6 +646,7 @@ fn tex_target() -> impl Strategy<Value = TexTarget> {
             TexTarget::D1,
             TexTarget::D3,
             TexTarget::Cube,
+            TexTarget::Rect,
         ][..],
     )
 }
@@ -696,11 +697,24 @@ fn sampler_key() -> impl Strategy<Value = SamplerKey> {
         .prop_map(|(target, format, (min, mip, mag), mut wrap, compare, depth_mode)| {
             let dims = match target {
                 TexTarget::D1 => 1,
-                TexTarget::D2 | TexTarget::Cube => 2,
+                TexTarget::D2 | TexTarget::Cube | TexTarget::Rect => 2,
                 TexTarget::D3 => 3,
             };
             for w in wrap.iter_mut().skip(dims) {
                 *w = Wrap::Repeat;
+            }
+            // Rectangle textures: no mipmap filter, no REPEAT or MIRRORED_REPEAT (GL refuses them).
+            let mip = if target == TexTarget::Rect {
+                MipFilter::None
+            } else {
+                mip
+            };
+            if target == TexTarget::Rect {
+                for w in wrap.iter_mut().take(2) {
+                    if matches!(w, Wrap::Repeat | Wrap::MirroredRepeat) {
+                        *w = Wrap::ClampToEdge;
+                    }
+                }
             }
             SamplerKey {
                 target,
@@ -852,13 +866,19 @@ impl OwnedTexture {
         let dims = match key.target {
             TexTarget::D1 => [size(64), 1, 1],
             TexTarget::D2 => [size(64), size(64), 1],
+            // One level; its coordinates are unnormalized, so the random
+            // ones (around [-2, 2]) reach the first texels and the clamps.
+            TexTarget::Rect => [size(5), size(5), 1],
             TexTarget::D3 => [size(8), size(8), size(8)],
             TexTarget::Cube => {
                 let s = size(32);
                 [s, s, 1]
             }
         };
-        let count = 32 - dims.iter().max().expect("three sizes").leading_zeros();
+        let count = match key.target {
+            TexTarget::Rect => 1,
+            _ => 32 - dims.iter().max().expect("three sizes").leading_zeros(),
+        };
         let base_level = rng.below(u64::from(count)) as u32;
         let max_level = base_level + rng.below(u64::from(count - base_level)) as u32;
         let faces = if key.target == TexTarget::Cube { 6 } else { 1 };
@@ -1018,7 +1038,7 @@ proptest! {
     }
 
     /// Units the specialist samples natively (2D RGBA8, REPEAT or
-    /// CLAMP_TO_EDGE, any filters), one or two.
+    /// CLAMP_TO_EDGE, any filters; rectangles, CLAMP_TO_EDGE), one or two.
     #[test]
     fn natively_sampled_jit_equals_interpreter(
         key in key(),
@@ -1063,13 +1083,19 @@ fn run_both(
     (jit_buf, interp_buf)
 }
 
-/// A unit the specialist samples natively.
+/// A unit the specialist samples natively: a third of them rectangles
+/// (CLAMP_TO_EDGE, no mipmap filter, as GL allows them).
 fn native_unit_key() -> impl Strategy<Value = TexUnitKey> {
     let wrap = || select(&[Wrap::Repeat, Wrap::ClampToEdge][..]);
-    (tex_unit_key(), [wrap(), wrap()]).prop_map(|(mut unit, [s, t])| {
+    let target = select(&[TexTarget::D2, TexTarget::D2, TexTarget::Rect][..]);
+    (tex_unit_key(), [wrap(), wrap()], target).prop_map(|(mut unit, [s, t], target)| {
         let k = &mut unit.sampler;
-        (k.target, k.format, k.compare) = (TexTarget::D2, TexelFormat::Rgba8, None);
+        (k.target, k.format, k.compare) = (target, TexelFormat::Rgba8, None);
         k.wrap = [s, t, Wrap::Repeat];
+        if target == TexTarget::Rect {
+            k.wrap = [Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::Repeat];
+            k.mip = MipFilter::None;
+        }
         if unit.base == BaseFormat::Depth {
             unit.base = BaseFormat::Rgba;
         }

@@ -82,7 +82,7 @@ fn scene(c: &Case, seed: u32) -> Scene {
     let depth_mode = cases::depth_mode(c);
     let dims = match target {
         TexTarget::D1 => 1,
-        TexTarget::D2 | TexTarget::Cube => 2,
+        TexTarget::D2 | TexTarget::Cube | TexTarget::Rect => 2,
         TexTarget::D3 => 3,
     };
     let wraps = [

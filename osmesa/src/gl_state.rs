@@ -96,6 +96,9 @@ pub struct SavedAttrib {
     pub buffers: (GLenum, GLenum),
 }
 
+/// How many texture targets a unit binds (1D, 2D, 3D, cube map, rectangle).
+pub const TEXTURE_TARGETS: usize = 5;
+
 /// The texture state `glPushAttrib` saved: every unit (enables,
 /// environment, coordinate generation), its bindings, the active unit and,
 /// for `GL_TEXTURE_BIT`, the parameters of every bound texture object.
@@ -104,7 +107,7 @@ pub struct SavedTextures {
     pub active: usize,
     pub units: [TexUnit; MAX_UNITS],
     /// Per unit, the name bound to each target of `gl::texture::TARGETS`.
-    pub bindings: [[u32; 4]; MAX_UNITS],
+    pub bindings: [[u32; TEXTURE_TARGETS]; MAX_UNITS],
     /// The bound objects (each once) with their parameters.
     pub objects: Vec<(TextureTarget, u32, Vec<TexParam>)>,
 }

@@ -124,6 +124,7 @@ const KNOWN: &[(&str, &[&str])] = &[
     ("GL_ARB_texture_env_dot3", &[]),
     ("GL_ARB_texture_mirrored_repeat", &[]),
     ("GL_ARB_texture_non_power_of_two", &[]),
+    ("GL_ARB_texture_rectangle", &[]),
     (
         "GL_ARB_transpose_matrix",
         &[
@@ -278,6 +279,7 @@ const KNOWN: &[(&str, &[&str])] = &[
             "glPrioritizeTexturesEXT",
         ],
     ),
+    ("GL_EXT_texture_rectangle", &[]),
     ("GL_EXT_texture_sRGB", &[]),
     (
         "GL_EXT_vertex_array",
@@ -338,6 +340,7 @@ const KNOWN: &[(&str, &[&str])] = &[
         ],
     ),
     ("GL_NV_blend_square", &[]),
+    ("GL_NV_texture_rectangle", &[]),
     ("GL_SGIS_generate_mipmap", &[]),
     ("GL_SGIS_texture_edge_clamp", &[]),
     ("GL_SGIS_texture_lod", &[]),

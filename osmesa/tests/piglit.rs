@@ -10,8 +10,7 @@
 //!   (`SOFTGL_PIGLIT_UPDATE=1` rewrites it from this run).
 //!
 //! The tests `piglit_notes.tsv` marks `excluded` are left out, each with its
-//! reason (`gl-1.0-blend-func`: over 600 s on llvmpipe; `max-texture-size`:
-//! hangs without rectangle textures). Without piglit
+//! reason (`gl-1.0-blend-func`: over 600 s on llvmpipe). Without piglit
 //! installed the test prints one `SKIPPED piglit:` line and passes, unless
 //! `SOFTGL_REQUIRE_REFERENCES=1`. The results stay in
 //! `<target>/tmp/piglit-gl1x/` for `softgl-conformance piglit`.

@@ -17,6 +17,9 @@ use crate::gl_enum::GlEnum;
 pub const MAX_TEXTURE_SIZE: u32 = 1 << (super::jit::MAX_LEVELS - 1);
 /// `GL_MAX_3D_TEXTURE_SIZE`.
 pub const MAX_3D_TEXTURE_SIZE: u32 = 1 << (super::jit::MAX_3D_LEVELS - 1);
+/// `GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB`: softgl's 2D limit (llvmpipe reports
+/// 16384, Mesa's `MaxTextureRectSize` = min(its 2D size, 16384)).
+pub const MAX_RECTANGLE_TEXTURE_SIZE: u32 = MAX_TEXTURE_SIZE;
 
 fn check(ok: bool, e: GlError) -> GlResult {
     if ok {
@@ -51,6 +54,11 @@ fn legal_size(target: TexTarget, level: usize, size: [i32; 3], border: i32) -> b
         TexTarget::D1 => side(size[0]) && size[1] == 1 && size[2] == 1,
         TexTarget::D2 => side(size[0]) && side(size[1]) && size[2] == 1,
         TexTarget::Cube => side(size[0]) && size[0] == size[1] && size[2] == 1,
+        // Mesa's `_mesa_legal_texture_dimensions`: level 0, any size up to the maximum.
+        TexTarget::Rect => {
+            let ok = |s: i32| (0..=MAX_RECTANGLE_TEXTURE_SIZE as i32).contains(&s);
+            level == 0 && ok(size[0]) && ok(size[1]) && size[2] == 1
+        }
         TexTarget::D3 => side(size[0]) && side(size[1]) && side(size[2]),
     }
 }
@@ -84,6 +92,32 @@ fn client_layout(pixels: &PixelData<'_>, store: &PixelStore, dims: u32, size: [u
     let layout = ClientLayout::new(pixels.format, pixels.ty, store, dims, size).ok_or(GlError::InvalidOperation)?;
     check(pixels.bytes.len() >= layout.len, GlError::InvalidOperation)?;
     Ok(layout)
+}
+
+/// Whether `border` is allowed: 0 or 1, and 0 only for rectangle textures
+/// (Mesa's `texture_error_check` and `copytexture_error_check`).
+fn legal_border(target: TexTarget, border: i32) -> bool {
+    match target {
+        TexTarget::Rect => border == 0,
+        TexTarget::D1 | TexTarget::D2 | TexTarget::D3 | TexTarget::Cube => matches!(border, 0 | 1),
+    }
+}
+
+/// A rectangle texture's `glTexParameter` limits (Mesa `main/texparam.c`):
+/// no REPEAT or MIRRORED_REPEAT (`validate_texture_wrap_mode`) and no
+/// mipmap minification filter (`InvalidEnum`), BASE_LEVEL 0 only
+/// (`InvalidOperation`), MAX_LEVEL 0 only (`InvalidValue`); setting a value
+/// a parameter already has is never an error there.
+fn check_rect_param(params: &super::SamplerState, p: &TexParam) -> GlResult {
+    use super::jit::{MipFilter, Wrap};
+    let wrap_ok = |w: &Wrap| !matches!(w, Wrap::Repeat | Wrap::MirroredRepeat);
+    match p {
+        TexParam::WrapS(w) | TexParam::WrapT(w) | TexParam::WrapR(w) => check(wrap_ok(w), GlError::InvalidEnum),
+        TexParam::MinFilter(_, m) => check(*m == MipFilter::None, GlError::InvalidEnum),
+        TexParam::BaseLevel(v) => check(*v == 0, GlError::InvalidOperation),
+        TexParam::MaxLevel(v) => check(*v == params.max_level || *v == 0, GlError::InvalidValue),
+        _ => Ok(()),
+    }
 }
 
 fn level_index(target: TexTarget, level: i32) -> GlResult<usize> {
@@ -270,7 +304,7 @@ impl Context {
         self.tex_call(|gl| {
             let tt = target.texture_target();
             let level = level_index(tt, level)?;
-            check(matches!(border, 0 | 1), GlError::InvalidValue)?;
+            check(legal_border(tt, border), GlError::InvalidValue)?;
             check(size.iter().all(|&s| s >= 0), GlError::InvalidValue)?;
             if let Some(p) = &pixels {
                 check_format_type(internal, p.format, p.ty)?;
@@ -428,13 +462,13 @@ impl Context {
             check(
                 matches!(
                     target,
-                    TexImageTarget::D1 | TexImageTarget::D2 | TexImageTarget::CubeFace(_)
+                    TexImageTarget::D1 | TexImageTarget::D2 | TexImageTarget::CubeFace(_) | TexImageTarget::Rect
                 ),
                 GlError::InvalidEnum,
             )?;
             let tt = target.texture_target();
             let level = level_index(tt, level)?;
-            check(matches!(border, 0 | 1), GlError::InvalidValue)?;
+            check(legal_border(tt, border), GlError::InvalidValue)?;
             check(
                 !matches!(
                     internal,
@@ -559,8 +593,23 @@ impl Context {
 
     /// `glTexParameter` on the active unit's `target`.
     pub fn tex_parameter(&mut self, target: TexTarget, p: TexParam) -> GlResult {
+        self.set_tex_parameter(target, p, true)
+    }
+
+    /// A parameter value `glPushAttrib(GL_TEXTURE_BIT)` saved, put back as
+    /// Mesa's `glPopAttrib` copies it: without the rectangle target's limits
+    /// (a rectangle texture's saved MAX_LEVEL of 1000 is restored even when 0
+    /// was set since, which `glTexParameter` would refuse).
+    pub fn restore_tex_parameter(&mut self, target: TexTarget, p: TexParam) -> GlResult {
+        self.set_tex_parameter(target, p, false)
+    }
+
+    fn set_tex_parameter(&mut self, target: TexTarget, p: TexParam, checked: bool) -> GlResult {
         self.tex_call(|gl| {
             let params = &mut gl.textures.get_mut().current_mut(target).params;
+            if checked && target == TexTarget::Rect {
+                check_rect_param(params, &p)?;
+            }
             match p {
                 TexParam::MinFilter(f, m) => (params.min, params.mip) = (f, m),
                 TexParam::MagFilter(f) => params.mag = f,
@@ -665,9 +714,11 @@ impl Context {
     /// `glGenerateMipmap` for the active unit's `target` (Mesa `main/genmipmap.c`):
     /// nothing when BASE_LEVEL ≥ MAX_LEVEL; `InvalidOperation` for a cube map
     /// whose base faces differ, or without a base image.
+    /// A rectangle texture is `InvalidEnum` (`_mesa_is_valid_generate_texture_mipmap_target`).
     pub fn generate_mipmap(&mut self, target: TexTarget) -> GlResult {
         self.before_texture_write(target);
         self.tex_call(|gl| {
+            check(target != TexTarget::Rect, GlError::InvalidEnum)?;
             let obj = gl.textures.get_mut().current_mut(target);
             if obj.params.base_level >= obj.params.max_level {
                 return Ok(());

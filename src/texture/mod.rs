@@ -41,6 +41,8 @@ pub enum TexImageTarget {
     D3,
     /// 0..6: +X, −X, +Y, −Y, +Z, −Z.
     CubeFace(u8),
+    /// `GL_TEXTURE_RECTANGLE_ARB` (level 0 only).
+    Rect,
     Proxy(TextureTarget),
 }
 
@@ -52,6 +54,7 @@ impl TexImageTarget {
             TexImageTarget::D2 => TextureTarget::D2,
             TexImageTarget::D3 => TextureTarget::D3,
             TexImageTarget::CubeFace(_) => TextureTarget::Cube,
+            TexImageTarget::Rect => TextureTarget::Rect,
             TexImageTarget::Proxy(t) => t,
         }
     }
@@ -76,6 +79,8 @@ impl TexImageTarget {
             TexImageTarget::Proxy(TextureTarget::D2) => 0x8064,
             TexImageTarget::Proxy(TextureTarget::D3) => 0x8070,
             TexImageTarget::Proxy(TextureTarget::Cube) => 0x851B,
+            TexImageTarget::Rect => 0x84F5,
+            TexImageTarget::Proxy(TextureTarget::Rect) => 0x84F7,
         }
     }
 
@@ -90,6 +95,8 @@ impl TexImageTarget {
             0x8064 => TexImageTarget::Proxy(TextureTarget::D2),
             0x8070 => TexImageTarget::Proxy(TextureTarget::D3),
             0x851B => TexImageTarget::Proxy(TextureTarget::Cube),
+            0x84F5 => TexImageTarget::Rect,
+            0x84F7 => TexImageTarget::Proxy(TextureTarget::Rect),
             _ => return None,
         })
     }
@@ -98,7 +105,7 @@ impl TexImageTarget {
     pub fn dims(self) -> u32 {
         match self.texture_target() {
             TextureTarget::D1 => 1,
-            TextureTarget::D2 | TextureTarget::Cube => 2,
+            TextureTarget::D2 | TextureTarget::Cube | TextureTarget::Rect => 2,
             TextureTarget::D3 => 3,
         }
     }
@@ -268,11 +275,13 @@ pub fn min_filter_from_gl(value: u32) -> Option<(Filter, MipFilter)> {
 }
 
 /// Levels a target can have (GL_MAX_TEXTURE_SIZE 4096, GL_MAX_3D_TEXTURE_SIZE 256,
-/// GL_MAX_CUBE_MAP_TEXTURE_SIZE 4096).
+/// GL_MAX_CUBE_MAP_TEXTURE_SIZE 4096; rectangle textures have level 0 only,
+/// Mesa's `_mesa_max_texture_levels`).
 pub fn max_levels(target: TextureTarget) -> usize {
     match target {
         TextureTarget::D3 => jit::MAX_3D_LEVELS,
-        _ => jit::MAX_LEVELS,
+        TextureTarget::Rect => 1,
+        TextureTarget::D1 | TextureTarget::D2 | TextureTarget::Cube => jit::MAX_LEVELS,
     }
 }
 

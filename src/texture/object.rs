@@ -92,6 +92,23 @@ pub struct SamplerState {
     pub depth_mode: DepthMode,
 }
 
+impl SamplerState {
+    /// A new object's parameters for `target`: GL's defaults, except that a
+    /// rectangle texture starts with CLAMP_TO_EDGE and LINEAR minification
+    /// (ARB_texture_rectangle issues 5 and 6; Mesa `_mesa_initialize_texture_object`).
+    pub fn for_target(target: TexTarget) -> SamplerState {
+        match target {
+            TexTarget::Rect => SamplerState {
+                min: Filter::Linear,
+                mip: MipFilter::None,
+                wrap: [Wrap::ClampToEdge; 3],
+                ..SamplerState::default()
+            },
+            TexTarget::D1 | TexTarget::D2 | TexTarget::D3 | TexTarget::Cube => SamplerState::default(),
+        }
+    }
+}
+
 impl Default for SamplerState {
     fn default() -> Self {
         SamplerState {
@@ -128,7 +145,7 @@ impl TextureObject {
         TextureObject {
             target,
             images: vec![None; max_levels(target) * faces(target)],
-            params: SamplerState::default(),
+            params: SamplerState::for_target(target),
         }
     }
 
@@ -159,7 +176,7 @@ impl TextureObject {
         let img = self.base_image()?;
         let side = match self.target {
             TexTarget::D1 => img.width,
-            TexTarget::D2 | TexTarget::Cube => img.width.max(img.height),
+            TexTarget::D2 | TexTarget::Cube | TexTarget::Rect => img.width.max(img.height),
             TexTarget::D3 => img.width.max(img.height).max(img.depth),
         };
         let log2 = side.max(1).ilog2() as usize;
@@ -207,7 +224,7 @@ pub fn next_size(target: TexTarget, size: [u32; 3]) -> [u32; 3] {
     let half = |s: u32| (s / 2).max(1);
     match target {
         TexTarget::D1 => [half(size[0]), 1, 1],
-        TexTarget::D2 | TexTarget::Cube => [half(size[0]), half(size[1]), 1],
+        TexTarget::D2 | TexTarget::Cube | TexTarget::Rect => [half(size[0]), half(size[1]), 1],
         TexTarget::D3 => [half(size[0]), half(size[1]), half(size[2])],
     }
 }

@@ -9,7 +9,13 @@ use super::object::TextureObject;
 use crate::names::Names;
 use std::sync::Arc;
 
-const TARGETS: [TexTarget; 4] = [TexTarget::D1, TexTarget::D2, TexTarget::D3, TexTarget::Cube];
+const TARGETS: [TexTarget; 5] = [
+    TexTarget::D1,
+    TexTarget::D2,
+    TexTarget::D3,
+    TexTarget::Cube,
+    TexTarget::Rect,
+];
 
 fn index(target: TexTarget) -> usize {
     match target {
@@ -17,6 +23,7 @@ fn index(target: TexTarget) -> usize {
         TexTarget::D2 => 1,
         TexTarget::D3 => 2,
         TexTarget::Cube => 3,
+        TexTarget::Rect => 4,
     }
 }
 
@@ -24,10 +31,10 @@ fn index(target: TexTarget) -> usize {
 #[derive(Clone, Debug)]
 pub struct TextureStore {
     named: Names<TextureObject>,
-    defaults: [TextureObject; 4],
+    defaults: [TextureObject; 5],
     /// Proxy images: sizes and formats only, no texels.
-    pub(crate) proxies: [TextureObject; 4],
-    bindings: [[u32; 4]; MAX_UNITS],
+    pub(crate) proxies: [TextureObject; 5],
+    bindings: [[u32; 5]; MAX_UNITS],
     active: usize,
 }
 
@@ -43,7 +50,7 @@ impl TextureStore {
             named: Names::new(),
             defaults: TARGETS.map(TextureObject::new),
             proxies: TARGETS.map(TextureObject::new),
-            bindings: [[0; 4]; MAX_UNITS],
+            bindings: [[0; 5]; MAX_UNITS],
             active: 0,
         }
     }
@@ -156,7 +163,7 @@ impl TextureStore {
         let storage = base.internal.storage();
         let wrap = match target {
             TexTarget::D1 => [p.wrap[0], Wrap::Repeat, Wrap::Repeat],
-            TexTarget::D2 | TexTarget::Cube => [p.wrap[0], p.wrap[1], Wrap::Repeat],
+            TexTarget::D2 | TexTarget::Cube | TexTarget::Rect => [p.wrap[0], p.wrap[1], Wrap::Repeat],
             TexTarget::D3 => p.wrap,
         };
         let key = SamplerKey {

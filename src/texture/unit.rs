@@ -5,7 +5,7 @@
 //!
 //! A unit takes part in a draw only when one of its targets is enabled and
 //! the texture bound there is complete (Mesa's `update_ff_texture_state`,
-//! `main/texstate.c`: the enabled targets are tried cube map, 3D, 2D, 1D,
+//! `main/texstate.c`: the enabled targets are tried cube map, 3D, rectangle, 2D, 1D,
 //! and the first complete one is used). Any other unit adds nothing: no key
 //! entry, no varyings, no vertex work.
 
@@ -128,7 +128,7 @@ pub struct TexGen {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TexUnit {
     /// Enabled targets, indexed by [`target_index`].
-    pub enabled: [bool; 4],
+    pub enabled: [bool; 5],
     pub env_mode: EnvMode,
     /// `GL_TEXTURE_ENV_COLOR`, clamped to `[0, 1]` as Mesa keeps it for
     /// fixed-point colour buffers.
@@ -149,7 +149,7 @@ impl Default for TexUnit {
             eye_plane: plane,
         };
         TexUnit {
-            enabled: [false; 4],
+            enabled: [false; 5],
             env_mode: EnvMode::Modulate,
             env_color: [0.0; 4],
             combine: CombineKey::DEFAULT,
@@ -171,13 +171,16 @@ pub fn target_index(target: TextureTarget) -> usize {
         TextureTarget::D2 => 1,
         TextureTarget::D3 => 2,
         TextureTarget::Cube => 3,
+        TextureTarget::Rect => 4,
     }
 }
 
-/// The order enabled targets are tried in (GL 4.4 compatibility §16.2, Mesa's `TEXTURE_x_INDEX`).
-const PRIORITY: [TextureTarget; 4] = [
+/// The order enabled targets are tried in (GL 4.4 compatibility §16.2, Mesa's
+/// `TEXTURE_x_INDEX`; ARB_texture_rectangle issue 10: rectangle above 2D, below 3D).
+const PRIORITY: [TextureTarget; 5] = [
     TextureTarget::Cube,
     TextureTarget::D3,
+    TextureTarget::Rect,
     TextureTarget::D2,
     TextureTarget::D1,
 ];

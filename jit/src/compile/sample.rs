@@ -1,5 +1,5 @@
 //! Native sampling of the paths real programs spend their time in: 2D
-//! `Rgba8` textures (every unorm8 base format is stored expanded to RGBA)
+//! and rectangle `Rgba8` textures (every unorm8 base format is stored expanded to RGBA)
 //! with every minification filter (NEAREST, LINEAR and the four mipmap
 //! filters) and magnification filter, REPEAT or CLAMP_TO_EDGE. These take llvmpipe's 8-bit
 //! AoS path; each step is the reference's (`crate::texture::sample_quad`,
@@ -26,7 +26,7 @@ pub fn native_unit(unit: &TexUnitKey) -> bool {
 
 /// [`native_unit`] of a unit with sampler `s`.
 pub fn native_sampler(s: &SamplerKey) -> bool {
-    s.target == TexTarget::D2
+    matches!(s.target, TexTarget::D2 | TexTarget::Rect)
         && s.format == TexelFormat::Rgba8
         && s.compare.is_none()
         && s.wrap[..2]
@@ -316,6 +316,7 @@ impl Gen<'_> {
             self.b.ins().smax(v, one)
         });
         let pot = key.statics.pot;
+        let norm = key.target.normalized();
         // Coordinates are clamped to the level (they already are: the clamp
         // only guarantees it), rows made once.
         let wm = self.b.ins().isub(size[0], one);
@@ -333,15 +334,15 @@ impl Gen<'_> {
         };
         match filter {
             Filter::Nearest => {
-                let x = self.nearest_axis(at[0], (size[0], wm), pot[0], key.wrap[0]);
-                let y = self.nearest_axis(at[1], (size[1], hm), pot[1], key.wrap[1]);
+                let x = self.nearest_axis(at[0], (size[0], wm), (pot[0], norm), key.wrap[0]);
+                let y = self.nearest_axis(at[1], (size[1], hm), (pot[1], norm), key.wrap[1]);
                 let x = column(self, x);
                 let y = row(self, y);
                 self.fetch(texels, &[(x, y)])[0]
             }
             Filter::Linear => {
-                let (x0, x1, wx) = self.linear_axis(at[0], (size[0], wm), pot[0], key.wrap[0]);
-                let (y0, y1, wy) = self.linear_axis(at[1], (size[1], hm), pot[1], key.wrap[1]);
+                let (x0, x1, wx) = self.linear_axis(at[0], (size[0], wm), (pot[0], norm), key.wrap[0]);
+                let (y0, y1, wy) = self.linear_axis(at[1], (size[1], hm), (pot[1], norm), key.wrap[1]);
                 let [x0, x1] = [x0, x1].map(|x| column(self, x));
                 let [y0, y1] = [y0, y1].map(|y| row(self, y));
                 // The three lerps on widened texels, narrowed once.
@@ -478,8 +479,9 @@ impl Gen<'_> {
 
     /// The nearest texel along an axis (`filter::aos_nearest_axis`) of
     /// length `len` (and `len − 1`); `pot`: REPEAT of a power-of-two size
-    /// (the key's statics).
-    fn nearest_axis(&mut self, s: Value, (len, len1): (Value, Value), pot: bool, wrap: Wrap) -> Value {
+    /// (the key's statics); `norm`: normalized coordinates (false for a
+    /// rectangle texture: the clamp's coordinate is not scaled).
+    fn nearest_axis(&mut self, s: Value, (len, len1): (Value, Value), (pot, norm): (bool, bool), wrap: Wrap) -> Value {
         let lf = self.b.ins().fcvt_from_sint(F32X4, len);
         match wrap {
             Wrap::Repeat if pot => {
@@ -498,7 +500,7 @@ impl Gen<'_> {
                 self.int_lanes(v)
             }
             _ => {
-                let v = self.b.ins().fmul(s, lf);
+                let v = if norm { self.b.ins().fmul(s, lf) } else { s };
                 let v = self.b.ins().floor(v);
                 let i = self.int_lanes(v);
                 let zero = self.splat(0);
@@ -509,8 +511,14 @@ impl Gen<'_> {
     }
 
     /// The two texels and the 8-bit weight of the second along an axis
-    /// (`filter::aos_linear_axis`); `pot` as in [`Self::nearest_axis`].
-    fn linear_axis(&mut self, s: Value, (len, len1): (Value, Value), pot: bool, wrap: Wrap) -> (Value, Value, Value) {
+    /// (`filter::aos_linear_axis`); `pot` and `norm` as in [`Self::nearest_axis`].
+    fn linear_axis(
+        &mut self,
+        s: Value,
+        (len, len1): (Value, Value),
+        (pot, norm): (bool, bool),
+        wrap: Wrap,
+    ) -> (Value, Value, Value) {
         let one = self.splat(1);
         let zero = self.splat(0);
         let ff = self.splat(255);
@@ -549,8 +557,13 @@ impl Gen<'_> {
                 (x0, self.b.ins().bitselect(last, zero, next), w)
             }
             _ => {
-                let scaled = self.b.ins().ishl_imm_u(len, 8);
-                let scaled = self.b.ins().fcvt_from_sint(F32X4, scaled);
+                // `s · len·256`, or `s · 256` for unnormalized coordinates.
+                let scaled = if norm {
+                    let scaled = self.b.ins().ishl_imm_u(len, 8);
+                    self.b.ins().fcvt_from_sint(F32X4, scaled)
+                } else {
+                    self.fconst(256.0)
+                };
                 let u = self.b.ins().fmul(s, scaled);
                 let (i, w) = split(self, u);
                 let ge0 = self.b.ins().icmp(IntCC::SignedGreaterThanOrEqual, i, zero);

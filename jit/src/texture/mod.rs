@@ -41,6 +41,18 @@ pub enum TexTarget {
     D2,
     D3,
     Cube,
+    /// `GL_TEXTURE_RECTANGLE_ARB`: one level, 2D, sampled at unnormalized
+    /// coordinates (s in `[0, width]`, t in `[0, height]`).
+    Rect,
+}
+
+impl TexTarget {
+    /// Whether coordinates are normalized (all targets but [`TexTarget::Rect`]:
+    /// llvmpipe's `normalized_coords`, which Mesa's `st_convert_sampler`
+    /// clears for rectangle textures).
+    pub const fn normalized(self) -> bool {
+        !matches!(self, TexTarget::Rect)
+    }
 }
 
 /// How texels are stored (chosen at upload for sampling speed).
@@ -202,7 +214,7 @@ pub fn with_statics(units: &[Option<TexUnitKey>; MAX_UNITS], set: &TextureSet<'_
 
 impl SamplerKey {
     /// This key with the statics of `tex` where the native sampler uses
-    /// them (2D RGBA8 REPEAT/CLAMP_TO_EDGE, `crate::compile::native_unit`),
+    /// them (2D and rectangle RGBA8 REPEAT/CLAMP_TO_EDGE, `crate::compile::native_unit`),
     /// the default elsewhere (so that those keys do not multiply).
     pub fn with_statics(self, tex: &TextureRef<'_>) -> SamplerKey {
         let statics = if crate::compile::native_sampler(&self) {

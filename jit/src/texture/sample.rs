@@ -170,7 +170,7 @@ impl<'a> QuadSample<'a> {
 fn dims(target: TexTarget) -> usize {
     match target {
         TexTarget::D1 => 1,
-        TexTarget::D2 | TexTarget::Cube => 2,
+        TexTarget::D2 | TexTarget::Cube | TexTarget::Rect => 2,
         TexTarget::D3 => 3,
     }
 }
@@ -180,7 +180,7 @@ fn dims(target: TexTarget) -> usize {
 fn reference_component(target: TexTarget) -> usize {
     match target {
         TexTarget::D1 => 1,
-        TexTarget::D2 | TexTarget::D3 => 2,
+        TexTarget::D2 | TexTarget::D3 | TexTarget::Rect => 2,
         TexTarget::Cube => 3,
     }
 }
@@ -194,7 +194,10 @@ fn image<'a>(tex: &'a TextureRef<'a>, target: TexTarget, level: u32, face: u32) 
     tex.images.get(i).filter(|im| !im.texels.is_empty())
 }
 
-/// The base level's size as floats (λ is measured in its texels).
+/// The base level's size as floats (λ is measured in its texels). Rectangle
+/// textures too: `lp_build_rho` scales the derivatives by the size whether
+/// or not the coordinates are normalized, so their λ (with min ≠ mag) is
+/// the size times a texel-unit ρ, as on llvmpipe.
 fn base_size(tex: &TextureRef<'_>, target: TexTarget) -> [f32; 3] {
     image(tex, target, tex.base_level, 0)
         .map_or([1.0; 3], |im| [im.width, im.height, im.depth].map(|v| v.max(1) as f32))
@@ -247,7 +250,11 @@ fn filter_levels(
     };
     let second = mip == MipFilter::Linear;
     if uses_aos(key) {
-        let one = |l: u32| level(l).map_or([0; 4], |lv| filter::aos(&lv, img_filter, dims, coord, wrap));
+        let one = |l: u32| {
+            level(l).map_or([0; 4], |lv| {
+                filter::aos_at(&lv, img_filter, dims, coord, wrap, key.target.normalized())
+            })
+        };
         let mut c = one(lod.level0);
         if second {
             let w = lod.weight;
@@ -269,7 +276,11 @@ fn filter_levels(
             false => (f, minps(maxps(reference, 0.0), 1.0)),
         }),
     };
-    let one = |l: u32| level(l).map_or([0.0; 4], |lv| filter::soa(&lv, img_filter, dims, coord, &st));
+    let one = |l: u32| {
+        level(l).map_or([0.0; 4], |lv| {
+            filter::soa_at(&lv, img_filter, dims, coord, &st, key.target.normalized())
+        })
+    };
     let c = one(lod.level0);
     if second && lod.weight > 0.0 {
         filter::soa_mip(c, one(lod.level1), lod.weight)

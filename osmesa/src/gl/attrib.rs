@@ -86,7 +86,8 @@ fn restore_lighting(gl: &mut Context, m: u32, saved: &LightingState) -> GlResult
 /// parameters) or `GL_ENABLE_BIT` (the units alone).
 fn save_textures(gl: &mut Context, mask: u32) -> GlResult<SavedTextures> {
     let active = gl.active_texture_unit();
-    let bindings: [[u32; 4]; MAX_UNITS] = std::array::from_fn(|u| TARGETS.map(|t| gl.texture_binding(u, t.0)));
+    let bindings: [[u32; TARGETS.len()]; MAX_UNITS] =
+        std::array::from_fn(|u| TARGETS.map(|t| gl.texture_binding(u, t.0)));
     let mut objects: Vec<(softgl::TextureTarget, u32, Vec<softgl::TexParam>)> = Vec::new();
     if mask & TEXTURE_BIT != 0 {
         for (u, names) in bindings.iter().enumerate() {
@@ -123,7 +124,7 @@ fn restore_textures(gl: &mut Context, m: u32, s: &SavedTextures) -> GlResult {
         for (target, name, params) in &s.objects {
             gl.bind_texture(*target, *name)?;
             for &p in params {
-                gl.tex_parameter(*target, p)?;
+                gl.restore_tex_parameter(*target, p)?;
             }
         }
         for (u, names) in s.bindings.iter().enumerate() {

@@ -22,7 +22,7 @@ use super::{checked, now, outside, run_or_record};
 use crate::consts::*;
 use crate::gl_state::{Cmd, GlState, MAX_UNITS};
 use crate::state::with_gl;
-use softgl::texture::api::{check_format_type, MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE};
+use softgl::texture::api::{check_format_type, MAX_3D_TEXTURE_SIZE, MAX_RECTANGLE_TEXTURE_SIZE, MAX_TEXTURE_SIZE};
 use softgl::texture::index::{index_image_bytes, index_image_rgba8, IndexType};
 use softgl::texture::unpack::ClientLayout;
 use softgl::texture::{
@@ -317,6 +317,17 @@ fn image_args(level: i32, border: i32, size: [i32; 3]) -> GlResult {
     Ok(())
 }
 
+/// [`image_args`] for an image of `t`: a rectangle texture has level 0 only
+/// and no border (Mesa's `texture_error_check` finds both before the pixels'
+/// format and type).
+fn target_args(t: TexImageTarget, level: i32, border: i32, size: [i32; 3]) -> GlResult {
+    image_args(level, border, size)?;
+    if t.texture_target() == TextureTarget::Rect && (level != 0 || border != 0) {
+        return Err(GlError::InvalidValue);
+    }
+    Ok(())
+}
+
 /// What an upload does with the client's pixels once they are checked: it
 /// gets them (`None` for a null pointer) and their format and type.
 type UploadFn = dyn Fn(&mut Context, Option<PixelData<'_>>, (PixelFormat, PixelType)) -> GlResult + Send + Sync;
@@ -417,7 +428,7 @@ unsafe fn tex_image(
 ) {
     let t = image_target(target, Some(dims), Takes::WithProxies);
     let proxy = matches!(t, Ok(TexImageTarget::Proxy(_)));
-    let pre = t.and_then(|_| image_args(level, border, size));
+    let pre = t.and_then(|t| target_args(t, level, border, size));
     // The internal format is checked after the pixels' format and type.
     let f: Arc<UploadFn> = Arc::new(move |gl, data, (format, ty)| {
         let internal = internal_format(internal)?;
@@ -444,7 +455,7 @@ unsafe fn tex_sub_image(
     pixels: *const c_void,
 ) {
     let t = image_target(target, Some(dims), Takes::Images);
-    let pre = t.and_then(|_| image_args(level, 0, size));
+    let pre = t.and_then(|t| target_args(t, level, 0, size));
     let f: Arc<UploadFn> = Arc::new(move |gl, data, format_type| match data {
         Some(data) => gl.tex_sub_image(t?, level, offset, size, data),
         None => gl.tex_sub_image_errors(t?, level, offset, size, format_type),
@@ -458,7 +469,7 @@ fn copy_tex_image(dims: u32, target: GLenum, level: i32, internal: GLenum, xy: [
     checked(move |gl| {
         outside(gl)?;
         let t = image_target(target, Some(dims), Takes::Images)?;
-        image_args(level, border, [size[0], size[1], 1])?;
+        target_args(t, level, border, [size[0], size[1], 1])?;
         // Unknown internal formats are GL_INVALID_ENUM here (Mesa's copytexture_error_check).
         let internal = InternalFormat::from_gl(internal).ok_or(GlError::InvalidEnum)?;
         gl.copy_tex_image(t, level, internal, xy, size, border)
@@ -470,7 +481,7 @@ fn copy_tex_sub_image(dims: u32, target: GLenum, level: i32, offset: [i32; 3], x
     checked(move |gl| {
         outside(gl)?;
         let t = image_target(target, Some(dims), Takes::Images)?;
-        image_args(level, 0, [size[0], size[1], 1])?;
+        target_args(t, level, 0, [size[0], size[1], 1])?;
         gl.copy_tex_sub_image(t, level, offset, xy, size)
     })
 }
@@ -828,6 +839,7 @@ pub(super) fn value(os: &GlState, gl: &Context, pname: GLenum) -> Option<Val> {
         GL_MAX_TEXTURE_UNITS => one(MAX_UNITS as i64),
         GL_MAX_TEXTURE_SIZE | GL_MAX_CUBE_MAP_TEXTURE_SIZE => one(MAX_SIZE.into()),
         GL_MAX_3D_TEXTURE_SIZE => one(MAX_3D_SIZE.into()),
+        GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB => one(MAX_RECTANGLE_TEXTURE_SIZE.into()),
         // llvmpipe's PIPE_CAPF_MAX_TEXTURE_LOD_BIAS.
         GL_MAX_TEXTURE_LOD_BIAS => Val::F(vec![16.0]),
         GL_NUM_COMPRESSED_TEXTURE_FORMATS => one(0),
@@ -841,9 +853,14 @@ pub(super) fn value(os: &GlState, gl: &Context, pname: GLenum) -> Option<Val> {
 }
 
 /// Every texture target with its `glEnable` and binding enumerants.
-pub(super) const TARGETS: [(TextureTarget, GLenum, GLenum); 4] = [
+pub(super) const TARGETS: [(TextureTarget, GLenum, GLenum); crate::gl_state::TEXTURE_TARGETS] = [
     (TextureTarget::D1, GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D),
     (TextureTarget::D2, GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D),
     (TextureTarget::D3, GL_TEXTURE_3D, GL_TEXTURE_BINDING_3D),
     (TextureTarget::Cube, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP),
+    (
+        TextureTarget::Rect,
+        GL_TEXTURE_RECTANGLE_ARB,
+        GL_TEXTURE_BINDING_RECTANGLE_ARB,
+    ),
 ];
