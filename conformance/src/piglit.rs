@@ -249,7 +249,7 @@ mod tests {
     fn every_note_names_a_gl1x_test_and_a_known_kind() {
         let l = llvmpipe(LLVMPIPE_TSV);
         let n = notes(NOTES_TSV);
-        assert_eq!(n.len(), 12);
+        assert_eq!(n.len(), 11);
         for (test, (kind, _)) in &n {
             assert!(l.contains_key(test), "{test}");
             assert!(kind == "excluded" || kind == "surfaceless-abort", "{kind}");
