@@ -7,7 +7,10 @@
 //! on the calling thread; `ps -L` shows `llvmpipe-0` busy beside the client
 //! with `LP_NUM_THREADS=1`; docs/llvmpipe-facts.md). `SOFTGL_THREADS=N`
 //! runs tiles on N threads the same way: a background flush on a pool of
-//! N - 1 threads (one at least) while the caller records, and the flush
+//! N - 1 threads (one at least) while the caller records, on N once the
+//! caller waits for it ([`Background::join`], `scene::helped`: with two
+//! threads the waiting caller's core stayed idle, and MuJoCo's light
+//! passes, flushed in the background, ran on one thread), and the flush
 //! that ends a frame on N threads, the caller among them, while it waits.
 //! A frame of many small primitives is mostly front end (vertex work,
 //! set-up, binning: two thirds of `fill.c lit16`), which before ran alone
