@@ -831,7 +831,7 @@ fn helped<'t>(
     }
     let mut results = results.into_inner().unwrap_or_else(PoisonError::into_inner);
     results.sort_by_key(|(ty, _)| *ty);
-    results.into_iter().map(|(_, r)| r).collect()
+    results.into_iter().try_for_each(|(_, r)| r)
 }
 
 /// A triangle's record being made ([`RECORD`] words).
