@@ -667,12 +667,18 @@ impl Context {
     pub(crate) fn finish_scene(&mut self) {
         // The other samples are out of `fb` while it may go to a flush.
         let mut samples = std::mem::take(&mut self.fb.samples);
-        let before = self.background.join(&mut self.fb);
-        let mut r = before.and(self.scene.flush(&mut self.fb, self.threads));
-        for (lane, fb) in self.lanes.iter_mut().zip(&mut samples) {
-            let before = lane.background.join(fb);
-            r = r.and(before).and(lane.scene.flush(fb, self.threads));
+        // Every sample's flush in flight takes all the threads, then the
+        // samples' scenes are flushed together (`Scene::flush_all`).
+        for lane in self.lanes.iter().take(samples.len()) {
+            lane.background.hurry();
         }
+        let mut r = self.background.join(&mut self.fb);
+        for (lane, fb) in self.lanes.iter_mut().zip(&mut samples) {
+            r = r.and(lane.background.join(fb));
+        }
+        let mut jobs = vec![(&mut self.scene, &mut self.fb)];
+        jobs.extend(self.lanes.iter_mut().map(|l| &mut l.scene).zip(samples.iter_mut()));
+        r = r.and(Scene::flush_all(jobs, self.threads));
         self.fb.samples = samples;
         if let Err(_e) = r {
             self.error.get_or_insert(GlError::InvalidOperation);

@@ -1994,7 +1994,10 @@ fn blit(
     } else {
         (d[3], d[1], s[3], s[1])
     };
-    if dx0 == dx1 || dy0 == dy1 || s[0] == s[2] || s[1] == s[3] {
+    // Nothing to copy (a resolve's colour went `resolve_color_into`): the
+    // pixel loop below ran empty over the rectangle, 2.4 M instructions a
+    // 320×240 MuJoCo frame.
+    if dx0 == dx1 || dy0 == dy1 || s[0] == s[2] || s[1] == s[3] || !(color || depth || stencil) {
         return;
     }
     let ax = Axis::new(dx0, dx1, sxa, sxb, from.width());
@@ -2007,6 +2010,15 @@ fn blit(
     });
     if out.is_empty() {
         return;
+    }
+    // Depth and stencil of a blit that moves pixels one for one: rows
+    // copied (MuJoCo's depth mode blits its 320×240 depth every frame,
+    // ~60 instructions a pixel through `depth_at` and `Axis::nearest`).
+    if !color {
+        if let Some(u) = unscaled(from, to, s, d, clip) {
+            copy_test_rows(from, to, u.moved, depth, stencil);
+            return;
+        }
     }
     // 8-bit channels only: their `pixel` and `pack` round-trip the bytes
     // (RGB565's expansion to 8 bits and back is not checked here).
@@ -2103,6 +2115,45 @@ fn blit(
                 if let (Some(v), Some(ss)) = (from.stencil_at(nx, ny), t.stencil_mut()) {
                     ss[i] = v;
                 }
+            }
+        }
+    }
+}
+
+/// Copies the depth (when `depth`) and stencil (when `stencil`) of `r`,
+/// inside both framebuffers, from `from` to the same pixels of `to`: an
+/// unscaled [`blit`]'s (the formats are the same: the caller checked).
+fn copy_test_rows(from: &Framebuffer, to: &mut Framebuffer, r: Rect, depth: bool, stencil: bool) {
+    use softgl_jit::DepthTarget;
+    let r = r.intersect(from.bounds()).intersect(to.bounds());
+    if r.is_empty() {
+        return;
+    }
+    let n = (r.x1 - r.x0) as usize;
+    let (fw, tw) = (from.width() as usize, to.width() as usize);
+    let rows = |w: usize| (r.y0..r.y1).map(move |y| y as usize * w + r.x0 as usize);
+    let mut t = to.target();
+    if depth {
+        match (from.depth_buffer(), t.depth_mut()) {
+            (Some(DepthBuffer::D16(a)), Some(DepthTarget::D16(b))) => {
+                for (i, o) in rows(fw).zip(rows(tw)) {
+                    b[o..o + n].copy_from_slice(&a[i..i + n]);
+                }
+            }
+            (Some(DepthBuffer::D24(a)), Some(DepthTarget::D24(b)))
+            | (Some(DepthBuffer::D32(a)), Some(DepthTarget::D32(b)))
+            | (Some(DepthBuffer::D32F(a)), Some(DepthTarget::D32F(b))) => {
+                for (i, o) in rows(fw).zip(rows(tw)) {
+                    b[o..o + n].copy_from_slice(&a[i..i + n]);
+                }
+            }
+            _ => {}
+        }
+    }
+    if stencil {
+        if let (Some(a), Some(b)) = (from.stencil_buffer(), t.stencil_mut()) {
+            for (i, o) in rows(fw).zip(rows(tw)) {
+                b[o..o + n].copy_from_slice(&a[i..i + n]);
             }
         }
     }

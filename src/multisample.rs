@@ -491,16 +491,27 @@ impl Framebuffer {
     }
 }
 
+/// `c · f32(1/255)` for each byte `c` (`lp_build_unsigned_norm_to_float`),
+/// made once at compile time: [`resolve_row_4x8`] made it at each row,
+/// ~800 instructions a row.
+static UNORM8: [f32; 256] = {
+    let to_float = (1.0f64 / 255.0) as f32;
+    let mut t = [0.0f32; 256];
+    let mut c = 0;
+    while c < 256 {
+        t[c] = c as f32 * to_float;
+        c += 1;
+    }
+    t
+};
+
 /// [`resolve_value`] of four samples of an 8-bit-channel format, byte by
 /// byte over rows (a 640×480 resolve took 77 ms a pixel at a time): each
 /// byte `c` as `c · f32(1/255)` from a table, summed in sample order, times
 /// 0.25, `rint(v · 255)`. Four equal bytes give that byte: the sum of four
 /// equal values is within a few ulps of `4v`, far from a half.
 fn resolve_row_4x8(dst: &mut [u8], src: [&[u8]; 4]) {
-    let unorm: [f32; 256] = {
-        let to_float = (1.0f64 / 255.0) as f32;
-        std::array::from_fn(|c| c as f32 * to_float)
-    };
+    let unorm = &UNORM8;
     let byte = |p: u8, q: u8, r: u8, s: u8| {
         if p == q && q == r && r == s {
             p

@@ -596,3 +596,61 @@ fn the_window_buffers_bits_whatever_is_bound() {
     let gl = Context::new(desc).unwrap();
     assert_eq!(both(&gl), [Some([5, 6, 5, 0, 0, 0]), Some([0, 0, 0, 0, 16, 0]), None]);
 }
+
+/// An unscaled depth and stencil blit copies rows (`copy_test_rows`): the
+/// pixels of the scissored destination box take the source's, and the
+/// others keep their own, as the pixel-by-pixel path left them.
+#[test]
+fn an_unscaled_depth_and_stencil_blit_copies_the_scissored_box() {
+    let mut gl = context(4, 4);
+    let (w, h) = (9u32, 7u32);
+    let src = rb_fbo(&mut gl, w as i32, h as i32);
+    gl.viewport(0, 0, w as i32, h as i32).unwrap();
+    gl.clear_depth(0.25).unwrap();
+    gl.clear_stencil(7).unwrap();
+    gl.clear(ClearMask::ALL).unwrap();
+    // A step in the source's depth and stencil: its right half.
+    gl.enable(Capability::ScissorTest).unwrap();
+    gl.scissor(4, 0, 5, 7).unwrap();
+    gl.clear_depth(0.75).unwrap();
+    gl.clear_stencil(9).unwrap();
+    gl.clear(ClearMask::ALL).unwrap();
+    gl.disable(Capability::ScissorTest).unwrap();
+    let dst = rb_fbo(&mut gl, w as i32, h as i32);
+    gl.clear_depth(1.0).unwrap();
+    gl.clear_stencil(1).unwrap();
+    gl.clear(ClearMask::ALL).unwrap();
+    gl.bind_framebuffer(T::Read, src).unwrap();
+    gl.bind_framebuffer(T::Draw, dst).unwrap();
+    gl.enable(Capability::ScissorTest).unwrap();
+    gl.scissor(2, 1, 5, 4).unwrap();
+    let mask = BlitMask {
+        color: false,
+        depth: true,
+        stencil: true,
+    };
+    let all = [0, 0, w as i32, h as i32];
+    gl.blit_framebuffer(all, all, mask, BlitFilter::Nearest).unwrap();
+    gl.disable(Capability::ScissorTest).unwrap();
+    let read = |gl: &mut Context, fb: u32| {
+        gl.bind_framebuffer(T::Read, fb).unwrap();
+        gl.with_read_framebuffer(false, |f| {
+            (0..h)
+                .flat_map(|y| (0..w).map(move |x| (x, y)))
+                .map(|(x, y)| (f.depth_at(x, y), f.stencil_at(x, y)))
+                .collect::<Vec<_>>()
+        })
+        .unwrap()
+    };
+    let (from, to) = (read(&mut gl, src), read(&mut gl, dst));
+    let far = to[0];
+    for y in 0..h {
+        for x in 0..w {
+            let i = (y * w + x) as usize;
+            let inside = (2..7).contains(&x) && (1..5).contains(&y);
+            assert_eq!(to[i], if inside { from[i] } else { far }, "({x}, {y})");
+        }
+    }
+    assert_ne!(from[0], from[8], "the source has its step");
+    assert_ne!(from[0], far);
+}

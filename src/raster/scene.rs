@@ -44,8 +44,8 @@ use softgl_jit::{
 };
 use std::cell::OnceCell;
 use std::collections::HashSet;
-use std::sync::atomic::AtomicU64;
-use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::{Arc, Condvar, Mutex, PoisonError};
 
 /// Side of a tile, in pixels.
 pub const TILE: u32 = 64;
@@ -318,7 +318,17 @@ impl Scene {
             self.height = height;
             self.tiles_x = width.div_ceil(TILE).max(1);
             let tiles = self.tiles_x as usize * height.div_ceil(TILE).max(1) as usize;
-            self.bins = vec![Vec::new(); tiles];
+            // The bins keep their room across sizes (the tiles past this
+            // size's stay empty): MuJoCo's frame draws into its 640×480
+            // object and its 4096² shadow map in turn, and the map's 4096
+            // bins were made again and grown push by push at every pass
+            // (`bin_tiles`' `grow_one`, 4.8 M instructions a 320×240 frame).
+            for b in &mut self.bins {
+                b.clear();
+            }
+            if self.bins.len() < tiles {
+                self.bins.resize_with(tiles, Vec::new);
+            }
         }
     }
 
@@ -425,11 +435,24 @@ impl Scene {
     /// Runs every tile into `fb` on `threads` threads and empties the scene.
     /// Returns the first error of a fragment stage (in tile order).
     pub fn flush(&mut self, fb: &mut Framebuffer, threads: usize) -> Result<(), FragmentError> {
+        self.flush_helped(fb, threads, None)
+    }
+
+    /// [`Scene::flush`] on a pool thread in the background
+    /// (`raster/background.rs`): the bands run on `threads - 1` threads
+    /// (this one among them) until `help` is set (the caller waits for the
+    /// flush), then on `threads`.
+    pub(crate) fn flush_helped(
+        &mut self,
+        fb: &mut Framebuffer,
+        threads: usize,
+        help: Option<&AtomicBool>,
+    ) -> Result<(), FragmentError> {
         self.settle();
         if self.is_empty() {
             return Ok(());
         }
-        let r = self.run(fb, threads);
+        let r = self.run(fb, threads, help);
         self.peak = self.peak.max(self.bytes);
         self.flushes += 1;
         self.draws.clear();
@@ -446,14 +469,32 @@ impl Scene {
         self.clears.clear();
         self.bitmaps.clear();
         self.images.clear();
-        for b in &mut self.bins {
+        // This size's tiles (those past it are empty: `fit`).
+        let tiles = self.tiles_x as usize * self.height.div_ceil(TILE).max(1) as usize;
+        for b in self.bins.iter_mut().take(tiles) {
             b.clear();
         }
         self.bytes = 0;
         r
     }
 
-    fn run(&self, fb: &mut Framebuffer, threads: usize) -> Result<(), FragmentError> {
+    /// [`Scene::flush`]es each scene into its framebuffer, all at once on
+    /// `threads` threads (each scene's bands too): the four scenes of a 4×
+    /// multisampled framebuffer (one a sample, `multisample.rs`), flushed
+    /// one after the other, each ended on the slowest of its few bands
+    /// (a 320×240 frame has four) while the other thread waited. The
+    /// first error, in `jobs`' order.
+    pub fn flush_all(jobs: Vec<(&mut Scene, &mut Framebuffer)>, threads: usize) -> Result<(), FragmentError> {
+        let busy = jobs.iter().filter(|(s, _)| !s.is_empty()).count();
+        let results = if threads <= 1 || busy <= 1 {
+            jobs.into_iter().map(|(s, fb)| s.flush(fb, threads)).collect()
+        } else {
+            super::pool::run(threads, jobs, |(s, fb)| s.flush(fb, threads))
+        };
+        results.into_iter().fold(Ok(()), Result::and)
+    }
+
+    fn run(&self, fb: &mut Framebuffer, threads: usize, help: Option<&AtomicBool>) -> Result<(), FragmentError> {
         debug_assert_eq!((fb.width(), fb.height()), (self.width, self.height));
         let plans: Vec<TexturePlan<'_>> = self.draws.iter().map(|d| d.textures.plan()).collect();
         let sets: Vec<TextureSet<'_>> = plans.iter().map(TexturePlan::set).collect();
@@ -484,6 +525,9 @@ impl Scene {
             .filter(|&(ty, _)| busy(ty))
             .collect();
         let run_band = |(ty, mut band): (usize, Target<'_>)| self.run_band(ty as u32, &mut band, &stages);
+        if let Some(help) = help.filter(|_| threads > 1 && bands.len() > 1) {
+            return helped(threads, bands, help, run_band);
+        }
         let results: Vec<Result<(), FragmentError>> = if threads <= 1 || bands.len() <= 1 {
             bands.into_iter().map(run_band).collect()
         } else {
@@ -712,6 +756,82 @@ impl Scene {
         }
         stage.finish()
     }
+}
+
+/// Runs `bands` (band index, rows) through `run_band` on the calling pool
+/// thread and `threads - 2` more of [`super::pool::pool`]`(threads)`, one
+/// more once `help` is set: a background flush keeps a core for the
+/// caller while it records, and takes it back when the caller waits. With
+/// two threads a background flush ran on one thread from start to end, the
+/// caller waiting idle beside it: MuJoCo's light passes flush in the
+/// background (their textures pass `TEXTURE_BOUND`), and `perf` of the
+/// 2-thread frame showed that one thread with 41% of the samples, the two
+/// threads of the flushes made at once 25% together. Bands are taken in
+/// order from a shared queue; the first error in band order is returned,
+/// as [`Scene::run`]'s.
+fn helped<'t>(
+    threads: usize,
+    bands: Vec<(usize, Target<'t>)>,
+    help: &AtomicBool,
+    run_band: impl Fn((usize, Target<'t>)) -> Result<(), FragmentError> + Sync,
+) -> Result<(), FragmentError> {
+    let n = bands.len();
+    let queue = Mutex::new(bands.into_iter());
+    let results: Mutex<Vec<(usize, Result<(), FragmentError>)>> = Mutex::new(Vec::with_capacity(n));
+    let all_done = Condvar::new();
+    // A band's panic, raised again once every band is accounted for.
+    let panicked = Mutex::new(None);
+    let next = || queue.lock().unwrap_or_else(PoisonError::into_inner).next();
+    let one = |band: (usize, Target<'t>)| {
+        let ty = band.0;
+        let r = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_band(band))) {
+            Ok(r) => r,
+            Err(p) => {
+                panicked.lock().unwrap_or_else(PoisonError::into_inner).get_or_insert(p);
+                Ok(())
+            }
+        };
+        let mut done = results.lock().unwrap_or_else(PoisonError::into_inner);
+        done.push((ty, r));
+        if done.len() == n {
+            all_done.notify_all();
+        }
+    };
+    let work = || {
+        while let Some(band) = next() {
+            one(band);
+        }
+    };
+    match super::pool::pool(threads) {
+        Some(pool) => pool.in_place_scope(|s| {
+            // Helpers beside this thread: `threads - 2` now, one more on help.
+            let mut helpers = 0;
+            let wanted = |helped: bool| if helped { threads - 1 } else { threads - 2 };
+            loop {
+                while helpers < wanted(help.load(Ordering::Acquire)) {
+                    s.spawn(|_| work());
+                    helpers += 1;
+                }
+                let Some(band) = next() else { break };
+                one(band);
+            }
+            // Wait for the helpers' bands here, not in the scope's end:
+            // this thread is a worker of the background pool, and waiting
+            // there it would take that pool's next job (another scene's
+            // flush) before handing this one back.
+            let mut done = results.lock().unwrap_or_else(PoisonError::into_inner);
+            while done.len() < n {
+                done = all_done.wait(done).unwrap_or_else(PoisonError::into_inner);
+            }
+        }),
+        None => work(),
+    }
+    if let Some(p) = panicked.into_inner().unwrap_or_else(PoisonError::into_inner) {
+        std::panic::resume_unwind(p);
+    }
+    let mut results = results.into_inner().unwrap_or_else(PoisonError::into_inner);
+    results.sort_by_key(|(ty, _)| *ty);
+    results.into_iter().try_for_each(|(_, r)| r)
 }
 
 /// A triangle's record being made ([`RECORD`] words).
