@@ -13,7 +13,7 @@ use crate::callout::{texture_group, TexCall, TexView};
 use crate::key::ShadeKey;
 use crate::shade::slot;
 use crate::texture::lod::needs_lod;
-use crate::texture::{CombineFn, CombineKey, CombineSrc, Operand, TexUnitKey, MAX_UNITS};
+use crate::texture::{CombineFn, CombineKey, CombineSrc, Operand, TexUnitKey, TexelFormat, MAX_UNITS};
 use cranelift_codegen::ir::{types, AbiParam, InstBuilder, Signature, StackSlot, StackSlotData, StackSlotKind, Value};
 use std::mem::{offset_of, size_of};
 
@@ -53,6 +53,29 @@ impl Gen<'_> {
             let mut shared = None;
             for (u, unit) in key.tex.iter().enumerate() {
                 if let Some(unit) = unit.as_ref().filter(|t| native_unit(t)) {
+                    if unit.sampler.format == TexelFormat::Depth32F {
+                        // No λ: the lanes' own s, t and r.
+                        let c = match sv.tex_one[u] {
+                            Some(flag) => self.diamond(
+                                flag,
+                                |s| s.plain_depth_coords(g, sv, u),
+                                |s| {
+                                    let points = s.native_points(g, sv, false);
+                                    s.project_depth(sv, u, points[0]).to_vec()
+                                },
+                            ),
+                            None => {
+                                let points = match &shared {
+                                    Some(p) => p,
+                                    None => shared.insert(self.native_points(g, sv, lod)),
+                                };
+                                let lane = points[0];
+                                self.project_depth(sv, u, lane).to_vec()
+                            }
+                        };
+                        samples[u] = Some(self.sample_depth(u, &unit.sampler, view, [c[0], c[1], c[2]]));
+                        continue;
+                    }
                     let quad = needs_lod(&unit.sampler);
                     let c = match sv.tex_one[u] {
                         // w and q/w exactly 1 over the span: s and t are the
@@ -131,6 +154,27 @@ impl Gen<'_> {
         pts.into_iter()
             .flat_map(|(x, y)| [0, 1].map(|k| self.plane(planes, slot::tex(u) + k, x, y)))
             .collect()
+    }
+
+    /// Unit `u`'s s, t and r planes at the lanes: what
+    /// [`Self::project_depth`] makes when w and q/w are exactly 1.
+    fn plain_depth_coords(&mut self, g: &Group, sv: &SpanValues, u: usize) -> Vec<Value> {
+        let (planes, pts) = self.lane_points(g, sv, false);
+        let (x, y) = pts[0];
+        (0..3).map(|k| self.plane(planes, slot::tex(u) + k, x, y)).collect()
+    }
+
+    /// Unit `u`'s s, t and r at the lanes' `point`, projected (`c·(1/q)`,
+    /// each `c` its plane's value times w: `crate::texture::QuadSample::new`).
+    fn project_depth(&mut self, sv: &SpanValues, u: usize, (x, y, w): (Value, Value, Value)) -> [Value; 3] {
+        let (planes, _, _) = sv.planes.expect("loaded for keys with a shading stage");
+        let c = [0, 1, 2, 3].map(|k| {
+            let v = self.plane(planes, slot::tex(u) + k, x, y);
+            self.b.ins().fmul(v, w)
+        });
+        let one = self.fconst(1.0);
+        let inv = self.b.ins().fdiv(one, c[3]);
+        [0, 1, 2].map(|k| self.b.ins().fmul(c[k], inv))
     }
 
     /// Unit `u`'s s and t at `points`, projected (`s·(1/q)`, Mesa's TXP).
