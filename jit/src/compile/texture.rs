@@ -207,8 +207,8 @@ impl Gen<'_> {
     }
 
     /// Calls the reference sampler for the units of `units` at the group's
-    /// lanes (it evaluates their coordinates from the planes as the
-    /// interpreter does); their samples.
+    /// lanes, with their coordinates at the lanes' quads evaluated here as
+    /// the interpreter does (`crate::shade::quad_coords`); their samples.
     fn call_sampler(
         &mut self,
         g: &Group,
@@ -221,7 +221,6 @@ impl Gen<'_> {
         let store = |s: &mut Self, v: Value, off: usize| s.b.ins().store(mem(), v, args, off as i32);
         store(self, px, offset_of!(TexCall, px));
         store(self, row, offset_of!(TexCall, row));
-        store(self, planes, offset_of!(TexCall, planes));
         store(self, view, offset_of!(TexCall, view));
         let live = match g.live {
             Some(live) => self.b.ins().vhigh_bits(types::I32, live),
@@ -230,6 +229,27 @@ impl Gen<'_> {
         store(self, live, offset_of!(TexCall, live));
         let mask = self.b.ins().iconst(types::I32, i64::from(units));
         store(self, mask, offset_of!(TexCall, units));
+        // Each unit's coordinates at the pixels of each lane's quad
+        // (`TexCall::coords`), `crate::shade::tex_coords` with the
+        // instruction: the callout's own took libm `fmaf` calls.
+        let one = self.fconst(1.0);
+        let (qx, _) = self.even(px);
+        let (qy, _) = self.even(row);
+        let qx1 = self.b.ins().fadd(qx, one);
+        let qy1 = self.b.ins().fadd(qy, one);
+        for (k, (x, y)) in [(qx, qy), (qx1, qy), (qx, qy1), (qx1, qy1)].into_iter().enumerate() {
+            let iw = self.plane(planes, slot::INV_W, x, y);
+            let one = self.fconst(1.0);
+            let w = self.b.ins().fdiv(one, iw);
+            for u in (0..MAX_UNITS).filter(|u| units & (1 << u) != 0) {
+                for c in 0..4 {
+                    let v = self.plane(planes, slot::tex(u) + c, x, y);
+                    let v = self.b.ins().fmul(v, w);
+                    let off = offset_of!(TexCall, coords) + ((u * 4 + k) * 4 + c) * 16;
+                    store(self, v, off);
+                }
+            }
+        }
         let mut sig = Signature::new(self.b.func.signature.call_conv);
         sig.params.push(AbiParam::new(self.ptr));
         let sig = self.b.import_signature(sig);
