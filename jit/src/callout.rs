@@ -7,7 +7,6 @@
 //! built by the specialist from the [`TextureSet`] at the call boundary and
 //! valid for the whole call; everything in it is read-only.
 
-use crate::shade::Planes;
 use crate::texture::lod::LodState;
 use crate::texture::{QuadSample, SamplerStatics, TexUnitKey, TextureRef, TextureSet, MAX_LEVELS, MAX_UNITS};
 use std::marker::PhantomData;
@@ -160,9 +159,9 @@ impl TexView<'_> {
 }
 
 /// What compiled code hands [`texture_group`] for one group of four lanes:
-/// the units to sample, the lanes' pixels and their primitive's planes (the
-/// reference computes the coordinates at the lanes' quads from them as the
-/// interpreter does, `crate::shade::sample_unit`); the samples come back in
+/// the units to sample, the lanes' pixels and each unit's coordinates at
+/// the pixels of the lanes' quads (what the interpreter computes from the
+/// planes, `crate::shade::sample_unit`); the samples come back in
 /// `samples`.
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug)]
@@ -174,8 +173,11 @@ pub struct TexCall {
     /// `samples[u][channel][lane]`: unit `u`'s filtered RGBA, for the units
     /// of `units` and the lanes of `live` (the rest is left as it is).
     pub samples: [[[f32; 4]; 4]; MAX_UNITS],
-    /// The planes of the group's primitive (`SpanPlanes::planes`).
-    pub planes: *const Planes,
+    /// `coords[u][k][c][i]`: unit `u`'s coordinate `c` (s, t, r, q before
+    /// projection: `crate::shade::tex_coords`) at pixel `k` (top-left,
+    /// top-right, bottom-left, bottom-right: `crate::shade::quad_coords`)
+    /// of lane `i`'s quad, for the units of `units`.
+    pub coords: [[[[f32; 4]; 4]; 4]; MAX_UNITS],
     /// The [`TexView`] of the call (`SpanCall::tex`).
     pub view: *const TexView<'static>,
     /// Bit `i`: lane `i` is live.
@@ -187,14 +189,13 @@ pub struct TexCall {
 /// The samples of a group: for each unit of `call.units` the key enables
 /// and each live lane, the reference sampler at the lane's quad
 /// (`crate::shade::sample_unit`), or 0 when the set has no texture for the
-/// unit (as `crate::shade::texture` leaves it). Does nothing when `call`,
-/// its view or its planes are null.
+/// unit (as `crate::shade::texture` leaves it). Does nothing when `call`
+/// or its view is null.
 ///
 /// # Safety
 /// `call` is null or points to a `TexCall` that nothing else accesses during
 /// the call, whose `view` is null or the `TexView` the specialist built for
-/// the running call (its referents outlive the call), and whose `planes` is
-/// null or the running span's planes.
+/// the running call (its referents outlive the call).
 pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
     // SAFETY: by the contract above `call` is null or a valid, exclusive
     // `TexCall` (a stack slot of the calling group).
@@ -206,11 +207,6 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
     let Some(view) = (unsafe { call.view.as_ref() }) else {
         return;
     };
-    // SAFETY: `planes` is null or `SpanPlanes::planes`, the span's planes, which
-    // `Specialist::run_splatted` keeps borrowed across the call.
-    let Some(planes) = (unsafe { call.planes.as_ref() }) else {
-        return;
-    };
     // SAFETY: `TexView::new` made `set` from a reference that outlives the
     // view (its `'a`) to a `TextureSet`.
     let set = unsafe { &*view.set.cast::<TextureSet<'_>>() };
@@ -218,14 +214,12 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
         let Some(key) = key.as_ref().filter(|_| call.units & (1 << u) != 0) else {
             continue;
         };
-        // The lanes of a group are usually one quad's pixels: its coordinates
-        // (16 perspective divides and 32 fused multiply-adds) are computed once
-        // for them, not once per lane (the same values: a pure function of the
-        // planes and the quad's origin). MuJoCo's shadowed frame (texgen'd
-        // shadow-map lookups; osmesa/bench/mujoco_frame.py, 320x240, 1 thread,
+        // The lanes of a group are two quads' pixels: a quad's projection, λ
+        // and the filter's set-up (`crate::texture::QuadSample`, the same
+        // bits as `sample_quad`) are made once for its lanes, not once per
+        // lane. MuJoCo's shadowed frame (texgen'd shadow-map lookups, then
+        // through here; osmesa/bench/mujoco_frame.py, 320x240, 1 thread,
         // loaded machine): ~1550 to ~1000 ms, `mujoco.sh` s1/l1 3.3x to 2.0x.
-        // So are their projection, λ and the filter's set-up
-        // (`crate::texture::QuadSample`, the same bits as `sample_quad`).
         let Some(tex) = tex.as_ref() else {
             for lane in (0..4).filter(|l| call.live & (1 << l) != 0) {
                 for channel in &mut call.samples[u] {
@@ -234,12 +228,20 @@ pub unsafe extern "C" fn texture_group(call: *mut TexCall) {
             }
             continue;
         };
+        // The generated code evaluated the coordinates at the pixels of each
+        // lane's quad with the instruction (`compile::texture`), the same
+        // values as `quad_coords` here, whose fused multiply-adds are libm
+        // calls (`f32::mul_add` without the target feature: a quad's 20
+        // `Planes::at` took ~600 instructions). The sRGB light pass of
+        // `osmesa/bench/shadow_lookup.c` (320×240, 4×, its checker as sRGB;
+        // callgrind): 4169 to 3739 instructions a sample.
+        let coords = &call.coords[u];
         let mut cached: Option<((u32, u32), QuadSample<'_>)> = None;
         for lane in (0..4).filter(|l| call.live & (1 << l) != 0) {
             let (origin, l) = crate::shade::quad_lane((call.px[lane], call.row[lane]));
             let bits = (origin.0.to_bits(), origin.1.to_bits());
             if cached.as_ref().map(|c| c.0) != Some(bits) {
-                let quad = crate::shade::quad_coords(planes, u, origin);
+                let quad = std::array::from_fn(|k| std::array::from_fn(|c| coords[k][c][lane]));
                 cached = Some((bits, QuadSample::new(key, tex, &quad)));
             }
             let texel = cached.as_ref().map_or([0.0; 4], |(_, q)| q.lane(l));

@@ -857,6 +857,9 @@ struct OwnedTexture {
     max_level: u32,
     lods: [f32; 3],
     border: [f32; 4],
+    /// A float depth texture (`TextureRef::float_depth`): texels beyond
+    /// [0, 1] too, the compare's reference unclamped.
+    float_depth: bool,
 }
 
 impl OwnedTexture {
@@ -883,6 +886,7 @@ impl OwnedTexture {
         let max_level = base_level + rng.below(u64::from(count - base_level)) as u32;
         let faces = if key.target == TexTarget::Cube { 6 } else { 1 };
         let bpp = key.format.bytes_per_texel();
+        let float_depth = key.format == TexelFormat::Depth32F && rng.below(2) == 0;
         let mut levels = Vec::new();
         for l in 0..count {
             let d = dims.map(|s| (s >> l).max(1));
@@ -897,7 +901,10 @@ impl OwnedTexture {
                     TexelFormat::Depth32F => (0..n)
                         .flat_map(|_| {
                             const POOL: [f32; 4] = [0.0, 0.25, 0.5, 1.0];
-                            let v = if rng.below(2) == 0 {
+                            const FLOAT_POOL: [f32; 4] = [-0.5, 1.5, 1e30, f32::NAN];
+                            let v = if float_depth && rng.below(8) == 0 {
+                                FLOAT_POOL[rng.below(4) as usize]
+                            } else if rng.below(2) == 0 {
                                 POOL[rng.below(4) as usize]
                             } else {
                                 rng.below(1 << 24) as f32 / (1 << 24) as f32
@@ -920,6 +927,7 @@ impl OwnedTexture {
             max_level,
             lods: [a.min(b), a.max(b), bias],
             border: [0, 1, 2, 3].map(|_| f32::from(rng.byte()) / 255.0),
+            float_depth,
         }
     }
 
@@ -944,7 +952,7 @@ impl OwnedTexture {
             max_lod: self.lods[1],
             lod_bias: self.lods[2],
             border: self.border,
-            float_depth: false,
+            float_depth: self.float_depth,
         }
     }
 }
@@ -1052,6 +1060,37 @@ proptest! {
         prop_assert!(tex.iter().flatten().all(softgl_jit::compile::native_unit));
         textured_case(key, shade, tex, u, (seed, Tier::Optimized))?;
     }
+
+    /// Depth textures the specialist samples natively (2D, NEAREST, REPEAT,
+    /// CLAMP_TO_EDGE or CLAMP, every compare function or none, every depth
+    /// mode, unorm and float depth), alone or after a natively sampled RGBA8
+    /// unit (MuJoCo's light passes: the floor's texture, then the shadow map).
+    #[test]
+    fn natively_sampled_depth_jit_equals_interpreter(
+        key in key(),
+        shade in shade_key(),
+        units in (prop::option::of(native_unit_key()), native_depth_unit_key()),
+        u in uniforms(),
+        seed in any::<u64>(),
+    ) {
+        let mut tex = [None; MAX_UNITS];
+        (tex[0], tex[1]) = (units.0, Some(units.1));
+        prop_assert!(tex.iter().flatten().all(softgl_jit::compile::native_unit));
+        textured_case(key, shade, tex, u, (seed, Tier::Optimized))?;
+    }
+}
+
+/// A depth unit the specialist samples natively.
+fn native_depth_unit_key() -> impl Strategy<Value = TexUnitKey> {
+    let wrap = || select(&[Wrap::Repeat, Wrap::ClampToEdge, Wrap::Clamp][..]);
+    (tex_unit_key(), [wrap(), wrap()], prop::option::of(compare())).prop_map(|(mut unit, [s, t], compare)| {
+        let k = &mut unit.sampler;
+        (k.target, k.format, k.compare) = (TexTarget::D2, TexelFormat::Depth32F, compare);
+        (k.min, k.mip, k.mag) = (Filter::Nearest, MipFilter::None, Filter::Nearest);
+        k.wrap = [s, t, Wrap::Repeat];
+        unit.base = BaseFormat::Depth;
+        unit
+    })
 }
 
 /// Random buffers, spans over them and planes from `make_planes` (one to

@@ -13,7 +13,7 @@ use crate::callout::{texture_group, TexCall, TexView};
 use crate::key::ShadeKey;
 use crate::shade::slot;
 use crate::texture::lod::needs_lod;
-use crate::texture::{CombineFn, CombineKey, CombineSrc, Operand, TexUnitKey, MAX_UNITS};
+use crate::texture::{CombineFn, CombineKey, CombineSrc, Operand, TexUnitKey, TexelFormat, MAX_UNITS};
 use cranelift_codegen::ir::{types, AbiParam, InstBuilder, Signature, StackSlot, StackSlotData, StackSlotKind, Value};
 use std::mem::{offset_of, size_of};
 
@@ -53,6 +53,29 @@ impl Gen<'_> {
             let mut shared = None;
             for (u, unit) in key.tex.iter().enumerate() {
                 if let Some(unit) = unit.as_ref().filter(|t| native_unit(t)) {
+                    if unit.sampler.format == TexelFormat::Depth32F {
+                        // No λ: the lanes' own s, t and r.
+                        let c = match sv.tex_one[u] {
+                            Some(flag) => self.diamond(
+                                flag,
+                                |s| s.plain_depth_coords(g, sv, u),
+                                |s| {
+                                    let points = s.native_points(g, sv, false);
+                                    s.project_depth(sv, u, points[0]).to_vec()
+                                },
+                            ),
+                            None => {
+                                let points = match &shared {
+                                    Some(p) => p,
+                                    None => shared.insert(self.native_points(g, sv, lod)),
+                                };
+                                let lane = points[0];
+                                self.project_depth(sv, u, lane).to_vec()
+                            }
+                        };
+                        samples[u] = Some(self.sample_depth(u, &unit.sampler, view, [c[0], c[1], c[2]]));
+                        continue;
+                    }
                     let quad = needs_lod(&unit.sampler);
                     let c = match sv.tex_one[u] {
                         // w and q/w exactly 1 over the span: s and t are the
@@ -133,6 +156,27 @@ impl Gen<'_> {
             .collect()
     }
 
+    /// Unit `u`'s s, t and r planes at the lanes: what
+    /// [`Self::project_depth`] makes when w and q/w are exactly 1.
+    fn plain_depth_coords(&mut self, g: &Group, sv: &SpanValues, u: usize) -> Vec<Value> {
+        let (planes, pts) = self.lane_points(g, sv, false);
+        let (x, y) = pts[0];
+        (0..3).map(|k| self.plane(planes, slot::tex(u) + k, x, y)).collect()
+    }
+
+    /// Unit `u`'s s, t and r at the lanes' `point`, projected (`c·(1/q)`,
+    /// each `c` its plane's value times w: `crate::texture::QuadSample::new`).
+    fn project_depth(&mut self, sv: &SpanValues, u: usize, (x, y, w): (Value, Value, Value)) -> [Value; 3] {
+        let (planes, _, _) = sv.planes.expect("loaded for keys with a shading stage");
+        let c = [0, 1, 2, 3].map(|k| {
+            let v = self.plane(planes, slot::tex(u) + k, x, y);
+            self.b.ins().fmul(v, w)
+        });
+        let one = self.fconst(1.0);
+        let inv = self.b.ins().fdiv(one, c[3]);
+        [0, 1, 2].map(|k| self.b.ins().fmul(c[k], inv))
+    }
+
     /// Unit `u`'s s and t at `points`, projected (`s·(1/q)`, Mesa's TXP).
     fn project(&mut self, sv: &SpanValues, u: usize, points: &[(Value, Value, Value)], quad: bool) -> Projected {
         let (planes, _, _) = sv.planes.expect("loaded for keys with a shading stage");
@@ -163,8 +207,8 @@ impl Gen<'_> {
     }
 
     /// Calls the reference sampler for the units of `units` at the group's
-    /// lanes (it evaluates their coordinates from the planes as the
-    /// interpreter does); their samples.
+    /// lanes, with their coordinates at the lanes' quads evaluated here as
+    /// the interpreter does (`crate::shade::quad_coords`); their samples.
     fn call_sampler(
         &mut self,
         g: &Group,
@@ -177,7 +221,6 @@ impl Gen<'_> {
         let store = |s: &mut Self, v: Value, off: usize| s.b.ins().store(mem(), v, args, off as i32);
         store(self, px, offset_of!(TexCall, px));
         store(self, row, offset_of!(TexCall, row));
-        store(self, planes, offset_of!(TexCall, planes));
         store(self, view, offset_of!(TexCall, view));
         let live = match g.live {
             Some(live) => self.b.ins().vhigh_bits(types::I32, live),
@@ -186,6 +229,27 @@ impl Gen<'_> {
         store(self, live, offset_of!(TexCall, live));
         let mask = self.b.ins().iconst(types::I32, i64::from(units));
         store(self, mask, offset_of!(TexCall, units));
+        // Each unit's coordinates at the pixels of each lane's quad
+        // (`TexCall::coords`), `crate::shade::tex_coords` with the
+        // instruction: the callout's own took libm `fmaf` calls.
+        let one = self.fconst(1.0);
+        let (qx, _) = self.even(px);
+        let (qy, _) = self.even(row);
+        let qx1 = self.b.ins().fadd(qx, one);
+        let qy1 = self.b.ins().fadd(qy, one);
+        for (k, (x, y)) in [(qx, qy), (qx1, qy), (qx, qy1), (qx1, qy1)].into_iter().enumerate() {
+            let iw = self.plane(planes, slot::INV_W, x, y);
+            let one = self.fconst(1.0);
+            let w = self.b.ins().fdiv(one, iw);
+            for u in (0..MAX_UNITS).filter(|u| units & (1 << u) != 0) {
+                for c in 0..4 {
+                    let v = self.plane(planes, slot::tex(u) + c, x, y);
+                    let v = self.b.ins().fmul(v, w);
+                    let off = offset_of!(TexCall, coords) + ((u * 4 + k) * 4 + c) * 16;
+                    store(self, v, off);
+                }
+            }
+        }
         let mut sig = Signature::new(self.b.func.signature.call_conv);
         sig.params.push(AbiParam::new(self.ptr));
         let sig = self.b.import_signature(sig);

@@ -174,6 +174,9 @@ pub struct SamplerStatics {
     pub apply_min: bool,
     pub apply_max: bool,
     pub bias_non_zero: bool,
+    /// A compared depth texture is float depth ([`TextureRef::float_depth`]:
+    /// the reference is not clamped; llvmpipe's format is static too).
+    pub float_depth: bool,
 }
 
 impl SamplerStatics {
@@ -188,6 +191,7 @@ impl SamplerStatics {
             apply_min: lod.apply_min,
             apply_max: lod.apply_max,
             bias_non_zero: lod.bias != 0.0,
+            float_depth: key.format == TexelFormat::Depth32F && key.compare.is_some() && tex.float_depth,
         }
     }
 
@@ -214,7 +218,8 @@ pub fn with_statics(units: &[Option<TexUnitKey>; MAX_UNITS], set: &TextureSet<'_
 
 impl SamplerKey {
     /// This key with the statics of `tex` where the native sampler uses
-    /// them (2D and rectangle RGBA8 REPEAT/CLAMP_TO_EDGE, `crate::compile::native_unit`),
+    /// them (2D and rectangle RGBA8 REPEAT/CLAMP_TO_EDGE, 2D depth NEAREST:
+    /// `crate::compile::native_unit`),
     /// the default elsewhere (so that those keys do not multiply).
     pub fn with_statics(self, tex: &TextureRef<'_>) -> SamplerKey {
         let statics = if crate::compile::native_sampler(&self) {
