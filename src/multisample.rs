@@ -14,9 +14,9 @@
 use crate::error::{GlError, GlResult};
 use crate::framebuffer::{rint_nonnegative, DepthBuffer, Framebuffer, FramebufferDesc};
 use crate::geometry::varying::Varyings;
-use crate::raster::scene::Binner;
+use crate::raster::scene::{Binner, DrawState};
 use crate::raster::{PrimSink, RasterParams, RasterVertex};
-use softgl_jit::{pixel, ColorFormat, DepthTarget};
+use softgl_jit::{pixel, ColorFormat, DepthTarget, FragmentKey, ShadeKey};
 
 /// `GL_MAX_SAMPLES`: llvmpipe supports 1 and 4 samples (`lp_screen.c`,
 /// `llvmpipe_is_format_supported`).
@@ -155,6 +155,130 @@ impl PrimSink for Fan<'_> {
                 (None, Some(_)) => {}
                 (_, None) => sink.point(v, size, params),
             }
+        }
+    }
+}
+
+/// Whether the draw of `key` into a 4× framebuffer with `GL_MULTISAMPLE`
+/// on (and no polygon stipple) shares its shading between the samples
+/// ([`shared_halves`]): a key that shades its colour and writes it, with
+/// no per-sample alpha-to-coverage threshold, into an 8-bit format.
+pub(crate) fn shares_shading(key: &FragmentKey) -> bool {
+    key.shade.is_some_and(|s| s.color && s.coverage.quarters.is_none())
+        && !key.color_format.is_deep()
+        && !key.color_mask.writes_nothing(key.color_format)
+}
+
+/// A draw whose samples share its shading, split as llvmpipe runs it
+/// (the fragment shader once a pixel, the per-sample tests and writes
+/// after it): its shading half, the stages up to the alpha test (and
+/// alpha to one) into an RGBA8 target, the fragments that passed marked
+/// by writing 1 into its stencil (the stencil test always passes and
+/// replaces, after the alpha test); and its per-sample half, the stages
+/// after them taking the colour from the span (and depth from each
+/// sample's plane). The bytes are those of the whole key run per sample:
+/// the shading reads no buffer and gives each sample the same colour, and
+/// the unorm8 colour is what the stages after it read either way.
+/// `specialist` gives a key's specialist, if any.
+pub(crate) fn shared_halves(
+    state: &DrawState,
+    mut specialist: impl FnMut(&FragmentKey) -> Option<std::sync::Arc<softgl_jit::Specialist>>,
+) -> Option<(DrawState, DrawState)> {
+    use softgl_jit::{CompareFunc, StencilKey, StencilOp};
+    let key = state.key;
+    let shade = key.shade?;
+    let shade_key = FragmentKey {
+        scissor: key.scissor,
+        alpha_test: key.alpha_test,
+        stencil: Some(StencilKey {
+            func: CompareFunc::Always,
+            fail: StencilOp::Keep,
+            zfail: StencilOp::Keep,
+            zpass: StencilOp::Replace,
+        }),
+        shade: Some(ShadeKey { depth: false, ..shade }),
+        ..FragmentKey::new(ColorFormat::Rgba8, None, true)
+    };
+    let shade_uniforms = softgl_jit::FragmentUniforms {
+        stencil_ref: 1,
+        stencil_value_mask: 0xff,
+        stencil_write_mask: 0xff,
+        ..state.uniforms
+    };
+    let ops_key = FragmentKey {
+        scissor: false,
+        alpha_test: None,
+        shade: shade.depth.then(|| ShadeKey {
+            depth: true,
+            ..ShadeKey::default()
+        }),
+        ..key
+    };
+    let shading = DrawState {
+        key: shade_key,
+        uniforms: shade_uniforms,
+        specialist: specialist(&shade_key),
+        textures: state.textures.clone(),
+        samples: None,
+        polygon_stipple: None,
+        shades_samples: true,
+    };
+    let ops = DrawState {
+        key: ops_key,
+        uniforms: state.uniforms,
+        specialist: specialist(&ops_key),
+        textures: Default::default(),
+        samples: state.samples.clone(),
+        polygon_stipple: None,
+        shades_samples: false,
+    };
+    Some((shading, ops))
+}
+
+/// Hands each primitive of a draw whose samples share the shading to one
+/// scene, for every sample at once ([`Binner::triangle_shared`]): with
+/// `GL_MULTISAMPLE` on, triangles, and lines and points as the rectangles
+/// and squares [`Fan`] gives each sample, covered at each sample kept by
+/// `mask` (`glSampleCoverage`).
+pub(crate) struct SharedFan<'s> {
+    pub(crate) binner: Binner<'s>,
+    pub(crate) at: [SampleAt; 4],
+    pub(crate) mask: u32,
+}
+
+impl SharedFan<'_> {
+    /// Ends the draw: the first error of a flush.
+    pub(crate) fn finish(self) -> Result<(), softgl_jit::FragmentError> {
+        self.binner.finish()
+    }
+
+    fn quad(&mut self, (p, v): &Corners, flat: Option<&Varyings>, params: &RasterParams) {
+        let params = RasterParams {
+            offset: None,
+            ..*params
+        };
+        let (at, mask) = (&self.at, self.mask);
+        let b = &mut self.binner;
+        b.triangle_shared([p[0], p[1], p[2]], [&v[0], &v[1], &v[2]], flat, &params, (at, mask));
+        b.triangle_shared([p[0], p[2], p[3]], [&v[0], &v[2], &v[3]], flat, &params, (at, mask));
+    }
+}
+
+impl PrimSink for SharedFan<'_> {
+    fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
+        let p = crate::raster::Edges::window_points(v, params.height);
+        self.binner.triangle_shared(p, v, flat, params, (&self.at, self.mask));
+    }
+
+    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
+        if let Some(q) = line_rectangle(a, b, width, params) {
+            self.quad(&q, flat, params);
+        }
+    }
+
+    fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
+        if let Some(q) = point_square(v, size, params) {
+            self.quad(&q, None, params);
         }
     }
 }
