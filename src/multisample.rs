@@ -10,13 +10,31 @@
 //! blended with its own colour), so drawing them apart gives the bytes of
 //! drawing them together. [`Framebuffer::resolve`] averages them as
 //! `glBlitFramebuffer` does on llvmpipe.
+//!
+//! The shading of the four samples is then the same computation four times
+//! (interpolation, texturing, texture environment, fog, alpha test), and
+//! for MuJoCo's light passes (two texture units, one a 4096² shadow map
+//! with compare) it was most of the frame. With `GL_MULTISAMPLE` on, a
+//! draw whose key splits ([`shared_halves`], `FragmentKey::split_shading`)
+//! is recorded once for all four samples instead ([`SharedFan`]): each
+//! triangle's four coverages and depth planes in one record of the
+//! context's own scene, which then records (and flushes) for every sample
+//! (`Context::share_samples`; draws that do not split, alpha to coverage,
+//! `GL_MULTISAMPLE` off, polygon stipple, pixel rectangles and bitmaps go
+//! to the lanes as before, the pending draws rasterized first when the
+//! mode changes so that each sample's draws keep their order). A tile runs
+//! such a triangle's shading half once over the pixels any sample covers,
+//! then its per-sample half for each sample over its own covered pixels
+//! among those the shading kept (`raster::scene`, `Scene::run_group`): the
+//! bytes of the per-sample draws (`tests/msaa_shared.rs` draws random
+//! scenes both ways; `jit/tests/contract.rs`, `split_keys_equal_the_whole`).
 
 use crate::error::{GlError, GlResult};
 use crate::framebuffer::{rint_nonnegative, DepthBuffer, Framebuffer, FramebufferDesc};
 use crate::geometry::varying::Varyings;
 use crate::raster::scene::{Binner, DrawState};
 use crate::raster::{PrimSink, RasterParams, RasterVertex};
-use softgl_jit::{pixel, ColorFormat, DepthTarget, FragmentKey, ShadeKey};
+use softgl_jit::{pixel, ColorFormat, DepthTarget, FragmentKey};
 
 /// `GL_MAX_SAMPLES`: llvmpipe supports 1 and 4 samples (`lp_screen.c`,
 /// `llvmpipe_is_format_supported`).
@@ -161,62 +179,31 @@ impl PrimSink for Fan<'_> {
 
 /// Whether the draw of `key` into a 4× framebuffer with `GL_MULTISAMPLE`
 /// on (and no polygon stipple) shares its shading between the samples
-/// ([`shared_halves`]): a key that shades its colour and writes it, with
-/// no per-sample alpha-to-coverage threshold, into an 8-bit format.
+/// ([`shared_halves`]): a key that can be split and writes colour (one
+/// that writes none shades for its alpha test at most, which each
+/// sample's specialist does cheaply without the colour).
 pub(crate) fn shares_shading(key: &FragmentKey) -> bool {
-    key.shade.is_some_and(|s| s.color && s.coverage.quarters.is_none())
-        && !key.color_format.is_deep()
-        && !key.color_mask.writes_nothing(key.color_format)
+    key.split_shading().is_some() && !key.color_mask.writes_nothing(key.color_format)
 }
 
-/// A draw whose samples share its shading, split as llvmpipe runs it
-/// (the fragment shader once a pixel, the per-sample tests and writes
-/// after it): its shading half, the stages up to the alpha test (and
-/// alpha to one) into an RGBA8 target, the fragments that passed marked
-/// by writing 1 into its stencil (the stencil test always passes and
-/// replaces, after the alpha test); and its per-sample half, the stages
-/// after them taking the colour from the span (and depth from each
-/// sample's plane). The bytes are those of the whole key run per sample:
-/// the shading reads no buffer and gives each sample the same colour, and
-/// the unorm8 colour is what the stages after it read either way.
-/// `specialist` gives a key's specialist, if any.
+/// A draw whose samples share its shading, split as llvmpipe runs it (the
+/// fragment shader once a pixel, the per-sample tests and writes after
+/// it; [`FragmentKey::split_shading`]): its shading half, run into a
+/// band's RGBA8 and stencil target, and its per-sample half, run for each
+/// sample on the fragments the first kept, with their colours. The bytes
+/// are those of the whole key run per sample: the shading reads no buffer
+/// and gives each sample the same colour (all attributes but depth are
+/// interpolated at the pixel centre), and the unorm8 colour is what the
+/// stages after it read either way (the alpha test too: it compares
+/// bytes). `specialist` gives a key's specialist, if any.
 pub(crate) fn shared_halves(
     state: &DrawState,
     mut specialist: impl FnMut(&FragmentKey) -> Option<std::sync::Arc<softgl_jit::Specialist>>,
 ) -> Option<(DrawState, DrawState)> {
-    use softgl_jit::{CompareFunc, StencilKey, StencilOp};
-    let key = state.key;
-    let shade = key.shade?;
-    let shade_key = FragmentKey {
-        scissor: key.scissor,
-        alpha_test: key.alpha_test,
-        stencil: Some(StencilKey {
-            func: CompareFunc::Always,
-            fail: StencilOp::Keep,
-            zfail: StencilOp::Keep,
-            zpass: StencilOp::Replace,
-        }),
-        shade: Some(ShadeKey { depth: false, ..shade }),
-        ..FragmentKey::new(ColorFormat::Rgba8, None, true)
-    };
-    let shade_uniforms = softgl_jit::FragmentUniforms {
-        stencil_ref: 1,
-        stencil_value_mask: 0xff,
-        stencil_write_mask: 0xff,
-        ..state.uniforms
-    };
-    let ops_key = FragmentKey {
-        scissor: false,
-        alpha_test: None,
-        shade: shade.depth.then(|| ShadeKey {
-            depth: true,
-            ..ShadeKey::default()
-        }),
-        ..key
-    };
+    let (shade_key, ops_key) = state.key.split_shading()?;
     let shading = DrawState {
         key: shade_key,
-        uniforms: shade_uniforms,
+        uniforms: state.uniforms.shading_half(),
         specialist: specialist(&shade_key),
         textures: state.textures.clone(),
         samples: None,

@@ -7,7 +7,8 @@
 //! colours, blending, alpha test, alpha to one and to coverage, fog,
 //! stencil, depth test of every depth format, scissor, sample coverage,
 //! `GL_MULTISAMPLE` switched off and on, polygon stipple, lines, points,
-//! colour formats of 4, 3 and 2 bytes, draws that flush mid-draw.
+//! colour formats of 4, 3 and 2 bytes, draws that flush mid-draw, an
+//! occlusion query's count.
 
 use softgl::texture::{
     EnvMode, Filter, InternalFormat, MipFilter, PixelData, PixelFormat, PixelStore, PixelType, TexImageTarget,
@@ -15,7 +16,7 @@ use softgl::texture::{
 };
 use softgl::{
     Backend, BlendFactor, Capability, ClearMask, ColorFormat, CompareFunc, Context, FogMode, FogParam, Framebuffer,
-    FramebufferDesc, MatrixMode, PrimitiveMode, ShadeModel, StencilOp, TexEnvParam,
+    FramebufferDesc, MatrixMode, PrimitiveMode, QueryTarget, ShadeModel, StencilOp, TexEnvParam,
 };
 
 const W: u32 = 150;
@@ -92,8 +93,8 @@ fn toggle(gl: &mut Context, rng: &mut Rng, cap: Capability, percent: u32) {
 }
 
 /// Draws seed `seed`'s scene into `fb` on `backend`, sharing the shading
-/// or not.
-fn draw(seed: u32, backend: Backend, share: bool) -> Context {
+/// or not; with the samples an occlusion query counted.
+fn draw(seed: u32, backend: Backend, share: bool) -> (Context, u64) {
     let mut rng = Rng(seed.wrapping_mul(0x9e37_79b9) | 1);
     let fb = Framebuffer::new_multisample(desc(&mut rng), 4).unwrap();
     let mut gl = Context::with_framebuffer(fb);
@@ -118,6 +119,8 @@ fn draw(seed: u32, backend: Backend, share: bool) -> Context {
     };
     gl.clear(all).unwrap();
     texture(&mut gl, &mut rng);
+    let q = gl.queries_mut().gen(1).unwrap()[0];
+    gl.queries_mut().begin(QueryTarget::SamplesPassed, q).unwrap();
     for _draw in 0..8 {
         toggle(&mut gl, &mut rng, Capability::Texture(TextureTarget::D2), 60);
         toggle(&mut gl, &mut rng, Capability::DepthTest, 60);
@@ -199,14 +202,16 @@ fn draw(seed: u32, backend: Backend, share: bool) -> Context {
             .unwrap();
         }
     }
+    gl.queries_mut().end(QueryTarget::SamplesPassed).unwrap();
     gl.flush().unwrap();
-    gl
+    let passed = gl.query_result(q).unwrap();
+    (gl, passed)
 }
 
-/// Every sample's colour, depth and stencil bytes.
-fn samples(gl: &mut Context) -> Vec<(Vec<u8>, Vec<u32>, Vec<u8>)> {
+/// Every sample's colour, depth and stencil bytes, and the query's count.
+fn samples((mut gl, passed): (Context, u64)) -> (Vec<(Vec<u8>, Vec<u32>, Vec<u8>)>, u64) {
     let fb = gl.framebuffer();
-    (0..4)
+    let s: Vec<_> = (0..4)
         .map(|s| {
             let f = fb.sample(s).unwrap();
             let depth = (0..H)
@@ -219,15 +224,17 @@ fn samples(gl: &mut Context) -> Vec<(Vec<u8>, Vec<u32>, Vec<u8>)> {
                 f.stencil_buffer().map(<[u8]>::to_vec).unwrap_or_default(),
             )
         })
-        .collect()
+        .collect();
+    (s, passed)
 }
 
 #[test]
 fn shared_shading_draws_each_samples_bytes() {
     for seed in 0..48 {
         for backend in [Backend::Jit, Backend::Interpreter] {
-            let want = samples(&mut draw(seed, backend, false));
-            let got = samples(&mut draw(seed, backend, true));
+            let (want, want_passed) = samples(draw(seed, backend, false));
+            let (got, passed) = samples(draw(seed, backend, true));
+            assert_eq!(passed, want_passed, "seed {seed} {backend:?}: samples passed");
             for (s, (g, w)) in got.iter().zip(&want).enumerate() {
                 assert!(g.0 == w.0, "seed {seed} {backend:?}: sample {s}'s colour");
                 assert!(g.1 == w.1, "seed {seed} {backend:?}: sample {s}'s depth");
@@ -242,8 +249,8 @@ fn shared_shading_draws_each_samples_bytes() {
 #[test]
 fn shared_shading_is_the_same_on_both_back_ends() {
     for seed in 100..116 {
-        let jit = samples(&mut draw(seed, Backend::Jit, true));
-        let interp = samples(&mut draw(seed, Backend::Interpreter, true));
+        let jit = samples(draw(seed, Backend::Jit, true));
+        let interp = samples(draw(seed, Backend::Interpreter, true));
         assert!(jit == interp, "seed {seed}");
     }
 }

@@ -28,6 +28,16 @@
 //! recorded with their vertices and rasterized by the row rasterizer with
 //! their bounds cut to the tile. Either way coverage decides each pixel on
 //! its own, so the pixels are those of the whole primitive at once.
+//!
+//! A multisampled draw whose samples share their shading
+//! ([`Scene::draw_shared`], `multisample.rs`) records each triangle once
+//! for the four samples: a word naming the samples with a pixel inside,
+//! then each one's record as above (its coverage at the sample, its planes
+//! with depth moved to the sample), binned once ([`GROUP`]). Such a scene
+//! is flushed with every sample's buffers (its clears clear them all), and
+//! a tile runs the triangle's shading half once, into a band's RGBA8 and
+//! stencil target, over the union of the samples' coverage, and its
+//! per-sample half into each sample's band ([`Scene::run_group`]).
 
 use super::background::Background;
 use super::stipple::PolygonStipple;
@@ -894,15 +904,17 @@ impl Scene {
                 }
             }
         }
+        // The rows any sample covers: `lo..hi` of the tile's.
         let rows = (tile.y1 - tile.y0) as usize;
-        if union[..rows].iter().all(|&m| m == 0) {
+        let Some(lo) = union[..rows].iter().position(|&m| m != 0) else {
             return;
-        }
+        };
+        let hi = rows - union[..rows].iter().rev().position(|&m| m != 0).unwrap_or(0);
         let len = tile.x1 - tile.x0;
         // Shade: the marks cleared where the pixels are, then every pixel
         // any sample covers.
         shade.direct(|t| {
-            for (r, &m) in union[..rows].iter().enumerate().filter(|(_, m)| **m != 0) {
+            for (r, &m) in union[..hi].iter().enumerate().skip(lo).filter(|(_, m)| **m != 0) {
                 let (lo, hi) = (m.trailing_zeros(), 63 - m.leading_zeros());
                 let i = t.index(tile.x0 + lo, tile.y0 + r as u32);
                 if let Some(st) = t.stencil_mut().and_then(|st| st.get_mut(i..=i + (hi - lo) as usize)) {
@@ -918,14 +930,14 @@ impl Scene {
             copy_planes(to, slots, planes_of(first));
         }
         let span = &mut work.span;
-        for (r, &m) in union[..rows].iter().enumerate().filter(|(_, m)| **m != 0) {
+        for (r, &m) in union[..hi].iter().enumerate().skip(lo).filter(|(_, m)| **m != 0) {
             (span.x, span.y, span.len, span.mask) = (tile.x0, tile.y0 + r as u32, len, m);
             shade.span(span);
         }
         // The fragments the shading kept (marked 1), and their colours.
         let (alive, colors) = (&mut work.alive, &mut work.colors);
         shade.direct(|t| {
-            for (r, &m) in union[..rows].iter().enumerate() {
+            for (r, &m) in union[..hi].iter().enumerate().skip(lo) {
                 alive[r] = 0;
                 if m == 0 {
                     continue;
@@ -942,7 +954,7 @@ impl Scene {
                 }
                 alive[r] = keep;
             }
-            for (r, &m) in alive[..rows].iter().enumerate() {
+            for (r, &m) in alive[..hi].iter().enumerate().skip(lo) {
                 let o = t.color_offset(tile.x0, tile.y0 + r as u32);
                 let (Some(c), Some(to)) = (t.color().get(o..o + 4 * len as usize), colors.get_mut(r)) else {
                     continue;
@@ -980,7 +992,7 @@ impl Scene {
                     .last_chunk::<3>()
                     .map(|&[a0, dadx, dady]| (f, f32::from_bits(a0), f32::from_bits(dadx), f32::from_bits(dady)))
             });
-            for (r, (&m, &a)) in work.masks[s][..rows].iter().zip(&alive[..rows]).enumerate() {
+            for (r, (&m, &a)) in work.masks[s][..hi].iter().zip(&alive[..hi]).enumerate().skip(lo) {
                 let m = m & a;
                 if m == 0 {
                     continue;
