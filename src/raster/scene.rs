@@ -875,10 +875,14 @@ impl Scene {
         let n = usize::from(class.n);
         let slots = &class.slots[..n];
         let height = class.params.height;
-        // Each sample's coverage of the tile, row by row.
+        // Each sample's record: its coverage and where its planes are.
         let mut recs: [Option<(usize, usize)>; 4] = [None; 4];
+        let mut preps: [Option<Prepared>; 4] = [None; 4];
         let mut p = at + 1;
-        for (s, rec) in recs.iter_mut().enumerate() {
+        // The tile's rows the samples' boxes reach: `lo..hi`.
+        let rows = (tile.y1 - tile.y0) as usize;
+        let (mut lo, mut hi) = (rows, 0);
+        for s in 0..4 {
             if present >> s & 1 == 0 {
                 continue;
             }
@@ -886,30 +890,40 @@ impl Scene {
             let Some((prep, c)) = self.records.get(p + 1..).and_then(|w| Prepared::decode(w0 >> 30, w)) else {
                 return;
             };
-            *rec = Some((p + 1 + c, s));
-            work.masks[s] = [0; TILE as usize];
+            recs[s] = Some((p + 1 + c, s));
+            let r = prep.rect().intersect(tile);
+            if !r.is_empty() {
+                lo = lo.min((r.y0 - tile.y0) as usize);
+                hi = hi.max((r.y1 - tile.y0) as usize);
+            }
+            preps[s] = Some(prep);
+            p += 1 + c + 3 * n;
+        }
+        if lo >= hi {
+            return;
+        }
+        // Each sample's coverage of those rows, and their union.
+        let union = &mut work.union;
+        union[lo..hi].fill(0);
+        for (s, prep) in preps.iter().enumerate() {
+            let Some(prep) = prep else { continue };
+            work.masks[s][lo..hi].fill(0);
             let mut sink = MaskSink {
                 rows: &mut work.masks[s],
                 origin: (tile.x0, tile.y0),
                 planes: &mut work.planes,
             };
             prep.cover(tile, height, &mut sink, |_| None);
-            p += 1 + c + 3 * n;
-        }
-        let mut union = [0u64; TILE as usize];
-        for (s, rec) in recs.iter().enumerate() {
-            if rec.is_some() {
-                for (u, m) in union.iter_mut().zip(&work.masks[s]) {
-                    *u |= m;
-                }
+            for (u, m) in union[lo..hi].iter_mut().zip(&work.masks[s][lo..hi]) {
+                *u |= m;
             }
         }
-        // The rows any sample covers: `lo..hi` of the tile's.
-        let rows = (tile.y1 - tile.y0) as usize;
-        let Some(lo) = union[..rows].iter().position(|&m| m != 0) else {
+        let Some(first) = union[lo..hi].iter().position(|&m| m != 0) else {
             return;
         };
-        let hi = rows - union[..rows].iter().rev().position(|&m| m != 0).unwrap_or(0);
+        let lo = lo + first;
+        let hi = hi - union[lo..hi].iter().rev().position(|&m| m != 0).unwrap_or(0);
+        let union = &work.union;
         let len = tile.x1 - tile.x0;
         // Shade: the marks cleared where the pixels are, then every pixel
         // any sample covers.
@@ -1025,11 +1039,14 @@ struct SharedShade {
 }
 
 /// What [`Scene::run_group`] works in: each sample's coverage of a tile
-/// (rows from the tile's bottom, bit `i` its column `i`), the fragments
-/// the shading kept and their colours (a channel a row), a span and
-/// planes to cover into.
+/// and their union (rows from the tile's bottom, bit `i` its column `i`;
+/// only the rows a triangle's boxes reach are cleared and read: zeroing
+/// them all was ~2% of a frame in `memset`), the fragments the shading
+/// kept and their colours (a channel a row), a span and planes to cover
+/// into.
 struct GroupWork {
     masks: [[u64; TILE as usize]; 4],
+    union: [u64; TILE as usize],
     alive: [u64; TILE as usize],
     colors: [[[u8; SPAN_MAX]; 4]; TILE as usize],
     span: FragmentSpan,
@@ -1059,6 +1076,7 @@ impl GroupWork {
     fn boxed() -> Box<GroupWork> {
         Box::new(GroupWork {
             masks: [[0; TILE as usize]; 4],
+            union: [0; TILE as usize],
             alive: [0; TILE as usize],
             colors: [[[0; SPAN_MAX]; 4]; TILE as usize],
             span: FragmentSpan::new(0, 0),
