@@ -634,8 +634,9 @@ impl FragmentKey {
     /// the per-sample tests and writes after it: the *shading half*, the
     /// stages up to the alpha test and alpha to one, writing the unorm8
     /// colour into an RGBA8 target and marking the fragments that pass by
-    /// writing the stencil reference ([`FragmentUniforms::shading_half`]:
-    /// 1) into its stencil (always passing, replacing), and the
+    /// writing the stencil reference, 1
+    /// ([`FragmentUniforms::shading_half`](crate::FragmentUniforms::shading_half)),
+    /// into its stencil (always passing, replacing), and the
     /// *per-sample half*, the stages after them, taking the colour from the
     /// span (and depth from the sample's Z plane when this key takes it
     /// from the planes). Running the first over a primitive's pixels, then
