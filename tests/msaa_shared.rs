@@ -208,8 +208,11 @@ fn draw(seed: u32, backend: Backend, share: bool) -> (Context, u64) {
     (gl, passed)
 }
 
+/// A sample's colour, depth and stencil.
+type Sample = (Vec<u8>, Vec<u32>, Vec<u8>);
+
 /// Every sample's colour, depth and stencil bytes, and the query's count.
-fn samples((mut gl, passed): (Context, u64)) -> (Vec<(Vec<u8>, Vec<u32>, Vec<u8>)>, u64) {
+fn samples((mut gl, passed): (Context, u64)) -> (Vec<Sample>, u64) {
     let fb = gl.framebuffer();
     let s: Vec<_> = (0..4)
         .map(|s| {
