@@ -50,8 +50,8 @@ use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::shade::{slot, PLANES};
 use softgl_jit::texture::TextureSet;
 use softgl_jit::{
-    ColorFormat, DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes,
-    Specialist, Target, SPAN_MAX,
+    ColorFormat, CompareFunc, DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms,
+    Planes, Specialist, StencilOp, Target, SPAN_MAX,
 };
 use std::cell::OnceCell;
 use std::collections::HashSet;
@@ -923,6 +923,36 @@ impl Scene {
         };
         let lo = lo + first;
         let hi = hi - union[lo..hi].iter().rev().position(|&m| m != 0).unwrap_or(0);
+        // Early tests: the pixels no sample's stencil and depth tests can
+        // pass are not shaded (the per-sample specialists shade only what
+        // those tests leave: a skybox behind the scene, a reflection
+        // outside its stencil, were shaded whole otherwise).
+        if let Some(early) = self.draws.get(class.draw as usize + 1).and_then(EarlyTests::of) {
+            let z = class.params.depth.is_some();
+            let pass = &mut work.pass;
+            pass[lo..hi].fill(0);
+            for &(planes, s) in recs.iter().flatten() {
+                let to = match s {
+                    0 => &mut *stage,
+                    s => match others.get_mut(s - 1) {
+                        Some(o) => o,
+                        None => continue,
+                    },
+                };
+                let plane = planes_of_at(&self.records, planes, n)
+                    .filter(|_| z)
+                    .and_then(|p| p.last_chunk::<3>())
+                    .map(|&[a0, dadx, dady]| [a0, dadx, dady].map(f32::from_bits));
+                let masks = &work.masks[s];
+                to.direct(|t| early.pass(t, plane, (tile, height), (lo, hi), masks, pass));
+            }
+            for (u, p) in work.union[lo..hi].iter_mut().zip(&pass[lo..hi]) {
+                *u &= p;
+            }
+            if work.union[lo..hi].iter().all(|&m| m == 0) {
+                return;
+            }
+        }
         let union = &work.union;
         let len = tile.x1 - tile.x0;
         // Shade: the marks cleared where the pixels are, then every pixel
@@ -1047,6 +1077,8 @@ struct SharedShade {
 struct GroupWork {
     masks: [[u64; TILE as usize]; 4],
     union: [u64; TILE as usize],
+    /// The pixels some sample's early tests pass ([`EarlyTests`]).
+    pass: [u64; TILE as usize],
     alive: [u64; TILE as usize],
     colors: [[[u8; SPAN_MAX]; 4]; TILE as usize],
     span: FragmentSpan,
@@ -1077,11 +1109,122 @@ impl GroupWork {
         Box::new(GroupWork {
             masks: [[0; TILE as usize]; 4],
             union: [0; TILE as usize],
+            pass: [0; TILE as usize],
             alive: [0; TILE as usize],
             colors: [[[0; SPAN_MAX]; 4]; TILE as usize],
             span: FragmentSpan::new(0, 0),
             planes: Planes::default(),
         })
+    }
+}
+
+/// The `3 * n` words of the planes at `at` of `records`.
+fn planes_of_at(records: &[u32], at: usize, n: usize) -> Option<&[u32]> {
+    records.get(at..at + 3 * n)
+}
+
+/// A shared draw's stencil and depth tests as the shading half runs them
+/// early ([`Scene::run_group`]): a pixel is shaded only when some sample
+/// covering it may pass both, in its buffers as they are before the
+/// primitive. Only for keys whose stencil test changes nothing where a
+/// fragment fails (`fail` and `zfail` keep): a pixel not shaded then
+/// leaves every buffer as the per-sample half would. The stencil test is
+/// exact; depth is evaluated in f64 and may fail only by more than a
+/// margin bounding the f32 rounding of the plane (so a pixel whose test
+/// passes is always shaded: the per-sample half runs the exact test).
+#[derive(Clone, Copy, Debug)]
+struct EarlyTests {
+    stencil: Option<(CompareFunc, u8, u8)>,
+    depth: Option<CompareFunc>,
+}
+
+impl EarlyTests {
+    /// The early tests of the per-sample half `ops`, if it has some that
+    /// may be run early.
+    fn of(ops: &DrawState) -> Option<EarlyTests> {
+        let k = &ops.key;
+        if k.stencil
+            .is_some_and(|s| s.fail != StencilOp::Keep || s.zfail != StencilOp::Keep)
+        {
+            return None;
+        }
+        let u = &ops.uniforms;
+        let stencil = k
+            .stencil
+            .map(|s| (s.func, u.stencil_ref & u.stencil_value_mask, u.stencil_value_mask));
+        let depth = k.depth.map(|d| d.func).filter(|f| *f != CompareFunc::Always);
+        (stencil.is_some() || depth.is_some()).then_some(EarlyTests { stencil, depth })
+    }
+
+    /// Sets in `pass` the pixels of `masks` (a sample's coverage of rows
+    /// `lo..hi` of `tile`) whose tests may pass in `t`, the sample's band;
+    /// `plane`: its depth plane, `height` the framebuffer's.
+    fn pass(
+        &self,
+        t: &mut Target<'_>,
+        plane: Option<[f32; 3]>,
+        (tile, height): (Rect, u32),
+        (lo, hi): (usize, usize),
+        masks: &[u64; TILE as usize],
+        pass: &mut [u64; TILE as usize],
+    ) {
+        for r in lo..hi {
+            // (Pixels an earlier sample passes need no more tests.)
+            let m = masks[r] & !pass[r];
+            if m == 0 {
+                continue;
+            }
+            let y = tile.y0 + r as u32;
+            let row = f64::from(softgl_jit::interp::row_of(y, height));
+            let i0 = t.index(tile.x0, y);
+            let mut keep = 0u64;
+            for b in crate::raster::set_bits(m) {
+                let i = i0 + b;
+                let stencil_ok = match (self.stencil, t.stencil_mut()) {
+                    (Some((func, reference, mask)), Some(st)) => {
+                        st.get(i).is_none_or(|&v| func.test(reference, v & mask))
+                    }
+                    _ => true,
+                };
+                if !stencil_ok {
+                    continue;
+                }
+                let depth_ok = match (self.depth, plane, t.depth_mut()) {
+                    (Some(func), Some([a0, dadx, dady]), Some(d)) => {
+                        let x = f64::from(tile.x0 + b as u32);
+                        let (a0, dadx, dady) = (f64::from(a0), f64::from(dadx), f64::from(dady));
+                        let z = a0 + dadx * x + dady * row;
+                        // f32 rounding of the plane's terms, generously.
+                        let err = (a0.abs() + (dadx * x).abs() + (dady * row).abs()) * (1.0 / (1u64 << 20) as f64)
+                            + 1.0 / (1u64 << 20) as f64;
+                        let (max, stored) = match d.format() {
+                            DepthFormat::D32F => (1.0, f64::from(f32::from_bits(d.get(i)))),
+                            f => (f64::from(f.max_value()), f64::from(d.get(i))),
+                        };
+                        if !z.is_finite() || !err.is_finite() {
+                            true
+                        } else {
+                            let z = z.clamp(0.0, 1.0) * max;
+                            let margin = err * max + 2.0;
+                            match func {
+                                CompareFunc::Never => false,
+                                CompareFunc::Less => z - margin < stored,
+                                CompareFunc::Lequal => z - margin <= stored,
+                                CompareFunc::Greater => z + margin > stored,
+                                CompareFunc::Gequal => z + margin >= stored,
+                                CompareFunc::Equal => (z - stored).abs() <= margin,
+                                CompareFunc::Notequal | CompareFunc::Always => true,
+                            }
+                        }
+                    }
+                    _ => true,
+                };
+                if depth_ok {
+                    keep |= 1 << b;
+                }
+            }
+            pass[r] |= keep;
+        }
     }
 }
 
