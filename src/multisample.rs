@@ -23,7 +23,8 @@
 //! `GL_MULTISAMPLE` off, polygon stipple, pixel rectangles and bitmaps go
 //! to the lanes as before, the pending draws rasterized first when the
 //! mode changes so that each sample's draws keep their order). A tile runs
-//! such a triangle's shading half once over the pixels any sample covers,
+//! such a triangle's shading half once over the pixels any sample covers
+//! (and may pass the stencil and depth tests, tested early),
 //! then its per-sample half for each sample over its own covered pixels
 //! among those the shading kept (`raster::scene`, `Scene::run_group`): the
 //! bytes of the per-sample draws (`tests/msaa_shared.rs` draws random
