@@ -411,6 +411,16 @@ pub struct Context {
     /// came since. A filled polygon drawn with it off inside them needs no
     /// copy of sample 0's tests ([`Context::one_sample_tests`]).
     pub(crate) samples_same: [Option<Rect>; 2],
+    /// Whether `scene` (and its background flush) records for every sample
+    /// of a multisampled framebuffer, its flushes writing all of them: the
+    /// draws whose samples share their shading ([`Context::share_samples`]).
+    /// Otherwise each sample other than 0 records into its lane.
+    shared: bool,
+    /// Whether multisampled draws may share their shading between samples
+    /// (`SOFTGL_MSAA_SHARED=0` at creation, or
+    /// [`Context::set_msaa_shared_shading`], turns it off: the same bytes,
+    /// each sample shading again).
+    msaa_share: bool,
     /// Lanes of an earlier multisampled framebuffer, kept with their
     /// scenes' memory for the next (MuJoCo binds its 4× object and a 1×
     /// shadow map in turn: fresh lanes refilled their scenes' vectors in
@@ -452,6 +462,11 @@ impl Drop for Context {
     /// Rasterizes what is pending: a context's last draws reach its
     /// framebuffer (lent memory too) even without a `glFinish`.
     fn drop(&mut self) {
+        if self.shared {
+            // The scene and its flush in flight hold every sample.
+            let _ = self.background.settle(&mut self.fb);
+            let _ = self.scene.flush(&mut self.fb, self.threads);
+        }
         let mut samples = std::mem::take(&mut self.fb.samples);
         let _ = self.background.settle(&mut self.fb);
         let _ = self.scene.flush(&mut self.fb, self.threads);
@@ -516,6 +531,8 @@ impl Context {
             pixel: crate::pixel_transfer::PixelState::default(),
             lanes: (1..fb_samples).map(|_| Lane::default()).collect(),
             samples_same: [None; 2],
+            shared: false,
+            msaa_share: std::env::var("SOFTGL_MSAA_SHARED").map_or(true, |v| v.trim() != "0"),
             render_mode: Default::default(),
         }
     }
@@ -601,7 +618,25 @@ impl Context {
     /// whole pixels, every sample of them: llvmpipe's `st_cb_bitmap.c` and
     /// `st_cb_drawpixels.c` quads) is recorded into each as into `scene`.
     pub(crate) fn lane_scenes(&mut self) -> impl Iterator<Item = (&mut Scene, &Framebuffer)> {
+        self.share_samples(false);
         self.lanes.iter_mut().map(|l| &mut l.scene).zip(&self.fb.samples)
+    }
+
+    /// Lets multisampled draws share their shading between the samples
+    /// (the default) or not: the same bytes either way (tests draw both).
+    pub fn set_msaa_shared_shading(&mut self, on: bool) {
+        self.msaa_share = on;
+    }
+
+    /// Makes `scene` record for every sample of the framebuffer (`on`: the
+    /// draws whose samples share their shading) or for sample 0 only, the
+    /// lanes for the others, rasterizing what is pending first when that
+    /// changes: each sample's draws then run in the order they were made.
+    fn share_samples(&mut self, on: bool) {
+        if self.shared != on {
+            self.finish_scene();
+            self.shared = on;
+        }
     }
 
     /// Gives the context a lane a sample of `fb` beyond the first, after
@@ -665,24 +700,48 @@ impl Context {
     /// Rasterizes every recorded draw and clear into the framebuffer; a
     /// fragment stage's failure is recorded as `GL_INVALID_OPERATION`.
     pub(crate) fn finish_scene(&mut self) {
-        // The other samples are out of `fb` while it may go to a flush.
-        let mut samples = std::mem::take(&mut self.fb.samples);
-        // Every sample's flush in flight takes all the threads, then the
-        // samples' scenes are flushed together (`Scene::flush_all`).
-        for lane in self.lanes.iter().take(samples.len()) {
-            lane.background.hurry();
-        }
-        let mut r = self.background.join(&mut self.fb);
-        for (lane, fb) in self.lanes.iter_mut().zip(&mut samples) {
-            r = r.and(lane.background.join(fb));
-        }
-        let mut jobs = vec![(&mut self.scene, &mut self.fb)];
-        jobs.extend(self.lanes.iter_mut().map(|l| &mut l.scene).zip(samples.iter_mut()));
-        r = r.and(Scene::flush_all(jobs, self.threads));
-        self.fb.samples = samples;
+        let r = Self::finish_fields(
+            (&mut self.fb, &mut self.scene, &mut self.background),
+            &mut self.lanes,
+            self.threads,
+            self.shared,
+        );
         if let Err(_e) = r {
             self.error.get_or_insert(GlError::InvalidOperation);
         }
+    }
+
+    /// [`Context::finish_scene`] on the fields it touches (a draw switches
+    /// [`Context::shared`] while its textures are borrowed).
+    fn finish_fields(
+        (fb, scene, background): (&mut Framebuffer, &mut Scene, &mut Background),
+        lanes: &mut [Lane],
+        threads: usize,
+        shared: bool,
+    ) -> Result<(), softgl_jit::FragmentError> {
+        let mut r = Ok(());
+        if shared {
+            // The scene records for every sample: its flushes take them all
+            // (the lanes are empty).
+            let before = background.join(fb);
+            r = before.and(scene.flush(fb, threads));
+        }
+        // The other samples are out of `fb` while it may go to a flush.
+        let mut samples = std::mem::take(&mut fb.samples);
+        // Every sample's flush in flight takes all the threads, then the
+        // samples' scenes are flushed together (`Scene::flush_all`).
+        for lane in lanes.iter().take(samples.len()) {
+            lane.background.hurry();
+        }
+        r = r.and(background.join(fb));
+        for (lane, fb) in lanes.iter_mut().zip(&mut samples) {
+            r = r.and(lane.background.join(fb));
+        }
+        let mut jobs = vec![(&mut *scene, &mut *fb)];
+        jobs.extend(lanes.iter_mut().map(|l| &mut l.scene).zip(samples.iter_mut()));
+        r = r.and(Scene::flush_all(jobs, threads));
+        fb.samples = samples;
+        r
     }
 
     /// Records `error` GL-style (kept unless one is already pending), for
@@ -904,8 +963,11 @@ impl Context {
             self.samples_same[1] = Some(rect);
         }
         self.scene.clear(&self.fb, clear);
-        for (lane, fb) in self.lanes.iter_mut().zip(&self.fb.samples) {
-            lane.scene.clear(fb, clear);
+        // Shared, the scene's clears clear every sample.
+        if !self.shared {
+            for (lane, fb) in self.lanes.iter_mut().zip(&self.fb.samples) {
+                lane.scene.clear(fb, clear);
+            }
         }
         Ok(())
     }
@@ -1686,6 +1748,29 @@ impl Context {
                 shade.flat = true;
             }
         }
+        // A multisampled draw: the scene records it for every sample when
+        // they share its shading (`multisample::shared_halves`), else each
+        // sample's lane records it.
+        let multisampled = self.render_mode.mode == crate::select::RenderMode::Render && !self.fb.samples.is_empty();
+        let share = multisampled
+            && self.msaa_share
+            && self.fb.samples() == crate::multisample::MAX_SAMPLES
+            && self.state.multisample.enabled
+            && !self.state.polygon_stipple
+            && crate::multisample::shares_shading(&key);
+        if multisampled && self.shared != share {
+            // (`share_samples`, with the draw's textures borrowed.)
+            let r = Self::finish_fields(
+                (&mut self.fb, &mut self.scene, &mut self.background),
+                &mut self.lanes,
+                self.threads,
+                self.shared,
+            );
+            if r.is_err() {
+                self.error.get_or_insert(GlError::InvalidOperation);
+            }
+            self.shared = share;
+        }
         let reads_depth = key.depth.is_some();
         let mv = self.modelview.top();
         let mut vertex_stage = VertexStage::new(*self.projection.top() * *mv, layout);
@@ -1738,6 +1823,7 @@ impl Context {
                 .state
                 .polygon_stipple
                 .then(|| Box::new(self.state.polygon_stipple_pattern)),
+            shades_samples: false,
         };
         if !self.fb.samples.is_empty() {
             // A multisampled framebuffer: the geometry runs once, each
@@ -1752,6 +1838,27 @@ impl Context {
             };
             let window = self.fb.window_samples;
             let at = |s: usize| ms.enabled.then(|| crate::multisample::SampleAt::of_4x_in(s, window));
+            if share {
+                let (backend, specialists) = (self.backend, &mut self.specialists);
+                let halves = crate::multisample::shared_halves(&state, |k| match backend {
+                    Backend::Jit => specialists.get(k).cloned(),
+                    Backend::Interpreter => None,
+                });
+                if let Some((shading, ops)) = halves {
+                    let at = std::array::from_fn(|s| crate::multisample::SampleAt::of_4x_in(s, window));
+                    let binner = self
+                        .scene
+                        .draw_shared(&mut self.fb, &mut self.background, self.threads, shading, ops);
+                    let mut fan = crate::multisample::SharedFan {
+                        binner,
+                        at,
+                        mask: mask & 0xf,
+                    };
+                    geometry.draw(&vertex_stage, mode, count, fetch, &mut fan, &mut self.window);
+                    let r = fan.finish();
+                    return self.record(r.map_err(|_| GlError::InvalidOperation));
+                }
+            }
             let mut samples = std::mem::take(&mut self.fb.samples);
             let mut fan = crate::multisample::Fan::default();
             // Alpha to coverage: each sample's key has its own threshold.

@@ -10,13 +10,32 @@
 //! blended with its own colour), so drawing them apart gives the bytes of
 //! drawing them together. [`Framebuffer::resolve`] averages them as
 //! `glBlitFramebuffer` does on llvmpipe.
+//!
+//! The shading of the four samples is then the same computation four times
+//! (interpolation, texturing, texture environment, fog, alpha test), and
+//! for MuJoCo's light passes (two texture units, one a 4096² shadow map
+//! with compare) it was most of the frame. With `GL_MULTISAMPLE` on, a
+//! draw whose key splits ([`shared_halves`], `FragmentKey::split_shading`)
+//! is recorded once for all four samples instead ([`SharedFan`]): each
+//! triangle's four coverages and depth planes in one record of the
+//! context's own scene, which then records (and flushes) for every sample
+//! (`Context::share_samples`; draws that do not split, alpha to coverage,
+//! `GL_MULTISAMPLE` off, polygon stipple, pixel rectangles and bitmaps go
+//! to the lanes as before, the pending draws rasterized first when the
+//! mode changes so that each sample's draws keep their order). A tile runs
+//! such a triangle's shading half once over the pixels any sample covers
+//! (and may pass the stencil and depth tests, tested early),
+//! then its per-sample half for each sample over its own covered pixels
+//! among those the shading kept (`raster::scene`, `Scene::run_group`): the
+//! bytes of the per-sample draws (`tests/msaa_shared.rs` draws random
+//! scenes both ways; `jit/tests/contract.rs`, `split_keys_equal_the_whole`).
 
 use crate::error::{GlError, GlResult};
 use crate::framebuffer::{rint_nonnegative, DepthBuffer, Framebuffer, FramebufferDesc};
 use crate::geometry::varying::Varyings;
-use crate::raster::scene::Binner;
+use crate::raster::scene::{Binner, DrawState};
 use crate::raster::{PrimSink, RasterParams, RasterVertex};
-use softgl_jit::{deep, pixel, ColorFormat, DepthTarget};
+use softgl_jit::{deep, pixel, ColorFormat, DepthTarget, FragmentKey};
 
 /// `GL_MAX_SAMPLES`: llvmpipe supports 1 and 4 samples (`lp_screen.c`,
 /// `llvmpipe_is_format_supported`).
@@ -155,6 +174,109 @@ impl PrimSink for Fan<'_> {
                 (None, Some(_)) => {}
                 (_, None) => sink.point(v, size, params),
             }
+        }
+    }
+}
+
+/// Whether the draw of `key` into a 4× framebuffer with `GL_MULTISAMPLE`
+/// on (and no polygon stipple) shares its shading between the samples
+/// ([`shared_halves`]): a key that can be split and writes colour (one
+/// that writes none shades for its alpha test at most, which each
+/// sample's specialist does cheaply without the colour).
+pub(crate) fn shares_shading(key: &FragmentKey) -> bool {
+    // Cube maps stay per sample: MuJoCo's skybox, which the per-sample
+    // specialists' tests kill before its (callout) sampling, was shaded
+    // whole in the `noshadow` frame even with the early tests (not yet
+    // understood; docs/mujoco.md, msaashade's section).
+    let cube = key.shade.is_some_and(|s| {
+        s.tex
+            .iter()
+            .flatten()
+            .any(|u| u.sampler.target == softgl_jit::texture::TexTarget::Cube)
+    });
+    !cube && key.split_shading().is_some() && !key.color_mask.writes_nothing(key.color_format)
+}
+
+/// A draw whose samples share its shading, split as llvmpipe runs it (the
+/// fragment shader once a pixel, the per-sample tests and writes after
+/// it; [`FragmentKey::split_shading`]): its shading half, run into a
+/// band's RGBA8 and stencil target, and its per-sample half, run for each
+/// sample on the fragments the first kept, with their colours. The bytes
+/// are those of the whole key run per sample: the shading reads no buffer
+/// and gives each sample the same colour (all attributes but depth are
+/// interpolated at the pixel centre), and the unorm8 colour is what the
+/// stages after it read either way (the alpha test too: it compares
+/// bytes). `specialist` gives a key's specialist, if any.
+pub(crate) fn shared_halves(
+    state: &DrawState,
+    mut specialist: impl FnMut(&FragmentKey) -> Option<std::sync::Arc<softgl_jit::Specialist>>,
+) -> Option<(DrawState, DrawState)> {
+    let (shade_key, ops_key) = state.key.split_shading()?;
+    let shading = DrawState {
+        key: shade_key,
+        uniforms: state.uniforms.shading_half(),
+        specialist: specialist(&shade_key),
+        textures: state.textures.clone(),
+        samples: None,
+        polygon_stipple: None,
+        shades_samples: true,
+    };
+    let ops = DrawState {
+        key: ops_key,
+        uniforms: state.uniforms,
+        specialist: specialist(&ops_key),
+        textures: Default::default(),
+        samples: state.samples.clone(),
+        polygon_stipple: None,
+        shades_samples: false,
+    };
+    Some((shading, ops))
+}
+
+/// Hands each primitive of a draw whose samples share the shading to one
+/// scene, for every sample at once ([`Binner::triangle_shared`]): with
+/// `GL_MULTISAMPLE` on, triangles, and lines and points as the rectangles
+/// and squares [`Fan`] gives each sample, covered at each sample kept by
+/// `mask` (`glSampleCoverage`).
+pub(crate) struct SharedFan<'s> {
+    pub(crate) binner: Binner<'s>,
+    pub(crate) at: [SampleAt; 4],
+    pub(crate) mask: u32,
+}
+
+impl SharedFan<'_> {
+    /// Ends the draw: the first error of a flush.
+    pub(crate) fn finish(self) -> Result<(), softgl_jit::FragmentError> {
+        self.binner.finish()
+    }
+
+    fn quad(&mut self, (p, v): &Corners, flat: Option<&Varyings>, params: &RasterParams) {
+        let params = RasterParams {
+            offset: None,
+            ..*params
+        };
+        let (at, mask) = (&self.at, self.mask);
+        let b = &mut self.binner;
+        b.triangle_shared([p[0], p[1], p[2]], [&v[0], &v[1], &v[2]], flat, &params, (at, mask));
+        b.triangle_shared([p[0], p[2], p[3]], [&v[0], &v[2], &v[3]], flat, &params, (at, mask));
+    }
+}
+
+impl PrimSink for SharedFan<'_> {
+    fn triangle(&mut self, v: [&RasterVertex; 3], flat: Option<&Varyings>, params: &RasterParams) {
+        let p = crate::raster::Edges::window_points(v, params.height);
+        self.binner.triangle_shared(p, v, flat, params, (&self.at, self.mask));
+    }
+
+    fn line(&mut self, a: &RasterVertex, b: &RasterVertex, width: f32, flat: Option<&Varyings>, params: &RasterParams) {
+        if let Some(q) = line_rectangle(a, b, width, params) {
+            self.quad(&q, flat, params);
+        }
+    }
+
+    fn point(&mut self, v: &RasterVertex, size: f32, params: &RasterParams) {
+        if let Some(q) = point_square(v, size, params) {
+            self.quad(&q, None, params);
         }
     }
 }

@@ -332,6 +332,7 @@ impl Context {
             samples,
             // Polygon stipple applies to polygons only.
             polygon_stipple: None,
+            shades_samples: false,
         };
         Ok((state, params, vertex, shade))
     }

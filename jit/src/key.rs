@@ -685,6 +685,51 @@ impl FragmentKey {
         Ok(())
     }
 
+    /// The key split in two for a multisampled draw whose samples share
+    /// its shading, as llvmpipe runs the fragment shader once a pixel and
+    /// the per-sample tests and writes after it: the *shading half*, the
+    /// stages up to the alpha test and alpha to one, writing the unorm8
+    /// colour into an RGBA8 target and marking the fragments that pass by
+    /// writing the stencil reference, 1
+    /// ([`FragmentUniforms::shading_half`](crate::FragmentUniforms::shading_half)),
+    /// into its stencil (always passing, replacing), and the
+    /// *per-sample half*, the stages after them, taking the colour from the
+    /// span (and depth from the sample's Z plane when this key takes it
+    /// from the planes). Running the first over a primitive's pixels, then
+    /// the second over each sample's covered pixels among those marked,
+    /// with the colours written, leaves each sample's buffers as this key
+    /// leaves them (the contract test `split_keys_equal_the_whole`).
+    /// `None` for keys that cannot be split so: no colour from the planes,
+    /// a per-sample alpha-to-coverage threshold, a deep format.
+    pub fn split_shading(&self) -> Option<(FragmentKey, FragmentKey)> {
+        let shade = self.shade.filter(|s| s.color && s.coverage.quarters.is_none())?;
+        if self.color_format.is_deep() {
+            return None;
+        }
+        let shading = FragmentKey {
+            scissor: self.scissor,
+            alpha_test: self.alpha_test,
+            stencil: Some(StencilKey {
+                func: CompareFunc::Always,
+                fail: StencilOp::Keep,
+                zfail: StencilOp::Keep,
+                zpass: StencilOp::Replace,
+            }),
+            shade: Some(ShadeKey { depth: false, ..shade }),
+            ..FragmentKey::new(ColorFormat::Rgba8, None, true)
+        };
+        let per_sample = FragmentKey {
+            scissor: false,
+            alpha_test: None,
+            shade: shade.depth.then(|| ShadeKey {
+                depth: true,
+                ..ShadeKey::default()
+            }),
+            ..*self
+        };
+        Some((shading, per_sample))
+    }
+
     /// The stages this key runs, in GL order (GL 1.5 §4.1). A stage that is off
     /// is not in the list.
     pub fn stages(&self) -> Stages {

@@ -189,6 +189,34 @@ impl<'a> Target<'a> {
         self.samples_passed = self.samples_passed.wrapping_add(n);
     }
 
+    /// Rows `y0..y0 + rows` of a `width`×`height` framebuffer on their own,
+    /// as [`Target::into_bands`] makes them (bottom-up, `color` and
+    /// `stencil` holding those rows only): the colour a multisampled
+    /// draw's fragments are shaded into once, for all of its samples
+    /// (softgl's `raster::scene`, shared shading), in the frame of the
+    /// framebuffer's band (the same `height`, so the same rows for the
+    /// shading stage).
+    pub fn band(
+        (width, height): (u32, u32),
+        (y0, rows): (u32, u32),
+        color_format: ColorFormat,
+        color: &'a mut [u8],
+        stencil: Option<&'a mut [u8]>,
+    ) -> Result<Target<'a>, TargetError> {
+        let mut t = Target::new(
+            width,
+            rows,
+            color_format,
+            color,
+            width as usize * color_format.bytes_per_pixel(),
+            None,
+            stencil,
+        )?;
+        t.height = height.max(y0 + rows);
+        t.y0 = y0;
+        Ok(t)
+    }
+
     /// The same view with color row 0 at the top of the image (`OSMESA_Y_UP` false).
     pub fn with_top_down(mut self, top_down: bool) -> Self {
         self.top_down = top_down;

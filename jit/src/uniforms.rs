@@ -38,6 +38,20 @@ pub struct DeepUniforms {
     pub clamp: u32,
 }
 
+impl FragmentUniforms {
+    /// The uniforms of a key's shading half
+    /// ([`FragmentKey::split_shading`](crate::FragmentKey::split_shading)):
+    /// these, with the stencil reference 1 written through all-ones masks.
+    pub fn shading_half(&self) -> FragmentUniforms {
+        FragmentUniforms {
+            stencil_ref: 1,
+            stencil_value_mask: 0xff,
+            stencil_write_mask: 0xff,
+            ..*self
+        }
+    }
+}
+
 impl Default for FragmentUniforms {
     /// GL's initial state: empty scissor box (set with the framebuffer size),
     /// zero references, all-ones masks.

@@ -1668,3 +1668,107 @@ fn float_nans_are_stored_canonical_by_both_back_ends() {
     }
     assert!(nans > 100, "{nans} NaNs stored");
 }
+
+/// A key's shading half run over a span into an RGBA8 and stencil target
+/// (the stencil cleared first), and its per-sample half over the span's
+/// fragments the first marked, with the colours it wrote
+/// ([`FragmentKey::split_shading`]), on the interpreter (`jit: None`) or
+/// the halves' specialists; span by span, as a multisampled draw runs a
+/// primitive's pixels.
+fn run_split(
+    (shading, ops): (&FragmentKey, &FragmentKey),
+    jit: Option<(&Specialist, &Specialist)>,
+    u: &FragmentUniforms,
+    (spans, planes): (&[FragmentSpan], &[Planes]),
+    buf: &mut Buffers,
+) {
+    let (w, h) = (buf.width, buf.height);
+    let mut shade = Buffers {
+        width: w,
+        height: h,
+        stride: 4 * w as usize,
+        top_down: false,
+        format: ColorFormat::Rgba8,
+        color: vec![0; 4 * (w * h) as usize],
+        depth16: None,
+        depth32: None,
+        stencil: Some(vec![0; (w * h) as usize]),
+        passed: 0,
+    };
+    let su = u.shading_half();
+    for span in spans {
+        if let Some(st) = shade.stencil.as_mut() {
+            st.fill(0);
+        }
+        let one = std::slice::from_ref(span);
+        shade.counted(|t| {
+            match jit {
+                Some((s, _)) => s.run_with_planes(&su, &TextureSet::default(), one, planes, t),
+                None => interp::run_with_planes(shading, &su, &TextureSet::default(), one, planes, t),
+            }
+            .expect("the shading half names its target")
+        });
+        let mut o = span.clone();
+        o.mask = 0;
+        for i in 0..(span.len as usize).min(SPAN_MAX) {
+            let (x, y) = (span.x as usize + i, span.y as usize);
+            if span.mask >> i & 1 == 0 || x >= w as usize || y >= h as usize {
+                continue;
+            }
+            if shade.stencil.as_ref().is_some_and(|st| st[y * w as usize + x] == 1) {
+                o.mask |= 1 << i;
+                let c = &shade.color[4 * (y * w as usize + x)..][..4];
+                (o.r[i], o.g[i], o.b[i], o.a[i]) = (c[0], c[1], c[2], c[3]);
+            }
+        }
+        let one = std::slice::from_ref(&o);
+        buf.counted(|t| {
+            match jit {
+                Some((_, s)) => s.run_with_planes(u, &TextureSet::default(), one, planes, t),
+                None => interp::run_with_planes(ops, u, &TextureSet::default(), one, planes, t),
+            }
+            .expect("the per-sample half names the buffers")
+        });
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    /// A multisampled draw shading each pixel once (softgl's
+    /// `multisample::shared_halves`): a key's two halves, run one after
+    /// the other span by span, leave the buffers as the whole key does,
+    /// on the interpreter and on the halves' specialists.
+    #[test]
+    fn split_keys_equal_the_whole(
+        key in key(),
+        shade in shade_key(),
+        u in uniforms(),
+        seed in any::<u64>(),
+    ) {
+        let shade = ShadeKey {
+            color: true,
+            coverage: softgl_jit::AlphaCoverage { quarters: None, ..shade.coverage },
+            ..shade
+        };
+        let key = FragmentKey { shade: Some(shade), ..key };
+        prop_assume!(!key.color_format.is_deep());
+        let (shading, ops) = key.split_shading().expect("a shaded 8-bit key splits");
+        let mut rng = Rng(softgl_jit::rng::Rng::new((seed ^ (seed >> 32)) as u32));
+        let mut whole = Buffers::random(&key, &mut rng);
+        let mut spans = spans(&whole, &key, &mut rng);
+        let planes: Vec<Planes> = (0..1 + rng.below(3)).map(|_| planes(&mut rng)).collect();
+        for s in &mut spans {
+            s.planes = rng.below(planes.len() as u64) as u32;
+        }
+        let (mut split, mut split_jit) = (whole.clone(), whole.clone());
+        let t = TextureSet::default();
+        whole.counted(|b| interp::run_with_planes(&key, &u, &t, &spans, &planes, b).expect("the key names the buffers"));
+        run_split((&shading, &ops), None, &u, (&spans, &planes), &mut split);
+        let s = Specialist::compile(&shading).expect("the shading half compiles");
+        let o = Specialist::compile(&ops).expect("the per-sample half compiles");
+        run_split((&shading, &ops), Some((&s, &o)), &u, (&spans, &planes), &mut split_jit);
+        prop_assert_eq!(&split, &whole, "the interpreter's halves differ from the whole");
+        prop_assert_eq!(&split_jit, &whole, "the specialists' halves differ from the whole");
+    }
+}

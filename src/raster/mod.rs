@@ -264,6 +264,19 @@ pub(crate) fn ceil_div(a: i64, b: i64) -> i64 {
 /// Fills slot `i` of a span with the fragment at `x` (what the planes do not give).
 pub(crate) type FillSlot<'a> = dyn FnMut(u32, &mut FragmentSpan, usize) + 'a;
 
+/// The indices of the set bits of `mask`, lowest first.
+#[inline]
+pub(crate) fn set_bits(mask: u64) -> impl Iterator<Item = usize> {
+    let mut m = mask;
+    std::iter::from_fn(move || {
+        (m != 0).then(|| {
+            let i = m.trailing_zeros() as usize;
+            m &= m - 1;
+            i
+        })
+    })
+}
+
 /// The spans of at most [`softgl_jit::SPAN_MAX`] fragments that cover
 /// `x0..=x1` (inclusive), left to right: `(x, len, mask)`.
 #[inline]

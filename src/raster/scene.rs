@@ -28,6 +28,16 @@
 //! recorded with their vertices and rasterized by the row rasterizer with
 //! their bounds cut to the tile. Either way coverage decides each pixel on
 //! its own, so the pixels are those of the whole primitive at once.
+//!
+//! A multisampled draw whose samples share their shading
+//! ([`Scene::draw_shared`], `multisample.rs`) records each triangle once
+//! for the four samples: a word naming the samples with a pixel inside,
+//! then each one's record as above (its coverage at the sample, its planes
+//! with depth moved to the sample), binned once ([`GROUP`]). Such a scene
+//! is flushed with every sample's buffers (its clears clear them all), and
+//! a tile runs the triangle's shading half once, into a band's RGBA8 and
+//! stencil target, over the union of the samples' coverage, and its
+//! per-sample half into each sample's band ([`Scene::run_group`]).
 
 use super::background::Background;
 use super::stipple::PolygonStipple;
@@ -40,7 +50,8 @@ use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::shade::{slot, PLANES};
 use softgl_jit::texture::TextureSet;
 use softgl_jit::{
-    DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms, Planes, Specialist, Target,
+    ColorFormat, CompareFunc, DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms,
+    Planes, Specialist, StencilOp, Target, SPAN_MAX,
 };
 use std::cell::OnceCell;
 use std::collections::HashSet;
@@ -82,6 +93,10 @@ pub const TEXTURE_BOUND: usize = 64 << 20;
 /// lines and points (an index into `prims`).
 const CLEAR: u32 = 1 << 31;
 const TRI: u32 = 1 << 30;
+/// With [`TRI`]: a triangle of a multisampled draw whose samples share
+/// its shading ([`Binner::triangle_shared`]): its word in `records` holds
+/// the samples recorded (a bit each), and their records follow.
+const GROUP: u32 = 1 << 29;
 
 /// The largest bound a scene is flushed past, so that an index or a word
 /// offset in a bin entry or a record's class fits in 30 bits.
@@ -100,6 +115,11 @@ pub struct DrawState {
     pub samples: Option<Arc<AtomicU64>>,
     /// The polygon stipple its triangles are masked with, when enabled.
     pub polygon_stipple: Option<Box<[u32; 32]>>,
+    /// The shading half of a multisampled draw whose samples share it
+    /// ([`Scene::draw_shared`]): its key writes a band's shading target
+    /// (RGBA8 and a stencil marking the fragments the alpha test kept);
+    /// the draw after it in the scene is the per-sample half.
+    pub shades_samples: bool,
 }
 
 /// A recorded vertex's window position, depth and 1/w; its varyings (the
@@ -160,6 +180,8 @@ impl DrawState {
                 _ => false,
             }
             && self.polygon_stipple == other.polygon_stipple
+            && !self.shades_samples
+            && !other.shades_samples
     }
 }
 
@@ -395,9 +417,30 @@ impl Scene {
             background,
             threads,
             state,
+            ops: None,
             draw: None,
             error: None,
         }
+    }
+
+    /// Starts recording a draw into every sample of the multisampled `fb`
+    /// (its samples inside it, as the scene's flush writes them all) whose
+    /// samples share its shading: `shade` (a key of
+    /// [`DrawState::shades_samples`]) runs once for the pixels any sample
+    /// covers, `ops` (a key taking colours from the span) once for each
+    /// sample with that sample's coverage and depth, on the fragments the
+    /// shading kept. The triangles go to [`Binner::triangle_shared`].
+    pub(crate) fn draw_shared<'s>(
+        &'s mut self,
+        fb: &'s mut Framebuffer,
+        background: &'s mut Background,
+        threads: usize,
+        shade: DrawState,
+        ops: DrawState,
+    ) -> Binner<'s> {
+        let mut b = self.draw(fb, background, threads, shade);
+        b.ops = Some(ops);
+        b
     }
 
     /// Bytes past which a draw flushes (unless set: [`SCENE_BOUND`]).
@@ -494,37 +537,73 @@ impl Scene {
         results.into_iter().fold(Ok(()), Result::and)
     }
 
+    /// Runs the tiles into `fb`, and into its other samples when it has
+    /// them (a scene of draws sharing their samples' shading, recorded with
+    /// [`Scene::draw_shared`]: its clears clear every sample).
     fn run(&self, fb: &mut Framebuffer, threads: usize, help: Option<&AtomicBool>) -> Result<(), FragmentError> {
+        let mut more = std::mem::take(&mut fb.samples);
+        let r = self.run_samples(fb, &mut more, threads, help);
+        fb.samples = more;
+        r
+    }
+
+    fn run_samples(
+        &self,
+        fb: &mut Framebuffer,
+        more: &mut [Framebuffer],
+        threads: usize,
+        help: Option<&AtomicBool>,
+    ) -> Result<(), FragmentError> {
         debug_assert_eq!((fb.width(), fb.height()), (self.width, self.height));
         let plans: Vec<TexturePlan<'_>> = self.draws.iter().map(|d| d.textures.plan()).collect();
         let sets: Vec<TextureSet<'_>> = plans.iter().map(TexturePlan::set).collect();
         let target = fb.target();
+        // What a shared draw's shading half is checked against: a band's
+        // shading target has these formats (`SharedShade`).
+        let (mut probe_color, mut probe_stencil) = ([0u8; 4], [0u8; 1]);
+        let probe = Target::new(
+            1,
+            1,
+            ColorFormat::Rgba8,
+            &mut probe_color,
+            4,
+            None,
+            Some(&mut probe_stencil),
+        );
         // Each draw's stages are checked and set up once for all its tiles.
         let stages: Vec<Result<DrawStage<'_>, FragmentError>> = self
             .draws
             .iter()
             .zip(&sets)
             .map(|(d, set)| {
-                DrawStage::new(&d.key, &d.uniforms, set, d.specialist.as_deref(), &target)
+                let against = match (&probe, d.shades_samples) {
+                    (Ok(p), true) => p,
+                    _ => &target,
+                };
+                DrawStage::new(&d.key, &d.uniforms, set, d.specialist.as_deref(), against)
                     .map(|s| s.counting_into(d.samples.as_deref()))
             })
             .collect();
         // Only the bands with work run (an empty band has nothing to draw or
         // report), and on the calling thread when there is one: a scene of a
-        // few primitives (a multisampled frame's per-sample scenes, a state
-        // change's flush) then wakes no pool thread for nothing.
+        // few primitives (a state change's flush) then wakes no pool thread
+        // for nothing.
         let tiles_x = self.tiles_x as usize;
         let busy = |ty: usize| {
             let row = self.bins.get(ty * tiles_x..(ty + 1) * tiles_x);
             row.is_some_and(|r| r.iter().any(|b| !b.is_empty()))
         };
-        let bands: Vec<(usize, Target<'_>)> = target
-            .into_bands(TILE)
-            .into_iter()
-            .enumerate()
-            .filter(|&(ty, _)| busy(ty))
+        // Each band with the same rows of every sample (sample 0 first).
+        let mut lists: Vec<std::vec::IntoIter<Target<'_>>> = std::iter::once(target)
+            .chain(more.iter_mut().map(Framebuffer::target))
+            .map(|t| t.into_bands(TILE).into_iter())
             .collect();
-        let run_band = |(ty, mut band): (usize, Target<'_>)| self.run_band(ty as u32, &mut band, &stages);
+        let n = lists.first().map_or(0, ExactSizeIterator::len);
+        let bands: Vec<(usize, Vec<Target<'_>>)> = (0..n)
+            .map(|ty| (ty, lists.iter_mut().filter_map(Iterator::next).collect()))
+            .filter(|(ty, _)| busy(*ty))
+            .collect();
+        let run_band = |(ty, mut band): (usize, Vec<Target<'_>>)| self.run_band(ty as u32, &mut band, &stages);
         if let Some(help) = help.filter(|_| threads > 1 && bands.len() > 1) {
             return helped(threads, bands, help, run_band);
         }
@@ -662,19 +741,32 @@ impl Scene {
         }
     }
 
-    /// Runs the tiles of row `ty` into `band`, its rows of the framebuffer,
-    /// on one fragment stage whose batches go on across tiles while the
-    /// draw stays the same.
+    /// Runs the tiles of row `ty` into `bands`, its rows of the framebuffer
+    /// (of each sample, sample 0 first, when the scene's draws share their
+    /// samples' shading), on one fragment stage a sample whose batches go
+    /// on across tiles while the draw stays the same.
     fn run_band(
         &self,
         ty: u32,
-        band: &mut Target<'_>,
+        bands: &mut [Target<'_>],
         stages: &[Result<DrawStage<'_>, FragmentError>],
     ) -> Result<(), FragmentError> {
+        let Some((band, others)) = bands.split_first_mut() else {
+            return Ok(());
+        };
         let mut scratch = Box::<Scratch>::default();
         // What each draw's specialist reads of its textures, made when the
         // band first runs the draw.
         let views: Vec<OnceCell<DrawTextures<'_>>> = std::iter::repeat_with(OnceCell::new).take(stages.len()).collect();
+        // Shared shading: a target of the band's rows to shade into, and a
+        // stage on it (only when the scene has such draws).
+        let shared = !others.is_empty() && self.draws.iter().any(|d| d.shades_samples);
+        let (width, height, rows) = (band.width(), band.height(), band.rows());
+        let mut shade_mem = SharedShade::new(shared, width, rows.len());
+        let mut work = if shared { Some(GroupWork::boxed()) } else { None };
+        let mut shade_target = shade_mem.target((width, height), (rows.start, rows.end - rows.start));
+        let mut shade_stage = shade_target.as_mut().map(FragmentStage::new);
+        let mut others: Vec<FragmentStage<'_, '_>> = others.iter_mut().map(FragmentStage::new).collect();
         let mut stage = FragmentStage::new(band);
         let mut stipple_span = FragmentSpan::new(0, 0);
         for tx in 0..self.tiles_x {
@@ -696,8 +788,55 @@ impl Scene {
                 if e & CLEAR != 0 {
                     if let Some(c) = self.clears.get((e & !CLEAR) as usize) {
                         stage.clear(c, tile);
+                        for o in &mut others {
+                            o.clear(c, tile);
+                        }
                     }
                     current = usize::MAX;
+                    continue;
+                }
+                if e & GROUP != 0 {
+                    let at = (e & !(TRI | GROUP)) as usize;
+                    let Some(class) = self
+                        .records
+                        .get(at + 1)
+                        .and_then(|&w0| self.classes.get((w0 & !(3 << 30)) as usize))
+                    else {
+                        continue;
+                    };
+                    let d = class.draw as usize;
+                    let (Some(shade), Some(work)) = (shade_stage.as_mut(), work.as_mut()) else {
+                        continue;
+                    };
+                    if d != current {
+                        current = d;
+                        ok = match (stages.get(d), stages.get(d + 1)) {
+                            (Some(Ok(sd)), Some(Ok(od))) => {
+                                let sv = views[d].get_or_init(|| {
+                                    sd.specialist()
+                                        .map_or(DrawTextures::None, |s| s.texture_view(sd.textures()))
+                                });
+                                let ov = views[d + 1].get_or_init(|| {
+                                    od.specialist()
+                                        .map_or(DrawTextures::None, |s| s.texture_view(od.textures()))
+                                });
+                                shade.set_draw(sd, sv);
+                                stage.set_draw(od, ov);
+                                for o in &mut others {
+                                    o.set_draw(od, ov);
+                                }
+                                true
+                            }
+                            (Some(Err(e)), _) | (_, Some(Err(e))) => {
+                                stage.fail(*e);
+                                false
+                            }
+                            _ => false,
+                        };
+                    }
+                    if ok {
+                        self.run_group(at, class, tile, shade, &mut stage, &mut others, work);
+                    }
                     continue;
                 }
                 let (d, tri) = if e & TRI != 0 {
@@ -754,7 +893,430 @@ impl Scene {
                 }
             }
         }
-        stage.finish()
+        let mut r = stage.finish();
+        for o in others {
+            r = r.and(o.finish());
+        }
+        if let Some(s) = shade_stage {
+            r = r.and(s.finish());
+        }
+        r
+    }
+
+    /// Runs the shared triangle whose word is `records[at]` (`class`: its
+    /// samples' records') inside `tile`: the pixels any of its samples
+    /// covers are shaded once into `shade` (the scissor and alpha tests
+    /// too), then each sample's covered pixels among those the shading
+    /// kept go to its stage (`stage` sample 0's, `others` the rest) with
+    /// the shaded colours and the sample's depth: what a scene of that
+    /// sample alone would hand its stages, where they shaded again.
+    #[allow(clippy::too_many_arguments)]
+    fn run_group<'t, 'f>(
+        &self,
+        at: usize,
+        class: &Class,
+        tile: Rect,
+        shade: &mut FragmentStage<'_, '_>,
+        stage: &mut FragmentStage<'t, 'f>,
+        others: &mut [FragmentStage<'t, 'f>],
+        work: &mut GroupWork,
+    ) {
+        let Some(&present) = self.records.get(at) else { return };
+        let n = usize::from(class.n);
+        let slots = &class.slots[..n];
+        let height = class.params.height;
+        // Each sample's record: its coverage and where its planes are.
+        let mut recs: [Option<(usize, usize)>; 4] = [None; 4];
+        let mut preps: [Option<Prepared>; 4] = [None; 4];
+        let mut p = at + 1;
+        // The tile's rows the samples' boxes reach: `lo..hi`.
+        let rows = (tile.y1 - tile.y0) as usize;
+        let (mut lo, mut hi) = (rows, 0);
+        for s in 0..4 {
+            if present >> s & 1 == 0 {
+                continue;
+            }
+            let Some(&w0) = self.records.get(p) else { return };
+            let Some((prep, c)) = self.records.get(p + 1..).and_then(|w| Prepared::decode(w0 >> 30, w)) else {
+                return;
+            };
+            recs[s] = Some((p + 1 + c, s));
+            let r = prep.rect().intersect(tile);
+            if !r.is_empty() {
+                lo = lo.min((r.y0 - tile.y0) as usize);
+                hi = hi.max((r.y1 - tile.y0) as usize);
+            }
+            preps[s] = Some(prep);
+            p += 1 + c + 3 * n;
+        }
+        if lo >= hi {
+            return;
+        }
+        // Each sample's coverage of those rows, and their union.
+        let union = &mut work.union;
+        union[lo..hi].fill(0);
+        for (s, prep) in preps.iter().enumerate() {
+            let Some(prep) = prep else { continue };
+            work.masks[s][lo..hi].fill(0);
+            let mut sink = MaskSink {
+                rows: &mut work.masks[s],
+                origin: (tile.x0, tile.y0),
+                planes: &mut work.planes,
+            };
+            prep.cover(tile, height, &mut sink, |_| None);
+            for (u, m) in union[lo..hi].iter_mut().zip(&work.masks[s][lo..hi]) {
+                *u |= m;
+            }
+        }
+        let Some(first) = union[lo..hi].iter().position(|&m| m != 0) else {
+            return;
+        };
+        let lo = lo + first;
+        let hi = hi - union[lo..hi].iter().rev().position(|&m| m != 0).unwrap_or(0);
+        // Early tests: the pixels no sample's stencil and depth tests can
+        // pass are not shaded (the per-sample specialists shade only what
+        // those tests leave: a skybox behind the scene, a reflection
+        // outside its stencil, were shaded whole otherwise).
+        if let Some(early) = self.draws.get(class.draw as usize + 1).and_then(EarlyTests::of) {
+            let z = class.params.depth.is_some();
+            let pass = &mut work.pass;
+            pass[lo..hi].fill(0);
+            for &(planes, s) in recs.iter().flatten() {
+                let to = match s {
+                    0 => &mut *stage,
+                    s => match others.get_mut(s - 1) {
+                        Some(o) => o,
+                        None => continue,
+                    },
+                };
+                let plane = planes_of_at(&self.records, planes, n)
+                    .filter(|_| z)
+                    .and_then(|p| p.last_chunk::<3>())
+                    .map(|&[a0, dadx, dady]| [a0, dadx, dady].map(f32::from_bits));
+                let masks = &work.masks[s];
+                to.direct(|t| early.pass(t, plane, (tile, height), (lo, hi), masks, pass));
+            }
+            for (u, p) in work.union[lo..hi].iter_mut().zip(&pass[lo..hi]) {
+                *u &= p;
+            }
+            if work.union[lo..hi].iter().all(|&m| m == 0) {
+                return;
+            }
+        }
+        let union = &work.union;
+        let len = tile.x1 - tile.x0;
+        // Shade: the marks cleared where the pixels are, then every pixel
+        // any sample covers.
+        shade.direct(|t| {
+            for (r, &m) in union[..hi].iter().enumerate().skip(lo).filter(|(_, m)| **m != 0) {
+                let (lo, hi) = (m.trailing_zeros(), 63 - m.leading_zeros());
+                let i = t.index(tile.x0 + lo, tile.y0 + r as u32);
+                if let Some(st) = t.stencil_mut().and_then(|st| st.get_mut(i..=i + (hi - lo) as usize)) {
+                    st.fill(0);
+                }
+            }
+        });
+        let Some(first) = recs.iter().flatten().next().map(|&(planes, _)| planes) else {
+            return;
+        };
+        let planes_of = |p: usize| self.records.get(p..p + 3 * n).unwrap_or(&[]);
+        if let Some(to) = shade.planes_mut() {
+            copy_planes(to, slots, planes_of(first));
+        }
+        let span = &mut work.span;
+        for (r, &m) in union[..hi].iter().enumerate().skip(lo).filter(|(_, m)| **m != 0) {
+            (span.x, span.y, span.len, span.mask) = (tile.x0, tile.y0 + r as u32, len, m);
+            shade.span(span);
+        }
+        // The fragments the shading kept (marked 1), and their colours.
+        let (alive, colors) = (&mut work.alive, &mut work.colors);
+        shade.direct(|t| {
+            for (r, &m) in union[..hi].iter().enumerate().skip(lo) {
+                alive[r] = 0;
+                if m == 0 {
+                    continue;
+                }
+                let i = t.index(tile.x0, tile.y0 + r as u32);
+                let Some(st) = t.stencil_mut().and_then(|st| st.get(i..i + len as usize)) else {
+                    continue;
+                };
+                let mut keep = 0u64;
+                for b in crate::raster::set_bits(m) {
+                    if st.get(b).is_some_and(|&v| v == 1) {
+                        keep |= 1 << b;
+                    }
+                }
+                alive[r] = keep;
+            }
+            for (r, &m) in alive[..hi].iter().enumerate().skip(lo) {
+                let o = t.color_offset(tile.x0, tile.y0 + r as u32);
+                let (Some(c), Some(to)) = (t.color().get(o..o + 4 * len as usize), colors.get_mut(r)) else {
+                    continue;
+                };
+                for b in crate::raster::set_bits(m) {
+                    if let Some(px) = c.get(4 * b..4 * b + 4) {
+                        to[0][b] = px[0];
+                        to[1][b] = px[1];
+                        to[2][b] = px[2];
+                        to[3][b] = px[3];
+                    }
+                }
+            }
+        });
+        // Each sample: its covered pixels among those kept, with its depth.
+        let d32 = match class.params.depth {
+            Some(f @ DepthFormat::D32) => Some(f),
+            _ => None,
+        };
+        for &(planes, s) in recs.iter().flatten() {
+            let to = match s {
+                0 => &mut *stage,
+                s => match others.get_mut(s - 1) {
+                    Some(o) => o,
+                    None => continue,
+                },
+            };
+            let planes = planes_of(planes);
+            if let Some(p) = to.planes_mut() {
+                copy_planes(p, slots, planes);
+            }
+            // 32-bit depth is the span's, as `Prepared::cover` makes it.
+            let z = d32.and_then(|f| {
+                planes
+                    .last_chunk::<3>()
+                    .map(|&[a0, dadx, dady]| (f, f32::from_bits(a0), f32::from_bits(dadx), f32::from_bits(dady)))
+            });
+            for (r, (&m, &a)) in work.masks[s][..hi].iter().zip(&alive[..hi]).enumerate().skip(lo) {
+                let m = m & a;
+                if m == 0 {
+                    continue;
+                }
+                let y = tile.y0 + r as u32;
+                (span.x, span.y, span.len, span.mask) = (tile.x0, y, len, m);
+                if let Some(c) = colors.get(r) {
+                    (span.r, span.g, span.b, span.a) = (c[0], c[1], c[2], c[3]);
+                }
+                if let Some((f, a0, dadx, dady)) = z {
+                    let row = softgl_jit::interp::row_of(y, height);
+                    for b in crate::raster::set_bits(m) {
+                        let x = (tile.x0 + b as u32) as f32;
+                        let v = dady.mul_add(row, dadx.mul_add(x, a0));
+                        span.z[b] = crate::framebuffer::depth_to_unorm(f64::from(v), f);
+                    }
+                }
+                to.span(span);
+            }
+        }
+    }
+}
+
+/// A band's room for the shared shading of multisampled draws
+/// ([`Scene::run_group`]): the colour (RGBA8) and marks (a stencil) of its
+/// rows, and the per-tile work.
+struct SharedShade {
+    color: Vec<u8>,
+    stencil: Vec<u8>,
+}
+
+/// What [`Scene::run_group`] works in: each sample's coverage of a tile
+/// and their union (rows from the tile's bottom, bit `i` its column `i`;
+/// only the rows a triangle's boxes reach are cleared and read: zeroing
+/// them all was ~2% of a frame in `memset`), the fragments the shading
+/// kept and their colours (a channel a row), a span and planes to cover
+/// into.
+struct GroupWork {
+    masks: [[u64; TILE as usize]; 4],
+    union: [u64; TILE as usize],
+    /// The pixels some sample's early tests pass ([`EarlyTests`]).
+    pass: [u64; TILE as usize],
+    alive: [u64; TILE as usize],
+    colors: [[[u8; SPAN_MAX]; 4]; TILE as usize],
+    span: FragmentSpan,
+    planes: Planes,
+}
+
+impl SharedShade {
+    /// Room for a band `width` wide and `rows` high when `shared`, else none.
+    fn new(shared: bool, width: u32, rows: usize) -> SharedShade {
+        let n = if shared { width as usize * rows } else { 0 };
+        SharedShade {
+            color: vec![0; 4 * n],
+            stencil: vec![0; n],
+        }
+    }
+
+    /// The band's shading target, when there is room.
+    fn target(&mut self, size: (u32, u32), rows: (u32, u32)) -> Option<Target<'_>> {
+        if self.stencil.is_empty() {
+            return None;
+        }
+        Target::band(size, rows, ColorFormat::Rgba8, &mut self.color, Some(&mut self.stencil)).ok()
+    }
+}
+
+impl GroupWork {
+    fn boxed() -> Box<GroupWork> {
+        Box::new(GroupWork {
+            masks: [[0; TILE as usize]; 4],
+            union: [0; TILE as usize],
+            pass: [0; TILE as usize],
+            alive: [0; TILE as usize],
+            colors: [[[0; SPAN_MAX]; 4]; TILE as usize],
+            span: FragmentSpan::new(0, 0),
+            planes: Planes::default(),
+        })
+    }
+}
+
+/// The `3 * n` words of the planes at `at` of `records`.
+fn planes_of_at(records: &[u32], at: usize, n: usize) -> Option<&[u32]> {
+    records.get(at..at + 3 * n)
+}
+
+/// A shared draw's stencil and depth tests as the shading half runs them
+/// early ([`Scene::run_group`]): a pixel is shaded only when some sample
+/// covering it may pass both, in its buffers as they are before the
+/// primitive. Only for keys whose stencil test changes nothing where a
+/// fragment fails (`fail` and `zfail` keep): a pixel not shaded then
+/// leaves every buffer as the per-sample half would. The stencil test is
+/// exact; depth is evaluated in f64 and may fail only by more than a
+/// margin bounding the f32 rounding of the plane (so a pixel whose test
+/// passes is always shaded: the per-sample half runs the exact test).
+#[derive(Clone, Copy, Debug)]
+struct EarlyTests {
+    stencil: Option<(CompareFunc, u8, u8)>,
+    depth: Option<CompareFunc>,
+}
+
+impl EarlyTests {
+    /// The early tests of the per-sample half `ops`, if it has some that
+    /// may be run early.
+    fn of(ops: &DrawState) -> Option<EarlyTests> {
+        let k = &ops.key;
+        if k.stencil
+            .is_some_and(|s| s.fail != StencilOp::Keep || s.zfail != StencilOp::Keep)
+        {
+            return None;
+        }
+        let u = &ops.uniforms;
+        let stencil = k
+            .stencil
+            .map(|s| (s.func, u.stencil_ref & u.stencil_value_mask, u.stencil_value_mask));
+        let depth = k.depth.map(|d| d.func).filter(|f| *f != CompareFunc::Always);
+        (stencil.is_some() || depth.is_some()).then_some(EarlyTests { stencil, depth })
+    }
+
+    /// Sets in `pass` the pixels of `masks` (a sample's coverage of rows
+    /// `lo..hi` of `tile`) whose tests may pass in `t`, the sample's band;
+    /// `plane`: its depth plane, `height` the framebuffer's.
+    fn pass(
+        &self,
+        t: &mut Target<'_>,
+        plane: Option<[f32; 3]>,
+        (tile, height): (Rect, u32),
+        (lo, hi): (usize, usize),
+        masks: &[u64; TILE as usize],
+        pass: &mut [u64; TILE as usize],
+    ) {
+        for r in lo..hi {
+            // (Pixels an earlier sample passes need no more tests.)
+            let m = masks[r] & !pass[r];
+            if m == 0 {
+                continue;
+            }
+            let y = tile.y0 + r as u32;
+            let row = f64::from(softgl_jit::interp::row_of(y, height));
+            let i0 = t.index(tile.x0, y);
+            let mut keep = 0u64;
+            for b in crate::raster::set_bits(m) {
+                let i = i0 + b;
+                let stencil_ok = match (self.stencil, t.stencil_mut()) {
+                    (Some((func, reference, mask)), Some(st)) => {
+                        st.get(i).is_none_or(|&v| func.test(reference, v & mask))
+                    }
+                    _ => true,
+                };
+                if !stencil_ok {
+                    continue;
+                }
+                let depth_ok = match (self.depth, plane, t.depth_mut()) {
+                    (Some(func), Some([a0, dadx, dady]), Some(d)) => {
+                        let x = f64::from(tile.x0 + b as u32);
+                        let (a0, dadx, dady) = (f64::from(a0), f64::from(dadx), f64::from(dady));
+                        let z = a0 + dadx * x + dady * row;
+                        // f32 rounding of the plane's terms, generously.
+                        let err = (a0.abs() + (dadx * x).abs() + (dady * row).abs()) * (1.0 / (1u64 << 20) as f64)
+                            + 1.0 / (1u64 << 20) as f64;
+                        let (max, stored) = match d.format() {
+                            DepthFormat::D32F => (1.0, f64::from(f32::from_bits(d.get(i)))),
+                            f => (f64::from(f.max_value()), f64::from(d.get(i))),
+                        };
+                        if !z.is_finite() || !err.is_finite() {
+                            true
+                        } else {
+                            let z = z.clamp(0.0, 1.0) * max;
+                            let margin = err * max + 2.0;
+                            match func {
+                                CompareFunc::Never => false,
+                                CompareFunc::Less => z - margin < stored,
+                                CompareFunc::Lequal => z - margin <= stored,
+                                CompareFunc::Greater => z + margin > stored,
+                                CompareFunc::Gequal => z + margin >= stored,
+                                CompareFunc::Equal => (z - stored).abs() <= margin,
+                                CompareFunc::Notequal | CompareFunc::Always => true,
+                            }
+                        }
+                    }
+                    _ => true,
+                };
+                if depth_ok {
+                    keep |= 1 << b;
+                }
+            }
+            pass[r] |= keep;
+        }
+    }
+}
+
+/// Collects the rows a triangle covers in a tile as bit masks
+/// ([`Scene::run_group`]).
+struct MaskSink<'m> {
+    rows: &'m mut [u64; TILE as usize],
+    /// The tile's lower-left pixel.
+    origin: (u32, u32),
+    /// Where the rasterizer's planes go (never read).
+    planes: &'m mut Planes,
+}
+
+impl SpanSink for MaskSink<'_> {
+    fn span(&mut self, span: &FragmentSpan) {
+        let (Some(r), Some(dx)) = (span.y.checked_sub(self.origin.1), span.x.checked_sub(self.origin.0)) else {
+            return;
+        };
+        if let Some(row) = self.rows.get_mut(r as usize) {
+            if dx < 64 {
+                *row |= span.live_mask() << dx;
+            }
+        }
+    }
+
+    fn planes_mut(&mut self) -> Option<&mut Planes> {
+        Some(self.planes)
+    }
+
+    fn row(&mut self, y: u32, x0: u32, x1: u32) {
+        let (Some(r), Some(lo), Some(hi)) = (
+            y.checked_sub(self.origin.1),
+            x0.checked_sub(self.origin.0),
+            x1.checked_sub(self.origin.0),
+        ) else {
+            return;
+        };
+        if let Some(row) = self.rows.get_mut(r as usize) {
+            if lo <= hi && hi < 64 {
+                *row |= (u64::MAX >> (63 - (hi - lo))) << lo;
+            }
+        }
     }
 }
 
@@ -771,9 +1333,9 @@ impl Scene {
 /// as [`Scene::run`]'s.
 fn helped<'t>(
     threads: usize,
-    bands: Vec<(usize, Target<'t>)>,
+    bands: Vec<(usize, Vec<Target<'t>>)>,
     help: &AtomicBool,
-    run_band: impl Fn((usize, Target<'t>)) -> Result<(), FragmentError> + Sync,
+    run_band: impl Fn((usize, Vec<Target<'t>>)) -> Result<(), FragmentError> + Sync,
 ) -> Result<(), FragmentError> {
     let n = bands.len();
     let queue = Mutex::new(bands.into_iter());
@@ -782,7 +1344,7 @@ fn helped<'t>(
     // A band's panic, raised again once every band is accounted for.
     let panicked = Mutex::new(None);
     let next = || queue.lock().unwrap_or_else(PoisonError::into_inner).next();
-    let one = |band: (usize, Target<'t>)| {
+    let one = |band: (usize, Vec<Target<'t>>)| {
         let ty = band.0;
         let r = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_band(band))) {
             Ok(r) => r,
@@ -852,6 +1414,9 @@ pub struct Binner<'s> {
     background: &'s mut Background,
     threads: usize,
     state: DrawState,
+    /// A draw whose samples share the shading: its per-sample half,
+    /// recorded right after `state` ([`Scene::draw_shared`]).
+    ops: Option<DrawState>,
     /// The draw's index in the scene, once a primitive of it is recorded
     /// (again after a flush).
     draw: Option<u32>,
@@ -879,6 +1444,16 @@ impl Binner<'_> {
     fn first_draw(&mut self) -> u32 {
         match self.draw {
             Some(d) => d,
+            // A shared draw's two halves, never joined with another.
+            None if self.ops.is_some() => {
+                let d = self.scene.draws.len() as u32;
+                self.scene.bytes += 2 * std::mem::size_of::<DrawState>();
+                self.scene.hold_textures(&self.state);
+                self.scene.draws.push(self.state.clone());
+                self.scene.draws.extend(self.ops.clone());
+                self.draw = Some(d);
+                d
+            }
             // The scene's last draw runs with the same state: its primitives
             // join it (a strip per glBegin/glEnd is one run of a tile).
             None if self.scene.draws.last().is_some_and(|last| last.same_as(&self.state)) => {
@@ -1291,6 +1866,104 @@ impl Binner<'_> {
         scene.triangles += 1;
         scene.bytes += 4 * len;
         scene.bin(prep.rect(), entry);
+        if scene.full() {
+            self.flush();
+        }
+    }
+}
+
+impl Binner<'_> {
+    /// Records a triangle of a draw whose samples share the shading
+    /// ([`Scene::draw_shared`]), covered at each sample `s` of `at` that
+    /// `mask` keeps (bit `s`) as [`Binner::triangle_points`] covers it: a
+    /// word of the samples that have a pixel inside, then each one's
+    /// record (its coverage, and its planes with the depth plane moved to
+    /// the sample: the same words as a scene of that sample alone holds),
+    /// binned once into the tiles of their boxes. The planes are set up
+    /// once for the samples.
+    pub(crate) fn triangle_shared(
+        &mut self,
+        p: [(i64, i64); 3],
+        v: [&RasterVertex; 3],
+        flat: Option<&Varyings>,
+        params: &RasterParams,
+        (at, mask): (&[crate::multisample::SampleAt; 4], u32),
+    ) {
+        let preps: [Option<Prepared>; 4] = std::array::from_fn(|s| {
+            let a = &at[s];
+            (mask >> s & 1 != 0)
+                .then(|| Prepared::new(p.map(|(x, y)| (x - a.fixed.0, y - a.fixed.1)), params.bounds))
+                .flatten()
+        });
+        let present = preps
+            .iter()
+            .enumerate()
+            .fold(0u32, |m, (s, q)| if q.is_some() { m | 1 << s } else { m });
+        if present == 0 {
+            return;
+        }
+        let draw = self.draw();
+        let swap = plane_swap(p);
+        let scene = &mut *self.scene;
+        let class = scene.class(draw, params, v, swap);
+        // The planes once, the depth plane's place among them kept.
+        let mut planes = [0u32; 3 * PLANES];
+        let (mut n_planes, mut z) = (0, None);
+        setup_planes(v, swap, flat, params, &mut |k, plane| {
+            if k == slot::Z {
+                z = Some((n_planes, plane));
+            }
+            if let Some(to) = planes.get_mut(n_planes..n_planes + 3) {
+                to.copy_from_slice(&[plane.a0.to_bits(), plane.dadx.to_bits(), plane.dady.to_bits()]);
+                n_planes += 3;
+            }
+        });
+        let head = scene.used;
+        if scene.records.len() < head + 1 + RECORD {
+            Scene::grow(&mut scene.records, head + 1);
+        }
+        scene.records[head] = present;
+        scene.used = head + 1;
+        let mut words = 1;
+        let mut rect: Option<Rect> = None;
+        for (s, prep) in preps.iter().enumerate() {
+            let Some(prep) = prep else { continue };
+            let rec = &mut scene.record.0;
+            let Some(cover) = rec[1..].first_chunk_mut::<{ Prepared::WORDS }>() else {
+                return;
+            };
+            let (n, tag) = prep.encode(cover);
+            rec[0] = class | tag << 30;
+            let len = 1 + n + n_planes;
+            if let Some(to) = rec.get_mut(1 + n..len) {
+                to.copy_from_slice(&planes[..n_planes]);
+            }
+            if let Some((k, plane)) = z {
+                // As `triangle_points` moves it, in the same f32 operations.
+                let a = &at[s];
+                let a0 = plane.a0 + (plane.dadx * a.plane.0 + plane.dady * a.plane.1);
+                if let Some(w) = rec.get_mut(1 + n + k) {
+                    *w = a0.to_bits();
+                }
+            }
+            Scene::append(&mut scene.records, &mut scene.used, rec, len);
+            words += len;
+            let r = prep.rect();
+            rect = Some(match rect {
+                None => r,
+                Some(u) => Rect {
+                    x0: u.x0.min(r.x0),
+                    y0: u.y0.min(r.y0),
+                    x1: u.x1.max(r.x1),
+                    y1: u.y1.max(r.y1),
+                },
+            });
+        }
+        scene.triangles += 1;
+        scene.bytes += 4 * words;
+        if let Some(r) = rect {
+            scene.bin(r, TRI | GROUP | head as u32);
+        }
         if scene.full() {
             self.flush();
         }
