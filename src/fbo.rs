@@ -142,7 +142,7 @@ impl RenderbufferFormat {
         use RenderbufferFormat as F;
         use RenderbufferKind as K;
         Some(match self {
-            // llvmpipe: B4G4R4A4, B5G5R5A1 (docs/llvmpipe-facts.md §40).
+            // llvmpipe: B4G4R4A4, B5G5R5A1 (docs/llvmpipe-facts.md §44).
             F::Rgba | F::Rgba8 | F::Rgba2 | F::Rgba4 | F::Rgb5A1 => K::Color(ColorFormat::Rgba8),
             F::Rgb | F::Rgb8 => K::Color(ColorFormat::Rgb8),
             // llvmpipe: B2G3R3, B4G4R4X4, B5G5R5X1.

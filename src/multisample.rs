@@ -65,7 +65,7 @@ impl SampleAt {
     /// Sample `s` (below 4) of llvmpipe's 4× pattern, in a window's buffer
     /// when `window`: llvmpipe's rows run top-down there (a window system
     /// framebuffer is `Y_0_TOP`, `st_atom_framebuffer.c`) and the pattern,
-    /// placed along its rows, is mirrored in GL's y (`docs/llvmpipe-facts.md` §38).
+    /// placed along its rows, is mirrored in GL's y (`docs/llvmpipe-facts.md` §40).
     pub fn of_4x_in(s: usize, window: bool) -> SampleAt {
         let (x, y) = SAMPLE_POSITIONS_4X[s];
         let y = if window { 1.0 - y } else { y };

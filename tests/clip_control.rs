@@ -1,6 +1,6 @@
 //! `glClipControl` and float depth through the Rust API: errors, the z
 //! mapping into a 32-bit float depth buffer, the near plane, the y flip and
-//! facing (docs/llvmpipe-facts.md §38).
+//! facing (docs/llvmpipe-facts.md §39).
 
 use softgl::{
     Capability, ClearMask, ClipControl, ClipDepthMode, ClipOrigin, ColorFormat, CompareFunc, Context, DepthFormat,

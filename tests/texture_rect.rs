@@ -1,6 +1,6 @@
 //! Rectangle textures (`GL_ARB_texture_rectangle`) through the Rust API: the
 //! target's defaults, limits and errors (GL's, as Mesa 22.3.6 gives them:
-//! `docs/llvmpipe-facts.md` §39), the enable priority, and exact pixels of
+//! `docs/llvmpipe-facts.md` §46), the enable priority, and exact pixels of
 //! NEAREST sampling at unnormalized coordinates, worked out by hand. The C
 //! client `osmesa/tests/c/texrect.c` compares the same against llvmpipe.
 

@@ -45,7 +45,7 @@ pub fn clamp_colour(v: f32) -> f32 {
 /// The NaN both back ends store for a float channel whatever NaN the
 /// fragment's arithmetic made: x86's default NaN (`0xFFC00000`), what
 /// llvmpipe stores for a NaN its own blend generates (`inf · 0`: checked
-/// against llvmpipe, docs/llvmpipe-facts.md §39). NaN operands propagate
+/// against llvmpipe, docs/llvmpipe-facts.md §43). NaN operands propagate
 /// their sign and payload on x86 from whichever operand comes first, and the
 /// two back ends (and LLVM, free to commute a product) order some operands
 /// differently, so a NaN's bits are not kept; a clear stores its colour as given.

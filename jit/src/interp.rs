@@ -320,7 +320,7 @@ pub trait BlendChannel: Copy {
     fn one_minus(self) -> Self;
     /// `self < other ? self : other`: integer `min`, and for f32 the x86
     /// `minps(self, other)` llvmpipe's `lp_build_min` is (the second operand
-    /// where either is NaN; docs/llvmpipe-facts.md §38).
+    /// where either is NaN; docs/llvmpipe-facts.md §41).
     fn min_of(self, other: Self) -> Self;
 }
 

@@ -161,7 +161,7 @@ fn read_pixel(
             // Mesa 22 clamps reads of its float OSMesa buffer to [0, 1] (its
             // window-system framebuffer counts as fixed-point for
             // GL_CLAMP_READ_COLOR: docs/llvmpipe-facts.md, "Deep colour buffers").
-            // A float framebuffer object is read unclamped (§38).
+            // A float framebuffer object is read unclamped (§41).
             let p = if fb.color_format().is_deep() {
                 fb.pixel_f32(x, y)?.map(|c| {
                     f64::from(match clamp {
