@@ -12,6 +12,7 @@
 #define GL_GLEXT_PROTOTYPES
 #include "common.h"
 #include <GL/glext.h>
+#include "fbo_object.h"
 #include <math.h>
 
 #define W 32
@@ -63,20 +64,7 @@ static void scene(void) {
 }
 
 /* An object of a colour renderbuffer of `format` and a DEPTH24_STENCIL8 one. */
-static GLuint object(GLenum format, GLuint rbs[2]) {
-  GLuint fbo;
-  glGenFramebuffers(1, &fbo);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  glGenRenderbuffers(2, rbs);
-  glBindRenderbuffer(GL_RENDERBUFFER, rbs[0]);
-  glRenderbufferStorage(GL_RENDERBUFFER, format, W, H);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rbs[0]);
-  glBindRenderbuffer(GL_RENDERBUFFER, rbs[1]);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, W, H);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rbs[1]);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rbs[1]);
-  return fbo;
-}
+static GLuint object(GLenum format, GLuint rbs[2]) { return colour_depth_object(format, 0, W, H, rbs); }
 
 static float f[W * H * 4];
 static unsigned short us[W * H * 4];

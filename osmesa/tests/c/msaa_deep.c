@@ -7,6 +7,7 @@
 #define GL_GLEXT_PROTOTYPES
 #include "common.h"
 #include <GL/glext.h>
+#include "fbo_object.h"
 
 #define W 40
 #define H 30
@@ -60,18 +61,8 @@ static void scene(void) {
 }
 
 static GLuint object(GLenum format, int samples) {
-  GLuint fbo, rb[2];
-  glGenFramebuffers(1, &fbo);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  glGenRenderbuffers(2, rb);
-  glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, W, H);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
-  glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH24_STENCIL8, W, H);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
-  return fbo;
+  GLuint rbs[2];
+  return colour_depth_object(format, samples, W, H, rbs);
 }
 
 static float f[W * H * 4];
