@@ -21,37 +21,7 @@
 #include <string.h>
 #include <time.h>
 
-static double now(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return t.tv_sec + t.tv_nsec * 1e-9;
-}
-
-static int cmp(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return x < y ? -1 : x > y;
-}
-
-/* MuJoCo's plane list for an infinite plane with texrepeat 2 (render_context.c, makePlane). */
-static GLuint plane_list(void) {
-  const double zfar = 122.12278, sx = 1.0;
-  const double d = (2.1 * zfar + 2 * sx) / 200;
-  GLuint l = glGenLists(1);
-  glNewList(l, GL_COMPILE);
-  glBegin(GL_QUADS);
-  glNormal3d(0, 0, 1);
-  for (int x = 0; x < 200; x++)
-    for (int y = 0; y < 200; y++) {
-      double x0 = d * x - d * 100, x1 = x0 + d, y0 = d * y - d * 100, y1 = y0 + d;
-      glTexCoord2d(0.5 * x0, -0.5 * y0); glVertex3d(x0, y0, 0);
-      glTexCoord2d(0.5 * x1, -0.5 * y0); glVertex3d(x1, y0, 0);
-      glTexCoord2d(0.5 * x1, -0.5 * y1); glVertex3d(x1, y1, 0);
-      glTexCoord2d(0.5 * x0, -0.5 * y1); glVertex3d(x0, y1, 0);
-    }
-  glEnd();
-  glEndList();
-  return l;
-}
+#include "bench.h"
 
 static void checker(void) {
   static unsigned char t[256 * 256 * 3];
@@ -194,7 +164,7 @@ int main(int argc, char **argv) {
     OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
     if (!c || !OSMesaMakeCurrent(c, px, GL_UNSIGNED_BYTE, w, h)) return 1;
     checker();
-    GLuint l = plane_list();
+    GLuint l = plane_list(200, 1);
     camera();
     scene_state();
     char row[64];
@@ -210,7 +180,7 @@ int main(int argc, char **argv) {
   unsigned char *px = malloc((size_t)n * n * 4);
   OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
   if (!c || !OSMesaMakeCurrent(c, px, GL_UNSIGNED_BYTE, n, n)) return 1;
-  GLuint l = plane_list();
+  GLuint l = plane_list(200, 1);
   glViewport(1, 1, n - 2, n - 2);
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();

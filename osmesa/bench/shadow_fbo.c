@@ -22,56 +22,8 @@
 #include <string.h>
 #include <time.h>
 
-static PFNGLGENFRAMEBUFFERSPROC GenFramebuffers;
-static PFNGLBINDFRAMEBUFFERPROC BindFramebuffer;
-static PFNGLGENRENDERBUFFERSPROC GenRenderbuffers;
-static PFNGLBINDRENDERBUFFERPROC BindRenderbuffer;
-static PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC RenderbufferStorageMultisample;
-static PFNGLFRAMEBUFFERRENDERBUFFERPROC FramebufferRenderbuffer;
-static PFNGLFRAMEBUFFERTEXTURE2DPROC FramebufferTexture2D;
-static PFNGLCHECKFRAMEBUFFERSTATUSPROC CheckFramebufferStatus;
-static PFNGLBLITFRAMEBUFFERPROC BlitFramebuffer;
-static PFNGLACTIVETEXTUREPROC ActiveTexture;
-
-#define LOAD(v, name)                                                  \
-  do {                                                                 \
-    *(void **)&v = (void *)OSMesaGetProcAddress(name);                 \
-    if (!v) {                                                          \
-      fprintf(stderr, "no %s\n", name);                                \
-      exit(1);                                                         \
-    }                                                                  \
-  } while (0)
-
-static double now(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return t.tv_sec + t.tv_nsec * 1e-9;
-}
-
-static int cmp(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return x < y ? -1 : x > y;
-}
-
-static GLuint plane_list(int n) {
-  const double zfar = 122.12278, sx = 1.0;
-  const double d = (2.1 * zfar + 2 * sx) / n;
-  GLuint l = glGenLists(1);
-  glNewList(l, GL_COMPILE);
-  glBegin(GL_QUADS);
-  glNormal3d(0, 0, 1);
-  for (int x = 0; x < n; x++)
-    for (int y = 0; y < n; y++) {
-      double x0 = d * x - d * n / 2, x1 = x0 + d, y0 = d * y - d * n / 2, y1 = y0 + d;
-      glVertex3d(x0, y0, 0);
-      glVertex3d(x1, y0, 0);
-      glVertex3d(x1, y1, 0);
-      glVertex3d(x0, y1, 0);
-    }
-  glEnd();
-  glEndList();
-  return l;
-}
+#include "bench.h"
+#include "bench_fbo.h"
 
 static GLuint fbo_ms, fbo_resolve, fbo_shadow, shadow_tex;
 static int W, H;
@@ -241,25 +193,16 @@ int main(int argc, char **argv) {
   float *px = malloc((size_t)W * H * 4 * sizeof(float));
   OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
   if (!c || !OSMesaMakeCurrent(c, px, GL_FLOAT, W, H)) return 1;
-  LOAD(GenFramebuffers, "glGenFramebuffers");
-  LOAD(BindFramebuffer, "glBindFramebuffer");
-  LOAD(GenRenderbuffers, "glGenRenderbuffers");
-  LOAD(BindRenderbuffer, "glBindRenderbuffer");
-  LOAD(RenderbufferStorageMultisample, "glRenderbufferStorageMultisample");
-  LOAD(FramebufferRenderbuffer, "glFramebufferRenderbuffer");
-  LOAD(FramebufferTexture2D, "glFramebufferTexture2D");
-  LOAD(CheckFramebufferStatus, "glCheckFramebufferStatus");
-  LOAD(BlitFramebuffer, "glBlitFramebuffer");
-  LOAD(ActiveTexture, "glActiveTexture");
+  load_fbo_functions();
   setup();
   char row[64];
   if (strstr(rows, "quad")) {
-    GLuint l = plane_list(1);
+    GLuint l = plane_list(1, 0);
     snprintf(row, sizeof row, "quad-%dx%d", W, H);
     time_row(row, frames, l);
   }
   if (strstr(rows, "plane")) {
-    GLuint l = plane_list(200);
+    GLuint l = plane_list(200, 0);
     snprintf(row, sizeof row, "plane-%dx%d", W, H);
     time_row(row, frames, l);
   }

@@ -26,57 +26,8 @@
 #include <string.h>
 #include <time.h>
 
-static PFNGLGENFRAMEBUFFERSPROC GenFramebuffers;
-static PFNGLBINDFRAMEBUFFERPROC BindFramebuffer;
-static PFNGLGENRENDERBUFFERSPROC GenRenderbuffers;
-static PFNGLBINDRENDERBUFFERPROC BindRenderbuffer;
-static PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC RenderbufferStorageMultisample;
-static PFNGLFRAMEBUFFERRENDERBUFFERPROC FramebufferRenderbuffer;
-static PFNGLFRAMEBUFFERTEXTURE2DPROC FramebufferTexture2D;
-static PFNGLCHECKFRAMEBUFFERSTATUSPROC CheckFramebufferStatus;
-static PFNGLBLITFRAMEBUFFERPROC BlitFramebuffer;
-static PFNGLACTIVETEXTUREPROC ActiveTexture;
-
-#define LOAD(v, name)                                                  \
-  do {                                                                 \
-    *(void **)&v = (void *)OSMesaGetProcAddress(name);                 \
-    if (!v) {                                                          \
-      fprintf(stderr, "no %s\n", name);                                \
-      exit(1);                                                         \
-    }                                                                  \
-  } while (0)
-
-static double now(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return t.tv_sec + t.tv_nsec * 1e-9;
-}
-
-static int cmp(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return x < y ? -1 : x > y;
-}
-
-/* MuJoCo's plane list for an infinite plane with texrepeat 2 (makePlane). */
-static GLuint plane_list(void) {
-  const double zfar = 122.12278, sx = 1.0;
-  const double d = (2.1 * zfar + 2 * sx) / 200;
-  GLuint l = glGenLists(1);
-  glNewList(l, GL_COMPILE);
-  glBegin(GL_QUADS);
-  glNormal3d(0, 0, 1);
-  for (int x = 0; x < 200; x++)
-    for (int y = 0; y < 200; y++) {
-      double x0 = d * x - d * 100, x1 = x0 + d, y0 = d * y - d * 100, y1 = y0 + d;
-      glTexCoord2d(0.5 * x0, -0.5 * y0); glVertex3d(x0, y0, 0);
-      glTexCoord2d(0.5 * x1, -0.5 * y0); glVertex3d(x1, y0, 0);
-      glTexCoord2d(0.5 * x1, -0.5 * y1); glVertex3d(x1, y1, 0);
-      glTexCoord2d(0.5 * x0, -0.5 * y1); glVertex3d(x0, y1, 0);
-    }
-  glEnd();
-  glEndList();
-  return l;
-}
+#include "bench.h"
+#include "bench_fbo.h"
 
 static GLuint fbo_ms, fbo_resolve, fbo_shadow, shadow_tex, checker_tex;
 static int W, H;
@@ -282,18 +233,9 @@ int main(int argc, char **argv) {
   float *px = malloc((size_t)W * H * 4 * sizeof(float));
   OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
   if (!c || !OSMesaMakeCurrent(c, px, GL_FLOAT, W, H)) return 1;
-  LOAD(GenFramebuffers, "glGenFramebuffers");
-  LOAD(BindFramebuffer, "glBindFramebuffer");
-  LOAD(GenRenderbuffers, "glGenRenderbuffers");
-  LOAD(BindRenderbuffer, "glBindRenderbuffer");
-  LOAD(RenderbufferStorageMultisample, "glRenderbufferStorageMultisample");
-  LOAD(FramebufferRenderbuffer, "glFramebufferRenderbuffer");
-  LOAD(FramebufferTexture2D, "glFramebufferTexture2D");
-  LOAD(CheckFramebufferStatus, "glCheckFramebufferStatus");
-  LOAD(BlitFramebuffer, "glBlitFramebuffer");
-  LOAD(ActiveTexture, "glActiveTexture");
+  load_fbo_functions();
   setup(mode);
-  GLuint l = plane_list();
+  GLuint l = plane_list(200, 1);
   shadow_pass(l);
   long n = covered(l);
   double t[64];
