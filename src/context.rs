@@ -935,7 +935,13 @@ impl Context {
     /// at once (draws pending before it are rasterized first).
     pub fn clear(&mut self, mask: ClearMask) -> GlResult {
         self.outside()?;
-        self.ensure_draw()?;
+        // A clear of the whole depth buffer as an object's first use needs
+        // none of its depth texture's contents (`fbo::Context::take_depth`).
+        let s = &self.state;
+        self.fbo.depth_cleared = mask.depth && s.depth_write && !s.scissor_test;
+        let r = self.ensure_draw();
+        self.fbo.depth_cleared = false;
+        r?;
         let rect = self.scissored_bounds();
         if mask.accum && self.fb.has_accum() {
             self.finish_scene();

@@ -75,7 +75,7 @@ use crate::framebuffer::{DepthBuffer, Framebuffer, FramebufferDesc, Rect};
 use crate::names::Names;
 use crate::texture::jit::{BaseFormat, TexTarget, TexelFormat};
 use crate::texture::unpack::{depth_sampled, depth_unsampled};
-use crate::texture::TexImage;
+use crate::texture::{ImageUnits, TexImage};
 use softgl_jit::{pixel, ColorFormat, DepthFormat};
 
 /// `GL_MAX_RENDERBUFFER_SIZE` (llvmpipe: 16384, its largest texture).
@@ -349,20 +349,16 @@ pub struct FramebufferObject {
     pub read_buffer: Option<u32>,
     /// The colour bytes drawn when no colour attachment is (see the module doc).
     scratch: Vec<u8>,
-    /// The depth texture's pixels in depth-test units as the object last
-    /// wrote them back, with the texels they were written to: reused when
-    /// the image still holds those texels (every writer copies them first
-    /// while this holds a reference), which spares the conversion when a
-    /// shadow map is bound again (MuJoCo, every frame).
-    depth_cache: Option<DepthCache>,
-}
-
-/// See [`FramebufferObject::depth_cache`].
-#[derive(Clone, Debug)]
-struct DepthCache {
-    texels: std::sync::Arc<Vec<u8>>,
-    attachment: Attachment,
-    buffer: DepthBuffer,
+    /// The depth units a depth texture image held before the object last
+    /// rendered into it ([`TexImage::units`]), no longer read by anyone:
+    /// the buffer the next assembly draws into (a shadow map's two buffers
+    /// take turns, without fresh pages).
+    spare_depth: Option<DepthBuffer>,
+    /// The depth attachment's units the object last handed to its image
+    /// ([`TexImage::units`]): when the image still holds them, the next
+    /// assembly draws into them as they are (converting the texels back
+    /// is not always exact at 24 bits, and costs a pass over them).
+    rendered: Option<(Attachment, std::sync::Weak<Vec<u32>>)>,
 }
 
 impl Default for FramebufferObject {
@@ -374,7 +370,8 @@ impl Default for FramebufferObject {
             draw_buffer: Some(0),
             read_buffer: Some(0),
             scratch: Vec::new(),
-            depth_cache: None,
+            spare_depth: None,
+            rendered: None,
         }
     }
 }
@@ -413,6 +410,10 @@ pub struct FboState {
     /// The window's draw/read buffers are `GL_NONE` (`glDrawBuffer(GL_NONE)` on object 0).
     pub(crate) window_draw_none: bool,
     pub(crate) window_read_none: bool,
+    /// Set by `glClear` while it assembles the draw framebuffer when it
+    /// clears the whole depth buffer: a depth texture's contents are not
+    /// needed then ([`Context::take_depth`]).
+    pub(crate) depth_cleared: bool,
 }
 
 impl FboState {
@@ -1136,12 +1137,34 @@ impl Context {
         Ok(())
     }
 
+    /// Whether the samplers read a depth texture a framebuffer object
+    /// rendered into in its units, in place (the default), or the texels
+    /// written from them as each object releases it (before the units):
+    /// a switch for tests comparing the two, set before rendering.
+    #[doc(hidden)]
+    pub fn set_depth_units_sampled(&mut self, on: bool) {
+        self.finish_scene();
+        self.textures.get_mut().sample_units = on;
+    }
+
     /// Before a texture call that reads or writes texture `name`'s images:
     /// writes the draw framebuffer's copy back and releases it (assembled
     /// again at the next draw).
     pub(crate) fn sync_texture(&mut self, name: u32) {
         if self.fbo.holds_texture(name) {
             self.release_draw();
+        }
+        // Depth kept as units written into the texels, which the call reads.
+        let units = |o: &crate::texture::TextureObject| {
+            o.images
+                .iter()
+                .flatten()
+                .any(|i| i.units.as_ref().is_some_and(|u| !u.written))
+        };
+        if name != 0 && self.textures.object(name).is_some_and(units) {
+            if let Some(o) = self.textures.get_mut().object_mut(name) {
+                o.images.iter_mut().flatten().for_each(TexImage::materialise);
+            }
         }
     }
 
@@ -1307,14 +1330,9 @@ impl Context {
             }
             a => self.take_color(a, s, take)?,
         };
-        let cached = match (take, c.depth) {
-            (true, a @ Attachment::Texture { .. }) if s == 0 => self.cached_depth(c.fbo, a),
-            _ => None,
-        };
-        let depth = match (cached, c.depth) {
-            (Some(d), _) => Some(d),
-            (None, Attachment::None) => None,
-            (None, a) => Some(self.take_depth(a, s, take)?),
+        let depth = match c.depth {
+            Attachment::None => None,
+            a => Some(self.take_depth(c.fbo, a, s, take)?),
         };
         let stencil = match c.stencil {
             Attachment::None => None,
@@ -1380,18 +1398,47 @@ impl Context {
                 }),
                 Attachment::Texture { .. } if write => {
                     let bits = dv.format().bits();
+                    let (mut spare, mut rendered) = (None, None);
+                    let sample_units = self.textures.sample_units;
                     self.write_texture(c.depth, w, h, |img, off| {
-                        let t = &mut img.texels_mut()[off..];
-                        let n = w as usize * h as usize;
-                        convert_back(&dv, bits, &mut t[..4 * n]);
+                        // 24-bit and float depth of a 2D image: the buffer
+                        // becomes the image's depth, read in place.
+                        let units = match dv {
+                            DepthBuffer::D24(z) if img.depth == 1 => Ok((z, true)),
+                            DepthBuffer::D32F(z) if img.depth == 1 => Ok((z, false)),
+                            dv => Err(dv),
+                        };
+                        match units {
+                            Ok((z, unorm24)) => {
+                                let z = std::sync::Arc::new(z);
+                                rendered = Some(std::sync::Arc::downgrade(&z));
+                                let old = img.units.replace(ImageUnits {
+                                    z,
+                                    unorm24,
+                                    written: false,
+                                });
+                                if !sample_units {
+                                    img.materialise();
+                                }
+                                spare = old.and_then(|u| {
+                                    let z = std::sync::Arc::try_unwrap(u.z).ok()?;
+                                    Some(if u.unorm24 {
+                                        DepthBuffer::D24(z)
+                                    } else {
+                                        DepthBuffer::D32F(z)
+                                    })
+                                });
+                            }
+                            Err(dv) => {
+                                let t = &mut img.texels_mut()[off..];
+                                let n = w as usize * h as usize;
+                                convert_back(&dv, bits, &mut t[..4 * n]);
+                            }
+                        }
                     });
-                    let texels = self.texture_texels(c.depth);
-                    if let (Some(texels), Some(f)) = (texels, self.fbo.framebuffer_mut(c.fbo)) {
-                        f.depth_cache = Some(DepthCache {
-                            texels,
-                            attachment: c.depth,
-                            buffer: dv,
-                        });
+                    if let Some(f) = self.fbo.framebuffer_mut(c.fbo) {
+                        f.spare_depth = spare.or(f.spare_depth.take());
+                        f.rendered = rendered.map(|w| (c.depth, w));
                     }
                 }
                 _ => {}
@@ -1400,7 +1447,7 @@ impl Context {
         if let (Some(sv), a @ Attachment::Texture { layer, .. }, true) = (&stencil, c.stencil, write) {
             self.write_texture(a, w, h, |img, _| {
                 let off = img.stencil_offset(0, 0, layer as usize);
-                img.texels_mut()[off..off + sv.len()].copy_from_slice(sv);
+                img.stencil_texels_mut()[off..off + sv.len()].copy_from_slice(sv);
             });
         }
         if let (Some(sv), Attachment::Renderbuffer(n)) = (stencil, c.stencil) {
@@ -1446,21 +1493,24 @@ impl Context {
         }
     }
 
-    /// The depth buffer [`FramebufferObject::depth_cache`] holds for
-    /// attachment `a` of object `fbo`, when the image still has its texels.
-    fn cached_depth(&mut self, fbo: u32, a: Attachment) -> Option<DepthBuffer> {
-        let cache = self.fbo.framebuffer_mut(fbo)?.depth_cache.take()?;
-        let current = self.texture_texels(a)?;
-        (cache.attachment == a && std::sync::Arc::ptr_eq(&cache.texels, &current)).then_some(cache.buffer)
+    /// Object `fbo`'s spare depth buffer ([`FramebufferObject::spare_depth`])
+    /// when it is of `format` and `n` pixels.
+    fn spare_depth(&mut self, fbo: u32, format: DepthFormat, n: usize) -> Option<Vec<u32>> {
+        let f = self.fbo.framebuffer_mut(fbo)?;
+        match f.spare_depth.take()? {
+            DepthBuffer::D24(z) if format == DepthFormat::D24 && z.len() == n => Some(z),
+            DepthBuffer::D32F(z) if format == DepthFormat::D32F && z.len() == n => Some(z),
+            _ => None,
+        }
     }
 
-    /// The texels of texture attachment `a`'s image (shared).
-    fn texture_texels(&self, a: Attachment) -> Option<std::sync::Arc<Vec<u8>>> {
+    /// The depth units texture attachment `a`'s image holds ([`TexImage::units`]).
+    fn texture_units(&self, a: Attachment) -> Option<ImageUnits> {
         let Attachment::Texture { name, level, face, .. } = a else {
             return None;
         };
         let img = self.textures.object(name)?.image(level as usize, face as usize)?;
-        Some(std::sync::Arc::clone(&img.texels))
+        img.units.clone()
     }
 
     /// The texels of texture attachment `a`'s layer.
@@ -1496,7 +1546,12 @@ impl Context {
         }
     }
 
-    fn take_depth(&mut self, a: Attachment, s: usize, take: bool) -> GlResult<DepthBuffer> {
+    /// Sample `s`'s depth buffer of attachment `a` of object `fbo` (see
+    /// [`Context::assemble`]). A texture image's depth is its units when it
+    /// holds them, else its texels converted; a draw framebuffer whose
+    /// first use clears the whole depth buffer ([`FboState::depth_cleared`])
+    /// skips both (MuJoCo's shadow map, every pass).
+    fn take_depth(&mut self, fbo: u32, a: Attachment, s: usize, take: bool) -> GlResult<DepthBuffer> {
         match a {
             Attachment::Renderbuffer(n) => {
                 match self.rb_storage(n, s, take)? {
@@ -1516,7 +1571,56 @@ impl Context {
                 let Some(RenderbufferKind::Depth(format)) = kind else {
                     return Err(GlError::InvalidOperation);
                 };
+                let units = self.texture_units(a);
+                let cleared = take && self.fbo.depth_cleared;
+                // The units this object rendered, still the image's: drawn
+                // into again as they are (as the texels would be converted
+                // by another object, or once written over).
+                let rendered = match self.fbo.framebuffer_mut(fbo) {
+                    Some(f) if take && s == 0 => f.rendered.take(),
+                    _ => None,
+                };
+                let own = units.as_ref().filter(|u| {
+                    rendered
+                        .as_ref()
+                        .is_some_and(|(at, w)| *at == a && std::sync::Weak::as_ptr(w) == std::sync::Arc::as_ptr(&u.z))
+                });
+                if own.is_some() || cleared {
+                    let n = self.texture_layer(a).ok_or(GlError::InvalidOperation)?.1;
+                    let spare = if take { self.spare_depth(fbo, format, n) } else { None };
+                    let mut z = match spare {
+                        Some(z) => z,
+                        None => alloc(n, 0u32)?,
+                    };
+                    match own.filter(|_| !cleared) {
+                        Some(u) if u.z.len() == n && u.unorm24 == (format == DepthFormat::D24) => {
+                            z.copy_from_slice(&u.z)
+                        }
+                        // Units of another size or kind: the image was redefined
+                        // past `sync_texture`, which cannot happen.
+                        Some(_) => return Err(GlError::InvalidOperation),
+                        None => {}
+                    }
+                    return Ok(match format {
+                        DepthFormat::D16 => DepthBuffer::D16(z.into_iter().map(|v| v as u16).collect()),
+                        DepthFormat::D24 => DepthBuffer::D24(z),
+                        DepthFormat::D32 => DepthBuffer::D32(z),
+                        DepthFormat::D32F => DepthBuffer::D32F(z),
+                    });
+                }
                 let (t, n) = self.texture_layer(a).ok_or(GlError::InvalidOperation)?;
+                // Units the texels do not hold yet: converted from the texels
+                // they make (`TexImage::materialise` without the image).
+                let written;
+                let t = match units.filter(|u| !u.written) {
+                    Some(u) => {
+                        let mut v = alloc(4 * n, 0u8)?;
+                        u.write_texels(&mut v);
+                        written = v;
+                        &written[..]
+                    }
+                    None => t,
+                };
                 if format == DepthFormat::D32F {
                     let mut out = alloc(n, 0u32)?;
                     for (o, t) in out.iter_mut().zip(t.chunks_exact(4)) {
@@ -2058,6 +2162,7 @@ fn blit(
     };
     let image = Image {
         texels: &texels,
+        units: None,
         width: from.width(),
         height: from.height(),
         depth: 1,
@@ -2284,4 +2389,47 @@ fn alloc<T: Clone>(n: usize, value: T) -> GlResult<Vec<T>> {
     v.try_reserve_exact(n).map_err(|_| GlError::OutOfMemory)?;
     v.resize(n, value);
     Ok(v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::convert_back;
+    use crate::framebuffer::DepthBuffer;
+    use crate::texture::ImageUnits;
+    use std::sync::Arc;
+
+    /// Units kept in a depth texture make the texels the write-back made
+    /// (`glGetTexImage` and every other reader materialise them).
+    #[test]
+    fn units_materialise_as_the_write_back_converts() {
+        let mut z: Vec<u32> = (0..1u32 << 24).step_by(4093).collect();
+        z.extend([0, 1, 2, 0xff_fffe, 0xff_ffff, 0x7f_ffff, 0x80_0000, 0x80_0001]);
+        // Float depth: any bits, NaNs and negatives included.
+        let f: Vec<u32> = z
+            .iter()
+            .map(|&v| v.wrapping_mul(0x9e37_79b9))
+            .chain([0x7fc0_0001, 0xff80_0000, 0x8000_0000, 0x3f80_0000])
+            .collect();
+        for (d, units) in [
+            (DepthBuffer::D24(z.clone()), (z, true)),
+            (DepthBuffer::D32F(f.clone()), (f, false)),
+        ] {
+            let n = units.0.len();
+            let mut back = vec![0u8; 4 * n];
+            convert_back(&d, d.format().bits(), &mut back);
+            let u = ImageUnits {
+                z: Arc::new(units.0),
+                unorm24: units.1,
+                written: false,
+            };
+            let mut made = vec![0u8; 4 * n];
+            u.write_texels(&mut made);
+            assert_eq!(made, back);
+            // And what the samplers read of each unit.
+            for (i, &v) in u.z.iter().enumerate() {
+                let t = softgl_jit::texture::DepthUnits::texel(v, u.unorm24).to_bits();
+                assert_eq!(t.to_ne_bytes(), back[4 * i..4 * i + 4]);
+            }
+        }
+    }
 }

@@ -50,7 +50,8 @@ pub struct UnitView {
     /// `max(1, side >> (l − first))` (checked by `UnitView::new`).
     pub base_side: [[i32; 4]; 2],
     /// Levels `first..=last` (the others zero): every one non-empty, at
-    /// least 1×1, and holding `4 · width · height` bytes.
+    /// least 1×1, and holding `4 · width · height` bytes (texels, or
+    /// depth-test units: `crate::texture::DepthUnits`).
     pub levels: [LevelView; MAX_LEVELS],
 }
 
@@ -107,12 +108,21 @@ impl UnitView {
                 && (1..=NATIVE_MAX_SIDE).contains(&im.height)
                 && chained(im.width, base.width)
                 && chained(im.height, base.height)
-                && im.texels.len() >= 4 * im.width as usize * im.height as usize;
+                && match im.units {
+                    Some(u) => u.z.len() >= im.width as usize * im.height as usize,
+                    None => im.texels.len() >= 4 * im.width as usize * im.height as usize,
+                };
             if !ok {
                 return None;
             }
+            // Depth-test units are read as the texels (`f32` bits for float
+            // depth; 24-bit units converted per lookup: `statics.depth_units`).
+            let texels = match im.units {
+                Some(u) => u.z.as_ptr().cast::<u8>(),
+                None => im.texels.as_ptr(),
+            };
             *v.levels.get_mut(l as usize)? = LevelView {
-                texels: im.texels.as_ptr(),
+                texels,
                 width: im.width as i32,
                 height: im.height as i32,
             };

@@ -936,6 +936,7 @@ impl OwnedTexture {
             .iter()
             .map(|(texels, [width, height, depth])| Image {
                 texels,
+                units: None,
                 width: *width,
                 height: *height,
                 depth: *depth,

@@ -38,6 +38,7 @@ impl Scene {
             .iter()
             .map(|(t, [w, h, d])| Image {
                 texels: t,
+                units: None,
                 width: *w,
                 height: *h,
                 depth: *d,
@@ -266,6 +267,7 @@ fn unit_1d(min: Filter, mag: Filter, wrap: Wrap, format: TexelFormat) -> TexUnit
 fn red_at(unit: &TexUnitKey, texels: &[u8], width: u32, s: f32, border: [f32; 4]) -> f32 {
     let images = [Image {
         texels,
+        units: None,
         width,
         height: 1,
         depth: 1,

@@ -324,6 +324,7 @@ impl Context {
                     border: border as u32,
                     internal,
                     texels: Default::default(),
+                    units: None,
                 });
                 if let Some(slot) = gl.textures.get_mut().proxy_mut(t).image_mut(level, 0) {
                     *slot = img;

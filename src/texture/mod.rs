@@ -28,7 +28,7 @@ pub use jit::{
     BaseFormat, CombineFn, CombineSrc, DepthMode, EnvMode, Filter, MipFilter, Operand, TexTarget as TextureTarget,
     TexelFormat, Wrap,
 };
-pub use object::{SamplerState, TexImage, TextureObject};
+pub use object::{ImageUnits, SamplerState, TexImage, TextureObject};
 pub use store::{Sampling, TextureStore};
 
 use softgl_jit::CompareFunc;

@@ -23,6 +23,70 @@ pub struct TexImage {
     /// texels as they were when drawn: writers copy them first when shared
     /// ([`TexImage::texels_mut`]).
     pub texels: Arc<Vec<u8>>,
+    /// The depth texels as a framebuffer object rendered them (the depth
+    /// test's units, see [`ImageUnits`]); `texels`' depth part is stale
+    /// until [`ImageUnits::written`], its stencil plane never is. Readers of
+    /// the depth texels other than the samplers materialise them first
+    /// ([`TexImage::materialise`]: `Context::sync_texture`), writers drop
+    /// them ([`TexImage::texels_mut`]).
+    pub units: Option<ImageUnits>,
+}
+
+/// Depth texels kept in the depth test's units: the buffer a framebuffer
+/// object rendered into a 2D depth image (24-bit or float depth), handed
+/// to the image instead of written back as `Depth32F` texels, and read by
+/// the samplers in place ([`softgl_jit::texture::DepthUnits`]). The
+/// write-back was 64 MiB read and 64 MiB written per pass into a 4096²
+/// shadow map, ~4.4 ms each, two a MuJoCo frame.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImageUnits {
+    /// One unit a texel, the image's size.
+    pub z: Arc<Vec<u32>>,
+    /// 24-bit unorm units, else float depth (`f32` bits).
+    pub unorm24: bool,
+    /// The texels hold them too ([`TexImage::materialise`]).
+    pub written: bool,
+}
+
+impl ImageUnits {
+    /// The sampler's view.
+    pub fn view(&self) -> softgl_jit::texture::DepthUnits<'_> {
+        softgl_jit::texture::DepthUnits {
+            z: &self.z,
+            unorm24: self.unorm24,
+        }
+    }
+
+    /// Writes the units as `Depth32F` texels into `out` (4 bytes a unit),
+    /// on two threads for big images.
+    pub fn write_texels(&self, out: &mut [u8]) {
+        let unorm24 = self.unorm24;
+        // One loop a kind, for each to vectorize (`cvtdq2ps`).
+        let run = |z: &[u32], out: &mut [u8]| {
+            if unorm24 {
+                for (o, &z) in out.chunks_exact_mut(4).zip(z) {
+                    o.copy_from_slice(&softgl_jit::texture::DepthUnits::texel(z, true).to_ne_bytes());
+                }
+            } else {
+                for (o, &z) in out.chunks_exact_mut(4).zip(z) {
+                    o.copy_from_slice(&z.to_ne_bytes());
+                }
+            }
+        };
+        let n = self.z.len().min(out.len() / 4);
+        let (z, out) = (&self.z[..n], &mut out[..4 * n]);
+        if n < 1 << 20 {
+            run(z, out);
+            return;
+        }
+        let half = n / 2;
+        let (za, zb) = z.split_at(half);
+        let (oa, ob) = out.split_at_mut(4 * half);
+        std::thread::scope(|s| {
+            s.spawn(|| run(za, oa));
+            run(zb, ob);
+        });
+    }
 }
 
 impl TexImage {
@@ -40,12 +104,37 @@ impl TexImage {
                 n * (internal.storage().texel_format().bytes_per_texel()
                     + internal.stencil_bits() as usize / 8)
             ]),
+            units: None,
         }
     }
 
-    /// The texels to write, copied first if a deferred draw still reads them.
+    /// The texels to write, copied first if a deferred draw still reads
+    /// them; depth kept as units is materialised first, and dropped.
     pub fn texels_mut(&mut self) -> &mut Vec<u8> {
+        self.materialise();
+        self.units = None;
         Arc::make_mut(&mut self.texels)
+    }
+
+    /// The texels to write the stencil plane of (a packed depth-stencil
+    /// image), leaving depth kept as units as it is.
+    pub fn stencil_texels_mut(&mut self) -> &mut Vec<u8> {
+        Arc::make_mut(&mut self.texels)
+    }
+
+    /// Depth kept as units ([`TexImage::units`]) written into the
+    /// `Depth32F` texels, which hold it again (the units stay: they are
+    /// what the framebuffer object that rendered them draws into next).
+    pub fn materialise(&mut self) {
+        let Some(u) = self.units.as_mut().filter(|u| !u.written) else {
+            return;
+        };
+        u.written = true;
+        let n = self.width as usize * self.height as usize * self.depth as usize;
+        let t = Arc::make_mut(&mut self.texels);
+        if let Some(out) = t.get_mut(..4 * n) {
+            u.write_texels(out);
+        }
     }
 
     pub fn texel_format(&self) -> TexelFormat {

@@ -5,7 +5,7 @@ use super::jit::{
     quantized_lod_bias, BaseFormat, Image, MipFilter, SamplerKey, SamplerStatics, TexTarget, TextureRef, Wrap,
     MAX_UNITS,
 };
-use super::object::TextureObject;
+use super::object::{ImageUnits, TextureObject};
 use crate::names::Names;
 use std::sync::Arc;
 
@@ -36,6 +36,10 @@ pub struct TextureStore {
     pub(crate) proxies: [TextureObject; 5],
     bindings: [[u32; 5]; MAX_UNITS],
     active: usize,
+    /// The samplers read depth kept as units ([`super::TexImage::units`])
+    /// in place; off (a switch for tests comparing the two), they read the
+    /// texels written from them when the framebuffer object releases them.
+    pub(crate) sample_units: bool,
 }
 
 impl Default for TextureStore {
@@ -52,6 +56,7 @@ impl TextureStore {
             proxies: TARGETS.map(TextureObject::new),
             bindings: [[0; 5]; MAX_UNITS],
             active: 0,
+            sample_units: true,
         }
     }
 
@@ -185,6 +190,7 @@ impl TextureStore {
             .map(|i| match i {
                 Some(i) => Image {
                     texels: &i.texels,
+                    units: i.units.as_ref().filter(|_| self.sample_units).map(ImageUnits::view),
                     width: i.width,
                     height: i.height,
                     depth: i.depth,
@@ -198,7 +204,12 @@ impl TextureStore {
             images,
             shared: levels
                 .iter()
-                .map(|i| i.as_ref().map(|i| Arc::clone(&i.texels)))
+                .map(|i| {
+                    i.as_ref().map(|i| {
+                        let units = i.units.clone().filter(|_| self.sample_units);
+                        (Arc::clone(&i.texels), units)
+                    })
+                })
                 .collect(),
             params: TextureRef {
                 images: &[],
@@ -235,8 +246,9 @@ pub struct Sampling<'a> {
     pub base: BaseFormat,
     /// Level `l`, face `f` at `l * faces + f`, up to the last level sampled; missing levels are empty.
     pub images: Vec<Image<'a>>,
-    /// The texels behind `images` (`None` for empty ones), for [`Sampling::share`].
-    shared: Vec<Option<Arc<Vec<u8>>>>,
+    /// The texels (and depth units) behind `images` (`None` for empty
+    /// ones), for [`Sampling::share`].
+    shared: Vec<Option<(SharedTexels, Option<ImageUnits>)>>,
     /// The rest of the sampler's view: no images (they are [`Sampling::images`]),
     /// the object's LOD bias quantized ([`quantized_lod_bias`]).
     params: TextureRef<'static>,
@@ -251,15 +263,15 @@ pub type SharedTexels = Arc<Vec<u8>>;
 pub struct SharedSampling {
     key: SamplerKey,
     base: BaseFormat,
-    /// Each image's texels (`None`: empty) and size.
-    images: Vec<(Option<SharedTexels>, [u32; 3])>,
+    /// Each image's texels (`None`: empty), depth units and size.
+    images: Vec<(Option<(SharedTexels, Option<ImageUnits>)>, [u32; 3])>,
     params: TextureRef<'static>,
 }
 
 impl SharedSampling {
     /// The texels held.
     pub fn texels(&self) -> impl Iterator<Item = &SharedTexels> {
-        self.images.iter().filter_map(|(t, _)| t.as_ref())
+        self.images.iter().filter_map(|(t, _)| t.as_ref().map(|(t, _)| t))
     }
 
     /// The sampling again, viewing the texels held.
@@ -268,8 +280,9 @@ impl SharedSampling {
             .images
             .iter()
             .map(|(t, [width, height, depth])| match t {
-                Some(t) => Image {
+                Some((t, u)) => Image {
                     texels: t,
+                    units: u.as_ref().map(ImageUnits::view),
                     width: *width,
                     height: *height,
                     depth: *depth,

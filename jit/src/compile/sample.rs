@@ -216,7 +216,8 @@ impl Gen<'_> {
     /// projected `[s, t, r]`: the nearest texel of level `first` (no λ),
     /// compared with the reference r (clamped to [0, 1] unless the texture
     /// is float depth, the key's `statics.float_depth`) if the key compares,
-    /// through `GL_DEPTH_TEXTURE_MODE`.
+    /// through `GL_DEPTH_TEXTURE_MODE`. A level of 24-bit depth-test units
+    /// (`statics.depth_units`) converts each unit as the reference does.
     pub(super) fn sample_depth(
         &mut self,
         u: usize,
@@ -248,6 +249,18 @@ impl Gen<'_> {
         let row = self.b.ins().imul(y, size[0]);
         let index = self.b.ins().iadd(row, x);
         let d = self.gather_f32(texels, index);
+        // 24-bit depth-test units (`DepthUnits::texel`): `(z & 0x7fffffff)`
+        // through i32 (`cvtdq2ps`), times `f32(1/(2^24 − 1))`.
+        let d = if key.statics.depth_units {
+            let z = self.b.ins().bitcast(types::I32X4, MemFlagsData::new(), d);
+            let mask = self.splat(0x7fff_ffff);
+            let z = self.b.ins().band(z, mask);
+            let z = self.b.ins().fcvt_from_sint(F32X4, z);
+            let scale = self.fconst(crate::texture::UNORM24_SCALE);
+            self.b.ins().fmul(z, scale)
+        } else {
+            d
+        };
         let x = match key.compare {
             None => d,
             Some(func) => {

@@ -13,7 +13,7 @@ use super::arith::{
     fract, fract_safe, ifloor, ifloor_fract, iround, itrunc, lerp, lerp8, maxps, minps, srgb8_to_linear,
     unorm16_to_float, unorm8_to_float,
 };
-use super::{Filter, Image, TexelFormat, Wrap};
+use super::{DepthUnits, Filter, Image, TexelFormat, Wrap};
 use crate::key::CompareFunc;
 
 /// One level (one face) to sample, with what the coordinates need.
@@ -71,6 +71,10 @@ impl Level<'_> {
             }
             TexelFormat::Depth32F => {
                 let i = self.index(x, y, z).unwrap_or(usize::MAX);
+                if let Some(u) = self.image.units {
+                    let d = u.z.get(i).map_or(0.0, |&z| DepthUnits::texel(z, u.unorm24));
+                    return [d, 0.0, 0.0, 1.0];
+                }
                 let d = self
                     .image
                     .texels

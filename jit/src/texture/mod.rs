@@ -177,6 +177,9 @@ pub struct SamplerStatics {
     /// A compared depth texture is float depth ([`TextureRef::float_depth`]:
     /// the reference is not clamped; llvmpipe's format is static too).
     pub float_depth: bool,
+    /// The sampled level's depth texels are 24-bit depth-test units
+    /// ([`DepthUnits::unorm24`]), converted per lookup.
+    pub depth_units: bool,
 }
 
 impl SamplerStatics {
@@ -192,6 +195,13 @@ impl SamplerStatics {
             apply_max: lod.apply_max,
             bias_non_zero: lod.bias != 0.0,
             float_depth: key.format == TexelFormat::Depth32F && key.compare.is_some() && tex.float_depth,
+            depth_units: key.format == TexelFormat::Depth32F
+                && key.target != TexTarget::Cube
+                && tex
+                    .images
+                    .get(tex.base_level as usize)
+                    .and_then(|i| i.units)
+                    .is_some_and(|u| u.unorm24),
         }
     }
 
@@ -408,15 +418,50 @@ pub struct TexUnitKey {
 #[derive(Clone, Copy, Debug)]
 pub struct Image<'a> {
     pub texels: &'a [u8],
+    /// A `Depth32F` image's texels as the depth test's units, when a
+    /// framebuffer object rendered into it: they are the texels then
+    /// (`texels` is stale).
+    pub units: Option<DepthUnits<'a>>,
     pub width: u32,
     pub height: u32,
     pub depth: u32,
+}
+
+/// The depth texels of an image a framebuffer object rendered into, kept
+/// in the depth test's units rather than written back as `Depth32F`
+/// texels (`softgl::fbo`: the write-back was 64 MiB read and 64 MiB
+/// written per pass into a 4096² shadow map, ~4.4 ms, two a MuJoCo
+/// frame). Texel `i` is [`DepthUnits::texel`] of `z[i]`, what the
+/// write-back would have stored.
+#[derive(Clone, Copy, Debug)]
+pub struct DepthUnits<'a> {
+    pub z: &'a [u32],
+    /// 24-bit unorm units, else float depth (`f32` bits).
+    pub unorm24: bool,
+}
+
+/// `f32(1 / (2^24 − 1))`: a 24-bit unit's step as the sampler reads it.
+pub const UNORM24_SCALE: f32 = (1.0 / 16_777_215.0f64) as f32;
+
+impl DepthUnits<'_> {
+    /// The `Depth32F` texel of depth-test unit `z`: `z · f32(1/(2^24 − 1))`
+    /// for 24-bit units (through i32, exact below 2^31: llvmpipe's
+    /// `Z24` fetch), the stored float for float depth.
+    #[inline(always)]
+    pub fn texel(z: u32, unorm24: bool) -> f32 {
+        if unorm24 {
+            (z & 0x7fff_ffff) as i32 as f32 * UNORM24_SCALE
+        } else {
+            f32::from_bits(z)
+        }
+    }
 }
 
 impl Image<'_> {
     /// An image with no texels (levels outside the sampled range).
     pub const EMPTY: Image<'static> = Image {
         texels: &[],
+        units: None,
         width: 0,
         height: 0,
         depth: 0,

@@ -60,6 +60,7 @@ pub fn images(levels: &[(u32, u32, Vec<u8>)]) -> Vec<Image<'_>> {
         .iter()
         .map(|(width, height, texels)| Image {
             texels,
+            units: None,
             width: *width,
             height: *height,
             depth: 1,
