@@ -35,6 +35,23 @@
 //!   (MuJoCo sets `GL_NONE` on its shadow map at every bind: that was a
 //!   second 64 MiB write-back per pass, 48 M instructions a frame of
 //!   `osmesa/bench/shadow_fbo.c`).
+//! - **Depth textures** of 24 bits or float depth (2D images) are not
+//!   written back: releasing the framebuffer hands its depth buffer to the
+//!   image ([`TexImage::units`]), which the samplers read in place,
+//!   converting each unit as the write-back did (`z · f32(1/(2^24 − 1))`,
+//!   float depth as stored: `softgl_jit::texture::DepthUnits`). The texels
+//!   are written from the units only when a texture call reads them
+//!   (`sync_texture`) or writes them (`TexImage::texels_mut`), and a read
+//!   framebuffer converts them as it converted the texels. The object
+//!   keeps the image's previous units, once no draw reads them, as the
+//!   buffer to draw into next ([`FramebufferObject::spare_depth`]); the
+//!   units it handed over are drawn into again as they are (as the former
+//!   cache did), copied; and a `glClear` of the whole depth buffer as the
+//!   object's first use skips even that copy ([`FboState::depth_cleared`]):
+//!   MuJoCo's shadow map pass. The write-back was 64 MiB read and 64 MiB
+//!   written per pass, ~4.4 ms, two a MuJoCo frame. 16 and 32-bit unorm
+//!   depth textures are still written back (their units are not the
+//!   `u32` texels the native sampler reads, and MuJoCo uses neither).
 //! - A blit's read object lends its renderbuffers (moved out and back, as
 //!   for drawing) unless the draw framebuffer holds one of them; other reads
 //!   copy them. Unscaled blits of 8-bit colour copy rows, and a 4× resolve
@@ -660,7 +677,17 @@ impl Context {
         if matches!(target, FramebufferTarget::Both | FramebufferTarget::Draw) && self.fbo.draw != name {
             self.release_draw();
             self.fbo.draw = name;
-            self.acquire_draw();
+            // An object whose depth texture holds the units it rendered is
+            // assembled at its first draw, clear or read (as after a texture
+            // call): a clear of its whole depth buffer then copies none of
+            // them (MuJoCo binds its shadow map, then clears it).
+            let units = self
+                .fbo
+                .framebuffer(name)
+                .is_some_and(|f| f.rendered.as_ref().is_some_and(|(a, _)| *a == f.depth));
+            if !units {
+                self.acquire_draw();
+            }
         }
         if matches!(target, FramebufferTarget::Both | FramebufferTarget::Read) {
             self.fbo.read = name;

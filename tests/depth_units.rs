@@ -23,6 +23,19 @@ fn triangles(gl: &mut Context, tris: &[[[f32; 3]; 3]]) {
     gl.end().unwrap();
 }
 
+/// A quad over the viewport sampling unit 0, r across it for the compare.
+fn sample(gl: &mut Context) {
+    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
+    gl.color3(1.0, 1.0, 1.0);
+    gl.begin(PrimitiveMode::Quads).unwrap();
+    for (x, y, r) in [(-1.0, -1.0, 0.0), (1.0, -1.0, 1.0), (1.0, 1.0, 0.9), (-1.0, 1.0, 0.2)] {
+        gl.tex_coord4((x + 1.0) / 2.0 * 1.1 - 0.05, (y + 1.0) / 2.0 * 0.97, r, 1.0);
+        gl.vertex3(x, y, 0.0);
+    }
+    gl.end().unwrap();
+    gl.disable(Capability::Texture(TextureTarget::D2)).unwrap();
+}
+
 struct Case {
     format: InternalFormat,
     filter: Filter,
@@ -94,15 +107,19 @@ fn run(c: &Case, units: bool) -> (Vec<[f32; 4]>, Vec<u8>) {
     gl.renderbuffer_storage(0, F::Rgba32F, N, N).unwrap();
     gl.framebuffer_renderbuffer(T::Both, P::Color(0), rb).unwrap();
     gl.viewport(0, 0, N, N).unwrap();
-    gl.enable(Capability::Texture(TextureTarget::D2)).unwrap();
-    gl.color3(1.0, 1.0, 1.0);
-    gl.begin(PrimitiveMode::Quads).unwrap();
-    for (x, y, r) in [(-1.0, -1.0, 0.0), (1.0, -1.0, 1.0), (1.0, 1.0, 0.9), (-1.0, 1.0, 0.2)] {
-        gl.tex_coord4((x + 1.0) / 2.0 * 1.1 - 0.05, (y + 1.0) / 2.0 * 0.97, r, 1.0);
-        gl.vertex3(x, y, 0.0);
-    }
-    gl.end().unwrap();
-    let samples = gl.read_pixels_f32(0, 0, N, N).unwrap();
+    sample(&mut gl);
+    let mut samples = gl.read_pixels_f32(0, 0, N, N).unwrap();
+    // Bound again and cleared first (the units not copied: a spare buffer),
+    // then sampled again.
+    gl.bind_framebuffer(T::Both, shadow).unwrap();
+    gl.clear_depth(0.625).unwrap();
+    gl.clear(ClearMask::DEPTH).unwrap();
+    gl.enable(Capability::DepthTest).unwrap();
+    triangles(&mut gl, &[[[-1.0, -1.0, 0.5], [1.0, 0.5, -0.7], [-0.5, 1.0, 0.1]]]);
+    gl.disable(Capability::DepthTest).unwrap();
+    gl.bind_framebuffer(T::Both, target).unwrap();
+    sample(&mut gl);
+    samples.extend(gl.read_pixels_f32(0, 0, N, N).unwrap());
     let mut texels = vec![0u8; (N * N * 4) as usize];
     gl.get_tex_image(
         TexImageTarget::D2,
