@@ -248,7 +248,7 @@ pub struct Sampling<'a> {
     pub images: Vec<Image<'a>>,
     /// The texels (and depth units) behind `images` (`None` for empty
     /// ones), for [`Sampling::share`].
-    shared: Vec<Option<(SharedTexels, Option<ImageUnits>)>>,
+    shared: Vec<Option<SharedImage>>,
     /// The rest of the sampler's view: no images (they are [`Sampling::images`]),
     /// the object's LOD bias quantized ([`quantized_lod_bias`]).
     params: TextureRef<'static>,
@@ -257,6 +257,10 @@ pub struct Sampling<'a> {
 /// An image's texels, shared with the texture object.
 pub type SharedTexels = Arc<Vec<u8>>;
 
+/// An image's texels and depth units ([`super::TexImage::units`]), shared
+/// with the texture object.
+type SharedImage = (SharedTexels, Option<ImageUnits>);
+
 /// A [`Sampling`] that holds its texels (shared with the texture object,
 /// which copies them before a later write): what a deferred draw keeps.
 #[derive(Clone, Debug)]
@@ -264,7 +268,7 @@ pub struct SharedSampling {
     key: SamplerKey,
     base: BaseFormat,
     /// Each image's texels (`None`: empty), depth units and size.
-    images: Vec<(Option<(SharedTexels, Option<ImageUnits>)>, [u32; 3])>,
+    images: Vec<(Option<SharedImage>, [u32; 3])>,
     params: TextureRef<'static>,
 }
 
