@@ -1927,6 +1927,7 @@ impl Context {
     /// [`crate::accum`] for what each operation does).
     pub fn accum(&mut self, op: AccumOp, value: f32) -> GlResult {
         self.outside()?;
+        self.acquire_deferred();
         if !self.fb.has_accum() {
             return self.record(Err(GlError::InvalidOperation));
         }
@@ -1982,6 +1983,11 @@ impl Context {
     /// `GL_SAMPLES`: samples a pixel of the framebuffer (1 when single-sampled;
     /// GL reports 0 then, and `GL_SAMPLE_BUFFERS` 0).
     pub fn samples(&self) -> u32 {
+        // An object waiting for its first use: its depth texture (one
+        // sample) makes it single-sampled.
+        if self.fbo.deferred {
+            return 1;
+        }
         self.fb.samples()
     }
 

@@ -431,6 +431,10 @@ pub struct FboState {
     /// clears the whole depth buffer: a depth texture's contents are not
     /// needed then ([`Context::take_depth`]).
     pub(crate) depth_cleared: bool,
+    /// The bound draw object waits for its first use to be assembled
+    /// (`Context::bind_framebuffer`); the calls that use `Context::fb`
+    /// without `ensure_draw` assemble it first ([`Context::acquire_deferred`]).
+    pub(crate) deferred: bool,
 }
 
 impl FboState {
@@ -685,6 +689,7 @@ impl Context {
                 .fbo
                 .framebuffer(name)
                 .is_some_and(|f| f.rendered.as_ref().is_some_and(|(a, _)| *a == f.depth));
+            self.fbo.deferred = units;
             if !units {
                 self.acquire_draw();
             }
@@ -1238,8 +1243,18 @@ impl Context {
         }
     }
 
+    /// Assembles a draw object whose assembly `glBindFramebuffer` deferred
+    /// ([`FboState::deferred`]), for a call that uses `Context::fb` as it is
+    /// (pixel rectangles, `glAccum`).
+    pub(crate) fn acquire_deferred(&mut self) {
+        if self.fbo.deferred {
+            self.acquire_draw();
+        }
+    }
+
     /// Assembles the bound draw object into `self.fb` when complete and not yet done.
     fn acquire_draw(&mut self) {
+        self.fbo.deferred = false;
         let name = self.fbo.draw;
         if name == 0 || self.fbo.checkout.is_some() {
             return;

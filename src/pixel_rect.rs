@@ -342,6 +342,7 @@ impl Context {
     /// (no move either) when the raster position is invalid.
     pub fn bitmap(&mut self, image: &BitmapImage, orig: [f32; 2], moves: [f32; 2]) -> GlResult {
         self.outside()?;
+        self.acquire_deferred();
         if !self.raster.valid {
             return Ok(());
         }
@@ -589,6 +590,7 @@ impl Context {
     pub fn draw_pixels(&mut self, width: i32, height: i32, kind: DrawKind, data: &crate::PixelData<'_>) -> GlResult {
         use crate::texture::unpack::{fetch, ClientLayout, Raw};
         self.outside()?;
+        self.acquire_deferred();
         self.require(width >= 0 && height >= 0)?;
         let fb = &self.fb;
         let missing = match kind {
@@ -701,6 +703,7 @@ impl Context {
     /// draws indices. Other kinds are `InvalidEnum`.
     pub fn draw_pixels_bitmap(&mut self, image: &BitmapImage, kind: DrawKind) -> GlResult {
         self.outside()?;
+        self.acquire_deferred();
         match kind {
             DrawKind::Index => {}
             DrawKind::Stencil if self.fb.has_stencil() => {}
@@ -825,6 +828,7 @@ impl Context {
     /// there before). Source pixels outside the framebuffer are not drawn.
     pub fn copy_pixels(&mut self, x: i32, y: i32, width: i32, height: i32, kind: CopyKind) -> GlResult {
         self.outside()?;
+        self.acquire_deferred();
         self.require(width >= 0 && height >= 0)?;
         // From a multisampled object: Mesa's `_mesa_CopyPixels`.
         if self.fbo.read != 0 && self.samples_of(self.fbo.read) > 0 {
