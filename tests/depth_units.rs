@@ -182,3 +182,64 @@ fn depth_rendered_into_a_texture_samples_as_its_written_texels() {
     }
     assert_eq!(cases, 6 * 2 * 3 * 5 * 2);
 }
+
+#[test]
+fn an_object_bound_again_takes_draw_pixels_before_its_first_draw() {
+    // Bound again with its units in the texture, the object is assembled at
+    // its first use: glDrawPixels (which does not go through the draw
+    // path) must still land in it, not in the window.
+    let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(4, 4)).unwrap();
+    gl.bind_texture(TextureTarget::D2, 2).unwrap();
+    gl.tex_image(
+        TexImageTarget::D2,
+        0,
+        InternalFormat::DepthComponent24,
+        [4, 4, 1],
+        0,
+        None,
+    )
+    .unwrap();
+    let fb = gl.gen_framebuffers(1).unwrap()[0];
+    gl.bind_framebuffer(T::Both, fb).unwrap();
+    gl.framebuffer_texture(T::Both, P::Depth, Some(TexImageTarget::D2), 2, 0, 0)
+        .unwrap();
+    gl.draw_buffer(None).unwrap();
+    gl.read_buffer(None, false).unwrap();
+    gl.viewport(0, 0, 4, 4).unwrap();
+    gl.clear_depth(1.0).unwrap();
+    gl.clear(ClearMask::DEPTH).unwrap();
+    gl.bind_framebuffer(T::Both, 0).unwrap();
+    gl.bind_framebuffer(T::Both, fb).unwrap();
+    assert_eq!(gl.samples(), 1);
+    gl.window_pos(0.0, 0.0, 0.0).unwrap();
+    gl.enable(Capability::DepthTest).unwrap();
+    gl.depth_func(CompareFunc::Always).unwrap();
+    let depth = [0.25f32; 4];
+    let bytes: Vec<u8> = depth.iter().flat_map(|d| d.to_ne_bytes()).collect();
+    let data = softgl::texture::PixelData {
+        format: PixelFormat::DepthComponent,
+        ty: PixelType::Float,
+        store: PixelStore::DEFAULT,
+        bytes: &bytes,
+    };
+    gl.draw_pixels(2, 2, softgl::pixel_rect::DrawKind::Depth, &data)
+        .unwrap();
+    gl.bind_framebuffer(T::Both, 0).unwrap();
+    let mut out = vec![0u8; 64];
+    gl.get_tex_image(
+        TexImageTarget::D2,
+        0,
+        PixelFormat::DepthComponent,
+        PixelType::Float,
+        &PixelStore::DEFAULT,
+        &mut out,
+    )
+    .unwrap();
+    let z: Vec<f32> = out
+        .chunks(4)
+        .map(|c| f32::from_ne_bytes(c.try_into().unwrap()))
+        .collect();
+    assert!((z[0] - 0.25).abs() < 1e-6 && (z[5] - 0.25).abs() < 1e-6, "{z:?}");
+    assert_eq!((z[2], z[15]), (1.0, 1.0));
+    assert_eq!(gl.get_error(), None);
+}
