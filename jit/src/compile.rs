@@ -336,6 +336,15 @@ pub fn build_with(
     g.b.finalize(isa.frontend_config());
 }
 
+/// Whether `b` is `ONE, ONE` with `FUNC_ADD` for colour and alpha (the
+/// additive light passes): `min(s + d, 255)` a channel.
+fn is_add_ones(b: &BlendKey) -> bool {
+    let one = BlendFactor::One;
+    [b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha] == [one; 4]
+        && b.eq_rgb == BlendEquation::Add
+        && b.eq_alpha == BlendEquation::Add
+}
+
 /// Loads that may not trap (the caller guarantees the addresses) and need no alignment.
 fn mem() -> MemFlagsData {
     MemFlagsData::new().with_notrap()
@@ -1029,6 +1038,38 @@ impl<'a> Gen<'a> {
         live
     }
 
+    /// The group's fragments' colours from the span packed as a byte
+    /// format stores them (as [`Self::pack`] packs the four
+    /// [`Self::span_channel`]s): each channel's four bytes one 32-bit
+    /// load into its lane, the lanes interleaved by one shuffle. 5
+    /// instructions where the channels and the pack take 14.
+    fn span_packed(&mut self, sv: &SpanValues, lane0: Value) -> Value {
+        let fields = [
+            offset_of!(FragmentSpan, r),
+            offset_of!(FragmentSpan, g),
+            offset_of!(FragmentSpan, b),
+            offset_of!(FragmentSpan, a),
+        ];
+        let p = self.b.ins().iadd(sv.span, lane0);
+        let r = self.b.ins().load(types::I32, mem(), p, fields[0] as i32);
+        let mut v = self.b.ins().scalar_to_vector(I32X4, r);
+        for (c, &field) in fields.iter().enumerate().skip(1) {
+            let x = self.b.ins().load(types::I32, mem(), p, field as i32);
+            v = self.b.ins().insertlane(v, x, c as u8);
+        }
+        let planar = self.b.ins().bitcast(types::I8X16, le(), v);
+        self.interleave(planar)
+    }
+
+    /// The blend `ONE, ONE` with `FUNC_ADD` of packed byte pixels:
+    /// `min(s + d, 255)` in each byte, as [`Self::blend16`] gives it.
+    fn add_saturated(&mut self, src: Value, dst: Value) -> Value {
+        let s = self.b.ins().bitcast(types::I8X16, le(), src);
+        let d = self.b.ins().bitcast(types::I8X16, le(), dst);
+        let sum = self.b.ins().uadd_sat(s, d);
+        self.b.ins().bitcast(I32X4, le(), sum)
+    }
+
     /// Channel `c` (0 = red .. 3 = alpha) of the group's fragments.
     fn span_channel(&mut self, sv: &SpanValues, lane0: Value, c: usize) -> Value {
         let field = [
@@ -1061,17 +1102,46 @@ impl<'a> Gen<'a> {
         // skip it (the 20k-triangle frame's depth test kills most).
         let mut colour_due = self.key.shade.filter(|s| s.color);
         let from_span = colour_due.is_none();
-        if needs_color && from_span {
-            for c in 0..3 {
-                g.rgba[c] = self.span_channel(sv, g.lane0, c);
-            }
-        }
-        if needs_alpha && from_span {
-            g.rgba[3] = self.span_channel(sv, g.lane0, 3);
-        }
+        // The span's colour is read just before the first stage that needs
+        // it (groups the tests kill skip it); where that stage is the
+        // blend `ONE, ONE` or the pack of a byte format, as the four
+        // channels' bytes side by side, interleaved by one `pshufb`
+        // ([`Self::span_packed`]).
+        let mut span_due = needs_alpha && from_span;
         let list = stages.as_slice();
         for (at, stage) in list.iter().enumerate() {
             self.tail_stages = at + 1 < list.len() || (self.key.stencil.is_some() && self.key.stencil_buffer);
+            if span_due
+                && matches!(
+                    stage,
+                    Stage::AlphaTest(_) | Stage::AlphaCoverage(_) | Stage::Blend(_) | Stage::Pack { .. }
+                )
+            {
+                span_due = false;
+                let bytes = matches!(
+                    self.key.color_format,
+                    ColorFormat::Rgba8 | ColorFormat::Bgra8 | ColorFormat::Rgb8
+                );
+                match *stage {
+                    Stage::Blend(b) if bytes && self.key.color_format != ColorFormat::Rgb8 && is_add_ones(&b) => {
+                        let src = self.span_packed(sv, g.lane0);
+                        let dst = self.load_dst(&mut g);
+                        g.packed = Some(self.add_saturated(src, dst));
+                        continue;
+                    }
+                    Stage::Pack { .. } if bytes => {
+                        g.packed = Some(self.span_packed(sv, g.lane0));
+                    }
+                    _ => {
+                        if needs_color {
+                            for c in 0..3 {
+                                g.rgba[c] = self.span_channel(sv, g.lane0, c);
+                            }
+                        }
+                        g.rgba[3] = self.span_channel(sv, g.lane0, 3);
+                    }
+                }
+            }
             match (colour_due, stage) {
                 // Untextured alpha depends on the alpha plane alone: the
                 // alpha test gets it now, the other channels are shaded only
@@ -1126,7 +1196,13 @@ impl<'a> Gen<'a> {
                 Stage::Count => self.count(&mut g, sv),
                 Stage::Blend(blend) => {
                     let dst = self.load_dst(&mut g);
-                    if blend.eq_rgb == blend.eq_alpha {
+                    let bytes = matches!(self.key.color_format, ColorFormat::Rgba8 | ColorFormat::Bgra8);
+                    if bytes && is_add_ones(&blend) {
+                        // `min(s + d, 255)` a channel: the source packed,
+                        // one saturating byte add (`paddusb`).
+                        let src = self.pack(g.rgba, None);
+                        g.packed = Some(self.add_saturated(src, dst));
+                    } else if blend.eq_rgb == blend.eq_alpha {
                         self.blend16(&blend, &mut g, dst, u);
                     } else {
                         let d = self.unpack(dst);
@@ -1251,20 +1327,20 @@ impl<'a> Gen<'a> {
         // Whether anything reads the passing lanes: a depth-only key's
         // test is its last stage and nothing asks (the shadow maps' pass).
         let tail = self.tail_stages;
-        // A write of the ordering tests is the lanes' minimum or maximum
-        // (`z < stored ? z : stored` is `min(z, stored)`, equal values are
-        // the same bits): one `pminsd`/`pmaxsd`, the compare, the live
-        // mask's `pand` and the `blendvps` it replaces only where a
-        // later stage reads the pass mask.
+        // Where no later stage reads the pass mask, a write of the
+        // ordering tests is the lanes' minimum or maximum (`z < stored ?
+        // z : stored` is `min(z, stored)`, equal values are the same
+        // bits): one `pminsd`/`pmaxsd` for the compare, the live mask's
+        // `pand` and the `blendvps` (a full group's).
         let extreme = match depth.func {
             CompareFunc::Less | CompareFunc::Lequal => Some(false),
             CompareFunc::Greater | CompareFunc::Gequal => Some(true),
             _ => None,
         }
-        .filter(|_| depth.write);
+        .filter(|_| depth.write && !tail);
         // A full group's lanes are all live: the pass mask is the compare's.
         let all_live = g.full && g.live.is_none();
-        let pass = if tail || extreme.is_none() {
+        let pass = if extreme.is_none() {
             let pass = self.compare_as(depth.func, z, stored, signed);
             if all_live {
                 Some(pass)
@@ -1317,7 +1393,9 @@ impl<'a> Gen<'a> {
             self.store_stencil(g);
         }
         g.live = Some(pass);
-        self.skip_if_dead(g, next);
+        if tail {
+            self.skip_if_dead(g, next);
+        }
     }
 
     /// Counts the group's live lanes into `SpanCall::passed` (the `Count` stage).
