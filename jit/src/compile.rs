@@ -463,6 +463,9 @@ struct Gen<'a> {
     /// A plane's coefficients `[a0, dadx, dady]` kept in registers (the
     /// depth plane across the loop over full groups of depth-only keys).
     plane_cache: Option<(usize, [Value; 3])>,
+    /// The constants made once a span and kept for its groups (f32 by
+    /// bits, i32 splats by value), put back by [`Self::seed`].
+    seeds: (Vec<(u32, Value)>, Vec<(i64, Value)>),
 }
 
 impl<'a> Gen<'a> {
@@ -481,6 +484,7 @@ impl<'a> Gen<'a> {
             pshufb_mask: None,
             tail_stages: true,
             plane_cache: None,
+            seeds: (Vec::new(), Vec::new()),
         }
     }
 
@@ -687,13 +691,36 @@ impl<'a> Gen<'a> {
         // spilled across it) keeps the unorm8 conversion's 255.0 in a
         // register for the span: one instruction fewer a group of the
         // `fill` frame's 50.
+        self.consts.clear();
+        self.fconsts.clear();
         let seeded = self
             .key
             .shade
             .filter(|s| !s.textured())
             .map(|_| (255.0f32.to_bits(), self.fconst(255.0)));
+        self.seeds = (seeded.into_iter().collect(), Vec::new());
+        // Keys that shade depth alone (the shadow maps' depth-only pass,
+        // the light passes' per-sample half) keep the depth plane's
+        // coefficients, the conversion's bound and zero in registers for
+        // the span: 5 instructions fewer a group.
+        let depth_only = self
+            .key
+            .shade
+            .filter(|s| s.depth && !s.color && !s.textured())
+            .and(self.key.depth_format);
+        if let (Some(format), Some((planes, _, _))) = (depth_only, sv.planes) {
+            let coeffs = [0, 1, 2].map(|c| self.plane_coeff(planes, crate::shade::slot::Z, c));
+            self.plane_cache = Some((crate::shade::slot::Z, coeffs));
+            if matches!(format, DepthFormat::D16 | DepthFormat::D24) {
+                let m = format.max_value() as f32;
+                let m = (m.to_bits(), self.fconst(m));
+                let zero = (0, self.splat(0));
+                self.seeds.0.push(m);
+                self.seeds.1.push(zero);
+            }
+        }
         if self.full_loop() {
-            self.full_groups(&sv, seeded, px, (&args, head, exit));
+            self.full_groups(&sv, px, (&args, head, exit));
         } else {
             self.b.ins().jump(head, &args);
         }
@@ -714,9 +741,7 @@ impl<'a> Gen<'a> {
         // Uniforms are loaded in each group rather than once per span: keeping a
         // dozen splats live across the loop costs more register-allocation time
         // than the loads (which hit L1) cost at run time.
-        self.consts.clear();
-        self.fconsts.clear();
-        self.fconsts.extend(seeded);
+        self.seed();
         let uniforms = Uniforms::load(self, u, call);
         let mut group = self.group(&sv, lane0, bits);
         group.px = px_head;
@@ -734,18 +759,21 @@ impl<'a> Gen<'a> {
 
     /// Whether the key's spans run their leading full groups in a loop of
     /// their own ([`Self::full_groups`]): keys whose stages test no lane
-    /// (their groups differ only in the store) and sample no texture (whose
-    /// bodies are large: a second copy would cost compile time).
+    /// but depth (their groups start with four live lanes) and sample no
+    /// texture (whose bodies are large: a second copy would cost compile
+    /// time).
     fn full_loop(&self) -> bool {
         Self::full_loop_of(&self.key)
     }
 
     /// [`Self::full_loop`] of `k`.
     fn full_loop_of(k: &FragmentKey) -> bool {
-        // The depth test alone is allowed: a full group's pass mask is its
+        // The depth test is allowed: a full group's pass mask is its
         // compare, with no live mask to load and apply (the shadow maps'
         // depth-only key).
-        let tests = k.alpha_test.is_some() || (k.stencil.is_some() && k.stencil_buffer);
+        // So is a stencil test that always passes (its ops only write).
+        let stencil_kills = k.stencil.is_some_and(|s| s.func != CompareFunc::Always) && k.stencil_buffer;
+        let tests = k.alpha_test.is_some() || stencil_kills;
         // The deep formats' groups take `deep_stages`, which has no such loop.
         !tests && !k.shade.is_some_and(|s| s.textured()) && !k.color_format.is_deep()
     }
@@ -760,7 +788,7 @@ impl<'a> Gen<'a> {
     /// it, and the colour bounded, for keys that read the bound), then
     /// hands the rest of its live lanes to the general loop at `head`
     /// (whose arguments from lane 0 are `args`), or goes to `exit`.
-    /// `seeded` is the 255.0 kept for the span, `px` the pixel x of lane 0
+    /// `px` is the pixel x of lane 0
     /// and the step of four (keys with a shading stage).
     ///
     /// The loop's groups know their four lanes live and their w one: no
@@ -770,7 +798,6 @@ impl<'a> Gen<'a> {
     fn full_groups(
         &mut self,
         sv: &SpanValues,
-        seeded: Option<(u32, Value)>,
         px: Option<(Value, Value)>,
         (args, head, exit): (&[BlockArg], Block, Block),
     ) {
@@ -807,40 +834,10 @@ impl<'a> Gen<'a> {
         let mut first = vec![args[0]];
         first.extend(args.get(2).copied());
         self.pshufb_mask = self.make_pshufb_mask();
-        // Keys that shade depth alone (the shadow maps' depth-only pass)
-        // keep the depth plane's coefficients, the conversion's bound and
-        // zero in registers across the loop, loaded before it: 5
-        // instructions fewer a group of 19.5.
-        let depth_only = self
-            .key
-            .shade
-            .filter(|s| s.depth && !s.color && !s.textured())
-            .and(self.key.depth_format)
-            .filter(|f| matches!(f, DepthFormat::D16 | DepthFormat::D24));
-        let mut seeds: (Vec<(u32, Value)>, Vec<(i64, Value)>) = (seeded.into_iter().collect(), Vec::new());
-        if let (Some(format), Some((planes, _, _))) = (depth_only, sv.planes) {
-            let pre = self.b.create_block();
-            self.b.ins().brif(end, pre, &[], head, args);
-            self.b.switch_to_block(pre);
-            self.consts.clear();
-            self.fconsts.clear();
-            let coeffs = [0, 1, 2].map(|c| self.plane_coeff(planes, crate::shade::slot::Z, c));
-            self.plane_cache = Some((crate::shade::slot::Z, coeffs));
-            let m = format.max_value() as f32;
-            let m = (m.to_bits(), self.fconst(m));
-            let zero = (0, self.splat(0));
-            seeds.0.push(m);
-            seeds.1.push(zero);
-            self.b.ins().jump(body, &first);
-        } else {
-            self.b.ins().brif(end, body, &first, head, args);
-        }
+        self.b.ins().brif(end, body, &first, head, args);
 
         self.b.switch_to_block(body);
-        self.consts.clear();
-        self.consts.extend(seeds.1.iter().copied());
-        self.fconsts.clear();
-        self.fconsts.extend(seeds.0.iter().copied());
+        self.seed();
         let uniforms = Uniforms::load(self, sv.u, sv.call);
         // The loop runs only where w is one, for keys that ask.
         let fast = SpanValues {
@@ -855,10 +852,7 @@ impl<'a> Gen<'a> {
             let bits = self.b.ins().iconst(types::I32, 15);
             let mut group = self.group(&fast, lane0, bits);
             if half == 1 {
-                self.consts.clear();
-                self.consts.extend(seeds.1.iter().copied());
-                self.fconsts.clear();
-                self.fconsts.extend(seeds.0.iter().copied());
+                self.seed();
                 // The second group's pixels at constant offsets from the
                 // first's (folded into the addresses: no add a turn).
                 let bpp = self.key.color_format.bytes_per_pixel() as i64;
@@ -881,7 +875,6 @@ impl<'a> Gen<'a> {
             }
         }
         self.pshufb_mask = None;
-        self.plane_cache = None;
 
         let lane8 = self.b.ins().iadd_imm_u(lane0, 8);
         let mut again: Vec<BlockArg> = vec![lane8.into()];
@@ -904,6 +897,14 @@ impl<'a> Gen<'a> {
         let mut to_head: Vec<BlockArg> = vec![lane_after.into(), rest.into()];
         to_head.extend(px_after.map(BlockArg::from));
         self.b.ins().jump(head, &to_head);
+    }
+
+    /// Starts a group's constants from the span's [`Self::seeds`].
+    fn seed(&mut self) {
+        self.consts.clear();
+        self.consts.extend(self.seeds.1.iter().copied());
+        self.fconsts.clear();
+        self.fconsts.extend(self.seeds.0.iter().copied());
     }
 
     /// The bits of the span's lanes inside the scissor box's columns
