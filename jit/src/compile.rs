@@ -579,15 +579,27 @@ impl<'a> Gen<'a> {
         // The span's pixels (`Target::color_offset`, `Target::index`):
         // colour row `r` (the stride's sign flips it when top-down), depth
         // and stencil index `r · width + x`.
-        let row_c = self.b.ins().uextend(ptr, r);
-        let stride = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, stride) as i32);
-        let color_row = self.b.ins().imul(row_c, stride);
-        let x_p = self.b.ins().uextend(ptr, x0);
-        let bpp = self.key.color_format.bytes_per_pixel() as i64;
-        let x_bytes = self.scale(x_p, bpp);
-        let color_base = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, color) as i32);
-        let color = self.b.ins().iadd(color_base, color_row);
-        let color = self.b.ins().iadd(color, x_bytes);
+        // Keys that neither read nor write colour (the depth-only passes)
+        // load no colour pointer (two loads a span).
+        let colour = self.key.stages().as_slice().iter().any(|s| {
+            matches!(
+                s,
+                Stage::Blend(_) | Stage::Pack { .. } | Stage::LogicOp(_) | Stage::ColorWrite(_)
+            )
+        });
+        let color = if colour || self.key.color_format.is_deep() {
+            let row_c = self.b.ins().uextend(ptr, r);
+            let stride = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, stride) as i32);
+            let color_row = self.b.ins().imul(row_c, stride);
+            let x_p = self.b.ins().uextend(ptr, x0);
+            let bpp = self.key.color_format.bytes_per_pixel() as i64;
+            let x_bytes = self.scale(x_p, bpp);
+            let color_base = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, color) as i32);
+            let color = self.b.ins().iadd(color_base, color_row);
+            self.b.ins().iadd(color, x_bytes)
+        } else {
+            self.b.ins().iconst(ptr, 0)
+        };
         let index = self.b.ins().imul(r, width);
         let index = self.b.ins().iadd(index, x0);
         let index = self.b.ins().uextend(ptr, index);
