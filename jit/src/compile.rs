@@ -638,7 +638,10 @@ impl<'a> Gen<'a> {
             tex_one: [None; crate::texture::MAX_UNITS],
         };
         let mut sv = sv;
-        if let Some(shade) = self.key.shade {
+        // A shading stage that makes nothing from the planes (the
+        // stencil-only passes' keys) loads none and carries no pixel x.
+        let shades = self.key.shade.filter(|s| s.color || s.depth || s.textured());
+        if let Some(shade) = shades {
             // The span's entry of `SpanCall::planes`.
             let table = self.b.ins().load(ptr, mem(), call, offset_of!(SpanCall, planes) as i32);
             let off = self.b.ins().imul_imm_u(i_p, size_of::<SpanPlanes>() as i64);
@@ -1107,7 +1110,7 @@ impl<'a> Gen<'a> {
             .any(|s| matches!(s, Stage::Pack { .. } | Stage::Blend(_)));
         let coverage = self.key.shade.map(|s| s.coverage).filter(AlphaCoverage::is_on);
         let needs_alpha = needs_color || self.key.alpha_test.is_some() || coverage.is_some();
-        if let Some(shade) = self.key.shade {
+        if let Some(shade) = self.key.shade.filter(|s| s.depth) {
             self.shade_depth(&mut g, sv, &shade);
         }
         // The colour from the planes is made just before the first stage that
@@ -1539,8 +1542,14 @@ impl<'a> Gen<'a> {
                 self.b.ins().band(v, ff)
             }
         };
-        // Bit by bit: `mask & write mask ? new : s`, one select.
-        let m = self.b.ins().band(mask, u.stencil_write_mask);
+        // Bit by bit: `mask & write mask ? new : s`, one select (a full
+        // group's mask of all lanes is the write mask itself).
+        let all = self.consts.iter().any(|&(k, v)| k == -1 && v == mask);
+        let m = if all {
+            u.stencil_write_mask
+        } else {
+            self.b.ins().band(mask, u.stencil_write_mask)
+        };
         self.b.ins().bitselect(m, new, s)
     }
 

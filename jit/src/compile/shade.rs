@@ -43,6 +43,9 @@ impl Gen<'_> {
     /// Sets the group's depth from its primitive's planes (keys whose shading
     /// stage computes depth).
     pub(super) fn shade_depth(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+        if !key.depth {
+            return;
+        }
         let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
         let px = g.px.expect("carried by the loop for keys with a shading stage");
         let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
