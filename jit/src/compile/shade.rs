@@ -496,7 +496,11 @@ impl Gen<'_> {
             && !(k.stencil.is_some() && k.stencil_buffer)
             && matches!(k.depth_format, Some(DepthFormat::D16 | DepthFormat::D24))
             && k.depth.is_some_and(|d| {
-                d.write && matches!(d.func, crate::key::CompareFunc::Greater | crate::key::CompareFunc::Gequal)
+                d.write
+                    && matches!(
+                        d.func,
+                        crate::key::CompareFunc::Greater | crate::key::CompareFunc::Gequal
+                    )
             })
     }
 
