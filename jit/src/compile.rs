@@ -486,8 +486,11 @@ struct Gen<'a> {
     plane_cache: Option<(usize, [Value; 3])>,
     /// The constants made once a span and kept for its groups (f32 by
     /// bits, i32 splats by value), put back by [`Self::seed`].
-    seeds: (Vec<(u32, Value)>, Vec<(i64, Value)>),
+    seeds: Seeds,
 }
+
+/// [`Gen::seeds`]: f32 splats by their bits, i32 splats by value.
+type Seeds = (Vec<(u32, Value)>, Vec<(i64, Value)>);
 
 impl<'a> Gen<'a> {
     fn new(key: &FragmentKey, ptr: Type, b: FunctionBuilder<'a>) -> Gen<'a> {
