@@ -57,6 +57,33 @@ fn isa(alloc: RegAlloc) -> Result<&'static OwnedTargetIsa, SpecialistError> {
         .map_err(|e| SpecialistError::Compile(CompileError::Isa(e.clone())))
 }
 
+/// The directory of `SOFTGL_JIT_DUMP`, read once: where each compiled
+/// specialist's key and machine code go (for profiling the generated code).
+fn dump_dir() -> Option<&'static str> {
+    static DIR: OnceLock<Option<String>> = OnceLock::new();
+    DIR.get_or_init(|| std::env::var("SOFTGL_JIT_DUMP").ok().filter(|d| !d.is_empty()))
+        .as_deref()
+}
+
+/// Writes a compiled specialist to the `SOFTGL_JIT_DUMP` directory: its
+/// key and disassembly in `key-ADDR.txt`, and a line `ADDR SIZE NAME` in
+/// `/tmp/perf-PID.map` (the map `perf report` reads for JIT code; the
+/// addresses also name the code in callgrind's `--dump-instr=yes` output).
+/// Failures to write are ignored: this is a profiling aid only.
+fn dump_code(dir: &str, key: &FragmentKey, alloc: RegAlloc, (code, size): (*const u8, u32), text: &str) {
+    use std::io::Write;
+    let addr = code as usize;
+    let name = format!("specialist-{addr:x}-{alloc:?}");
+    let _ = std::fs::write(
+        format!("{dir}/key-{addr:x}.txt"),
+        format!("{name} {size} bytes\n{key:#?}\n{text}"),
+    );
+    let map = format!("/tmp/perf-{}.map", std::process::id());
+    if let Ok(mut f) = std::fs::OpenOptions::new().create(true).append(true).open(map) {
+        let _ = writeln!(f, "{addr:x} {size:x} {name}");
+    }
+}
+
 /// `JITModule`s holding code now, in the whole process.
 static LIVE_MODULES: AtomicUsize = AtomicUsize::new(0);
 
@@ -286,9 +313,17 @@ impl Specialist {
             let native_sampling = alloc == RegAlloc::Backtracking;
             compile::build_with(key, isa, &mut ctx.func, (fctx, native_sampling));
             let id = module.declare_anonymous_function(&ctx.func.signature)?;
+            let dump = dump_dir();
+            ctx.set_disasm(dump.is_some());
             module.define_function(id, ctx)?;
             module.finalize_definitions()?;
-            Ok(module.get_finalized_function(id))
+            let code = module.get_finalized_function(id);
+            if let Some(dir) = dump {
+                let size = ctx.compiled_code().map_or(0, |c| c.code_info().total_size);
+                let text = ctx.compiled_code().and_then(|c| c.vcode.clone()).unwrap_or_default();
+                dump_code(dir, key, alloc, (code, size), &text);
+            }
+            Ok(code)
         });
         match built {
             Ok(code) => {

@@ -1773,3 +1773,58 @@ proptest! {
         prop_assert_eq!(&split_jit, &whole, "the specialists' halves differ from the whole");
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    /// The MuJoCo passes' keys whose code is specialised: depth-only
+    /// shading under any depth test (the last stage or not: the shadow
+    /// maps' `max(z, stored)` write), the colour from the span packed or
+    /// blended `ONE, ONE`, a stencil test that always passes (the loop over
+    /// full groups), any byte or 16-bit format, a third of the spans full.
+    #[test]
+    fn depth_only_and_additive_keys_jit_equals_interpreter(
+        base in key(),
+        depth in (compare(), any::<bool>()),
+        depth_format in select(&[DepthFormat::D16, DepthFormat::D24, DepthFormat::D32, DepthFormat::D32F][..]),
+        (colour, ones, stencil, count) in (0u8..3, any::<bool>(), prop::option::of(stencil_op()), any::<bool>()),
+        u in uniforms(),
+        seed in any::<u64>(),
+    ) {
+        let one = BlendFactor::One;
+        let format = if base.color_format.is_deep() { ColorFormat::Rgba8 } else { base.color_format };
+        let key = FragmentKey {
+            scissor: false,
+            alpha_test: None,
+            stencil: stencil.map(|op| StencilKey {
+                func: CompareFunc::Always,
+                fail: StencilOp::Keep,
+                zfail: op,
+                zpass: op,
+            }),
+            depth: Some(DepthKey { func: depth.0, write: depth.1 }),
+            blend: ones.then_some(BlendKey {
+                src_rgb: one,
+                dst_rgb: one,
+                src_alpha: one,
+                dst_alpha: one,
+                eq_rgb: BlendEquation::Add,
+                eq_alpha: BlendEquation::Add,
+            }),
+            logic_op: None,
+            dither: false,
+            color_mask: match colour {
+                0 => ColorMask { r: false, g: false, b: false, a: false },
+                1 => ColorMask { r: true, g: true, b: true, a: true },
+                _ => base.color_mask,
+            },
+            shade: Some(ShadeKey { depth: true, ..ShadeKey::default() }),
+            count,
+            ..FragmentKey::new(format, Some(depth_format), base.stencil_buffer)
+        }
+        .normalized();
+        let mut rng = Rng(softgl_jit::rng::Rng::new((seed ^ (seed >> 32)) as u32));
+        let (jit_buf, interp_buf) = run_both(&key, Tier::Optimized, &u, &TextureSet::default(), &mut rng, planes);
+        prop_assert_eq!(&jit_buf, &interp_buf, "buffers differ");
+    }
+}

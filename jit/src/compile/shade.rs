@@ -43,6 +43,9 @@ impl Gen<'_> {
     /// Sets the group's depth from its primitive's planes (keys whose shading
     /// stage computes depth).
     pub(super) fn shade_depth(&mut self, g: &mut Group, sv: &SpanValues, key: &ShadeKey) {
+        if !key.depth {
+            return;
+        }
         let (planes, row, _) = sv.planes.expect("loaded for keys with a shading stage");
         let px = g.px.expect("carried by the loop for keys with a shading stage");
         let at = |s: &mut Self, k: usize| s.plane(planes, k, px, row);
@@ -52,7 +55,10 @@ impl Gen<'_> {
                 g.z = Some(match format {
                     DepthFormat::D32 => self.unorm_lanes(z, format.max_value()),
                     DepthFormat::D32F => self.float_depth_lanes(z),
-                    DepthFormat::D16 | DepthFormat::D24 => self.unorm_lanes_small(z, format.max_value()),
+                    DepthFormat::D16 | DepthFormat::D24 => {
+                        let floor = !self.depth_write_max_only();
+                        self.unorm_lanes_small(z, format.max_value(), floor)
+                    }
                 });
             }
         }
@@ -206,7 +212,7 @@ impl Gen<'_> {
         if key.coverage.quarters.is_some() {
             g.alpha_f = Some(a);
         }
-        g.rgba[3] = self.unorm_lanes_small(a, 255);
+        g.rgba[3] = self.unorm_lanes_small(a, 255, true);
         g.alpha_shaded = true;
     }
 
@@ -223,10 +229,10 @@ impl Gen<'_> {
             g.packed = Some(self.unorm8_packed(c, sv.colour_bounded));
         } else if alpha_shaded {
             for (k, ck) in c.iter().take(3).enumerate() {
-                g.rgba[k] = self.unorm_lanes_small(*ck, 255);
+                g.rgba[k] = self.unorm_lanes_small(*ck, 255, true);
             }
         } else {
-            g.rgba = c.map(|v| self.unorm_lanes_small(v, 255));
+            g.rgba = c.map(|v| self.unorm_lanes_small(v, 255, true));
         }
     }
 
@@ -388,19 +394,26 @@ impl Gen<'_> {
     /// Plane `k` at the lanes' pixels: `fma(dady, row, fma(dadx, px, a0))`,
     /// each coefficient one aligned vector load (`Planes` stores them splatted).
     pub(super) fn plane(&mut self, planes: Value, k: usize, px: Value, row: Value) -> Value {
-        let load = |s: &mut Self, c: usize| {
-            let off = offset_of!(Planes, coeffs) + (3 * k + c) * 16;
-            s.b.ins().load(F32X4, mem().with_aligned(), planes, off as i32)
-        };
+        if let Some((_, [a0, dadx, dady])) = self.plane_cache.filter(|(c, _)| *c == k) {
+            let inner = self.b.ins().fma(dadx, px, a0);
+            return self.b.ins().fma(dady, row, inner);
+        }
         // In this order Cranelift folds `a0`, the load just before its
         // fused multiply-add, into it and needs no copy of `px` or `row`
         // (`vfmadd213ps`): 4 instructions a plane where the other orders
         // take 5.
-        let dadx = load(self, 1);
-        let dady = load(self, 2);
-        let a0 = load(self, 0);
+        let dadx = self.plane_coeff(planes, k, 1);
+        let dady = self.plane_coeff(planes, k, 2);
+        let a0 = self.plane_coeff(planes, k, 0);
         let inner = self.b.ins().fma(dadx, px, a0);
         self.b.ins().fma(dady, row, inner)
+    }
+
+    /// Coefficient `c` (`a0`, `dadx`, `dady`) of plane `k`: one aligned
+    /// vector load (`Planes` stores them splatted).
+    pub(super) fn plane_coeff(&mut self, planes: Value, k: usize, c: usize) -> Value {
+        let off = offset_of!(Planes, coeffs) + (3 * k + c) * 16;
+        self.b.ins().load(F32X4, mem().with_aligned(), planes, off as i32)
     }
 
     pub(super) fn fconst(&mut self, v: f32) -> Value {
@@ -453,14 +466,42 @@ impl Gen<'_> {
     /// lanes above `max` set to it (one `minps`, NaN kept), rounded
     /// half to even, converted (x86's conversion gives `i32::MIN` for NaN
     /// and negative overflow), negatives to 0.
-    fn unorm_lanes_small(&mut self, v: Value, max: u32) -> Value {
+    /// Without `floor` the negatives are left (for a key whose depth
+    /// goes only into `max(z, stored)`, [`Self::depth_write_max_only`]).
+    fn unorm_lanes_small(&mut self, v: Value, max: u32, floor: bool) -> Value {
         let m = self.fconst(max as f32);
         let t = self.b.ins().fmul(v, m);
         let t = self.min_const(m, t);
         let r = self.b.ins().nearest(t);
         let i = self.int_lanes(r);
+        if !floor {
+            return i;
+        }
         let zero = self.splat(0);
         self.b.ins().smax(i, zero)
+    }
+
+    /// Whether the shaded depth is read only by a `GREATER`/`GEQUAL`
+    /// test that writes and is the key's last stage (no stencil ops, no
+    /// colour, no count): the test then stores `max(z, stored)` and reads
+    /// nothing else ([`Gen::depth_test`]), and as every stored value is at
+    /// least 0 a negative `z` (or `i32::MIN` for NaN) leaves `stored` as
+    /// 0 would: the conversion's floor at 0 can go (one instruction a
+    /// group of the shadow maps' depth-only pass).
+    fn depth_write_max_only(&self) -> bool {
+        let k = &self.key;
+        let stages = k.stages();
+        let last_is_depth = matches!(stages.as_slice().last(), Some(crate::key::Stage::DepthTest { .. }));
+        last_is_depth
+            && !(k.stencil.is_some() && k.stencil_buffer)
+            && matches!(k.depth_format, Some(DepthFormat::D16 | DepthFormat::D24))
+            && k.depth.is_some_and(|d| {
+                d.write
+                    && matches!(
+                        d.func,
+                        crate::key::CompareFunc::Greater | crate::key::CompareFunc::Gequal
+                    )
+            })
     }
 
     /// The fog factor of `coord` (`crate::shade::fog_factor`).
