@@ -15,6 +15,17 @@
 //! of `osmesa/bench/shadow_lookup.c` (320×240, 4×) ran 1232 instructions a
 //! sample more than the same pass untextured; natively 26 (callgrind).
 //!
+//! 2D sRGB textures (`Srgba8`: MuJoCo's PNG textures, trilinear REPEAT)
+//! take the SoA path natively with every filter, REPEAT or CLAMP_TO_EDGE
+//! ([`Gen::soa_levels`]): the λ and levels of the AoS path, each texel's
+//! channels decoded to linear f32 (`arith::srgb8_to_linear`'s cubic in
+//! fused multiply-adds, vectorized per channel), the f32 weights and lerps
+//! of `filter::soa_at`, and the f32 weight between two levels. The same
+//! light pass with its checker as `GL_SRGB8` (`shadow_lookup.c srgb`): 1149
+//! → 216 instructions a sample, and MuJoCo's `noshadow` frame at 640×480
+//! lost its 145 M instructions of callout (three renders; 1.172 G → 1.040 G
+//! without the compiles, callgrind).
+//!
 //! Sizes, texel addresses and λ's values come from the unit's
 //! [`UnitView`](crate::callout::UnitView) at run time, never from the key;
 //! per lane, since the lanes of a group can lie in quads of different levels.
