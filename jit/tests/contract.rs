@@ -1046,7 +1046,7 @@ proptest! {
         textured_case(key, shade, tex, u, (seed, tier))?;
     }
 
-    /// Units the specialist samples natively (2D RGBA8, REPEAT or
+    /// Units the specialist samples natively (2D RGBA8 or sRGB, REPEAT or
     /// CLAMP_TO_EDGE, any filters; rectangles, CLAMP_TO_EDGE), one or two.
     #[test]
     fn natively_sampled_jit_equals_interpreter(
@@ -1124,13 +1124,20 @@ fn run_both(
 }
 
 /// A unit the specialist samples natively: a third of them rectangles
-/// (CLAMP_TO_EDGE, no mipmap filter, as GL allows them).
+/// (CLAMP_TO_EDGE, no mipmap filter, as GL allows them), a third of the
+/// others sRGB (llvmpipe's SoA path, 2D only).
 fn native_unit_key() -> impl Strategy<Value = TexUnitKey> {
     let wrap = || select(&[Wrap::Repeat, Wrap::ClampToEdge][..]);
     let target = select(&[TexTarget::D2, TexTarget::D2, TexTarget::Rect][..]);
-    (tex_unit_key(), [wrap(), wrap()], target).prop_map(|(mut unit, [s, t], target)| {
+    let format = select(&[TexelFormat::Rgba8, TexelFormat::Rgba8, TexelFormat::Srgba8][..]);
+    (tex_unit_key(), [wrap(), wrap()], target, format).prop_map(|(mut unit, [s, t], target, format)| {
         let k = &mut unit.sampler;
-        (k.target, k.format, k.compare) = (target, TexelFormat::Rgba8, None);
+        let format = if target == TexTarget::Rect {
+            TexelFormat::Rgba8
+        } else {
+            format
+        };
+        (k.target, k.format, k.compare) = (target, format, None);
         k.wrap = [s, t, Wrap::Repeat];
         if target == TexTarget::Rect {
             k.wrap = [Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::Repeat];

@@ -1255,7 +1255,14 @@ impl EarlyTests {
                             true
                         } else {
                             let z = z.clamp(0.0, 1.0) * max;
-                            let margin = err * max + 2.0;
+                            // Two units of an integer format; a float format
+                            // stores the f32 z itself, within `err` of this one
+                            // (2.0 there let every pixel through: MuJoCo's
+                            // skybox on its D32F buffer).
+                            let margin = match d.format() {
+                                DepthFormat::D32F => err,
+                                _ => err * max + 2.0,
+                            };
                             match func {
                                 CompareFunc::Never => false,
                                 CompareFunc::Less => z - margin < stored,

@@ -15,6 +15,17 @@
 //! of `osmesa/bench/shadow_lookup.c` (320×240, 4×) ran 1232 instructions a
 //! sample more than the same pass untextured; natively 26 (callgrind).
 //!
+//! 2D sRGB textures (`Srgba8`: MuJoCo's PNG textures, trilinear REPEAT)
+//! take the SoA path natively with every filter, REPEAT or CLAMP_TO_EDGE
+//! ([`Gen::soa_levels`]): the λ and levels of the AoS path, each texel's
+//! channels decoded to linear f32 (`arith::srgb8_to_linear`'s cubic in
+//! fused multiply-adds, vectorized per channel), the f32 weights and lerps
+//! of `filter::soa_at`, and the f32 weight between two levels. The same
+//! light pass with its checker as `GL_SRGB8` (`shadow_lookup.c srgb`): 1149
+//! → 216 instructions a sample, and MuJoCo's `noshadow` frame at 640×480
+//! lost its 145 M instructions of callout (three renders; 1.172 G → 1.040 G
+//! without the compiles, callgrind).
+//!
 //! Sizes, texel addresses and λ's values come from the unit's
 //! [`UnitView`](crate::callout::UnitView) at run time, never from the key;
 //! per lane, since the lanes of a group can lie in quads of different levels.
@@ -44,8 +55,15 @@ pub fn native_sampler(s: &SamplerKey) -> bool {
                     .iter()
                     .all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge))
         }
+        TexelFormat::Srgba8 => {
+            s.target == TexTarget::D2
+                && s.compare.is_none()
+                && s.wrap[..2]
+                    .iter()
+                    .all(|w| matches!(w, Wrap::Repeat | Wrap::ClampToEdge))
+        }
         TexelFormat::Depth32F => s.target == TexTarget::D2 && native_depth(s),
-        TexelFormat::Srgba8 | TexelFormat::Rgba16 => false,
+        TexelFormat::Rgba16 => false,
     }
 }
 
@@ -109,8 +127,12 @@ impl Gen<'_> {
         );
         let first = self.unit_i32(unit, offset_of!(UnitView, first));
         let first_s = self.b.ins().extractlane(first, 0);
+        let soa = key.format == TexelFormat::Srgba8;
         let Some(quad) = c.quad else {
             // No λ: one filter, level `first`.
+            if soa {
+                return self.soa_level(unit, key, (key.min, first_s), c.at);
+            }
             let texels = self.fetch_level(unit, key, (key.min, first_s), c.at);
             return self.texels_to_float(texels);
         };
@@ -136,22 +158,33 @@ impl Gen<'_> {
                 let level1 = self.b.ins().bitselect(above, last, l1);
                 let level1 = self.b.ins().bitselect(below, first, level1);
                 let ends = self.b.ins().bor(below, above);
-                // The 8-bit weight `trunc(fpart·256)`, 0 at the chain's ends and
-                // where it is not positive (NaN converts to i32::MIN); 256
-                // (fpart rounded to 1) is 0 as the reference's `as u8` makes it.
-                let k = self.fconst(256.0);
-                let w = self.b.ins().fmul(fpart, k);
-                let w = self.int_lanes(w);
-                let zero = self.splat(0);
-                let w = self.b.ins().smax(w, zero);
-                let ff = self.splat(255);
-                let w = self.b.ins().band(w, ff);
-                let w = self.b.ins().bitselect(ends, zero, w);
-                (level0, Some((level1, w)))
+                if soa {
+                    // The f32 weight, 0 at the chain's ends (`lod::levels`).
+                    let ends = self.b.ins().bitcast(F32X4, MemFlagsData::new(), ends);
+                    let zero = self.fconst(0.0);
+                    let w = self.b.ins().bitselect(ends, zero, fpart);
+                    (level0, Some((level1, w)))
+                } else {
+                    // The 8-bit weight `trunc(fpart·256)`, 0 at the chain's ends and
+                    // where it is not positive (NaN converts to i32::MIN); 256
+                    // (fpart rounded to 1) is 0 as the reference's `as u8` makes it.
+                    let k = self.fconst(256.0);
+                    let w = self.b.ins().fmul(fpart, k);
+                    let w = self.int_lanes(w);
+                    let zero = self.splat(0);
+                    let w = self.b.ins().smax(w, zero);
+                    let ff = self.splat(255);
+                    let w = self.b.ins().band(w, ff);
+                    let w = self.b.ins().bitselect(ends, zero, w);
+                    (level0, Some((level1, w)))
+                }
             }
         };
         let level0_s = self.b.ins().extractlane(level0, 0);
         let fetch = |s: &mut Self| {
+            if soa {
+                return s.soa_levels(unit, key, (level0_s, second, minified), c.at);
+            }
             let min = match second {
                 None => s.fetch_level(unit, key, (key.min, level0_s), c.at),
                 Some((level1, w)) => {
@@ -465,17 +498,11 @@ impl Gen<'_> {
         self.narrow(t)
     }
 
-    /// [`Self::fetch_level`] as the two halves of the widened halves.
-    fn fetch_level_wide(
-        &mut self,
-        unit: Value,
-        key: &SamplerKey,
-        (filter, level): (Filter, Value),
-        at: [Value; 2],
-    ) -> [Value; 2] {
-        // The level's texels and size (levels are within `first..=last` <
-        // MAX_LEVELS; the clamp keeps the address inside the view whatever
-        // the lane held).
+    /// Level `level`'s texels (a scalar: the group's lanes share it) and
+    /// its width and height per lane. Levels are within `first..=last` <
+    /// MAX_LEVELS; the clamp keeps the address inside the view whatever the
+    /// lane held.
+    fn level_texels(&mut self, unit: Value, level: Value) -> (Value, [Value; 2]) {
         let base = offset_of!(UnitView, levels) as i32;
         let top = self.b.ins().iconst(types::I32, (MAX_LEVELS - 1) as i64);
         let l = self.b.ins().umin(level, top);
@@ -500,6 +527,19 @@ impl Gen<'_> {
             let v = self.b.ins().ushr(side, down);
             self.b.ins().smax(v, one)
         });
+        (texels, size)
+    }
+
+    /// [`Self::fetch_level`] as the two halves of the widened halves.
+    fn fetch_level_wide(
+        &mut self,
+        unit: Value,
+        key: &SamplerKey,
+        (filter, level): (Filter, Value),
+        at: [Value; 2],
+    ) -> [Value; 2] {
+        let (texels, size) = self.level_texels(unit, level);
+        let one = self.splat(1);
         let pot = key.statics.pot;
         let norm = key.target.normalized();
         // Coordinates are clamped to the level (they already are: the clamp
@@ -560,12 +600,28 @@ impl Gen<'_> {
     /// `osmesa/bench/fill.c` runs 5% fewer instructions of generated code
     /// (1,750 M to 1,665 M, callgrind, 2 frames).
     fn fetch(&mut self, texels: Value, at: &[(Value, Value)]) -> Vec<[Value; 2]> {
+        let base = self.gather(texels, at, true).0;
+        (0..at.len())
+            .map(|k| [0, 8].map(|h| self.b.ins().uload8x8(le().with_notrap(), base, (16 * k + h) as i32)))
+            .collect()
+    }
+
+    /// The packed texels at each `(x, y)` as [`Self::fetch`] gathers them
+    /// (not widened: the SoA path converts each channel to float).
+    fn fetch_packed(&mut self, texels: Value, at: &[(Value, Value)]) -> Vec<Value> {
+        self.gather(texels, at, false).1
+    }
+
+    /// [`Self::fetch`]'s gather through the stack slot: its address and the
+    /// vectors, each stored back over its offsets when `store`.
+    fn gather(&mut self, texels: Value, at: &[(Value, Value)], store: bool) -> (Value, Vec<Value>) {
         let slot = self.gather_slot();
         let base = self.b.ins().stack_addr(self.ptr, slot, 0);
         for (k, &(x, y)) in at.iter().enumerate() {
             let index = self.b.ins().iadd(y, x);
             self.b.ins().store(mem(), index, base, 16 * k as i32);
         }
+        let mut out = Vec::with_capacity(at.len());
         for k in 0..at.len() {
             let mut v = None;
             for lane in 0..4 {
@@ -585,11 +641,12 @@ impl Gen<'_> {
                 });
             }
             let v = v.expect("four lanes");
-            self.b.ins().store(le().with_notrap(), v, base, 16 * k as i32);
+            if store {
+                self.b.ins().store(le().with_notrap(), v, base, 16 * k as i32);
+            }
+            out.push(v);
         }
-        (0..at.len())
-            .map(|k| [0, 8].map(|h| self.b.ins().uload8x8(le().with_notrap(), base, (16 * k + h) as i32)))
-            .collect()
+        (base, out)
     }
 
     /// The function's stack slot for gather offsets (four vectors), made on first use.
@@ -761,6 +818,203 @@ impl Gen<'_> {
                 (x0, x1, w)
             }
         }
+    }
+
+    /// The sRGB unit's filtered RGBA on llvmpipe's SoA path
+    /// (`crate::texture::sample`'s `filter_levels` with `filter::soa_at`):
+    /// level `level0` (a scalar: the group's lanes share it) with the
+    /// minification filter, for a linear mipmap filter lerped with the next
+    /// level by the f32 weight where it is positive (`filter::soa_mip`),
+    /// and where min and mag differ the magnified lanes from level `level0`
+    /// with the magnification filter.
+    fn soa_levels(
+        &mut self,
+        unit: Value,
+        key: &SamplerKey,
+        (level0, second, minified): (Value, Option<(Value, Value)>, Value),
+        at: [Value; 2],
+    ) -> [Value; 4] {
+        let mut min = self.soa_level(unit, key, (key.min, level0), at);
+        if let Some((level1, w)) = second {
+            let level1 = self.b.ins().extractlane(level1, 0);
+            let c1 = self.soa_level(unit, key, (key.min, level1), at);
+            let zero = self.fconst(0.0);
+            let positive = self.b.ins().fcmp(FloatCC::GreaterThan, w, zero);
+            let positive = self.b.ins().bitcast(F32X4, MemFlagsData::new(), positive);
+            for (c, c1) in min.iter_mut().zip(c1) {
+                let l = self.lerp_f(w, *c, c1);
+                *c = self.b.ins().bitselect(positive, l, *c);
+            }
+        }
+        if key.min == key.mag {
+            return min;
+        }
+        let mag = self.soa_level(unit, key, (key.mag, level0), at);
+        let minified = self.b.ins().bitcast(F32X4, MemFlagsData::new(), minified);
+        std::array::from_fn(|c| self.b.ins().bitselect(minified, min[c], mag[c]))
+    }
+
+    /// One level of an sRGB unit filtered on the SoA path
+    /// (`filter::soa_at`, two dimensions, REPEAT or CLAMP_TO_EDGE: no
+    /// border): texels decoded to linear f32 each, then f32 lerps as fused
+    /// multiply-adds, along s within each row, then along t.
+    fn soa_level(
+        &mut self,
+        unit: Value,
+        key: &SamplerKey,
+        (filter, level): (Filter, Value),
+        at: [Value; 2],
+    ) -> [Value; 4] {
+        let (texels, size) = self.level_texels(unit, level);
+        let one = self.splat(1);
+        let pot = key.statics.pot;
+        let wm = self.b.ins().isub(size[0], one);
+        let hm = self.b.ins().isub(size[1], one);
+        // As in `fetch_level_wide`: only REPEAT of other sizes than powers
+        // of two keeps the clamp (a NaN coordinate there gives i32::MIN, which
+        // the reference reads as a zero texel; every lerp with its NaN weight
+        // is NaN either way, and NEAREST keeps the fraction below 1).
+        let bounded = [0, 1].map(|a| key.wrap[a] == Wrap::ClampToEdge || (key.wrap[a] == Wrap::Repeat && pot[a]));
+        let column = |s: &mut Self, x: Value| if bounded[0] { x } else { s.b.ins().umin(x, wm) };
+        let row = |s: &mut Self, y: Value| {
+            let y = if bounded[1] { y } else { s.b.ins().umin(y, hm) };
+            s.b.ins().imul(y, size[0])
+        };
+        match filter {
+            Filter::Nearest => {
+                let x = self.depth_axis(at[0], size[0], pot[0], key.wrap[0]);
+                let y = self.depth_axis(at[1], size[1], pot[1], key.wrap[1]);
+                let x = column(self, x);
+                let y = row(self, y);
+                let t = self.fetch_packed(texels, &[(x, y)])[0];
+                self.srgb_texel(t)
+            }
+            Filter::Linear => {
+                let (x0, x1, wx) = self.soa_linear_axis(at[0], (size[0], wm), pot[0], key.wrap[0]);
+                let (y0, y1, wy) = self.soa_linear_axis(at[1], (size[1], hm), pot[1], key.wrap[1]);
+                let [x0, x1] = [x0, x1].map(|x| column(self, x));
+                let [y0, y1] = [y0, y1].map(|y| row(self, y));
+                let t = self.fetch_packed(texels, &[(x0, y0), (x1, y0), (x0, y1), (x1, y1)]);
+                // A channel at a time: its four texels decoded and lerped
+                // before the next channel's (decoding the four texels whole
+                // first kept sixteen vectors live: a trilinear key compiled
+                // in 6.2 ms against the RGBA8 one's 1.5).
+                std::array::from_fn(|c| {
+                    let v: Vec<Value> = t.iter().map(|&t| self.srgb_channel(t, c)).collect();
+                    let r0 = self.lerp_f(wx, v[0], v[1]);
+                    let r1 = self.lerp_f(wx, v[2], v[3]);
+                    self.lerp_f(wy, r0, r1)
+                })
+            }
+        }
+    }
+
+    /// The two texels and the f32 weight of the second along an axis of
+    /// length `len` (and `len − 1`) on the SoA path
+    /// (`filter::soa_linear_axis_at` for REPEAT and CLAMP_TO_EDGE of
+    /// normalized coordinates); `pot` as in [`Self::nearest_axis`].
+    fn soa_linear_axis(
+        &mut self,
+        s: Value,
+        (len, len1): (Value, Value),
+        pot: bool,
+        wrap: Wrap,
+    ) -> (Value, Value, Value) {
+        let one = self.splat(1);
+        let half = self.fconst(0.5);
+        let lf = self.b.ins().fcvt_from_sint(F32X4, len);
+        // `ifloor_fract`: floor as an integer and the fraction.
+        let floor_fract = |g: &mut Self, v: Value| {
+            let f = g.b.ins().floor(v);
+            let w = g.b.ins().fsub(v, f);
+            (g.int_lanes(f), w)
+        };
+        match wrap {
+            Wrap::Repeat if pot => {
+                let v = self.b.ins().fmul(s, lf);
+                let v = self.b.ins().fsub(v, half);
+                let (i, w) = floor_fract(self, v);
+                let x0 = self.b.ins().band(i, len1);
+                let next = self.b.ins().iadd(i, one);
+                (x0, self.b.ins().band(next, len1), w)
+            }
+            Wrap::Repeat => {
+                let f = self.b.ins().floor(s);
+                let f = self.b.ins().fsub(s, f);
+                let u = self.b.ins().fmul(f, lf);
+                let u = self.b.ins().fsub(u, half);
+                let (i, w) = floor_fract(self, u);
+                let zero = self.fconst(0.0);
+                let negative = self.b.ins().fcmp(FloatCC::LessThan, u, zero);
+                let x0 = self.b.ins().bitselect(negative, len1, i);
+                let last = self.b.ins().icmp(IntCC::Equal, x0, len1);
+                let next = self.b.ins().iadd(x0, one);
+                let zero = self.splat(0);
+                (x0, self.b.ins().bitselect(last, zero, next), w)
+            }
+            _ => {
+                // CLAMP_TO_EDGE: `max(min(s·len, len) − 0.5, 0)`.
+                let v = self.b.ins().fmul(s, lf);
+                let v = self.minps(v, lf);
+                let v = self.b.ins().fsub(v, half);
+                let zero = self.fconst(0.0);
+                let v = self.maxps(v, zero);
+                let (x0, w) = floor_fract(self, v);
+                let next = self.b.ins().iadd(x0, one);
+                (x0, self.b.ins().smin(next, len1), w)
+            }
+        }
+    }
+
+    /// Packed sRGB8 RGBA lanes to four f32 channels as llvmpipe's SoA fetch
+    /// converts them ([`Self::srgb_channel`]).
+    fn srgb_texel(&mut self, t: Value) -> [Value; 4] {
+        std::array::from_fn(|c| self.srgb_channel(t, c))
+    }
+
+    /// Channel `c` of packed sRGB8 RGBA lanes as f32 (`arith::srgb8_to_linear`
+    /// for r, g, b: `v/(12.6·255)` up to 15, else the cubic in fused
+    /// multiply-adds; `unorm8_to_float` for alpha).
+    fn srgb_channel(&mut self, t: Value, c: usize) -> Value {
+        let v = if c == 3 {
+            self.b.ins().ushr_imm_u(t, 24)
+        } else {
+            let ff = self.splat(255);
+            let s = if c == 0 {
+                t
+            } else {
+                self.b.ins().ushr_imm_u(t, 8 * c as i64)
+            };
+            self.b.ins().band(s, ff)
+        };
+        let x = self.b.ins().fcvt_from_sint(F32X4, v);
+        if c == 3 {
+            let k = self.fconst((1.0f64 / 255.0) as f32);
+            return self.b.ins().fmul(x, k);
+        }
+        let k = self.fconst(1.0f32 / (12.6f32 * 255.0f32));
+        let p = [
+            0.0023f32,
+            0.0030f32 / 255.0f32,
+            0.6935f32 / (255.0f32 * 255.0f32),
+            0.3012f32 / (255.0f32 * 255.0f32 * 255.0f32),
+        ]
+        .map(|v| self.fconst(v));
+        let small_max = self.splat(15);
+        let small = self.b.ins().icmp(IntCC::SignedLessThanOrEqual, v, small_max);
+        let small = self.b.ins().bitcast(F32X4, MemFlagsData::new(), small);
+        let linear = self.b.ins().fmul(x, k);
+        let x2 = self.b.ins().fmul(x, x);
+        let odd = self.b.ins().fma(x2, p[3], p[1]);
+        let even = self.b.ins().fma(x2, p[2], p[0]);
+        let poly = self.b.ins().fma(odd, x, even);
+        self.b.ins().bitselect(small, linear, poly)
+    }
+
+    /// The f32 lerp `fma(w, b − a, a)` (`arith::lerp`).
+    fn lerp_f(&mut self, w: Value, a: Value, b: Value) -> Value {
+        let d = self.b.ins().fsub(b, a);
+        self.b.ins().fma(w, d, a)
     }
 
     /// `minps(a, b)`: `a < b ? a : b`.
