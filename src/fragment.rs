@@ -145,6 +145,12 @@ pub struct FragmentStage<'t, 'f> {
     /// Copies of the current draw's [`DrawStage`] flags (read per span).
     span_color: bool,
     span_z: bool,
+    /// Bit `i` set when `batch[i]`'s colours (`dirty_color`) or depths
+    /// (`dirty_z`) may be other than zero: a span copied in wrote them.
+    /// A row ([`SpanSink::row`]) zeroes only those its draw reads and are
+    /// not zero already (module docs).
+    dirty_color: u32,
+    dirty_z: u32,
     error: Option<FragmentError>,
 }
 
@@ -160,6 +166,8 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
             planes_len: 0,
             span_color: false,
             span_z: false,
+            dirty_color: 0,
+            dirty_z: 0,
             error: None,
         }
     }
@@ -293,11 +301,14 @@ impl SpanSink for FragmentStage<'_, '_> {
         };
         (s.x, s.y, s.len, s.mask) = (span.x, span.y, span.len, span.mask);
         s.planes = self.planes_len.saturating_sub(1) as u32;
+        let bit = 1 << self.count;
         if self.span_color {
             (s.r, s.g, s.b, s.a) = (span.r, span.g, span.b, span.a);
+            self.dirty_color |= bit;
         }
         if self.span_z {
             s.z = span.z;
+            self.dirty_z |= bit;
         }
         self.count += 1;
         if self.count == BATCH {
@@ -314,12 +325,18 @@ impl SpanSink for FragmentStage<'_, '_> {
                 return;
             };
             (s.x, s.y, s.len, s.mask, s.planes) = (x, y, len, mask, planes);
-            // The row's colours and depths are zero (`SpanSink::row`).
-            if self.span_color | self.span_z {
+            // The row's colours and depths are zero (`SpanSink::row`):
+            // those the draw reads, where a span left others.
+            let bit = 1 << self.count;
+            if self.span_color && self.dirty_color & bit != 0 {
                 for c in [&mut s.r, &mut s.g, &mut s.b, &mut s.a] {
                     *c = [0; SPAN_MAX];
                 }
+                self.dirty_color &= !bit;
+            }
+            if self.span_z && self.dirty_z & bit != 0 {
                 s.z = [0; SPAN_MAX];
+                self.dirty_z &= !bit;
             }
             self.count += 1;
             if self.count == BATCH {

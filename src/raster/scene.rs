@@ -763,7 +763,11 @@ impl Scene {
         let shared = !others.is_empty() && self.draws.iter().any(|d| d.shades_samples);
         let (width, height, rows) = (band.width(), band.height(), band.rows());
         let mut shade_mem = SharedShade::new(shared, width, rows.len());
-        let mut work = if shared { Some(GroupWork::boxed()) } else { None };
+        let mut work = shared.then(|| {
+            let mut w = GroupWork::boxed();
+            w.probes = vec![Probe::default(); self.draws.len()];
+            w
+        });
         let mut shade_target = shade_mem.target((width, height), (rows.start, rows.end - rows.start));
         let mut shade_stage = shade_target.as_mut().map(FragmentStage::new);
         let mut others: Vec<FragmentStage<'_, '_>> = others.iter_mut().map(FragmentStage::new).collect();
@@ -977,7 +981,14 @@ impl Scene {
         // pass are not shaded (the per-sample specialists shade only what
         // those tests leave: a skybox behind the scene, a reflection
         // outside its stencil, were shaded whole otherwise).
-        if let Some(early) = self.draws.get(class.draw as usize + 1).and_then(EarlyTests::of) {
+        let early = self.draws.get(class.draw as usize + 1).and_then(EarlyTests::of);
+        let mut probe = work.probes.get_mut(class.draw as usize);
+        if let Some(p) = probe.as_deref_mut() {
+            if early.is_some() && !p.testing(&work.union[lo..hi]) {
+                probe = None;
+            }
+        }
+        if let (Some(early), Some(probe)) = (early, probe) {
             let z = class.params.depth.is_some();
             let pass = &mut work.pass;
             pass[lo..hi].fill(0);
@@ -996,10 +1007,14 @@ impl Scene {
                 let masks = &work.masks[s];
                 to.direct(|t| early.pass(t, plane, (tile, height), (lo, hi), masks, pass));
             }
+            let (mut tested, mut kept) = (0, 0);
             for (u, p) in work.union[lo..hi].iter_mut().zip(&pass[lo..hi]) {
+                tested += u.count_ones();
                 *u &= p;
+                kept += u.count_ones();
             }
-            if work.union[lo..hi].iter().all(|&m| m == 0) {
+            probe.tested(tested, kept);
+            if kept == 0 {
                 return;
             }
         }
@@ -1133,6 +1148,58 @@ struct GroupWork {
     colors: [[[u8; SPAN_MAX]; 4]; TILE as usize],
     span: FragmentSpan,
     planes: Planes,
+    /// Whether each draw's early tests pay, in this band ([`Probe`]).
+    probes: Vec<Probe>,
+}
+
+/// Whether a shared draw's early tests ([`EarlyTests`]) are run, from
+/// what they killed lately in the band: they cost about 50 instructions
+/// a pixel, and the per-sample batches run before them (they read the
+/// samples' buffers), so where they kill little they cost more than the
+/// shading they save. MuJoCo's lit passes (depth `LEQUAL` over the base
+/// pass's own depth) pass everywhere; the reflection through the stencil
+/// and a skybox behind the scene are killed in most pixels. So a draw's
+/// tests run over a window of [`Probe::WINDOW`] pixels; when they killed
+/// less than a quarter of them the next [`Probe::SKIP`] pixels are shaded
+/// untested, then a window is tested again. Skipping them changes no
+/// byte: the per-sample half runs the exact tests on what is shaded.
+#[derive(Clone, Copy, Debug, Default)]
+struct Probe {
+    /// Pixels tested in this window, and those the tests kept.
+    tested: u32,
+    kept: u32,
+    /// Pixels still to shade untested.
+    skip: u32,
+}
+
+impl Probe {
+    const WINDOW: u32 = 1024;
+    const SKIP: u32 = 16 * 1024;
+
+    /// Whether the pixels of `union` are tested (else they count against
+    /// the pixels to skip).
+    #[inline]
+    fn testing(&mut self, union: &[u64]) -> bool {
+        if self.skip == 0 {
+            return true;
+        }
+        let n: u32 = union.iter().map(|m| m.count_ones()).sum();
+        self.skip = self.skip.saturating_sub(n);
+        false
+    }
+
+    /// `tested` pixels were tested, of which the tests kept `kept`.
+    #[inline]
+    fn tested(&mut self, tested: u32, kept: u32) {
+        self.tested += tested;
+        self.kept += kept;
+        if self.tested >= Self::WINDOW {
+            if 4 * (self.tested - self.kept) < self.tested {
+                self.skip = Self::SKIP;
+            }
+            (self.tested, self.kept) = (0, 0);
+        }
+    }
 }
 
 impl SharedShade {
@@ -1164,6 +1231,7 @@ impl GroupWork {
             colors: [[[0; SPAN_MAX]; 4]; TILE as usize],
             span: FragmentSpan::new(0, 0),
             planes: Planes::default(),
+            probes: Vec::new(),
         })
     }
 }
