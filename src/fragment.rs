@@ -289,6 +289,62 @@ impl<'t, 'f> FragmentStage<'t, 'f> {
     }
 }
 
+impl FragmentStage<'_, '_> {
+    /// Adds the span of `len` fragments at `(x, y)`, `mask` covered, whose
+    /// colours and depths `fill` writes into the batch's slot: what
+    /// [`SpanSink::span`] of a span so filled does, without the span
+    /// made first and copied (512 bytes a span). Lanes `fill` leaves keep
+    /// what the slot held (the stages read only the covered lanes).
+    #[inline(always)]
+    pub(crate) fn span_filled(&mut self, (x, y, len): (u32, u32, u32), mask: u64, fill: impl FnOnce(&mut FragmentSpan)) {
+        let planes = self.planes_len.saturating_sub(1) as u32;
+        let Some(s) = self.batch.get_mut(self.count) else {
+            return;
+        };
+        (s.x, s.y, s.len, s.mask, s.planes) = (x, y, len, mask, planes);
+        if s.live_mask() == 0 {
+            return;
+        }
+        fill(s);
+        let bit = 1 << self.count;
+        self.dirty_color |= bit;
+        self.dirty_z |= bit;
+        self.count += 1;
+        if self.count == BATCH {
+            self.flush();
+        }
+    }
+
+    /// Adds the span of `len` fragments at `(x, y)`, `mask` covered, with
+    /// nothing but the planes ([`SpanSink::row`]).
+    #[inline(always)]
+    fn push_row(&mut self, y: u32, x: u32, len: u32, mask: u64) {
+        let planes = self.planes_len.saturating_sub(1) as u32;
+        // `batch` holds `BATCH` spans from the stage's start on.
+        let Some(s) = self.batch.get_mut(self.count) else {
+            return;
+        };
+        (s.x, s.y, s.len, s.mask, s.planes) = (x, y, len, mask, planes);
+        // The row's colours and depths are zero (`SpanSink::row`): those
+        // the draw reads, where a span left others.
+        let bit = 1 << self.count;
+        if self.span_color && self.dirty_color & bit != 0 {
+            for c in [&mut s.r, &mut s.g, &mut s.b, &mut s.a] {
+                *c = [0; SPAN_MAX];
+            }
+            self.dirty_color &= !bit;
+        }
+        if self.span_z && self.dirty_z & bit != 0 {
+            s.z = [0; SPAN_MAX];
+            self.dirty_z &= !bit;
+        }
+        self.count += 1;
+        if self.count == BATCH {
+            self.flush();
+        }
+    }
+}
+
 impl SpanSink for FragmentStage<'_, '_> {
     fn span(&mut self, span: &FragmentSpan) {
         if span.live_mask() == 0 {
@@ -318,29 +374,13 @@ impl SpanSink for FragmentStage<'_, '_> {
 
     #[inline]
     fn row(&mut self, y: u32, x0: u32, x1: u32) {
-        let planes = self.planes_len.saturating_sub(1) as u32;
-        for (x, len, mask) in crate::raster::row_spans(x0, x1) {
-            // `batch` holds `BATCH` spans from the stage's start on.
-            let Some(s) = self.batch.get_mut(self.count) else {
-                return;
-            };
-            (s.x, s.y, s.len, s.mask, s.planes) = (x, y, len, mask, planes);
-            // The row's colours and depths are zero (`SpanSink::row`):
-            // those the draw reads, where a span left others.
-            let bit = 1 << self.count;
-            if self.span_color && self.dirty_color & bit != 0 {
-                for c in [&mut s.r, &mut s.g, &mut s.b, &mut s.a] {
-                    *c = [0; SPAN_MAX];
-                }
-                self.dirty_color &= !bit;
-            }
-            if self.span_z && self.dirty_z & bit != 0 {
-                s.z = [0; SPAN_MAX];
-                self.dirty_z &= !bit;
-            }
-            self.count += 1;
-            if self.count == BATCH {
-                self.flush();
+        // A row within a tile (every row of a scene's flush) is one span.
+        let last = x1.wrapping_sub(x0);
+        if last < SPAN_MAX as u32 {
+            self.push_row(y, x0, last + 1, u64::MAX >> (63 - last));
+        } else {
+            for (x, len, mask) in crate::raster::row_spans(x0, x1) {
+                self.push_row(y, x, len, mask);
             }
         }
     }

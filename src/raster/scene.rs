@@ -1055,26 +1055,29 @@ impl Scene {
                 let Some(st) = t.stencil_mut().and_then(|st| st.get(i..i + len as usize)) else {
                     continue;
                 };
+                // Every pixel of the row tested, no bit scan (the
+                // compiler vectorizes it), then those shaded kept.
                 let mut keep = 0u64;
-                for b in crate::raster::set_bits(m) {
-                    if st.get(b).is_some_and(|&v| v == 1) {
-                        keep |= 1 << b;
-                    }
+                for (b, &v) in st.iter().take(64).enumerate() {
+                    keep |= u64::from(v == 1) << b;
                 }
-                alive[r] = keep;
+                alive[r] = keep & m;
             }
             for (r, &m) in alive[..hi].iter().enumerate().skip(lo) {
+                if m == 0 {
+                    continue;
+                }
                 let o = t.color_offset(tile.x0, tile.y0 + r as u32);
-                let (Some(c), Some(to)) = (t.color().get(o..o + 4 * len as usize), colors.get_mut(r)) else {
+                // The colours of the pixels from the first kept to the last
+                // (the stages read the kept ones), four channels apart.
+                let (b0, b1) = (m.trailing_zeros() as usize, 64 - m.leading_zeros() as usize);
+                let (Some(c), Some([tr, tg, tb, ta])) = (t.color().get(o + 4 * b0..o + 4 * b1), colors.get_mut(r))
+                else {
                     continue;
                 };
-                for b in crate::raster::set_bits(m) {
-                    if let Some(px) = c.get(4 * b..4 * b + 4) {
-                        to[0][b] = px[0];
-                        to[1][b] = px[1];
-                        to[2][b] = px[2];
-                        to[3][b] = px[3];
-                    }
+                let to = tr[b0..b1].iter_mut().zip(&mut tg[b0..b1]).zip(&mut tb[b0..b1]).zip(&mut ta[b0..b1]);
+                for (px, (((r, g), b), a)) in c.chunks_exact(4).zip(to) {
+                    (*r, *g, *b, *a) = (px[0], px[1], px[2], px[3]);
                 }
             }
         });
@@ -1107,19 +1110,19 @@ impl Scene {
                     continue;
                 }
                 let y = tile.y0 + r as u32;
-                (span.x, span.y, span.len, span.mask) = (tile.x0, y, len, m);
-                if let Some(c) = colors.get(r) {
-                    (span.r, span.g, span.b, span.a) = (c[0], c[1], c[2], c[3]);
-                }
-                if let Some((f, a0, dadx, dady)) = z {
-                    let row = softgl_jit::interp::row_of(y, height);
-                    for b in crate::raster::set_bits(m) {
-                        let x = (tile.x0 + b as u32) as f32;
-                        let v = dady.mul_add(row, dadx.mul_add(x, a0));
-                        span.z[b] = crate::framebuffer::depth_to_unorm(f64::from(v), f);
+                to.span_filled((tile.x0, y, len), m, |span| {
+                    if let Some(c) = colors.get(r) {
+                        (span.r, span.g, span.b, span.a) = (c[0], c[1], c[2], c[3]);
                     }
-                }
-                to.span(span);
+                    if let Some((f, a0, dadx, dady)) = z {
+                        let row = softgl_jit::interp::row_of(y, height);
+                        for b in crate::raster::set_bits(m) {
+                            let x = (tile.x0 + b as u32) as f32;
+                            let v = dady.mul_add(row, dadx.mul_add(x, a0));
+                            span.z[b] = crate::framebuffer::depth_to_unorm(f64::from(v), f);
+                        }
+                    }
+                });
             }
         }
     }
