@@ -328,6 +328,24 @@ impl FragmentStage<'_, '_> {
         // The row's colours and depths are zero (`SpanSink::row`): those
         // the draw reads, where a span left others.
         let bit = 1 << self.count;
+        if (u32::from(self.span_color) * self.dirty_color | u32::from(self.span_z) * self.dirty_z) & bit != 0 {
+            self.zero_slot();
+        }
+        self.count += 1;
+        if self.count == BATCH {
+            self.flush();
+        }
+    }
+
+    /// Zeroes the colours and depths of the batch's next slot that the
+    /// draw reads ([`FragmentStage::push_row`]).
+    #[cold]
+    #[inline(never)]
+    fn zero_slot(&mut self) {
+        let bit = 1 << self.count;
+        let Some(s) = self.batch.get_mut(self.count) else {
+            return;
+        };
         if self.span_color && self.dirty_color & bit != 0 {
             for c in [&mut s.r, &mut s.g, &mut s.b, &mut s.a] {
                 *c = [0; SPAN_MAX];
@@ -338,9 +356,13 @@ impl FragmentStage<'_, '_> {
             s.z = [0; SPAN_MAX];
             self.dirty_z &= !bit;
         }
-        self.count += 1;
-        if self.count == BATCH {
-            self.flush();
+    }
+
+    /// A row of more than [`SPAN_MAX`] fragments ([`SpanSink::row`]).
+    #[inline(never)]
+    fn long_row(&mut self, y: u32, x0: u32, x1: u32) {
+        for (x, len, mask) in crate::raster::row_spans(x0, x1) {
+            self.push_row(y, x, len, mask);
         }
     }
 }
@@ -372,16 +394,14 @@ impl SpanSink for FragmentStage<'_, '_> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn row(&mut self, y: u32, x0: u32, x1: u32) {
         // A row within a tile (every row of a scene's flush) is one span.
         let last = x1.wrapping_sub(x0);
         if last < SPAN_MAX as u32 {
             self.push_row(y, x0, last + 1, u64::MAX >> (63 - last));
         } else {
-            for (x, len, mask) in crate::raster::row_spans(x0, x1) {
-                self.push_row(y, x, len, mask);
-            }
+            self.long_row(y, x0, x1);
         }
     }
 
