@@ -316,7 +316,12 @@ impl FragmentStage<'_, '_> {
     /// made first and copied (512 bytes a span). Lanes `fill` leaves keep
     /// what the slot held (the stages read only the covered lanes).
     #[inline(always)]
-    pub(crate) fn span_filled(&mut self, (x, y, len): (u32, u32, u32), mask: u64, fill: impl FnOnce(&mut FragmentSpan)) {
+    pub(crate) fn span_filled(
+        &mut self,
+        (x, y, len): (u32, u32, u32),
+        mask: u64,
+        fill: impl FnOnce(&mut FragmentSpan),
+    ) {
         let planes = self.planes_len.saturating_sub(1) as u32;
         let Some(s) = self.batch.get_mut(self.count) else {
             return;

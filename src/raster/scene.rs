@@ -1082,7 +1082,11 @@ impl Scene {
                 else {
                     continue;
                 };
-                let to = tr[b0..b1].iter_mut().zip(&mut tg[b0..b1]).zip(&mut tb[b0..b1]).zip(&mut ta[b0..b1]);
+                let to = tr[b0..b1]
+                    .iter_mut()
+                    .zip(&mut tg[b0..b1])
+                    .zip(&mut tb[b0..b1])
+                    .zip(&mut ta[b0..b1]);
                 for (px, (((r, g), b), a)) in c.chunks_exact(4).zip(to) {
                     (*r, *g, *b, *a) = (px[0], px[1], px[2], px[3]);
                 }
