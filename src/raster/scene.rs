@@ -50,8 +50,8 @@ use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::shade::{slot, PLANES};
 use softgl_jit::texture::TextureSet;
 use softgl_jit::{
-    ColorFormat, CompareFunc, DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms,
-    Planes, Specialist, StencilOp, Target, SPAN_MAX,
+    ColorFormat, CompareFunc, DepthFormat, DepthTarget, DrawTextures, FragmentError, FragmentKey, FragmentSpan,
+    FragmentUniforms, Planes, Specialist, StencilOp, Target, SPAN_MAX,
 };
 use std::cell::OnceCell;
 use std::collections::HashSet;
@@ -1303,6 +1303,10 @@ impl EarlyTests {
         masks: &[u64; TILE as usize],
         pass: &mut [u64; TILE as usize],
     ) {
+        // The buffers and the depth format are matched once a row, not once
+        // a pixel (~100 instructions a test were ~60% of the skybox's cost
+        // with cube maps shared).
+        let plane = plane.map(|p| p.map(f64::from));
         for r in lo..hi {
             // (Pixels an earlier sample passes need no more tests.)
             let m = masks[r] & !pass[r];
@@ -1310,61 +1314,84 @@ impl EarlyTests {
                 continue;
             }
             let y = tile.y0 + r as u32;
-            let row = f64::from(softgl_jit::interp::row_of(y, height));
             let i0 = t.index(tile.x0, y);
-            let mut keep = 0u64;
-            for b in crate::raster::set_bits(m) {
-                let i = i0 + b;
-                let stencil_ok = match (self.stencil, t.stencil_mut()) {
-                    (Some((func, reference, mask)), Some(st)) => {
-                        st.get(i).is_none_or(|&v| func.test(reference, v & mask))
+            let mut keep = m;
+            if let (Some((func, reference, mask)), Some(st)) = (self.stencil, t.stencil_mut()) {
+                for b in crate::raster::set_bits(m) {
+                    if st.get(i0 + b).is_some_and(|&v| !func.test(reference, v & mask)) {
+                        keep &= !(1 << b);
                     }
-                    _ => true,
-                };
-                if !stencil_ok {
-                    continue;
                 }
-                let depth_ok = match (self.depth, plane, t.depth_mut()) {
-                    (Some(func), Some([a0, dadx, dady]), Some(d)) => {
-                        let x = f64::from(tile.x0 + b as u32);
-                        let (a0, dadx, dady) = (f64::from(a0), f64::from(dadx), f64::from(dady));
-                        let z = a0 + dadx * x + dady * row;
-                        // f32 rounding of the plane's terms, generously.
-                        let err = (a0.abs() + (dadx * x).abs() + (dady * row).abs()) * (1.0 / (1u64 << 20) as f64)
-                            + 1.0 / (1u64 << 20) as f64;
-                        // A unorm depth is rounded to a unit (two to spare); a
-                        // float one is the plane's f32 value, within `err`.
-                        // (It had the unorm's two units too, which for
-                        // [0, 1] let every fragment pass: MuJoCo's buffers
-                        // are float, so no depth test of its ever killed.)
-                        let (max, stored, slack) = match d.format() {
-                            DepthFormat::D32F => (1.0, f64::from(f32::from_bits(d.get(i))), 0.0),
-                            f => (f64::from(f.max_value()), f64::from(d.get(i)), 2.0),
-                        };
-                        if !z.is_finite() || !err.is_finite() {
-                            true
-                        } else {
-                            let z = z.clamp(0.0, 1.0) * max;
-                            let margin = err * max + slack;
-                            match func {
-                                CompareFunc::Never => false,
-                                CompareFunc::Less => z - margin < stored,
-                                CompareFunc::Lequal => z - margin <= stored,
-                                CompareFunc::Greater => z + margin > stored,
-                                CompareFunc::Gequal => z + margin >= stored,
-                                CompareFunc::Equal => (z - stored).abs() <= margin,
-                                CompareFunc::Notequal | CompareFunc::Always => true,
-                            }
-                        }
-                    }
-                    _ => true,
+            }
+            if let (Some(func), Some(plane), Some(d), true) = (self.depth, plane, t.depth_mut(), keep != 0) {
+                let at = DepthRow {
+                    func,
+                    plane,
+                    x0: f64::from(tile.x0),
+                    row: f64::from(softgl_jit::interp::row_of(y, height)),
                 };
-                if depth_ok {
-                    keep |= 1 << b;
-                }
+                let unorm = |f: DepthFormat| f64::from(f.max_value());
+                keep = match d {
+                    DepthTarget::D16(v) => at.keep(keep, v.get(i0..), (unorm(DepthFormat::D16), 2.0), f64::from),
+                    DepthTarget::D24(v) => at.keep(keep, v.get(i0..), (unorm(DepthFormat::D24), 2.0), f64::from),
+                    DepthTarget::D32(v) => at.keep(keep, v.get(i0..), (unorm(DepthFormat::D32), 2.0), f64::from),
+                    DepthTarget::D32F(v) => at.keep(keep, v.get(i0..), (1.0, 0.0), |v| f64::from(f32::from_bits(v))),
+                };
             }
             pass[r] |= keep;
         }
+    }
+}
+
+/// One row's early depth test ([`EarlyTests::pass`]).
+struct DepthRow {
+    func: CompareFunc,
+    /// The sample's depth plane, and the tile's first column and the row
+    /// as the plane takes them.
+    plane: [f64; 3],
+    x0: f64,
+    row: f64,
+}
+
+impl DepthRow {
+    /// `keep` without the pixels (bit `b`: `row[b]`, a buffer of `max`
+    /// units rounded to within `slack` of them, `stored` reading one)
+    /// whose depth test fails by more than the margin. The plane is evaluated in f64; a unorm depth is
+    /// rounded to a unit (two to spare), a float one is the plane's f32
+    /// value, within `err`. (Float depth had the unorm's two units too,
+    /// which in [0, 1] let every fragment pass: MuJoCo's buffers are
+    /// float, so no depth test of its killed early.)
+    #[inline(always)]
+    fn keep<T: Copy>(&self, keep: u64, row: Option<&[T]>, (max, slack): (f64, f64), stored: impl Fn(T) -> f64) -> u64 {
+        const E: f64 = 1.0 / (1u64 << 20) as f64;
+        let [a0, dadx, dady] = self.plane;
+        let row = row.unwrap_or(&[]);
+        let mut out = keep;
+        for b in crate::raster::set_bits(keep) {
+            let Some(&v) = row.get(b) else { continue };
+            let x = self.x0 + b as f64;
+            let z = a0 + dadx * x + dady * self.row;
+            // f32 rounding of the plane's terms, generously.
+            let err = (a0.abs() + (dadx * x).abs() + (dady * self.row).abs()) * E + E;
+            if !z.is_finite() || !err.is_finite() {
+                continue;
+            }
+            let (z, stored) = (z.clamp(0.0, 1.0) * max, stored(v));
+            let margin = err * max + slack;
+            let ok = match self.func {
+                CompareFunc::Never => false,
+                CompareFunc::Less => z - margin < stored,
+                CompareFunc::Lequal => z - margin <= stored,
+                CompareFunc::Greater => z + margin > stored,
+                CompareFunc::Gequal => z + margin >= stored,
+                CompareFunc::Equal => (z - stored).abs() <= margin,
+                CompareFunc::Notequal | CompareFunc::Always => true,
+            };
+            if !ok {
+                out &= !(1 << b);
+            }
+        }
+        out
     }
 }
 
