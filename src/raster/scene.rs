@@ -50,13 +50,14 @@ use crate::texture::unit::{SharedPlan, TexturePlan};
 use softgl_jit::shade::{slot, PLANES};
 use softgl_jit::texture::TextureSet;
 use softgl_jit::{
-    ColorFormat, CompareFunc, DepthFormat, DrawTextures, FragmentError, FragmentKey, FragmentSpan, FragmentUniforms,
-    Planes, Specialist, StencilOp, Target, SPAN_MAX,
+    ColorFormat, CompareFunc, DepthFormat, DepthTarget, DrawTextures, FragmentError, FragmentKey, FragmentSpan,
+    FragmentUniforms, Planes, Specialist, StencilOp, Target, SPAN_MAX,
 };
 use std::cell::OnceCell;
 use std::collections::HashSet;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Condvar, Mutex, PoisonError};
+use wide::u8x16;
 
 /// Side of a tile, in pixels.
 pub const TILE: u32 = 64;
@@ -763,7 +764,11 @@ impl Scene {
         let shared = !others.is_empty() && self.draws.iter().any(|d| d.shades_samples);
         let (width, height, rows) = (band.width(), band.height(), band.rows());
         let mut shade_mem = SharedShade::new(shared, width, rows.len());
-        let mut work = if shared { Some(GroupWork::boxed()) } else { None };
+        let mut work = shared.then(|| {
+            let mut w = GroupWork::boxed();
+            w.probes = vec![Probe::default(); self.draws.len()];
+            w
+        });
         let mut shade_target = shade_mem.target((width, height), (rows.start, rows.end - rows.start));
         let mut shade_stage = shade_target.as_mut().map(FragmentStage::new);
         let mut others: Vec<FragmentStage<'_, '_>> = others.iter_mut().map(FragmentStage::new).collect();
@@ -977,7 +982,14 @@ impl Scene {
         // pass are not shaded (the per-sample specialists shade only what
         // those tests leave: a skybox behind the scene, a reflection
         // outside its stencil, were shaded whole otherwise).
-        if let Some(early) = self.draws.get(class.draw as usize + 1).and_then(EarlyTests::of) {
+        let early = self.draws.get(class.draw as usize + 1).and_then(EarlyTests::of);
+        let mut probe = work.probes.get_mut(class.draw as usize);
+        if let Some(p) = probe.as_deref_mut() {
+            if early.is_some() && !p.testing(&work.union[lo..hi]) {
+                probe = None;
+            }
+        }
+        if let (Some(early), Some(probe)) = (early, probe) {
             let z = class.params.depth.is_some();
             let pass = &mut work.pass;
             pass[lo..hi].fill(0);
@@ -996,10 +1008,14 @@ impl Scene {
                 let masks = &work.masks[s];
                 to.direct(|t| early.pass(t, plane, (tile, height), (lo, hi), masks, pass));
             }
+            let (mut tested, mut kept) = (0, 0);
             for (u, p) in work.union[lo..hi].iter_mut().zip(&pass[lo..hi]) {
+                tested += u.count_ones();
                 *u &= p;
+                kept += u.count_ones();
             }
-            if work.union[lo..hi].iter().all(|&m| m == 0) {
+            probe.tested(tested, kept);
+            if kept == 0 {
                 return;
             }
         }
@@ -1040,26 +1056,39 @@ impl Scene {
                 let Some(st) = t.stencil_mut().and_then(|st| st.get(i..i + len as usize)) else {
                     continue;
                 };
+                // Every pixel of the row tested, sixteen at once, no bit
+                // scan; then those shaded kept.
                 let mut keep = 0u64;
-                for b in crate::raster::set_bits(m) {
-                    if st.get(b).is_some_and(|&v| v == 1) {
-                        keep |= 1 << b;
-                    }
+                for (k, c) in st.chunks(16).enumerate().take(4) {
+                    keep |= match <[u8; 16]>::try_from(c) {
+                        Ok(c) => u64::from(u8x16::new(c).simd_eq(u8x16::splat(1)).to_bitmask()) << (16 * k),
+                        Err(_) => c
+                            .iter()
+                            .enumerate()
+                            .fold(0, |m, (b, &v)| m | u64::from(v == 1) << (16 * k + b)),
+                    };
                 }
-                alive[r] = keep;
+                alive[r] = keep & m;
             }
             for (r, &m) in alive[..hi].iter().enumerate().skip(lo) {
+                if m == 0 {
+                    continue;
+                }
                 let o = t.color_offset(tile.x0, tile.y0 + r as u32);
-                let (Some(c), Some(to)) = (t.color().get(o..o + 4 * len as usize), colors.get_mut(r)) else {
+                // The colours of the pixels from the first kept to the last
+                // (the stages read the kept ones), four channels apart.
+                let (b0, b1) = (m.trailing_zeros() as usize, 64 - m.leading_zeros() as usize);
+                let (Some(c), Some([tr, tg, tb, ta])) = (t.color().get(o + 4 * b0..o + 4 * b1), colors.get_mut(r))
+                else {
                     continue;
                 };
-                for b in crate::raster::set_bits(m) {
-                    if let Some(px) = c.get(4 * b..4 * b + 4) {
-                        to[0][b] = px[0];
-                        to[1][b] = px[1];
-                        to[2][b] = px[2];
-                        to[3][b] = px[3];
-                    }
+                let to = tr[b0..b1]
+                    .iter_mut()
+                    .zip(&mut tg[b0..b1])
+                    .zip(&mut tb[b0..b1])
+                    .zip(&mut ta[b0..b1]);
+                for (px, (((r, g), b), a)) in c.chunks_exact(4).zip(to) {
+                    (*r, *g, *b, *a) = (px[0], px[1], px[2], px[3]);
                 }
             }
         });
@@ -1092,19 +1121,19 @@ impl Scene {
                     continue;
                 }
                 let y = tile.y0 + r as u32;
-                (span.x, span.y, span.len, span.mask) = (tile.x0, y, len, m);
-                if let Some(c) = colors.get(r) {
-                    (span.r, span.g, span.b, span.a) = (c[0], c[1], c[2], c[3]);
-                }
-                if let Some((f, a0, dadx, dady)) = z {
-                    let row = softgl_jit::interp::row_of(y, height);
-                    for b in crate::raster::set_bits(m) {
-                        let x = (tile.x0 + b as u32) as f32;
-                        let v = dady.mul_add(row, dadx.mul_add(x, a0));
-                        span.z[b] = crate::framebuffer::depth_to_unorm(f64::from(v), f);
+                to.span_filled((tile.x0, y, len), m, |span| {
+                    if let Some(c) = colors.get(r) {
+                        (span.r, span.g, span.b, span.a) = (c[0], c[1], c[2], c[3]);
                     }
-                }
-                to.span(span);
+                    if let Some((f, a0, dadx, dady)) = z {
+                        let row = softgl_jit::interp::row_of(y, height);
+                        for b in crate::raster::set_bits(m) {
+                            let x = (tile.x0 + b as u32) as f32;
+                            let v = dady.mul_add(row, dadx.mul_add(x, a0));
+                            span.z[b] = crate::framebuffer::depth_to_unorm(f64::from(v), f);
+                        }
+                    }
+                });
             }
         }
     }
@@ -1133,6 +1162,61 @@ struct GroupWork {
     colors: [[[u8; SPAN_MAX]; 4]; TILE as usize],
     span: FragmentSpan,
     planes: Planes,
+    /// Whether each draw's early tests pay, in this band ([`Probe`]).
+    probes: Vec<Probe>,
+}
+
+/// Whether a shared draw's early tests ([`EarlyTests`]) are run, from
+/// what they killed lately in the band: they cost tens of instructions a
+/// pixel, and each sample's pending batch runs before them (they read the
+/// samples' buffers, so a sample's batch ended at every triangle), so
+/// where they kill little they cost more than the shading they save.
+/// MuJoCo's lit passes (a depth test equal to the base pass's own depth)
+/// pass everywhere: `shadow_fbo plane-640x480` spent ~90 M instructions a
+/// frame on them; the reflection through the stencil is killed in most
+/// pixels. So a draw's tests run over a window of [`Probe::WINDOW`]
+/// pixels; when they killed less than a quarter of them the next
+/// [`Probe::SKIP`] pixels are shaded untested, then a window is tested
+/// again (that frame: 845 M → 755 M instructions together with the rows'
+/// zeroing, `fragment.rs`; ~60 M of it these tests). Skipping them changes no byte: the per-sample half runs the
+/// exact tests on what is shaded.
+#[derive(Clone, Copy, Debug, Default)]
+struct Probe {
+    /// Pixels tested in this window, and those the tests kept.
+    tested: u32,
+    kept: u32,
+    /// Pixels still to shade untested.
+    skip: u32,
+}
+
+impl Probe {
+    const WINDOW: u32 = 1024;
+    const SKIP: u32 = 16 * 1024;
+
+    /// Whether the pixels of `union` are tested (else they count against
+    /// the pixels to skip).
+    #[inline]
+    fn testing(&mut self, union: &[u64]) -> bool {
+        if self.skip == 0 {
+            return true;
+        }
+        let n: u32 = union.iter().map(|m| m.count_ones()).sum();
+        self.skip = self.skip.saturating_sub(n);
+        false
+    }
+
+    /// `tested` pixels were tested, of which the tests kept `kept`.
+    #[inline]
+    fn tested(&mut self, tested: u32, kept: u32) {
+        self.tested += tested;
+        self.kept += kept;
+        if self.tested >= Self::WINDOW {
+            if 4 * (self.tested - self.kept) < self.tested {
+                self.skip = Self::SKIP;
+            }
+            (self.tested, self.kept) = (0, 0);
+        }
+    }
 }
 
 impl SharedShade {
@@ -1164,6 +1248,7 @@ impl GroupWork {
             colors: [[[0; SPAN_MAX]; 4]; TILE as usize],
             span: FragmentSpan::new(0, 0),
             planes: Planes::default(),
+            probes: Vec::new(),
         })
     }
 }
@@ -1218,6 +1303,10 @@ impl EarlyTests {
         masks: &[u64; TILE as usize],
         pass: &mut [u64; TILE as usize],
     ) {
+        // The buffers and the depth format are matched once a row, not once
+        // a pixel (MuJoCo's skybox shared, two `noshadow` frames at
+        // 640×480: 253 M → 201 M instructions of tests).
+        let plane = plane.map(|p| p.map(f64::from));
         for r in lo..hi {
             // (Pixels an earlier sample passes need no more tests.)
             let m = masks[r] & !pass[r];
@@ -1225,63 +1314,84 @@ impl EarlyTests {
                 continue;
             }
             let y = tile.y0 + r as u32;
-            let row = f64::from(softgl_jit::interp::row_of(y, height));
             let i0 = t.index(tile.x0, y);
-            let mut keep = 0u64;
-            for b in crate::raster::set_bits(m) {
-                let i = i0 + b;
-                let stencil_ok = match (self.stencil, t.stencil_mut()) {
-                    (Some((func, reference, mask)), Some(st)) => {
-                        st.get(i).is_none_or(|&v| func.test(reference, v & mask))
+            let mut keep = m;
+            if let (Some((func, reference, mask)), Some(st)) = (self.stencil, t.stencil_mut()) {
+                for b in crate::raster::set_bits(m) {
+                    if st.get(i0 + b).is_some_and(|&v| !func.test(reference, v & mask)) {
+                        keep &= !(1 << b);
                     }
-                    _ => true,
-                };
-                if !stencil_ok {
-                    continue;
                 }
-                let depth_ok = match (self.depth, plane, t.depth_mut()) {
-                    (Some(func), Some([a0, dadx, dady]), Some(d)) => {
-                        let x = f64::from(tile.x0 + b as u32);
-                        let (a0, dadx, dady) = (f64::from(a0), f64::from(dadx), f64::from(dady));
-                        let z = a0 + dadx * x + dady * row;
-                        // f32 rounding of the plane's terms, generously.
-                        let err = (a0.abs() + (dadx * x).abs() + (dady * row).abs()) * (1.0 / (1u64 << 20) as f64)
-                            + 1.0 / (1u64 << 20) as f64;
-                        let (max, stored) = match d.format() {
-                            DepthFormat::D32F => (1.0, f64::from(f32::from_bits(d.get(i)))),
-                            f => (f64::from(f.max_value()), f64::from(d.get(i))),
-                        };
-                        if !z.is_finite() || !err.is_finite() {
-                            true
-                        } else {
-                            let z = z.clamp(0.0, 1.0) * max;
-                            // Two units of an integer format; a float format
-                            // stores the f32 z itself, within `err` of this one
-                            // (2.0 there let every pixel through: MuJoCo's
-                            // skybox on its D32F buffer).
-                            let margin = match d.format() {
-                                DepthFormat::D32F => err,
-                                _ => err * max + 2.0,
-                            };
-                            match func {
-                                CompareFunc::Never => false,
-                                CompareFunc::Less => z - margin < stored,
-                                CompareFunc::Lequal => z - margin <= stored,
-                                CompareFunc::Greater => z + margin > stored,
-                                CompareFunc::Gequal => z + margin >= stored,
-                                CompareFunc::Equal => (z - stored).abs() <= margin,
-                                CompareFunc::Notequal | CompareFunc::Always => true,
-                            }
-                        }
-                    }
-                    _ => true,
+            }
+            if let (Some(func), Some(plane), Some(d), true) = (self.depth, plane, t.depth_mut(), keep != 0) {
+                let at = DepthRow {
+                    func,
+                    plane,
+                    x0: f64::from(tile.x0),
+                    row: f64::from(softgl_jit::interp::row_of(y, height)),
                 };
-                if depth_ok {
-                    keep |= 1 << b;
-                }
+                let unorm = |f: DepthFormat| f64::from(f.max_value());
+                keep = match d {
+                    DepthTarget::D16(v) => at.keep(keep, v.get(i0..), (unorm(DepthFormat::D16), 2.0), f64::from),
+                    DepthTarget::D24(v) => at.keep(keep, v.get(i0..), (unorm(DepthFormat::D24), 2.0), f64::from),
+                    DepthTarget::D32(v) => at.keep(keep, v.get(i0..), (unorm(DepthFormat::D32), 2.0), f64::from),
+                    DepthTarget::D32F(v) => at.keep(keep, v.get(i0..), (1.0, 0.0), |v| f64::from(f32::from_bits(v))),
+                };
             }
             pass[r] |= keep;
         }
+    }
+}
+
+/// One row's early depth test ([`EarlyTests::pass`]).
+struct DepthRow {
+    func: CompareFunc,
+    /// The sample's depth plane, and the tile's first column and the row
+    /// as the plane takes them.
+    plane: [f64; 3],
+    x0: f64,
+    row: f64,
+}
+
+impl DepthRow {
+    /// `keep` without the pixels (bit `b`: `row[b]`, a buffer of `max`
+    /// units rounded to within `slack` of them, `stored` reading one)
+    /// whose depth test fails by more than the margin. The plane is evaluated in f64; a unorm depth is
+    /// rounded to a unit (two to spare), a float one is the plane's f32
+    /// value, within `err`. (Float depth had the unorm's two units too,
+    /// which in [0, 1] let every fragment pass: MuJoCo's buffers are
+    /// float, so no depth test of its killed early.)
+    #[inline(always)]
+    fn keep<T: Copy>(&self, keep: u64, row: Option<&[T]>, (max, slack): (f64, f64), stored: impl Fn(T) -> f64) -> u64 {
+        const E: f64 = 1.0 / (1u64 << 20) as f64;
+        let [a0, dadx, dady] = self.plane;
+        let row = row.unwrap_or(&[]);
+        let mut out = keep;
+        for b in crate::raster::set_bits(keep) {
+            let Some(&v) = row.get(b) else { continue };
+            let x = self.x0 + b as f64;
+            let z = a0 + dadx * x + dady * self.row;
+            // f32 rounding of the plane's terms, generously.
+            let err = (a0.abs() + (dadx * x).abs() + (dady * self.row).abs()) * E + E;
+            if !z.is_finite() || !err.is_finite() {
+                continue;
+            }
+            let (z, stored) = (z.clamp(0.0, 1.0) * max, stored(v));
+            let margin = err * max + slack;
+            let ok = match self.func {
+                CompareFunc::Never => false,
+                CompareFunc::Less => z - margin < stored,
+                CompareFunc::Lequal => z - margin <= stored,
+                CompareFunc::Greater => z + margin > stored,
+                CompareFunc::Gequal => z + margin >= stored,
+                CompareFunc::Equal => (z - stored).abs() <= margin,
+                CompareFunc::Notequal | CompareFunc::Always => true,
+            };
+            if !ok {
+                out &= !(1 << b);
+            }
+        }
+        out
     }
 }
 
