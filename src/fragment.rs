@@ -331,9 +331,21 @@ impl FragmentStage<'_, '_> {
             return;
         }
         fill(s);
+        self.pushed(true, true);
+    }
+
+    /// Ends the span just written into the batch's next slot: marks its
+    /// colours (`colour`) and depths (`z`) dirty for [`FragmentStage::push_row`],
+    /// and runs the batch once it is full.
+    #[inline(always)]
+    fn pushed(&mut self, colour: bool, z: bool) {
         let bit = 1 << self.count;
-        self.dirty_color |= bit;
-        self.dirty_z |= bit;
+        if colour {
+            self.dirty_color |= bit;
+        }
+        if z {
+            self.dirty_z |= bit;
+        }
         self.mark();
         self.count += 1;
         if self.count == BATCH {
@@ -406,20 +418,13 @@ impl SpanSink for FragmentStage<'_, '_> {
         };
         (s.x, s.y, s.len, s.mask) = (span.x, span.y, span.len, span.mask);
         s.planes = self.planes_len.saturating_sub(1) as u32;
-        let bit = 1 << self.count;
         if self.span_color {
             (s.r, s.g, s.b, s.a) = (span.r, span.g, span.b, span.a);
-            self.dirty_color |= bit;
         }
         if self.span_z {
             s.z = span.z;
-            self.dirty_z |= bit;
         }
-        self.mark();
-        self.count += 1;
-        if self.count == BATCH {
-            self.flush();
-        }
+        self.pushed(self.span_color, self.span_z);
     }
 
     #[inline(always)]

@@ -4,6 +4,8 @@
 //! depth lookup and the interpreter) must read exactly what they read
 //! from the written texels, and `glGetTexImage` must return the same.
 
+mod common;
+
 use softgl::fbo::{AttachmentPoint as P, FramebufferTarget as T, RenderbufferFormat as F};
 use softgl::texture::{
     Filter, InternalFormat, MipFilter, PixelFormat, PixelStore, PixelType, TexImageTarget, TexParam, TextureTarget,
@@ -189,20 +191,7 @@ fn an_object_bound_again_takes_draw_pixels_before_its_first_draw() {
     // its first use: glDrawPixels (which does not go through the draw
     // path) must still land in it, not in the window.
     let mut gl = Context::new(FramebufferDesc::rgba8_d24s8(4, 4)).unwrap();
-    gl.bind_texture(TextureTarget::D2, 2).unwrap();
-    gl.tex_image(
-        TexImageTarget::D2,
-        0,
-        InternalFormat::DepthComponent24,
-        [4, 4, 1],
-        0,
-        None,
-    )
-    .unwrap();
-    let fb = gl.gen_framebuffers(1).unwrap()[0];
-    gl.bind_framebuffer(T::Both, fb).unwrap();
-    gl.framebuffer_texture(T::Both, P::Depth, Some(TexImageTarget::D2), 2, 0, 0)
-        .unwrap();
+    let fb = common::depth_texture_object(&mut gl, 2, 4);
     gl.draw_buffer(None).unwrap();
     gl.read_buffer(None, false).unwrap();
     gl.viewport(0, 0, 4, 4).unwrap();
@@ -225,20 +214,7 @@ fn an_object_bound_again_takes_draw_pixels_before_its_first_draw() {
     gl.draw_pixels(2, 2, softgl::pixel_rect::DrawKind::Depth, &data)
         .unwrap();
     gl.bind_framebuffer(T::Both, 0).unwrap();
-    let mut out = vec![0u8; 64];
-    gl.get_tex_image(
-        TexImageTarget::D2,
-        0,
-        PixelFormat::DepthComponent,
-        PixelType::Float,
-        &PixelStore::DEFAULT,
-        &mut out,
-    )
-    .unwrap();
-    let z: Vec<f32> = out
-        .chunks(4)
-        .map(|c| f32::from_ne_bytes(c.try_into().unwrap()))
-        .collect();
+    let z = common::depth_texels(&mut gl, 16);
     assert!((z[0] - 0.25).abs() < 1e-6 && (z[5] - 0.25).abs() < 1e-6, "{z:?}");
     assert_eq!((z[2], z[15]), (1.0, 1.0));
     assert_eq!(gl.get_error(), None);

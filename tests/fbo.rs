@@ -1,6 +1,8 @@
 //! Framebuffer objects through the Rust API (`src/fbo.rs`): renderbuffer
 //! and texture attachments, completeness, reads, blits, render to texture.
 
+mod common;
+
 use softgl::fbo::{
     AttachmentPoint as P, BlitFilter, BlitMask, FramebufferStatus as S, FramebufferTarget as T, RenderbufferFormat as F,
 };
@@ -201,17 +203,8 @@ fn a_depth_texture_is_rendered_and_read_back() {
     gl.viewport(0, 0, 2, 4).unwrap();
     quad(&mut gl, [1.0, 1.0, 1.0], 0.0);
     gl.bind_framebuffer(T::Both, 0).unwrap();
-    let mut out = vec![0u8; 64];
-    gl.get_tex_image(
-        TexImageTarget::D2,
-        0,
-        PixelFormat::DepthComponent,
-        PixelType::Float,
-        &PixelStore::DEFAULT,
-        &mut out,
-    )
-    .unwrap();
-    let z = |i: usize| f32::from_ne_bytes(out[4 * i..4 * i + 4].try_into().unwrap());
+    let texels = common::depth_texels(&mut gl, 16);
+    let z = |i: usize| texels[i];
     // Window depth 0.5 is rint(0.5 · 0xffffff) = 0x800000 in the depth
     // test, sampled as llvmpipe reads Z24: z · f32(1/0xffffff).
     assert_eq!(z(0), 0x80_0000 as f32 * (1.0 / 16_777_215.0f64) as f32);
@@ -396,20 +389,7 @@ fn a_4096_shadow_map_bound_again_is_not_converted_again() {
     // for drawing and back, the first time (f32 texels converted to depth
     // units) and again (the cached depth buffer reused).
     let mut gl = context(4, 4);
-    gl.bind_texture(TextureTarget::D2, 9).unwrap();
-    gl.tex_image(
-        TexImageTarget::D2,
-        0,
-        InternalFormat::DepthComponent24,
-        [4096, 4096, 1],
-        0,
-        None,
-    )
-    .unwrap();
-    let fb = gl.gen_framebuffers(1).unwrap()[0];
-    gl.bind_framebuffer(T::Both, fb).unwrap();
-    gl.framebuffer_texture(T::Both, P::Depth, Some(TexImageTarget::D2), 9, 0, 0)
-        .unwrap();
+    let fb = common::depth_texture_object(&mut gl, 9, 4096);
     gl.bind_framebuffer(T::Both, 0).unwrap();
     for pass in 0..3 {
         let t = std::time::Instant::now();

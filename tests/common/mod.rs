@@ -24,3 +24,52 @@ pub fn hex_scenes(text: &str) -> std::collections::HashMap<String, Vec<u8>> {
         })
         .collect()
 }
+
+/// A framebuffer object (bound to both targets) whose depth is level 0 of
+/// the new `size`² `GL_DEPTH_COMPONENT24` texture `texture` (left bound).
+#[allow(dead_code)] // Only the render-to-depth-texture tests use it.
+pub fn depth_texture_object(gl: &mut Context, texture: u32, size: i32) -> u32 {
+    use softgl::fbo::{AttachmentPoint, FramebufferTarget};
+    use softgl::texture::{InternalFormat, TexImageTarget, TextureTarget};
+    gl.bind_texture(TextureTarget::D2, texture).unwrap();
+    gl.tex_image(
+        TexImageTarget::D2,
+        0,
+        InternalFormat::DepthComponent24,
+        [size, size, 1],
+        0,
+        None,
+    )
+    .unwrap();
+    let fb = gl.gen_framebuffers(1).unwrap()[0];
+    gl.bind_framebuffer(FramebufferTarget::Both, fb).unwrap();
+    gl.framebuffer_texture(
+        FramebufferTarget::Both,
+        AttachmentPoint::Depth,
+        Some(TexImageTarget::D2),
+        texture,
+        0,
+        0,
+    )
+    .unwrap();
+    fb
+}
+
+/// Level 0 of the bound 2D texture as `n` depth floats (`glGetTexImage`).
+#[allow(dead_code)] // Only the render-to-depth-texture tests use it.
+pub fn depth_texels(gl: &mut Context, n: usize) -> Vec<f32> {
+    use softgl::texture::{PixelFormat, PixelStore, PixelType, TexImageTarget};
+    let mut out = vec![0u8; 4 * n];
+    gl.get_tex_image(
+        TexImageTarget::D2,
+        0,
+        PixelFormat::DepthComponent,
+        PixelType::Float,
+        &PixelStore::DEFAULT,
+        &mut out,
+    )
+    .unwrap();
+    out.chunks(4)
+        .map(|c| f32::from_ne_bytes(c.try_into().unwrap()))
+        .collect()
+}

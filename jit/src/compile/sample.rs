@@ -530,6 +530,47 @@ impl Gen<'_> {
         (texels, size)
     }
 
+    /// `unit`'s `level` (texels and size) with what keeps a texel index in
+    /// it. Coordinates are clamped to the level (they already are: the
+    /// clamp only guarantees it), rows made once. An axis whose wrap ends in
+    /// a mask with `len − 1` (REPEAT of a power of two) or a clamp to
+    /// `0..=len − 1` (CLAMP_TO_EDGE) has its texels there whatever the lane
+    /// held (NaN included): only REPEAT of other sizes (NaN through `fract`)
+    /// keeps the clamp. 8 instructions a group on the tex frame.
+    fn level_address(&mut self, unit: Value, key: &SamplerKey, level: Value) -> LevelAddress {
+        let (texels, size) = self.level_texels(unit, level);
+        let one = self.splat(1);
+        let last = size.map(|len| self.b.ins().isub(len, one));
+        let pot = key.statics.pot;
+        let bounded = [0, 1].map(|a| key.wrap[a] == Wrap::ClampToEdge || (key.wrap[a] == Wrap::Repeat && pot[a]));
+        LevelAddress {
+            texels,
+            size,
+            last,
+            bounded,
+        }
+    }
+
+    /// Column `x` of level `l`, clamped where its wrap does not bound it.
+    fn texel_column(&mut self, l: &LevelAddress, x: Value) -> Value {
+        if l.bounded[0] {
+            x
+        } else {
+            self.b.ins().umin(x, l.last[0])
+        }
+    }
+
+    /// The offset of row `y` of level `l` (`y · width`), clamped where its
+    /// wrap does not bound it.
+    fn texel_row(&mut self, l: &LevelAddress, y: Value) -> Value {
+        let y = if l.bounded[1] {
+            y
+        } else {
+            self.b.ins().umin(y, l.last[1])
+        };
+        self.b.ins().imul(y, l.size[0])
+    }
+
     /// [`Self::fetch_level`] as the two halves of the widened halves.
     fn fetch_level_wide(
         &mut self,
@@ -538,38 +579,23 @@ impl Gen<'_> {
         (filter, level): (Filter, Value),
         at: [Value; 2],
     ) -> [Value; 2] {
-        let (texels, size) = self.level_texels(unit, level);
-        let one = self.splat(1);
+        let l = self.level_address(unit, key, level);
+        let LevelAddress { texels, size, last, .. } = l;
         let pot = key.statics.pot;
         let norm = key.target.normalized();
-        // Coordinates are clamped to the level (they already are: the clamp
-        // only guarantees it), rows made once.
-        let wm = self.b.ins().isub(size[0], one);
-        let hm = self.b.ins().isub(size[1], one);
-        // An axis whose wrap ends in a mask with `len − 1` (REPEAT of a
-        // power of two) or a clamp to `0..=len − 1` (CLAMP_TO_EDGE) has its
-        // texels there whatever the lane held (NaN included): only REPEAT of
-        // other sizes (NaN through `fract`) keeps the clamp. 8 instructions
-        // a group on the tex frame.
-        let bounded = [0, 1].map(|a| key.wrap[a] == Wrap::ClampToEdge || (key.wrap[a] == Wrap::Repeat && pot[a]));
-        let column = |s: &mut Self, x: Value| if bounded[0] { x } else { s.b.ins().umin(x, wm) };
-        let row = |s: &mut Self, y: Value| {
-            let y = if bounded[1] { y } else { s.b.ins().umin(y, hm) };
-            s.b.ins().imul(y, size[0])
-        };
         match filter {
             Filter::Nearest => {
-                let x = self.nearest_axis(at[0], (size[0], wm), (pot[0], norm), key.wrap[0]);
-                let y = self.nearest_axis(at[1], (size[1], hm), (pot[1], norm), key.wrap[1]);
-                let x = column(self, x);
-                let y = row(self, y);
+                let x = self.nearest_axis(at[0], (size[0], last[0]), (pot[0], norm), key.wrap[0]);
+                let y = self.nearest_axis(at[1], (size[1], last[1]), (pot[1], norm), key.wrap[1]);
+                let x = self.texel_column(&l, x);
+                let y = self.texel_row(&l, y);
                 self.fetch(texels, &[(x, y)])[0]
             }
             Filter::Linear => {
-                let (x0, x1, wx) = self.linear_axis(at[0], (size[0], wm), (pot[0], norm), key.wrap[0]);
-                let (y0, y1, wy) = self.linear_axis(at[1], (size[1], hm), (pot[1], norm), key.wrap[1]);
-                let [x0, x1] = [x0, x1].map(|x| column(self, x));
-                let [y0, y1] = [y0, y1].map(|y| row(self, y));
+                let (x0, x1, wx) = self.linear_axis(at[0], (size[0], last[0]), (pot[0], norm), key.wrap[0]);
+                let (y0, y1, wy) = self.linear_axis(at[1], (size[1], last[1]), (pot[1], norm), key.wrap[1]);
+                let [x0, x1] = [x0, x1].map(|x| self.texel_column(&l, x));
+                let [y0, y1] = [y0, y1].map(|y| self.texel_row(&l, y));
                 // The three lerps on widened texels, narrowed once.
                 let t = self.fetch(texels, &[(x0, y0), (x1, y0), (x0, y1), (x1, y1)]);
                 let (wx, wy) = (self.wide_weight(wx), self.wide_weight(wy));
@@ -865,35 +891,27 @@ impl Gen<'_> {
         (filter, level): (Filter, Value),
         at: [Value; 2],
     ) -> [Value; 4] {
-        let (texels, size) = self.level_texels(unit, level);
-        let one = self.splat(1);
+        // The bounds as in `fetch_level_wide` (a NaN coordinate on REPEAT of
+        // other sizes than powers of two gives i32::MIN, which the reference
+        // reads as a zero texel; every lerp with its NaN weight is NaN either
+        // way, and NEAREST keeps the fraction below 1).
+        let l = self.level_address(unit, key, level);
+        let LevelAddress { texels, size, last, .. } = l;
         let pot = key.statics.pot;
-        let wm = self.b.ins().isub(size[0], one);
-        let hm = self.b.ins().isub(size[1], one);
-        // As in `fetch_level_wide`: only REPEAT of other sizes than powers
-        // of two keeps the clamp (a NaN coordinate there gives i32::MIN, which
-        // the reference reads as a zero texel; every lerp with its NaN weight
-        // is NaN either way, and NEAREST keeps the fraction below 1).
-        let bounded = [0, 1].map(|a| key.wrap[a] == Wrap::ClampToEdge || (key.wrap[a] == Wrap::Repeat && pot[a]));
-        let column = |s: &mut Self, x: Value| if bounded[0] { x } else { s.b.ins().umin(x, wm) };
-        let row = |s: &mut Self, y: Value| {
-            let y = if bounded[1] { y } else { s.b.ins().umin(y, hm) };
-            s.b.ins().imul(y, size[0])
-        };
         match filter {
             Filter::Nearest => {
                 let x = self.depth_axis(at[0], size[0], pot[0], key.wrap[0]);
                 let y = self.depth_axis(at[1], size[1], pot[1], key.wrap[1]);
-                let x = column(self, x);
-                let y = row(self, y);
+                let x = self.texel_column(&l, x);
+                let y = self.texel_row(&l, y);
                 let t = self.fetch_packed(texels, &[(x, y)])[0];
                 self.srgb_texel(t)
             }
             Filter::Linear => {
-                let (x0, x1, wx) = self.soa_linear_axis(at[0], (size[0], wm), pot[0], key.wrap[0]);
-                let (y0, y1, wy) = self.soa_linear_axis(at[1], (size[1], hm), pot[1], key.wrap[1]);
-                let [x0, x1] = [x0, x1].map(|x| column(self, x));
-                let [y0, y1] = [y0, y1].map(|y| row(self, y));
+                let (x0, x1, wx) = self.soa_linear_axis(at[0], (size[0], last[0]), pot[0], key.wrap[0]);
+                let (y0, y1, wy) = self.soa_linear_axis(at[1], (size[1], last[1]), pot[1], key.wrap[1]);
+                let [x0, x1] = [x0, x1].map(|x| self.texel_column(&l, x));
+                let [y0, y1] = [y0, y1].map(|y| self.texel_row(&l, y));
                 let t = self.fetch_packed(texels, &[(x0, y0), (x1, y0), (x0, y1), (x1, y1)]);
                 // A channel at a time: its four texels decoded and lerped
                 // before the next channel's (decoding the four texels whole
@@ -1038,4 +1056,15 @@ impl Gen<'_> {
     fn unit_i32(&mut self, unit: Value, off: usize) -> Value {
         self.b.ins().load(I32X4, mem(), unit, off as i32)
     }
+}
+
+/// A level's texels and size as [`Gen::level_address`] makes
+/// them: `last` is `size − 1`; `bounded` says per axis whether the wrap
+/// already keeps an index in the level.
+#[derive(Clone, Copy)]
+struct LevelAddress {
+    texels: Value,
+    size: [Value; 2],
+    last: [Value; 2],
+    bounded: [bool; 2],
 }
