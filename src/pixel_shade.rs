@@ -88,7 +88,7 @@ mod tests {
     use crate::fog::{FogCoordSrc, FogParam};
     use crate::pixel_rect::{BitmapImage, CopyKind, DrawKind};
     use crate::texture::{EnvMode, Filter, InternalFormat, MipFilter, TexImageTarget, TexParam};
-    use crate::{Backend, Capability, Context, FramebufferDesc, PixelData, PixelFormat, PixelStore, PixelType};
+    use crate::{Backend, Capability, Context, FramebufferDesc, PixelData, PixelStore};
     use crate::{TexEnvParam, TextureTarget};
     use softgl_jit::shade::FogMode;
 
@@ -100,12 +100,7 @@ mod tests {
     }
 
     fn rgba(bytes: &[u8]) -> PixelData<'_> {
-        PixelData {
-            format: PixelFormat::Rgba,
-            ty: PixelType::UnsignedByte,
-            store: PixelStore::DEFAULT,
-            bytes,
-        }
+        PixelData::rgba8(bytes)
     }
 
     /// A 2×2 texture of `texels` (RGBA8, nearest) on unit 0, enabled, in `mode`.

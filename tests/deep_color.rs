@@ -2,7 +2,9 @@
 //! `ColorFormat::Rgba32F`): clears, draws and reads at their precision. The
 //! same formats are compared with llvmpipe by `osmesa/tests/c/deep.c`.
 
-use softgl::{BlendFactor, Capability, ClearMask, ColorFormat, ColorMask, Context, FramebufferDesc, PrimitiveMode};
+mod common;
+
+use softgl::{BlendFactor, Capability, ClearMask, ColorFormat, ColorMask, Context, FramebufferDesc};
 
 fn context(color: ColorFormat) -> Context {
     Context::new(FramebufferDesc {
@@ -15,15 +17,6 @@ fn context(color: ColorFormat) -> Context {
     .unwrap()
 }
 
-fn quad(gl: &mut Context, rgba: [f32; 4]) {
-    gl.begin(PrimitiveMode::Quads).unwrap();
-    gl.color4(rgba[0], rgba[1], rgba[2], rgba[3]);
-    for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
-        gl.vertex2(x, y);
-    }
-    gl.end().unwrap();
-}
-
 #[test]
 fn rgba16_clears_and_draws_at_16_bits() {
     let mut gl = context(ColorFormat::Rgba16);
@@ -33,7 +26,7 @@ fn rgba16_clears_and_draws_at_16_bits() {
     let px = gl.framebuffer().pixel_f32(2, 2).unwrap();
     assert_eq!(px.map(|c| (c * 65535.0).round() as u32), [19661, 32768, 0, 65535]);
     // A drawn colour: llvmpipe's rounding to even (0.3 · 65535 = 19660.5 → 19660).
-    quad(&mut gl, [0.3, 0.1, 1.0, 0.5]);
+    common::quad(&mut gl, [0.3, 0.1, 1.0, 0.5]);
     let px = gl.framebuffer().pixel_f32(3, 3).unwrap();
     assert_eq!(px.map(|c| (c * 65535.0).round() as u32), [19660, 6554, 65535, 32768]);
     // The 8-bit view of it.
@@ -62,8 +55,8 @@ fn rgba32f_blends_unclamped_unless_asked() {
     gl.clear(ClearMask::COLOR).unwrap();
     gl.enable(Capability::Blend).unwrap();
     gl.blend_func(BlendFactor::One, BlendFactor::One).unwrap();
-    quad(&mut gl, [0.75, 0.5, 0.25, 1.0]);
-    quad(&mut gl, [0.75, 0.5, 0.25, 1.0]);
+    common::quad(&mut gl, [0.75, 0.5, 0.25, 1.0]);
+    common::quad(&mut gl, [0.75, 0.5, 0.25, 1.0]);
     let px = gl.read_pixels_f32(4, 4, 1, 1).unwrap()[0];
     assert_eq!(px, [2.0, 1.25, 0.5, 3.0]);
     // GL_CLAMP_FRAGMENT_COLOR TRUE clamps the fragment, not the blend.
@@ -71,9 +64,9 @@ fn rgba32f_blends_unclamped_unless_asked() {
     gl.blend_func(BlendFactor::One, BlendFactor::Zero).unwrap();
     gl.enable(Capability::ColorSum).unwrap();
     gl.secondary_color3(0.5, 0.75, 0.0);
-    quad(&mut gl, [0.75, 0.5, 0.25, 1.0]);
+    common::quad(&mut gl, [0.75, 0.5, 0.25, 1.0]);
     assert_eq!(gl.read_pixels_f32(4, 4, 1, 1).unwrap()[0], [1.0, 1.0, 0.25, 1.0]);
     gl.set_clamp_fragment_color(false).unwrap();
-    quad(&mut gl, [0.75, 0.5, 0.25, 1.0]);
+    common::quad(&mut gl, [0.75, 0.5, 0.25, 1.0]);
     assert_eq!(gl.read_pixels_f32(4, 4, 1, 1).unwrap()[0], [1.25, 1.25, 0.25, 1.0]);
 }

@@ -3,8 +3,10 @@
 //! reports, half floats truncated, RGB formats' alpha 1, clears past 1 in
 //! float objects. Compared with llvmpipe by `osmesa/tests/c/fbo_formats.c`.
 
+mod common;
+
 use softgl::fbo::{AttachmentPoint as P, FramebufferStatus as S, FramebufferTarget as T, RenderbufferFormat as F};
-use softgl::{BlendFactor, Capability, ClearMask, ColorFormat, Context, FramebufferDesc, PrimitiveMode};
+use softgl::{BlendFactor, Capability, ClearMask, ColorFormat, Context, FramebufferDesc};
 
 /// An object of a `format` renderbuffer, 8×8, bound; its status.
 fn object(gl: &mut Context, format: F) -> S {
@@ -16,15 +18,6 @@ fn object(gl: &mut Context, format: F) -> S {
     gl.framebuffer_renderbuffer(T::Both, P::Color(0), rb).unwrap();
     gl.viewport(0, 0, 8, 8).unwrap();
     gl.check_framebuffer_status(T::Both).unwrap()
-}
-
-fn quad(gl: &mut Context, rgba: [f32; 4]) {
-    gl.begin(PrimitiveMode::Quads).unwrap();
-    gl.color4(rgba[0], rgba[1], rgba[2], rgba[3]);
-    for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
-        gl.vertex2(x, y);
-    }
-    gl.end().unwrap();
 }
 
 fn context() -> Context {
@@ -59,7 +52,7 @@ fn every_colour_format_renders_on_a_storage_of_at_least_its_bits() {
         // No alpha stored: alpha reads 1, cleared or drawn.
         gl.clear_color(0.5, 0.25, 0.75, 0.0).unwrap();
         gl.clear(ClearMask::COLOR).unwrap();
-        quad(&mut gl, [0.5, 0.25, 0.75, 0.0]);
+        common::quad(&mut gl, [0.5, 0.25, 0.75, 0.0]);
         let a = gl.read_pixels_f32(2, 2, 1, 1).unwrap()[0][3];
         assert_eq!(a, if storage.has_alpha() { 0.0 } else { 1.0 }, "{format:?}");
     }
@@ -81,7 +74,7 @@ fn half_floats_are_truncated_at_every_store() {
     gl.clear(ClearMask::COLOR).unwrap();
     gl.enable(Capability::Blend).unwrap();
     gl.blend_func(BlendFactor::One, BlendFactor::One).unwrap();
-    quad(&mut gl, [0.3, 0.3, 0.6, 0.5]);
+    common::quad(&mut gl, [0.3, 0.3, 0.6, 0.5]);
     let px = gl.read_pixels_f32(1, 1, 1, 1).unwrap()[0];
     assert_eq!(px, [1000.0, 3276.0 / 4096.0, 2456.0 / 4096.0, 1.5]);
     gl.bind_framebuffer(T::Both, 0).unwrap();

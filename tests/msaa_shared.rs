@@ -111,13 +111,7 @@ fn draw(seed: u32, backend: Backend, share: bool) -> (Context, u64) {
     gl.matrix_mode(MatrixMode::Modelview).unwrap();
     gl.clear_color(0.1, 0.2, 0.3, 0.4).unwrap();
     gl.clear_stencil(0).unwrap();
-    let all = ClearMask {
-        color: true,
-        depth: true,
-        stencil: true,
-        accum: false,
-    };
-    gl.clear(all).unwrap();
+    gl.clear(ClearMask::ALL).unwrap();
     texture(&mut gl, &mut rng);
     let q = gl.queries_mut().gen(1).unwrap()[0];
     gl.queries_mut().begin(QueryTarget::SamplesPassed, q).unwrap();

@@ -63,13 +63,7 @@ fn render_into(name: &str, fb: softgl::Framebuffer, backend: Backend) -> Context
     gl.clear_color(0.1, 0.1, 0.2, 1.0).unwrap();
     gl.clear_depth(1.0).unwrap();
     gl.clear_stencil(0).unwrap();
-    let all = ClearMask {
-        color: true,
-        depth: true,
-        stencil: true,
-        accum: false,
-    };
-    gl.clear(all).unwrap();
+    gl.clear(ClearMask::ALL).unwrap();
     match name {
         "depth" => {
             gl.enable(Capability::DepthTest).unwrap();
@@ -321,13 +315,7 @@ fn multisampling_off_after_a_clear_needs_no_copy_of_sample_0s_tests() {
     let draw = |copies: bool| {
         let fb = softgl::Framebuffer::new_multisample(FramebufferDesc::rgba8_d24s8(N as u32, N as u32), 4).unwrap();
         let mut gl = render_into("depth", fb, Backend::Interpreter);
-        let all = ClearMask {
-            color: true,
-            depth: true,
-            stencil: true,
-            accum: false,
-        };
-        gl.clear(all).unwrap();
+        gl.clear(ClearMask::ALL).unwrap();
         if copies {
             // Outside the view volume: no fragment, but the samples may differ after it.
             gl.begin(PrimitiveMode::Triangles).unwrap();

@@ -4,10 +4,10 @@
 //! NEAREST sampling at unnormalized coordinates, worked out by hand. The C
 //! client `osmesa/tests/c/texrect.c` compares the same against llvmpipe.
 
-use softgl::texture::{PixelData, PixelStore, TexImageTarget, TexLevelParamName, TexParam, TexParamName};
+use softgl::texture::{PixelData, TexImageTarget, TexLevelParamName, TexParam, TexParamName};
 use softgl::{
-    Backend, Capability, Context, EnvMode, Filter, FramebufferDesc, GlError, InternalFormat, MipFilter, PixelFormat,
-    PixelType, PrimitiveMode, TexEnvParam, TextureTarget, Wrap,
+    Backend, Capability, Context, EnvMode, Filter, FramebufferDesc, GlError, InternalFormat, MipFilter, PrimitiveMode,
+    TexEnvParam, TextureTarget, Wrap,
 };
 
 const R: TextureTarget = TextureTarget::Rect;
@@ -17,12 +17,7 @@ fn context(w: u32, h: u32) -> Context {
 }
 
 fn rgba(bytes: &[u8]) -> PixelData<'_> {
-    PixelData {
-        format: PixelFormat::Rgba,
-        ty: PixelType::UnsignedByte,
-        store: PixelStore::DEFAULT,
-        bytes,
-    }
+    PixelData::rgba8(bytes)
 }
 
 /// A `w`×`h` rectangle whose texel (x, y) is `[x, y, 7, 255]`.

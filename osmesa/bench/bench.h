@@ -1,5 +1,5 @@
 /* What the C-ABI benches share (not tests): the clock, the order of
- * medians, and MuJoCo's plane. Include after GL/gl.h, stdlib.h and time.h. */
+ * medians, MuJoCo's plane and camera. Include after GL/gl.h, stdlib.h and time.h. */
 
 static double now(void) {
   struct timespec t;
@@ -33,4 +33,17 @@ static GLuint plane_list(int n, int textured) {
   glEnd();
   glEndList();
   return l;
+}
+
+/* MuJoCo's camera over the plane: reverse Z without GL_ARB_clip_control. */
+static void camera(void) {
+  static const GLfloat view[16] = {0.741298497f, -0.300687939f, 0.600052893f, 0, 0.671175599f, 0.332103133f,
+                                   -0.662744999f, 0, 0, 0.894032598f, 0.448001951f, 0, -0.0200352669f,
+                                   0.0281088352f, -3.62750769f, 1};
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glScalef(1, 1, -1); /* reverse Z without GL_ARB_clip_control */
+  glFrustum(-0.0134893097, 0.0134893097, -0.0101169823, 0.0101169823, 0.0244245548, 122.12278);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadMatrixf(view);
 }

@@ -22,39 +22,7 @@
 #include <time.h>
 
 #include "bench.h"
-
-static void checker(void) {
-  static unsigned char t[256 * 256 * 3];
-  for (int y = 0; y < 256; y++)
-    for (int x = 0; x < 256; x++) {
-      int on = ((x / 128) ^ (y / 128)) & 1, edge = x == 0 || y == 0;
-      unsigned char *p = t + (y * 256 + x) * 3;
-      p[0] = edge ? 204 : on ? 51 : 26;
-      p[1] = edge ? 204 : on ? 77 : 38;
-      p[2] = edge ? 204 : on ? 102 : 51;
-    }
-  GLuint tex;
-  glGenTextures(1, &tex);
-  glBindTexture(GL_TEXTURE_2D, tex);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGB, 256, 256, GL_RGB, GL_UNSIGNED_BYTE, t);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-}
-
-static void camera(void) {
-  static const GLfloat view[16] = {0.741298497f, -0.300687939f, 0.600052893f, 0, 0.671175599f, 0.332103133f,
-                                   -0.662744999f, 0, 0, 0.894032598f, 0.448001951f, 0, -0.0200352669f,
-                                   0.0281088352f, -3.62750769f, 1};
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glScalef(1, 1, -1); /* reverse Z without GL_ARB_clip_control */
-  glFrustum(-0.0134893097, 0.0134893097, -0.0101169823, 0.0101169823, 0.0244245548, 122.12278);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadMatrixf(view);
-}
+#include "bench_checker.h"
 
 static void lights(int only) {
   static const GLfloat head[4] = {0, 0, 1, 0}, sun[4] = {-0.3f, -0.2f, 1, 0}, spot[4] = {1.2f, -1, 2, 1};
@@ -163,7 +131,7 @@ int main(int argc, char **argv) {
     unsigned char *px = malloc((size_t)w * h * 4);
     OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
     if (!c || !OSMesaMakeCurrent(c, px, GL_UNSIGNED_BYTE, w, h)) return 1;
-    checker();
+    checker_texture(GL_RGB);
     GLuint l = plane_list(200, 1);
     camera();
     scene_state();

@@ -29,45 +29,10 @@ static GLuint fbo_ms, fbo_resolve, fbo_shadow, shadow_tex;
 static int W, H;
 static unsigned char *readback;
 
-static GLuint renderbuffer(int samples, GLenum format) {
-  GLuint rb;
-  GenRenderbuffers(1, &rb);
-  BindRenderbuffer(GL_RENDERBUFFER, rb);
-  RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, W, H);
-  return rb;
-}
-
 static void setup(void) {
-  GenFramebuffers(1, &fbo_ms);
-  BindFramebuffer(GL_FRAMEBUFFER, fbo_ms);
-  FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer(4, GL_RGBA8));
-  FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                          renderbuffer(4, GL_DEPTH24_STENCIL8));
-  if (CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) exit(3);
-  GenFramebuffers(1, &fbo_resolve);
-  BindFramebuffer(GL_FRAMEBUFFER, fbo_resolve);
-  FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer(0, GL_RGBA8));
-  FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                          renderbuffer(0, GL_DEPTH24_STENCIL8));
-  if (CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) exit(3);
-  ActiveTexture(GL_TEXTURE1);
-  glGenTextures(1, &shadow_tex);
-  glBindTexture(GL_TEXTURE_2D, shadow_tex);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4096, 4096, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, NULL);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
-  glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_INTENSITY);
-  GenFramebuffers(1, &fbo_shadow);
-  BindFramebuffer(GL_FRAMEBUFFER, fbo_shadow);
-  FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_tex, 0);
-  glDrawBuffer(GL_NONE);
-  glReadBuffer(GL_NONE);
-  if (CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) exit(3);
-  ActiveTexture(GL_TEXTURE0);
+  fbo_ms = rgba8_d24s8_object(4, W, H);
+  fbo_resolve = rgba8_d24s8_object(0, W, H);
+  fbo_shadow = shadow_map_object(&shadow_tex);
   BindFramebuffer(GL_FRAMEBUFFER, fbo_ms);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glDrawBuffer(GL_COLOR_ATTACHMENT0);
@@ -80,27 +45,12 @@ static void setup(void) {
   readback = malloc((size_t)W * H * 3);
 }
 
-static void camera(void) {
-  static const GLfloat view[16] = {0.741298497f, -0.300687939f, 0.600052893f, 0, 0.671175599f, 0.332103133f,
-                                   -0.662744999f, 0, 0, 0.894032598f, 0.448001951f, 0, -0.0200352669f,
-                                   0.0281088352f, -3.62750769f, 1};
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glScalef(1, 1, -1);
-  glFrustum(-0.0134893097, 0.0134893097, -0.0101169823, 0.0101169823, 0.0244245548, 122.12278);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadMatrixf(view);
-}
-
 /* One frame: two shadow lights, each a depth pass into the map and a lit pass sampling it. */
 static void frame(GLuint l) {
   static const GLfloat sp[4] = {0.196390659f, -0.0113302302f, 0.0566511452f, 0.273395419f};
   static const GLfloat tp[4] = {0, 0.200736657f, 0.0401473343f, 0.339410663f};
   static const GLfloat rp[4] = {-0.00231138477f, -0.00154092337f, 0.00770461652f, 0.969381571f};
   static const GLfloat qp[4] = {0, 0, 0, 1};
-  static const GLfloat light[16] = {0.959350884f, 0, -0.282216281f, 0, -0.055347167f, 0.980580747f, -0.188144207f, 0,
-                                    0.276735812f, 0.196116149f, 0.940720975f, 0, -1.10694325f, -0.784464598f,
-                                    -3.7628839f, 1};
   BindFramebuffer(GL_FRAMEBUFFER, fbo_ms);
   glViewport(0, 0, W, H);
   glScissor(0, 0, W, H);
@@ -110,22 +60,7 @@ static void frame(GLuint l) {
   camera();
   glCallList(l);
   for (int light_i = 0; light_i < 2; light_i++) {
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glTranslatef(0, 0, 0.5);
-    glScalef(1, 1, -0.5);
-    glOrtho(-2.44245553, 2.44245553, -2.44245553, 2.44245553, 0.0244245548, 122.12278);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadMatrixf(light);
-    BindFramebuffer(GL_FRAMEBUFFER, fbo_shadow);
-    glDrawBuffer(GL_NONE);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glViewport(1, 1, 4094, 4094);
-    glShadeModel(GL_FLAT);
-    glDisable(GL_LIGHTING);
-    glColorMask(0, 0, 0, 0);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(-1.5, -4);
+    begin_shadow_pass(fbo_shadow);
     glCallList(l);
     BindFramebuffer(GL_FRAMEBUFFER, fbo_ms);
     glDrawBuffer(GL_COLOR_ATTACHMENT0);

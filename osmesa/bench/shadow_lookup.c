@@ -28,72 +28,14 @@
 
 #include "bench.h"
 #include "bench_fbo.h"
+#include "bench_checker.h"
 
 static GLuint fbo_ms, fbo_resolve, fbo_shadow, shadow_tex, checker_tex;
 static int W, H;
 
-static GLuint renderbuffer(int samples, GLenum format) {
-  GLuint rb;
-  GenRenderbuffers(1, &rb);
-  BindRenderbuffer(GL_RENDERBUFFER, rb);
-  RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, W, H);
-  return rb;
-}
-
-static void checker(GLint internal) {
-  static unsigned char t[256 * 256 * 3];
-  for (int y = 0; y < 256; y++)
-    for (int x = 0; x < 256; x++) {
-      int on = ((x / 128) ^ (y / 128)) & 1, edge = x == 0 || y == 0;
-      unsigned char *p = t + (y * 256 + x) * 3;
-      p[0] = edge ? 204 : on ? 51 : 26;
-      p[1] = edge ? 204 : on ? 77 : 38;
-      p[2] = edge ? 204 : on ? 102 : 51;
-    }
-  glGenTextures(1, &checker_tex);
-  glBindTexture(GL_TEXTURE_2D, checker_tex);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  gluBuild2DMipmaps(GL_TEXTURE_2D, internal, 256, 256, GL_RGB, GL_UNSIGNED_BYTE, t);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-}
-
-static void camera(void) {
-  static const GLfloat view[16] = {0.741298497f, -0.300687939f, 0.600052893f, 0, 0.671175599f, 0.332103133f,
-                                   -0.662744999f, 0, 0, 0.894032598f, 0.448001951f, 0, -0.0200352669f,
-                                   0.0281088352f, -3.62750769f, 1};
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glScalef(1, 1, -1);
-  glFrustum(-0.0134893097, 0.0134893097, -0.0101169823, 0.0101169823, 0.0244245548, 122.12278);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadMatrixf(view);
-}
-
-static const GLfloat light[16] = {0.959350884f, 0, -0.282216281f, 0, -0.055347167f, 0.980580747f, -0.188144207f, 0,
-                                  0.276735812f, 0.196116149f, 0.940720975f, 0, -1.10694325f, -0.784464598f,
-                                  -3.7628839f, 1};
-
 /* The shadow map: the floor and a box-like caster from the light. */
 static void shadow_pass(GLuint l) {
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glTranslatef(0, 0, 0.5);
-  glScalef(1, 1, -0.5);
-  glOrtho(-2.44245553, 2.44245553, -2.44245553, 2.44245553, 0.0244245548, 122.12278);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadMatrixf(light);
-  BindFramebuffer(GL_FRAMEBUFFER, fbo_shadow);
-  glDrawBuffer(GL_NONE);
-  glClear(GL_DEPTH_BUFFER_BIT);
-  glViewport(1, 1, 4094, 4094);
-  glShadeModel(GL_FLAT);
-  glDisable(GL_LIGHTING);
-  glColorMask(0, 0, 0, 0);
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(-1.5, -4);
+  begin_shadow_pass(fbo_shadow);
   glCallList(l);
   /* A caster: a small raised quad. */
   glBegin(GL_QUADS);
@@ -111,38 +53,11 @@ static void shadow_pass(GLuint l) {
 }
 
 static void setup(const char *mode) {
-  GenFramebuffers(1, &fbo_ms);
-  BindFramebuffer(GL_FRAMEBUFFER, fbo_ms);
-  FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer(4, GL_RGBA8));
-  FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                          renderbuffer(4, GL_DEPTH24_STENCIL8));
-  if (CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) exit(3);
-  GenFramebuffers(1, &fbo_resolve);
-  BindFramebuffer(GL_FRAMEBUFFER, fbo_resolve);
-  FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer(0, GL_RGBA8));
-  FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                          renderbuffer(0, GL_DEPTH24_STENCIL8));
-  if (CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) exit(3);
+  fbo_ms = rgba8_d24s8_object(4, W, H);
+  fbo_resolve = rgba8_d24s8_object(0, W, H);
   ActiveTexture(GL_TEXTURE0);
-  checker(strcmp(mode, "srgb") ? GL_RGB : GL_SRGB8);
-  ActiveTexture(GL_TEXTURE1);
-  glGenTextures(1, &shadow_tex);
-  glBindTexture(GL_TEXTURE_2D, shadow_tex);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4096, 4096, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, NULL);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
-  glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_INTENSITY);
-  GenFramebuffers(1, &fbo_shadow);
-  BindFramebuffer(GL_FRAMEBUFFER, fbo_shadow);
-  FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_tex, 0);
-  glDrawBuffer(GL_NONE);
-  glReadBuffer(GL_NONE);
-  if (CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) exit(3);
-  ActiveTexture(GL_TEXTURE0);
+  checker_tex = checker_texture(strcmp(mode, "srgb") ? GL_RGB : GL_SRGB8);
+  fbo_shadow = shadow_map_object(&shadow_tex);
   BindFramebuffer(GL_FRAMEBUFFER, fbo_ms);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glDrawBuffer(GL_COLOR_ATTACHMENT0);

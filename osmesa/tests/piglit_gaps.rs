@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 mod needs;
-use needs::{have, profile_dir, work_dir, Need};
+use needs::{client_lines, have, profile_dir, work_dir, Need};
 
 /// Builds `tests/c/<name>.c` with `libs`; `None` (skipped) without the references.
 fn build(name: &str, needs: &[Need], libs: &[&str]) -> Option<PathBuf> {
@@ -45,17 +45,7 @@ fn run(exe: &Path, lib: Option<&Path>, what: &str) -> Vec<String> {
     if let Some(lib) = lib {
         cmd.env("LD_LIBRARY_PATH", lib);
     }
-    let out = cmd.output().expect("run the client");
-    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
-    assert!(
-        out.status.success(),
-        "{what} failed: {}\n{stdout}\n{}",
-        out.status,
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let lines: Vec<String> = stdout.lines().map(str::to_owned).collect();
-    assert_eq!(lines.last().map(String::as_str), Some("done"), "{what}:\n{stdout}");
-    lines
+    client_lines(&mut cmd, what)
 }
 
 #[test]

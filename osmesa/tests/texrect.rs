@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 mod needs;
-use needs::{have, profile_dir, work_dir, Need};
+use needs::{client_lines, have, profile_dir, work_dir, Need};
 
 /// Builds `tests/c/texrect.c`; `None` (skipped) without the references.
 fn build() -> Option<PathBuf> {
@@ -64,17 +64,7 @@ fn run(exe: &Path, mode: Option<(&str, &str, &str)>) -> (Vec<String>, PathBuf) {
             cmd.env(var, value);
         }
     }
-    let out = cmd.output().expect("run the client");
-    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
-    assert!(
-        out.status.success(),
-        "{what} failed: {}\n{stdout}\n{}",
-        out.status,
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let lines: Vec<String> = stdout.lines().map(str::to_owned).collect();
-    assert_eq!(lines.last().map(String::as_str), Some("done"), "{what}:\n{stdout}");
-    (lines, dir)
+    (client_lines(&mut cmd, &what), dir)
 }
 
 const W: usize = 320;

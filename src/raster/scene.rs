@@ -994,12 +994,8 @@ impl Scene {
             let pass = &mut work.pass;
             pass[lo..hi].fill(0);
             for &(planes, s) in recs.iter().flatten() {
-                let to = match s {
-                    0 => &mut *stage,
-                    s => match others.get_mut(s - 1) {
-                        Some(o) => o,
-                        None => continue,
-                    },
+                let Some(to) = sample_stage(stage, others, s) else {
+                    continue;
                 };
                 let plane = planes_of_at(&self.records, planes, n)
                     .filter(|_| z)
@@ -1098,12 +1094,8 @@ impl Scene {
             _ => None,
         };
         for &(planes, s) in recs.iter().flatten() {
-            let to = match s {
-                0 => &mut *stage,
-                s => match others.get_mut(s - 1) {
-                    Some(o) => o,
-                    None => continue,
-                },
+            let Some(to) = sample_stage(stage, others, s) else {
+                continue;
             };
             let planes = planes_of(planes);
             if let Some(p) = to.planes_mut() {
@@ -1271,6 +1263,19 @@ fn planes_of_at(records: &[u32], at: usize, n: usize) -> Option<&[u32]> {
 struct EarlyTests {
     stencil: Option<(CompareFunc, u8, u8)>,
     depth: Option<CompareFunc>,
+}
+
+/// Sample `s`'s stage of a shared draw: `stage` for sample 0, else
+/// `others[s - 1]` ([`Scene::run_group`]).
+fn sample_stage<'a, 't, 'f>(
+    stage: &'a mut FragmentStage<'t, 'f>,
+    others: &'a mut [FragmentStage<'t, 'f>],
+    s: usize,
+) -> Option<&'a mut FragmentStage<'t, 'f>> {
+    match s {
+        0 => Some(stage),
+        s => others.get_mut(s - 1),
+    }
 }
 
 impl EarlyTests {

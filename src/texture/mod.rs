@@ -156,6 +156,18 @@ pub struct PixelData<'a> {
     pub bytes: &'a [u8],
 }
 
+impl<'a> PixelData<'a> {
+    /// Tightly packed `GL_RGBA`/`GL_UNSIGNED_BYTE` pixels, default unpack state.
+    pub fn rgba8(bytes: &'a [u8]) -> PixelData<'a> {
+        PixelData {
+            format: PixelFormat::Rgba,
+            ty: PixelType::UnsignedByte,
+            store: PixelStore::DEFAULT,
+            bytes,
+        }
+    }
+}
+
 /// A `glTexParameter` value.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TexParam {

@@ -73,3 +73,14 @@ pub fn depth_texels(gl: &mut Context, n: usize) -> Vec<f32> {
         .map(|c| f32::from_ne_bytes(c.try_into().unwrap()))
         .collect()
 }
+
+/// A quad of colour `rgba` over the whole viewport (identity matrices).
+#[allow(dead_code)] // Only the colour-format tests use it.
+pub fn quad(gl: &mut Context, rgba: [f32; 4]) {
+    gl.begin(softgl::PrimitiveMode::Quads).unwrap();
+    gl.color4(rgba[0], rgba[1], rgba[2], rgba[3]);
+    for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+        gl.vertex2(x, y);
+    }
+    gl.end().unwrap();
+}

@@ -35,10 +35,10 @@ use crate::callout::{LevelView, TexView, UnitView};
 use crate::key::CompareFunc;
 use crate::texture::{DepthMode, Filter, MipFilter, SamplerKey, TexTarget, TexUnitKey, TexelFormat, Wrap, MAX_LEVELS};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
-use cranelift_codegen::ir::{types, InstBuilder, MemFlagsData, StackSlot, StackSlotData, StackSlotKind, Value};
+use cranelift_codegen::ir::{types, InstBuilder, MemFlagsData, StackSlot, StackSlotData, StackSlotKind, Type, Value};
 use std::mem::{offset_of, size_of};
 
-const F32X4: cranelift_codegen::ir::Type = types::F32X4;
+const F32X4: Type = types::F32X4;
 
 /// Whether generated code samples `unit` itself (else it calls the reference).
 pub fn native_unit(unit: &TexUnitKey) -> bool {
@@ -351,21 +351,15 @@ impl Gen<'_> {
         let len1 = self.b.ins().isub(len, one);
         let lf = self.b.ins().fcvt_from_sint(F32X4, len);
         match wrap {
-            Wrap::Repeat if pot => {
-                let v = self.b.ins().fmul(s, lf);
-                let v = self.b.ins().floor(v);
-                let i = self.int_lanes(v);
-                self.b.ins().band(i, len1)
-            }
             Wrap::Repeat => {
-                let f = self.b.ins().floor(s);
-                let f = self.b.ins().fsub(s, f);
-                let max = self.fconst(1.0 - 1.0 / (1u32 << 24) as f32);
-                let f = self.minps(f, max);
-                let v = self.b.ins().fmul(f, lf);
-                let i = self.int_lanes(v);
-                // Already below `len` (the clamp keeps the address inside).
-                self.b.ins().umin(i, len1)
+                let i = self.repeat_index(s, lf, len1, pot);
+                // Other sizes: already below `len` but for NaN (the clamp
+                // keeps the address inside).
+                if pot {
+                    i
+                } else {
+                    self.b.ins().umin(i, len1)
+                }
             }
             _ => {
                 let v = self.b.ins().fmul(s, lf);
@@ -383,19 +377,27 @@ impl Gen<'_> {
         let slot = self.gather_slot();
         let base = self.b.ins().stack_addr(self.ptr, slot, 0);
         self.b.ins().store(mem(), index, base, 0);
+        self.load_lanes(texels, base, 0, F32X4)
+    }
+
+    /// The 4-byte texels of `texels` at the four offsets stored at
+    /// `base + at` (in texels), one load each into a vector of type `ty`
+    /// (see [`Self::gather`]).
+    fn load_lanes(&mut self, texels: Value, base: Value, at: i32, ty: Type) -> Value {
         let mut v = None;
         for lane in 0..4u8 {
-            let off = self.b.ins().uload32(mem(), base, 4 * i32::from(lane));
+            let off = self.b.ins().uload32(mem(), base, at + 4 * i32::from(lane));
             let off = if self.ptr == types::I64 {
                 off
             } else {
                 self.b.ins().ireduce(self.ptr, off)
             };
+            // The ×4 of the texel size goes into the address.
             let off = self.b.ins().ishl_imm_u(off, 2);
             let addr = self.b.ins().iadd(texels, off);
-            let t = self.b.ins().load(types::F32, mem(), addr, 0);
+            let t = self.b.ins().load(ty.lane_type(), mem(), addr, 0);
             v = Some(match v {
-                None => self.b.ins().scalar_to_vector(F32X4, t),
+                None => self.b.ins().scalar_to_vector(ty, t),
                 Some(v) => self.b.ins().insertlane(v, t, lane),
             });
         }
@@ -649,24 +651,7 @@ impl Gen<'_> {
         }
         let mut out = Vec::with_capacity(at.len());
         for k in 0..at.len() {
-            let mut v = None;
-            for lane in 0..4 {
-                let off = self.b.ins().uload32(mem(), base, (16 * k + 4 * lane) as i32);
-                let off = if self.ptr == types::I64 {
-                    off
-                } else {
-                    self.b.ins().ireduce(self.ptr, off)
-                };
-                // The ×4 of the texel size goes into the address.
-                let off = self.b.ins().ishl_imm_u(off, 2);
-                let addr = self.b.ins().iadd(texels, off);
-                let t = self.b.ins().load(types::I32, mem(), addr, 0);
-                v = Some(match v {
-                    None => self.b.ins().scalar_to_vector(I32X4, t),
-                    Some(v) => self.b.ins().insertlane(v, t, lane as u8),
-                });
-            }
-            let v = v.expect("four lanes");
+            let v = self.load_lanes(texels, base, 16 * k as i32, I32X4);
             if store {
                 self.b.ins().store(le().with_notrap(), v, base, 16 * k as i32);
             }
@@ -745,6 +730,26 @@ impl Gen<'_> {
         ch
     }
 
+    /// REPEAT's nearest texel along an axis of length `lf` (as f32) and
+    /// `len1` (`len − 1`): for a power-of-two size (`pot`) `floor(s · len)`
+    /// masked with `len − 1`, else `fract_safe(s) · len` truncated
+    /// (`fract_safe`: below the bound, else, and NaN, the bound).
+    fn repeat_index(&mut self, s: Value, lf: Value, len1: Value, pot: bool) -> Value {
+        if pot {
+            let v = self.b.ins().fmul(s, lf);
+            let v = self.b.ins().floor(v);
+            let i = self.int_lanes(v);
+            self.b.ins().band(i, len1)
+        } else {
+            let f = self.b.ins().floor(s);
+            let f = self.b.ins().fsub(s, f);
+            let max = self.fconst(1.0 - 1.0 / (1u32 << 24) as f32);
+            let f = self.minps(f, max);
+            let v = self.b.ins().fmul(f, lf);
+            self.int_lanes(v)
+        }
+    }
+
     /// The nearest texel along an axis (`filter::aos_nearest_axis`) of
     /// length `len` (and `len − 1`); `pot`: REPEAT of a power-of-two size
     /// (the key's statics); `norm`: normalized coordinates (false for a
@@ -752,21 +757,7 @@ impl Gen<'_> {
     fn nearest_axis(&mut self, s: Value, (len, len1): (Value, Value), (pot, norm): (bool, bool), wrap: Wrap) -> Value {
         let lf = self.b.ins().fcvt_from_sint(F32X4, len);
         match wrap {
-            Wrap::Repeat if pot => {
-                let v = self.b.ins().fmul(s, lf);
-                let v = self.b.ins().floor(v);
-                let i = self.int_lanes(v);
-                self.b.ins().band(i, len1)
-            }
-            Wrap::Repeat => {
-                let f = self.b.ins().floor(s);
-                let f = self.b.ins().fsub(s, f);
-                let max = self.fconst(1.0 - 1.0 / (1u32 << 24) as f32);
-                // fract_safe: below the bound, else (and NaN) the bound.
-                let f = self.minps(f, max);
-                let v = self.b.ins().fmul(f, lf);
-                self.int_lanes(v)
-            }
+            Wrap::Repeat => self.repeat_index(s, lf, len1, pot),
             _ => {
                 let v = if norm { self.b.ins().fmul(s, lf) } else { s };
                 let v = self.b.ins().floor(v);

@@ -154,3 +154,19 @@ pub fn work_dir(name: &str) -> PathBuf {
     std::fs::create_dir_all(&d).expect("work dir");
     d
 }
+
+/// Runs the client `cmd` (named `what` in failures): its stdout lines, of
+/// which the last must be `done` (the client ran to its end).
+pub fn client_lines(cmd: &mut Command, what: &str) -> Vec<String> {
+    let out = cmd.output().expect("run the client");
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(
+        out.status.success(),
+        "{what} failed: {}\n{stdout}\n{}",
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let lines: Vec<String> = stdout.lines().map(str::to_owned).collect();
+    assert_eq!(lines.last().map(String::as_str), Some("done"), "{what}:\n{stdout}");
+    lines
+}
