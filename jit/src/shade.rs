@@ -110,13 +110,15 @@ pub fn fog_factor(mode: FogMode, c: f32, u: &FogUniforms) -> f32 {
     saturate(f)
 }
 
-/// `clamp(v, 0, 1)` with NaN as 0 (`lp_build_clamp_zero_one_nanzero`).
+/// `clamp(v, 0, 1)` with NaN as 0 (`lp_build_clamp_zero_one_nanzero`): its
+/// `maxps` against 0 first, which gives +0 for -0 too (as the JIT's `fmax`;
+/// a float colour buffer stores the difference).
 #[inline]
 pub fn saturate(v: f32) -> f32 {
-    if v.is_nan() {
-        0.0
+    if v > 0.0 {
+        v.min(1.0)
     } else {
-        v.clamp(0.0, 1.0)
+        0.0
     }
 }
 
